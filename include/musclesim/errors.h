@@ -1,0 +1,49 @@
+// Error types shared by every layer, and the exit codes the command line maps them to.
+//
+// A ParameterError says which parameter broke which rule, with the parameter named by its
+// path inside the block being validated ("velocity.n", "gaussians[1].width"). Readers of
+// files catch it and re-throw an InputError that adds the file, line and column.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace musclesim {
+
+// Documented exit codes of the `musclesim` command.
+enum ExitCode : int {
+  kExitSuccess = 0,
+  kExitFailure = 1,        // anything not covered below (I/O, internal)
+  kExitInvalidInput = 2,   // a file, flag or value broke a documented rule
+  kExitSolverFailure = 3,  // the integrator could not continue
+};
+
+// A parameter value that breaks a rule. `path` is relative to the validated struct.
+class ParameterError : public std::invalid_argument {
+ public:
+  ParameterError(std::string path, std::string value, std::string rule);
+
+  const std::string& path() const { return path_; }
+  const std::string& value() const { return value_; }
+  const std::string& rule() const { return rule_; }
+
+ private:
+  std::string path_;
+  std::string value_;
+  std::string rule_;
+};
+
+// Invalid user input, already located: the message is complete and printable as is.
+class InputError : public std::runtime_error {
+ public:
+  explicit InputError(const std::string& message) : std::runtime_error(message) {}
+};
+
+// Formats a double the way messages and output files print it: shortest exact form.
+std::string FormatNumber(double value);
+
+// Throws ParameterError(path, value, rule) unless the condition holds.
+void Require(bool condition, std::string_view path, double value, std::string_view rule);
+
+}  // namespace musclesim

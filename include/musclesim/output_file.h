@@ -1,0 +1,16 @@
+// Writing result files so that a failed run never destroys an earlier result: the text
+// goes to a temporary file beside the target, which is renamed over it only when complete.
+#pragma once
+
+#include <string>
+
+namespace musclesim {
+
+// Writes `content` to `path` atomically; "-" writes to standard output. Throws
+// std::runtime_error naming the path and the system's reason on failure.
+void WriteOutput(const std::string& path, const std::string& content);
+
+// Formats with 17 significant digits, enough to read back the same double.
+std::string FormatFull(double value);
+
+}  // namespace musclesim

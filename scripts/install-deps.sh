@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs the Debian packages musclesim needs, and only those that are missing.
+# Idempotent: when everything is present it runs no apt command at all.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libsundials-dev       # CVODE: the stiff integrator
+  libeigen3-dev         # linear algebra of the Gaussian fit
+  libyaml-cpp-dev       # scenario files
+  libgtest-dev libgmock-dev googletest   # tests
+  libnlopt-cxx-dev      # gradient-based minimiser of the Gaussian fit
+  libbenchmark-dev      # bench/
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+sudo_cmd=()
+[ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

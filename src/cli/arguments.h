@@ -1,0 +1,45 @@
+// Command-line parsing shared by the verbs: options with values, flags, positionals.
+#pragma once
+
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace musclesim::cli {
+
+// A malformed command line (exit code 2).
+class UsageError : public std::runtime_error {
+ public:
+  explicit UsageError(const std::string& message) : std::runtime_error(message) {}
+};
+
+struct Arguments {
+  std::vector<std::string> positional;
+  std::map<std::string, std::vector<std::string>> values;  // option -> every value given
+  std::set<std::string> flags;
+
+  bool Has(const std::string& option) const {
+    return values.count(option) != 0 || flags.count(option) != 0;
+  }
+  // The option's last value, or `fallback` when absent.
+  std::string Value(const std::string& option, const std::string& fallback = "") const;
+};
+
+// Parses argv[first..]. `with_value` lists options that take a value (both "--opt V" and
+// "--opt=V"), `flags` options that take none; anything else starting with '-' (but "-"
+// alone) is a UsageError.
+Arguments Parse(int argc, char** argv, int first, const std::set<std::string>& with_value,
+                const std::set<std::string>& flags);
+
+// An evenly spaced range "A:B:N": N >= 2 points from A to B inclusive, A < B.
+struct Range {
+  double from = 0.0;
+  double to = 0.0;
+  int count = 0;
+  double At(int i) const { return from + (to - from) * i / (count - 1); }
+};
+Range ParseRange(const std::string& option, const std::string& text);
+
+}  // namespace musclesim::cli

@@ -1,0 +1,10 @@
+// The verbs of `musclesim`. Each parses its own arguments, does one job and returns an
+// exit code; errors are thrown and mapped to exit codes by main.
+#pragma once
+
+namespace musclesim::cli {
+
+int RunCurves(int argc, char** argv);  // musclesim curves ...
+int RunFit(int argc, char** argv);     // musclesim fit ...
+
+}  // namespace musclesim::cli

@@ -1,0 +1,51 @@
+// `musclesim VERB ...`: dispatches to a verb and maps errors to the documented exit codes
+// (0 success, 1 other failure, 2 invalid input, 3 solver failure).
+#include <cstring>
+#include <iostream>
+#include <string>
+
+#include "cli/arguments.h"
+#include "cli/commands.h"
+#include "musclesim/errors.h"
+
+namespace {
+
+constexpr const char* kUsage = R"(musclesim: muscle-like actuator tension model and simulator
+
+usage: musclesim VERB [ARGS...]      (musclesim VERB --help for each verb)
+
+verbs:
+  curves   tabulate f_L and passive tension over length, or g over velocity, as CSV
+  fit      fit the sum of Gaussians that a model file asks for; print the components
+
+exit codes: 0 success, 1 other failure, 2 invalid input, 3 solver failure
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace musclesim;
+  if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
+    std::cout << kUsage;
+    return argc < 2 ? kExitInvalidInput : kExitSuccess;
+  }
+  const std::string verb = argv[1];
+  try {
+    if (verb == "curves") return cli::RunCurves(argc, argv);
+    if (verb == "fit") return cli::RunFit(argc, argv);
+    std::cerr << "musclesim: unknown verb '" << verb << "' (see musclesim --help)\n";
+    return kExitInvalidInput;
+  } catch (const cli::UsageError& e) {
+    std::cerr << "musclesim " << verb << ": " << e.what() << "\n";
+    return kExitInvalidInput;
+  } catch (const InputError& e) {
+    std::cerr << "musclesim " << verb << ": " << e.what() << "\n";
+    return kExitInvalidInput;
+  } catch (const ParameterError& e) {
+    std::cerr << "musclesim " << verb << ": " << e.what() << "\n";
+    return kExitInvalidInput;
+  } catch (const std::exception& e) {
+    std::cerr << "musclesim " << verb << ": error: " << e.what() << "\n";
+    return kExitFailure;
+  }
+}

@@ -1,0 +1,48 @@
+#include "musclesim/output_file.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace musclesim {
+
+void WriteOutput(const std::string& path, const std::string& content) {
+  if (path == "-") {
+    std::cout << content << std::flush;
+    return;
+  }
+  // the temporary name is unique per process so that parallel writers cannot collide
+  const std::string temporary = path + ".tmp." + std::to_string(::getpid());
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) {
+      throw std::runtime_error(path + ": cannot write (" + std::strerror(errno) + ")");
+    }
+    out << content;
+    out.flush();
+    if (!out) {
+      const std::string reason = std::strerror(errno);
+      std::remove(temporary.c_str());
+      throw std::runtime_error(path + ": write failed (" + reason + ")");
+    }
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error(path + ": cannot replace the file (" + error.message() + ")");
+  }
+}
+
+std::string FormatFull(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", value);
+  return buffer;
+}
+
+}  // namespace musclesim

@@ -1,0 +1,57 @@
+// Private helpers for reading validated values out of yaml-cpp nodes. Every error they
+// raise names the dotted key path, the value, the file:line:column and the broken rule:
+//   model.velocity.n = 0 (scenarios/x.yaml:7:8): must be an integer >= 1
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+#include "musclesim/errors.h"
+
+namespace musclesim::yaml {
+
+// Where values come from: the file name printed in messages.
+struct Source {
+  std::string file;
+};
+
+// Throws InputError for `path` at `node`'s position.
+[[noreturn]] void Fail(const Source& source, const YAML::Node& node, const std::string& path,
+                       const std::string& value, const std::string& rule);
+
+// "file:line:column" of a node (1-based), or the bare file name without a position.
+std::string Location(const Source& source, const YAML::Node& node);
+
+// The node's text as written, for messages ("[1, 2]", "abc", "~").
+std::string Describe(const YAML::Node& node);
+
+// Requires `node` to be a map whose keys are all in `allowed`.
+void RequireMap(const Source& source, const YAML::Node& node, const std::string& path,
+                std::initializer_list<const char*> allowed);
+
+// A key that must be present in a map.
+YAML::Node Required(const Source& source, const YAML::Node& map, const std::string& path,
+                    const char* key);
+
+std::string Join(const std::string& path, const std::string& key);
+
+double ReadNumber(const Source& source, const YAML::Node& node, const std::string& path);
+int ReadInteger(const Source& source, const YAML::Node& node, const std::string& path);
+bool ReadBool(const Source& source, const YAML::Node& node, const std::string& path);
+std::string ReadString(const Source& source, const YAML::Node& node, const std::string& path);
+// A sequence of numbers, optionally of an exact length (0: any length).
+std::vector<double> ReadNumbers(const Source& source, const YAML::Node& node,
+                                const std::string& path, std::size_t exact_length = 0);
+
+// Re-throws a ParameterError raised while validating the block at `block` (whose key path
+// is `block_path`) as an InputError placed at the deepest node its path reaches.
+[[noreturn]] void Relocate(const Source& source, const YAML::Node& block,
+                           const std::string& block_path, const ParameterError& error);
+
+// Parses a YAML file; a missing file or a syntax error is an InputError.
+YAML::Node LoadFile(const std::string& path);
+
+}  // namespace musclesim::yaml
