@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds everything with warnings as errors and runs the whole
+# test suite with ctest.
+#   scripts/test.sh              Release build in build/
+#   scripts/test.sh --sanitize   Debug build with AddressSanitizer + UBSan in build-sanitize/
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+bash scripts/install-deps.sh
+
+case "${1:-}" in
+  "") dir=build; options=() ;;
+  --sanitize)
+    dir=build-sanitize
+    options=(-DCMAKE_BUILD_TYPE=Debug -DMUSCLESIM_SANITIZE=ON -DMUSCLESIM_BUILD_BENCHMARKS=OFF) ;;
+  *) echo "usage: scripts/test.sh [--sanitize]" >&2; exit 2 ;;
+esac
+
+jobs=$(nproc)
+cmake -S . -B "$dir" -DMUSCLESIM_WARNINGS_AS_ERRORS=ON -DMUSCLESIM_BUILD_TESTS=ON "${options[@]}"
+cmake --build "$dir" -j"$jobs"
+ctest --test-dir "$dir" --output-on-failure -j"$jobs"

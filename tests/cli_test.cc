@@ -1,0 +1,167 @@
+// End-to-end tests of the `musclesim` command: exit codes, output format, messages.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+#include "musclesim/model_file.h"
+
+namespace musclesim {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+struct Outcome {
+  int exit_code;
+  std::string out;  // standard output
+  std::string err;  // standard error
+};
+
+Outcome RunCli(const std::string& arguments) {
+  const std::string err_path = ::testing::TempDir() + "cli_test_stderr.txt";
+  const std::string command =
+      std::string(MUSCLESIM_BINARY) + " " + arguments + " 2>" + err_path;
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buffer;
+  while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  std::ifstream err_file(err_path);
+  std::stringstream err;
+  err << err_file.rdbuf();
+  return {WEXITSTATUS(status), out, err.str()};
+}
+
+std::string Scenario(const std::string& name) {
+  return std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/" + name;
+}
+
+std::vector<std::vector<double>> ParseCsv(const std::string& text, std::string* header) {
+  std::istringstream in(text);
+  std::getline(in, *header);
+  std::vector<std::vector<double>> rows;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<double> row;
+    std::istringstream fields(line);
+    for (std::string field; std::getline(fields, field, ',');) row.push_back(std::stod(field));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(Cli, CurvesOverLengthMatchTheLibrary) {
+  const Outcome r = RunCli("curves " + Scenario("fit_indicator.yaml") + " --length 0.08:0.12:41");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::string header;
+  const auto rows = ParseCsv(r.out, &header);
+  EXPECT_EQ(header, "length,f_L,tension_passive");
+  ASSERT_EQ(rows.size(), 41u);
+  const TensionModel model(LoadModelFile(Scenario("fit_indicator.yaml")).params);
+  for (const auto& row : rows) {
+    ASSERT_EQ(row.size(), 3u);
+    EXPECT_DOUBLE_EQ(row[1], model.active_length().Evaluate(row[0]).value);
+    EXPECT_DOUBLE_EQ(row[2], PassiveTension(model.params().passive, row[0]).value);
+  }
+  EXPECT_DOUBLE_EQ(rows.front()[0], 0.08);
+  EXPECT_DOUBLE_EQ(rows.back()[0], 0.12);
+}
+
+TEST(Cli, CurvesOverVelocityWithSeventeenDigits) {
+  const std::string path = ::testing::TempDir() + "cli_velocity.csv";
+  const Outcome r =
+      RunCli("curves " + Scenario("fit_indicator.yaml") + " --velocity -1:1:5 -o " + path);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream file(path);
+  std::string header, line;
+  std::getline(file, header);
+  EXPECT_EQ(header, "shortening_velocity,g");
+  std::getline(file, line);  // v = -1: g = 1 + 1 (regularised: slightly less)
+  EXPECT_THAT(line, StartsWith("-1,1.99999"));
+  const std::string g = line.substr(line.find(',') + 1);
+  EXPECT_EQ(g.size(), 18u) << g;  // 17 significant digits and the point
+}
+
+TEST(Cli, FitPrintsPasteableGaussians) {
+  const Outcome r = RunCli("fit " + Scenario("fit_indicator.yaml"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, StartsWith("gaussians:\n  - {amplitude: "));
+  EXPECT_THAT(r.out, HasSubstr("\ncost: "));
+  EXPECT_THAT(r.out, HasSubstr("\nrelative_residual: "));
+  // the printed block, pasted into a model, loads and reproduces the fit's cost
+  std::string block = r.out.substr(0, r.out.find("cost:"));
+  std::string indented;
+  std::istringstream lines(block);
+  for (std::string line; std::getline(lines, line);) indented += "    " + line + "\n";
+  const std::string path = ::testing::TempDir() + "cli_pasted.yaml";
+  std::ofstream(path) << "model:\n  f_iso: 100\n  passive: {k_p: 2, alpha: 30, slack_length: 0.105}\n"
+                         "  active_length:\n    optimal_range: [0.095, 0.105]\n"
+                      << indented << "  velocity: {v_max: 1, n: 3, epsilon: 0.001}\n";
+  const LoadedModel pasted = LoadModelFile(path);
+  const LoadedModel fitted = LoadModelFile(Scenario("fit_indicator.yaml"));
+  ASSERT_EQ(pasted.params.active_length.gaussians.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(pasted.params.active_length.gaussians[k].width,
+              fitted.params.active_length.gaussians[k].width);
+  }
+}
+
+TEST(Cli, InvalidInputExitsTwoWithTheReason) {
+  Outcome r = RunCli("curves " + Scenario("fit_indicator.yaml") + " --length 0.1:0.05:10");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("--length 0.1:0.05:10: A must be less than B"));
+  r = RunCli("curves " + Scenario("fit_indicator.yaml") + " --length 0:1:x");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("N must be an integer"));
+  r = RunCli("curves " + Scenario("fit_indicator.yaml"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("give exactly one of --length"));
+  r = RunCli("curves /nonexistent.yaml --length 0:1:3");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("/nonexistent.yaml: cannot open the file"));
+  r = RunCli("fit " + Scenario("fit_indicator.yaml") + " --frobnicate");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("unknown option --frobnicate"));
+  r = RunCli("dance");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("unknown verb 'dance'"));
+}
+
+TEST(Cli, BadModelValueExitsTwoNamingFileAndKey) {
+  const std::string path = ::testing::TempDir() + "cli_bad.yaml";
+  std::ofstream(path) << "model:\n  f_iso: 100\n  passive: {k_p: 2, alpha: 30, slack_length: 0.1}\n"
+                         "  active_length: {optimal_range: [0.09, 0.1], fit: {count: 2}}\n"
+                         "  velocity: {v_max: 1, n: 0, epsilon: 0.001}\n";
+  const Outcome r = RunCli("fit " + path);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("model.velocity.n = 0 (" + path + ":5:27): must be an integer"));
+}
+
+TEST(Cli, FailedWriteKeepsThePreviousFile) {
+  const std::string path = ::testing::TempDir() + "cli_keep.csv";
+  std::ofstream(path) << "previous result\n";
+  const Outcome r = RunCli("curves " + Scenario("fit_indicator.yaml") + " --length 1:0:3 -o " + path);
+  EXPECT_EQ(r.exit_code, 2);
+  std::ifstream file(path);
+  std::string line;
+  std::getline(file, line);
+  EXPECT_EQ(line, "previous result");
+}
+
+TEST(Cli, HelpForEveryVerb) {
+  for (const char* verb : {"curves", "fit"}) {
+    const Outcome r = RunCli(std::string(verb) + " --help");
+    EXPECT_EQ(r.exit_code, 0) << verb;
+    EXPECT_THAT(r.out, HasSubstr("usage: musclesim " + std::string(verb)));
+  }
+  const Outcome top = RunCli("--help");
+  EXPECT_EQ(top.exit_code, 0);
+  EXPECT_THAT(top.out, HasSubstr("exit codes: 0 success, 1 other failure, 2 invalid input"));
+}
+
+}  // namespace
+}  // namespace musclesim
