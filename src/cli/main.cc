@@ -15,6 +15,7 @@ constexpr const char* kUsage = R"(musclesim: muscle-like actuator tension model 
 usage: musclesim VERB [ARGS...]      (musclesim VERB --help for each verb)
 
 verbs:
+  run      integrate a scenario (actuator/load dynamics on CVODE); write the trajectory CSV
   curves   tabulate f_L and passive tension over length, or g over velocity, as CSV
   fit      fit the sum of Gaussians that a model file asks for; print the components
 
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
   }
   const std::string verb = argv[1];
   try {
+    if (verb == "run") return cli::RunRun(argc, argv);
     if (verb == "curves") return cli::RunCurves(argc, argv);
     if (verb == "fit") return cli::RunFit(argc, argv);
     std::cerr << "musclesim: unknown verb '" << verb << "' (see musclesim --help)\n";

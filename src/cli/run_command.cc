@@ -1,0 +1,97 @@
+// musclesim run SCENARIO.yaml [-o PATH] [--set KEY=VALUE ...] [--stats PATH] [--quiet]
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+#include "cli/arguments.h"
+#include "cli/commands.h"
+#include "musclesim/errors.h"
+#include "musclesim/output_file.h"
+#include "musclesim/recorder.h"
+#include "musclesim/scenario.h"
+
+namespace musclesim::cli {
+
+namespace {
+
+constexpr const char* kHelp = R"(usage: musclesim run SCENARIO.yaml [-o PATH] [--set KEY=VALUE ...] [--stats PATH] [--quiet]
+
+Integrates the scenario's actuator/load dynamics with CVODE and writes the trajectory CSV:
+  t,length,shortening_velocity,activation,tension_passive,tension_active,tension_total,load,phase
+  -o PATH          overrides output.file ("-" is standard output)
+  --set KEY=VALUE  overrides one value by its dotted path, e.g. model.velocity.n=4 or
+                   load[0].value=55; validated like the file (repeatable)
+  --stats PATH     writes solver counters, wall time, final time and status as JSON
+  --quiet          no summary line on standard error
+The CSV is written atomically. If the solver fails, the rows computed so far go to
+PATH.partial and PATH is left as it was.
+Exit codes: 0 completed (or stopped at a length limit), 2 invalid input, 3 solver failure
+(or the length reached zero), 1 anything else.
+)";
+
+// Fastest shortening or lengthening on record, to report leaving [-v_max, v_max].
+double LargestSpeed(const std::vector<TrajectoryPoint>& trajectory) {
+  double largest = 0.0;
+  for (const TrajectoryPoint& p : trajectory) {
+    largest = std::max(largest, std::abs(p.sample.shortening_velocity));
+  }
+  return largest;
+}
+
+}  // namespace
+
+int RunRun(int argc, char** argv) {
+  const Arguments args =
+      Parse(argc, argv, 2, {"-o", "--set", "--stats"}, {"--quiet", "--help", "-h"});
+  if (args.Has("--help") || args.Has("-h")) {
+    std::cout << kHelp;
+    return kExitSuccess;
+  }
+  if (args.positional.size() != 1) throw UsageError("expected one scenario file (see --help)");
+  const auto sets = args.values.find("--set");
+  const ScenarioSpec spec = LoadScenario(
+      args.positional[0], sets == args.values.end() ? std::vector<std::string>{} : sets->second);
+  const std::string output = args.Value("-o", spec.output.file);
+  if (output.empty()) {
+    throw InputError(spec.source + ": no output file: set output.file or pass -o PATH");
+  }
+
+  const ActuatorSystem system(spec.model.params, spec.actuator, spec.activation, spec.loads);
+  Simulation simulation;
+  std::vector<TrajectoryPoint> trajectory;
+  const RunStats stats = simulation.Run(system, spec.solver, spec.Request(), trajectory);
+  const std::string csv = FormatTrajectoryCsv(trajectory, spec.PhaseTolerance());
+  if (args.Has("--stats")) WriteOutput(args.Value("--stats"), FormatStatsJson(stats));
+
+  const bool quiet = args.Has("--quiet");
+  const std::string label = spec.name.empty() ? spec.source : spec.name;
+  if (stats.status == RunStatus::kFailed) {
+    const std::string partial = output == "-" ? "-" : output + ".partial";
+    WriteOutput(partial, csv);
+    std::cerr << "musclesim run: " << label << ": solver failure: " << stats.message << "\n"
+              << "musclesim run: the " << trajectory.size() << " rows computed so far are in "
+              << (partial == "-" ? std::string("standard output") : partial)
+              << (output == "-" ? "" : "; " + output + " was left as it was") << "\n";
+    return kExitSolverFailure;
+  }
+  WriteOutput(output, csv);
+
+  if (!quiet) {
+    const double speed = LargestSpeed(trajectory);
+    const double v_max = spec.model.params.velocity.v_max;
+    if (speed > v_max) {
+      std::cerr << "musclesim run: note: |shortening velocity| reached " << FormatNumber(speed)
+                << " m/s, beyond v_max = " << FormatNumber(v_max)
+                << " m/s, where g(v) is the paper's power law extrapolated\n";
+    }
+    if (stats.status == RunStatus::kLimit) std::cerr << "musclesim run: " << stats.message << "\n";
+    std::cerr << "musclesim run: " << label << ": " << ToString(stats.status) << " at t = "
+              << FormatNumber(stats.final_time) << " s: " << stats.steps << " steps, "
+              << stats.rhs_evals << " RHS evaluations, " << stats.wall_seconds * 1e3
+              << " ms, final length " << FormatNumber(trajectory.back().sample.length) << " m -> "
+              << output << "\n";
+  }
+  return kExitSuccess;
+}
+
+}  // namespace musclesim::cli
