@@ -2,6 +2,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <fstream>
@@ -152,8 +153,97 @@ TEST(Cli, FailedWriteKeepsThePreviousFile) {
   EXPECT_EQ(line, "previous result");
 }
 
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(Cli, RunWritesTheTrajectoryAndStats) {
+  const std::string csv = ::testing::TempDir() + "cli_run.csv";
+  const std::string json = ::testing::TempDir() + "cli_run.json";
+  const Outcome r = RunCli("run " + Scenario("concentric.yaml") + " -o " + csv + " --stats " + json);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("concentric_isotonic: completed at t = 0.5 s: "));
+  std::string header;
+  const std::string text = ReadFile(csv);
+  std::istringstream lines(text);
+  std::getline(lines, header);
+  EXPECT_EQ(header,
+            "t,length,shortening_velocity,activation,tension_passive,tension_active,"
+            "tension_total,load,phase");
+  int rows = 0, concentric = 0;
+  for (std::string line; std::getline(lines, line);) {
+    ++rows;
+    concentric += line.find(",concentric") != std::string::npos;
+  }
+  EXPECT_EQ(rows, 501);  // 0 to 0.5 s every millisecond
+  EXPECT_GT(concentric, 400);
+  const std::string stats = ReadFile(json);
+  for (const char* key : {"\"steps\": ", "\"rhs_evals\": ", "\"jac_evals\": ",
+                          "\"linear_setups\": ", "\"newton_iters\": ", "\"newton_conv_fails\": ",
+                          "\"error_test_fails\": ", "\"wall_seconds\": ", "\"final_time\": 0.5",
+                          "\"status\": \"completed\""}) {
+    EXPECT_THAT(stats, HasSubstr(key));
+  }
+}
+
+TEST(Cli, RunToStandardOutputAndQuiet) {
+  const Outcome r = RunCli("run " + Scenario("isometric.yaml") +
+                           " -o - --quiet --set output.interval=0.25");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_THAT(r.out, StartsWith("t,length,"));
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 4);  // header, t = 0, 0.25, 0.5
+}
+
+TEST(Cli, RunStoppedAtALimitSucceeds) {
+  const std::string json = ::testing::TempDir() + "cli_limit.json";
+  const Outcome r = RunCli("run " + Scenario("concentric.yaml") + " -o - --stats " + json +
+                           " --set limits.min_length=0.09");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("min_length = 0.09 reached"));
+  EXPECT_THAT(ReadFile(json), HasSubstr("\"status\": \"limit\""));
+}
+
+TEST(Cli, SolverFailureExitsThreeAndKeepsThePreviousResult) {
+  const std::string csv = ::testing::TempDir() + "cli_fail.csv";
+  std::ofstream(csv) << "previous result\n";
+  std::remove((csv + ".partial").c_str());
+  const Outcome r = RunCli("run " + Scenario("isometric.yaml") + " -o " + csv +
+                           " --set solver.max_steps=20");
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_THAT(r.err, HasSubstr("solver failure: CVODE failed at t = "));
+  EXPECT_THAT(r.err, HasSubstr("CV_TOO_MUCH_WORK"));
+  EXPECT_THAT(r.err, HasSubstr(csv + ".partial"));
+  EXPECT_EQ(ReadFile(csv), "previous result\n");
+  EXPECT_THAT(ReadFile(csv + ".partial"), StartsWith("t,length,shortening_velocity"));
+}
+
+TEST(Cli, RunRejectsInvalidInputWithExitTwo) {
+  Outcome r = RunCli("run " + Scenario("concentric.yaml") + " -o - --set model.velocity.n=0");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("model.velocity.n = 0 (--set): must be an integer >= 1"));
+  r = RunCli("run " + Scenario("concentric.yaml") + " -o - --set solver.rtol=-1");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("solver.rtol = -1 (--set): must be finite and > 0"));
+  r = RunCli("run " + Scenario("fit_indicator.yaml"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("actuator (" + Scenario("fit_indicator.yaml") +
+                               ":4:1): missing required key"));  // where the map begins
+}
+
+TEST(Cli, EveryCanonicalScenarioRuns) {
+  for (const char* name : {"isometric", "concentric", "eccentric", "twitches", "sine_load",
+                           "activation_ramp", "hanging_mass"}) {
+    const Outcome r = RunCli("run " + Scenario(std::string(name) + ".yaml") + " -o - --quiet");
+    EXPECT_EQ(r.exit_code, 0) << name << ": " << r.err;
+  }
+}
+
 TEST(Cli, HelpForEveryVerb) {
-  for (const char* verb : {"curves", "fit"}) {
+  for (const char* verb : {"run", "curves", "fit"}) {
     const Outcome r = RunCli(std::string(verb) + " --help");
     EXPECT_EQ(r.exit_code, 0) << verb;
     EXPECT_THAT(r.out, HasSubstr("usage: musclesim " + std::string(verb)));

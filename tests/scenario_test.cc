@@ -1,0 +1,172 @@
+#include "musclesim/scenario.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "musclesim/errors.h"
+#include "support/scenario_files.h"
+
+namespace musclesim {
+namespace {
+
+using ::testing::HasSubstr;
+
+const std::string kModel = R"(model:
+  f_iso: 100.0
+  passive: {k_p: 1.0, alpha: 100.0, slack_length: 0.105}
+  active_length:
+    optimal_range: [0.095, 0.105]
+    gaussians: [{amplitude: 2.0, width: 4000.0, center: 0.1}]
+  velocity: {v_max: 1.0, n: 3, epsilon: 1.0e-3}
+)";
+
+const std::string kRest = R"(actuator: {mass: 0.1, damping: 0.0, stiffness: 0.0, rest_length: 0.1}
+initial: {length: 0.1, lengthening_rate: 0.0}
+activation: {type: step, time: 0.05, before: 0.0, after: 1.0}
+load:
+  - {type: constant, value: 40.0}
+time: {start: 0.0, end: 1.0}
+solver: {method: bdf, rtol: 1.0e-6, atol: 1.0e-9, jacobian: analytic, max_step: 0.0}
+output: {file: out.csv, interval: 0.001}
+limits: {min_length: 0.05, max_length: 0.2}
+)";
+
+// The error LoadScenario raises for the valid file with `from` replaced by `to`, with the
+// temporary path shown as FILE.
+std::string ErrorFor(const std::string& from, const std::string& to,
+                     const std::vector<std::string>& sets = {}) {
+  std::string text = kModel + kRest;
+  if (!from.empty()) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  }
+  const std::string path = testing::WriteTempFile("scenario_test.yaml", text);
+  try {
+    LoadScenario(path, sets);
+  } catch (const InputError& e) {
+    std::string message = e.what();
+    for (auto at = message.find(path); at != std::string::npos; at = message.find(path)) {
+      message.replace(at, path.size(), "FILE");
+    }
+    return message;
+  }
+  return "accepted";
+}
+
+TEST(Scenario, ReadsEveryKey) {
+  const std::string path = testing::WriteTempFile("scenario_ok.yaml", kModel + kRest);
+  const ScenarioSpec s = LoadScenario(path);
+  EXPECT_EQ(s.actuator.mass, 0.1);
+  EXPECT_EQ(s.activation.kind, WaveformKind::kStep);
+  ASSERT_EQ(s.loads.size(), 1u);
+  EXPECT_EQ(s.loads[0].force.value, 40.0);
+  EXPECT_EQ(s.t_end, 1.0);
+  EXPECT_EQ(s.solver.method, IntegrationMethod::kBdf);
+  EXPECT_EQ(s.output.file, "out.csv");
+  EXPECT_EQ(s.output.interval, 0.001);
+  EXPECT_EQ(*s.min_length, 0.05);
+  EXPECT_EQ(s.PhaseTolerance(), 1e-3);  // defaults to epsilon, MODEL.md section 6
+}
+
+TEST(Scenario, ReadsEveryWaveformAndLoadType) {
+  const std::string loads = R"(load:
+  - {type: constant, value: 1.0}
+  - {type: step, time: 0.1, before: 0.0, after: 2.0}
+  - {type: ramp, start: 0.1, end: 0.2, from: 0.0, to: 3.0}
+  - {type: sine, offset: 1.0, amplitude: 0.5, frequency: 2.0, phase: 0.1}
+  - {type: pulses, start: 0.0, period: 0.1, width: 0.02, low: 0.0, high: 4.0}
+  - {type: table, points: [[0.0, 1.0], [0.5, 2.0]]}
+  - {type: spring, stiffness: 100.0, anchor: 0.1}
+  - {type: mass, mass: 2.0}
+)";
+  const std::string path = testing::WriteTempFile(
+      "scenario_loads.yaml", kModel + kRest.substr(0, kRest.find("load:")) + loads +
+                                 kRest.substr(kRest.find("time: {")));
+  const ScenarioSpec s = LoadScenario(path);
+  ASSERT_EQ(s.loads.size(), 8u);
+  EXPECT_EQ(s.loads[6].kind, LoadKind::kSpring);
+  EXPECT_EQ(s.loads[7].gravity, 9.81);
+  EXPECT_EQ(s.loads[5].force.points[1].value, 2.0);
+}
+
+TEST(Scenario, SetOverridesAnyScalarByItsPath) {
+  const std::string path = testing::WriteTempFile("scenario_set.yaml", kModel + kRest);
+  const ScenarioSpec s = LoadScenario(
+      path, {"model.velocity.n=4", "load[0].value=55", "solver.method=adams",
+             "model.active_length.optimal_range[1]=0.11", "output.interval=steps",
+             "model.active_length.sigma=2"});
+  EXPECT_EQ(s.model.params.velocity.n, 4);
+  EXPECT_EQ(s.loads[0].force.value, 55.0);
+  EXPECT_EQ(s.solver.method, IntegrationMethod::kAdams);
+  EXPECT_EQ(s.model.params.active_length.optimal_max, 0.11);
+  EXPECT_TRUE(s.output.every_step);
+  EXPECT_EQ(s.model.params.active_length.sigma, 2.0);  // a new key in an existing map
+}
+
+TEST(Scenario, SetIsValidatedLikeTheFile) {
+  EXPECT_EQ(ErrorFor("", "", {"model.velocity.n=0"}),
+            "model.velocity.n = 0 (--set): must be an integer >= 1 (at most 1000)");
+  EXPECT_THAT(ErrorFor("", "", {"model.velocity.m=3"}), HasSubstr("model.velocity.m (--set): unknown key"));
+  EXPECT_EQ(ErrorFor("", "", {"model.speed.n=3"}),
+            "--set model.speed.n=3: model.speed does not exist in FILE");
+  EXPECT_EQ(ErrorFor("", "", {"load[3].value=3"}),
+            "--set load[3].value=3: load[3] does not exist in FILE");
+  EXPECT_EQ(ErrorFor("", "", {"model.velocity=3"}),
+            "--set model.velocity=3: model.velocity is a map or list; --set replaces single "
+            "values only");
+  EXPECT_THAT(ErrorFor("", "", {"model.velocity.n"}), HasSubstr("expected KEY=VALUE"));
+  EXPECT_THAT(ErrorFor("", "", {"a..b=1"}), HasSubstr("is not a dotted key path"));
+}
+
+TEST(Scenario, RejectsEveryBrokenRule) {
+  const std::vector<std::tuple<std::string, std::string, std::string>> cases = {
+      {"mass: 0.1,", "mass: 0,", "actuator.mass = 0 (FILE:8:18): must be finite and > 0 [kg]"},
+      {"damping: 0.0", "damping: -1", "actuator.damping = -1"},
+      {"stiffness: 0.0", "stiffness: -5", "actuator.stiffness = -5"},
+      {"rest_length: 0.1}", "rest_length: 0.1, color: red}", "actuator.color (FILE:8:71): unknown key"},
+      {"length: 0.1,", "length: 0,", "initial.length = 0 (FILE:9:19): must be finite and > 0"},
+      {"lengthening_rate: 0.0", "lengthening_rate: x", "initial.lengthening_rate = x"},
+      {"after: 1.0}", "after: 1.2}", "activation.after = 1.2 (FILE:10:58): activation must stay within [0, 1]"},
+      {"before: 0.0,", "before: -0.5,", "activation.before = -0.5"},
+      {"{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: ramp, start: 0, end: 1, from: 0, to: 2}",
+       "activation.to = 2"},
+      {"{type: step, time: 0.05, before: 0.0, after: 1.0}",
+       "{type: sine, offset: 0.5, amplitude: 0.7, frequency: 1}", "activation.amplitude = 0.7"},
+      {"{type: step, time: 0.05, before: 0.0, after: 1.0}",
+       "{type: pulses, start: 0, period: 0.1, width: 0.02, low: 0, high: 3}", "activation.high = 3"},
+      {"{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: table, points: [[0, 0], [1, 1.5]]}",
+       "activation.points[1][1] = 1.5"},
+      {"{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: table, points: [[0, 0], [1, 1], [0.5, 1]]}",
+       "activation.points[2][0] = 0.5 (FILE:10:53): table times must be strictly increasing"},
+      {"{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: square, value: 1}",
+       "activation.type = square (FILE:10:20): must be one of constant, step, ramp, sine, pulses, table"},
+      {"{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: step, time: 0.05, after: 1.0}",
+       "activation.before (FILE:10:13): missing required key"},
+      {"{type: constant, value: 40.0}", "{type: spring, stiffness: -1, anchor: 0.1}",
+       "load[0].stiffness = -1 (FILE:12:31): must be finite and >= 0 [N/m]"},
+      {"{type: constant, value: 40.0}", "{type: mass, mass: 0}", "load[0].mass = 0"},
+      {"{type: constant, value: 40.0}", "{type: rocket, value: 1}",
+       "load[0].type = rocket (FILE:12:12): must be one of constant, step, ramp, sine, pulses, table, spring, mass"},
+      {"{type: constant, value: 40.0}", "{type: pulses, start: 0, period: 1.0e-8, width: 1.0e-9, low: 0, high: 1}",
+       "load[0].period = 1e-08 (FILE:12:38): gives more than 5 million pulses"},
+      {"end: 1.0}", "end: 0.0}", "time.end = 0.0 (FILE:13:25): must be finite and greater than time.start = 0"},
+      {"rtol: 1.0e-6", "rtol: 0", "solver.rtol = 0 (FILE:14:29)"},
+      {"atol: 1.0e-9", "atol: -1", "solver.atol = -1"},
+      {"method: bdf", "method: rk4", "solver.method = rk4 (FILE:14:18): must be bdf or adams"},
+      {"jacobian: analytic", "jacobian: exact", "solver.jacobian = exact (FILE:14:61): must be analytic or difference_quotient"},
+      {"max_step: 0.0", "max_step: -1", "solver.max_step = -1"},
+      {"interval: 0.001", "interval: 0", "output.interval = 0 (FILE:15:35): must be `steps` or a time > 0"},
+      {"interval: 0.001", "interval: often", "output.interval = often"},
+      {"min_length: 0.05", "min_length: 0.15", "limits.min_length = 0.15 (FILE:16:22): must be >= 0 and below initial.length = 0.1"},
+      {"max_length: 0.2", "max_length: 0.1", "limits.max_length = 0.1 (FILE:16:40): must be above initial.length"},
+      {"time: {start", "tim: {start", "tim (FILE:13:1): unknown key"},
+      {"time: {start: 0.0, end: 1.0}\n", "", "time (FILE:1:1): missing required key"},
+  };
+  for (const auto& [from, to, expected] : cases) {
+    EXPECT_THAT(ErrorFor(from, to), HasSubstr(expected)) << from << " -> " << to;
+  }
+}
+
+}  // namespace
+}  // namespace musclesim

@@ -1,0 +1,40 @@
+// Test helpers: temporary scenario files and one-call simulations of them.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "musclesim/scenario.h"
+#include "musclesim/simulation.h"
+
+namespace musclesim::testing {
+
+inline std::string WriteTempFile(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+inline std::string ScenarioPath(const std::string& name) {
+  return std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/" + name;
+}
+
+struct Outcome {
+  ScenarioSpec spec;
+  RunStats stats;
+  std::vector<TrajectoryPoint> trajectory;
+};
+
+inline Outcome Simulate(const std::string& path, const std::vector<std::string>& sets = {}) {
+  Outcome out{LoadScenario(path, sets), {}, {}};
+  const ActuatorSystem system(out.spec.model.params, out.spec.actuator, out.spec.activation,
+                              out.spec.loads);
+  Simulation simulation;
+  out.stats = simulation.Run(system, out.spec.solver, out.spec.Request(), out.trajectory);
+  return out;
+}
+
+}  // namespace musclesim::testing
