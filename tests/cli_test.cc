@@ -24,7 +24,10 @@ struct Outcome {
 };
 
 Outcome RunCli(const std::string& arguments) {
-  const std::string err_path = ::testing::TempDir() + "cli_test_stderr.txt";
+  // one file per test: ctest runs the tests in parallel processes
+  const std::string err_path = ::testing::TempDir() + "cli_test_stderr_" +
+                               ::testing::UnitTest::GetInstance()->current_test_info()->name() +
+                               ".txt";
   const std::string command =
       std::string(MUSCLESIM_BINARY) + " " + arguments + " 2>" + err_path;
   FILE* pipe = popen(command.c_str(), "r");

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "musclesim/errors.h"
+#include "support/scenario_files.h"
 
 namespace musclesim {
 namespace {
@@ -24,10 +25,7 @@ constexpr const char* kValid = R"(model:
 
 std::string WriteTemp(const std::string& text) {
   static int counter = 0;
-  const std::string path =
-      ::testing::TempDir() + "model_file_test_" + std::to_string(++counter) + ".yaml";
-  std::ofstream(path) << text;
-  return path;
+  return testing::WriteTempFile("model_" + std::to_string(++counter) + ".yaml", text);
 }
 
 // Replaces the first occurrence of `from` in the valid file by `to`.

@@ -12,8 +12,12 @@
 
 namespace musclesim::testing {
 
+// Writes `text` to a temporary file named after the running test (ctest runs tests in
+// parallel processes, which must not share files) and `name`.
 inline std::string WriteTempFile(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + name;
+  const std::string path = ::testing::TempDir() +
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name() +
+                           "_" + name;
   std::ofstream(path) << text;
   return path;
 }
