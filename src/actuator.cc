@@ -20,7 +20,7 @@ ActuatorSystem::ActuatorSystem(const ModelParams& model, const ActuatorParams& a
                                Waveform activation, std::vector<Load> loads)
     : model_(model),
       actuator_((Validate(actuator), actuator)),
-      activation_((Validate(activation), std::move(activation))),
+      activation_((ValidateActivation(activation), std::move(activation))),
       loads_(std::move(loads)),
       inverse_mass_(1.0 / (actuator.mass + loads_.AddedMass())) {}
 
@@ -38,8 +38,7 @@ std::vector<double> ActuatorSystem::Breakpoints(double t0, double t1) const {
   std::vector<double> times = activation_.Breakpoints(t0, t1);
   const std::vector<double> load_times = loads_.Breakpoints(t0, t1);
   times.insert(times.end(), load_times.begin(), load_times.end());
-  std::sort(times.begin(), times.end());
-  times.erase(std::unique(times.begin(), times.end()), times.end());
+  SortUnique(times);
   return times;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "musclesim/errors.h"
 
@@ -26,6 +27,13 @@ void Validate(const Load& load) {
 }
 
 LoadSet::LoadSet(std::vector<Load> loads) : loads_(std::move(loads)) {
+  for (std::size_t i = 0; i < loads_.size(); ++i) {
+    try {
+      Validate(loads_[i]);
+    } catch (const ParameterError& e) {
+      throw ParameterError("load[" + std::to_string(i) + "]." + e.path(), e.value(), e.rule());
+    }
+  }
   for (const Load& load : loads_) {
     switch (load.kind) {
       case LoadKind::kForce:
@@ -55,8 +63,7 @@ std::vector<double> LoadSet::Breakpoints(double t0, double t1) const {
     const std::vector<double> own = w.Breakpoints(t0, t1);
     times.insert(times.end(), own.begin(), own.end());
   }
-  std::sort(times.begin(), times.end());
-  times.erase(std::unique(times.begin(), times.end()), times.end());
+  SortUnique(times);
   return times;
 }
 

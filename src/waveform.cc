@@ -89,9 +89,13 @@ std::vector<double> Waveform::Breakpoints(double t0, double t1) const {
       for (const TablePoint& p : points) add(p.t);
       break;
   }
+  SortUnique(times);
+  return times;
+}
+
+void SortUnique(std::vector<double>& times) {
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
-  return times;
 }
 
 double Waveform::Minimum(double t0, double t1) const {

@@ -30,6 +30,7 @@ struct ActuatorSample {
 
 class ActuatorSystem {
  public:
+  // Validates everything (ParameterError); the activation must stay within [0, 1].
   ActuatorSystem(const ModelParams& model, const ActuatorParams& actuator, Waveform activation,
                  std::vector<Load> loads);
 

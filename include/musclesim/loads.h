@@ -27,6 +27,7 @@ void Validate(const Load& load);
 // The sum of all loads, evaluated without allocation.
 class LoadSet {
  public:
+  // Validates every load (ParameterError with paths such as "load[1].stiffness").
   explicit LoadSet(std::vector<Load> loads);
 
   // Total force [N] at time t and length x, and its derivative in x [N/m].

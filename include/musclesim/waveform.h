@@ -46,6 +46,9 @@ struct Waveform {
 // Throws ParameterError with paths named as the YAML keys ("period", "points[2][0]").
 void Validate(const Waveform& waveform);
 
+// Sorts `times` and removes repeated entries: the form every breakpoint list takes.
+void SortUnique(std::vector<double>& times);
+
 }  // namespace musclesim
 
 namespace musclesim {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "musclesim/errors.h"
 #include "musclesim/scenario.h"
 #include "musclesim/simulation.h"
 
@@ -20,6 +21,22 @@ inline std::string WriteTempFile(const std::string& name, const std::string& tex
                            "_" + name;
   std::ofstream(path) << text;
   return path;
+}
+
+// The message of the InputError that `load` throws for `path`, with the path (which varies
+// per run) shown as FILE; "accepted" when nothing is thrown.
+template <typename Load>
+std::string InputErrorOf(const std::string& path, Load load) {
+  try {
+    load();
+  } catch (const InputError& e) {
+    std::string message = e.what();
+    for (auto at = message.find(path); at != std::string::npos; at = message.find(path)) {
+      message.replace(at, path.size(), "FILE");
+    }
+    return message;
+  }
+  return "accepted";
 }
 
 inline std::string ScenarioPath(const std::string& name) {
