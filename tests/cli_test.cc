@@ -237,6 +237,12 @@ TEST(Cli, RunRejectsInvalidInputWithExitTwo) {
                                ":4:1): missing required key"));  // where the map begins
 }
 
+TEST(Cli, UnwritableOutputExitsOne) {
+  const Outcome r = RunCli("run " + Scenario("concentric.yaml") + " --quiet -o /nonexistent/run.csv");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("/nonexistent/run.csv: cannot write"));
+}
+
 TEST(Cli, EveryCanonicalScenarioRuns) {
   for (const char* name : {"isometric", "concentric", "eccentric", "twitches", "sine_load",
                            "activation_ramp", "hanging_mass"}) {

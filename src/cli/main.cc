@@ -26,9 +26,13 @@ exit codes: 0 success, 1 other failure, 2 invalid input, 3 solver failure
 
 int main(int argc, char** argv) {
   using namespace musclesim;
-  if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
+  if (argc < 2) {
+    std::cerr << kUsage;
+    return kExitInvalidInput;
+  }
+  if (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
     std::cout << kUsage;
-    return argc < 2 ? kExitInvalidInput : kExitSuccess;
+    return kExitSuccess;
   }
   const std::string verb = argv[1];
   try {
