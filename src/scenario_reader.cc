@@ -397,10 +397,32 @@ void ApplyOverride(YAML::Node root, const std::string& text, const std::string& 
 
 }  // namespace
 
+struct ScenarioTemplate::Parsed {
+  YAML::Node root;
+};
+
+ScenarioTemplate::ScenarioTemplate(const std::string& path)
+    : ScenarioTemplate(path, yaml::ReadText(path)) {}
+
+ScenarioTemplate::ScenarioTemplate(std::string path, std::string text)
+    : path_(std::move(path)), text_(std::move(text)),
+      parsed_(std::make_unique<Parsed>(Parsed{yaml::Parse(path_, text_)})) {}
+
+ScenarioTemplate::~ScenarioTemplate() = default;
+
+std::unique_ptr<ScenarioTemplate> ScenarioTemplate::Copy() const {
+  return std::unique_ptr<ScenarioTemplate>(new ScenarioTemplate(path_, text_));
+}
+
+ScenarioSpec ScenarioTemplate::Instantiate(const std::vector<std::string>& overrides) const {
+  if (overrides.empty()) return ReadScenario(yaml::Source{path_}, parsed_->root);
+  YAML::Node root = YAML::Clone(parsed_->root);  // overrides must not touch the template
+  for (const std::string& text : overrides) ApplyOverride(root, text, path_);
+  return ReadScenario(yaml::Source{path_}, root);
+}
+
 ScenarioSpec LoadScenario(const std::string& path, const std::vector<std::string>& overrides) {
-  YAML::Node root = yaml::LoadFile(path);
-  for (const std::string& text : overrides) ApplyOverride(root, text, path);
-  return ReadScenario(yaml::Source{path}, root);
+  return ScenarioTemplate(path).Instantiate(overrides);
 }
 
 }  // namespace musclesim

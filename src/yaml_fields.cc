@@ -130,17 +130,23 @@ void Relocate(const Source& source, const YAML::Node& block, const std::string& 
        error.rule());
 }
 
-YAML::Node LoadFile(const std::string& path) {
+std::string ReadText(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the file for reading");
   std::stringstream text;
   text << in.rdbuf();
+  return text.str();
+}
+
+YAML::Node Parse(const std::string& path, const std::string& text) {
   try {
-    return YAML::Load(text.str());
+    return YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     throw InputError(path + ":" + std::to_string(e.mark.line + 1) + ":" +
                      std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
   }
 }
+
+YAML::Node LoadFile(const std::string& path) { return Parse(path, ReadText(path)); }
 
 }  // namespace musclesim::yaml

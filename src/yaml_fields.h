@@ -53,5 +53,8 @@ std::vector<double> ReadNumbers(const Source& source, const YAML::Node& node,
 
 // Parses a YAML file; a missing file or a syntax error is an InputError.
 YAML::Node LoadFile(const std::string& path);
+// The two halves of LoadFile: the file's text, and that text parsed (`path` for messages).
+std::string ReadText(const std::string& path);
+YAML::Node Parse(const std::string& path, const std::string& text);
 
 }  // namespace musclesim::yaml

@@ -2,6 +2,7 @@
 // read from YAML (README "Scenario files") and validated before anything runs.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,5 +42,30 @@ struct ScenarioSpec {
 // `--set` gives them: a scalar at an existing path, or a new key in an existing map).
 // Throws InputError naming file:line:column (or --set), key, value and rule.
 ScenarioSpec LoadScenario(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// A scenario file read and parsed once, from which many scenarios are made by overrides
+// (a sweep's points). Not shared between threads: each thread makes its own Copy().
+class ScenarioTemplate {
+ public:
+  // Throws InputError if the file cannot be read or is not YAML.
+  explicit ScenarioTemplate(const std::string& path);
+  ~ScenarioTemplate();
+  ScenarioTemplate(const ScenarioTemplate&) = delete;
+  ScenarioTemplate& operator=(const ScenarioTemplate&) = delete;
+
+  // An independent template parsed from the same text.
+  std::unique_ptr<ScenarioTemplate> Copy() const;
+
+  // The scenario with `overrides` applied, validated as LoadScenario does.
+  ScenarioSpec Instantiate(const std::vector<std::string>& overrides) const;
+  const std::string& path() const { return path_; }
+
+ private:
+  ScenarioTemplate(std::string path, std::string text);
+  struct Parsed;
+  std::string path_;
+  std::string text_;
+  std::unique_ptr<Parsed> parsed_;
+};
 
 }  // namespace musclesim
