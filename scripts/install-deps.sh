@@ -11,6 +11,7 @@ packages=(
   libgtest-dev libgmock-dev googletest   # tests
   libnlopt-cxx-dev      # gradient-based minimiser of the Gaussian fit
   libbenchmark-dev      # bench/
+  libopenmpi-dev openmpi-bin   # sweeps across machines (-DMUSCLESIM_WITH_MPI=ON)
 )
 
 missing=()

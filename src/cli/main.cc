@@ -16,10 +16,12 @@ usage: musclesim VERB [ARGS...]      (musclesim VERB --help for each verb)
 
 verbs:
   run      integrate a scenario (actuator/load dynamics on CVODE); write the trajectory CSV
+  sweep    run many scenarios made from one by overriding values; one summary CSV
   curves   tabulate f_L and passive tension over length, or g over velocity, as CSV
   fit      fit the sum of Gaussians that a model file asks for; print the components
 
-exit codes: 0 success, 1 other failure, 2 invalid input, 3 solver failure
+exit codes: 0 success, 1 other failure, 2 invalid input, 3 solver failure,
+            130 sweep interrupted
 )";
 
 }  // namespace
@@ -37,6 +39,7 @@ int main(int argc, char** argv) {
   const std::string verb = argv[1];
   try {
     if (verb == "run") return cli::RunRun(argc, argv);
+    if (verb == "sweep") return cli::RunSweepCommand(argc, argv);
     if (verb == "curves") return cli::RunCurves(argc, argv);
     if (verb == "fit") return cli::RunFit(argc, argv);
     std::cerr << "musclesim: unknown verb '" << verb << "' (see musclesim --help)\n";
