@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds everything with warnings as errors and runs the whole
 # test suite with ctest.
-#   scripts/test.sh              Release build in build/
+#   scripts/test.sh              Release build with MPI in build/ (tests run mpirun -n 2)
 #   scripts/test.sh --sanitize   Debug build with AddressSanitizer + UBSan in build-sanitize/
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 
 case "${1:-}" in
-  "") dir=build; options=() ;;
+  "") dir=build; options=(-DMUSCLESIM_WITH_MPI=ON) ;;
   --sanitize)
     dir=build-sanitize
     options=(-DCMAKE_BUILD_TYPE=Debug -DMUSCLESIM_SANITIZE=ON -DMUSCLESIM_BUILD_BENCHMARKS=OFF) ;;

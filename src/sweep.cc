@@ -275,9 +275,11 @@ SweepSpec LoadSweep(const std::string& path) {
   // every point is a full scenario: validate them all before anything runs
   const ScenarioTemplate base_template(spec.base);
   const long points = PointCount(spec);
+  const bool keep = points <= kKeptScenarioLimit;
   for (long i = 0; i < points; ++i) {
     try {
-      base_template.Instantiate(PointOverrides(spec, i));
+      ScenarioSpec scenario = base_template.Instantiate(PointOverrides(spec, i));
+      if (keep) spec.scenarios.push_back(std::move(scenario));
     } catch (const InputError& e) {
       // name the axis whose value the message is about, else every axis of the point
       const std::vector<std::string> values = PointValues(spec, i);

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iostream>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "musclesim/errors.h"
@@ -80,7 +81,11 @@ std::string PointRunner::Run(long index, bool& failed) {
   double phase_tolerance = 0.0;
   s.trajectory.clear();
   try {
-    const ScenarioSpec scenario = s.base->Instantiate(PointOverrides(s.spec, index));
+    // kept from validation for modest sweeps; rebuilt from the template for huge ones
+    std::optional<ScenarioSpec> rebuilt;
+    if (s.spec.scenarios.empty()) rebuilt = s.base->Instantiate(PointOverrides(s.spec, index));
+    const ScenarioSpec& scenario =
+        rebuilt ? *rebuilt : s.spec.scenarios[static_cast<std::size_t>(index)];
     const ActuatorSystem system(scenario.model.params, scenario.actuator, scenario.activation,
                                 scenario.loads);
     stats = s.simulation.Run(system, scenario.solver, scenario.Request(), s.trajectory);

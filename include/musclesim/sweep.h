@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "musclesim/metrics.h"
+#include "musclesim/scenario.h"
 
 namespace musclesim {
 
@@ -39,7 +40,12 @@ struct SweepSpec {
   MetricOptions metric_options;
   TrajectoryPolicy trajectories = TrajectoryPolicy::kNone;
   std::string output;                // summary CSV, relative to the working directory
+  // The validated scenario of every point, kept from validation when there are at most
+  // kKeptScenarioLimit points (larger sweeps rebuild each point's scenario when it runs).
+  std::vector<ScenarioSpec> scenarios;
 };
+
+inline constexpr long kKeptScenarioLimit = 50000;
 
 // Reads and validates a sweep file, then every point of it against the base scenario, so
 // that nothing runs before all points are known to be valid. Throws InputError naming the

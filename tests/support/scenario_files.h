@@ -39,6 +39,11 @@ std::string InputErrorOf(const std::string& path, Load load) {
   return "accepted";
 }
 
+inline std::string ReadFile(const std::string& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
 inline std::string ScenarioPath(const std::string& name) {
   return std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/" + name;
 }

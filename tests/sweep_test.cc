@@ -1,0 +1,224 @@
+#include "musclesim/sweep.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include "musclesim/errors.h"
+#include "musclesim/sweep_runner.h"
+#include "support/scenario_files.h"
+
+namespace musclesim {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+
+// A sweep file next to a copy of a canonical scenario, so that `base` resolves.
+std::string WriteSweep(const std::string& name, const std::string& body,
+                       const std::string& base = "concentric.yaml") {
+  const std::string scenario = testing::WriteTempFile(name + "_base.yaml",
+                                                      testing::ReadFile(testing::ScenarioPath(base)));
+  return testing::WriteTempFile(
+      name + ".yaml", "base: " + std::filesystem::path(scenario).filename().string() + "\n" + body);
+}
+
+TEST(Sweep, GridIsTheCartesianProductLastAxisFastest) {
+  const SweepSpec spec = LoadSweep(WriteSweep("grid", R"(mode: grid
+parameters:
+  model.velocity.n: [1, 2, 3]
+  load[0].after: {from: 10.0, to: 30.0, count: 3}
+metrics: [final_length]
+)"));
+  ASSERT_EQ(PointCount(spec), 9);
+  EXPECT_THAT(PointValues(spec, 0), ElementsAre("1", "10"));
+  EXPECT_THAT(PointValues(spec, 1), ElementsAre("1", "20"));
+  EXPECT_THAT(PointValues(spec, 5), ElementsAre("2", "30"));
+  EXPECT_THAT(PointValues(spec, 8), ElementsAre("3", "30"));
+  EXPECT_THAT(PointOverrides(spec, 3), ElementsAre("model.velocity.n=2", "load[0].after=10"));
+}
+
+TEST(Sweep, LogScaleIsExactAtTheEndsAndGeometricBetween) {
+  const SweepSpec spec = LoadSweep(WriteSweep("log", R"(parameters:
+  model.velocity.epsilon: {from: 3.0e-6, to: 7.0e-2, count: 6, scale: log}
+metrics: [final_length]
+)"));
+  ASSERT_EQ(PointCount(spec), 6);
+  EXPECT_EQ(std::stod(PointValues(spec, 0)[0]), 3.0e-6);
+  EXPECT_EQ(std::stod(PointValues(spec, 5)[0]), 7.0e-2);
+  const double ratio = std::pow(7.0e-2 / 3.0e-6, 1.0 / 5.0);
+  for (long i = 1; i < 6; ++i) {
+    EXPECT_NEAR(std::stod(PointValues(spec, i)[0]) / std::stod(PointValues(spec, i - 1)[0]), ratio,
+                1e-12 * ratio);
+  }
+}
+
+TEST(Sweep, ZipPairsAxesAndRejectsUnequalLengths) {
+  const SweepSpec spec = LoadSweep(WriteSweep("zip", R"(mode: zip
+parameters:
+  model.velocity.n: [1, 2, 3]
+  load[0].after: {from: 10.0, to: 30.0, count: 3}
+metrics: [final_length]
+)"));
+  ASSERT_EQ(PointCount(spec), 3);
+  EXPECT_THAT(PointValues(spec, 2), ElementsAre("3", "30"));
+  EXPECT_THAT([] {
+    LoadSweep(WriteSweep("zip_bad", R"(mode: zip
+parameters:
+  model.velocity.n: [1, 2, 3]
+  load[0].after: [10, 20]
+metrics: [final_length]
+)"));
+  }, ::testing::ThrowsMessage<InputError>(HasSubstr(
+         "parameters.load[0].after = 2 values (")));
+}
+
+TEST(Sweep, RandomDrawsAreReproducibleAndInRange) {
+  const std::string body = R"(mode: random
+samples: 200
+seed: SEED
+parameters:
+  load[0].after: {from: 10.0, to: 90.0}
+  model.velocity.epsilon: {from: 1.0e-6, to: 1.0e-2, scale: log}
+  solver.method: [bdf, adams]
+metrics: [final_length]
+)";
+  const auto with_seed = [&](const std::string& seed) {
+    std::string text = body;
+    text.replace(text.find("SEED"), 4, seed);
+    return LoadSweep(WriteSweep("random_" + seed, text));
+  };
+  const SweepSpec a = with_seed("1"), again = with_seed("1"), other = with_seed("2");
+  ASSERT_EQ(PointCount(a), 200);
+  std::set<std::string> methods;
+  int differing = 0;
+  double log_mean = 0.0;
+  for (long i = 0; i < 200; ++i) {
+    const std::vector<std::string> v = PointValues(a, i);
+    EXPECT_EQ(v, PointValues(again, i));
+    differing += v != PointValues(other, i);
+    const double load = std::stod(v[0]), eps = std::stod(v[1]);
+    EXPECT_GE(load, 10.0);
+    EXPECT_LT(load, 90.0);
+    EXPECT_GE(eps, 1e-6);
+    EXPECT_LT(eps, 1e-2);
+    log_mean += std::log10(eps) / 200;
+    methods.insert(v[2]);
+  }
+  EXPECT_EQ(differing, 200);
+  EXPECT_EQ(methods, (std::set<std::string>{"adams", "bdf"}));
+  // log-uniform on [-6, -2] decades: mean -4, standard error 1.15 / sqrt(200) = 0.08
+  EXPECT_NEAR(log_mean, -4.0, 0.4);
+}
+
+TEST(Sweep, EveryPointIsValidatedBeforeAnythingRunsNamingTheAxis) {
+  EXPECT_THAT([] {
+    LoadSweep(WriteSweep("bad_path", "parameters:\n  model.speed.n: [1, 2]\nmetrics: [work]\n"));
+  }, ::testing::ThrowsMessage<InputError>(HasSubstr(
+         ":3:18: point 0 (model.speed.n=1) is not a valid scenario: --set model.speed.n=1: "
+         "model.speed does not exist")));
+  EXPECT_THAT([] {
+    LoadSweep(WriteSweep("bad_value", "parameters:\n  model.velocity.n: [3, fast]\nmetrics: [work]\n"));
+  }, ::testing::ThrowsMessage<InputError>(HasSubstr(
+         "point 1 (model.velocity.n=fast) is not a valid scenario: model.velocity.n = fast "
+         "(--set): must be a number")));
+  EXPECT_THAT([] {
+    LoadSweep(WriteSweep("bad_metric", "parameters:\n  model.velocity.n: [3]\nmetrics: [speed]\n"));
+  }, ::testing::ThrowsMessage<InputError>(HasSubstr("metrics[0] = speed (")));
+  EXPECT_THAT([] {
+    LoadSweep(WriteSweep("no_target", "parameters:\n  model.velocity.n: [3]\nmetrics: [time_to_length]\n"));
+  }, ::testing::ThrowsMessage<InputError>(HasSubstr("needs metric_options.target_length")));
+  EXPECT_THAT([] {
+    LoadSweep(WriteSweep("bad_mode", "mode: spiral\nparameters:\n  model.velocity.n: [3]\nmetrics: [work]\n"));
+  }, ::testing::ThrowsMessage<InputError>(HasSubstr("mode = spiral (")));
+}
+
+// The summary without its wall_seconds column, which differs from run to run.
+std::string WithoutWallTime(const std::string& path) {
+  std::ifstream in(path);
+  std::string out;
+  for (std::string line; std::getline(in, line);) {
+    // wall_seconds is the third-last column of every row (message may be quoted: none here)
+    const auto last = line.rfind(',');
+    const auto wall = line.rfind(',', last - 1);
+    out += line.substr(0, wall) + line.substr(last) + "\n";
+  }
+  return out;
+}
+
+std::string SweepOf(long points_per_axis) {
+  return "parameters:\n  load[0].after: {from: 10.0, to: 90.0, count: " +
+         std::to_string(points_per_axis) +
+         "}\n  model.velocity.n: [1, 3]\nmetrics: [final_length, min_length, max_length, "
+         "peak_tension, mean_shortening_velocity, final_shortening_velocity, work, "
+         "time_to_length]\nmetric_options: {window: [0.1, 0.2], target_length: 0.095}\n";
+}
+
+TEST(SweepRunner, OneAndTwoJobsGiveTheSameSummary) {
+  const SweepSpec spec = LoadSweep(WriteSweep("jobs", SweepOf(10)));
+  SweepRunOptions options;
+  options.quiet = true;
+  options.jobs = 1;
+  options.output = testing::WriteTempFile("jobs1.csv", "");
+  std::filesystem::remove(options.output);
+  const SweepOutcome one = RunSweep(spec, options);
+  const std::string first = options.output;
+  options.jobs = 2;
+  options.output = testing::WriteTempFile("jobs2.csv", "");
+  const SweepOutcome two = RunSweep(spec, options);
+  EXPECT_EQ(one.points, 20);
+  EXPECT_EQ(two.ran, 20);
+  EXPECT_EQ(one.failed, 0);
+  EXPECT_EQ(WithoutWallTime(first), WithoutWallTime(options.output));
+  EXPECT_FALSE(std::filesystem::exists(options.output + ".partial"));
+}
+
+TEST(SweepRunner, ResumeFromAPartialSummaryGivesTheSameResult) {
+  const SweepSpec spec = LoadSweep(WriteSweep("resume", SweepOf(8)));
+  SweepRunOptions options;
+  options.quiet = true;
+  options.output = testing::WriteTempFile("full.csv", "");
+  RunSweep(spec, options);
+  const std::string full = WithoutWallTime(options.output);
+
+  // what an interrupted sweep leaves: the header, some rows in any order, a cut-off line
+  std::ifstream in(options.output);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  const std::string resumed = testing::WriteTempFile("resumed.csv", "");
+  std::filesystem::remove(resumed);
+  std::ofstream(resumed + ".partial") << lines[0] << "\n" << lines[7] << "\n" << lines[2] << "\n"
+                                      << lines[12] << "\n" << lines[5].substr(0, 9);
+  options.output = resumed;
+  EXPECT_THROW(RunSweep(spec, options), InputError);  // no silent restart over it
+  options.resume = true;
+  const SweepOutcome outcome = RunSweep(spec, options);
+  EXPECT_EQ(outcome.resumed, 3);
+  EXPECT_EQ(outcome.ran, 13);
+  EXPECT_EQ(WithoutWallTime(resumed), full);
+}
+
+TEST(SweepRunner, AFailingPointIsMarkedAndTheRestGoesOn) {
+  const SweepSpec spec = LoadSweep(WriteSweep("failing",
+      "parameters:\n  solver.max_steps: [10000000, 20, 10000000]\nmetrics: [final_length]\n",
+      "isometric.yaml"));
+  SweepRunOptions options;
+  options.quiet = true;
+  options.output = testing::WriteTempFile("failing.csv", "");
+  const SweepOutcome outcome = RunSweep(spec, options);
+  EXPECT_EQ(outcome.failed, 1);
+  std::ifstream in(options.output);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_THAT(lines[1], HasSubstr("0,10000000,ok,0.0990"));
+  EXPECT_THAT(lines[2], HasSubstr("1,20,failed,,"));
+  EXPECT_THAT(lines[2], HasSubstr("CV_TOO_MUCH_WORK"));
+  EXPECT_THAT(lines[3], HasSubstr("2,10000000,ok,"));
+}
+
+}  // namespace
+}  // namespace musclesim
