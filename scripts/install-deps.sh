@@ -12,6 +12,7 @@ packages=(
   libnlopt-cxx-dev      # gradient-based minimiser of the Gaussian fit
   libbenchmark-dev      # bench/
   libopenmpi-dev openmpi-bin   # sweeps across machines (-DMUSCLESIM_WITH_MPI=ON)
+  gnuplot-nox           # musclesim plot draws its figures with gnuplot
 )
 
 missing=()

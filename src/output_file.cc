@@ -16,6 +16,17 @@ void WriteOutput(const std::string& path, const std::string& content) {
     std::cout << content << std::flush;
     return;
   }
+  // a device or pipe (/dev/null, /dev/stdout, a FIFO) is written in place: renaming a file
+  // over it would replace the device itself
+  std::error_code status_error;
+  const auto status = std::filesystem::status(path, status_error);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    std::ofstream out(path, std::ios::binary);
+    out << content;
+    out.flush();
+    if (!out) throw std::runtime_error(path + ": write failed (" + std::strerror(errno) + ")");
+    return;
+  }
   // the temporary name is unique per process so that parallel writers cannot collide
   const std::string temporary = path + ".tmp." + std::to_string(::getpid());
   {

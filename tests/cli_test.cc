@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <sys/wait.h>
@@ -235,6 +236,14 @@ TEST(Cli, RunRejectsInvalidInputWithExitTwo) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.err, HasSubstr("actuator (" + Scenario("fit_indicator.yaml") +
                                ":4:1): missing required key"));  // where the map begins
+}
+
+TEST(Cli, OutputToADeviceWritesIntoIt) {
+  // an atomic rename over /dev/null would replace the device with a file
+  const Outcome r = RunCli("run " + Scenario("concentric.yaml") +
+                           " --quiet -o /dev/null --stats /dev/null");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
 }
 
 TEST(Cli, UnwritableOutputExitsOne) {

@@ -6,7 +6,8 @@
 
 namespace musclesim {
 
-// Writes `content` to `path` atomically; "-" writes to standard output. Throws
+// Writes `content` to `path` atomically; "-" writes to standard output, and an existing
+// device or pipe (/dev/null, a FIFO) is written in place, never replaced. Throws
 // std::runtime_error naming the path and the system's reason on failure.
 void WriteOutput(const std::string& path, const std::string& content);
 
