@@ -260,8 +260,66 @@ TEST(Cli, EveryCanonicalScenarioRuns) {
   }
 }
 
+// Width and height from a PNG's IHDR chunk (big-endian, bytes 16 to 23), after checking
+// the signature.
+std::pair<int, int> PngSize(const std::string& path) {
+  const std::string data = ReadFile(path);
+  if (data.size() < 24 || data.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0 ||
+      data.compare(12, 4, "IHDR") != 0) {
+    return {0, 0};
+  }
+  const auto be32 = [&](std::size_t at) {
+    return (static_cast<unsigned char>(data[at]) << 24) | (static_cast<unsigned char>(data[at + 1]) << 16) |
+           (static_cast<unsigned char>(data[at + 2]) << 8) | static_cast<unsigned char>(data[at + 3]);
+  };
+  return {be32(16), be32(20)};
+}
+
+TEST(Cli, PlotsATrajectoryAsAPngOfTheRequestedSize) {
+  const std::string dir = ::testing::TempDir();
+  ASSERT_EQ(RunCli("run " + Scenario("twitches.yaml") + " --quiet -o " + dir + "plot_run.csv").exit_code, 0);
+  const Outcome r = RunCli("plot " + dir + "plot_run.csv -o " + dir + "plot_run.png --size 800x600 --script " +
+                           dir + "plot_run.gp");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(PngSize(dir + "plot_run.png"), std::make_pair(800, 600));
+  EXPECT_THAT(ReadFile(dir + "plot_run.gp"), HasSubstr("title 'concentric'"));
+}
+
+TEST(Cli, PlotsCurvesAndSweepsAsSvg) {
+  const std::string dir = ::testing::TempDir();
+  Outcome r = RunCli("plot --curves " + Scenario("concentric.yaml") + " -o " + dir + "plot_curves.svg --size 640x480");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string svg = ReadFile(dir + "plot_curves.svg");
+  EXPECT_THAT(svg, HasSubstr("<svg"));
+  EXPECT_THAT(svg, HasSubstr("width=\"640\""));
+  EXPECT_THAT(svg, HasSubstr("height=\"480\""));
+  EXPECT_THAT(svg, HasSubstr("</svg>"));
+  ASSERT_EQ(RunCli("sweep " + Scenario("stiffness_sweep.yaml") + " --quiet -o " + dir + "plot_sweep.csv").exit_code, 0);
+  r = RunCli("plot " + dir + "plot_sweep.csv --x model.velocity.epsilon --y steps -o " + dir + "plot_heat.png");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(PngSize(dir + "plot_heat.png"), std::make_pair(1000, 750));
+}
+
+TEST(Cli, PlotErrorsNameTheProblem) {
+  const std::string dir = ::testing::TempDir();
+  std::ofstream(dir + "plot_bad.csv") << "t,length\n0,0.1\n";
+  Outcome r = RunCli("plot " + dir + "plot_bad.csv -o " + dir + "plot_bad.png");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("missing columns: shortening_velocity, activation"));
+  // without gnuplot on PATH the message names the package to install
+  const std::string command = "env PATH=/nonexistent " + std::string(MUSCLESIM_BINARY) +
+                              " plot --curves " + Scenario("concentric.yaml") + " -o " + dir +
+                              "plot_none.png 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string out;
+  char buffer[512];
+  while (fgets(buffer, sizeof buffer, pipe) != nullptr) out += buffer;
+  EXPECT_EQ(WEXITSTATUS(pclose(pipe)), 1);
+  EXPECT_THAT(out, HasSubstr("gnuplot is not installed (or not on PATH): install the Debian package gnuplot-nox"));
+}
+
 TEST(Cli, HelpForEveryVerb) {
-  for (const char* verb : {"run", "curves", "fit"}) {
+  for (const char* verb : {"run", "sweep", "plot", "curves", "fit"}) {
     const Outcome r = RunCli(std::string(verb) + " --help");
     EXPECT_EQ(r.exit_code, 0) << verb;
     EXPECT_THAT(r.out, HasSubstr("usage: musclesim " + std::string(verb)));

@@ -17,6 +17,7 @@ usage: musclesim VERB [ARGS...]      (musclesim VERB --help for each verb)
 verbs:
   run      integrate a scenario (actuator/load dynamics on CVODE); write the trajectory CSV
   sweep    run many scenarios made from one by overriding values; one summary CSV
+  plot     draw a trajectory, the model's curves or a sweep with gnuplot (PNG or SVG)
   curves   tabulate f_L and passive tension over length, or g over velocity, as CSV
   fit      fit the sum of Gaussians that a model file asks for; print the components
 
@@ -40,6 +41,7 @@ int main(int argc, char** argv) {
   try {
     if (verb == "run") return cli::RunRun(argc, argv);
     if (verb == "sweep") return cli::RunSweepCommand(argc, argv);
+    if (verb == "plot") return cli::RunPlot(argc, argv);
     if (verb == "curves") return cli::RunCurves(argc, argv);
     if (verb == "fit") return cli::RunFit(argc, argv);
     std::cerr << "musclesim: unknown verb '" << verb << "' (see musclesim --help)\n";

@@ -1,0 +1,26 @@
+// Reading the CSV files musclesim writes (trajectories, summaries): a header and rows of
+// text fields, with RFC 4180 quoting.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace musclesim {
+
+struct CsvTable {
+  std::string source;                           // the file, for messages
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;   // each as long as the header
+
+  // Index of `name` in the header, or -1.
+  int Find(const std::string& name) const;
+  // Throws InputError naming every one of `names` the header lacks.
+  void Require(const std::vector<std::string>& names, const std::string& what) const;
+  // The field as a number; throws InputError naming the file, row and column if it is not.
+  double Number(std::size_t row, int column) const;
+};
+
+// Throws InputError for a missing file, an empty file or a row of the wrong length.
+CsvTable ReadCsv(const std::string& path);
+
+}  // namespace musclesim

@@ -1,0 +1,80 @@
+// musclesim plot: figures of trajectories, model curves and sweeps, drawn by gnuplot.
+#include <iostream>
+
+#include "cli/arguments.h"
+#include "cli/commands.h"
+#include "musclesim/errors.h"
+#include "musclesim/model_file.h"
+#include "musclesim/output_file.h"
+#include "musclesim/plot.h"
+
+namespace musclesim::cli {
+
+namespace {
+
+constexpr const char* kHelp = R"(usage: musclesim plot RUN.csv -o run.png           a trajectory of musclesim run
+  musclesim plot --curves SCENARIO.yaml -o curves.png     the model's curves
+  musclesim plot SWEEP.csv --x PATH [--y METRIC] [--color PATH] -o sweep.png
+common options:
+  -o PATH          the figure: .png or .svg (required)
+  --title TEXT     the figure's title (default: from the input)
+  --size WxH       pixels (default 1000x750)
+  --script PATH    also write the gnuplot script, to restyle the figure by hand
+A trajectory: length, shortening velocity, activation and the tensions against time in
+stacked panels, concentric, eccentric and isometric intervals shaded. Curves: passive, active
+and total tension against length (L_opt shaded, each Gaussian thin) and g(v). A sweep: METRIC
+(default the first) against the swept path PATH, a line per value of --color; without
+--color and with two swept paths, a heat map. Failed rows are left out.
+Needs gnuplot (Debian package gnuplot-nox; scripts/install-deps.sh installs it).
+)";
+
+void ParseSize(const std::string& text, PlotOptions& options) {
+  int width = 0, height = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 || x != 'x') {
+    throw UsageError("--size " + text + ": expected WIDTHxHEIGHT in pixels, e.g. 1200x900");
+  }
+  options.width = width;
+  options.height = height;
+}
+
+}  // namespace
+
+int RunPlot(int argc, char** argv) {
+  const Arguments args = Parse(argc, argv, 2,
+                               {"-o", "--title", "--size", "--script", "--curves", "--x", "--y", "--color"},
+                               {"--help", "-h"});
+  if (args.Has("--help") || args.Has("-h")) {
+    std::cout << kHelp;
+    return kExitSuccess;
+  }
+  PlotOptions options;
+  options.output = args.Value("-o");
+  if (options.output.empty()) throw UsageError("-o PATH (a .png or .svg file) is required");
+  options.title = args.Value("--title");
+  if (args.Has("--size")) ParseSize(args.Value("--size"), options);
+  Validate(options);
+
+  std::string script;
+  if (args.Has("--curves")) {
+    if (!args.positional.empty()) throw UsageError("--curves takes the model file; give no CSV");
+    script = CurvesPlotScript(TensionModel(LoadModelFile(args.Value("--curves")).params), options);
+  } else {
+    if (args.positional.size() != 1) throw UsageError("expected one CSV file (see --help)");
+    const CsvTable table = ReadCsv(args.positional[0]);
+    if (args.Has("--x")) {
+      const auto optional = [&](const char* name) {
+        return args.Has(name) ? std::optional<std::string>(args.Value(name)) : std::nullopt;
+      };
+      script = SweepPlotScript(table, args.Value("--x"), optional("--y"), optional("--color"), options);
+    } else {
+      if (args.Has("--y") || args.Has("--color")) throw UsageError("--y and --color go with --x");
+      script = TrajectoryPlotScript(table, options);
+    }
+  }
+  if (args.Has("--script")) WriteOutput(args.Value("--script"), script);
+  Render(script, options);
+  return kExitSuccess;
+}
+
+}  // namespace musclesim::cli
