@@ -60,7 +60,7 @@ double CsvTable::Number(std::size_t row, int column) const {
   errno = 0;
   const double value = std::strtod(text.c_str(), &end);
   if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE) {
-    throw InputError(source + ":" + std::to_string(row + 2) + ": column " +
+    throw InputError(source + ":" + std::to_string(lines[row]) + ": column " +
                      header[static_cast<std::size_t>(column)] + " = '" + text +
                      "': must be a number");
   }
@@ -73,16 +73,24 @@ CsvTable ReadCsv(const std::string& path) {
   CsvTable table;
   table.source = path;
   std::string line;
-  if (!std::getline(in, line) || line.empty()) throw InputError(path + ": empty file, no header");
+  std::size_t number = 0;
+  const auto next = [&] {
+    while (std::getline(in, line)) {
+      ++number;
+      if (!line.empty() && line[0] != '#' && line != "\r") return true;
+    }
+    return false;
+  };
+  if (!next()) throw InputError(path + ": empty file, no header");
   table.header = SplitRow(line);
-  for (std::size_t number = 2; std::getline(in, line); ++number) {
-    if (line.empty()) continue;
+  while (next()) {
     std::vector<std::string> fields = SplitRow(line);
     if (fields.size() != table.header.size()) {
       throw InputError(path + ":" + std::to_string(number) + ": " + std::to_string(fields.size()) +
                        " fields where the header has " + std::to_string(table.header.size()));
     }
     table.rows.push_back(std::move(fields));
+    table.lines.push_back(number);
   }
   return table;
 }

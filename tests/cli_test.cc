@@ -318,8 +318,38 @@ TEST(Cli, PlotErrorsNameTheProblem) {
   EXPECT_THAT(out, HasSubstr("gnuplot is not installed (or not on PATH): install the Debian package gnuplot-nox"));
 }
 
+TEST(Cli, IdentifyWritesALoadableModelAndTheReport) {
+  const std::string dir = ::testing::TempDir();
+  const Outcome r = RunCli("identify " + std::string(MUSCLESIM_SOURCE_DIR) + "/data/synthetic.yaml -o " +
+                           dir + "identified.yaml --report " + dir + "identified.md");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const LoadedModel model = LoadModelFile(dir + "identified.yaml");
+  EXPECT_EQ(model.params.velocity.n, 3);                     // the generating exponent
+  EXPECT_NEAR(model.params.velocity.v_max, 1.0, 0.05);        // generated with v_max = 1 m/s
+  EXPECT_NEAR(model.params.f_iso, 100.0, 3.0);                // and f_iso = 100 N
+  EXPECT_EQ(model.params.active_length.gaussians.size(), 3u);
+  const std::string report = ReadFile(dir + "identified.md");
+  for (const char* heading : {"## passive tension-length", "## active tension-length", "## tension-velocity",
+                              "| natural cubic spline |", "| polynomial, degree 4 |"}) {
+    EXPECT_THAT(report, HasSubstr(heading));
+  }
+}
+
+TEST(Cli, IdentifyRejectsBadDataWithExitTwo) {
+  const std::string dir = ::testing::TempDir();
+  std::ofstream(dir + "bad_passive.csv") << "length,tension\n0.1,0\n0.2,0\n0.3,0\n0.4,0\n";
+  std::ofstream(dir + "bad_data.yaml") << "passive: {csv: bad_passive.csv}\n";
+  Outcome r = RunCli("identify " + dir + "bad_data.yaml");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("bad_passive.csv: every tension is zero: nothing to fit"));
+  std::ofstream(dir + "bad_key.yaml") << "pasive: {csv: x.csv}\n";
+  r = RunCli("identify " + dir + "bad_key.yaml");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("pasive (" + dir + "bad_key.yaml:1:1): unknown key"));
+}
+
 TEST(Cli, HelpForEveryVerb) {
-  for (const char* verb : {"run", "sweep", "plot", "curves", "fit"}) {
+  for (const char* verb : {"run", "sweep", "plot", "identify", "curves", "fit"}) {
     const Outcome r = RunCli(std::string(verb) + " --help");
     EXPECT_EQ(r.exit_code, 0) << verb;
     EXPECT_THAT(r.out, HasSubstr("usage: musclesim " + std::string(verb)));

@@ -11,6 +11,7 @@ struct CsvTable {
   std::string source;                           // the file, for messages
   std::vector<std::string> header;
   std::vector<std::vector<std::string>> rows;   // each as long as the header
+  std::vector<std::size_t> lines;               // the file's line number of each row
 
   // Index of `name` in the header, or -1.
   int Find(const std::string& name) const;
@@ -20,7 +21,8 @@ struct CsvTable {
   double Number(std::size_t row, int column) const;
 };
 
-// Throws InputError for a missing file, an empty file or a row of the wrong length.
+// Throws InputError for a missing file, an empty file or a row of the wrong length. Blank
+// lines and lines starting with # (comments, such as a data file's source) are skipped.
 CsvTable ReadCsv(const std::string& path);
 
 }  // namespace musclesim

@@ -18,6 +18,7 @@ verbs:
   run      integrate a scenario (actuator/load dynamics on CVODE); write the trajectory CSV
   sweep    run many scenarios made from one by overriding values; one summary CSV
   plot     draw a trajectory, the model's curves or a sweep with gnuplot (PNG or SVG)
+  identify fit the model's parameters to measured curves; compare with splines
   curves   tabulate f_L and passive tension over length, or g over velocity, as CSV
   fit      fit the sum of Gaussians that a model file asks for; print the components
 
@@ -42,6 +43,7 @@ int main(int argc, char** argv) {
     if (verb == "run") return cli::RunRun(argc, argv);
     if (verb == "sweep") return cli::RunSweepCommand(argc, argv);
     if (verb == "plot") return cli::RunPlot(argc, argv);
+    if (verb == "identify") return cli::RunIdentify(argc, argv);
     if (verb == "curves") return cli::RunCurves(argc, argv);
     if (verb == "fit") return cli::RunFit(argc, argv);
     std::cerr << "musclesim: unknown verb '" << verb << "' (see musclesim --help)\n";

@@ -1,0 +1,154 @@
+// musclesim identify DATA.yaml [-o MODEL.yaml] [--report PATH]
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "cli/arguments.h"
+#include "cli/commands.h"
+#include "musclesim/errors.h"
+#include "musclesim/identify.h"
+#include "musclesim/identify_report.h"
+#include "musclesim/output_file.h"
+
+namespace musclesim::cli {
+
+namespace {
+
+constexpr const char* kHelp = R"(usage: musclesim identify DATA.yaml [-o MODEL.yaml] [--report PATH]
+
+Fits the model's parameters to measured curves and prints a complete `model:` block, each
+parameter with its standard error and each curve's RMSE in comments. DATA.yaml holds any of:
+  passive:  {csv: passive.csv}                                columns length,tension
+  active:   {csv: active.csv, count: 3, nonnegative: true}    columns length,tension
+  velocity: {csv: velocity.csv, f_iso: 100}                   columns shortening_velocity,tension
+(CSV paths relative to DATA.yaml; f_iso optional, held fixed when given.)
+  -o PATH         write the model block there (atomically) instead of standard output
+  --report PATH   also write a Markdown report comparing each fit with a natural cubic spline
+                  and polynomials of degree 3 and 4 (RMSE, leave-one-out RMSE, behaviour outside
+                  the data, ns per evaluation)
+Exit codes: 0 success, 2 invalid input or data, 1 anything else.
+)";
+
+std::string PlusMinus(const Estimate& e) {
+  return FormatNumber(e.value) + " +- " + (std::isfinite(e.standard_error) ? FormatNumber(e.standard_error) : "n/a");
+}
+
+}  // namespace
+
+int RunIdentify(int argc, char** argv) {
+  const Arguments args = Parse(argc, argv, 2, {"-o", "--report"}, {"--help", "-h"});
+  if (args.Has("--help") || args.Has("-h")) {
+    std::cout << kHelp;
+    return kExitSuccess;
+  }
+  if (args.positional.size() != 1) throw UsageError("expected one data file (see --help)");
+  const IdentifySpec spec = LoadIdentifySpec(args.positional[0]);
+
+  std::optional<PassiveIdentification> passive;
+  std::optional<ActiveIdentification> active;
+  std::optional<VelocityIdentification> velocity;
+  std::vector<CurveComparison> comparisons;
+  const bool report = args.Has("--report");
+  if (spec.passive_csv) {
+    const auto data = ReadCurveCsv(*spec.passive_csv, "length", "tension", 4);
+    passive = IdentifyPassive(data);
+    if (report) {
+      auto models = ReferenceFitters();
+      models.insert(models.begin(), {"exponential (eq. 1)", [](const std::vector<DataPoint>& d) {
+        const PassiveIdentification fit = IdentifyPassive(d);
+        return std::function<double(double)>([fit](double x) { return fit.Evaluate(x); });
+      }});
+      comparisons.push_back(Compare("passive tension-length", "length units of the CSV", data, models));
+    }
+  }
+  if (spec.active_csv) {
+    const auto data = ReadCurveCsv(*spec.active_csv, "length", "tension",
+                                   3 * static_cast<std::size_t>(spec.active_count) + 1);
+    active = IdentifyActive(data, spec.active_count, spec.active_nonnegative);
+    if (report) {
+      auto models = ReferenceFitters();
+      const int count = spec.active_count;
+      const bool nonnegative = spec.active_nonnegative;
+      models.insert(models.begin(), {std::to_string(count) + " Gaussians (eqs. 3-4)",
+                                     [count, nonnegative](const std::vector<DataPoint>& d) {
+        const ActiveIdentification fit = IdentifyActive(d, count, nonnegative);
+        return std::function<double(double)>([fit](double x) { return fit.Evaluate(x); });
+      }});
+      comparisons.push_back(Compare("active tension-length", "length units of the CSV", data, models));
+    }
+  }
+  if (spec.velocity_csv) {
+    const auto data = ReadCurveCsv(*spec.velocity_csv, "shortening_velocity", "tension",
+                                   spec.velocity_f_iso ? 2 : 3);
+    velocity = IdentifyVelocity(data, spec.velocity_f_iso);
+    if (report) {
+      auto models = ReferenceFitters();
+      const std::optional<double> f_iso = spec.velocity_f_iso;
+      models.insert(models.begin(), {"power law (eq. 12)", [f_iso](const std::vector<DataPoint>& d) {
+        const VelocityIdentification fit = IdentifyVelocity(d, f_iso);
+        return std::function<double(double)>([fit](double v) { return fit.Evaluate(v); });
+      }});
+      comparisons.push_back(Compare("tension-velocity", "shortening velocity units of the CSV", data, models));
+    }
+  }
+
+  // the model block: every part, identified or a neutral default said as such
+  std::ostringstream y;
+  y << "# identified by musclesim identify from " << spec.source << "\n"
+    << "# (+- standard errors from the Jacobian at the optimum)\nmodel:\n";
+  if (active) {
+    y << "  f_iso: " << FormatFull(active->f_iso.value) << "   # N, " << PlusMinus(active->f_iso)
+      << ", the active curve's maximum\n";
+  } else if (velocity) {
+    y << "  f_iso: " << FormatFull(velocity->best.f_iso.value) << "   # N, "
+      << PlusMinus(velocity->best.f_iso) << ", from the tension-velocity curve\n";
+  } else {
+    y << "  f_iso: 1.0   # not identified (no active or velocity data)\n";
+  }
+  if (passive) {
+    y << "  passive: {k_p: " << FormatFull(passive->k_p.value) << ", alpha: " << FormatFull(passive->alpha.value)
+      << ", slack_length: " << FormatFull(passive->slack_length.value) << "}\n"
+      << "  # k_p = " << PlusMinus(passive->k_p) << " N, alpha = " << PlusMinus(passive->alpha)
+      << " 1/m, slack_length = " << PlusMinus(passive->slack_length) << " m; RMSE "
+      << FormatNumber(passive->rmse) << " N\n";
+  } else {
+    y << "  passive: {k_p: 0.0, alpha: 1.0, slack_length: 0.0}   # not identified: no passive tension\n";
+  }
+  y << "  active_length:\n";
+  if (active) {
+    y << "    # optimal_range: where the fitted curve is within 2% of its maximum; RMSE "
+      << FormatNumber(active->rmse) << " N\n"
+      << "    optimal_range: [" << FormatFull(active->curve.optimal_min) << ", "
+      << FormatFull(active->curve.optimal_max) << "]\n    gaussians:\n";
+    for (std::size_t k = 0; k < active->curve.gaussians.size(); ++k) {
+      const Gaussian& g = active->curve.gaussians[k];
+      y << "      - {amplitude: " << FormatFull(g.amplitude) << ", width: " << FormatFull(g.width)
+        << ", center: " << FormatFull(g.center) << "}\n"
+        << "        # amplitude " << PlusMinus(active->amplitudes[k]) << ", width "
+        << PlusMinus(active->widths[k]) << ", center " << PlusMinus(active->centers[k]) << "\n";
+    }
+  } else {
+    y << "    # not identified: one Gaussian a kilometre wide, a flat f_L\n"
+      << "    optimal_range: [-1.0, 1.0]\n"
+      << "    gaussians: [{amplitude: 1.0, width: 1.0e-6, center: 0.0}]\n";
+  }
+  if (velocity) {
+    const VelocityCandidate& b = velocity->best;
+    y << "  velocity: {v_max: " << FormatFull(b.v_max.value) << ", n: " << b.n
+      << ", epsilon: " << FormatFull(1e-3 * b.v_max.value) << "}\n"
+      << "  # v_max = " << PlusMinus(b.v_max) << " m/s, RMSE " << FormatNumber(b.rmse)
+      << " N; epsilon is not identified (1e-3 v_max)\n  # other n:";
+    for (const VelocityCandidate& c : velocity->candidates) {
+      if (c.n == b.n) continue;
+      y << " n=" << c.n << " " << (c.valid ? "RMSE " + FormatNumber(c.rmse) : "no fit") << ";";
+    }
+    y << "\n";
+  } else {
+    y << "  velocity: {v_max: 1.0e6, n: 1, epsilon: 1.0}   # not identified: g close to 1\n";
+  }
+  WriteOutput(args.Value("-o", "-"), y.str());
+  if (report) WriteOutput(args.Value("--report"), FormatReport(comparisons));
+  return kExitSuccess;
+}
+
+}  // namespace musclesim::cli
