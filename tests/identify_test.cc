@@ -145,13 +145,15 @@ TEST(IdentifyActive, RecoversExactDataAndItsMaximum) {
 }
 
 TEST(IdentifyActive, IsometricTensionWithinItsStandardError) {
-  int covered = 0;
-  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
-    const ActiveIdentification fit = IdentifyActive(ActiveData(0.5, seed), 2, true);
-    const ActiveIdentification exact = IdentifyActive(ActiveData(0.0, 1), 2, true);
-    covered += WithinThreeErrors(fit.f_iso, exact.f_iso.value);
+  // the Gaussians themselves trade off against each other; their maximum is identifiable
+  const double truth = IdentifyActive(ActiveData(0.0, 1), 2, true).f_iso.value;
+  for (double noise : {0.1, 0.5, 2.0}) {  // N, against a peak near 400 N
+    int covered = 0;
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+      covered += WithinThreeErrors(IdentifyActive(ActiveData(noise, seed), 2, true).f_iso, truth);
+    }
+    EXPECT_GE(covered, 18) << "noise " << noise;
   }
-  EXPECT_GE(covered, 18);
 }
 
 TEST(ReferenceFits, SplineAndPolynomialsReproduceWhatTheyCan) {
