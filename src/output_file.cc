@@ -1,6 +1,7 @@
 #include "musclesim/output_file.h"
 
 #include <cerrno>
+#include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -51,9 +52,11 @@ void WriteOutput(const std::string& path, const std::string& content) {
 }
 
 std::string FormatFull(double value) {
+  // as printf's %.17g, several times faster: CSV formatting dominated whole runs
   char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", value);
-  return buffer;
+  const auto result =
+      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 17);
+  return std::string(buffer, result.ptr);
 }
 
 }  // namespace musclesim
