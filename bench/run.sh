@@ -5,6 +5,7 @@
 #   micro.txt            ns per tension, RHS and Jacobian evaluation; fit times
 #   step_cost.csv        every scenario x method x Jacobian x epsilon x n (bench/step_cost.cc)
 #   step_cost_table.md   the canonical scenarios at their own settings
+#   stiffness.md         largest Jacobian eigenvalue against BDF and Adams steps, by eps and n
 #   work_precision.csv   error against wall time for musclesim, Boost.Odeint and SciPy
 #   work_precision.md    wall time at equal error, as ratios to musclesim's default
 #   work_precision_<scenario>.png   the work-precision plots (gnuplot)
@@ -50,6 +51,7 @@ echo "== micro-benchmarks"
 echo "== step cost"
 "$build/bench/step_cost" scenarios > "$out/step_cost.csv"
 bash bench/step_cost_table.sh "$build" > "$out/step_cost_table.md"
+"$python" bench/stiffness_table.py "$out/step_cost.csv" > "$out/stiffness.md"
 
 echo "== work-precision"
 rows="$out/work_precision.csv"
@@ -63,28 +65,29 @@ for s in isometric concentric eccentric; do
   tail -n +2 "$out/wp_$s.csv" >> "$rows"
   rm -f "$out/wp_$s.csv"
   # one curve per configuration, error against time, log-log
-  configs=$(awk -F, -v s="$s" 'NR > 1 && $1 == s { print $2 " " $3 }' "$rows" | sort -u)
+  curves=$(mktemp -d)
+  awk -F, -v s="$s" -v dir="$curves" 'NR > 1 && $1 == s {
+      file = dir "/" $2 "_" $3 ".dat"; print $5, $8 > file }' "$rows"
   {
     echo "set terminal pngcairo size 1000,700 noenhanced font 'sans,10'"
     echo "set output '$out/work_precision_$s.png'"
     echo "set logscale xy; set grid; set format x '%g'; set format y '%g'"
     echo "set xlabel 'achieved error (max relative error of length and tension)'"
     echo "set ylabel 'wall time per run [s] (median)'"
-    echo "set title 'work-precision: scenarios/$s.yaml, rtol 1e-3 to 1e-10'"
+    echo "set title 'work-precision: scenarios/$s.yaml, rtol 1e-3 to 1e-10 ($(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores)'"
     echo "set key outside right top"
     printf 'plot '
     first=1
-    while read -r tool method; do
+    for file in "$curves"/*.dat; do
+      name=$(basename "$file" .dat)
       [ $first -eq 1 ] || printf ', \\\n  '
       first=0
-      printf "'%s' using (\$1 eq '%s' && strcol(2) eq '%s' && strcol(3) eq '%s' ? \$5 : NaN):8 with linespoints lw 2 title '%s %s'" \
-        "$rows" "$s" "$tool" "$method" "$tool" "$method"
-    done <<< "$configs"
+      printf "'%s' using 1:2 with linespoints lw 2 title '%s'" "$file" "${name/_/ }"
+    done
     echo
-  } > "$out/wp_$s.gp"
-  sed -i "s/(\$1 eq/(strcol(1) eq/g" "$out/wp_$s.gp"
-  gnuplot -e "set datafile separator ','" "$out/wp_$s.gp"
-  rm -f "$out/wp_$s.gp"
+  } > "$curves/plot.gp"
+  gnuplot "$curves/plot.gp"
+  rm -rf "$curves"
 done
 "$python" bench/work_precision/summarize.py "$rows" > "$out/work_precision.md"
 
