@@ -122,6 +122,7 @@ SummaryFile::SummaryFile(std::string path, std::string header, bool resume, long
     : path_(std::move(path)),
       partial_path_(path_ + ".partial"),
       header_(std::move(header)),
+      points_(points),
       partial_(nullptr, &std::fclose) {
   const bool exists = std::filesystem::exists(partial_path_);
   if (exists && !resume) {
@@ -147,6 +148,7 @@ SummaryFile::SummaryFile(std::string path, std::string header, bool resume, long
       if (rows_.emplace(index, row).second && row.find(",failed,") != std::string::npos) ++failed_;
     }
   }
+  resumed_ = Count();
   // rewrite the partial file with exactly the rows kept, then append to it
   partial_.reset(std::fopen(partial_path_.c_str(), "w"));
   if (!partial_) throw std::runtime_error(partial_path_ + ": cannot write");
@@ -161,12 +163,28 @@ void SummaryFile::Add(long index, const std::string& row, bool failed) {
   if (rows_.emplace(index, row).second && failed) ++failed_;
 }
 
-void SummaryFile::Finish() {
+std::vector<long> SummaryFile::Remaining() const {
+  std::vector<long> todo;
+  for (long i = 0; i < points_; ++i) {
+    if (rows_.count(i) == 0) todo.push_back(i);
+  }
+  return todo;
+}
+
+SweepOutcome SummaryFile::Close() {
+  SweepOutcome outcome;
+  outcome.points = points_;
+  outcome.resumed = resumed_;
+  outcome.ran = Count() - resumed_;
+  outcome.failed = failed_;
+  outcome.interrupted = Count() < points_;
+  if (outcome.interrupted) return outcome;
   std::string text = header_ + "\n";
   for (const auto& [index, row] : rows_) text += row + "\n";
   WriteOutput(path_, text);
   partial_.reset();
   std::filesystem::remove(partial_path_);
+  return outcome;
 }
 
 ProgressReport::ProgressReport(long total, long already_done, bool quiet)
@@ -290,16 +308,9 @@ int DefaultJobs(int jobs) {
 }
 
 SweepOutcome RunSweep(const SweepSpec& spec, const SweepRunOptions& options) {
-  const long points = PointCount(spec);
-  SummaryFile summary(options.output, SummaryHeader(spec), options.resume, points);
-  std::vector<long> todo;
-  for (long i = 0; i < points; ++i) {
-    if (!summary.Done(i)) todo.push_back(i);
-  }
-  SweepOutcome outcome;
-  outcome.points = points;
-  outcome.resumed = summary.Count();
-  ProgressReport progress(points, summary.Count(), options.quiet);
+  SummaryFile summary(options.output, SummaryHeader(spec), options.resume, PointCount(spec));
+  const std::vector<long> todo = summary.Remaining();
+  ProgressReport progress(PointCount(spec), summary.Count(), options.quiet);
 
   const ScenarioTemplate base(spec.base);
   WorkerPool pool(spec, base, options.output,
@@ -308,18 +319,11 @@ SweepOutcome RunSweep(const SweepSpec& spec, const SweepRunOptions& options) {
   pool.Close();
   while (!pool.Finished()) {
     pool.Wait(0.2);
-    for (const WorkerPool::Row& row : pool.Take()) {
-      summary.Add(row.index, row.text, row.failed);
-      ++outcome.ran;
-    }
+    for (const WorkerPool::Row& row : pool.Take()) summary.Add(row.index, row.text, row.failed);
     progress.Update(summary.Count());
   }
   progress.Update(summary.Count(), true);
-
-  outcome.failed = summary.Failed();
-  outcome.interrupted = summary.Count() < points;
-  if (!outcome.interrupted) summary.Finish();
-  return outcome;
+  return summary.Close();
 }
 
 }  // namespace musclesim

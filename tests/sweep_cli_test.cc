@@ -52,18 +52,6 @@ std::string Sweep(const std::string& name, long loads) {
       "}\n  model.velocity.n: [1, 3]\nmetrics: [final_length, peak_tension, work]\n");
 }
 
-// Every column but wall_seconds (the third last), which differs from run to run.
-std::string WithoutWallTime(const std::string& path) {
-  std::istringstream in(testing::ReadFile(path));
-  std::string out;
-  for (std::string line; std::getline(in, line);) {
-    const auto last = line.rfind(',');
-    const auto wall = line.rfind(',', last - 1);
-    out += line.substr(0, wall) + line.substr(last) + "\n";
-  }
-  return out;
-}
-
 long Lines(const std::string& path) {
   const std::string text = testing::ReadFile(path);
   return std::count(text.begin(), text.end(), '\n');
@@ -104,7 +92,7 @@ TEST(SweepCli, InterruptedSweepResumesToTheUninterruptedResult) {
   EXPECT_FALSE(std::filesystem::exists(resumed + ".partial"));
   EXPECT_EQ(RunToEnd({MUSCLESIM_BINARY, "sweep", sweep, "-o", reference, "--quiet"},
                      dir + "sweep_reference.err"), 0);
-  EXPECT_EQ(WithoutWallTime(resumed), WithoutWallTime(reference));
+  EXPECT_EQ(testing::SummaryWithoutWallTime(resumed), testing::SummaryWithoutWallTime(reference));
 }
 
 TEST(SweepCli, FailedPointsExitThree) {
@@ -136,7 +124,7 @@ TEST(SweepCli, TwoMpiRanksGiveTheSingleProcessSummary) {
                      dir + "sweep_mpi.err"), 0)
       << testing::ReadFile(dir + "sweep_mpi.err");
   EXPECT_EQ(Lines(dir + "sweep_mpi.csv"), 121);
-  EXPECT_EQ(WithoutWallTime(dir + "sweep_mpi.csv"), WithoutWallTime(dir + "sweep_single.csv"));
+  EXPECT_EQ(testing::SummaryWithoutWallTime(dir + "sweep_mpi.csv"), testing::SummaryWithoutWallTime(dir + "sweep_single.csv"));
 }
 #endif
 

@@ -136,19 +136,6 @@ TEST(Sweep, EveryPointIsValidatedBeforeAnythingRunsNamingTheAxis) {
   }, ::testing::ThrowsMessage<InputError>(HasSubstr("mode = spiral (")));
 }
 
-// The summary without its wall_seconds column, which differs from run to run.
-std::string WithoutWallTime(const std::string& path) {
-  std::ifstream in(path);
-  std::string out;
-  for (std::string line; std::getline(in, line);) {
-    // wall_seconds is the third-last column of every row (message may be quoted: none here)
-    const auto last = line.rfind(',');
-    const auto wall = line.rfind(',', last - 1);
-    out += line.substr(0, wall) + line.substr(last) + "\n";
-  }
-  return out;
-}
-
 std::string SweepOf(long points_per_axis) {
   return "parameters:\n  load[0].after: {from: 10.0, to: 90.0, count: " +
          std::to_string(points_per_axis) +
@@ -172,7 +159,7 @@ TEST(SweepRunner, OneAndTwoJobsGiveTheSameSummary) {
   EXPECT_EQ(one.points, 20);
   EXPECT_EQ(two.ran, 20);
   EXPECT_EQ(one.failed, 0);
-  EXPECT_EQ(WithoutWallTime(first), WithoutWallTime(options.output));
+  EXPECT_EQ(testing::SummaryWithoutWallTime(first), testing::SummaryWithoutWallTime(options.output));
   EXPECT_FALSE(std::filesystem::exists(options.output + ".partial"));
 }
 
@@ -182,7 +169,7 @@ TEST(SweepRunner, ResumeFromAPartialSummaryGivesTheSameResult) {
   options.quiet = true;
   options.output = testing::WriteTempFile("full.csv", "");
   RunSweep(spec, options);
-  const std::string full = WithoutWallTime(options.output);
+  const std::string full = testing::SummaryWithoutWallTime(options.output);
 
   // what an interrupted sweep leaves: the header, some rows in any order, a cut-off line
   std::ifstream in(options.output);
@@ -198,7 +185,7 @@ TEST(SweepRunner, ResumeFromAPartialSummaryGivesTheSameResult) {
   const SweepOutcome outcome = RunSweep(spec, options);
   EXPECT_EQ(outcome.resumed, 3);
   EXPECT_EQ(outcome.ran, 13);
-  EXPECT_EQ(WithoutWallTime(resumed), full);
+  EXPECT_EQ(testing::SummaryWithoutWallTime(resumed), full);
 }
 
 TEST(SweepRunner, AFailingPointIsMarkedAndTheRestGoesOn) {

@@ -61,17 +61,20 @@ class SummaryFile {
   // must match), otherwise it refuses to overwrite one (InputError) and starts it anew.
   SummaryFile(std::string path, std::string header, bool resume, long points);
 
-  bool Done(long index) const { return rows_.count(index) != 0; }
   long Count() const { return static_cast<long>(rows_.size()); }
-  long Failed() const { return failed_; }
+  // The indices not yet in the summary, in order.
+  std::vector<long> Remaining() const;
   // Appends one finished row and flushes it. Not thread-safe: callers serialise.
   void Add(long index, const std::string& row, bool failed);
-  // Writes PATH atomically with every row sorted by index, then removes PATH.partial.
-  void Finish();
+  // The sweep's outcome; when every point is in, writes PATH atomically with the rows
+  // sorted by index and removes PATH.partial.
+  SweepOutcome Close();
   const std::string& partial_path() const { return partial_path_; }
 
  private:
   std::string path_, partial_path_, header_;
+  long points_ = 0;
+  long resumed_ = 0;  // rows taken from an earlier PATH.partial
   std::map<long, std::string> rows_;
   long failed_ = 0;
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> partial_;

@@ -39,16 +39,9 @@ std::string Encode(const std::vector<WorkerPool::Row>& rows) {
 // Rank 0: serves requests, runs its own share, gathers every row.
 SweepOutcome Root(const SweepSpec& spec, const SweepRunOptions& options, const MpiSession& mpi,
                   WorkerPool& pool) {
-  const long points = PointCount(spec);
-  SummaryFile summary(options.output, SummaryHeader(spec), options.resume, points);
-  std::vector<long> todo;
-  for (long i = 0; i < points; ++i) {
-    if (!summary.Done(i)) todo.push_back(i);
-  }
-  SweepOutcome outcome;
-  outcome.points = points;
-  outcome.resumed = summary.Count();
-  ProgressReport progress(points, summary.Count(), options.quiet);
+  SummaryFile summary(options.output, SummaryHeader(spec), options.resume, PointCount(spec));
+  const std::vector<long> todo = summary.Remaining();
+  ProgressReport progress(PointCount(spec), summary.Count(), options.quiet);
 
   std::size_t next = 0;
   const auto chunk = [&](int workers) {
@@ -58,10 +51,6 @@ SweepOutcome Root(const SweepSpec& spec, const SweepRunOptions& options, const M
     std::vector<long> indices(todo.begin() + next, todo.begin() + next + std::min(size, left));
     next += indices.size();
     return indices;
-  };
-  const auto add = [&](long index, const std::string& row, bool failed) {
-    summary.Add(index, row, failed);
-    ++outcome.ran;
   };
 
   int stopped_ranks = 0;
@@ -73,7 +62,7 @@ SweepOutcome Root(const SweepSpec& spec, const SweepRunOptions& options, const M
       closed = true;
     }
     if (!closed && pool.Queued() < static_cast<std::size_t>(pool.jobs())) pool.Push(chunk(pool.jobs()));
-    for (const WorkerPool::Row& row : pool.Take()) add(row.index, row.text, row.failed);
+    for (const WorkerPool::Row& row : pool.Take()) summary.Add(row.index, row.text, row.failed);
 
     int waiting = 0;
     MPI_Status status;
@@ -99,16 +88,13 @@ SweepOutcome Root(const SweepSpec& spec, const SweepRunOptions& options, const M
       std::size_t start = 0;
       for (std::size_t end; (end = text.find('\n', start)) != std::string::npos; start = end + 1) {
         const std::string row = text.substr(start + 1, end - start - 1);
-        add(std::strtol(row.c_str(), nullptr, 10), row, text[start] == 'F');
+        summary.Add(std::strtol(row.c_str(), nullptr, 10), row, text[start] == 'F');
       }
     }
     progress.Update(summary.Count());
   }
   progress.Update(summary.Count(), true);
-  outcome.failed = summary.Failed();
-  outcome.interrupted = summary.Count() < points;
-  if (!outcome.interrupted) summary.Finish();
-  return outcome;
+  return summary.Close();
 }
 
 // Other ranks: ask for chunks while the local queue runs low, send rows back.
