@@ -59,8 +59,8 @@ struct Callbacks {
   const ActuatorSystem* system = nullptr;
   // root functions g_i(x) = x - level_i, in this order of kinds
   enum RootKind { kSlack, kMinLength, kMaxLength, kZeroLength };
-  RootKind kinds[4];
-  double levels[4];
+  RootKind kinds[4] = {};
+  double levels[4] = {};
   int root_count = 0;
   std::string last_error;
 };

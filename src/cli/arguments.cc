@@ -23,7 +23,7 @@ Arguments Parse(int argc, char** argv, int first, const std::set<std::string>& w
     bool inline_value = false;
     if (const auto eq = word.find('='); eq != std::string::npos && word.rfind("--", 0) == 0) {
       value = word.substr(eq + 1);
-      word = word.substr(0, eq);
+      word.resize(eq);
       inline_value = true;
     }
     if (flags.count(word) != 0 && !inline_value) {
