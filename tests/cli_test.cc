@@ -335,6 +335,19 @@ TEST(Cli, IdentifyWritesALoadableModelAndTheReport) {
   }
 }
 
+TEST(Cli, IdentifyAnySubsetGivesACompleteModel) {
+  const std::string dir = ::testing::TempDir();
+  for (const char* data : {"hill", "ghj1966"}) {  // velocity alone, active alone
+    const std::string out = dir + "identified_" + data + ".yaml";
+    const Outcome r = RunCli("identify " + std::string(MUSCLESIM_SOURCE_DIR) + "/data/" + data +
+                             ".yaml -o " + out);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const LoadedModel model = LoadModelFile(out);  // every part present and valid
+    EXPECT_THAT(ReadFile(out), HasSubstr("not identified")) << data;
+    EXPECT_GT(model.params.f_iso, 0.0);
+  }
+}
+
 TEST(Cli, IdentifyRejectsBadDataWithExitTwo) {
   const std::string dir = ::testing::TempDir();
   std::ofstream(dir + "bad_passive.csv") << "length,tension\n0.1,0\n0.2,0\n0.3,0\n0.4,0\n";
