@@ -37,7 +37,11 @@ void RequireMap(const Source& source, const YAML::Node& node, const std::string&
          "must be a map of keys");
   }
   for (const auto& entry : node) {
-    const std::string key = entry.first.as<std::string>();
+    if (!entry.first.IsScalar()) {
+      Fail(source, entry.first, path.empty() ? "(top level)" : path, Describe(entry.first),
+           "keys must be plain names");
+    }
+    const std::string key = entry.first.Scalar();
     bool known = false;
     std::string list;
     for (const char* name : allowed) {
@@ -140,7 +144,10 @@ std::string ReadText(const std::string& path) {
 
 YAML::Node Parse(const std::string& path, const std::string& text) {
   try {
-    return YAML::Load(text);
+    YAML::Node root = YAML::Load(text);
+    // an empty document has no position; say so here rather than at an unplaced node
+    if (!root.IsDefined() || root.IsNull()) throw InputError(path + ": the file is empty");
+    return root;
   } catch (const YAML::ParserException& e) {
     throw InputError(path + ":" + std::to_string(e.mark.line + 1) + ":" +
                      std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
