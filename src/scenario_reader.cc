@@ -148,12 +148,11 @@ Load ReadLoad(const yaml::Source& src, const YAML::Node& node, const std::string
 
 // Pulse trains and tables become stop times: refuse counts that could never run.
 void CheckBreakpointCount(const yaml::Source& src, const YAML::Node& node,
-                          const std::string& path, const Waveform& w, double t0, double t1) {
-  if (w.kind == WaveformKind::kPulses && (t1 - w.start) / w.period > 5e6) {
+                          const std::string& path, const Waveform& w, double t_end) {
+  if (w.kind == WaveformKind::kPulses && (t_end - w.start) / w.period > 5e6) {
     yaml::Fail(src, node["period"], Join(path, "period"), FormatNumber(w.period),
                "gives more than 5 million pulses between the start and time.end");
   }
-  (void)t0;
 }
 
 void ReadSolver(const yaml::Source& src, const YAML::Node& node, const std::string& path,
@@ -260,7 +259,7 @@ ScenarioSpec ReadScenario(const yaml::Source& src, const YAML::Node& root) {
 
   const YAML::Node activation = Required(src, root, "", "activation");
   s.activation = ReadActivation(src, activation, "activation");
-  CheckBreakpointCount(src, activation, "activation", s.activation, s.t_start, s.t_end);
+  CheckBreakpointCount(src, activation, "activation", s.activation, s.t_end);
 
   if (const YAML::Node load = root["load"]) {
     if (load.IsMap()) {
@@ -270,7 +269,7 @@ ScenarioSpec ReadScenario(const yaml::Source& src, const YAML::Node& root) {
         const std::string at = "load[" + std::to_string(i) + "]";
         s.loads.push_back(ReadLoad(src, load[i], at));
         if (s.loads.back().kind == LoadKind::kForce) {
-          CheckBreakpointCount(src, load[i], at, s.loads.back().force, s.t_start, s.t_end);
+          CheckBreakpointCount(src, load[i], at, s.loads.back().force, s.t_end);
         }
       }
     } else {
