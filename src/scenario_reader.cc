@@ -264,6 +264,9 @@ ScenarioSpec ReadScenario(const yaml::Source& src, const YAML::Node& root) {
   if (const YAML::Node load = root["load"]) {
     if (load.IsMap()) {
       s.loads.push_back(ReadLoad(src, load, "load"));
+      if (s.loads.back().kind == LoadKind::kForce) {
+        CheckBreakpointCount(src, load, "load", s.loads.back().force, s.t_end);
+      }
     } else if (load.IsSequence()) {
       for (std::size_t i = 0; i < load.size(); ++i) {
         const std::string at = "load[" + std::to_string(i) + "]";
