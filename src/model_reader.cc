@@ -166,9 +166,7 @@ LoadedModel LoadModelFile(const std::string& path) {
   const YAML::Node root = yaml::LoadFile(path);
   const yaml::Source src{path};
   // the scenario vocabulary: other verbs read the rest, none of it may be misspelt
-  yaml::RequireMap(src, root, "",
-                   {"name", "model", "actuator", "initial", "activation", "load", "time",
-                    "solver", "output", "limits"});
+  yaml::RequireMap(src, root, "", kScenarioKeys);
   return ReadModel(src, Required(src, root, "", "model"), "model");
 }
 

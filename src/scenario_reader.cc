@@ -215,9 +215,7 @@ void ReadOutput(const yaml::Source& src, const YAML::Node& node, const std::stri
 }
 
 ScenarioSpec ReadScenario(const yaml::Source& src, const YAML::Node& root) {
-  yaml::RequireMap(src, root, "",
-                   {"name", "model", "actuator", "initial", "activation", "load", "time",
-                    "solver", "output", "limits"});
+  yaml::RequireMap(src, root, "", kScenarioKeys);
   ScenarioSpec s;
   s.source = src.file;
   if (root["name"]) s.name = yaml::ReadString(src, root["name"], "name");
