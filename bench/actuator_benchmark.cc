@@ -2,7 +2,7 @@
 // dynamics: what CVODE calls in its innermost loop.
 #include <benchmark/benchmark.h>
 
-#include "musclesim/scenario.h"
+#include "musclesim/io/scenario.h"
 
 namespace musclesim {
 namespace {

@@ -1,7 +1,7 @@
 // Time of a whole indicator fit (all starting points), as `fit:` in a model block does it.
 #include <benchmark/benchmark.h>
 
-#include "musclesim/gaussian_fit.h"
+#include "musclesim/model/gaussian_fit.h"
 
 namespace musclesim {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/scenario.h"
+#include "musclesim/io/scenario.h"
 
 namespace musclesim {
 namespace {

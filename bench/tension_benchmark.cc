@@ -2,7 +2,7 @@
 // call of every simulation's right-hand side and Jacobian.
 #include <benchmark/benchmark.h>
 
-#include "musclesim/tension.h"
+#include "musclesim/model/tension.h"
 
 namespace musclesim {
 namespace {

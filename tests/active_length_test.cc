@@ -1,4 +1,4 @@
-#include "musclesim/active_length.h"
+#include "musclesim/model/active_length.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

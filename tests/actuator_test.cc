@@ -1,4 +1,4 @@
-#include "musclesim/actuator.h"
+#include "musclesim/dynamics/actuator.h"
 
 #include <gtest/gtest.h>
 

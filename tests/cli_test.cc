@@ -10,7 +10,7 @@
 #include <sstream>
 #include <sys/wait.h>
 
-#include "musclesim/model_file.h"
+#include "musclesim/io/model_yaml.h"
 
 namespace musclesim {
 namespace {
@@ -66,7 +66,7 @@ TEST(Cli, CurvesOverLengthMatchTheLibrary) {
   const auto rows = ParseCsv(r.out, &header);
   EXPECT_EQ(header, "length,f_L,tension_passive");
   ASSERT_EQ(rows.size(), 41u);
-  const TensionModel model(LoadModelFile(Scenario("fit_indicator.yaml")).params);
+  const TensionModel model(LoadModelSpec(Scenario("fit_indicator.yaml")).params);
   for (const auto& row : rows) {
     ASSERT_EQ(row.size(), 3u);
     EXPECT_DOUBLE_EQ(row[1], model.active_length().Evaluate(row[0]).value);
@@ -106,8 +106,8 @@ TEST(Cli, FitPrintsPasteableGaussians) {
   std::ofstream(path) << "model:\n  f_iso: 100\n  passive: {k_p: 2, alpha: 30, slack_length: 0.105}\n"
                          "  active_length:\n    optimal_range: [0.095, 0.105]\n"
                       << indented << "  velocity: {v_max: 1, n: 3, epsilon: 0.001}\n";
-  const LoadedModel pasted = LoadModelFile(path);
-  const LoadedModel fitted = LoadModelFile(Scenario("fit_indicator.yaml"));
+  const ModelSpec pasted = LoadModelSpec(path);
+  const ModelSpec fitted = LoadModelSpec(Scenario("fit_indicator.yaml"));
   ASSERT_EQ(pasted.params.active_length.gaussians.size(), 2u);
   for (std::size_t k = 0; k < 2; ++k) {
     EXPECT_EQ(pasted.params.active_length.gaussians[k].width,
@@ -323,7 +323,7 @@ TEST(Cli, IdentifyWritesALoadableModelAndTheReport) {
   const Outcome r = RunCli("identify " + std::string(MUSCLESIM_SOURCE_DIR) + "/data/synthetic.yaml -o " +
                            dir + "identified.yaml --report " + dir + "identified.md");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const LoadedModel model = LoadModelFile(dir + "identified.yaml");
+  const ModelSpec model = LoadModelSpec(dir + "identified.yaml");
   EXPECT_EQ(model.params.velocity.n, 3);                     // the generating exponent
   EXPECT_NEAR(model.params.velocity.v_max, 1.0, 0.05);        // generated with v_max = 1 m/s
   EXPECT_NEAR(model.params.f_iso, 100.0, 3.0);                // and f_iso = 100 N
@@ -342,7 +342,7 @@ TEST(Cli, IdentifyAnySubsetGivesACompleteModel) {
     const Outcome r = RunCli("identify " + std::string(MUSCLESIM_SOURCE_DIR) + "/data/" + data +
                              ".yaml -o " + out);
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    const LoadedModel model = LoadModelFile(out);  // every part present and valid
+    const ModelSpec model = LoadModelSpec(out);  // every part present and valid
     EXPECT_THAT(ReadFile(out), HasSubstr("not identified")) << data;
     EXPECT_GT(model.params.f_iso, 0.0);
   }

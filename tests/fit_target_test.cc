@@ -1,4 +1,4 @@
-#include "musclesim/fit_target.h"
+#include "musclesim/model/fit_target.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "musclesim/gaussian_fit.h"
+#include "musclesim/model/gaussian_fit.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

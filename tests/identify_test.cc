@@ -1,4 +1,4 @@
-#include "musclesim/identify.h"
+#include "musclesim/studies/identify.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <random>
 
 #include "musclesim/errors.h"
-#include "musclesim/identify_report.h"
+#include "musclesim/studies/identify_report.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {

@@ -1,4 +1,4 @@
-#include "musclesim/metrics.h"
+#include "musclesim/studies/metrics.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

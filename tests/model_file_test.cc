@@ -1,4 +1,4 @@
-#include "musclesim/model_file.h"
+#include "musclesim/io/model_yaml.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -38,11 +38,11 @@ std::string Edited(const std::string& from, const std::string& to) {
 
 std::string LoadError(const std::string& text) {
   const std::string path = WriteTemp(text);
-  return testing::InputErrorOf(path, [&] { LoadModelFile(path); });
+  return testing::InputErrorOf(path, [&] { LoadModelSpec(path); });
 }
 
 TEST(ModelFile, ReadsAValidModel) {
-  const LoadedModel m = LoadModelFile(WriteTemp(kValid));
+  const ModelSpec m = LoadModelSpec(WriteTemp(kValid));
   EXPECT_EQ(m.params.f_iso, 100.0);
   EXPECT_EQ(m.params.passive.alpha, 30.0);
   EXPECT_EQ(m.params.active_length.optimal_max, 0.105);
@@ -54,7 +54,7 @@ TEST(ModelFile, ReadsAValidModel) {
 }
 
 TEST(ModelFile, RunsTheFitAtLoadTime) {
-  const LoadedModel m = LoadModelFile(WriteTemp(Edited(
+  const ModelSpec m = LoadModelSpec(WriteTemp(Edited(
       "gaussians:\n      - {amplitude: 0.05, width: 90.0, center: 0.097}",
       "fit: {count: 2, target: indicator}")));
   ASSERT_TRUE(m.fit_result.has_value());
@@ -124,7 +124,7 @@ TEST(ModelFile, RejectsEveryBrokenRule) {
 }
 
 TEST(ModelFile, MissingFileIsAnInputError) {
-  EXPECT_THAT([] { LoadModelFile("/nonexistent/model.yaml"); },
+  EXPECT_THAT([] { LoadModelSpec("/nonexistent/model.yaml"); },
               ::testing::ThrowsMessage<InputError>(HasSubstr("cannot open the file")));
 }
 

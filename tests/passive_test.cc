@@ -1,4 +1,4 @@
-#include "musclesim/passive.h"
+#include "musclesim/model/passive.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

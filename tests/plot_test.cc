@@ -1,4 +1,4 @@
-#include "musclesim/plot.h"
+#include "musclesim/studies/plot.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "musclesim/errors.h"
-#include "musclesim/model_file.h"
+#include "musclesim/io/model_yaml.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {
@@ -62,7 +62,7 @@ TEST(Plot, MissingColumnsAreNamed) {
 TEST(Plot, CurvesScriptDrawsEveryComponentAndMarksOptimalRange) {
   PlotOptions options;
   options.output = "curves.png";
-  const TensionModel model(LoadModelFile(testing::ScenarioPath("concentric.yaml")).params);
+  const TensionModel model(LoadModelSpec(testing::ScenarioPath("concentric.yaml")).params);
   const std::string script = CurvesPlotScript(model, options);
   EXPECT_THAT(script, HasSubstr("set object 1 rect from first 0.095, graph 0 to first 0.105"));
   EXPECT_THAT(script, HasSubstr("title 'passive T_p'"));

@@ -1,4 +1,4 @@
-#include "musclesim/scenario.h"
+#include "musclesim/io/scenario.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

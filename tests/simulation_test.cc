@@ -1,4 +1,4 @@
-#include "musclesim/simulation.h"
+#include "musclesim/solver/simulation.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "musclesim/sweep.h"
+#include "musclesim/studies/sweep.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <set>
 
 #include "musclesim/errors.h"
-#include "musclesim/sweep_runner.h"
+#include "musclesim/studies/sweep_runner.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {

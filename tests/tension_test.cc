@@ -1,4 +1,4 @@
-#include "musclesim/tension.h"
+#include "musclesim/model/tension.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

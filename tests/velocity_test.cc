@@ -1,4 +1,4 @@
-#include "musclesim/velocity.h"
+#include "musclesim/model/velocity.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "musclesim/waveform.h"
+#include "musclesim/dynamics/waveform.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

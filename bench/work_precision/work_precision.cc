@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/scenario.h"
+#include "musclesim/io/scenario.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Error types shared by every layer, and the exit codes the command line maps them to.
+// Error types shared by every layer (the command line maps them to its exit codes).
 //
 // A ParameterError says which parameter broke which rule, with the parameter named by its
 // path inside the block being validated ("velocity.n", "gaussians[1].width"). Readers of
@@ -10,14 +10,6 @@
 #include <string_view>
 
 namespace musclesim {
-
-// Documented exit codes of the `musclesim` command.
-enum ExitCode : int {
-  kExitSuccess = 0,
-  kExitFailure = 1,        // anything not covered below (I/O, internal)
-  kExitInvalidInput = 2,   // a file, flag or value broke a documented rule
-  kExitSolverFailure = 3,  // the integrator could not continue
-};
 
 // A parameter value that breaks a rule. `path` is relative to the validated struct.
 class ParameterError : public std::invalid_argument {

@@ -4,8 +4,8 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
-#include "musclesim/model_file.h"
-#include "musclesim/output_file.h"
+#include "musclesim/io/model_yaml.h"
+#include "musclesim/io/output_file.h"
 
 namespace musclesim::cli {
 
@@ -32,7 +32,7 @@ int RunCurves(int argc, char** argv) {
   if (args.Has("--length") == args.Has("--velocity")) {
     throw UsageError("give exactly one of --length A:B:N or --velocity A:B:N");
   }
-  const LoadedModel loaded = LoadModelFile(args.positional[0]);
+  const ModelSpec loaded = LoadModelSpec(args.positional[0]);
   const TensionModel model(loaded.params);
 
   std::ostringstream csv;

@@ -5,8 +5,8 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "musclesim/errors.h"
-#include "musclesim/model_file.h"
-#include "musclesim/output_file.h"
+#include "musclesim/io/model_yaml.h"
+#include "musclesim/io/output_file.h"
 
 namespace musclesim::cli {
 
@@ -31,7 +31,7 @@ int RunFit(int argc, char** argv) {
     return 0;
   }
   if (args.positional.size() != 1) throw UsageError("expected one model file (see --help)");
-  const LoadedModel loaded = LoadModelFile(args.positional[0]);
+  const ModelSpec loaded = LoadModelSpec(args.positional[0]);
   if (!loaded.fit_result) {
     throw InputError("model.active_length.fit (" + args.positional[0] +
                      "): the file gives explicit gaussians; add a fit block to fit");

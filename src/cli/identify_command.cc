@@ -5,10 +5,12 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/exit_codes.h"
 #include "musclesim/errors.h"
-#include "musclesim/identify.h"
-#include "musclesim/identify_report.h"
-#include "musclesim/output_file.h"
+#include "musclesim/io/identify_spec.h"
+#include "musclesim/studies/identify.h"
+#include "musclesim/studies/identify_report.h"
+#include "musclesim/io/output_file.h"
 
 namespace musclesim::cli {
 

@@ -3,10 +3,11 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/exit_codes.h"
 #include "musclesim/errors.h"
-#include "musclesim/model_file.h"
-#include "musclesim/output_file.h"
-#include "musclesim/plot.h"
+#include "musclesim/io/model_yaml.h"
+#include "musclesim/io/output_file.h"
+#include "musclesim/studies/plot.h"
 
 namespace musclesim::cli {
 
@@ -58,7 +59,7 @@ int RunPlot(int argc, char** argv) {
   std::string script;
   if (args.Has("--curves")) {
     if (!args.positional.empty()) throw UsageError("--curves takes the model file; give no CSV");
-    script = CurvesPlotScript(TensionModel(LoadModelFile(args.Value("--curves")).params), options);
+    script = CurvesPlotScript(TensionModel(LoadModelSpec(args.Value("--curves")).params), options);
   } else {
     if (args.positional.size() != 1) throw UsageError("expected one CSV file (see --help)");
     const CsvTable table = ReadCsv(args.positional[0]);

@@ -5,10 +5,11 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/exit_codes.h"
 #include "musclesim/errors.h"
-#include "musclesim/output_file.h"
-#include "musclesim/recorder.h"
-#include "musclesim/scenario.h"
+#include "musclesim/io/output_file.h"
+#include "musclesim/io/trajectory_csv.h"
+#include "musclesim/io/scenario.h"
 
 namespace musclesim::cli {
 

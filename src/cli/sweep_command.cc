@@ -4,9 +4,10 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/exit_codes.h"
 #include "cli/sweep_mpi.h"
 #include "musclesim/errors.h"
-#include "musclesim/sweep_runner.h"
+#include "musclesim/studies/sweep_runner.h"
 
 namespace musclesim::cli {
 
@@ -69,7 +70,7 @@ int RunSweepCommand(int argc, char** argv) {
     std::cerr << "musclesim sweep: interrupted: " << outcome.resumed + outcome.ran << " of "
               << outcome.points << " points are in " << options.output
               << ".partial; run again with --resume to finish\n";
-    return 130;
+    return kExitInterrupted;
   }
   if (!options.quiet) {
     std::cerr << "musclesim sweep: " << outcome.points << " points (" << outcome.ran << " run now, "

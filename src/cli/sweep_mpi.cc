@@ -1,4 +1,5 @@
 #include "cli/sweep_mpi.h"
+#include "cli/exit_codes.h"
 
 #include <algorithm>
 #include <iostream>

@@ -4,7 +4,7 @@
 // Without -DMUSCLESIM_WITH_MPI=ON this compiles to an always-inactive session.
 #pragma once
 
-#include "musclesim/sweep_runner.h"
+#include "musclesim/studies/sweep_runner.h"
 
 namespace musclesim::cli {
 

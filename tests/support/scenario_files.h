@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "musclesim/errors.h"
-#include "musclesim/scenario.h"
-#include "musclesim/simulation.h"
+#include "musclesim/io/scenario.h"
+#include "musclesim/solver/simulation.h"
 
 namespace musclesim::testing {
 

@@ -1,0 +1,72 @@
+// The actuator/load dynamics of MODEL.md section 6 as a first-order system in y = (x, xdot):
+//   m_eff xddot = F_load(t, x) - T(x, -xdot, u(t)) - c xdot - k (x - l0)
+// with its analytic Jacobian. Immutable once built; evaluation allocates nothing.
+#pragma once
+
+#include "musclesim/dynamics/loads.h"
+#include "musclesim/model/tension.h"
+#include "musclesim/dynamics/waveform.h"
+
+namespace musclesim {
+
+struct ActuatorParams {
+  double mass = 1.0;         // moving mass of the actuator [kg], > 0
+  double damping = 0.0;      // parallel damper c [N s/m], >= 0
+  double stiffness = 0.0;    // parallel spring k [N/m], >= 0
+  double rest_length = 0.0;  // rest length l0 of that spring [m]
+};
+
+// Throws ParameterError ("mass", "damping", "stiffness", "rest_length").
+void Validate(const ActuatorParams& params);
+
+// Everything the state observes at one instant: what the output CSV records.
+struct ActuatorSample {
+  double length = 0.0;               // x [m]
+  double shortening_velocity = 0.0;  // v = -xdot [m/s]
+  double activation = 0.0;           // u(t)
+  TensionSample tension;
+  double load = 0.0;                 // F_load [N]
+};
+
+class ActuatorSystem {
+ public:
+  // Validates everything (ParameterError); the activation must stay within [0, 1].
+  ActuatorSystem(const ModelParams& model, const ActuatorParams& actuator, Waveform activation,
+                 std::vector<Load> loads);
+
+  // xddot at (t, x, xdot).
+  double Acceleration(double t, double x, double xdot) const {
+    const TensionSample s = model_.Evaluate(x, -xdot, activation_.Evaluate(t));
+    return (loads_.Force(t, x) - s.total - actuator_.damping * xdot -
+            actuator_.stiffness * (x - actuator_.rest_length)) * inverse_mass_;
+  }
+
+  // d xddot / dx and d xddot / dxdot: the lower row of the Jacobian (the upper is [0, 1]).
+  struct JacobianRow {
+    double by_length;
+    double by_rate;
+  };
+  JacobianRow Jacobian(double t, double x, double xdot) const {
+    const TensionSample s = model_.Evaluate(x, -xdot, activation_.Evaluate(t));
+    // dT/dxdot = -dT/dv since v = -xdot
+    return {(loads_.ForceSlope() - s.d_length - actuator_.stiffness) * inverse_mass_,
+            (s.d_velocity - actuator_.damping) * inverse_mass_};
+  }
+
+  ActuatorSample Observe(double t, double x, double xdot) const;
+
+  // Where the inputs jump: breakpoints of activation and force loads in (t0, t1), sorted.
+  std::vector<double> Breakpoints(double t0, double t1) const;
+
+  const TensionModel& model() const { return model_; }
+  double effective_mass() const { return 1.0 / inverse_mass_; }
+
+ private:
+  TensionModel model_;
+  ActuatorParams actuator_;
+  Waveform activation_;
+  LoadSet loads_;
+  double inverse_mass_;
+};
+
+}  // namespace musclesim

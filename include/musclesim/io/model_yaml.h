@@ -1,0 +1,23 @@
+// Reading the `model:` block of a scenario file (README "The model block"): validated
+// parameters, with the Gaussian fit run at load time when the block asks for one.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "musclesim/model/gaussian_fit.h"
+#include "musclesim/model/tension.h"
+
+namespace musclesim {
+
+struct ModelSpec {
+  ModelParams params;              // valid: TensionModel(params) does not throw
+  std::optional<FitSpec> fit;      // the fit the file asked for, if any
+  std::optional<FitResult> fit_result;
+};
+
+// Reads `path`, checks its top-level keys against the scenario vocabulary and reads its
+// `model` block. Throws InputError naming file:line:column, key, value and rule.
+ModelSpec LoadModelSpec(const std::string& path);
+
+}  // namespace musclesim

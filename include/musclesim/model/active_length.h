@@ -1,0 +1,86 @@
+// Active tension-length factor: a sum of Gaussians (paper eqs. 3-4) normalised by its
+// maximum over the optimal length range (eq. 13, MODEL.md section 3).
+#pragma once
+
+#include <vector>
+
+#include "musclesim/model/curve_point.h"
+
+namespace musclesim {
+
+// One component psi_k(x) = a / sqrt(2 pi sigma) * exp(-b (x - d)^2 / (2 sigma)).
+struct Gaussian {
+  double amplitude = 0.0;  // a_k, dimensionless, finite (may be negative)
+  double width = 1.0;      // b_k, width factor [1/m^2 when sigma = 1], > 0
+  double center = 0.0;     // d_k [m], finite
+};
+
+struct ActiveLengthParams {
+  double optimal_min = 0.0;          // l1, start of L_opt [m]
+  double optimal_max = 1.0;          // l2, end of L_opt [m], > l1
+  double sigma = 1.0;                // common scale, > 0; only b_k / sigma shapes the curve
+  std::vector<Gaussian> gaussians;   // at least one component
+};
+
+// Throws ParameterError ("optimal_range", "sigma", "gaussians", "gaussians[k].width", ...).
+void Validate(const ActiveLengthParams& params);
+
+// The unnormalised sum f(x) with its first two derivatives. Immutable; evaluation
+// allocates nothing.
+class GaussianSum {
+ public:
+  // `params` must already be valid; sigma and the components are copied.
+  GaussianSum(const std::vector<Gaussian>& gaussians, double sigma);
+
+  double Value(double x) const;
+  CurvePoint ValueAndSlope(double x) const;
+  double Curvature(double x) const;  // f''(x)
+
+  // Smallest standard deviation sqrt(sigma / b_k) among the components [m].
+  double NarrowestSpread() const;
+
+ private:
+  struct Term {
+    double scale;   // a_k / sqrt(2 pi sigma)
+    double rate;    // b_k / (2 sigma)
+    double center;  // d_k
+  };
+  std::vector<Term> terms_;
+};
+
+// f_L(x) = f(x) / max over L_opt of f. Construction finds that maximum exactly: the
+// larger of the end values and of f at every interior root of f' (bracketed on a grid
+// finer than the narrowest component, then bisected to the last bit).
+class ActiveLengthCurve {
+ public:
+  // Validates `params` (ParameterError) and throws ParameterError("gaussians") when f is
+  // not positive anywhere on L_opt, since it then cannot be normalised.
+  explicit ActiveLengthCurve(ActiveLengthParams params);
+
+  // f_L(x) and df_L/dx.
+  CurvePoint Evaluate(double x) const {
+    const CurvePoint raw = sum_.ValueAndSlope(x);
+    return {raw.value * inverse_peak_, raw.slope * inverse_peak_};
+  }
+
+  const ActiveLengthParams& params() const { return params_; }
+  const GaussianSum& sum() const { return sum_; }
+  double peak_value() const { return peak_value_; }      // max of f over L_opt
+  double optimal_length() const { return peak_length_; }  // where it is reached [m]
+
+ private:
+  ActiveLengthParams params_;
+  GaussianSum sum_;
+  double peak_value_ = 0.0;
+  double peak_length_ = 0.0;
+  double inverse_peak_ = 0.0;
+};
+
+// Location and value of max f on [lo, hi], found as described for ActiveLengthCurve.
+struct Maximum {
+  double x = 0.0;
+  double value = 0.0;
+};
+Maximum MaximumOnInterval(const GaussianSum& sum, double lo, double hi);
+
+}  // namespace musclesim

@@ -1,0 +1,69 @@
+// Identification of the model's parameters from measured curves (the paper's
+// "identification-ready" claim made a tool):
+//   passive:  slack length by profile likelihood over candidate thresholds, then k_p and
+//             alpha (and the slack length, jointly) by Levenberg-Marquardt with the analytic
+//             Jacobian (Eigen's unsupported LevenbergMarquardt);
+//   active:   a sum of Gaussians by the closed-form samples fit; f_iso its maximum;
+//   velocity: for each n in 1..10, f_iso and v_max by linear least squares in
+//             s = sgn(v) |v|^(1/n) (T = f_iso - (f_iso / v_max^(1/n)) s), the best n kept.
+// Standard errors come from the Jacobian at the optimum: sigma^2 (J^T J)^-1 with
+// sigma^2 = RSS / (points - parameters).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "musclesim/model/active_length.h"
+#include "musclesim/studies/reference_fits.h"
+
+namespace musclesim {
+
+struct Estimate {
+  double value = 0.0;
+  double standard_error = 0.0;  // NaN when it cannot be estimated
+};
+
+struct PassiveIdentification {
+  Estimate slack_length;  // [m]
+  Estimate k_p;           // [N]
+  Estimate alpha;         // [1/m]
+  double rmse = 0.0;      // [N]
+  double Evaluate(double x) const;
+};
+
+struct ActiveIdentification {
+  ActiveLengthParams curve;  // f_L: amplitudes scaled so that max f = 1 on optimal_range
+  Estimate f_iso;            // [N], the fitted curve's maximum
+  std::vector<Estimate> amplitudes, widths, centers;  // of `curve`, with standard errors
+  double rmse = 0.0;         // [N]
+  double Evaluate(double x) const;  // f_iso f_L(x)
+};
+
+struct VelocityCandidate {
+  int n = 1;
+  Estimate v_max;   // [m/s]
+  Estimate f_iso;   // [N]
+  double rmse = 0.0;
+  bool valid = false;  // false when the fit gives no positive v_max (tension rising with v)
+};
+
+struct VelocityIdentification {
+  VelocityCandidate best;
+  std::vector<VelocityCandidate> candidates;  // n = 1..10
+  double Evaluate(double v) const;  // unregularised f_iso g(v)
+};
+
+// Each throws InputError when the data cannot determine the parameters.
+PassiveIdentification IdentifyPassive(const std::vector<DataPoint>& data);
+ActiveIdentification IdentifyActive(const std::vector<DataPoint>& data, int count, bool nonnegative);
+VelocityIdentification IdentifyVelocity(const std::vector<DataPoint>& data,
+                                        std::optional<double> f_iso);
+
+// Reads columns `x_name`, `y_name` of a CSV (lines starting with # are comments) and checks
+// the data rules: at least `min_points` rows, finite values, x strictly increasing (no
+// duplicates), tension not zero everywhere. Throws InputError naming file, row and reason.
+std::vector<DataPoint> ReadCurveCsv(const std::string& path, const std::string& x_name,
+                                    const std::string& y_name, std::size_t min_points);
+
+}  // namespace musclesim

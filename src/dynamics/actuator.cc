@@ -1,0 +1,45 @@
+#include "musclesim/dynamics/actuator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "musclesim/errors.h"
+
+namespace musclesim {
+
+void Validate(const ActuatorParams& p) {
+  Require(std::isfinite(p.mass) && p.mass > 0.0, "mass", p.mass, "must be finite and > 0 [kg]");
+  Require(std::isfinite(p.damping) && p.damping >= 0.0, "damping", p.damping,
+          "must be finite and >= 0 [N s/m]");
+  Require(std::isfinite(p.stiffness) && p.stiffness >= 0.0, "stiffness", p.stiffness,
+          "must be finite and >= 0 [N/m]");
+  Require(std::isfinite(p.rest_length), "rest_length", p.rest_length, "must be finite [m]");
+}
+
+ActuatorSystem::ActuatorSystem(const ModelParams& model, const ActuatorParams& actuator,
+                               Waveform activation, std::vector<Load> loads)
+    : model_(model),
+      actuator_((Validate(actuator), actuator)),
+      activation_((ValidateActivation(activation), std::move(activation))),
+      loads_(std::move(loads)),
+      inverse_mass_(1.0 / (actuator.mass + loads_.AddedMass())) {}
+
+ActuatorSample ActuatorSystem::Observe(double t, double x, double xdot) const {
+  ActuatorSample s;
+  s.length = x;
+  s.shortening_velocity = 0.0 - xdot;  // +0 rather than -0 at rest
+  s.activation = activation_.Evaluate(t);
+  s.tension = model_.Evaluate(x, -xdot, s.activation);
+  s.load = loads_.Force(t, x);
+  return s;
+}
+
+std::vector<double> ActuatorSystem::Breakpoints(double t0, double t1) const {
+  std::vector<double> times = activation_.Breakpoints(t0, t1);
+  const std::vector<double> load_times = loads_.Breakpoints(t0, t1);
+  times.insert(times.end(), load_times.begin(), load_times.end());
+  SortUnique(times);
+  return times;
+}
+
+}  // namespace musclesim

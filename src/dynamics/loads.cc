@@ -1,0 +1,70 @@
+#include "musclesim/dynamics/loads.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "musclesim/errors.h"
+
+namespace musclesim {
+
+void Validate(const Load& load) {
+  switch (load.kind) {
+    case LoadKind::kForce:
+      Validate(load.force);
+      break;
+    case LoadKind::kSpring:
+      Require(std::isfinite(load.stiffness) && load.stiffness >= 0.0, "stiffness",
+              load.stiffness, "must be finite and >= 0 [N/m]");
+      Require(std::isfinite(load.anchor), "anchor", load.anchor, "must be finite [m]");
+      break;
+    case LoadKind::kMass:
+      Require(std::isfinite(load.mass) && load.mass > 0.0, "mass", load.mass,
+              "must be finite and > 0 [kg]");
+      Require(std::isfinite(load.gravity), "gravity", load.gravity, "must be finite [m/s^2]");
+      break;
+  }
+}
+
+LoadSet::LoadSet(std::vector<Load> loads) : loads_(std::move(loads)) {
+  for (std::size_t i = 0; i < loads_.size(); ++i) {
+    try {
+      Validate(loads_[i]);
+    } catch (const ParameterError& e) {
+      throw ParameterError("load[" + std::to_string(i) + "]." + e.path(), e.value(), e.rule());
+    }
+  }
+  for (const Load& load : loads_) {
+    switch (load.kind) {
+      case LoadKind::kForce:
+        forces_.push_back(load.force);
+        break;
+      case LoadKind::kSpring:
+        spring_stiffness_ += load.stiffness;
+        spring_pull_ += load.stiffness * load.anchor;
+        break;
+      case LoadKind::kMass:
+        weight_ += load.mass * load.gravity;
+        added_mass_ += load.mass;
+        break;
+    }
+  }
+}
+
+double LoadSet::Force(double t, double x) const {
+  double force = weight_ + spring_pull_ - spring_stiffness_ * x;
+  for (const Waveform& w : forces_) force += w.Evaluate(t);
+  return force;
+}
+
+std::vector<double> LoadSet::Breakpoints(double t0, double t1) const {
+  std::vector<double> times;
+  for (const Waveform& w : forces_) {
+    const std::vector<double> own = w.Breakpoints(t0, t1);
+    times.insert(times.end(), own.begin(), own.end());
+  }
+  SortUnique(times);
+  return times;
+}
+
+}  // namespace musclesim

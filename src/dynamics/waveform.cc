@@ -1,0 +1,202 @@
+#include "musclesim/dynamics/waveform.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "musclesim/errors.h"
+
+namespace musclesim {
+
+std::string_view ToString(WaveformKind kind) {
+  switch (kind) {
+    case WaveformKind::kConstant: return "constant";
+    case WaveformKind::kStep: return "step";
+    case WaveformKind::kRamp: return "ramp";
+    case WaveformKind::kSine: return "sine";
+    case WaveformKind::kPulses: return "pulses";
+    case WaveformKind::kTable: return "table";
+  }
+  return "?";
+}
+
+WaveformKind ParseWaveformKind(std::string_view text) {
+  for (WaveformKind kind : {WaveformKind::kConstant, WaveformKind::kStep, WaveformKind::kRamp,
+                            WaveformKind::kSine, WaveformKind::kPulses, WaveformKind::kTable}) {
+    if (text == ToString(kind)) return kind;
+  }
+  throw ParameterError("type", std::string(text),
+                       "must be one of constant, step, ramp, sine, pulses, table");
+}
+
+double Waveform::Evaluate(double t) const {
+  switch (kind) {
+    case WaveformKind::kConstant:
+      return value;
+    case WaveformKind::kStep:
+      return t < time ? before : after;
+    case WaveformKind::kRamp:
+      if (t <= start) return from;
+      if (t >= end) return to;
+      return from + (to - from) * (t - start) / (end - start);
+    case WaveformKind::kSine:
+      return offset + amplitude * std::sin(2.0 * std::numbers::pi * frequency * t + phase);
+    case WaveformKind::kPulses: {
+      if (t < start) return low;
+      const double into_period = std::fmod(t - start, period);
+      return into_period < width ? high : low;
+    }
+    case WaveformKind::kTable: {
+      if (t <= points.front().t) return points.front().value;
+      if (t >= points.back().t) return points.back().value;
+      const auto right = std::upper_bound(points.begin(), points.end(), t,
+                                          [](double s, const TablePoint& p) { return s < p.t; });
+      const TablePoint& a = *(right - 1);
+      const TablePoint& b = *right;
+      return a.value + (b.value - a.value) * (t - a.t) / (b.t - a.t);
+    }
+  }
+  return 0.0;
+}
+
+std::vector<double> Waveform::Breakpoints(double t0, double t1) const {
+  std::vector<double> times;
+  const auto add = [&](double t) {
+    if (t > t0 && t < t1) times.push_back(t);
+  };
+  switch (kind) {
+    case WaveformKind::kConstant:
+    case WaveformKind::kSine:
+      break;
+    case WaveformKind::kStep:
+      add(time);
+      break;
+    case WaveformKind::kRamp:
+      add(start);
+      add(end);
+      break;
+    case WaveformKind::kPulses: {
+      // every rising and falling edge inside the window
+      const double first = std::max(0.0, std::floor((t0 - start) / period));
+      for (double k = first; start + k * period < t1; k += 1.0) {
+        add(start + k * period);
+        if (width < period) add(start + k * period + width);
+      }
+      break;
+    }
+    case WaveformKind::kTable:
+      for (const TablePoint& p : points) add(p.t);
+      break;
+  }
+  SortUnique(times);
+  return times;
+}
+
+void SortUnique(std::vector<double>& times) {
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+}
+
+double Waveform::Minimum(double t0, double t1) const {
+  double lowest = std::min(Evaluate(t0), Evaluate(t1));
+  for (double t : Breakpoints(t0, t1)) {
+    lowest = std::min({lowest, Evaluate(t), Evaluate(std::nextafter(t, t0))});
+  }
+  if (kind == WaveformKind::kSine) lowest = std::min(lowest, offset - std::abs(amplitude));
+  if (kind == WaveformKind::kPulses && t1 > start) lowest = std::min(lowest, low);
+  return lowest;
+}
+
+double Waveform::Maximum(double t0, double t1) const {
+  double highest = std::max(Evaluate(t0), Evaluate(t1));
+  for (double t : Breakpoints(t0, t1)) {
+    highest = std::max({highest, Evaluate(t), Evaluate(std::nextafter(t, t0))});
+  }
+  if (kind == WaveformKind::kSine) highest = std::max(highest, offset + std::abs(amplitude));
+  if (kind == WaveformKind::kPulses && t1 > start) highest = std::max(highest, high);
+  return highest;
+}
+
+void Validate(const Waveform& w) {
+  const auto finite = [](const char* key, double v) {
+    Require(std::isfinite(v), key, v, "must be finite");
+  };
+  switch (w.kind) {
+    case WaveformKind::kConstant:
+      finite("value", w.value);
+      break;
+    case WaveformKind::kStep:
+      finite("time", w.time);
+      finite("before", w.before);
+      finite("after", w.after);
+      break;
+    case WaveformKind::kRamp:
+      finite("start", w.start);
+      finite("from", w.from);
+      finite("to", w.to);
+      Require(std::isfinite(w.end) && w.end > w.start, "end", w.end,
+              "must be finite and greater than start = " + FormatNumber(w.start));
+      break;
+    case WaveformKind::kSine:
+      finite("offset", w.offset);
+      finite("amplitude", w.amplitude);
+      finite("phase", w.phase);
+      Require(std::isfinite(w.frequency) && w.frequency >= 0.0, "frequency", w.frequency,
+              "must be finite and >= 0 [Hz]");
+      break;
+    case WaveformKind::kPulses:
+      finite("start", w.start);
+      finite("low", w.low);
+      finite("high", w.high);
+      Require(std::isfinite(w.period) && w.period > 0.0, "period", w.period,
+              "must be finite and > 0 [s]");
+      Require(std::isfinite(w.width) && w.width > 0.0 && w.width <= w.period, "width", w.width,
+              "must be > 0 and at most period = " + FormatNumber(w.period));
+      break;
+    case WaveformKind::kTable:
+      if (w.points.empty()) throw ParameterError("points", "[]", "needs at least one [t, value]");
+      for (std::size_t i = 0; i < w.points.size(); ++i) {
+        const std::string at = "points[" + std::to_string(i) + "]";
+        Require(std::isfinite(w.points[i].t), at + "[0]", w.points[i].t, "must be finite");
+        Require(std::isfinite(w.points[i].value), at + "[1]", w.points[i].value,
+                "must be finite");
+        if (i > 0) {
+          Require(w.points[i].t > w.points[i - 1].t, at + "[0]", w.points[i].t,
+                  "table times must be strictly increasing (previous t = " +
+                      FormatNumber(w.points[i - 1].t) + ")");
+        }
+      }
+      break;
+  }
+}
+
+}  // namespace musclesim
+
+namespace musclesim {
+
+void ValidateActivation(const Waveform& w) {
+  Validate(w);
+  const auto unit = [](const std::string& key, double v) {
+    Require(v >= 0.0 && v <= 1.0, key, v, "activation must stay within [0, 1]");
+  };
+  switch (w.kind) {
+    case WaveformKind::kConstant: unit("value", w.value); break;
+    case WaveformKind::kStep: unit("before", w.before); unit("after", w.after); break;
+    case WaveformKind::kRamp: unit("from", w.from); unit("to", w.to); break;
+    case WaveformKind::kSine:
+      Require(w.offset - std::abs(w.amplitude) >= 0.0 && w.offset + std::abs(w.amplitude) <= 1.0,
+              "amplitude", w.amplitude,
+              "activation must stay within [0, 1]: offset = " + FormatNumber(w.offset) +
+                  " -+ |amplitude| leaves it");
+      break;
+    case WaveformKind::kPulses: unit("low", w.low); unit("high", w.high); break;
+    case WaveformKind::kTable:
+      for (std::size_t i = 0; i < w.points.size(); ++i) {
+        unit("points[" + std::to_string(i) + "][1]", w.points[i].value);
+      }
+      break;
+  }
+}
+
+}  // namespace musclesim

@@ -1,0 +1,56 @@
+// Reads the data file of `musclesim identify`.
+#include <cmath>
+#include <filesystem>
+
+#include "musclesim/io/identify_spec.h"
+#include "io/yaml_fields.h"
+
+namespace musclesim {
+
+IdentifySpec LoadIdentifySpec(const std::string& path) {
+  const YAML::Node root = yaml::LoadFile(path);
+  const yaml::Source src{path};
+  yaml::RequireMap(src, root, "", {"passive", "active", "velocity"});
+  if (root.size() == 0) {
+    yaml::Fail(src, root, "(top level)", "{}", "give at least one of passive, active, velocity");
+  }
+  IdentifySpec spec;
+  spec.source = path;
+  const auto csv = [&](const YAML::Node& block, const std::string& name) {
+    const std::string file = yaml::ReadString(src, yaml::Required(src, block, name, "csv"), name + ".csv");
+    return (std::filesystem::path(path).parent_path() / file).lexically_normal().string();
+  };
+  if (const YAML::Node passive = root["passive"]) {
+    yaml::RequireMap(src, passive, "passive", {"csv"});
+    spec.passive_csv = csv(passive, "passive");
+  }
+  if (const YAML::Node active = root["active"]) {
+    yaml::RequireMap(src, active, "active", {"csv", "count", "nonnegative"});
+    spec.active_csv = csv(active, "active");
+    if (active["count"]) {
+      spec.active_count = yaml::ReadInteger(src, active["count"], "active.count");
+      if (spec.active_count < 1 || spec.active_count > 12) {
+        yaml::Fail(src, active["count"], "active.count", yaml::Describe(active["count"]),
+                   "must be an integer from 1 to 12");
+      }
+    }
+    if (active["nonnegative"]) {
+      spec.active_nonnegative = yaml::ReadBool(src, active["nonnegative"], "active.nonnegative");
+    }
+  }
+  if (const YAML::Node velocity = root["velocity"]) {
+    yaml::RequireMap(src, velocity, "velocity", {"csv", "f_iso"});
+    spec.velocity_csv = csv(velocity, "velocity");
+    if (velocity["f_iso"]) {
+      const double f_iso = yaml::ReadNumber(src, velocity["f_iso"], "velocity.f_iso");
+      if (!(std::isfinite(f_iso) && f_iso > 0.0)) {
+        yaml::Fail(src, velocity["f_iso"], "velocity.f_iso", yaml::Describe(velocity["f_iso"]),
+                   "must be finite and > 0 [N]");
+      }
+      spec.velocity_f_iso = f_iso;
+    }
+  }
+  return spec;
+}
+
+}  // namespace musclesim

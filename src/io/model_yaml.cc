@@ -1,0 +1,173 @@
+#include "io/model_yaml_node.h"
+
+namespace musclesim {
+
+namespace {
+
+using yaml::Join;
+using yaml::Required;
+
+PassiveParams ReadPassive(const yaml::Source& src, const YAML::Node& node,
+                          const std::string& path) {
+  yaml::RequireMap(src, node, path, {"k_p", "alpha", "slack_length"});
+  PassiveParams p;
+  p.k_p = yaml::ReadNumber(src, Required(src, node, path, "k_p"), Join(path, "k_p"));
+  p.alpha = yaml::ReadNumber(src, Required(src, node, path, "alpha"), Join(path, "alpha"));
+  p.slack_length = yaml::ReadNumber(src, Required(src, node, path, "slack_length"),
+                                    Join(path, "slack_length"));
+  return p;
+}
+
+VelocityParams ReadVelocity(const yaml::Source& src, const YAML::Node& node,
+                            const std::string& path) {
+  yaml::RequireMap(src, node, path, {"v_max", "n", "epsilon"});
+  VelocityParams p;
+  p.v_max = yaml::ReadNumber(src, Required(src, node, path, "v_max"), Join(path, "v_max"));
+  const YAML::Node n = Required(src, node, path, "n");
+  const double n_value = yaml::ReadNumber(src, n, Join(path, "n"));
+  if (!(n_value >= 1.0 && n_value <= 1000.0) || n_value != std::floor(n_value)) {
+    yaml::Fail(src, n, Join(path, "n"), yaml::Describe(n), "must be an integer >= 1 (at most 1000)");
+  }
+  p.n = static_cast<int>(n_value);
+  p.epsilon =
+      yaml::ReadNumber(src, Required(src, node, path, "epsilon"), Join(path, "epsilon"));
+  return p;
+}
+
+std::vector<TargetPoint> ReadPoints(const yaml::Source& src, const YAML::Node& node,
+                                    const std::string& path) {
+  if (!node.IsSequence()) {
+    yaml::Fail(src, node, path, yaml::Describe(node), "must be a list of [x, y] pairs");
+  }
+  std::vector<TargetPoint> points;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::vector<double> pair =
+        yaml::ReadNumbers(src, node[i], path + "[" + std::to_string(i) + "]", 2);
+    points.push_back({pair[0], pair[1]});
+  }
+  return points;
+}
+
+FitSpec ReadFitSpec(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+  yaml::RequireMap(src, node, path,
+                   {"count", "target", "points", "nonnegative", "widths", "centers"});
+  FitSpec spec;
+  spec.count = yaml::ReadInteger(src, Required(src, node, path, "count"), Join(path, "count"));
+  if (node["target"]) {
+    const std::string text = yaml::ReadString(src, node["target"], Join(path, "target"));
+    try {
+      spec.target = ParseFitTargetKind(text);
+    } catch (const ParameterError& e) {
+      yaml::Relocate(src, node, path, e);
+    }
+  }
+  if (node["points"]) spec.points = ReadPoints(src, node["points"], Join(path, "points"));
+  if (node["nonnegative"]) {
+    spec.nonnegative = yaml::ReadBool(src, node["nonnegative"], Join(path, "nonnegative"));
+  }
+  if (node["widths"]) spec.widths = yaml::ReadNumbers(src, node["widths"], Join(path, "widths"));
+  if (node["centers"]) {
+    spec.centers = yaml::ReadNumbers(src, node["centers"], Join(path, "centers"));
+  }
+  if (spec.target != FitTargetKind::kIndicator && spec.points.empty() && !node["points"]) {
+    yaml::Fail(src, node, Join(path, "points"), "~",
+               "target " + std::string(ToString(spec.target)) + " needs points");
+  }
+  try {
+    Validate(spec);
+  } catch (const ParameterError& e) {
+    yaml::Relocate(src, node, path, e);
+  }
+  return spec;
+}
+
+std::vector<Gaussian> ReadGaussians(const yaml::Source& src, const YAML::Node& node,
+                                    const std::string& path) {
+  if (!node.IsSequence() || node.size() == 0) {
+    yaml::Fail(src, node, path, yaml::Describe(node),
+               "must be a non-empty list of {amplitude, width, center}");
+  }
+  std::vector<Gaussian> gaussians;
+  for (std::size_t k = 0; k < node.size(); ++k) {
+    const std::string at = path + "[" + std::to_string(k) + "]";
+    const YAML::Node item = node[k];
+    yaml::RequireMap(src, item, at, {"amplitude", "width", "center"});
+    gaussians.push_back(
+        {yaml::ReadNumber(src, Required(src, item, at, "amplitude"), Join(at, "amplitude")),
+         yaml::ReadNumber(src, Required(src, item, at, "width"), Join(at, "width")),
+         yaml::ReadNumber(src, Required(src, item, at, "center"), Join(at, "center"))});
+  }
+  return gaussians;
+}
+
+}  // namespace
+
+ModelSpec ReadModelSpec(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+  yaml::RequireMap(src, node, path, {"f_iso", "passive", "active_length", "velocity"});
+  ModelSpec model;
+  ModelParams& p = model.params;
+  p.f_iso = yaml::ReadNumber(src, Required(src, node, path, "f_iso"), Join(path, "f_iso"));
+  p.passive = ReadPassive(src, Required(src, node, path, "passive"), Join(path, "passive"));
+  p.velocity =
+      ReadVelocity(src, Required(src, node, path, "velocity"), Join(path, "velocity"));
+
+  const std::string active_path = Join(path, "active_length");
+  const YAML::Node active = Required(src, node, path, "active_length");
+  yaml::RequireMap(src, active, active_path, {"optimal_range", "sigma", "gaussians", "fit"});
+  const std::vector<double> range = yaml::ReadNumbers(
+      src, Required(src, active, active_path, "optimal_range"),
+      Join(active_path, "optimal_range"), 2);
+  p.active_length.optimal_min = range[0];
+  p.active_length.optimal_max = range[1];
+  if (active["sigma"]) {
+    p.active_length.sigma =
+        yaml::ReadNumber(src, active["sigma"], Join(active_path, "sigma"));
+  }
+  const bool has_list = static_cast<bool>(active["gaussians"]);
+  const bool has_fit = static_cast<bool>(active["fit"]);
+  if (has_list == has_fit) {
+    yaml::Fail(src, active, active_path, has_list ? "gaussians and fit" : "neither",
+               "give exactly one of gaussians (explicit components) or fit (fitted at load)");
+  }
+
+  try {
+    // the fit needs a valid range and sigma first: check the block without components
+    ActiveLengthParams range_only = p.active_length;
+    range_only.gaussians = {Gaussian{1.0, 1.0, 0.0}};
+    Validate(range_only);
+  } catch (const ParameterError& e) {
+    yaml::Relocate(src, active, active_path, e);
+  }
+
+  if (has_list) {
+    p.active_length.gaussians =
+        ReadGaussians(src, active["gaussians"], Join(active_path, "gaussians"));
+  } else {
+    const std::string fit_path = Join(active_path, "fit");
+    model.fit = ReadFitSpec(src, active["fit"], fit_path);
+    try {
+      model.fit_result = FitGaussians(*model.fit, p.active_length.optimal_min,
+                                      p.active_length.optimal_max, p.active_length.sigma);
+    } catch (const ParameterError& e) {
+      yaml::Relocate(src, active["fit"], fit_path, e);
+    }
+    p.active_length.gaussians = model.fit_result->gaussians;
+  }
+
+  try {
+    TensionModel check(p);  // validates everything, including that f_L can be normalised
+  } catch (const ParameterError& e) {
+    yaml::Relocate(src, node, path, e);
+  }
+  return model;
+}
+
+ModelSpec LoadModelSpec(const std::string& path) {
+  const YAML::Node root = yaml::LoadFile(path);
+  const yaml::Source src{path};
+  // the scenario vocabulary: other verbs read the rest, none of it may be misspelt
+  yaml::RequireMap(src, root, "", kScenarioKeys);
+  return ReadModelSpec(src, Required(src, root, "", "model"), "model");
+}
+
+}  // namespace musclesim

@@ -1,0 +1,21 @@
+// Private: reads a `model:` node into validated parameters (used by every file reader).
+#pragma once
+
+#include <initializer_list>
+
+#include "musclesim/io/model_yaml.h"
+#include "io/yaml_fields.h"
+
+namespace musclesim {
+
+// The top-level keys of a scenario file: readers of any part of one accept these and no
+// others, so a misspelt key is caught whichever verb reads the file.
+inline constexpr std::initializer_list<const char*> kScenarioKeys = {
+    "name", "model", "actuator", "initial", "activation", "load", "time", "solver", "output",
+    "limits"};
+
+// `node` is the value of the `model` key, `path` its key path ("model").
+ModelSpec ReadModelSpec(const yaml::Source& source, const YAML::Node& node,
+                      const std::string& path);
+
+}  // namespace musclesim

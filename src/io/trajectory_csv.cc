@@ -1,0 +1,74 @@
+#include "musclesim/io/trajectory_csv.h"
+
+#include <sstream>
+
+#include "musclesim/io/output_file.h"
+
+namespace musclesim {
+
+std::string_view ToString(Phase phase) {
+  switch (phase) {
+    case Phase::kConcentric: return "concentric";
+    case Phase::kEccentric: return "eccentric";
+    case Phase::kIsometric: return "isometric";
+  }
+  return "?";
+}
+
+std::string FormatTrajectoryCsv(const std::vector<TrajectoryPoint>& trajectory,
+                                double phase_tolerance) {
+  std::string csv;
+  csv.reserve(200 * (trajectory.size() + 1));
+  csv += kTrajectoryHeader;
+  csv += '\n';
+  for (const TrajectoryPoint& p : trajectory) {
+    const ActuatorSample& s = p.sample;
+    for (double value : {p.t, s.length, s.shortening_velocity, s.activation, s.tension.passive,
+                         s.tension.active, s.tension.total, s.load}) {
+      csv += FormatFull(value);
+      csv += ',';
+    }
+    csv += ToString(ClassifyPhase(s.shortening_velocity, phase_tolerance));
+    csv += '\n';
+  }
+  return csv;
+}
+
+namespace {
+
+std::string JsonString(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      out += ' ';
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+std::string FormatStatsJson(const RunStats& s) {
+  std::ostringstream out;
+  out << "{\n"
+      << "  \"steps\": " << s.steps << ",\n"
+      << "  \"rhs_evals\": " << s.rhs_evals << ",\n"
+      << "  \"jac_evals\": " << s.jac_evals << ",\n"
+      << "  \"linear_setups\": " << s.linear_setups << ",\n"
+      << "  \"newton_iters\": " << s.newton_iters << ",\n"
+      << "  \"newton_conv_fails\": " << s.newton_conv_fails << ",\n"
+      << "  \"error_test_fails\": " << s.error_test_fails << ",\n"
+      << "  \"wall_seconds\": " << FormatFull(s.wall_seconds) << ",\n"
+      << "  \"final_time\": " << FormatFull(s.final_time) << ",\n"
+      << "  \"status\": " << JsonString(std::string(ToString(s.status))) << ",\n"
+      << "  \"message\": " << JsonString(s.message) << "\n"
+      << "}\n";
+  return out.str();
+}
+
+}  // namespace musclesim

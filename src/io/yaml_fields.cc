@@ -1,0 +1,159 @@
+#include "io/yaml_fields.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace musclesim::yaml {
+
+std::string Location(const Source& source, const YAML::Node& node) {
+  const YAML::Mark mark = node.Mark();
+  if (mark.is_null()) return "--set";  // a node made from a command-line override
+  return source.file + ":" + std::to_string(mark.line + 1) + ":" +
+         std::to_string(mark.column + 1);
+}
+
+std::string Describe(const YAML::Node& node) {
+  if (!node.IsDefined() || node.IsNull()) return "~";
+  if (node.IsScalar()) return node.Scalar();
+  YAML::Emitter out;
+  out << YAML::Flow << node;
+  return out.c_str();
+}
+
+void Fail(const Source& source, const YAML::Node& node, const std::string& path,
+          const std::string& value, const std::string& rule) {
+  throw InputError(path + " = " + value + " (" + Location(source, node) + "): " + rule);
+}
+
+std::string Join(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + "." + key;
+}
+
+void RequireMap(const Source& source, const YAML::Node& node, const std::string& path,
+                std::initializer_list<const char*> allowed) {
+  if (!node.IsMap()) {
+    Fail(source, node, path.empty() ? "(top level)" : path, Describe(node),
+         "must be a map of keys");
+  }
+  for (const auto& entry : node) {
+    if (!entry.first.IsScalar()) {
+      Fail(source, entry.first, path.empty() ? "(top level)" : path, Describe(entry.first),
+           "keys must be plain names");
+    }
+    const std::string key = entry.first.Scalar();
+    bool known = false;
+    std::string list;
+    for (const char* name : allowed) {
+      known = known || key == name;
+      list += (list.empty() ? "" : ", ") + std::string(name);
+    }
+    if (!known) {
+      throw InputError(Join(path, key) + " (" + Location(source, entry.first) +
+                       "): unknown key; allowed here: " + list);
+    }
+  }
+}
+
+YAML::Node Required(const Source& source, const YAML::Node& map, const std::string& path,
+                    const char* key) {
+  const YAML::Node node = map[key];
+  if (!node.IsDefined()) {
+    throw InputError(Join(path, key) + " (" + Location(source, map) + "): missing required key");
+  }
+  return node;
+}
+
+double ReadNumber(const Source& source, const YAML::Node& node, const std::string& path) {
+  double value = 0.0;
+  if (!node.IsScalar() || !YAML::convert<double>::decode(node, value)) {
+    Fail(source, node, path, Describe(node), "must be a number");
+  }
+  return value;
+}
+
+int ReadInteger(const Source& source, const YAML::Node& node, const std::string& path) {
+  const double value = ReadNumber(source, node, path);
+  if (!(std::abs(value) <= 1e9) || value != std::floor(value)) {
+    Fail(source, node, path, Describe(node), "must be an integer");
+  }
+  return static_cast<int>(value);
+}
+
+bool ReadBool(const Source& source, const YAML::Node& node, const std::string& path) {
+  bool value = false;
+  if (!node.IsScalar() || !YAML::convert<bool>::decode(node, value)) {
+    Fail(source, node, path, Describe(node), "must be true or false");
+  }
+  return value;
+}
+
+std::string ReadString(const Source& source, const YAML::Node& node, const std::string& path) {
+  if (!node.IsScalar()) Fail(source, node, path, Describe(node), "must be a text value");
+  return node.Scalar();
+}
+
+std::vector<double> ReadNumbers(const Source& source, const YAML::Node& node,
+                                const std::string& path, std::size_t exact_length) {
+  if (!node.IsSequence()) Fail(source, node, path, Describe(node), "must be a list of numbers");
+  if (exact_length != 0 && node.size() != exact_length) {
+    Fail(source, node, path, Describe(node),
+         "must be a list of exactly " + std::to_string(exact_length) + " numbers");
+  }
+  std::vector<double> values;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    values.push_back(ReadNumber(source, node[i], path + "[" + std::to_string(i) + "]"));
+  }
+  return values;
+}
+
+namespace {
+
+// Follows "a.b[2].c" from `node` as far as it exists; returns the deepest node reached.
+// Recursive on const nodes: assigning yaml-cpp nodes would write into the document.
+YAML::Node Deepest(const YAML::Node& node, const std::string& path) {
+  std::size_t pos = (!path.empty() && path[0] == '.') ? 1 : 0;
+  if (pos >= path.size()) return node;
+  if (path[pos] == '[') {
+    const std::size_t close = path.find(']', pos);
+    const std::size_t index = std::stoul(path.substr(pos + 1, close - pos - 1));
+    if (!node.IsSequence() || index >= node.size()) return node;
+    return Deepest(node[index], path.substr(close + 1));
+  }
+  const std::size_t end = path.find_first_of(".[", pos);
+  const std::string key = path.substr(pos, end - pos);
+  if (!node.IsMap() || !node[key].IsDefined()) return node;
+  return Deepest(node[key], end == std::string::npos ? "" : path.substr(end));
+}
+
+}  // namespace
+
+void Relocate(const Source& source, const YAML::Node& block, const std::string& block_path,
+              const ParameterError& error) {
+  Fail(source, Deepest(block, error.path()), Join(block_path, error.path()), error.value(),
+       error.rule());
+}
+
+std::string ReadText(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the file for reading");
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+YAML::Node Parse(const std::string& path, const std::string& text) {
+  try {
+    YAML::Node root = YAML::Load(text);
+    // an empty document has no position; say so here rather than at an unplaced node
+    if (!root.IsDefined() || root.IsNull()) throw InputError(path + ": the file is empty");
+    return root;
+  } catch (const YAML::ParserException& e) {
+    throw InputError(path + ":" + std::to_string(e.mark.line + 1) + ":" +
+                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
+  }
+}
+
+YAML::Node LoadFile(const std::string& path) { return Parse(path, ReadText(path)); }
+
+}  // namespace musclesim::yaml

@@ -1,0 +1,245 @@
+#include "musclesim/model/fit_target.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "musclesim/errors.h"
+
+namespace musclesim {
+
+std::string_view ToString(FitTargetKind kind) {
+  switch (kind) {
+    case FitTargetKind::kIndicator: return "indicator";
+    case FitTargetKind::kPolygon: return "polygon";
+    case FitTargetKind::kSamples: return "samples";
+  }
+  return "?";
+}
+
+FitTargetKind ParseFitTargetKind(std::string_view text) {
+  for (FitTargetKind kind :
+       {FitTargetKind::kIndicator, FitTargetKind::kPolygon, FitTargetKind::kSamples}) {
+    if (text == ToString(kind)) return kind;
+  }
+  throw ParameterError("target", std::string(text),
+                       "must be one of indicator, polygon, samples");
+}
+
+namespace {
+
+constexpr double kInvSqrt2Pi = 0.398942280401432677939946059934;  // 1 / sqrt(2 pi)
+
+// Standard normal probability between z1 < z2, computed on the tail side where both
+// points lie in one tail, so that far-out pieces keep their relative precision.
+double NormalMass(double z1, double z2) {
+  constexpr double kInvSqrt2 = 0.707106781186547524400844362105;
+  if (z1 > 0.0) return 0.5 * (std::erfc(z1 * kInvSqrt2) - std::erfc(z2 * kInvSqrt2));
+  if (z2 < 0.0) return 0.5 * (std::erfc(-z2 * kInvSqrt2) - std::erfc(-z1 * kInvSqrt2));
+  return 0.5 * (std::erf(z2 * kInvSqrt2) - std::erf(z1 * kInvSqrt2));
+}
+
+// integral over [x1, x2] of phi(x) * (y1 + slope (x - x1)), phi the unit-amplitude
+// Gaussian of width b and centre d, with its derivatives in b and d.
+struct PieceIntegral {
+  double value, d_width, d_center;
+};
+
+PieceIntegral IntegratePiece(double x1, double x2, double y1, double slope, double b,
+                             double d, double sigma) {
+  const double spread = std::sqrt(sigma / b);  // standard deviation s
+  const double z1 = (x1 - d) / spread;
+  const double z2 = (x2 - d) / spread;
+  const double n1 = kInvSqrt2Pi * std::exp(-0.5 * z1 * z1);
+  const double n2 = kInvSqrt2Pi * std::exp(-0.5 * z2 * z2);
+  const double mass = NormalMass(z1, z2);
+  const double at_center = y1 + slope * (d - x1);  // the linear piece evaluated at d
+  const double inv_sqrt_b = 1.0 / std::sqrt(b);
+
+  // with x = d + s z: integral = (1/sqrt b) [ at_center * mass + slope * s * (n1 - n2) ]
+  const double inner = at_center * mass + slope * spread * (n1 - n2);
+  const double value = inv_sqrt_b * inner;
+  const double d_center =
+      inv_sqrt_b * (slope * mass - at_center * (n2 - n1) / spread + slope * (z1 * n1 - z2 * n2));
+  // dz/db = z / (2b), ds/db = -s / (2b)
+  const double d_inner =
+      (at_center * (z2 * n2 - z1 * n1) +
+       slope * spread * (n2 - n1 + z2 * z2 * n2 - z1 * z1 * n1)) / (2.0 * b);
+  const double d_width = -value / (2.0 * b) + inv_sqrt_b * d_inner;
+  return {value, d_width, d_center};
+}
+
+class PiecewiseLinearTarget final : public FitTarget {
+ public:
+  PiecewiseLinearTarget(std::vector<TargetPoint> vertices, double sigma)
+      : vertices_(std::move(vertices)), sigma_(sigma) {
+    for (std::size_t i = 0; i + 1 < vertices_.size(); ++i) {
+      const TargetPoint& p = vertices_[i];
+      const TargetPoint& q = vertices_[i + 1];
+      norm_squared_ += (q.x - p.x) * (p.y * p.y + p.y * q.y + q.y * q.y) / 3.0;
+    }
+  }
+
+  void Normal(const GaussianShapes& shapes, Eigen::MatrixXd& gram,
+              Eigen::VectorXd& projection) const override {
+    const Eigen::Index m = shapes.widths.size();
+    gram.resize(m, m);
+    projection.resize(m);
+    for (Eigen::Index i = 0; i < m; ++i) {
+      for (Eigen::Index j = 0; j <= i; ++j) {
+        gram(i, j) = gram(j, i) = GramEntry(shapes, i, j);
+      }
+      projection(i) = Project(shapes.widths(i), shapes.centers(i)).value;
+    }
+  }
+
+  double Cost(const Eigen::VectorXd& a, const GaussianShapes& shapes,
+              CostGradient* gradient) const override {
+    Eigen::MatrixXd gram;
+    Eigen::VectorXd projection;
+    Normal(shapes, gram, projection);
+    const Eigen::VectorXd gram_a = gram * a;
+    const double cost = a.dot(gram_a) - 2.0 * a.dot(projection) + norm_squared_;
+    if (gradient != nullptr) FillGradient(a, shapes, gram, gram_a, projection, *gradient);
+    return cost;
+  }
+
+  double NormSquared() const override { return norm_squared_; }
+  double SupportMin() const override { return vertices_.front().x; }
+  double SupportMax() const override { return vertices_.back().x; }
+
+ private:
+  // G_ij = exp(-b_i b_j (d_i - d_j)^2 / (2 sigma B)) / sqrt(2 pi sigma B), B = b_i + b_j
+  double GramEntry(const GaussianShapes& shapes, Eigen::Index i, Eigen::Index j) const {
+    const double bi = shapes.widths(i), bj = shapes.widths(j);
+    const double sum = bi + bj;
+    const double gap = shapes.centers(i) - shapes.centers(j);
+    return std::exp(-bi * bj * gap * gap / (2.0 * sigma_ * sum)) /
+           std::sqrt(2.0 * std::numbers::pi * sigma_ * sum);
+  }
+
+  // r_k and its derivatives: the sum over the polygon's pieces.
+  PieceIntegral Project(double b, double d) const {
+    PieceIntegral total{0.0, 0.0, 0.0};
+    for (std::size_t i = 0; i + 1 < vertices_.size(); ++i) {
+      const TargetPoint& p = vertices_[i];
+      const TargetPoint& q = vertices_[i + 1];
+      const PieceIntegral piece =
+          IntegratePiece(p.x, q.x, p.y, (q.y - p.y) / (q.x - p.x), b, d, sigma_);
+      total.value += piece.value;
+      total.d_width += piece.d_width;
+      total.d_center += piece.d_center;
+    }
+    return total;
+  }
+
+  void FillGradient(const Eigen::VectorXd& a, const GaussianShapes& shapes,
+                    const Eigen::MatrixXd& gram, const Eigen::VectorXd& gram_a,
+                    const Eigen::VectorXd& projection, CostGradient& out) const {
+    const Eigen::Index m = a.size();
+    out.amplitudes = 2.0 * (gram_a - projection);
+    out.widths.setZero(m);
+    out.centers.setZero(m);
+    for (Eigen::Index k = 0; k < m; ++k) {
+      const double bk = shapes.widths(k);
+      // d/d(b_k, d_k) of sum_ij a_i a_j G_ij = 2 a_k sum_j a_j dG_kj / d(b_k, d_k)
+      double by_width = 0.0, by_center = 0.0;
+      for (Eigen::Index j = 0; j < m; ++j) {
+        const double bj = shapes.widths(j);
+        const double sum = bk + bj;
+        const double gap = shapes.centers(k) - shapes.centers(j);
+        by_width += a(j) * gram(k, j) *
+                    (-0.5 / sum - gap * gap * bj * bj / (2.0 * sigma_ * sum * sum));
+        by_center += a(j) * gram(k, j) * (-bk * bj * gap / (sigma_ * sum));
+      }
+      const PieceIntegral r = Project(bk, shapes.centers(k));
+      out.widths(k) = 2.0 * a(k) * (by_width - r.d_width);
+      out.centers(k) = 2.0 * a(k) * (by_center - r.d_center);
+    }
+  }
+
+  std::vector<TargetPoint> vertices_;
+  double sigma_;
+  double norm_squared_ = 0.0;
+};
+
+class SampleTarget final : public FitTarget {
+ public:
+  SampleTarget(std::vector<TargetPoint> samples, double sigma)
+      : samples_(std::move(samples)), sigma_(sigma) {
+    for (const TargetPoint& s : samples_) {
+      norm_squared_ += s.y * s.y;
+      support_min_ = std::min(support_min_, s.x);
+      support_max_ = std::max(support_max_, s.x);
+    }
+  }
+
+  void Normal(const GaussianShapes& shapes, Eigen::MatrixXd& gram,
+              Eigen::VectorXd& projection) const override {
+    const Eigen::MatrixXd basis = Basis(shapes);
+    gram = basis.transpose() * basis;
+    projection = basis.transpose() * Values();
+  }
+
+  double Cost(const Eigen::VectorXd& a, const GaussianShapes& shapes,
+              CostGradient* gradient) const override {
+    const Eigen::MatrixXd basis = Basis(shapes);
+    const Eigen::VectorXd residual = basis * a - Values();
+    if (gradient != nullptr) {
+      const Eigen::Index m = a.size();
+      gradient->amplitudes = 2.0 * basis.transpose() * residual;
+      gradient->widths.setZero(m);
+      gradient->centers.setZero(m);
+      for (Eigen::Index k = 0; k < m; ++k) {
+        for (std::size_t s = 0; s < samples_.size(); ++s) {
+          const double dx = samples_[s].x - shapes.centers(k);
+          const double weight = 2.0 * residual(s) * a(k) * basis(s, k);
+          gradient->widths(k) += weight * (-dx * dx / (2.0 * sigma_));
+          gradient->centers(k) += weight * shapes.widths(k) * dx / sigma_;
+        }
+      }
+    }
+    return residual.squaredNorm();
+  }
+
+  double NormSquared() const override { return norm_squared_; }
+  double SupportMin() const override { return support_min_; }
+  double SupportMax() const override { return support_max_; }
+
+ private:
+  Eigen::MatrixXd Basis(const GaussianShapes& shapes) const {
+    const double norm = 1.0 / std::sqrt(2.0 * std::numbers::pi * sigma_);
+    Eigen::MatrixXd basis(samples_.size(), shapes.widths.size());
+    for (Eigen::Index k = 0; k < basis.cols(); ++k) {
+      for (std::size_t s = 0; s < samples_.size(); ++s) {
+        const double dx = samples_[s].x - shapes.centers(k);
+        basis(s, k) = norm * std::exp(-shapes.widths(k) * dx * dx / (2.0 * sigma_));
+      }
+    }
+    return basis;
+  }
+
+  Eigen::VectorXd Values() const {
+    Eigen::VectorXd y(samples_.size());
+    for (std::size_t s = 0; s < samples_.size(); ++s) y(s) = samples_[s].y;
+    return y;
+  }
+
+  std::vector<TargetPoint> samples_;
+  double sigma_;
+  double norm_squared_ = 0.0;
+  double support_min_ = INFINITY;
+  double support_max_ = -INFINITY;
+};
+
+}  // namespace
+
+std::unique_ptr<FitTarget> MakePiecewiseLinearTarget(std::vector<TargetPoint> vertices,
+                                                     double sigma) {
+  return std::make_unique<PiecewiseLinearTarget>(std::move(vertices), sigma);
+}
+
+std::unique_ptr<FitTarget> MakeSampleTarget(std::vector<TargetPoint> samples, double sigma) {
+  return std::make_unique<SampleTarget>(std::move(samples), sigma);
+}
+
+}  // namespace musclesim

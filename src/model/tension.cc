@@ -1,0 +1,42 @@
+#include "musclesim/model/tension.h"
+
+#include <cmath>
+
+#include "musclesim/errors.h"
+
+namespace musclesim {
+
+namespace {
+
+// Re-throws a nested block's ParameterError with the block's name in front of its path.
+template <typename Check>
+void WithPrefix(const char* block, Check check) {
+  try {
+    check();
+  } catch (const ParameterError& e) {
+    throw ParameterError(std::string(block) + "." + e.path(), e.value(), e.rule());
+  }
+}
+
+}  // namespace
+
+void Validate(const ModelParams& params) {
+  Require(std::isfinite(params.f_iso) && params.f_iso > 0.0, "f_iso", params.f_iso,
+          "must be finite and > 0 [N]");
+  WithPrefix("passive", [&] { Validate(params.passive); });
+  WithPrefix("active_length", [&] { Validate(params.active_length); });
+  WithPrefix("velocity", [&] { Validate(params.velocity); });
+}
+
+TensionModel::TensionModel(const ModelParams& params)
+    : params_((Validate(params), params)),
+      active_length_([&] {
+        try {
+          return ActiveLengthCurve(params.active_length);
+        } catch (const ParameterError& e) {
+          throw ParameterError("active_length." + e.path(), e.value(), e.rule());
+        }
+      }()),
+      velocity_(params.velocity) {}
+
+}  // namespace musclesim

@@ -1,0 +1,125 @@
+#include "musclesim/studies/identify_report.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "musclesim/errors.h"
+
+namespace musclesim {
+
+std::vector<std::pair<std::string, Fitter>> ReferenceFitters() {
+  return {
+      {"natural cubic spline",
+       [](const std::vector<DataPoint>& d) -> std::function<double(double)> {
+         return NaturalCubicSpline(d);
+       }},
+      {"polynomial, degree 3",
+       [](const std::vector<DataPoint>& d) -> std::function<double(double)> {
+         return PolynomialFit(d, 3);
+       }},
+      {"polynomial, degree 4",
+       [](const std::vector<DataPoint>& d) -> std::function<double(double)> {
+         return PolynomialFit(d, 4);
+       }},
+  };
+}
+
+namespace {
+
+ModelScore Score(const std::string& name, const Fitter& fit, const std::vector<DataPoint>& data) {
+  ModelScore score;
+  score.name = name;
+  const std::function<double(double)> model = fit(data);
+  double rss = 0.0, scale = 0.0;
+  for (const DataPoint& p : data) {
+    rss += std::pow(model(p.x) - p.y, 2);
+    scale = std::max(scale, std::abs(p.y));
+  }
+  score.rmse = std::sqrt(rss / data.size());
+
+  // leave one out: refit without point i, predict it
+  double cv = 0.0;
+  for (std::size_t i = 0; i < data.size() && std::isfinite(cv); ++i) {
+    std::vector<DataPoint> rest = data;
+    rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(i));
+    try {
+      cv += std::pow(fit(rest)(data[i].x) - data[i].y, 2);
+    } catch (const std::exception&) {
+      cv = std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+  score.loocv_rmse = std::sqrt(cv / data.size());
+
+  // outside the data: a quarter of the span beyond each end
+  const double lo = data.front().x, hi = data.back().x, reach = 0.25 * (hi - lo);
+  score.outside_min = std::numeric_limits<double>::infinity();
+  score.outside_max = -std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= 200; ++i) {
+    for (double x : {lo - reach * i / 200.0, hi + reach * i / 200.0}) {
+      const double y = model(x);
+      score.outside_min = std::min(score.outside_min, y);
+      score.outside_max = std::max(score.outside_max, y);
+    }
+  }
+  score.nonnegative = score.outside_min >= -1e-9 * scale;
+  score.bounded = std::max(std::abs(score.outside_min), std::abs(score.outside_max)) <= 2.0 * scale;
+
+  // cost of one evaluation over the data range
+  const int repeats = 200, samples = 1000;
+  volatile double sink = 0.0;
+  const auto start = std::chrono::steady_clock::now();
+  for (int r = 0; r < repeats; ++r) {
+    for (int i = 0; i < samples; ++i) sink = sink + model(lo + (hi - lo) * i / samples);
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  score.ns_per_eval = 1e9 * seconds / (repeats * samples);
+  return score;
+}
+
+std::string Cell(double value) {
+  if (!std::isfinite(value)) return "n/a";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
+
+}  // namespace
+
+CurveComparison Compare(const std::string& curve, const std::string& x_unit,
+                        const std::vector<DataPoint>& data,
+                        const std::vector<std::pair<std::string, Fitter>>& models) {
+  CurveComparison out;
+  out.curve = curve;
+  out.x_unit = x_unit;
+  out.points = data.size();
+  for (const auto& [name, fit] : models) out.models.push_back(Score(name, fit, data));
+  return out;
+}
+
+std::string FormatReport(const std::vector<CurveComparison>& comparisons) {
+  std::ostringstream s;
+  s << "# musclesim identify: model against spline and polynomials\n\n"
+    << "RMSE is on the fitted data; LOOCV RMSE predicts each point from a fit without it. "
+       "\"Outside\" is the quarter-span beyond each end of the data: the extremes there, "
+       "whether they stay non-negative, and whether they stay within twice the largest "
+       "measured value. ns/eval is measured here, every model called the same way.\n";
+  for (const CurveComparison& c : comparisons) {
+    s << "\n## " << c.curve << " (" << c.points << " points; x in " << c.x_unit
+      << ", tension and errors in the CSV's tension units)\n\n"
+      << "| model | RMSE | LOOCV RMSE | outside min | outside max | non-negative | "
+         "bounded | ns/eval |\n|---|---|---|---|---|---|---|---|\n";
+    for (const ModelScore& m : c.models) {
+      s << "| " << m.name << " | " << Cell(m.rmse) << " | " << Cell(m.loocv_rmse) << " | "
+        << Cell(m.outside_min) << " | " << Cell(m.outside_max) << " | "
+        << (m.nonnegative ? "yes" : "no") << " | " << (m.bounded ? "yes" : "no") << " | "
+        << Cell(m.ns_per_eval) << " |\n";
+    }
+  }
+  return s.str();
+}
+
+}  // namespace musclesim

@@ -1,0 +1,301 @@
+#include "musclesim/studies/sweep.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include "musclesim/errors.h"
+#include "musclesim/io/scenario.h"
+#include "io/yaml_fields.h"
+
+namespace musclesim {
+
+std::string_view ToString(SweepMode mode) {
+  switch (mode) {
+    case SweepMode::kGrid: return "grid";
+    case SweepMode::kZip: return "zip";
+    case SweepMode::kRandom: return "random";
+  }
+  return "?";
+}
+
+std::string_view ToString(TrajectoryPolicy policy) {
+  switch (policy) {
+    case TrajectoryPolicy::kNone: return "none";
+    case TrajectoryPolicy::kAll: return "all";
+    case TrajectoryPolicy::kFailed: return "failed";
+  }
+  return "?";
+}
+
+namespace {
+
+// SplitMix64: a well-mixed 64-bit hash, here of (seed, index, axis).
+std::uint64_t Mix(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+// A uniform draw in [0, 1) from the top 53 bits, identical on every platform.
+double Uniform(std::uint64_t seed, long index, std::size_t axis) {
+  const std::uint64_t h = Mix(Mix(Mix(seed) ^ static_cast<std::uint64_t>(index)) ^ axis);
+  return static_cast<double>(h >> 11) * 0x1.0p-53;
+}
+
+// count values from `from` to `to`, both ends exact; geometric with `log_scale`.
+std::vector<std::string> Spaced(double from, double to, long count, bool log_scale) {
+  std::vector<std::string> values;
+  for (long i = 0; i < count; ++i) {
+    double v;
+    if (i == 0) {
+      v = from;
+    } else if (i == count - 1) {
+      v = to;
+    } else if (log_scale) {
+      // in decades, so that decade steps land on round values (1e-5, not 1.0000000000000016e-05)
+      v = std::pow(10.0, std::log10(from) + (std::log10(to) - std::log10(from)) * i / (count - 1));
+    } else {
+      v = from + (to - from) * i / (count - 1);
+    }
+    values.push_back(FormatNumber(v));
+  }
+  return values;
+}
+
+SweepAxis ReadAxis(const yaml::Source& src, const YAML::Node& key, const YAML::Node& node,
+                   SweepMode mode) {
+  SweepAxis axis;
+  axis.path = key.as<std::string>();
+  const std::string where = "parameters." + axis.path;
+  if (node.IsSequence()) {
+    if (node.size() == 0) yaml::Fail(src, node, where, "[]", "needs at least one value");
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      if (!node[i].IsScalar()) {
+        yaml::Fail(src, node[i], where + "[" + std::to_string(i) + "]", yaml::Describe(node[i]),
+                   "must be a single value");
+      }
+      axis.values.push_back(node[i].Scalar());
+    }
+    return axis;
+  }
+  if (!node.IsMap()) {
+    yaml::Fail(src, node, where, yaml::Describe(node),
+               "must be a list of values or {from, to, count, scale}");
+  }
+  yaml::RequireMap(src, node, where, {"from", "to", "count", "scale"});
+  axis.from = yaml::ReadNumber(src, yaml::Required(src, node, where, "from"), where + ".from");
+  axis.to = yaml::ReadNumber(src, yaml::Required(src, node, where, "to"), where + ".to");
+  if (node["scale"]) {
+    const std::string scale = yaml::ReadString(src, node["scale"], where + ".scale");
+    if (scale != "linear" && scale != "log") {
+      yaml::Fail(src, node["scale"], where + ".scale", scale, "must be linear or log");
+    }
+    axis.log_scale = scale == "log";
+  }
+  if (!std::isfinite(axis.from)) yaml::Fail(src, node["from"], where + ".from", yaml::Describe(node["from"]), "must be finite");
+  if (!std::isfinite(axis.to)) yaml::Fail(src, node["to"], where + ".to", yaml::Describe(node["to"]), "must be finite");
+  if (axis.log_scale && !(axis.from > 0.0 && axis.to > 0.0)) {
+    yaml::Fail(src, node, where, "from " + FormatNumber(axis.from) + " to " + FormatNumber(axis.to),
+               "a log scale needs from > 0 and to > 0");
+  }
+  if (mode == SweepMode::kRandom) {
+    if (node["count"]) {
+      yaml::Fail(src, node["count"], where + ".count", yaml::Describe(node["count"]),
+                 "random mode draws `samples` points; count is for grid and zip");
+    }
+    return axis;
+  }
+  const YAML::Node count_node = yaml::Required(src, node, where, "count");
+  const int count = yaml::ReadInteger(src, count_node, where + ".count");
+  if (count < 1) yaml::Fail(src, count_node, where + ".count", yaml::Describe(count_node), "must be >= 1");
+  axis.values = Spaced(axis.from, axis.to, count, axis.log_scale);
+  return axis;
+}
+
+}  // namespace
+
+long PointCount(const SweepSpec& spec) {
+  if (spec.mode == SweepMode::kRandom) return spec.samples;
+  if (spec.axes.empty()) return 0;
+  if (spec.mode == SweepMode::kZip) return static_cast<long>(spec.axes.front().values.size());
+  long count = 1;
+  for (const SweepAxis& a : spec.axes) count *= static_cast<long>(a.values.size());
+  return count;
+}
+
+std::vector<std::string> PointValues(const SweepSpec& spec, long index) {
+  std::vector<std::string> values(spec.axes.size());
+  switch (spec.mode) {
+    case SweepMode::kGrid: {
+      long rest = index;
+      for (std::size_t k = spec.axes.size(); k-- > 0;) {
+        const long n = static_cast<long>(spec.axes[k].values.size());
+        values[k] = spec.axes[k].values[rest % n];
+        rest /= n;
+      }
+      break;
+    }
+    case SweepMode::kZip:
+      for (std::size_t k = 0; k < spec.axes.size(); ++k) values[k] = spec.axes[k].values[index];
+      break;
+    case SweepMode::kRandom:
+      for (std::size_t k = 0; k < spec.axes.size(); ++k) {
+        const SweepAxis& a = spec.axes[k];
+        const double u = Uniform(spec.seed, index, k);
+        if (!a.is_range()) {
+          const auto pick = std::min(static_cast<std::size_t>(u * a.values.size()), a.values.size() - 1);
+          values[k] = a.values[pick];
+        } else if (a.log_scale) {
+          values[k] = FormatNumber(
+              std::pow(10.0, std::log10(a.from) + (std::log10(a.to) - std::log10(a.from)) * u));
+        } else {
+          values[k] = FormatNumber(a.from + (a.to - a.from) * u);
+        }
+      }
+      break;
+  }
+  return values;
+}
+
+std::vector<std::string> PointOverrides(const SweepSpec& spec, long index) {
+  std::vector<std::string> overrides = PointValues(spec, index);
+  for (std::size_t k = 0; k < overrides.size(); ++k) {
+    overrides[k] = spec.axes[k].path + "=" + overrides[k];
+  }
+  return overrides;
+}
+
+SweepSpec LoadSweep(const std::string& path) {
+  const YAML::Node root = yaml::LoadFile(path);
+  const yaml::Source src{path};
+  yaml::RequireMap(src, root, "",
+                   {"base", "mode", "samples", "seed", "parameters", "metrics", "metric_options",
+                    "trajectories", "output"});
+  SweepSpec spec;
+  spec.source = path;
+  const std::string base = yaml::ReadString(src, yaml::Required(src, root, "", "base"), "base");
+  spec.base = (std::filesystem::path(path).parent_path() / base).lexically_normal().string();
+
+  if (root["mode"]) {
+    const std::string mode = yaml::ReadString(src, root["mode"], "mode");
+    if (mode == "grid") spec.mode = SweepMode::kGrid;
+    else if (mode == "zip") spec.mode = SweepMode::kZip;
+    else if (mode == "random") spec.mode = SweepMode::kRandom;
+    else yaml::Fail(src, root["mode"], "mode", mode, "must be grid, zip or random");
+  }
+  if (spec.mode == SweepMode::kRandom) {
+    const YAML::Node samples = yaml::Required(src, root, "", "samples");
+    const double n = yaml::ReadNumber(src, samples, "samples");
+    if (!(n >= 1 && n <= 1e9) || n != std::floor(n)) {
+      yaml::Fail(src, samples, "samples", yaml::Describe(samples), "must be an integer from 1 to 1e9");
+    }
+    spec.samples = static_cast<long>(n);
+  } else if (root["samples"]) {
+    yaml::Fail(src, root["samples"], "samples", yaml::Describe(root["samples"]),
+               "is for mode random only");
+  }
+  if (root["seed"]) {
+    const double seed = yaml::ReadNumber(src, root["seed"], "seed");
+    if (!(seed >= 0 && seed <= 9.007199254740992e15) || seed != std::floor(seed)) {
+      yaml::Fail(src, root["seed"], "seed", yaml::Describe(root["seed"]), "must be an integer >= 0");
+    }
+    spec.seed = static_cast<std::uint64_t>(seed);
+  }
+
+  const YAML::Node parameters = yaml::Required(src, root, "", "parameters");
+  if (!parameters.IsMap() || parameters.size() == 0) {
+    yaml::Fail(src, parameters, "parameters", yaml::Describe(parameters),
+               "must map at least one dotted path to its values");
+  }
+  for (const auto& entry : parameters) {
+    spec.axes.push_back(ReadAxis(src, entry.first, entry.second, spec.mode));
+    if (spec.mode == SweepMode::kZip &&
+        spec.axes.back().values.size() != spec.axes.front().values.size()) {
+      yaml::Fail(src, entry.second, "parameters." + spec.axes.back().path,
+                 std::to_string(spec.axes.back().values.size()) + " values",
+                 "zip needs every axis as long as the first (" +
+                     std::to_string(spec.axes.front().values.size()) + " values)");
+    }
+  }
+  if (PointCount(spec) > 1000000000L) {
+    yaml::Fail(src, parameters, "parameters", std::to_string(PointCount(spec)) + " points",
+               "a sweep may have at most 1e9 points");
+  }
+
+  const YAML::Node metrics = yaml::Required(src, root, "", "metrics");
+  if (!metrics.IsSequence() || metrics.size() == 0) {
+    yaml::Fail(src, metrics, "metrics", yaml::Describe(metrics), "must be a non-empty list of metric names");
+  }
+  for (std::size_t i = 0; i < metrics.size(); ++i) {
+    const std::string name = yaml::ReadString(src, metrics[i], "metrics[" + std::to_string(i) + "]");
+    try {
+      spec.metrics.push_back(ParseMetric(name));
+    } catch (const ParameterError& e) {
+      yaml::Fail(src, metrics[i], "metrics[" + std::to_string(i) + "]", name, e.rule());
+    }
+  }
+  if (const YAML::Node options = root["metric_options"]) {
+    yaml::RequireMap(src, options, "metric_options", {"window", "target_length"});
+    if (options["window"]) {
+      const std::vector<double> w = yaml::ReadNumbers(src, options["window"], "metric_options.window", 2);
+      if (!(std::isfinite(w[0]) && std::isfinite(w[1]) && w[1] > w[0])) {
+        yaml::Fail(src, options["window"], "metric_options.window", yaml::Describe(options["window"]),
+                   "must be [start, end] with end > start [s]");
+      }
+      spec.metric_options.window_start = w[0];
+      spec.metric_options.window_end = w[1];
+    }
+    if (options["target_length"]) {
+      const double target = yaml::ReadNumber(src, options["target_length"], "metric_options.target_length");
+      if (!(std::isfinite(target) && target > 0.0)) {
+        yaml::Fail(src, options["target_length"], "metric_options.target_length",
+                   yaml::Describe(options["target_length"]), "must be finite and > 0 [m]");
+      }
+      spec.metric_options.target_length = target;
+    }
+  }
+  for (std::size_t i = 0; i < spec.metrics.size(); ++i) {
+    if (spec.metrics[i] == Metric::kTimeToLength && !spec.metric_options.target_length) {
+      yaml::Fail(src, metrics[i], "metrics[" + std::to_string(i) + "]", "time_to_length",
+                 "needs metric_options.target_length");
+    }
+  }
+  if (root["trajectories"]) {
+    const std::string policy = yaml::ReadString(src, root["trajectories"], "trajectories");
+    if (policy == "none") spec.trajectories = TrajectoryPolicy::kNone;
+    else if (policy == "all") spec.trajectories = TrajectoryPolicy::kAll;
+    else if (policy == "failed") spec.trajectories = TrajectoryPolicy::kFailed;
+    else yaml::Fail(src, root["trajectories"], "trajectories", policy, "must be none, all or failed");
+  }
+  if (root["output"]) {
+    spec.output = yaml::ReadString(src, root["output"], "output");
+  }
+
+  // every point is a full scenario: validate them all before anything runs
+  const ScenarioTemplate base_template(spec.base);
+  const long points = PointCount(spec);
+  const bool keep = points <= kKeptScenarioLimit;
+  for (long i = 0; i < points; ++i) {
+    try {
+      ScenarioSpec scenario = base_template.Instantiate(PointOverrides(spec, i));
+      if (keep) spec.scenarios.push_back(std::move(scenario));
+    } catch (const InputError& e) {
+      // name the axis whose value the message is about, else every axis of the point
+      const std::vector<std::string> values = PointValues(spec, i);
+      std::string point;
+      YAML::Node where = parameters;
+      for (std::size_t k = 0; k < spec.axes.size(); ++k) {
+        point += (k ? ", " : "") + spec.axes[k].path + "=" + values[k];
+        if (std::string(e.what()).find(spec.axes[k].path) != std::string::npos) {
+          where.reset(parameters[spec.axes[k].path]);
+        }
+      }
+      throw InputError(yaml::Location(src, where) + ": point " + std::to_string(i) + " (" + point +
+                       ") is not a valid scenario: " + e.what());
+    }
+  }
+  return spec;
+}
+
+}  // namespace musclesim
