@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds everything with warnings as errors and runs the whole
-# test suite with ctest.
+# test suite with ctest (which also runs the examples/ programs), then builds the examples
+# against the installed package.
 #   scripts/test.sh              Release build with MPI in build/ (tests run mpirun -n 2)
 #   scripts/test.sh --sanitize   Debug build with AddressSanitizer + UBSan in build-sanitize/
 set -euo pipefail
@@ -20,3 +21,5 @@ jobs=$(nproc)
 cmake -S . -B "$dir" -DMUSCLESIM_WARNINGS_AS_ERRORS=ON -DMUSCLESIM_BUILD_TESTS=ON "${options[@]}"
 cmake --build "$dir" -j"$jobs"
 ctest --test-dir "$dir" --output-on-failure -j"$jobs"
+# the installed package, used from outside as find_package(musclesim) (Release build only)
+[ "$dir" = build ] && bash scripts/check_install.sh "$dir"

@@ -2,6 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <memory>
+
+#include "musclesim/errors.h"
+
 #include "support/numeric.h"
 
 namespace musclesim {
@@ -55,6 +60,30 @@ TEST(Actuator, JacobianMatchesFiniteDifferences) {
       EXPECT_NEAR(row.by_rate, by_rate, 1e-5 * std::max(1.0, std::abs(by_rate)));
     }
   }
+}
+
+TEST(Actuator, SystemsShareOneImmutableModel) {
+  const auto model = std::make_shared<const TensionModel>(Model());
+  const ActuatorSystem a(model, {0.1, 0.0, 0.0, 0.0}, Waveform::Constant(1.0),
+                         {Load::Constant(30.0)});
+  const ActuatorSystem b(model, {0.5, 0.0, 0.0, 0.0}, Waveform::Constant(0.5),
+                         {Load::Spring(200.0, 0.12), Load::Mass(2.0)});
+  EXPECT_EQ(&a.model(), model.get());
+  EXPECT_EQ(&b.model(), model.get());
+  EXPECT_EQ(model.use_count(), 3);
+  // each system's own inputs: m xddot = F - T(x, v, u) with its mass, load and activation
+  const double x = 0.1, xdot = -0.01;
+  EXPECT_NEAR(a.Acceleration(0.0, x, xdot), (30.0 - model->Evaluate(x, -xdot, 1.0).total) / 0.1,
+              1e-9);
+  EXPECT_NEAR(b.Acceleration(0.0, x, xdot),
+              (200.0 * (0.12 - x) + 2.0 * 9.81 - model->Evaluate(x, -xdot, 0.5).total) / 2.5,
+              1e-9);
+}
+
+TEST(Actuator, LoadFactoriesRejectBrokenLoads) {
+  EXPECT_THROW(Load::Spring(-1.0, 0.1), ParameterError);
+  EXPECT_THROW(Load::Mass(0.0), ParameterError);
+  EXPECT_THROW(Load::Constant(std::nan("")), ParameterError);
 }
 
 }  // namespace

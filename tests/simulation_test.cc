@@ -227,5 +227,56 @@ TEST(Simulation, ReuseAndThreadsGiveIdenticalRuns) {
   }
 }
 
+// The path of the ParameterError that running `request` throws, or "accepted".
+std::string RequestErrorPath(const RunRequest& request) {
+  const Outcome concentric = Simulate(ScenarioPath("concentric.yaml"));
+  Simulation simulation;
+  const ActuatorSystem system(concentric.spec.model.params, concentric.spec.actuator,
+                              concentric.spec.activation, concentric.spec.loads);
+  try {
+    simulation.Run(system, concentric.spec.solver, request);
+  } catch (const ParameterError& e) {
+    return e.path();
+  }
+  return "accepted";
+}
+
+TEST(Simulation, RunValidatesItsRequest) {
+  RunRequest good;
+  good.t_end = 0.01;
+  EXPECT_EQ(RequestErrorPath(good), "accepted");
+  RunRequest r = good;
+  r.t_end = -1.0;  // ends before it starts
+  EXPECT_EQ(RequestErrorPath(r), "t_end");
+  r = good;
+  r.output_interval = -1e-3;
+  EXPECT_EQ(RequestErrorPath(r), "output_interval");
+  r = good;
+  r.output_interval = 1e-12;  // 1e10 rows
+  EXPECT_EQ(RequestErrorPath(r), "output_interval");
+  r = good;
+  r.min_length = 0.2;  // above the initial length 0.1: would report "limit" at once
+  EXPECT_EQ(RequestErrorPath(r), "min_length");
+  r = good;
+  r.max_length = 0.05;
+  EXPECT_EQ(RequestErrorPath(r), "max_length");
+  r = good;
+  r.length = std::nan("");
+  EXPECT_EQ(RequestErrorPath(r), "length");
+}
+
+TEST(Simulation, RunResultHoldsWhatTheBufferedRunRecords) {
+  const Outcome buffered = Simulate(ScenarioPath("concentric.yaml"));
+  Simulation simulation;
+  const ActuatorSystem system(buffered.spec.model.params, buffered.spec.actuator,
+                              buffered.spec.activation, buffered.spec.loads);
+  const RunResult result = simulation.Run(system, buffered.spec.solver, buffered.spec.Request());
+  ASSERT_EQ(result.trajectory.size(), buffered.trajectory.size());
+  EXPECT_EQ(result.stats.steps, buffered.stats.steps);
+  for (std::size_t i = 0; i < result.trajectory.size(); ++i) {
+    ASSERT_EQ(result.trajectory[i].sample.length, buffered.trajectory[i].sample.length) << i;
+  }
+}
+
 }  // namespace
 }  // namespace musclesim

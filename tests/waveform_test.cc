@@ -124,5 +124,37 @@ TEST(Waveform, ActivationMustStayWithinUnitInterval) {
   EXPECT_EQ(Rejection(sine, true), "accepted");
 }
 
+TEST(Waveform, FactoriesMakeTheShapeTheyName) {
+  const Waveform step = Waveform::Step(0.05, 0.2, 0.9);
+  EXPECT_EQ(step.Evaluate(0.04), 0.2);
+  EXPECT_EQ(step.Evaluate(0.05), 0.9);
+  const Waveform ramp = Waveform::Ramp(1.0, 3.0, 10.0, 20.0);
+  EXPECT_DOUBLE_EQ(ramp.Evaluate(2.5), 17.5);  // a quarter left of the ramp's 10 N rise
+  const Waveform sine = Waveform::Sine(1.0, 2.0, 0.25);  // a quarter period at t = 1 s
+  EXPECT_NEAR(sine.Evaluate(1.0), 3.0, 1e-15);
+  const Waveform pulses = Waveform::Pulses(0.0, 1.0, 0.25, -1.0, 4.0);
+  EXPECT_EQ(pulses.Evaluate(2.1), 4.0);
+  EXPECT_EQ(pulses.Evaluate(2.3), -1.0);
+  const Waveform table = Waveform::Table({{0.0, 0.0}, {2.0, 4.0}});
+  EXPECT_DOUBLE_EQ(table.Evaluate(0.5), 1.0);
+  EXPECT_EQ(Waveform::Constant(7.0).Evaluate(123.0), 7.0);
+}
+
+TEST(Waveform, FactoriesRejectBrokenShapes) {
+  const auto path_of = [](auto make) {
+    try {
+      make();
+    } catch (const ParameterError& e) {
+      return e.path();
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(path_of([] { Waveform::Ramp(1.0, 0.5, 0.0, 1.0); }), "end");
+  EXPECT_EQ(path_of([] { Waveform::Pulses(0.0, 1.0, 2.0, 0.0, 1.0); }), "width");
+  EXPECT_EQ(path_of([] { Waveform::Table({{1.0, 0.0}, {0.5, 1.0}}); }), "points[1][0]");
+  EXPECT_EQ(path_of([] { Waveform::Constant(std::nan("")); }), "value");
+  EXPECT_EQ(path_of([] { Waveform::Sine(0.0, 1.0, -1.0); }), "frequency");
+}
+
 }  // namespace
 }  // namespace musclesim

@@ -1,6 +1,7 @@
 #include "musclesim/dynamics/actuator.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include "musclesim/errors.h"
@@ -16,20 +17,26 @@ void Validate(const ActuatorParams& p) {
   Require(std::isfinite(p.rest_length), "rest_length", p.rest_length, "must be finite [m]");
 }
 
-ActuatorSystem::ActuatorSystem(const ModelParams& model, const ActuatorParams& actuator,
-                               Waveform activation, std::vector<Load> loads)
-    : model_(model),
+ActuatorSystem::ActuatorSystem(std::shared_ptr<const TensionModel> model,
+                               const ActuatorParams& actuator, Waveform activation,
+                               std::vector<Load> loads)
+    : model_((assert(model != nullptr), std::move(model))),
       actuator_((Validate(actuator), actuator)),
       activation_((ValidateActivation(activation), std::move(activation))),
       loads_(std::move(loads)),
       inverse_mass_(1.0 / (actuator.mass + loads_.AddedMass())) {}
+
+ActuatorSystem::ActuatorSystem(const ModelParams& model, const ActuatorParams& actuator,
+                               Waveform activation, std::vector<Load> loads)
+    : ActuatorSystem(std::make_shared<const TensionModel>(model), actuator,
+                     std::move(activation), std::move(loads)) {}
 
 ActuatorSample ActuatorSystem::Observe(double t, double x, double xdot) const {
   ActuatorSample s;
   s.length = x;
   s.shortening_velocity = 0.0 - xdot;  // +0 rather than -0 at rest
   s.activation = activation_.Evaluate(t);
-  s.tension = model_.Evaluate(x, -xdot, s.activation);
+  s.tension = model_->Evaluate(x, -xdot, s.activation);
   s.load = loads_.Force(t, x);
   return s;
 }

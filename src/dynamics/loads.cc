@@ -26,6 +26,40 @@ void Validate(const Load& load) {
   }
 }
 
+namespace {
+
+Load Validated(Load load) {
+  Validate(load);
+  return load;
+}
+
+}  // namespace
+
+Load Load::Force(Waveform force) {
+  Load load;
+  load.kind = LoadKind::kForce;
+  load.force = std::move(force);
+  return Validated(std::move(load));
+}
+
+Load Load::Constant(double force) { return Force(Waveform::Constant(force)); }
+
+Load Load::Spring(double stiffness, double anchor) {
+  Load load;
+  load.kind = LoadKind::kSpring;
+  load.stiffness = stiffness;
+  load.anchor = anchor;
+  return Validated(std::move(load));
+}
+
+Load Load::Mass(double mass, double gravity) {
+  Load load;
+  load.kind = LoadKind::kMass;
+  load.mass = mass;
+  load.gravity = gravity;
+  return Validated(std::move(load));
+}
+
 LoadSet::LoadSet(std::vector<Load> loads) : loads_(std::move(loads)) {
   for (std::size_t i = 0; i < loads_.size(); ++i) {
     try {

@@ -200,3 +200,70 @@ void ValidateActivation(const Waveform& w) {
 }
 
 }  // namespace musclesim
+
+namespace musclesim {
+
+namespace {
+
+Waveform Validated(Waveform w) {
+  Validate(w);
+  return w;
+}
+
+}  // namespace
+
+Waveform Waveform::Constant(double value) {
+  Waveform w;
+  w.kind = WaveformKind::kConstant;
+  w.value = value;
+  return Validated(std::move(w));
+}
+
+Waveform Waveform::Step(double time, double before, double after) {
+  Waveform w;
+  w.kind = WaveformKind::kStep;
+  w.time = time;
+  w.before = before;
+  w.after = after;
+  return Validated(std::move(w));
+}
+
+Waveform Waveform::Ramp(double start, double end, double from, double to) {
+  Waveform w;
+  w.kind = WaveformKind::kRamp;
+  w.start = start;
+  w.end = end;
+  w.from = from;
+  w.to = to;
+  return Validated(std::move(w));
+}
+
+Waveform Waveform::Sine(double offset, double amplitude, double frequency, double phase) {
+  Waveform w;
+  w.kind = WaveformKind::kSine;
+  w.offset = offset;
+  w.amplitude = amplitude;
+  w.frequency = frequency;
+  w.phase = phase;
+  return Validated(std::move(w));
+}
+
+Waveform Waveform::Pulses(double start, double period, double width, double low, double high) {
+  Waveform w;
+  w.kind = WaveformKind::kPulses;
+  w.start = start;
+  w.period = period;
+  w.width = width;
+  w.low = low;
+  w.high = high;
+  return Validated(std::move(w));
+}
+
+Waveform Waveform::Table(std::vector<TablePoint> points) {
+  Waveform w;
+  w.kind = WaveformKind::kTable;
+  w.points = std::move(points);
+  return Validated(std::move(w));
+}
+
+}  // namespace musclesim

@@ -52,6 +52,32 @@ void Validate(const SolverOptions& o) {
   Require(o.max_steps >= 1, "max_steps", static_cast<double>(o.max_steps), "must be >= 1");
 }
 
+void Validate(const RunRequest& r) {
+  Require(std::isfinite(r.t_start), "t_start", r.t_start, "must be finite [s]");
+  Require(std::isfinite(r.t_end) && r.t_end > r.t_start, "t_end", r.t_end,
+          "must be finite and greater than t_start = " + FormatNumber(r.t_start) + " [s]");
+  Require(std::isfinite(r.length) && r.length > 0.0, "length", r.length,
+          "must be finite and > 0 [m]");
+  Require(std::isfinite(r.lengthening_rate), "lengthening_rate", r.lengthening_rate,
+          "must be finite [m/s]");
+  // 0 asks for every internal step; otherwise a positive grid of at most 1e8 rows
+  Require(r.output_interval == 0.0 ||
+              (std::isfinite(r.output_interval) && r.output_interval > 0.0 &&
+               (r.t_end - r.t_start) / r.output_interval <= 1e8),
+          "output_interval", r.output_interval,
+          "must be > 0 with at most 1e8 rows over the run, or 0 for every step [s]");
+  if (r.min_length) {
+    Require(std::isfinite(*r.min_length) && *r.min_length >= 0.0 && *r.min_length < r.length,
+            "min_length", *r.min_length,
+            "must be >= 0 and below the initial length = " + FormatNumber(r.length) + " [m]");
+  }
+  if (r.max_length) {
+    Require(std::isfinite(*r.max_length) && *r.max_length > r.length, "max_length",
+            *r.max_length,
+            "must be above the initial length = " + FormatNumber(r.length) + " [m]");
+  }
+}
+
 namespace {
 
 // What the C callbacks see through CVODE's user data.
@@ -189,9 +215,17 @@ struct Simulation::Workspace {
 Simulation::Simulation() : workspace_(std::make_unique<Workspace>()) {}
 Simulation::~Simulation() = default;
 
+RunResult Simulation::Run(const ActuatorSystem& system, const SolverOptions& options,
+                          const RunRequest& request) {
+  RunResult result;
+  result.stats = Run(system, options, request, result.trajectory);
+  return result;
+}
+
 RunStats Simulation::Run(const ActuatorSystem& system, const SolverOptions& options,
                          const RunRequest& request, std::vector<TrajectoryPoint>& trajectory) {
   Validate(options);
+  Validate(request);
   const auto wall_start = std::chrono::steady_clock::now();
   Workspace& ws = *workspace_;
   trajectory.clear();

@@ -3,12 +3,15 @@
 // with its analytic Jacobian. Immutable once built; evaluation allocates nothing.
 #pragma once
 
+#include <memory>
+
 #include "musclesim/dynamics/loads.h"
 #include "musclesim/model/tension.h"
 #include "musclesim/dynamics/waveform.h"
 
 namespace musclesim {
 
+// The actuator's own mechanics around its tension: moving mass and a parallel spring-damper.
 struct ActuatorParams {
   double mass = 1.0;         // moving mass of the actuator [kg], > 0
   double damping = 0.0;      // parallel damper c [N s/m], >= 0
@@ -23,31 +26,37 @@ void Validate(const ActuatorParams& params);
 struct ActuatorSample {
   double length = 0.0;               // x [m]
   double shortening_velocity = 0.0;  // v = -xdot [m/s]
-  double activation = 0.0;           // u(t)
+  double activation = 0.0;           // u(t), dimensionless in [0, 1]
   TensionSample tension;
   double load = 0.0;                 // F_load [N]
 };
 
+// The immutable system one run integrates. It shares its tension model (read-only), so many
+// systems (a sweep's points, threads) can use one model built once.
 class ActuatorSystem {
  public:
-  // Validates everything (ParameterError); the activation must stay within [0, 1].
+  // Validates the actuator, activation and loads (ParameterError); the activation must stay
+  // within [0, 1]. `model` must not be null.
+  ActuatorSystem(std::shared_ptr<const TensionModel> model, const ActuatorParams& actuator,
+                 Waveform activation, std::vector<Load> loads);
+  // The same with a model built from `model` (validated, ParameterError).
   ActuatorSystem(const ModelParams& model, const ActuatorParams& actuator, Waveform activation,
                  std::vector<Load> loads);
 
   // xddot at (t, x, xdot).
   double Acceleration(double t, double x, double xdot) const {
-    const TensionSample s = model_.Evaluate(x, -xdot, activation_.Evaluate(t));
+    const TensionSample s = model_->Evaluate(x, -xdot, activation_.Evaluate(t));
     return (loads_.Force(t, x) - s.total - actuator_.damping * xdot -
             actuator_.stiffness * (x - actuator_.rest_length)) * inverse_mass_;
   }
 
   // d xddot / dx and d xddot / dxdot: the lower row of the Jacobian (the upper is [0, 1]).
   struct JacobianRow {
-    double by_length;
-    double by_rate;
+    double by_length;  // d xddot / dx [1/s^2]
+    double by_rate;    // d xddot / dxdot [1/s]
   };
   JacobianRow Jacobian(double t, double x, double xdot) const {
-    const TensionSample s = model_.Evaluate(x, -xdot, activation_.Evaluate(t));
+    const TensionSample s = model_->Evaluate(x, -xdot, activation_.Evaluate(t));
     // dT/dxdot = -dT/dv since v = -xdot
     return {(loads_.ForceSlope() - s.d_length - actuator_.stiffness) * inverse_mass_,
             (s.d_velocity - actuator_.damping) * inverse_mass_};
@@ -58,15 +67,19 @@ class ActuatorSystem {
   // Where the inputs jump: breakpoints of activation and force loads in (t0, t1), sorted.
   std::vector<double> Breakpoints(double t0, double t1) const;
 
-  const TensionModel& model() const { return model_; }
-  double effective_mass() const { return 1.0 / inverse_mass_; }
+  const TensionModel& model() const { return *model_; }
+  const std::shared_ptr<const TensionModel>& shared_model() const { return model_; }
+  const ActuatorParams& actuator() const { return actuator_; }
+  const Waveform& activation() const { return activation_; }
+  const LoadSet& loads() const { return loads_; }
+  double effective_mass() const { return 1.0 / inverse_mass_; }  // [kg]
 
  private:
-  TensionModel model_;
+  std::shared_ptr<const TensionModel> model_;
   ActuatorParams actuator_;
   Waveform activation_;
   LoadSet loads_;
-  double inverse_mass_;
+  double inverse_mass_;  // 1 / (actuator mass + load masses) [1/kg]
 };
 
 }  // namespace musclesim

@@ -12,13 +12,20 @@ namespace musclesim {
 
 enum class LoadKind { kForce, kSpring, kMass };
 
+// One load. Make one with the factories (Load::Constant(40.0)), which validate.
 struct Load {
   LoadKind kind = LoadKind::kForce;
   Waveform force;            // kForce: F(t) [N]
   double stiffness = 0.0;    // kSpring: F = stiffness (anchor - x) [N/m], >= 0
-  double anchor = 0.0;       // kSpring [m]
+  double anchor = 0.0;       // kSpring: length where the spring pulls nothing [m]
   double mass = 0.0;         // kMass: F = mass gravity, and mass joins m_eff [kg], > 0
-  double gravity = 9.81;     // kMass [m/s^2]
+  double gravity = 9.81;     // kMass: acceleration along +x (longer) [m/s^2]
+
+  // Validated factories; each throws ParameterError (paths named as the YAML keys).
+  static Load Force(Waveform force);           // F(t) [N]
+  static Load Constant(double force);          // a constant force [N]
+  static Load Spring(double stiffness, double anchor);  // [N/m], [m]
+  static Load Mass(double mass, double gravity = 9.81);  // [kg], [m/s^2]
 };
 
 // Throws ParameterError (paths as the YAML keys of the load).

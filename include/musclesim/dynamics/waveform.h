@@ -18,7 +18,9 @@ struct TablePoint {
   double value = 0.0;  // the signal's value there
 };
 
-// One signal. Only the fields of its kind are used:
+// One signal. Make one with the factories below (Waveform::Step(0.05, 0.0, 1.0)), which
+// validate; the fields are public for readers that fill them key by key and then call
+// Validate. Only the fields of its kind are used:
 //   constant: value
 //   step:     time, before, after        (after from `time` on)
 //   ramp:     start, end, from, to       (from before start, linear, to after end)
@@ -26,14 +28,34 @@ struct TablePoint {
 //   pulses:   low before start; from start, high for `width` at the beginning of every
 //             `period`, low for the rest of it
 //   table:    piecewise linear through `points` (t strictly increasing), flat beyond them
+// Values are in the signal's own unit: activation (dimensionless, [0, 1]) or force [N].
 struct Waveform {
   WaveformKind kind = WaveformKind::kConstant;
-  double value = 0.0;
-  double time = 0.0, before = 0.0, after = 0.0;
-  double start = 0.0, end = 0.0, from = 0.0, to = 0.0;
-  double offset = 0.0, amplitude = 0.0, frequency = 0.0, phase = 0.0;
-  double period = 1.0, width = 0.5, low = 0.0, high = 1.0;
-  std::vector<TablePoint> points;
+  double value = 0.0;      // constant: the value
+  double time = 0.0;       // step: when it switches [s]
+  double before = 0.0;     // step: value before `time`
+  double after = 0.0;      // step: value from `time` on
+  double start = 0.0;      // ramp, pulses: start time [s]
+  double end = 0.0;        // ramp: end time [s], > start
+  double from = 0.0;       // ramp: value up to `start`
+  double to = 0.0;         // ramp: value from `end` on
+  double offset = 0.0;     // sine: mean value
+  double amplitude = 0.0;  // sine: amplitude
+  double frequency = 0.0;  // sine: [Hz], >= 0
+  double phase = 0.0;      // sine: [rad]
+  double period = 1.0;     // pulses: [s], > 0
+  double width = 0.5;      // pulses: length of the high part [s], in (0, period]
+  double low = 0.0;        // pulses: value between pulses
+  double high = 1.0;       // pulses: value during a pulse
+  std::vector<TablePoint> points;  // table: (t [s], value), t strictly increasing
+
+  // Validated factories: each throws ParameterError (paths named as the YAML keys).
+  static Waveform Constant(double value);
+  static Waveform Step(double time, double before, double after);
+  static Waveform Ramp(double start, double end, double from, double to);
+  static Waveform Sine(double offset, double amplitude, double frequency, double phase = 0.0);
+  static Waveform Pulses(double start, double period, double width, double low, double high);
+  static Waveform Table(std::vector<TablePoint> points);
 
   double Evaluate(double t) const;
   // Times in (t0, t1) where the value or its slope jumps, sorted.
@@ -48,10 +70,6 @@ void Validate(const Waveform& waveform);
 
 // Sorts `times` and removes repeated entries: the form every breakpoint list takes.
 void SortUnique(std::vector<double>& times);
-
-}  // namespace musclesim
-
-namespace musclesim {
 
 // An activation must stay within [0, 1] at every point of its waveform (sine: offset -+
 // |amplitude|). Throws ParameterError naming the offending key.

@@ -26,11 +26,12 @@ enum class JacobianKind { kAnalytic, kDifferenceQuotient };
 std::string_view ToString(JacobianKind kind);
 JacobianKind ParseJacobianKind(std::string_view text);  // ParameterError("jacobian")
 
+// How CVODE integrates a run.
 struct SolverOptions {
   IntegrationMethod method = IntegrationMethod::kBdf;
   double rtol = 1e-6;            // relative tolerance, > 0
   double atol = 1e-9;            // absolute tolerance on x [m] and xdot [m/s], > 0
-  JacobianKind jacobian = JacobianKind::kAnalytic;
+  JacobianKind jacobian = JacobianKind::kAnalytic;  // of the Newton iteration
   double max_step = 0.0;         // largest internal step [s], >= 0; 0: no limit
   long max_steps = 10000000;     // internal steps allowed in one run, >= 1 (a guard)
 };
@@ -38,37 +39,47 @@ struct SolverOptions {
 // Throws ParameterError ("method", "rtol", "atol", "max_step", "max_steps").
 void Validate(const SolverOptions& options);
 
+// What one run integrates: the time span, the initial state, the output grid, the limits.
 struct RunRequest {
-  double t_start = 0.0;
-  double t_end = 1.0;                 // > t_start
-  double length = 0.1;                // x(t_start) [m], > 0
-  double lengthening_rate = 0.0;      // xdot(t_start) [m/s]
-  double output_interval = 1e-3;      // [s]; 0 records every internal step instead
-  std::optional<double> min_length;   // reaching it ends the run, status limit
-  std::optional<double> max_length;
+  double t_start = 0.0;               // [s], finite
+  double t_end = 1.0;                 // [s], finite, > t_start
+  double length = 0.1;                // x(t_start) [m], finite, > 0
+  double lengthening_rate = 0.0;      // xdot(t_start) [m/s], finite
+  double output_interval = 1e-3;      // [s], > 0, at most 1e8 rows; 0 records every internal step
+  std::optional<double> min_length;   // [m], in [0, length): reaching it ends the run (limit)
+  std::optional<double> max_length;   // [m], > length: reaching it ends the run (limit)
 };
+
+// Throws ParameterError ("t_end", "length", "output_interval", "min_length", ...).
+void Validate(const RunRequest& request);
 
 enum class RunStatus { kCompleted, kLimit, kFailed };
 std::string_view ToString(RunStatus status);
 
 // Solver counters summed over the whole run (CVODE resets its own at each re-init).
 struct RunStats {
-  long steps = 0;
+  long steps = 0;              // internal steps taken
   long rhs_evals = 0;          // including those of a difference-quotient Jacobian
   long jac_evals = 0;
-  long linear_setups = 0;
-  long newton_iters = 0;
-  long newton_conv_fails = 0;
-  long error_test_fails = 0;
-  double wall_seconds = 0.0;
-  double final_time = 0.0;
+  long linear_setups = 0;      // Newton matrix factorisations
+  long newton_iters = 0;       // nonlinear (Newton) iterations
+  long newton_conv_fails = 0;  // nonlinear convergence failures
+  long error_test_fails = 0;   // steps rejected by the local error test
+  double wall_seconds = 0.0;   // [s] of wall-clock time for the whole run
+  double final_time = 0.0;     // [s], where the run ended
   RunStatus status = RunStatus::kCompleted;
   std::string message;         // why a run ended early (limit or failure)
 };
 
 struct TrajectoryPoint {
-  double t;
-  ActuatorSample sample;
+  double t;               // [s]
+  ActuatorSample sample;  // the state and what it observes at t
+};
+
+// A finished run: its recorded points and its counters.
+struct RunResult {
+  std::vector<TrajectoryPoint> trajectory;
+  RunStats stats;
 };
 
 class Simulation {
@@ -78,9 +89,13 @@ class Simulation {
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 
-  // Integrates `system` as `request` says, appending the recorded points to `trajectory`
-  // (cleared first). A solver failure does not throw: it returns status kFailed with
+  // Integrates `system` as `request` says. Validates `options` and `request` first
+  // (ParameterError). A solver failure does not throw: it returns status kFailed with
   // CVODE's flag name and the time reached in `message`, the points so far kept.
+  RunResult Run(const ActuatorSystem& system, const SolverOptions& options,
+                const RunRequest& request);
+  // The same, recording into `trajectory` (cleared first), whose memory a caller running
+  // many points (a sweep) re-uses.
   RunStats Run(const ActuatorSystem& system, const SolverOptions& options,
                const RunRequest& request, std::vector<TrajectoryPoint>& trajectory);
 
