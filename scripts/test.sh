@@ -22,4 +22,4 @@ cmake -S . -B "$dir" -DMUSCLESIM_WARNINGS_AS_ERRORS=ON -DMUSCLESIM_BUILD_TESTS=O
 cmake --build "$dir" -j"$jobs"
 ctest --test-dir "$dir" --output-on-failure -j"$jobs"
 # the installed package, used from outside as find_package(musclesim) (Release build only)
-[ "$dir" = build ] && bash scripts/check_install.sh "$dir"
+if [ "$dir" = build ]; then bash scripts/check_install.sh "$dir"; fi
