@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <thread>
 
 #include "musclesim/errors.h"
@@ -276,6 +277,23 @@ TEST(Simulation, RunResultHoldsWhatTheBufferedRunRecords) {
   for (std::size_t i = 0; i < result.trajectory.size(); ++i) {
     ASSERT_EQ(result.trajectory[i].sample.length, buffered.trajectory[i].sample.length) << i;
   }
+}
+
+// Every scenario shipped in scenarios/ runs to ten times its end time. Pulse edges and
+// output times drift apart by rounding errors as runs get longer (twitches.yaml once failed
+// with CV_TOO_CLOSE at t = 4.11 s): this is the guard against that class of failure.
+TEST(Simulation, EveryShippedScenarioRunsToTenTimesItsEnd) {
+  int checked = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios")) {
+    const std::string path = entry.path().string();
+    if (testing::ReadFile(path).find("\ntime:") == std::string::npos) continue;  // sweeps, fits
+    const ScenarioSpec spec = LoadScenario(path);
+    const std::string end = FormatNumber(spec.t_start + 10.0 * (spec.t_end - spec.t_start));
+    const Outcome run = Simulate(path, {"time.end=" + end});
+    EXPECT_NE(run.stats.status, RunStatus::kFailed) << path << ": " << run.stats.message;
+    ++checked;
+  }
+  EXPECT_GE(checked, 7);
 }
 
 }  // namespace

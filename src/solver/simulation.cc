@@ -6,9 +6,11 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <stdexcept>
 
 #include "musclesim/errors.h"
@@ -45,8 +47,14 @@ std::string_view ToString(RunStatus status) {
 }
 
 void Validate(const SolverOptions& o) {
-  Require(std::isfinite(o.rtol) && o.rtol > 0.0, "rtol", o.rtol, "must be finite and > 0");
-  Require(std::isfinite(o.atol) && o.atol > 0.0, "atol", o.atol, "must be finite and > 0");
+  // below ~100 ulps double precision cannot meet a tolerance (CVODE: CV_TOO_MUCH_ACC); at 1
+  // or more the error allowed is as large as the value itself
+  Require(o.rtol >= kMinTolerance && o.rtol < 1.0, "rtol", o.rtol,
+          "must be >= 1e-14 (what double precision can meet) and < 1 (an error as large as "
+          "the value)");
+  // an absolute error of a metre or a metre per second says nothing about an actuator
+  Require(o.atol > 0.0 && o.atol < 1.0, "atol", o.atol,
+          "must be > 0 and < 1 [m and m/s]");
   Require(std::isfinite(o.max_step) && o.max_step >= 0.0, "max_step", o.max_step,
           "must be finite and >= 0 (0: no limit) [s]");
   Require(o.max_steps >= 1, "max_steps", static_cast<double>(o.max_steps), "must be >= 1");
@@ -274,7 +282,16 @@ RunStats Simulation::Run(const ActuatorSystem& system, const SolverOptions& opti
     return stats;
   };
 
-  std::vector<double> stops = system.Breakpoints(request.t_start, request.t_end);
+  // Times a rounding error apart (a pulse edge computed as start + k period + width and an
+  // output time k interval, say) are one time: CVODE refuses to step over less than a few
+  // ulps (CV_TOO_CLOSE), so nothing closer than `merge` is integrated over.
+  const double merge =
+      16.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(request.t_start), std::abs(request.t_end));
+  std::vector<double> stops;
+  for (double b : system.Breakpoints(request.t_start, request.t_end)) {
+    const double previous = stops.empty() ? request.t_start : stops.back();
+    if (b - previous > merge && request.t_end - b > merge) stops.push_back(b);
+  }
   stops.push_back(request.t_end);
   const bool every_step = request.output_interval == 0.0;
   const double span = request.t_end - request.t_start;
@@ -285,63 +302,76 @@ RunStats Simulation::Run(const ActuatorSystem& system, const SolverOptions& opti
   };
 
   double t = request.t_start;
+  bool fresh = true;  // no step taken since the last (re)initialisation
   configure(t);
   record(t);
   for (double stop : stops) {
     ws.Check(CVodeSetStopTime(ws.cvode, stop), "CVodeSetStopTime");
     while (t < stop) {
       const double target = every_step ? stop : std::min(output_time(next_output), stop);
-      const int flag = CVode(ws.cvode, target, ws.state, &t, every_step ? CV_ONE_STEP : CV_NORMAL);
-      if (flag < 0) {
-        return finish(RunStatus::kFailed, t,
-                      "CVODE failed at t = " + FormatNumber(t) + " s with " + FlagName(flag) +
-                          (cb.last_error.empty() ? "" : " (" + cb.last_error + ")"));
-      }
-      long segment_steps = 0;
-      CVodeGetNumSteps(ws.cvode, &segment_steps);
-      if (stats.steps + segment_steps > options.max_steps) {
-        return finish(RunStatus::kFailed, t,
-                      "more than max_steps = " + std::to_string(options.max_steps) +
-                          " internal steps by t = " + FormatNumber(t) + " s");
-      }
-      if (flag == CV_ROOT_RETURN) {
-        int found[4] = {0, 0, 0, 0};
-        CVodeGetRootInfo(ws.cvode, found);
-        for (int i = 0; i < cb.root_count; ++i) {
-          if (found[i] == 0) continue;
-          const std::string where = "length " + FormatNumber(y[0]) + " m at t = " + FormatNumber(t) + " s";
-          switch (cb.kinds[i]) {
-            case Callbacks::kMinLength:
-            case Callbacks::kMaxLength:
-              record(t);
-              return finish(RunStatus::kLimit, t,
-                            std::string(cb.kinds[i] == Callbacks::kMinLength ? "min_length"
-                                                                             : "max_length") +
-                                " = " + FormatNumber(cb.levels[i]) + " reached: " + where);
-            case Callbacks::kZeroLength:
-              record(t);
-              return finish(RunStatus::kFailed, t, "the length reached zero at t = " +
-                                                       FormatNumber(t) + " s: the actuator collapsed");
-            case Callbacks::kSlack:
-              break;
-          }
+      if (fresh && target - t <= merge) {
+        // a rounding error past a restart, too close for CVODE's first step (CV_TOO_CLOSE):
+        // the state there is the state here (later in a run CVODE interpolates instead)
+        t = target;
+      } else {
+        fresh = false;
+        const int flag = CVode(ws.cvode, target, ws.state, &t, every_step ? CV_ONE_STEP : CV_NORMAL);
+        if (flag < 0) {
+          return finish(RunStatus::kFailed, t,
+                        "CVODE failed at t = " + FormatNumber(t) + " s with " + FlagName(flag) +
+                            (cb.last_error.empty() ? "" : " (" + cb.last_error + ")"));
         }
-        // the slack kink: restart the integrator on its far side
-        ws.Accumulate(stats);
-        configure(t);
-        ws.Check(CVodeSetStopTime(ws.cvode, stop), "CVodeSetStopTime");
-        if (every_step) record(t);
-        continue;
+        long segment_steps = 0;
+        CVodeGetNumSteps(ws.cvode, &segment_steps);
+        if (stats.steps + segment_steps > options.max_steps) {
+          return finish(RunStatus::kFailed, t,
+                        "more than max_steps = " + std::to_string(options.max_steps) +
+                            " internal steps by t = " + FormatNumber(t) + " s");
+        }
+        if (flag == CV_ROOT_RETURN) {
+          int found[4] = {0, 0, 0, 0};
+          CVodeGetRootInfo(ws.cvode, found);
+          for (int i = 0; i < cb.root_count; ++i) {
+            if (found[i] == 0) continue;
+            const std::string where = "length " + FormatNumber(y[0]) + " m at t = " + FormatNumber(t) + " s";
+            switch (cb.kinds[i]) {
+              case Callbacks::kMinLength:
+              case Callbacks::kMaxLength:
+                record(t);
+                return finish(RunStatus::kLimit, t,
+                              std::string(cb.kinds[i] == Callbacks::kMinLength ? "min_length"
+                                                                               : "max_length") +
+                                  " = " + FormatNumber(cb.levels[i]) + " reached: " + where);
+              case Callbacks::kZeroLength:
+                record(t);
+                return finish(RunStatus::kFailed, t, "the length reached zero at t = " +
+                                                         FormatNumber(t) + " s: the actuator collapsed");
+              case Callbacks::kSlack:
+                break;
+            }
+          }
+          // the slack kink: restart the integrator on its far side
+          ws.Accumulate(stats);
+          configure(t);
+          fresh = true;
+          ws.Check(CVodeSetStopTime(ws.cvode, stop), "CVodeSetStopTime");
+          if (every_step) record(t);
+          continue;
+        }
       }
-      if (every_step || t == output_time(next_output)) {
+      if (every_step) {
         record(t);
-        if (!every_step) ++next_output;
+      } else if (output_time(next_output) - t <= merge) {
+        // labelled with the grid time, which t equals or misses by a rounding error
+        record(output_time(next_output));
+        ++next_output;
       }
     }
     if (stop < request.t_end) {
       // an input jumps at `stop`: restart with fresh history
       ws.Accumulate(stats);
       configure(t);
+      fresh = true;
     }
   }
   return finish(RunStatus::kCompleted, t, "");

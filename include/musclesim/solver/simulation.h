@@ -26,11 +26,14 @@ enum class JacobianKind { kAnalytic, kDifferenceQuotient };
 std::string_view ToString(JacobianKind kind);
 JacobianKind ParseJacobianKind(std::string_view text);  // ParameterError("jacobian")
 
+// The smallest relative tolerance double precision can meet (about 100 ulps).
+inline constexpr double kMinTolerance = 1e-14;
+
 // How CVODE integrates a run.
 struct SolverOptions {
   IntegrationMethod method = IntegrationMethod::kBdf;
-  double rtol = 1e-6;            // relative tolerance, > 0
-  double atol = 1e-9;            // absolute tolerance on x [m] and xdot [m/s], > 0
+  double rtol = 1e-6;            // relative tolerance, in [kMinTolerance, 1)
+  double atol = 1e-9;            // absolute tolerance on x [m] and xdot [m/s], in (0, 1)
   JacobianKind jacobian = JacobianKind::kAnalytic;  // of the Newton iteration
   double max_step = 0.0;         // largest internal step [s], >= 0; 0: no limit
   long max_steps = 10000000;     // internal steps allowed in one run, >= 1 (a guard)
