@@ -230,13 +230,32 @@ RunResult Simulation::Run(const ActuatorSystem& system, const SolverOptions& opt
   return result;
 }
 
+namespace {
+
+// Collects the points in a vector.
+class VectorSink final : public TrajectorySink {
+ public:
+  explicit VectorSink(std::vector<TrajectoryPoint>& points) : points_(points) { points_.clear(); }
+  void Record(const TrajectoryPoint& point) override { points_.push_back(point); }
+
+ private:
+  std::vector<TrajectoryPoint>& points_;
+};
+
+}  // namespace
+
 RunStats Simulation::Run(const ActuatorSystem& system, const SolverOptions& options,
                          const RunRequest& request, std::vector<TrajectoryPoint>& trajectory) {
+  VectorSink sink(trajectory);
+  return Run(system, options, request, sink);
+}
+
+RunStats Simulation::Run(const ActuatorSystem& system, const SolverOptions& options,
+                         const RunRequest& request, TrajectorySink& sink) {
   Validate(options);
   Validate(request);
   const auto wall_start = std::chrono::steady_clock::now();
   Workspace& ws = *workspace_;
-  trajectory.clear();
 
   // root functions: the passive kink, the user's limits, zero length
   Callbacks& cb = ws.callbacks;
@@ -270,7 +289,7 @@ RunStats Simulation::Run(const ActuatorSystem& system, const SolverOptions& opti
 
   RunStats stats;
   const auto record = [&](double t) {
-    trajectory.push_back({t, system.Observe(t, y[0], y[1])});
+    sink.Record({t, system.Observe(t, y[0], y[1])});
   };
   const auto finish = [&](RunStatus status, double t, std::string message) {
     ws.Accumulate(stats);

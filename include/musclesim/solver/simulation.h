@@ -79,6 +79,14 @@ struct TrajectoryPoint {
   ActuatorSample sample;  // the state and what it observes at t
 };
 
+// Receives the points of a run as they are recorded, so that a long run can be written
+// out (or reduced to a few numbers) without keeping its trajectory in memory.
+class TrajectorySink {
+ public:
+  virtual ~TrajectorySink() = default;
+  virtual void Record(const TrajectoryPoint& point) = 0;
+};
+
 // A finished run: its recorded points and its counters.
 struct RunResult {
   std::vector<TrajectoryPoint> trajectory;
@@ -101,6 +109,10 @@ class Simulation {
   // many points (a sweep) re-uses.
   RunStats Run(const ActuatorSystem& system, const SolverOptions& options,
                const RunRequest& request, std::vector<TrajectoryPoint>& trajectory);
+  // The same, handing every recorded point to `sink` as it is produced (memory does not
+  // grow with the run's length). An exception from the sink ends the run and propagates.
+  RunStats Run(const ActuatorSystem& system, const SolverOptions& options,
+               const RunRequest& request, TrajectorySink& sink);
 
  private:
   struct Workspace;
