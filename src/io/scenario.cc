@@ -1,6 +1,7 @@
 // Reads scenario files: LoadScenario and the `--set` overrides applied before validation.
 #include <cmath>
 
+#include "io/key_path.h"
 #include "io/model_yaml_node.h"
 #include "musclesim/io/scenario.h"
 
@@ -305,40 +306,6 @@ ScenarioSpec ReadScenario(const yaml::Source& src, const YAML::Node& root) {
   return s;
 }
 
-// "a.b[2].c" into keys and indices.
-struct Step {
-  std::string key;  // empty for an index
-  std::size_t index = 0;
-};
-
-std::vector<Step> SplitPath(const std::string& path, const std::string& override_text) {
-  std::vector<Step> steps;
-  std::size_t pos = 0;
-  const auto bad = [&] {
-    return InputError("--set " + override_text + ": '" + path +
-                      "' is not a dotted key path such as model.velocity.n or load[0].value");
-  };
-  while (pos < path.size()) {
-    if (path[pos] == '[') {
-      const std::size_t close = path.find(']', pos);
-      if (close == std::string::npos || close == pos + 1) throw bad();
-      const std::string digits = path.substr(pos + 1, close - pos - 1);
-      if (digits.find_first_not_of("0123456789") != std::string::npos) throw bad();
-      steps.push_back({"", std::stoul(digits)});
-      pos = close + 1;
-      if (pos < path.size() && path[pos] == '.') ++pos;
-    } else {
-      const std::size_t end = path.find_first_of(".[", pos);
-      const std::string key = path.substr(pos, end - pos);
-      if (key.empty()) throw bad();
-      steps.push_back({key, 0});
-      pos = end == std::string::npos ? path.size() : (path[end] == '.' ? end + 1 : end);
-    }
-  }
-  if (steps.empty()) throw bad();
-  return steps;
-}
-
 void ApplyOverride(YAML::Node root, const std::string& text, const std::string& file) {
   const std::size_t eq = text.find('=');
   if (eq == std::string::npos) {
@@ -346,11 +313,16 @@ void ApplyOverride(YAML::Node root, const std::string& text, const std::string& 
   }
   const std::string path = text.substr(0, eq);
   const std::string value = text.substr(eq + 1);
-  const std::vector<Step> steps = SplitPath(path, text);
+  const auto split = yaml::SplitKeyPath(path);
+  if (!split || split->empty()) {
+    throw InputError("--set " + text + ": '" + path +
+                     "' is not a dotted key path such as model.velocity.n or load[0].value");
+  }
+  const std::vector<yaml::KeyPathStep>& steps = *split;
   YAML::Node node = root;  // handles share the document: assignment below edits it
   std::string walked;
   for (std::size_t i = 0; i < steps.size(); ++i) {
-    const Step& step = steps[i];
+    const yaml::KeyPathStep& step = steps[i];
     const bool last = i + 1 == steps.size();
     const std::string here = step.key.empty()
                                  ? walked + "[" + std::to_string(step.index) + "]"
