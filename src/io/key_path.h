@@ -16,10 +16,10 @@ struct KeyPathStep {
   std::size_t index = 0;   // sequence index (0-based) when `key` is empty
 };
 
-// Splits "a.b[2].c" into {a}, {b}, {[2]}, {c}. A dot on either side of an index is optional
-// and one trailing dot is ignored. Returns nullopt for a malformed path: an empty key ("a..b", ".a"), an
-// index that is empty or not decimal digits, or an unclosed "[". The empty path has no steps.
-// An index too large for std::size_t throws std::out_of_range.
+// Splits "a.b[2].c" into {a}, {b}, {[2]}, {c}. A dot on either side of an index is
+// optional and one trailing dot is ignored. Returns nullopt for a malformed path: an empty
+// key ("a..b", ".a"), an index that is empty or not decimal digits, or an unclosed "[".
+// The empty path has no steps. An index too large for std::size_t throws std::out_of_range.
 std::optional<std::vector<KeyPathStep>> SplitKeyPath(const std::string& path);
 
 }  // namespace musclesim::yaml

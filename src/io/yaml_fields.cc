@@ -74,6 +74,11 @@ double ReadNumber(const Source& source, const YAML::Node& node, const std::strin
   return value;
 }
 
+double ReadOptionalNumber(const Source& source, const YAML::Node& map, const std::string& path,
+                          const char* key, double fallback) {
+  return map[key] ? ReadNumber(source, map[key], Join(path, key)) : fallback;
+}
+
 int ReadInteger(const Source& source, const YAML::Node& node, const std::string& path) {
   const double value = ReadNumber(source, node, path);
   if (!(std::abs(value) <= 1e9) || value != std::floor(value)) {
