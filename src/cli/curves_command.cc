@@ -22,7 +22,7 @@ Numbers carry 17 significant digits.
 
 }  // namespace
 
-int RunCurves(int argc, char** argv) {
+int CurvesCommand(int argc, char** argv) {
   const Arguments args = Parse(argc, argv, 2, {"--length", "--velocity", "-o"}, {"--help", "-h"});
   if (args.Has("--help") || args.Has("-h")) {
     std::cout << kHelp;

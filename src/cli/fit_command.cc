@@ -24,7 +24,7 @@ paste into a scenario's active_length, followed by
 
 }  // namespace
 
-int RunFit(int argc, char** argv) {
+int FitCommand(int argc, char** argv) {
   const Arguments args = Parse(argc, argv, 2, {"-o"}, {"--help", "-h"});
   if (args.Has("--help") || args.Has("-h")) {
     std::cout << kHelp;

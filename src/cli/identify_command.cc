@@ -37,7 +37,7 @@ std::string PlusMinus(const Estimate& e) {
 
 }  // namespace
 
-int RunIdentify(int argc, char** argv) {
+int IdentifyCommand(int argc, char** argv) {
   const Arguments args = Parse(argc, argv, 2, {"-o", "--report"}, {"--help", "-h"});
   if (args.Has("--help") || args.Has("-h")) {
     std::cout << kHelp;

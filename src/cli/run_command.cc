@@ -41,7 +41,7 @@ double LargestSpeed(const std::vector<TrajectoryPoint>& trajectory) {
 
 }  // namespace
 
-int RunRun(int argc, char** argv) {
+int RunCommand(int argc, char** argv) {
   const Arguments args =
       Parse(argc, argv, 2, {"-o", "--set", "--stats"}, {"--quiet", "--help", "-h"});
   if (args.Has("--help") || args.Has("-h")) {
