@@ -15,7 +15,7 @@ namespace musclesim {
 // part's stand-in from StandInModelParams(); and the comments to write with it.
 template <typename Params>
 struct ModelYamlPart {
-  std::optional<Params> params;       // units as in Params (f_iso: [N])
+  std::optional<Params> params;       // units as in Params ([N] for f_iso)
   std::vector<std::string> comments;  // one line each [-], without the leading "# "
 };
 
@@ -24,12 +24,13 @@ struct ModelYamlPart {
 // value's line (joined by "; "), a known passive or velocity part's on lines below it,
 // active_length's on lines above its optimal_range.
 struct ModelYamlDraft {
-  std::vector<std::string> header;              // comment lines above `model:` [-]
-  ModelYamlPart<double> f_iso;                  // [N]
-  ModelYamlPart<PassiveParams> passive;
-  ModelYamlPart<ActiveLengthParams> active_length;  // sigma written only when not 1
-  std::vector<std::string> gaussian_comments;   // none, or one below each known component [-]
-  ModelYamlPart<VelocityParams> velocity;
+  std::vector<std::string> header;                  // comment lines above `model:` [-]
+  ModelYamlPart<double> f_iso;                      // [N]
+  ModelYamlPart<PassiveParams> passive;             // units as in PassiveParams
+  ModelYamlPart<ActiveLengthParams> active_length;  // as in ActiveLengthParams; sigma
+                                                    // written only when not 1
+  std::vector<std::string> gaussian_comments;       // none, or one per known component [-]
+  ModelYamlPart<VelocityParams> velocity;           // units as in VelocityParams
 };
 
 // The draft as YAML text, every line ending in '\n'. Throws std::invalid_argument when
