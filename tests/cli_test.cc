@@ -370,6 +370,21 @@ TEST(Cli, HelpForEveryVerb) {
   const Outcome top = RunCli("--help");
   EXPECT_EQ(top.exit_code, 0);
   EXPECT_THAT(top.out, HasSubstr("exit codes: 0 success, 1 other failure, 2 invalid input"));
+  EXPECT_THAT(top.out, HasSubstr("musclesim --version"));
+}
+
+TEST(Cli, VersionIsTheProjectVersion) {
+  // the version as the top-level CMakeLists.txt declares it: project(musclesim VERSION x.y.z
+  const std::string cmake = ReadFile(std::string(MUSCLESIM_SOURCE_DIR) + "/CMakeLists.txt");
+  const std::string marker = "project(musclesim VERSION ";
+  const auto at = cmake.find(marker);
+  ASSERT_NE(at, std::string::npos);
+  const auto from = at + marker.size();
+  const std::string version = cmake.substr(from, cmake.find_first_of(" )", from) - from);
+  const Outcome r = RunCli("--version");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.out, "musclesim " + version + "\n");
+  EXPECT_EQ(r.err, "");
 }
 
 }  // namespace

@@ -55,25 +55,25 @@ double ParseDouble(const std::string& option, const std::string& text) {
 
 }  // namespace
 
-Range ParseRange(const std::string& option, const std::string& text) {
+UniformGrid ParseGrid(const std::string& option, const std::string& text) {
   const auto first = text.find(':');
   const auto second = text.find(':', first == std::string::npos ? first : first + 1);
   if (first == std::string::npos || second == std::string::npos) {
     throw UsageError(option + " " + text + ": expected A:B:N (from, to, number of points)");
   }
-  Range range;
-  range.from = ParseDouble(option, text.substr(0, first));
-  range.to = ParseDouble(option, text.substr(first + 1, second - first - 1));
+  UniformGrid grid;
+  grid.from = ParseDouble(option, text.substr(0, first));
+  grid.to = ParseDouble(option, text.substr(first + 1, second - first - 1));
   const std::string count = text.substr(second + 1);
-  const auto result = std::from_chars(count.data(), count.data() + count.size(), range.count);
+  const auto result = std::from_chars(count.data(), count.data() + count.size(), grid.count);
   if (result.ec != std::errc() || result.ptr != count.data() + count.size() ||
-      range.count < 2 || range.count > 10000000) {
+      grid.count < 2 || grid.count > 10000000) {
     throw UsageError(option + " " + text + ": N must be an integer from 2 to 10000000");
   }
-  if (!(range.from < range.to)) {
+  if (!(grid.from < grid.to)) {
     throw UsageError(option + " " + text + ": A must be less than B");
   }
-  return range;
+  return grid;
 }
 
 }  // namespace musclesim::cli

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "musclesim/io/curves_csv.h"
+
 namespace musclesim::cli {
 
 // A malformed command line (exit code 2).
@@ -33,13 +35,7 @@ struct Arguments {
 Arguments Parse(int argc, char** argv, int first, const std::set<std::string>& with_value,
                 const std::set<std::string>& flags);
 
-// An evenly spaced range "A:B:N": N >= 2 points from A to B inclusive, A < B.
-struct Range {
-  double from = 0.0;
-  double to = 0.0;
-  int count = 0;
-  double At(int i) const { return from + (to - from) * i / (count - 1); }
-};
-Range ParseRange(const std::string& option, const std::string& text);
+// An evenly spaced grid "A:B:N": N >= 2 points from A to B inclusive, A < B.
+UniformGrid ParseGrid(const std::string& option, const std::string& text);
 
 }  // namespace musclesim::cli

@@ -1,9 +1,9 @@
 // musclesim curves FILE.yaml --length A:B:N | --velocity A:B:N [-o PATH]
 #include <iostream>
-#include <sstream>
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "musclesim/io/curves_csv.h"
 #include "musclesim/io/model_yaml.h"
 #include "musclesim/io/output_file.h"
 
@@ -22,7 +22,7 @@ Numbers carry 17 significant digits.
 
 }  // namespace
 
-int RunCurves(int argc, char** argv) {
+int CurvesCommand(int argc, char** argv) {
   const Arguments args = Parse(argc, argv, 2, {"--length", "--velocity", "-o"}, {"--help", "-h"});
   if (args.Has("--help") || args.Has("-h")) {
     std::cout << kHelp;
@@ -32,27 +32,12 @@ int RunCurves(int argc, char** argv) {
   if (args.Has("--length") == args.Has("--velocity")) {
     throw UsageError("give exactly one of --length A:B:N or --velocity A:B:N");
   }
-  const ModelSpec loaded = LoadModelSpec(args.positional[0]);
-  const TensionModel model(loaded.params);
-
-  std::ostringstream csv;
-  if (args.Has("--length")) {
-    const Range range = ParseRange("--length", args.Value("--length"));
-    csv << "length,f_L,tension_passive\n";
-    for (int i = 0; i < range.count; ++i) {
-      const double x = range.At(i);
-      csv << FormatFull(x) << ',' << FormatFull(model.active_length().Evaluate(x).value) << ','
-          << FormatFull(PassiveTension(model.params().passive, x).value) << '\n';
-    }
-  } else {
-    const Range range = ParseRange("--velocity", args.Value("--velocity"));
-    csv << "shortening_velocity,g\n";
-    for (int i = 0; i < range.count; ++i) {
-      const double v = range.At(i);
-      csv << FormatFull(v) << ',' << FormatFull(model.velocity().Evaluate(v).value) << '\n';
-    }
-  }
-  WriteOutput(args.Value("-o", "-"), csv.str());
+  const TensionModel model(LoadModelSpec(args.positional[0]).params);
+  const std::string csv =
+      args.Has("--length")
+          ? FormatLengthCurvesCsv(model, ParseGrid("--length", args.Value("--length")))
+          : FormatVelocityCurveCsv(model, ParseGrid("--velocity", args.Value("--velocity")));
+  WriteOutput(args.Value("-o", "-"), csv);
   return 0;
 }
 

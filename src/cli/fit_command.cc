@@ -6,6 +6,7 @@
 #include "cli/commands.h"
 #include "musclesim/errors.h"
 #include "musclesim/io/model_yaml.h"
+#include "musclesim/io/model_yaml_writer.h"
 #include "musclesim/io/output_file.h"
 
 namespace musclesim::cli {
@@ -24,7 +25,7 @@ paste into a scenario's active_length, followed by
 
 }  // namespace
 
-int RunFit(int argc, char** argv) {
+int FitCommand(int argc, char** argv) {
   const Arguments args = Parse(argc, argv, 2, {"-o"}, {"--help", "-h"});
   if (args.Has("--help") || args.Has("-h")) {
     std::cout << kHelp;
@@ -40,8 +41,7 @@ int RunFit(int argc, char** argv) {
   std::ostringstream out;
   out << "gaussians:\n";
   for (const Gaussian& g : fit.gaussians) {
-    out << "  - {amplitude: " << FormatFull(g.amplitude) << ", width: " << FormatFull(g.width)
-        << ", center: " << FormatFull(g.center) << "}\n";
+    out << "  - " << FormatGaussianYaml(g) << "\n";
   }
   out << "cost: " << FormatFull(fit.cost) << "\n"
       << "relative_residual: " << FormatFull(fit.relative_residual) << "\n"

@@ -1,16 +1,16 @@
 // musclesim identify DATA.yaml [-o MODEL.yaml] [--report PATH]
 #include <cmath>
 #include <iostream>
-#include <sstream>
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "musclesim/errors.h"
 #include "musclesim/io/identify_spec.h"
+#include "musclesim/io/model_yaml_writer.h"
+#include "musclesim/io/output_file.h"
 #include "musclesim/studies/identify.h"
 #include "musclesim/studies/identify_report.h"
-#include "musclesim/io/output_file.h"
 
 namespace musclesim::cli {
 
@@ -32,12 +32,77 @@ Exit codes: 0 success, 2 invalid input or data, 1 anything else.
 )";
 
 std::string PlusMinus(const Estimate& e) {
-  return FormatNumber(e.value) + " +- " + (std::isfinite(e.standard_error) ? FormatNumber(e.standard_error) : "n/a");
+  return FormatNumber(e.value) + " +- " +
+         (std::isfinite(e.standard_error) ? FormatNumber(e.standard_error) : "n/a");
+}
+
+// The model block: each part identified, with its standard errors, or left to its stand-in
+// with the reason.
+ModelYamlDraft DraftModel(const IdentifySpec& spec,
+                          const std::optional<PassiveIdentification>& passive,
+                          const std::optional<ActiveIdentification>& active,
+                          const std::optional<VelocityIdentification>& velocity) {
+  ModelYamlDraft draft;
+  draft.header = {"identified by musclesim identify from " + spec.source,
+                  "(+- standard errors from the Jacobian at the optimum)"};
+  if (active) {
+    draft.f_iso = {active->f_iso.value,
+                   {"N, " + PlusMinus(active->f_iso) + ", the active curve's maximum"}};
+  } else if (velocity) {
+    draft.f_iso = {velocity->best.f_iso.value,
+                   {"N, " + PlusMinus(velocity->best.f_iso) + ", from the tension-velocity curve"}};
+  } else {
+    draft.f_iso.comments = {"not identified (no active or velocity data)"};
+  }
+
+  if (passive) {
+    draft.passive.params =
+        PassiveParams{passive->k_p.value, passive->alpha.value, passive->slack_length.value};
+    draft.passive.comments = {"k_p = " + PlusMinus(passive->k_p) + " N, alpha = " +
+                              PlusMinus(passive->alpha) + " 1/m, slack_length = " +
+                              PlusMinus(passive->slack_length) + " m; RMSE " +
+                              FormatNumber(passive->rmse) + " N"};
+  } else {
+    draft.passive.comments = {"not identified: no passive tension"};
+  }
+
+  if (active) {
+    draft.active_length.params = active->curve;
+    draft.active_length.comments = {
+        "optimal_range: where the fitted curve is within 2% of its maximum; RMSE " +
+        FormatNumber(active->rmse) + " N"};
+    for (std::size_t k = 0; k < active->curve.gaussians.size(); ++k) {
+      draft.gaussian_comments.push_back(
+          "amplitude " + PlusMinus(active->amplitudes[k]) + ", width " +
+          PlusMinus(active->widths[k]) + ", center " + PlusMinus(active->centers[k]));
+    }
+  } else {
+    draft.active_length.comments = {"not identified: one Gaussian a kilometre wide, a flat f_L"};
+  }
+
+  if (velocity) {
+    const VelocityCandidate& best = velocity->best;
+    draft.velocity.params =
+        VelocityParams{best.v_max.value, best.n, StandInEpsilon(best.v_max.value)};
+    std::string others = "other n:";
+    for (const VelocityCandidate& c : velocity->candidates) {
+      if (c.n == best.n) continue;
+      others += " n=" + std::to_string(c.n) + " " +
+                (c.valid ? "RMSE " + FormatNumber(c.rmse) : "no fit") + ";";
+    }
+    draft.velocity.comments = {"v_max = " + PlusMinus(best.v_max) + " m/s, RMSE " +
+                                   FormatNumber(best.rmse) +
+                                   " N; epsilon is not identified (1e-3 v_max)",
+                               others};
+  } else {
+    draft.velocity.comments = {"not identified: g close to 1"};
+  }
+  return draft;
 }
 
 }  // namespace
 
-int RunIdentify(int argc, char** argv) {
+int IdentifyCommand(int argc, char** argv) {
   const Arguments args = Parse(argc, argv, 2, {"-o", "--report"}, {"--help", "-h"});
   if (args.Has("--help") || args.Has("-h")) {
     std::cout << kHelp;
@@ -94,61 +159,8 @@ int RunIdentify(int argc, char** argv) {
     }
   }
 
-  // the model block: every part, identified or a neutral default said as such
-  std::ostringstream y;
-  y << "# identified by musclesim identify from " << spec.source << "\n"
-    << "# (+- standard errors from the Jacobian at the optimum)\nmodel:\n";
-  if (active) {
-    y << "  f_iso: " << FormatFull(active->f_iso.value) << "   # N, " << PlusMinus(active->f_iso)
-      << ", the active curve's maximum\n";
-  } else if (velocity) {
-    y << "  f_iso: " << FormatFull(velocity->best.f_iso.value) << "   # N, "
-      << PlusMinus(velocity->best.f_iso) << ", from the tension-velocity curve\n";
-  } else {
-    y << "  f_iso: 1.0   # not identified (no active or velocity data)\n";
-  }
-  if (passive) {
-    y << "  passive: {k_p: " << FormatFull(passive->k_p.value) << ", alpha: " << FormatFull(passive->alpha.value)
-      << ", slack_length: " << FormatFull(passive->slack_length.value) << "}\n"
-      << "  # k_p = " << PlusMinus(passive->k_p) << " N, alpha = " << PlusMinus(passive->alpha)
-      << " 1/m, slack_length = " << PlusMinus(passive->slack_length) << " m; RMSE "
-      << FormatNumber(passive->rmse) << " N\n";
-  } else {
-    y << "  passive: {k_p: 0.0, alpha: 1.0, slack_length: 0.0}   # not identified: no passive tension\n";
-  }
-  y << "  active_length:\n";
-  if (active) {
-    y << "    # optimal_range: where the fitted curve is within 2% of its maximum; RMSE "
-      << FormatNumber(active->rmse) << " N\n"
-      << "    optimal_range: [" << FormatFull(active->curve.optimal_min) << ", "
-      << FormatFull(active->curve.optimal_max) << "]\n    gaussians:\n";
-    for (std::size_t k = 0; k < active->curve.gaussians.size(); ++k) {
-      const Gaussian& g = active->curve.gaussians[k];
-      y << "      - {amplitude: " << FormatFull(g.amplitude) << ", width: " << FormatFull(g.width)
-        << ", center: " << FormatFull(g.center) << "}\n"
-        << "        # amplitude " << PlusMinus(active->amplitudes[k]) << ", width "
-        << PlusMinus(active->widths[k]) << ", center " << PlusMinus(active->centers[k]) << "\n";
-    }
-  } else {
-    y << "    # not identified: one Gaussian a kilometre wide, a flat f_L\n"
-      << "    optimal_range: [-1.0, 1.0]\n"
-      << "    gaussians: [{amplitude: 1.0, width: 1.0e-6, center: 0.0}]\n";
-  }
-  if (velocity) {
-    const VelocityCandidate& b = velocity->best;
-    y << "  velocity: {v_max: " << FormatFull(b.v_max.value) << ", n: " << b.n
-      << ", epsilon: " << FormatFull(1e-3 * b.v_max.value) << "}\n"
-      << "  # v_max = " << PlusMinus(b.v_max) << " m/s, RMSE " << FormatNumber(b.rmse)
-      << " N; epsilon is not identified (1e-3 v_max)\n  # other n:";
-    for (const VelocityCandidate& c : velocity->candidates) {
-      if (c.n == b.n) continue;
-      y << " n=" << c.n << " " << (c.valid ? "RMSE " + FormatNumber(c.rmse) : "no fit") << ";";
-    }
-    y << "\n";
-  } else {
-    y << "  velocity: {v_max: 1.0e6, n: 1, epsilon: 1.0}   # not identified: g close to 1\n";
-  }
-  WriteOutput(args.Value("-o", "-"), y.str());
+  WriteOutput(args.Value("-o", "-"),
+              FormatModelYaml(DraftModel(spec, passive, active, velocity)));
   if (report) WriteOutput(args.Value("--report"), FormatReport(comparisons));
   return kExitSuccess;
 }

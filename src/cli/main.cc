@@ -14,6 +14,7 @@ namespace {
 constexpr const char* kUsage = R"(musclesim: muscle-like actuator tension model and simulator
 
 usage: musclesim VERB [ARGS...]      (musclesim VERB --help for each verb)
+       musclesim --version           print the version
 
 verbs:
   run      integrate a scenario (actuator/load dynamics on CVODE); write the trajectory CSV
@@ -39,14 +40,18 @@ int main(int argc, char** argv) {
     std::cout << kUsage;
     return kExitSuccess;
   }
+  if (std::strcmp(argv[1], "--version") == 0) {
+    std::cout << "musclesim " << MUSCLESIM_VERSION << "\n";
+    return kExitSuccess;
+  }
   const std::string verb = argv[1];
   try {
-    if (verb == "run") return cli::RunRun(argc, argv);
-    if (verb == "sweep") return cli::RunSweepCommand(argc, argv);
-    if (verb == "plot") return cli::RunPlot(argc, argv);
-    if (verb == "identify") return cli::RunIdentify(argc, argv);
-    if (verb == "curves") return cli::RunCurves(argc, argv);
-    if (verb == "fit") return cli::RunFit(argc, argv);
+    if (verb == "run") return cli::RunCommand(argc, argv);
+    if (verb == "sweep") return cli::SweepCommand(argc, argv);
+    if (verb == "plot") return cli::PlotCommand(argc, argv);
+    if (verb == "identify") return cli::IdentifyCommand(argc, argv);
+    if (verb == "curves") return cli::CurvesCommand(argc, argv);
+    if (verb == "fit") return cli::FitCommand(argc, argv);
     std::cerr << "musclesim: unknown verb '" << verb << "' (see musclesim --help)\n";
     return kExitInvalidInput;
   } catch (const cli::UsageError& e) {

@@ -41,7 +41,7 @@ void ParseSize(const std::string& text, PlotOptions& options) {
 
 }  // namespace
 
-int RunPlot(int argc, char** argv) {
+int PlotCommand(int argc, char** argv) {
   const Arguments args = Parse(argc, argv, 2,
                                {"-o", "--title", "--size", "--script", "--curves", "--x", "--y", "--color"},
                                {"--help", "-h"});

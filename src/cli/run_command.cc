@@ -1,6 +1,4 @@
 // musclesim run SCENARIO.yaml [-o PATH] [--set KEY=VALUE ...] [--stats PATH] [--quiet]
-#include <algorithm>
-#include <cmath>
 #include <iostream>
 
 #include "cli/arguments.h"
@@ -8,6 +6,7 @@
 #include "cli/exit_codes.h"
 #include "musclesim/errors.h"
 #include "musclesim/io/output_file.h"
+#include "musclesim/io/peak_speed.h"
 #include "musclesim/io/trajectory_csv.h"
 #include "musclesim/io/scenario.h"
 
@@ -30,18 +29,9 @@ Exit codes: 0 completed (or stopped at a length limit), 2 invalid input, 3 solve
 (or the length reached zero), 1 anything else.
 )";
 
-// Fastest shortening or lengthening on record, to report leaving [-v_max, v_max].
-double LargestSpeed(const std::vector<TrajectoryPoint>& trajectory) {
-  double largest = 0.0;
-  for (const TrajectoryPoint& p : trajectory) {
-    largest = std::max(largest, std::abs(p.sample.shortening_velocity));
-  }
-  return largest;
-}
-
 }  // namespace
 
-int RunRun(int argc, char** argv) {
+int RunCommand(int argc, char** argv) {
   const Arguments args =
       Parse(argc, argv, 2, {"-o", "--set", "--stats"}, {"--quiet", "--help", "-h"});
   if (args.Has("--help") || args.Has("-h")) {
@@ -78,11 +68,10 @@ int RunRun(int argc, char** argv) {
   WriteOutput(output, csv);
 
   if (!quiet) {
-    const double speed = LargestSpeed(trajectory);
-    const double v_max = spec.model.params.velocity.v_max;
-    if (speed > v_max) {
-      std::cerr << "musclesim run: note: |shortening velocity| reached " << FormatNumber(speed)
-                << " m/s, beyond v_max = " << FormatNumber(v_max)
+    const PeakSpeed peak = FindPeakSpeed(trajectory, spec.model.params.velocity.v_max);
+    if (peak.beyond_v_max()) {
+      std::cerr << "musclesim run: note: |shortening velocity| reached "
+                << FormatNumber(peak.speed) << " m/s, beyond v_max = " << FormatNumber(peak.v_max)
                 << " m/s, where g(v) is the paper's power law extrapolated\n";
     }
     if (stats.status == RunStatus::kLimit) std::cerr << "musclesim run: " << stats.message << "\n";

@@ -34,7 +34,7 @@ extern "C" void OnStopSignal(int) { RequestSweepStop(); }
 
 }  // namespace
 
-int RunSweepCommand(int argc, char** argv) {
+int SweepCommand(int argc, char** argv) {
   const Arguments args =
       Parse(argc, argv, 2, {"-o", "--jobs"}, {"--resume", "--quiet", "--help", "-h"});
   if (args.Has("--help") || args.Has("-h")) {

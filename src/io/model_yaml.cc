@@ -55,11 +55,7 @@ FitSpec ReadFitSpec(const yaml::Source& src, const YAML::Node& node, const std::
   spec.count = yaml::ReadInteger(src, Required(src, node, path, "count"), Join(path, "count"));
   if (node["target"]) {
     const std::string text = yaml::ReadString(src, node["target"], Join(path, "target"));
-    try {
-      spec.target = ParseFitTargetKind(text);
-    } catch (const ParameterError& e) {
-      yaml::Relocate(src, node, path, e);
-    }
+    yaml::ValidateAt(src, node, path, [&] { spec.target = ParseFitTargetKind(text); });
   }
   if (node["points"]) spec.points = ReadPoints(src, node["points"], Join(path, "points"));
   if (node["nonnegative"]) {
@@ -73,11 +69,7 @@ FitSpec ReadFitSpec(const yaml::Source& src, const YAML::Node& node, const std::
     yaml::Fail(src, node, Join(path, "points"), "~",
                "target " + std::string(ToString(spec.target)) + " needs points");
   }
-  try {
-    Validate(spec);
-  } catch (const ParameterError& e) {
-    yaml::Relocate(src, node, path, e);
-  }
+  yaml::ValidateAt(src, node, path, [&] { Validate(spec); });
   return spec;
 }
 
@@ -119,10 +111,8 @@ ModelSpec ReadModelSpec(const yaml::Source& src, const YAML::Node& node, const s
       Join(active_path, "optimal_range"), 2);
   p.active_length.optimal_min = range[0];
   p.active_length.optimal_max = range[1];
-  if (active["sigma"]) {
-    p.active_length.sigma =
-        yaml::ReadNumber(src, active["sigma"], Join(active_path, "sigma"));
-  }
+  p.active_length.sigma =
+      yaml::ReadOptionalNumber(src, active, active_path, "sigma", p.active_length.sigma);
   const bool has_list = static_cast<bool>(active["gaussians"]);
   const bool has_fit = static_cast<bool>(active["fit"]);
   if (has_list == has_fit) {
@@ -130,14 +120,10 @@ ModelSpec ReadModelSpec(const yaml::Source& src, const YAML::Node& node, const s
                "give exactly one of gaussians (explicit components) or fit (fitted at load)");
   }
 
-  try {
-    // the fit needs a valid range and sigma first: check the block without components
-    ActiveLengthParams range_only = p.active_length;
-    range_only.gaussians = {Gaussian{1.0, 1.0, 0.0}};
-    Validate(range_only);
-  } catch (const ParameterError& e) {
-    yaml::Relocate(src, active, active_path, e);
-  }
+  // the fit needs a valid range and sigma first: check the block without components
+  ActiveLengthParams range_only = p.active_length;
+  range_only.gaussians = {Gaussian{1.0, 1.0, 0.0}};
+  yaml::ValidateAt(src, active, active_path, [&] { Validate(range_only); });
 
   if (has_list) {
     p.active_length.gaussians =
@@ -145,20 +131,15 @@ ModelSpec ReadModelSpec(const yaml::Source& src, const YAML::Node& node, const s
   } else {
     const std::string fit_path = Join(active_path, "fit");
     model.fit = ReadFitSpec(src, active["fit"], fit_path);
-    try {
+    yaml::ValidateAt(src, active["fit"], fit_path, [&] {
       model.fit_result = FitGaussians(*model.fit, p.active_length.optimal_min,
                                       p.active_length.optimal_max, p.active_length.sigma);
-    } catch (const ParameterError& e) {
-      yaml::Relocate(src, active["fit"], fit_path, e);
-    }
+    });
     p.active_length.gaussians = model.fit_result->gaussians;
   }
 
-  try {
-    TensionModel check(p);  // validates everything, including that f_L can be normalised
-  } catch (const ParameterError& e) {
-    yaml::Relocate(src, node, path, e);
-  }
+  // the model's constructor validates everything, including that f_L can be normalised
+  yaml::ValidateAt(src, node, path, [&] { TensionModel check(p); });
   return model;
 }
 

@@ -1,6 +1,7 @@
 // Reads scenario files: LoadScenario and the `--set` overrides applied before validation.
 #include <cmath>
 
+#include "io/key_path.h"
 #include "io/model_yaml_node.h"
 #include "musclesim/io/scenario.h"
 
@@ -25,24 +26,9 @@ double ScenarioSpec::PhaseTolerance() const {
 namespace {
 
 using yaml::Join;
+using yaml::ReadOptionalNumber;
 using yaml::Required;
-
-// The value of an optional number, or `fallback`.
-double Optional(const yaml::Source& src, const YAML::Node& map, const std::string& path,
-                const char* key, double fallback) {
-  return map[key] ? yaml::ReadNumber(src, map[key], Join(path, key)) : fallback;
-}
-
-// Runs `check`, turning its ParameterError into an located InputError under `path`.
-template <typename Check>
-void Checked(const yaml::Source& src, const YAML::Node& node, const std::string& path,
-             Check check) {
-  try {
-    check();
-  } catch (const ParameterError& e) {
-    yaml::Relocate(src, node, path, e);
-  }
-}
+using yaml::ValidateAt;
 
 Waveform ReadWaveform(const yaml::Source& src, const YAML::Node& node, const std::string& path,
                       WaveformKind kind) {
@@ -74,7 +60,7 @@ Waveform ReadWaveform(const yaml::Source& src, const YAML::Node& node, const std
       w.offset = number("offset");
       w.amplitude = number("amplitude");
       w.frequency = number("frequency");
-      w.phase = Optional(src, node, path, "phase", 0.0);
+      w.phase = ReadOptionalNumber(src, node, path, "phase", 0.0);
       break;
     case WaveformKind::kPulses:
       yaml::RequireMap(src, node, path, {"type", "start", "period", "width", "low", "high"});
@@ -110,9 +96,9 @@ std::string ReadType(const yaml::Source& src, const YAML::Node& node, const std:
 Waveform ReadActivation(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
   const std::string type = ReadType(src, node, path);
   WaveformKind kind{};
-  Checked(src, node, path, [&] { kind = ParseWaveformKind(type); });
+  ValidateAt(src, node, path, [&] { kind = ParseWaveformKind(type); });
   Waveform w = ReadWaveform(src, node, path, kind);
-  Checked(src, node, path, [&] { ValidateActivation(w); });
+  ValidateAt(src, node, path, [&] { ValidateActivation(w); });
   return w;
 }
 
@@ -130,7 +116,7 @@ Load ReadLoad(const yaml::Source& src, const YAML::Node& node, const std::string
     yaml::RequireMap(src, node, path, {"type", "mass", "gravity"});
     load.kind = LoadKind::kMass;
     load.mass = yaml::ReadNumber(src, Required(src, node, path, "mass"), Join(path, "mass"));
-    load.gravity = Optional(src, node, path, "gravity", 9.81);
+    load.gravity = ReadOptionalNumber(src, node, path, "gravity", 9.81);
   } else {
     WaveformKind kind{};
     try {
@@ -142,7 +128,7 @@ Load ReadLoad(const yaml::Source& src, const YAML::Node& node, const std::string
     load.kind = LoadKind::kForce;
     load.force = ReadWaveform(src, node, path, kind);
   }
-  Checked(src, node, path, [&] { Validate(load); });
+  ValidateAt(src, node, path, [&] { Validate(load); });
   return load;
 }
 
@@ -161,15 +147,15 @@ void ReadSolver(const yaml::Source& src, const YAML::Node& node, const std::stri
                    {"method", "rtol", "atol", "jacobian", "max_step", "max_steps"});
   if (node["method"]) {
     const std::string text = yaml::ReadString(src, node["method"], Join(path, "method"));
-    Checked(src, node, path, [&] { o.method = ParseIntegrationMethod(text); });
+    ValidateAt(src, node, path, [&] { o.method = ParseIntegrationMethod(text); });
   }
   if (node["jacobian"]) {
     const std::string text = yaml::ReadString(src, node["jacobian"], Join(path, "jacobian"));
-    Checked(src, node, path, [&] { o.jacobian = ParseJacobianKind(text); });
+    ValidateAt(src, node, path, [&] { o.jacobian = ParseJacobianKind(text); });
   }
-  o.rtol = Optional(src, node, path, "rtol", o.rtol);
-  o.atol = Optional(src, node, path, "atol", o.atol);
-  o.max_step = Optional(src, node, path, "max_step", o.max_step);
+  o.rtol = ReadOptionalNumber(src, node, path, "rtol", o.rtol);
+  o.atol = ReadOptionalNumber(src, node, path, "atol", o.atol);
+  o.max_step = ReadOptionalNumber(src, node, path, "max_step", o.max_step);
   if (node["max_steps"]) {
     const double steps = yaml::ReadNumber(src, node["max_steps"], Join(path, "max_steps"));
     if (!(steps >= 1.0 && steps <= 1e12) || steps != std::floor(steps)) {
@@ -178,7 +164,7 @@ void ReadSolver(const yaml::Source& src, const YAML::Node& node, const std::stri
     }
     o.max_steps = static_cast<long>(steps);
   }
-  Checked(src, node, path, [&] { Validate(o); });
+  ValidateAt(src, node, path, [&] { Validate(o); });
 }
 
 void ReadOutput(const yaml::Source& src, const YAML::Node& node, const std::string& path,
@@ -225,10 +211,10 @@ ScenarioSpec ReadScenario(const yaml::Source& src, const YAML::Node& root) {
   yaml::RequireMap(src, actuator, "actuator", {"mass", "damping", "stiffness", "rest_length"});
   s.actuator.mass =
       yaml::ReadNumber(src, Required(src, actuator, "actuator", "mass"), "actuator.mass");
-  s.actuator.damping = Optional(src, actuator, "actuator", "damping", 0.0);
-  s.actuator.stiffness = Optional(src, actuator, "actuator", "stiffness", 0.0);
-  s.actuator.rest_length = Optional(src, actuator, "actuator", "rest_length", 0.0);
-  Checked(src, actuator, "actuator", [&] { Validate(s.actuator); });
+  s.actuator.damping = ReadOptionalNumber(src, actuator, "actuator", "damping", 0.0);
+  s.actuator.stiffness = ReadOptionalNumber(src, actuator, "actuator", "stiffness", 0.0);
+  s.actuator.rest_length = ReadOptionalNumber(src, actuator, "actuator", "rest_length", 0.0);
+  ValidateAt(src, actuator, "actuator", [&] { Validate(s.actuator); });
 
   const YAML::Node time = Required(src, root, "", "time");
   yaml::RequireMap(src, time, "time", {"start", "end"});
@@ -246,7 +232,7 @@ ScenarioSpec ReadScenario(const yaml::Source& src, const YAML::Node& root) {
   yaml::RequireMap(src, initial, "initial", {"length", "lengthening_rate"});
   const YAML::Node length = Required(src, initial, "initial", "length");
   s.initial_length = yaml::ReadNumber(src, length, "initial.length");
-  s.initial_lengthening_rate = Optional(src, initial, "initial", "lengthening_rate", 0.0);
+  s.initial_lengthening_rate = ReadOptionalNumber(src, initial, "initial", "lengthening_rate", 0.0);
   if (!(std::isfinite(s.initial_length) && s.initial_length > 0.0)) {
     yaml::Fail(src, length, "initial.length", yaml::Describe(length), "must be finite and > 0 [m]");
   }
@@ -305,40 +291,6 @@ ScenarioSpec ReadScenario(const yaml::Source& src, const YAML::Node& root) {
   return s;
 }
 
-// "a.b[2].c" into keys and indices.
-struct Step {
-  std::string key;  // empty for an index
-  std::size_t index = 0;
-};
-
-std::vector<Step> SplitPath(const std::string& path, const std::string& override_text) {
-  std::vector<Step> steps;
-  std::size_t pos = 0;
-  const auto bad = [&] {
-    return InputError("--set " + override_text + ": '" + path +
-                      "' is not a dotted key path such as model.velocity.n or load[0].value");
-  };
-  while (pos < path.size()) {
-    if (path[pos] == '[') {
-      const std::size_t close = path.find(']', pos);
-      if (close == std::string::npos || close == pos + 1) throw bad();
-      const std::string digits = path.substr(pos + 1, close - pos - 1);
-      if (digits.find_first_not_of("0123456789") != std::string::npos) throw bad();
-      steps.push_back({"", std::stoul(digits)});
-      pos = close + 1;
-      if (pos < path.size() && path[pos] == '.') ++pos;
-    } else {
-      const std::size_t end = path.find_first_of(".[", pos);
-      const std::string key = path.substr(pos, end - pos);
-      if (key.empty()) throw bad();
-      steps.push_back({key, 0});
-      pos = end == std::string::npos ? path.size() : (path[end] == '.' ? end + 1 : end);
-    }
-  }
-  if (steps.empty()) throw bad();
-  return steps;
-}
-
 void ApplyOverride(YAML::Node root, const std::string& text, const std::string& file) {
   const std::size_t eq = text.find('=');
   if (eq == std::string::npos) {
@@ -346,11 +298,16 @@ void ApplyOverride(YAML::Node root, const std::string& text, const std::string& 
   }
   const std::string path = text.substr(0, eq);
   const std::string value = text.substr(eq + 1);
-  const std::vector<Step> steps = SplitPath(path, text);
+  const auto split = yaml::SplitKeyPath(path);
+  if (!split || split->empty()) {
+    throw InputError("--set " + text + ": '" + path +
+                     "' is not a dotted key path such as model.velocity.n or load[0].value");
+  }
+  const std::vector<yaml::KeyPathStep>& steps = *split;
   YAML::Node node = root;  // handles share the document: assignment below edits it
   std::string walked;
   for (std::size_t i = 0; i < steps.size(); ++i) {
-    const Step& step = steps[i];
+    const yaml::KeyPathStep& step = steps[i];
     const bool last = i + 1 == steps.size();
     const std::string here = step.key.empty()
                                  ? walked + "[" + std::to_string(step.index) + "]"

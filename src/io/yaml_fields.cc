@@ -4,6 +4,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/key_path.h"
+
 namespace musclesim::yaml {
 
 std::string Location(const Source& source, const YAML::Node& node) {
@@ -72,6 +74,11 @@ double ReadNumber(const Source& source, const YAML::Node& node, const std::strin
   return value;
 }
 
+double ReadOptionalNumber(const Source& source, const YAML::Node& map, const std::string& path,
+                          const char* key, double fallback) {
+  return map[key] ? ReadNumber(source, map[key], Join(path, key)) : fallback;
+}
+
 int ReadInteger(const Source& source, const YAML::Node& node, const std::string& path) {
   const double value = ReadNumber(source, node, path);
   if (!(std::abs(value) <= 1e9) || value != std::floor(value)) {
@@ -109,29 +116,28 @@ std::vector<double> ReadNumbers(const Source& source, const YAML::Node& node,
 
 namespace {
 
-// Follows "a.b[2].c" from `node` as far as it exists; returns the deepest node reached.
+// The node at steps[i..] below `node`, or the deepest one that exists on the way.
 // Recursive on const nodes: assigning yaml-cpp nodes would write into the document.
-YAML::Node Deepest(const YAML::Node& node, const std::string& path) {
-  std::size_t pos = (!path.empty() && path[0] == '.') ? 1 : 0;
-  if (pos >= path.size()) return node;
-  if (path[pos] == '[') {
-    const std::size_t close = path.find(']', pos);
-    const std::size_t index = std::stoul(path.substr(pos + 1, close - pos - 1));
-    if (!node.IsSequence() || index >= node.size()) return node;
-    return Deepest(node[index], path.substr(close + 1));
+YAML::Node Deepest(const YAML::Node& node, const std::vector<KeyPathStep>& steps,
+                   std::size_t i) {
+  if (i == steps.size()) return node;
+  const KeyPathStep& step = steps[i];
+  if (step.key.empty()) {
+    if (!node.IsSequence() || step.index >= node.size()) return node;
+    return Deepest(node[step.index], steps, i + 1);
   }
-  const std::size_t end = path.find_first_of(".[", pos);
-  const std::string key = path.substr(pos, end - pos);
-  if (!node.IsMap() || !node[key].IsDefined()) return node;
-  return Deepest(node[key], end == std::string::npos ? "" : path.substr(end));
+  if (!node.IsMap() || !node[step.key].IsDefined()) return node;
+  return Deepest(node[step.key], steps, i + 1);
 }
 
 }  // namespace
 
 void Relocate(const Source& source, const YAML::Node& block, const std::string& block_path,
               const ParameterError& error) {
-  Fail(source, Deepest(block, error.path()), Join(block_path, error.path()), error.value(),
-       error.rule());
+  // the library writes these paths well formed; a malformed one still points at the block
+  const auto steps = SplitKeyPath(error.path());
+  Fail(source, steps ? Deepest(block, *steps, 0) : block, Join(block_path, error.path()),
+       error.value(), error.rule());
 }
 
 std::string ReadText(const std::string& path) {

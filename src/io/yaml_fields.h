@@ -39,6 +39,9 @@ YAML::Node Required(const Source& source, const YAML::Node& map, const std::stri
 std::string Join(const std::string& path, const std::string& key);
 
 double ReadNumber(const Source& source, const YAML::Node& node, const std::string& path);
+// The number at `map[key]` (its path `path.key`), or `fallback` when the key is absent.
+double ReadOptionalNumber(const Source& source, const YAML::Node& map, const std::string& path,
+                          const char* key, double fallback);
 int ReadInteger(const Source& source, const YAML::Node& node, const std::string& path);
 bool ReadBool(const Source& source, const YAML::Node& node, const std::string& path);
 std::string ReadString(const Source& source, const YAML::Node& node, const std::string& path);
@@ -50,6 +53,18 @@ std::vector<double> ReadNumbers(const Source& source, const YAML::Node& node,
 // is `block_path`) as an InputError placed at the deepest node its path reaches.
 [[noreturn]] void Relocate(const Source& source, const YAML::Node& block,
                            const std::string& block_path, const ParameterError& error);
+
+// Runs `check` (a Validate, or the Parse of a name) and re-throws its ParameterError as
+// Relocate does, placed under `node` (key path `path`).
+template <typename Check>
+void ValidateAt(const Source& source, const YAML::Node& node, const std::string& path,
+                Check check) {
+  try {
+    check();
+  } catch (const ParameterError& error) {
+    Relocate(source, node, path, error);
+  }
+}
 
 // Parses a YAML file; a missing file or a syntax error is an InputError.
 YAML::Node LoadFile(const std::string& path);

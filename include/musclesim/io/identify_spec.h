@@ -9,13 +9,13 @@ namespace musclesim {
 
 // What `musclesim identify` reads (README "Identification"): any subset of the curves.
 struct IdentifySpec {
-  std::string source;
-  std::optional<std::string> passive_csv;   // columns length,tension
-  std::optional<std::string> active_csv;    // columns length,tension
-  int active_count = 3;
-  bool active_nonnegative = false;
-  std::optional<std::string> velocity_csv;  // columns shortening_velocity,tension
-  std::optional<double> velocity_f_iso;     // held fixed when given [N]
+  std::string source;                       // the data file's path, for messages [-]
+  std::optional<std::string> passive_csv;   // path; columns length [m], tension [N]
+  std::optional<std::string> active_csv;    // path; columns length [m], tension [N]
+  int active_count = 3;                     // Gaussians to fit [-], 1 to 12
+  bool active_nonnegative = false;          // keep every amplitude >= 0 [-]
+  std::optional<std::string> velocity_csv;  // path; columns shortening_velocity [m/s], tension [N]
+  std::optional<double> velocity_f_iso;     // held fixed when given [N], > 0
 };
 
 // Reads a data file; CSV paths are relative to it. Throws InputError with file:line:column.

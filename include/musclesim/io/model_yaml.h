@@ -11,9 +11,10 @@
 namespace musclesim {
 
 struct ModelSpec {
-  ModelParams params;              // valid: TensionModel(params) does not throw
-  std::optional<FitSpec> fit;      // the fit the file asked for, if any
-  std::optional<FitResult> fit_result;
+  ModelParams params;                   // valid: TensionModel(params) does not throw; units as
+                                        // in ModelParams
+  std::optional<FitSpec> fit;           // the fit the file asked for, if any; units as in FitSpec
+  std::optional<FitResult> fit_result;  // that fit's result; units as in FitResult
 };
 
 // Reads `path`, checks its top-level keys against the scenario vocabulary and reads its

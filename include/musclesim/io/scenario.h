@@ -14,25 +14,25 @@
 namespace musclesim {
 
 struct OutputSpec {
-  std::string file;             // CSV path, relative to the working directory; "-": stdout
-  double interval = 0.0;        // [s] between rows; 0 with every_step
-  bool every_step = false;      // `interval: steps`: a row per internal step
+  std::string file;             // CSV path [-], relative to the working directory; "-": stdout
+  double interval = 0.0;        // time between rows [s]; 0 with every_step
+  bool every_step = false;      // `interval: steps`: a row per internal step [-]
   std::optional<double> phase_tolerance;  // v_tol [m/s]; default: model.velocity.epsilon
 };
 
 struct ScenarioSpec {
-  std::string name;
-  std::string source;           // the file it came from
-  ModelSpec model;
-  ActuatorParams actuator;
-  double initial_length = 0.0;            // [m]
-  double initial_lengthening_rate = 0.0;  // [m/s]
-  Waveform activation;
-  std::vector<Load> loads;
-  double t_start = 0.0, t_end = 1.0;      // [s]
-  SolverOptions solver;
-  OutputSpec output;
-  std::optional<double> min_length, max_length;  // [m]
+  std::string name;                       // the scenario's name, for messages [-]
+  std::string source;                     // the file it came from [-]
+  ModelSpec model;                        // units as in ModelParams
+  ActuatorParams actuator;                // units as in ActuatorParams
+  double initial_length = 0.0;            // x(t_start) [m], > 0
+  double initial_lengthening_rate = 0.0;  // dx/dt at t_start [m/s]
+  Waveform activation;                    // u(t) [-], within [0, 1]
+  std::vector<Load> loads;                // units as in Load
+  double t_start = 0.0, t_end = 1.0;      // the simulated interval [s], t_end > t_start
+  SolverOptions solver;                   // units as in SolverOptions
+  OutputSpec output;                      // units as in OutputSpec
+  std::optional<double> min_length, max_length;  // stop when x leaves them [m]
 
   RunRequest Request() const;
   double PhaseTolerance() const;

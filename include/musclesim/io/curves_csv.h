@@ -1,0 +1,29 @@
+// The model's curves tabulated as CSV text (`musclesim curves`): f_L and the passive
+// tension over length, or g over shortening velocity, on an evenly spaced grid. Numbers carry
+// 17 significant digits, enough to read back the same doubles.
+#pragma once
+
+#include <string>
+
+#include "musclesim/model/tension.h"
+
+namespace musclesim {
+
+// `count` evenly spaced points from `from` to `to`, both included.
+struct UniformGrid {
+  double from = 0.0;  // first point [m for lengths, m/s for velocities], finite
+  double to = 0.0;    // last point [same unit], finite and > from
+  int count = 0;      // number of points [-], >= 2
+  // The i-th point, i in [0, count) [same unit].
+  double At(int i) const { return from + (to - from) * i / (count - 1); }
+};
+
+// Header "length,f_L,tension_passive", then per grid point the length [m], f_L(x) [-] and
+// T_p(x) [N]. Throws ParameterError ("from", "to" or "count") for a grid breaking its rules.
+std::string FormatLengthCurvesCsv(const TensionModel& model, const UniformGrid& lengths);
+
+// Header "shortening_velocity,g", then per grid point v [m/s] and the eps-regularised
+// g_eps(v) [-]. Throws ParameterError as FormatLengthCurvesCsv does.
+std::string FormatVelocityCurveCsv(const TensionModel& model, const UniformGrid& velocities);
+
+}  // namespace musclesim

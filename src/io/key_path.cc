@@ -1,0 +1,29 @@
+#include "io/key_path.h"
+
+namespace musclesim::yaml {
+
+std::optional<std::vector<KeyPathStep>> SplitKeyPath(const std::string& path) {
+  std::vector<KeyPathStep> steps;
+  std::size_t pos = 0;
+  while (pos < path.size()) {
+    if (path[pos] == '[') {
+      const std::size_t close = path.find(']', pos);
+      if (close == std::string::npos || close == pos + 1) return std::nullopt;
+      const std::string digits = path.substr(pos + 1, close - pos - 1);
+      if (digits.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+      steps.push_back({"", std::stoul(digits)});
+      pos = close + 1;
+      if (pos < path.size() && path[pos] == '.') ++pos;
+    } else {
+      const std::size_t end = path.find_first_of(".[", pos);
+      const std::string key = path.substr(pos, end - pos);
+      if (key.empty()) return std::nullopt;
+      steps.push_back({key, 0});
+      // a dot separates keys; a "[" starts the next step itself
+      pos = end == std::string::npos ? path.size() : (path[end] == '.' ? end + 1 : end);
+    }
+  }
+  return steps;
+}
+
+}  // namespace musclesim::yaml

@@ -1,0 +1,57 @@
+// The dotted key paths of `--set` and of ParameterError: "model.velocity.n", "load[0].value".
+#include "io/key_path.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+namespace musclesim::yaml {
+namespace {
+
+// The steps written back as text, one per step: "a", "[2]".
+std::vector<std::string> Spelled(const std::string& path) {
+  const auto steps = SplitKeyPath(path);
+  if (!steps) return {"malformed"};
+  std::vector<std::string> out;
+  for (const KeyPathStep& step : *steps) {
+    out.push_back(step.key.empty() ? "[" + std::to_string(step.index) + "]" : step.key);
+  }
+  return out;
+}
+
+using Steps = std::vector<std::string>;
+
+TEST(KeyPath, SplitsKeysAndIndices) {
+  EXPECT_EQ(Spelled("model.velocity.n"), (Steps{"model", "velocity", "n"}));
+  EXPECT_EQ(Spelled("load[0].value"), (Steps{"load", "[0]", "value"}));
+  EXPECT_EQ(Spelled("a[2][13]"), (Steps{"a", "[2]", "[13]"}));
+  EXPECT_EQ(Spelled("[1].x"), (Steps{"[1]", "x"}));
+  // a dot on either side of an index is optional
+  EXPECT_EQ(Spelled("gaussians[1]width"), (Steps{"gaussians", "[1]", "width"}));
+  EXPECT_EQ(Spelled("load.[0]"), (Steps{"load", "[0]"}));
+}
+
+TEST(KeyPath, EmptyPathHasNoSteps) {
+  const auto steps = SplitKeyPath("");
+  ASSERT_TRUE(steps.has_value());
+  EXPECT_TRUE(steps->empty());
+}
+
+TEST(KeyPath, OneTrailingDotIsIgnored) {
+  EXPECT_EQ(Spelled("model."), (Steps{"model"}));
+  EXPECT_EQ(Spelled("load[0]."), (Steps{"load", "[0]"}));
+}
+
+TEST(KeyPath, RejectsMalformedPaths) {
+  for (const char* path : {"a..b", ".a", "load[]", "load[x]", "load[-1]", "load[0",
+                           "load[ 1]", "a.b..", "a[1]..b"}) {
+    EXPECT_FALSE(SplitKeyPath(path).has_value()) << path;
+  }
+}
+
+TEST(KeyPath, IndexBeyondSizeTypeIsOutOfRange) {
+  EXPECT_THROW(SplitKeyPath("load[99999999999999999999999]"), std::out_of_range);
+}
+
+}  // namespace
+}  // namespace musclesim::yaml
