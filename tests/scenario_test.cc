@@ -57,7 +57,7 @@ TEST(Scenario, ReadsEveryKey) {
   EXPECT_EQ(s.output.file, "out.csv");
   EXPECT_EQ(s.output.interval, 0.001);
   EXPECT_EQ(*s.min_length, 0.05);
-  EXPECT_EQ(s.PhaseTolerance(), 1e-3);  // defaults to epsilon, MODEL.md section 6
+  EXPECT_EQ(s.PhaseTolerance(), 1e-3);  // defaults to epsilon, docs/model.md section 6
 }
 
 TEST(Scenario, ReadsEveryWaveformAndLoadType) {

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The SciPy side of the work-precision comparison: the same scenario integrated with
 scipy.integrate.solve_ivp (Radau, BDF, LSODA), as a careful SciPy user would write it:
-the model from MODEL.md in scalar `math` (no numpy on two numbers), the analytic Jacobian
+the model from docs/model.md in scalar `math` (no numpy on two numbers), the analytic Jacobian
 given to every method, and the run split at the inputs' breakpoints so that no step
 straddles a jump. Errors against the reference musclesim wrote (work_precision).
 
@@ -37,7 +37,7 @@ def waveform(spec):
 
 
 class Model:
-    """Tension of MODEL.md sections 2-5, with derivatives."""
+    """Tension of docs/model.md sections 2-5, with derivatives."""
 
     def __init__(self, m):
         self.f_iso = num(m["f_iso"])

@@ -1,4 +1,4 @@
-// The actuator/load dynamics of MODEL.md section 6 as a first-order system in y = (x, xdot):
+// The actuator/load dynamics of docs/model.md section 6 as a first-order system in y = (x, xdot):
 //   m_eff xddot = F_load(t, x) - T(x, -xdot, u(t)) - c xdot - k (x - l0)
 // with its analytic Jacobian. Immutable once built; evaluation allocates nothing.
 #pragma once

@@ -1,4 +1,4 @@
-// External loads on the actuator: forces pulling it longer (MODEL.md section 6). A force
+// External loads on the actuator: forces pulling it longer (docs/model.md section 6). A force
 // follows a waveform of time, a spring pulls towards its anchor, a hanging mass adds its
 // weight and its inertia.
 #pragma once

@@ -13,7 +13,7 @@ namespace musclesim {
 enum class Phase { kConcentric, kEccentric, kIsometric };
 std::string_view ToString(Phase phase);
 
-// MODEL.md section 6: concentric if v > tolerance, eccentric if v < -tolerance.
+// docs/model.md section 6: concentric if v > tolerance, eccentric if v < -tolerance.
 inline Phase ClassifyPhase(double shortening_velocity, double tolerance) {
   if (shortening_velocity > tolerance) return Phase::kConcentric;
   if (shortening_velocity < -tolerance) return Phase::kEccentric;

@@ -1,5 +1,5 @@
 // Active tension-length factor: a sum of Gaussians (paper eqs. 3-4) normalised by its
-// maximum over the optimal length range (eq. 13, MODEL.md section 3).
+// maximum over the optimal length range (eq. 13, docs/model.md section 3).
 #pragma once
 
 #include <vector>

@@ -1,4 +1,4 @@
-// The least-squares cost of a sum of Gaussians against a target (MODEL.md section 3.1),
+// The least-squares cost of a sum of Gaussians against a target (docs/model.md section 3.1),
 // in closed form, with its gradient in every amplitude, width and centre.
 //
 // With unit-amplitude components phi_k (so psi_k = a_k phi_k) every target gives

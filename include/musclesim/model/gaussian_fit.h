@@ -1,4 +1,4 @@
-// Fitting a sum of Gaussians to a target by variable projection (MODEL.md section 3.2):
+// Fitting a sum of Gaussians to a target by variable projection (docs/model.md section 3.2):
 // amplitudes from the linear least-squares solve (optionally non-negative), widths and
 // centres by a gradient-based minimiser (NLopt's L-BFGS) of the reduced cost, from a
 // fixed, deterministic set of well-spread starting points; the best result is kept.

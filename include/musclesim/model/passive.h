@@ -1,4 +1,4 @@
-// Passive tension of the parallel elastic element (paper eq. 1, MODEL.md section 2):
+// Passive tension of the parallel elastic element (paper eq. 1, docs/model.md section 2):
 // zero up to the slack length, an exponential above it.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Total tension T = T_p(x) + u f_iso f_L(x) g_eps(v) (paper eqs. 16-17, MODEL.md section 5)
+// Total tension T = T_p(x) + u f_iso f_L(x) g_eps(v) (paper eqs. 16-17, docs/model.md section 5)
 // with its derivatives, which the simulator uses as its analytic Jacobian.
 #pragma once
 

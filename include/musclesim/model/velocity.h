@@ -1,4 +1,4 @@
-// Tension-velocity factor g(v) (paper eq. 12, MODEL.md section 4) with the paper's
+// Tension-velocity factor g(v) (paper eq. 12, docs/model.md section 4) with the paper's
 // epsilon regularisation of sgn(v) |v|^(1/n), which makes g smooth at v = 0.
 #pragma once
 
