@@ -1,14 +1,10 @@
 #include "cli/sweep_mpi.h"
-#include "cli/exit_codes.h"
 
 #include <algorithm>
-#include <iostream>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include "musclesim/errors.h"
 
 #if MUSCLESIM_WITH_MPI
 #include <mpi.h>
@@ -39,10 +35,11 @@ std::string Encode(const std::vector<WorkerPool::Row>& rows) {
 
 // Rank 0: serves requests, runs its own share, gathers every row.
 SweepOutcome Root(const SweepSpec& spec, const SweepRunOptions& options, const MpiSession& mpi,
-                  WorkerPool& pool) {
-  SummaryFile summary(options.output, SummaryHeader(spec), options.resume, PointCount(spec));
+                  SweepObserver& observer, WorkerPool& pool) {
+  const long points = PointCount(spec);
+  SummaryFile summary(options.output, SummaryHeader(spec), options.resume, points);
   const std::vector<long> todo = summary.Remaining();
-  ProgressReport progress(PointCount(spec), summary.Count(), options.quiet);
+  observer.OnProgress(summary.Count(), points);
 
   std::size_t next = 0;
   const auto chunk = [&](int workers) {
@@ -55,10 +52,14 @@ SweepOutcome Root(const SweepSpec& spec, const SweepRunOptions& options, const M
   };
 
   int stopped_ranks = 0;
-  bool closed = false;
+  bool closed = false, stopping = false;
   while (stopped_ranks < mpi.size() - 1 || !pool.Finished()) {
     // feed this rank's own threads
-    if (!closed && (next >= todo.size() || SweepStopRequested())) {
+    if (!stopping && observer.StopRequested()) {
+      pool.Stop();
+      stopping = closed = true;
+    }
+    if (!closed && next >= todo.size()) {
       pool.Close();
       closed = true;
     }
@@ -70,14 +71,14 @@ SweepOutcome Root(const SweepSpec& spec, const SweepRunOptions& options, const M
     MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &waiting, &status);
     if (!waiting) {
       pool.Wait(0.002);
-      progress.Update(summary.Count());
+      observer.OnProgress(summary.Count(), points);
       continue;
     }
     if (status.MPI_TAG == kRequest) {
       int wants[2] = {0, 1};  // {wants more, that rank's threads}
       MPI_Recv(wants, 2, MPI_INT, status.MPI_SOURCE, kRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
       std::vector<long> indices;
-      if (wants[0] != 0 && next < todo.size() && !SweepStopRequested()) indices = chunk(wants[1]);
+      if (wants[0] != 0 && next < todo.size() && !stopping) indices = chunk(wants[1]);
       if (indices.empty()) ++stopped_ranks;
       MPI_Send(indices.data(), static_cast<int>(indices.size()), MPI_LONG, status.MPI_SOURCE, kWork,
                MPI_COMM_WORLD);
@@ -92,23 +93,27 @@ SweepOutcome Root(const SweepSpec& spec, const SweepRunOptions& options, const M
         summary.Add(std::strtol(row.c_str(), nullptr, 10), row, text[start] == 'F');
       }
     }
-    progress.Update(summary.Count());
+    observer.OnProgress(summary.Count(), points);
   }
-  progress.Update(summary.Count(), true);
   return summary.Close();
 }
 
 // Other ranks: ask for chunks while the local queue runs low, send rows back.
-void Worker(WorkerPool& pool) {
-  bool closed = false;
+void Worker(SweepObserver& observer, WorkerPool& pool) {
+  bool closed = false, stopping = false;
   while (!pool.Finished()) {
     const std::vector<WorkerPool::Row> rows = pool.Take();
     if (!rows.empty()) {
       const std::string text = Encode(rows);
       MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, 0, kResult, MPI_COMM_WORLD);
     }
+    // a stop here ends this rank's threads at once; rank 0 hears of it with the next request
+    if (!stopping && observer.StopRequested()) {
+      pool.Stop();
+      stopping = true;
+    }
     if (!closed && pool.Queued() < static_cast<std::size_t>(pool.jobs())) {
-      int wants[2] = {SweepStopRequested() ? 0 : 1, pool.jobs()};
+      int wants[2] = {stopping ? 0 : 1, pool.jobs()};
       MPI_Send(wants, 2, MPI_INT, 0, kRequest, MPI_COMM_WORLD);
       MPI_Status status;
       MPI_Probe(0, kWork, MPI_COMM_WORLD, &status);
@@ -145,17 +150,17 @@ MpiSession::~MpiSession() {
 
 SweepOutcome RunSweepMpi(const SweepSpec& spec, const SweepRunOptions& options,
                          const MpiSession& session) {
+  SweepObserver silent;
+  SweepObserver& observer = options.observer != nullptr ? *options.observer : silent;
   try {
     const ScenarioTemplate base(spec.base);
-    WorkerPool pool(spec, base, options.output, DefaultJobs(options.jobs));
-    if (session.is_root()) return Root(spec, options, session, pool);
-    Worker(pool);
+    WorkerPool pool(spec, base, options.output, WorkerThreads(options.jobs));
+    if (session.is_root()) return Root(spec, options, session, observer, pool);
+    Worker(observer, pool);
     return {};
   } catch (const std::exception& e) {
     // the other ranks would wait for this one forever: end them all
-    std::cerr << "musclesim sweep: rank " << session.rank() << ": " << e.what() << std::endl;
-    MPI_Abort(MPI_COMM_WORLD, dynamic_cast<const InputError*>(&e) != nullptr ? kExitInvalidInput
-                                                                              : kExitFailure);
+    MPI_Abort(MPI_COMM_WORLD, observer.OnRankError(session.rank(), e));
     throw;
   }
 }
