@@ -7,10 +7,12 @@
 #include <cmath>
 #include <filesystem>
 #include <set>
+#include <stdexcept>
 #include <thread>
 #include <utility>
 
 #include "musclesim/errors.h"
+#include "musclesim/studies/sweep_mpi.h"
 #include "musclesim/studies/sweep_runner.h"
 #include "support/scenario_files.h"
 
@@ -284,6 +286,15 @@ TEST(SweepRunner, AStopRequestEndsOnlyTheSweepOfItsObserver) {
   EXPECT_EQ(second.ran, 40);
   EXPECT_EQ(watcher.calls.back().first, 40);
   EXPECT_FALSE(std::filesystem::exists(completed.output + ".partial"));
+}
+
+TEST(SweepMpi, RefusesToRunWithoutAnInitialisedMpi) {
+  // this test program never calls MPI_Init (and may be built without MPI at all)
+  const SweepSpec spec = LoadSweep(WriteSweep("no_mpi", SweepOf(2)));
+  SweepRunOptions options;
+  options.output = testing::WriteTempFile("no_mpi.csv", "");
+  EXPECT_THROW(RunSweepMpi(spec, options), std::logic_error);
+  EXPECT_FALSE(std::filesystem::exists(options.output + ".partial"));
 }
 
 }  // namespace

@@ -9,8 +9,9 @@
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/progress_report.h"
-#include "cli/sweep_mpi.h"
+#include "cli/sweep_mpi_session.h"
 #include "musclesim/errors.h"
+#include "musclesim/studies/sweep_mpi.h"
 #include "musclesim/studies/sweep_runner.h"
 
 namespace musclesim::cli {
@@ -99,7 +100,7 @@ int RunSweepCommand(int argc, char** argv) {
   }
   std::signal(SIGINT, OnStopSignal);
   std::signal(SIGTERM, OnStopSignal);
-  const SweepOutcome outcome = mpi.active() ? RunSweepMpi(spec, options, mpi) : RunSweep(spec, options);
+  const SweepOutcome outcome = mpi.active() ? RunSweepMpi(spec, options) : RunSweep(spec, options);
   if (!mpi.is_root()) return kExitSuccess;
   observer.Finish();
 
