@@ -3,11 +3,16 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
+#include <stdexcept>
+#include <thread>
+#include <utility>
 
 #include "musclesim/errors.h"
+#include "musclesim/studies/sweep_mpi.h"
 #include "musclesim/studies/sweep_runner.h"
 #include "support/scenario_files.h"
 
@@ -144,10 +149,26 @@ std::string SweepOf(long points_per_axis) {
          "time_to_length]\nmetric_options: {window: [0.1, 0.2], target_length: 0.095}\n";
 }
 
+// Records every progress report; asks to stop once `stop_after` rows are in (never if < 0).
+class ProgressLog : public SweepObserver {
+ public:
+  explicit ProgressLog(long stop_after = -1) : stop_after_(stop_after) {}
+  void OnProgress(long done, long total) override { calls.emplace_back(done, total); }
+  bool StopRequested() override {
+    if (stop_after_ < 0 || calls.empty() || calls.back().first < stop_after_) return false;
+    if (stopped_at < 0) stopped_at = calls.back().first;
+    return true;
+  }
+  std::vector<std::pair<long, long>> calls;  // (done, total) per call [points]
+  long stopped_at = -1;                      // rows in when it first asked to stop [points]
+
+ private:
+  long stop_after_;
+};
+
 TEST(SweepRunner, OneAndTwoJobsGiveTheSameSummary) {
   const SweepSpec spec = LoadSweep(WriteSweep("jobs", SweepOf(10)));
   SweepRunOptions options;
-  options.quiet = true;
   options.jobs = 1;
   options.output = testing::WriteTempFile("jobs1.csv", "");
   std::filesystem::remove(options.output);
@@ -166,7 +187,6 @@ TEST(SweepRunner, OneAndTwoJobsGiveTheSameSummary) {
 TEST(SweepRunner, ResumeFromAPartialSummaryGivesTheSameResult) {
   const SweepSpec spec = LoadSweep(WriteSweep("resume", SweepOf(8)));
   SweepRunOptions options;
-  options.quiet = true;
   options.output = testing::WriteTempFile("full.csv", "");
   RunSweep(spec, options);
   const std::string full = testing::SummaryWithoutWallTime(options.output);
@@ -182,9 +202,14 @@ TEST(SweepRunner, ResumeFromAPartialSummaryGivesTheSameResult) {
   options.output = resumed;
   EXPECT_THROW(RunSweep(spec, options), InputError);  // no silent restart over it
   options.resume = true;
+  ProgressLog log;
+  options.observer = &log;
   const SweepOutcome outcome = RunSweep(spec, options);
   EXPECT_EQ(outcome.resumed, 3);
   EXPECT_EQ(outcome.ran, 13);
+  // the first report, before anything runs, counts the three complete rows kept
+  ASSERT_FALSE(log.calls.empty());
+  EXPECT_EQ(log.calls.front(), std::make_pair(3L, 16L));
   EXPECT_EQ(testing::SummaryWithoutWallTime(resumed), full);
 }
 
@@ -193,7 +218,6 @@ TEST(SweepRunner, AFailingPointIsMarkedAndTheRestGoesOn) {
       "parameters:\n  solver.max_steps: [10000000, 20, 10000000]\nmetrics: [final_length]\n",
       "isometric.yaml"));
   SweepRunOptions options;
-  options.quiet = true;
   options.output = testing::WriteTempFile("failing.csv", "");
   const SweepOutcome outcome = RunSweep(spec, options);
   EXPECT_EQ(outcome.failed, 1);
@@ -205,6 +229,72 @@ TEST(SweepRunner, AFailingPointIsMarkedAndTheRestGoesOn) {
   EXPECT_THAT(lines[2], HasSubstr("1,20,failed,,"));
   EXPECT_THAT(lines[2], HasSubstr("CV_TOO_MUCH_WORK"));
   EXPECT_THAT(lines[3], HasSubstr("2,10000000,ok,"));
+}
+
+TEST(SweepRunner, ObserverSeesProgressFromZeroUpToTheTotal) {
+  const SweepSpec spec = LoadSweep(WriteSweep("observed", SweepOf(6)));
+  SweepRunOptions options;
+  options.jobs = 2;
+  options.output = testing::WriteTempFile("observed.csv", "");
+  ProgressLog log;
+  options.observer = &log;
+  const SweepOutcome outcome = RunSweep(spec, options);
+  EXPECT_FALSE(outcome.interrupted);
+  ASSERT_GE(log.calls.size(), 2u);
+  EXPECT_EQ(log.calls.front().first, 0);  // reported before any point ran
+  EXPECT_EQ(log.calls.back().first, 12);  // 6 loads x 2 exponents
+  for (std::size_t i = 0; i < log.calls.size(); ++i) {
+    EXPECT_EQ(log.calls[i].second, 12);
+    if (i > 0) {
+      EXPECT_GE(log.calls[i].first, log.calls[i - 1].first);
+    }
+  }
+}
+
+TEST(SweepRunner, AStopRequestEndsOnlyTheSweepOfItsObserver) {
+  // two sweeps at once in one process: one observer stops after 3 rows, the other never;
+  // the first has far more points than it could run before its observer is asked
+  const SweepSpec long_spec = LoadSweep(WriteSweep("long_sweep", SweepOf(300)));
+  const SweepSpec spec = LoadSweep(WriteSweep("two_sweeps", SweepOf(20)));
+  SweepRunOptions stopped, completed;
+  stopped.jobs = completed.jobs = 1;
+  stopped.output = testing::WriteTempFile("stopped.csv", "");
+  completed.output = testing::WriteTempFile("completed.csv", "");
+  std::filesystem::remove(stopped.output);
+  std::filesystem::remove(stopped.output + ".partial");
+  std::filesystem::remove(completed.output + ".partial");
+  ProgressLog stopper(3), watcher;
+  stopped.observer = &stopper;
+  completed.observer = &watcher;
+
+  SweepOutcome first, second;
+  std::thread other([&] { second = RunSweep(spec, completed); });
+  first = RunSweep(long_spec, stopped);
+  other.join();
+
+  EXPECT_TRUE(first.interrupted);
+  ASSERT_GE(stopper.stopped_at, 3);
+  // rows already in when it asked, plus at most the one point its single thread was running
+  EXPECT_GE(first.ran, stopper.stopped_at);
+  EXPECT_LE(first.ran, stopper.stopped_at + 1);
+  EXPECT_FALSE(std::filesystem::exists(stopped.output));
+  const std::string partial = testing::ReadFile(stopped.output + ".partial");
+  EXPECT_EQ(partial.find(SummaryHeader(long_spec) + "\n"), 0u);
+  EXPECT_EQ(std::count(partial.begin(), partial.end(), '\n'), first.ran + 1);  // and the header
+
+  EXPECT_FALSE(second.interrupted);
+  EXPECT_EQ(second.ran, 40);
+  EXPECT_EQ(watcher.calls.back().first, 40);
+  EXPECT_FALSE(std::filesystem::exists(completed.output + ".partial"));
+}
+
+TEST(SweepMpi, RefusesToRunWithoutAnInitialisedMpi) {
+  // this test program never calls MPI_Init (and may be built without MPI at all)
+  const SweepSpec spec = LoadSweep(WriteSweep("no_mpi", SweepOf(2)));
+  SweepRunOptions options;
+  options.output = testing::WriteTempFile("no_mpi.csv", "");
+  EXPECT_THROW(RunSweepMpi(spec, options), std::logic_error);
+  EXPECT_FALSE(std::filesystem::exists(options.output + ".partial"));
 }
 
 }  // namespace

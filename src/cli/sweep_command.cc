@@ -1,12 +1,17 @@
 // musclesim sweep SWEEP.yaml [-o PATH] [--jobs N] [--resume] [--quiet]
+#include <algorithm>
 #include <csignal>
+#include <cstdlib>
 #include <iostream>
+#include <thread>
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
-#include "cli/sweep_mpi.h"
+#include "cli/progress_report.h"
+#include "cli/sweep_mpi_session.h"
 #include "musclesim/errors.h"
+#include "musclesim/studies/sweep_mpi.h"
 #include "musclesim/studies/sweep_runner.h"
 
 namespace musclesim::cli {
@@ -30,7 +35,36 @@ Exit codes: 0 every point ok, 3 some points failed, 130 interrupted (resume with
 2 invalid input, 1 anything else.
 )";
 
-extern "C" void OnStopSignal(int) { RequestSweepStop(); }
+// set by SIGINT or SIGTERM; the sweep polls it through the observer below
+volatile std::sig_atomic_t stop_signal = 0;
+
+extern "C" void OnStopSignal(int) { stop_signal = 1; }
+
+// The command's view of a sweep: progress on standard error, a stop on SIGINT or SIGTERM,
+// and under MPI a rank's error printed before the job ends with its exit code.
+class CommandObserver final : public SweepObserver {
+ public:
+  explicit CommandObserver(bool quiet) : progress_(quiet) {}
+  void OnProgress(long done, long total) override { progress_.Update(done, total); }
+  bool StopRequested() override { return stop_signal != 0; }
+  int OnRankError(int rank, const std::exception& error) override {
+    std::cerr << "musclesim sweep: rank " << rank << ": " << error.what() << std::endl;
+    return dynamic_cast<const InputError*>(&error) != nullptr ? kExitInvalidInput : kExitFailure;
+  }
+  void Finish() { progress_.Finish(); }
+
+ private:
+  ProgressReport progress_;
+};
+
+// Worker threads when --jobs is not given: every core, shared among the MPI ranks that
+// mpirun started on this host.
+int DefaultJobs() {
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const char* local_ranks = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+  const int ranks = local_ranks != nullptr ? std::max(1, std::atoi(local_ranks)) : 1;
+  return std::max(1, cores / ranks);
+}
 
 }  // namespace
 
@@ -43,6 +77,7 @@ int SweepCommand(int argc, char** argv) {
   }
   if (args.positional.size() != 1) throw UsageError("expected one sweep file (see --help)");
   SweepRunOptions options;
+  options.jobs = DefaultJobs();
   if (args.Has("--jobs")) {
     const std::string text = args.Value("--jobs");
     char* end = nullptr;
@@ -53,7 +88,9 @@ int SweepCommand(int argc, char** argv) {
     options.jobs = static_cast<int>(jobs);
   }
   options.resume = args.Has("--resume");
-  options.quiet = args.Has("--quiet");
+  const bool quiet = args.Has("--quiet");
+  CommandObserver observer(quiet);
+  options.observer = &observer;
 
   MpiSession mpi(argc, argv);  // MPI_Init only when launched by mpirun
   const SweepSpec spec = LoadSweep(args.positional[0]);
@@ -63,8 +100,9 @@ int SweepCommand(int argc, char** argv) {
   }
   std::signal(SIGINT, OnStopSignal);
   std::signal(SIGTERM, OnStopSignal);
-  const SweepOutcome outcome = mpi.active() ? RunSweepMpi(spec, options, mpi) : RunSweep(spec, options);
+  const SweepOutcome outcome = mpi.active() ? RunSweepMpi(spec, options) : RunSweep(spec, options);
   if (!mpi.is_root()) return kExitSuccess;
+  observer.Finish();
 
   if (outcome.interrupted) {
     std::cerr << "musclesim sweep: interrupted: " << outcome.resumed + outcome.ran << " of "
@@ -72,7 +110,7 @@ int SweepCommand(int argc, char** argv) {
               << ".partial; run again with --resume to finish\n";
     return kExitInterrupted;
   }
-  if (!options.quiet) {
+  if (!quiet) {
     std::cerr << "musclesim sweep: " << outcome.points << " points (" << outcome.ran << " run now, "
               << outcome.resumed << " resumed), " << outcome.failed << " failed -> "
               << options.output << "\n";

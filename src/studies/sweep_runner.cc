@@ -1,13 +1,10 @@
 #include "musclesim/studies/sweep_runner.h"
 
-#include <unistd.h>
-
+#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -19,12 +16,6 @@
 namespace musclesim {
 
 namespace {
-
-volatile std::sig_atomic_t stop_requested = 0;
-
-double Now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 // RFC 4180 quoting for the free-text message column.
 std::string CsvField(const std::string& text) {
@@ -40,9 +31,6 @@ std::string CsvField(const std::string& text) {
 std::string MetricField(double value) { return std::isfinite(value) ? FormatFull(value) : ""; }
 
 }  // namespace
-
-void RequestSweepStop() { stop_requested = 1; }
-bool SweepStopRequested() { return stop_requested != 0; }
 
 std::string SummaryHeader(const SweepSpec& spec) {
   // appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "," + std::string
@@ -187,32 +175,6 @@ SweepOutcome SummaryFile::Close() {
   return outcome;
 }
 
-ProgressReport::ProgressReport(long total, long already_done, bool quiet)
-    : total_(total), start_done_(already_done), quiet_(quiet), terminal_(::isatty(2) != 0),
-      start_(Now()) {}
-
-void ProgressReport::Update(long done, bool final) {
-  if (quiet_) return;
-  const double now = Now();
-  if (!final && now - last_print_ < (terminal_ ? 0.2 : 10.0)) return;
-  last_print_ = now;
-  const double elapsed = now - start_;
-  const double rate = elapsed > 0 ? (done - start_done_) / elapsed : 0.0;
-  const double eta = rate > 0 ? (total_ - done) / rate : 0.0;
-  char text[160];
-  if (terminal_) {
-    const int width = 30;
-    const int filled = total_ > 0 ? static_cast<int>(width * done / total_) : width;
-    std::snprintf(text, sizeof text, "\r[%.*s%*s] %ld/%ld  %.1f runs/s  ETA %.0f s ", filled,
-                  "##############################", width - filled, "", done, total_, rate, eta);
-    std::cerr << text << (final ? "\n" : "") << std::flush;
-  } else {
-    std::snprintf(text, sizeof text, "sweep: %ld/%ld points, %.1f runs/s, ETA %.0f s\n", done,
-                  total_, rate, eta);
-    std::cerr << text << std::flush;
-  }
-}
-
 WorkerPool::WorkerPool(const SweepSpec& spec, const ScenarioTemplate& base, std::string output,
                        int jobs) {
   running_ = jobs;
@@ -240,8 +202,8 @@ void WorkerPool::Work(const SweepSpec& spec, const ScenarioTemplate& base,
       long index = 0;
       {
         std::unique_lock<std::mutex> lock(mutex_);
-        work_ready_.wait(lock, [this] { return !queue_.empty() || closed_ || SweepStopRequested(); });
-        if (queue_.empty() || SweepStopRequested()) break;
+        work_ready_.wait(lock, [this] { return !queue_.empty() || closed_; });
+        if (queue_.empty()) break;
         index = queue_.front();
         queue_.pop_front();
       }
@@ -272,6 +234,13 @@ void WorkerPool::Close() {
   work_ready_.notify_all();
 }
 
+void WorkerPool::Stop() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  queue_.clear();
+  closed_ = true;
+  work_ready_.notify_all();
+}
+
 std::vector<WorkerPool::Row> WorkerPool::Take() {
   std::lock_guard<std::mutex> lock(mutex_);
   std::vector<Row> rows;
@@ -291,38 +260,40 @@ bool WorkerPool::Finished() const {
 
 void WorkerPool::Wait(double seconds) {
   std::unique_lock<std::mutex> lock(mutex_);
-  // a stop request comes from a signal handler, which cannot notify: poll for it
   row_ready_.wait_for(lock, std::chrono::duration<double>(seconds),
                       [this] { return !done_.empty() || running_ == 0 || error_; });
   if (error_) std::rethrow_exception(error_);
-  if (SweepStopRequested()) work_ready_.notify_all();
 }
 
-int DefaultJobs(int jobs) {
+int WorkerThreads(int jobs) {
   if (jobs > 0) return jobs;
-  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  // under mpirun, share this host's cores among its ranks
-  const char* local_ranks = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
-  const int ranks = local_ranks != nullptr ? std::max(1, std::atoi(local_ranks)) : 1;
-  return std::max(1, cores / ranks);
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
 SweepOutcome RunSweep(const SweepSpec& spec, const SweepRunOptions& options) {
-  SummaryFile summary(options.output, SummaryHeader(spec), options.resume, PointCount(spec));
+  SweepObserver silent;
+  SweepObserver& observer = options.observer != nullptr ? *options.observer : silent;
+  const long points = PointCount(spec);
+  SummaryFile summary(options.output, SummaryHeader(spec), options.resume, points);
   const std::vector<long> todo = summary.Remaining();
-  ProgressReport progress(PointCount(spec), summary.Count(), options.quiet);
+  observer.OnProgress(summary.Count(), points);
 
   const ScenarioTemplate base(spec.base);
   WorkerPool pool(spec, base, options.output,
-                  std::min<long>(DefaultJobs(options.jobs), std::max<long>(1, todo.size())));
+                  std::min<long>(WorkerThreads(options.jobs), std::max<long>(1, todo.size())));
   pool.Push(todo);
   pool.Close();
+  bool stopping = false;
   while (!pool.Finished()) {
+    // the observer is asked on this thread only, so it need not be thread-safe
+    if (!stopping && observer.StopRequested()) {
+      pool.Stop();
+      stopping = true;
+    }
     pool.Wait(0.2);
     for (const WorkerPool::Row& row : pool.Take()) summary.Add(row.index, row.text, row.failed);
-    progress.Update(summary.Count());
+    observer.OnProgress(summary.Count(), points);
   }
-  progress.Update(summary.Count(), true);
   return summary.Close();
 }
 

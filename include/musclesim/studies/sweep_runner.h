@@ -1,7 +1,7 @@
 // Running a sweep: points on worker threads with dynamic scheduling (each thread reuses one
 // Simulation), rows flushed to PATH.partial as they finish, the summary CSV written
 // atomically at the end with rows sorted by index. With MPI (sweep_mpi.h) the same rows are
-// spread over ranks.
+// spread over ranks. Progress and cancellation go through a SweepObserver (sweep_observer.h).
 #pragma once
 
 #include <condition_variable>
@@ -17,6 +17,7 @@
 
 #include "musclesim/io/scenario.h"
 #include "musclesim/studies/sweep.h"
+#include "musclesim/studies/sweep_observer.h"
 
 namespace musclesim {
 
@@ -41,9 +42,9 @@ class PointRunner {
 
 struct SweepRunOptions {
   std::string output;   // summary CSV path; PATH.partial holds the rows done so far
-  int jobs = 0;         // worker threads; 0: every core
+  int jobs = 0;         // worker threads (per MPI rank); 0: std::thread::hardware_concurrency
   bool resume = false;  // skip the indices already in PATH.partial
-  bool quiet = false;   // no progress on standard error
+  SweepObserver* observer = nullptr;  // not owned; null: no progress, never stops early
 };
 
 struct SweepOutcome {
@@ -80,10 +81,6 @@ class SummaryFile {
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> partial_;
 };
 
-// Asks running sweeps to stop taking new points (safe to call from a signal handler).
-void RequestSweepStop();
-bool SweepStopRequested();
-
 // Worker threads that run the points pushed to them, each thread with its own
 // PointRunner, taking the next queued index as soon as it is free (dynamic scheduling).
 class WorkerPool {
@@ -101,6 +98,7 @@ class WorkerPool {
 
   void Push(const std::vector<long>& indices);  // queue more points
   void Close();                                 // no more points will come
+  void Stop();                                  // drop queued points, close; running ones finish
   std::vector<Row> Take();                      // rows finished since the last call
   std::size_t Queued() const;                   // points not yet started
   bool Finished() const;                        // closed, and every thread has stopped
@@ -122,23 +120,13 @@ class WorkerPool {
   std::vector<std::thread> threads_;
 };
 
-// Worker threads for `jobs` (0: every core, shared among the MPI ranks of this host).
-int DefaultJobs(int jobs);
+// Worker threads for `jobs`: `jobs` itself when > 0, otherwise one per core
+// (std::thread::hardware_concurrency, at least 1).
+int WorkerThreads(int jobs);
 
-// Runs every point not yet in the summary on `jobs` threads of this process.
+// Runs every point not yet in the summary on `options.jobs` threads of this process,
+// reporting to `options.observer`. Throws InputError when PATH.partial exists without
+// `resume` or belongs to another sweep, and rethrows a worker's I/O error.
 SweepOutcome RunSweep(const SweepSpec& spec, const SweepRunOptions& options);
-
-// Progress on standard error: a bar with rate and ETA on a terminal, a plain line every
-// ten seconds otherwise.
-class ProgressReport {
- public:
-  ProgressReport(long total, long already_done, bool quiet);
-  void Update(long done, bool final = false);
-
- private:
-  long total_, start_done_;
-  bool quiet_, terminal_;
-  double start_, last_print_ = -1e9;
-};
 
 }  // namespace musclesim

@@ -1,68 +1,68 @@
-#include "cli/sweep_mpi.h"
-#include "cli/exit_codes.h"
+#include "musclesim/studies/sweep_mpi.h"
 
 #include <algorithm>
-#include <iostream>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "musclesim/errors.h"
-
 #if MUSCLESIM_WITH_MPI
 #include <mpi.h>
 #endif
 
-namespace musclesim::cli {
+namespace musclesim {
 
 #if MUSCLESIM_WITH_MPI
 
 namespace {
 
 enum Tag : int {
-  kRequest = 1,  // worker -> root: one int, 1 for more work, 0 when it stops
+  kRequest = 1,  // worker -> root: {1 for more work or 0 when it stops, its thread count}
   kWork = 2,     // root -> worker: indices (longs); none means stop
   kResult = 3,   // worker -> root: finished rows, one per line, "F" or "O" in front
 };
 
-bool LaunchedByMpirun() {
-  return std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr || std::getenv("PMI_SIZE") != nullptr ||
-         std::getenv("PMIX_RANK") != nullptr;
-}
-
 std::string Encode(const std::vector<WorkerPool::Row>& rows) {
   std::string text;
-  for (const WorkerPool::Row& row : rows) text.append(row.failed ? "F" : "O").append(row.text).append("\n");
+  for (const WorkerPool::Row& row : rows) {
+    text.append(row.failed ? "F" : "O").append(row.text).append("\n");
+  }
   return text;
 }
 
 // Rank 0: serves requests, runs its own share, gathers every row.
-SweepOutcome Root(const SweepSpec& spec, const SweepRunOptions& options, const MpiSession& mpi,
-                  WorkerPool& pool) {
-  SummaryFile summary(options.output, SummaryHeader(spec), options.resume, PointCount(spec));
+SweepOutcome Root(const SweepSpec& spec, const SweepRunOptions& options, int ranks,
+                  SweepObserver& observer, WorkerPool& pool) {
+  const long points = PointCount(spec);
+  SummaryFile summary(options.output, SummaryHeader(spec), options.resume, points);
   const std::vector<long> todo = summary.Remaining();
-  ProgressReport progress(PointCount(spec), summary.Count(), options.quiet);
+  observer.OnProgress(summary.Count(), points);
 
   std::size_t next = 0;
   const auto chunk = [&](int workers) {
     // small chunks near the end keep every rank busy until the last point
     const std::size_t left = todo.size() - next;
-    const std::size_t size = std::clamp<std::size_t>(left / (4 * mpi.size() * workers), 1, 64);
+    const std::size_t size = std::clamp<std::size_t>(left / (4 * ranks * workers), 1, 64);
     std::vector<long> indices(todo.begin() + next, todo.begin() + next + std::min(size, left));
     next += indices.size();
     return indices;
   };
 
   int stopped_ranks = 0;
-  bool closed = false;
-  while (stopped_ranks < mpi.size() - 1 || !pool.Finished()) {
+  bool closed = false, stopping = false;
+  while (stopped_ranks < ranks - 1 || !pool.Finished()) {
     // feed this rank's own threads
-    if (!closed && (next >= todo.size() || SweepStopRequested())) {
+    if (!stopping && observer.StopRequested()) {
+      pool.Stop();
+      stopping = closed = true;
+    }
+    if (!closed && next >= todo.size()) {
       pool.Close();
       closed = true;
     }
-    if (!closed && pool.Queued() < static_cast<std::size_t>(pool.jobs())) pool.Push(chunk(pool.jobs()));
+    if (!closed && pool.Queued() < static_cast<std::size_t>(pool.jobs())) {
+      pool.Push(chunk(pool.jobs()));
+    }
     for (const WorkerPool::Row& row : pool.Take()) summary.Add(row.index, row.text, row.failed);
 
     int waiting = 0;
@@ -70,45 +70,50 @@ SweepOutcome Root(const SweepSpec& spec, const SweepRunOptions& options, const M
     MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &waiting, &status);
     if (!waiting) {
       pool.Wait(0.002);
-      progress.Update(summary.Count());
+      observer.OnProgress(summary.Count(), points);
       continue;
     }
     if (status.MPI_TAG == kRequest) {
       int wants[2] = {0, 1};  // {wants more, that rank's threads}
       MPI_Recv(wants, 2, MPI_INT, status.MPI_SOURCE, kRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
       std::vector<long> indices;
-      if (wants[0] != 0 && next < todo.size() && !SweepStopRequested()) indices = chunk(wants[1]);
+      if (wants[0] != 0 && next < todo.size() && !stopping) indices = chunk(wants[1]);
       if (indices.empty()) ++stopped_ranks;
-      MPI_Send(indices.data(), static_cast<int>(indices.size()), MPI_LONG, status.MPI_SOURCE, kWork,
-               MPI_COMM_WORLD);
+      MPI_Send(indices.data(), static_cast<int>(indices.size()), MPI_LONG, status.MPI_SOURCE,
+               kWork, MPI_COMM_WORLD);
     } else if (status.MPI_TAG == kResult) {
       int bytes = 0;
       MPI_Get_count(&status, MPI_CHAR, &bytes);
       std::string text(static_cast<std::size_t>(bytes), '\0');
-      MPI_Recv(text.data(), bytes, MPI_CHAR, status.MPI_SOURCE, kResult, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      MPI_Recv(text.data(), bytes, MPI_CHAR, status.MPI_SOURCE, kResult, MPI_COMM_WORLD,
+               MPI_STATUS_IGNORE);
       std::size_t start = 0;
       for (std::size_t end; (end = text.find('\n', start)) != std::string::npos; start = end + 1) {
         const std::string row = text.substr(start + 1, end - start - 1);
         summary.Add(std::strtol(row.c_str(), nullptr, 10), row, text[start] == 'F');
       }
     }
-    progress.Update(summary.Count());
+    observer.OnProgress(summary.Count(), points);
   }
-  progress.Update(summary.Count(), true);
   return summary.Close();
 }
 
 // Other ranks: ask for chunks while the local queue runs low, send rows back.
-void Worker(WorkerPool& pool) {
-  bool closed = false;
+void Worker(SweepObserver& observer, WorkerPool& pool) {
+  bool closed = false, stopping = false;
   while (!pool.Finished()) {
     const std::vector<WorkerPool::Row> rows = pool.Take();
     if (!rows.empty()) {
       const std::string text = Encode(rows);
       MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, 0, kResult, MPI_COMM_WORLD);
     }
+    // a stop here ends this rank's threads at once; rank 0 hears of it with the next request
+    if (!stopping && observer.StopRequested()) {
+      pool.Stop();
+      stopping = true;
+    }
     if (!closed && pool.Queued() < static_cast<std::size_t>(pool.jobs())) {
-      int wants[2] = {SweepStopRequested() ? 0 : 1, pool.jobs()};
+      int wants[2] = {stopping ? 0 : 1, pool.jobs()};
       MPI_Send(wants, 2, MPI_INT, 0, kRequest, MPI_COMM_WORLD);
       MPI_Status status;
       MPI_Probe(0, kWork, MPI_COMM_WORLD, &status);
@@ -129,46 +134,37 @@ void Worker(WorkerPool& pool) {
 
 }  // namespace
 
-MpiSession::MpiSession(int& argc, char**& argv) {
-  if (!LaunchedByMpirun()) return;
-  int provided = 0;
-  // only the main thread of each rank calls MPI
-  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
-  initialised_ = true;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-  MPI_Comm_size(MPI_COMM_WORLD, &size_);
-}
-
-MpiSession::~MpiSession() {
-  if (initialised_) MPI_Finalize();
-}
-
-SweepOutcome RunSweepMpi(const SweepSpec& spec, const SweepRunOptions& options,
-                         const MpiSession& session) {
+SweepOutcome RunSweepMpi(const SweepSpec& spec, const SweepRunOptions& options) {
+  int initialised = 0, finalised = 0;
+  MPI_Initialized(&initialised);
+  MPI_Finalized(&finalised);
+  if (initialised == 0 || finalised != 0) {
+    throw std::logic_error("RunSweepMpi: MPI is not initialised (call MPI_Init_thread first)");
+  }
+  SweepObserver silent;
+  SweepObserver& observer = options.observer != nullptr ? *options.observer : silent;
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   try {
     const ScenarioTemplate base(spec.base);
-    WorkerPool pool(spec, base, options.output, DefaultJobs(options.jobs));
-    if (session.is_root()) return Root(spec, options, session, pool);
-    Worker(pool);
+    WorkerPool pool(spec, base, options.output, WorkerThreads(options.jobs));
+    if (rank == 0) return Root(spec, options, ranks, observer, pool);
+    Worker(observer, pool);
     return {};
   } catch (const std::exception& e) {
     // the other ranks would wait for this one forever: end them all
-    std::cerr << "musclesim sweep: rank " << session.rank() << ": " << e.what() << std::endl;
-    MPI_Abort(MPI_COMM_WORLD, dynamic_cast<const InputError*>(&e) != nullptr ? kExitInvalidInput
-                                                                              : kExitFailure);
+    MPI_Abort(MPI_COMM_WORLD, observer.OnRankError(rank, e));
     throw;
   }
 }
 
-#else  // built without MPI: a session is never active
+#else  // built without MPI
 
-MpiSession::MpiSession(int&, char**&) {}
-MpiSession::~MpiSession() = default;
-
-SweepOutcome RunSweepMpi(const SweepSpec&, const SweepRunOptions&, const MpiSession&) {
-  throw std::logic_error("musclesim was built without MPI (-DMUSCLESIM_WITH_MPI=ON)");
+SweepOutcome RunSweepMpi(const SweepSpec&, const SweepRunOptions&) {
+  throw std::logic_error("RunSweepMpi: musclesim was built without MPI (-DMUSCLESIM_WITH_MPI=ON)");
 }
 
 #endif
 
-}  // namespace musclesim::cli
+}  // namespace musclesim
