@@ -12,11 +12,13 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 cmake --install "$build" --prefix "$work/prefix" > /dev/null
-# only public headers are installed: nothing from src/
-if find "$work/prefix/include" -name '*.h' | grep -q 'yaml_fields\|model_yaml_node'; then
-  echo "check_install: a private header was installed" >&2
-  exit 1
-fi
+# only public headers are installed: none of the private ones in src/
+for private in $(cd src && find . -name '*.h' -printf '%f\n'); do
+  if find "$work/prefix/include" -name "$private" | grep -q .; then
+    echo "check_install: the private header $private was installed" >&2
+    exit 1
+  fi
+done
 
 # the exported interface names real targets only (no empty $<LINK_ONLY:>)
 if grep -q 'LINK_ONLY:>' "$work"/prefix/lib*/cmake/musclesim/*.cmake; then

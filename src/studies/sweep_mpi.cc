@@ -1,4 +1,5 @@
 #include "musclesim/studies/sweep_mpi.h"
+#include "studies/sweep_workers.h"
 
 #include <algorithm>
 #include <cstdlib>

@@ -1,4 +1,5 @@
 #include "musclesim/studies/sweep_runner.h"
+#include "studies/sweep_workers.h"
 
 #include <algorithm>
 #include <chrono>

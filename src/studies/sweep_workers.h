@@ -1,0 +1,105 @@
+// Private: the machinery of a sweep, shared by the thread and MPI runners: one point's
+// runner, the summary file with its partial, and the pool of worker threads.
+#pragma once
+
+#include <condition_variable>
+#include <cstdio>
+#include <deque>
+#include <exception>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "musclesim/io/scenario.h"
+#include "musclesim/studies/sweep_runner.h"
+
+namespace musclesim {
+
+// Runs single points. One per thread: it owns its template copy, Simulation and buffers.
+class PointRunner {
+ public:
+  // `output` is the summary path, which names the trajectory folder.
+  PointRunner(const SweepSpec& spec, const ScenarioTemplate& base, std::string output);
+  ~PointRunner();
+
+  // Runs point `index` and returns its summary row (no newline); `failed` tells its status.
+  std::string Run(long index, bool& failed);
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+// The rows of a sweep, kept in PATH.partial while it runs and written to PATH at the end.
+class SummaryFile {
+ public:
+  // Opens PATH.partial: on `resume` it keeps the complete rows already there (the header
+  // must match), otherwise it refuses to overwrite one (InputError) and starts it anew.
+  SummaryFile(std::string path, std::string header, bool resume, long points);
+
+  long Count() const { return static_cast<long>(rows_.size()); }
+  // The indices not yet in the summary, in order.
+  std::vector<long> Remaining() const;
+  // Appends one finished row and flushes it. Not thread-safe: callers serialise.
+  void Add(long index, const std::string& row, bool failed);
+  // The sweep's outcome; when every point is in, writes PATH atomically with the rows
+  // sorted by index and removes PATH.partial.
+  SweepOutcome Close();
+  const std::string& partial_path() const { return partial_path_; }
+
+ private:
+  std::string path_, partial_path_, header_;
+  long points_ = 0;
+  long resumed_ = 0;  // rows taken from an earlier PATH.partial
+  std::map<long, std::string> rows_;
+  long failed_ = 0;
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> partial_;
+};
+
+// Worker threads that run the points pushed to them, each thread with its own
+// PointRunner, taking the next queued index as soon as it is free (dynamic scheduling).
+class WorkerPool {
+ public:
+  struct Row {
+    long index;
+    std::string text;
+    bool failed;
+  };
+
+  WorkerPool(const SweepSpec& spec, const ScenarioTemplate& base, std::string output, int jobs);
+  ~WorkerPool();  // closes and joins
+  WorkerPool(const WorkerPool&) = delete;
+  WorkerPool& operator=(const WorkerPool&) = delete;
+
+  void Push(const std::vector<long>& indices);  // queue more points
+  void Close();                                 // no more points will come
+  void Stop();                                  // drop queued points, close; running ones finish
+  std::vector<Row> Take();                      // rows finished since the last call
+  std::size_t Queued() const;                   // points not yet started
+  bool Finished() const;                        // closed, and every thread has stopped
+  // Waits until a row finishes, a thread stops, or `seconds` pass. Rethrows a worker's
+  // exception (an I/O error, say).
+  void Wait(double seconds);
+  int jobs() const { return static_cast<int>(threads_.size()); }
+
+ private:
+  void Work(const SweepSpec& spec, const ScenarioTemplate& base, const std::string& output);
+
+  mutable std::mutex mutex_;
+  std::condition_variable work_ready_, row_ready_;
+  std::deque<long> queue_;
+  std::vector<Row> done_;
+  bool closed_ = false;
+  int running_ = 0;
+  std::exception_ptr error_;
+  std::vector<std::thread> threads_;
+};
+
+// Worker threads for `jobs`: `jobs` itself when > 0, otherwise one per core
+// (std::thread::hardware_concurrency, at least 1).
+int WorkerThreads(int jobs);
+
+}  // namespace musclesim
