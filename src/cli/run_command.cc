@@ -8,6 +8,7 @@
 #include "musclesim/io/output_file.h"
 #include "musclesim/io/peak_speed.h"
 #include "musclesim/io/trajectory_csv.h"
+#include "musclesim/io/run_scenario.h"
 #include "musclesim/io/scenario.h"
 
 namespace musclesim::cli {
@@ -47,28 +48,38 @@ int RunCommand(int argc, char** argv) {
     throw InputError(spec.source + ": no output file: set output.file or pass -o PATH");
   }
 
-  const ActuatorSystem system(spec.model.params, spec.actuator, spec.activation, spec.loads);
+  // rows stream to PATH.partial as they are recorded; PATH is replaced only on success
+  StreamedOutput csv(output);
+  TrajectoryCsvWriter writer(csv, spec.PhaseTolerance());
+  struct Watch final : TrajectorySink {
+    TrajectorySink* next;
+    PeakSpeed peak;
+    void Record(const TrajectoryPoint& point) override {
+      peak.Observe(point);
+      next->Record(point);
+    }
+  } watch;
+  watch.next = &writer;
+  watch.peak.v_max = spec.model.params.velocity.v_max;
   Simulation simulation;
-  std::vector<TrajectoryPoint> trajectory;
-  const RunStats stats = simulation.Run(system, spec.solver, spec.Request(), trajectory);
-  const std::string csv = FormatTrajectoryCsv(trajectory, spec.PhaseTolerance());
+  const RunStats stats = simulation.Run(BuildSystem(spec), spec.solver, spec.Request(), watch);
+  writer.Flush();
   if (args.Has("--stats")) WriteOutput(args.Value("--stats"), FormatStatsJson(stats));
 
   const bool quiet = args.Has("--quiet");
   const std::string label = spec.name.empty() ? spec.source : spec.name;
   if (stats.status == RunStatus::kFailed) {
-    const std::string partial = output == "-" ? "-" : output + ".partial";
-    WriteOutput(partial, csv);
+    const std::string& partial = csv.written_path();
     std::cerr << "musclesim run: " << label << ": solver failure: " << stats.message << "\n"
-              << "musclesim run: the " << trajectory.size() << " rows computed so far are in "
+              << "musclesim run: the " << writer.rows() << " rows computed so far are in "
               << (partial == "-" ? std::string("standard output") : partial)
-              << (output == "-" ? "" : "; " + output + " was left as it was") << "\n";
+              << (csv.in_place() ? "" : "; " + output + " was left as it was") << "\n";
     return kExitSolverFailure;
   }
-  WriteOutput(output, csv);
+  csv.Commit();
 
   if (!quiet) {
-    const PeakSpeed peak = FindPeakSpeed(trajectory, spec.model.params.velocity.v_max);
+    const PeakSpeed& peak = watch.peak;
     if (peak.beyond_v_max()) {
       std::cerr << "musclesim run: note: |shortening velocity| reached "
                 << FormatNumber(peak.speed) << " m/s, beyond v_max = " << FormatNumber(peak.v_max)
@@ -78,7 +89,7 @@ int RunCommand(int argc, char** argv) {
     std::cerr << "musclesim run: " << label << ": " << ToString(stats.status) << " at t = "
               << FormatNumber(stats.final_time) << " s: " << stats.steps << " steps, "
               << stats.rhs_evals << " RHS evaluations, " << stats.wall_seconds * 1e3
-              << " ms, final length " << FormatNumber(trajectory.back().sample.length) << " m -> "
+              << " ms, final length " << FormatNumber(writer.last().sample.length) << " m -> "
               << output << "\n";
   }
   return kExitSuccess;

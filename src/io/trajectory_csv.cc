@@ -15,23 +15,50 @@ std::string_view ToString(Phase phase) {
   return "?";
 }
 
+void AppendTrajectoryRow(std::string& csv, const TrajectoryPoint& p, double phase_tolerance) {
+  const ActuatorSample& s = p.sample;
+  for (double value : {p.t, s.length, s.shortening_velocity, s.activation, s.tension.passive,
+                       s.tension.active, s.tension.total, s.load}) {
+    csv += FormatFull(value);
+    csv += ',';
+  }
+  csv += ToString(ClassifyPhase(s.shortening_velocity, phase_tolerance));
+  csv += '\n';
+}
+
 std::string FormatTrajectoryCsv(const std::vector<TrajectoryPoint>& trajectory,
                                 double phase_tolerance) {
   std::string csv;
   csv.reserve(200 * (trajectory.size() + 1));
   csv += kTrajectoryHeader;
   csv += '\n';
-  for (const TrajectoryPoint& p : trajectory) {
-    const ActuatorSample& s = p.sample;
-    for (double value : {p.t, s.length, s.shortening_velocity, s.activation, s.tension.passive,
-                         s.tension.active, s.tension.total, s.load}) {
-      csv += FormatFull(value);
-      csv += ',';
-    }
-    csv += ToString(ClassifyPhase(s.shortening_velocity, phase_tolerance));
-    csv += '\n';
-  }
+  for (const TrajectoryPoint& p : trajectory) AppendTrajectoryRow(csv, p, phase_tolerance);
   return csv;
+}
+
+namespace {
+
+constexpr std::size_t kBlockBytes = 1 << 16;
+
+}  // namespace
+
+TrajectoryCsvWriter::TrajectoryCsvWriter(StreamedOutput& output, double phase_tolerance)
+    : output_(output), phase_tolerance_(phase_tolerance) {
+  buffer_.reserve(kBlockBytes + 512);
+  buffer_ += kTrajectoryHeader;
+  buffer_ += '\n';
+}
+
+void TrajectoryCsvWriter::Record(const TrajectoryPoint& point) {
+  AppendTrajectoryRow(buffer_, point, phase_tolerance_);
+  ++rows_;
+  last_ = point;
+  if (buffer_.size() >= kBlockBytes) Flush();
+}
+
+void TrajectoryCsvWriter::Flush() {
+  output_.Write(buffer_);
+  buffer_.clear();
 }
 
 namespace {

@@ -3,6 +3,8 @@
 // which whoever reads the result should be told. Data only; the caller words the note.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "musclesim/solver/simulation.h"
@@ -16,6 +18,10 @@ struct PeakSpeed {
   // speed / v_max [-]: above 1 the run left [-v_max, v_max].
   double ratio() const { return speed / v_max; }
   bool beyond_v_max() const { return speed > v_max; }
+  // Takes one more point into account, for runs whose points are not kept.
+  void Observe(const TrajectoryPoint& point) {
+    speed = std::max(speed, std::abs(point.sample.shortening_velocity));
+  }
 };
 
 // Scans every point of `trajectory` (an empty one gives speed 0). `v_max` [m/s] is the

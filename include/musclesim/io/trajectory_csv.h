@@ -1,11 +1,12 @@
-// Turning a finished run into text: the trajectory CSV and the stats JSON. Formatting
-// happens here, after integration, never inside the solver loop.
+// Turning a run into text: the trajectory CSV (whole, or streamed row by row as the run
+// records them) and the stats JSON. Formatting never happens inside the right-hand side.
 #pragma once
 
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "musclesim/io/output_file.h"
 #include "musclesim/solver/simulation.h"
 
 namespace musclesim {
@@ -28,6 +29,29 @@ inline constexpr std::string_view kTrajectoryHeader =
 // Header and one row per point, numbers with 17 significant digits.
 std::string FormatTrajectoryCsv(const std::vector<TrajectoryPoint>& trajectory,
                                 double phase_tolerance);
+
+// Appends one CSV row (with its newline) for `point` to `csv`.
+void AppendTrajectoryRow(std::string& csv, const TrajectoryPoint& point, double phase_tolerance);
+
+// Streams a run's CSV into `output` as the simulation records it: the header at once, rows
+// in blocks of about 64 KiB, so that memory does not grow with the run's length. Keeps the
+// count of rows and the last point. Flush() before committing the output.
+class TrajectoryCsvWriter final : public TrajectorySink {
+ public:
+  TrajectoryCsvWriter(StreamedOutput& output, double phase_tolerance);
+  void Record(const TrajectoryPoint& point) override;
+  void Flush();
+
+  long rows() const { return rows_; }
+  const TrajectoryPoint& last() const { return last_; }  // valid once rows() > 0
+
+ private:
+  StreamedOutput& output_;
+  double phase_tolerance_;  // [m/s]
+  std::string buffer_;
+  long rows_ = 0;
+  TrajectoryPoint last_{};
+};
 
 // A JSON object with the counters, wall_seconds, final_time, status and message.
 std::string FormatStatsJson(const RunStats& stats);
