@@ -4,14 +4,13 @@
 
 #include <string>
 
+#include "musclesim/model/number_format.h"  // FormatFull, which the writers of files use
+
 namespace musclesim {
 
 // Writes `content` to `path` atomically; "-" writes to standard output, and an existing
 // device or pipe (/dev/null, a FIFO) is written in place, never replaced. Throws
 // std::runtime_error naming the path and the system's reason on failure.
 void WriteOutput(const std::string& path, const std::string& content);
-
-// Formats with 17 significant digits, enough to read back the same double.
-std::string FormatFull(double value);
 
 }  // namespace musclesim
