@@ -6,6 +6,7 @@
 #include <numbers>
 #include <random>
 
+#include "musclesim/errors.h"
 #include "support/numeric.h"
 
 namespace musclesim {
@@ -107,6 +108,18 @@ TEST(FitTarget, PolygonCostEqualsQuadrature) {
     const double quadrature = QuadratureCost(c, polygon);
     EXPECT_NEAR(target->Cost(c.a, c.shapes, nullptr), quadrature, 1e-10 * quadrature)
         << "trial " << trial;
+  }
+}
+
+TEST(FitTarget, KindNamesReadBackAndUnknownNamesListThemAll) {
+  for (const char* name : {"indicator", "polygon", "samples"}) {
+    EXPECT_EQ(ToString(ParseFitTargetKind(name)), name);
+  }
+  try {
+    ParseFitTargetKind("circle");
+    ADD_FAILURE() << "circle accepted";
+  } catch (const ParameterError& e) {
+    EXPECT_STREQ(e.what(), "target = circle: must be one of indicator, polygon, samples");
   }
 }
 

@@ -3,26 +3,20 @@
 #include <cmath>
 #include <numbers>
 
-#include "musclesim/errors.h"
+#include "musclesim/model/enum_names.h"
 
 namespace musclesim {
 
-std::string_view ToString(FitTargetKind kind) {
-  switch (kind) {
-    case FitTargetKind::kIndicator: return "indicator";
-    case FitTargetKind::kPolygon: return "polygon";
-    case FitTargetKind::kSamples: return "samples";
-  }
-  return "?";
-}
+constexpr EnumName<FitTargetKind> kFitTargetNames[] = {
+    {FitTargetKind::kIndicator, "indicator"},
+    {FitTargetKind::kPolygon, "polygon"},
+    {FitTargetKind::kSamples, "samples"},
+};
+
+std::string_view ToString(FitTargetKind kind) { return ToString(kFitTargetNames, kind); }
 
 FitTargetKind ParseFitTargetKind(std::string_view text) {
-  for (FitTargetKind kind :
-       {FitTargetKind::kIndicator, FitTargetKind::kPolygon, FitTargetKind::kSamples}) {
-    if (text == ToString(kind)) return kind;
-  }
-  throw ParameterError("target", std::string(text),
-                       "must be one of indicator, polygon, samples");
+  return Parse(kFitTargetNames, "target", text);
 }
 
 namespace {
