@@ -20,7 +20,7 @@ double SumOfGaussians(const ActiveLengthParams& p, double x) {
   double f = 0.0;
   for (const Gaussian& g : p.gaussians) {
     f += g.amplitude / std::sqrt(2.0 * std::numbers::pi * p.sigma) *
-         std::exp(-g.width * (x - g.center) * (x - g.center) / (2.0 * p.sigma));
+         std::exp(-g.precision * (x - g.center) * (x - g.center) / (2.0 * p.sigma));
   }
   return f;
 }

@@ -23,7 +23,7 @@ double Psi(const Case& c, double x) {
   for (Eigen::Index k = 0; k < c.a.size(); ++k) {
     const double dx = x - c.shapes.centers(k);
     f += c.a(k) / std::sqrt(2.0 * std::numbers::pi * c.sigma) *
-         std::exp(-c.shapes.widths(k) * dx * dx / (2.0 * c.sigma));
+         std::exp(-c.shapes.precisions(k) * dx * dx / (2.0 * c.sigma));
   }
   return f;
 }
@@ -48,7 +48,7 @@ Case RandomCase(std::mt19937& rng) {
   for (int k = 0; k < m; ++k) {
     const double spread = std::exp(log_spread(rng));
     c.a(k) = amplitude(rng) * 0.01;
-    c.shapes.widths(k) = c.sigma / (spread * spread);
+    c.shapes.precisions(k) = c.sigma / (spread * spread);
     c.shapes.centers(k) = center(rng);
   }
   return c;
@@ -72,7 +72,7 @@ double QuadratureCost(const Case& c, const std::vector<TargetPoint>& polygon) {
   double spread = 0.0;
   std::vector<double> breaks;
   for (Eigen::Index k = 0; k < c.a.size(); ++k) {
-    spread = std::max(spread, std::sqrt(c.sigma / c.shapes.widths(k)));
+    spread = std::max(spread, std::sqrt(c.sigma / c.shapes.precisions(k)));
     breaks.push_back(c.shapes.centers(k));
   }
   for (const TargetPoint& p : polygon) breaks.push_back(p.x);
@@ -171,7 +171,7 @@ void ExpectGradientMatches(const FitTarget& target, Case c) {
     }
   };
   check(c.a, g.amplitudes, "amplitude");
-  check(c.shapes.widths, g.widths, "width");
+  check(c.shapes.precisions, g.precisions, "precision");
   check(c.shapes.centers, g.centers, "center");
 }
 

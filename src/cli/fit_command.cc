@@ -40,7 +40,7 @@ int RunFit(int argc, char** argv) {
   std::ostringstream out;
   out << "gaussians:\n";
   for (const Gaussian& g : fit.gaussians) {
-    out << "  - {amplitude: " << FormatFull(g.amplitude) << ", width: " << FormatFull(g.width)
+    out << "  - {amplitude: " << FormatFull(g.amplitude) << ", width: " << FormatFull(g.precision)
         << ", center: " << FormatFull(g.center) << "}\n";
   }
   out << "cost: " << FormatFull(fit.cost) << "\n"

@@ -124,10 +124,10 @@ int RunIdentify(int argc, char** argv) {
       << FormatFull(active->curve.optimal_max) << "]\n    gaussians:\n";
     for (std::size_t k = 0; k < active->curve.gaussians.size(); ++k) {
       const Gaussian& g = active->curve.gaussians[k];
-      y << "      - {amplitude: " << FormatFull(g.amplitude) << ", width: " << FormatFull(g.width)
+      y << "      - {amplitude: " << FormatFull(g.amplitude) << ", width: " << FormatFull(g.precision)
         << ", center: " << FormatFull(g.center) << "}\n"
         << "        # amplitude " << PlusMinus(active->amplitudes[k]) << ", width "
-        << PlusMinus(active->widths[k]) << ", center " << PlusMinus(active->centers[k]) << "\n";
+        << PlusMinus(active->precisions[k]) << ", center " << PlusMinus(active->centers[k]) << "\n";
     }
   } else {
     y << "    # not identified: one Gaussian a kilometre wide, a flat f_L\n"

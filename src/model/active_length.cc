@@ -25,7 +25,7 @@ void Validate(const ActiveLengthParams& params) {
     const Gaussian& g = params.gaussians[k];
     const std::string at = "gaussians[" + std::to_string(k) + "].";
     Require(std::isfinite(g.amplitude), at + "amplitude", g.amplitude, "must be finite");
-    Require(std::isfinite(g.width) && g.width > 0.0, at + "width", g.width,
+    Require(std::isfinite(g.precision) && g.precision > 0.0, at + "width", g.precision,
             "must be finite and > 0");
     Require(std::isfinite(g.center), at + "center", g.center, "must be finite [m]");
   }
@@ -35,7 +35,7 @@ GaussianSum::GaussianSum(const std::vector<Gaussian>& gaussians, double sigma) {
   const double norm = 1.0 / std::sqrt(2.0 * std::numbers::pi * sigma);
   terms_.reserve(gaussians.size());
   for (const Gaussian& g : gaussians) {
-    terms_.push_back({g.amplitude * norm, g.width / (2.0 * sigma), g.center});
+    terms_.push_back({g.amplitude * norm, g.precision / (2.0 * sigma), g.center});
   }
 }
 

@@ -227,17 +227,17 @@ ActiveIdentification IdentifyActive(const std::vector<DataPoint>& data, int coun
     for (Eigen::Index k = 0; k < m; ++k) {
       const Gaussian& g = fit.gaussians[static_cast<std::size_t>(k)];
       const double dx = data[s].x - g.center;
-      const double phi = norm * std::exp(-g.width * dx * dx / 2.0);
+      const double phi = norm * std::exp(-g.precision * dx * dx / 2.0);
       jacobian(row, k) = phi;
       jacobian(row, m + k) = g.amplitude * phi * (-dx * dx / 2.0);
-      jacobian(row, 2 * m + k) = g.amplitude * phi * g.width * dx;
+      jacobian(row, 2 * m + k) = g.amplitude * phi * g.precision * dx;
     }
   }
   const Eigen::MatrixXd cov = Covariance(jacobian, rss);
   for (Eigen::Index k = 0; k < m; ++k) {
     const Gaussian& g = out.curve.gaussians[static_cast<std::size_t>(k)];
     out.amplitudes.push_back({g.amplitude, std::sqrt(cov(k, k)) / peak.value});
-    out.widths.push_back({g.width, std::sqrt(cov(m + k, m + k))});
+    out.precisions.push_back({g.precision, std::sqrt(cov(m + k, m + k))});
     out.centers.push_back({g.center, std::sqrt(cov(2 * m + k, 2 * m + k))});
   }
   // f_iso's error by the delta method, its gradient by central differences of the peak
@@ -246,7 +246,7 @@ ActiveIdentification IdentifyActive(const std::vector<DataPoint>& data, int coun
     const auto shifted = [&](double sign) {
       std::vector<Gaussian> gs = fit.gaussians;
       Gaussian& g = gs[static_cast<std::size_t>(j % m)];
-      double& value = j < m ? g.amplitude : (j < 2 * m ? g.width : g.center);
+      double& value = j < m ? g.amplitude : (j < 2 * m ? g.precision : g.center);
       const double h = 1e-6 * std::max(std::abs(value), j < 2 * m ? 1e-12 : span);
       value += sign * h;
       return std::make_pair(MaximumOnInterval(GaussianSum(gs, 1.0), data.front().x, data.back().x).value, h);

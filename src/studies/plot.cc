@@ -123,7 +123,7 @@ std::string CurvesPlotScript(const TensionModel& model, const PlotOptions& optio
   // lengths where the components live, L_opt and the start of the passive rise
   double lo = a.optimal_min, hi = std::max(a.optimal_max, p.passive.slack_length);
   for (const Gaussian& g : a.gaussians) {
-    const double spread = std::sqrt(a.sigma / g.width);
+    const double spread = std::sqrt(a.sigma / g.precision);
     lo = std::min(lo, g.center - 3.0 * spread);
     hi = std::max(hi, g.center + 3.0 * spread);
   }
@@ -141,7 +141,7 @@ std::string CurvesPlotScript(const TensionModel& model, const PlotOptions& optio
     for (const Gaussian& g : a.gaussians) {
       // psi_k scaled as f_iso f_L is: f_iso psi_k / max f
       const double psi = p.f_iso * g.amplitude * norm *
-                         std::exp(-g.width * (x - g.center) * (x - g.center) / (2.0 * a.sigma));
+                         std::exp(-g.precision * (x - g.center) * (x - g.center) / (2.0 * a.sigma));
       lowest = std::min(lowest, psi);
       s << " " << Number(psi);
     }

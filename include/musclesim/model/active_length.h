@@ -11,7 +11,8 @@ namespace musclesim {
 // One component psi_k(x) = a / sqrt(2 pi sigma) * exp(-b (x - d)^2 / (2 sigma)).
 struct Gaussian {
   double amplitude = 0.0;  // a_k, dimensionless, finite (may be negative)
-  double width = 1.0;      // b_k, width factor [1/m^2 when sigma = 1], > 0
+  double precision = 1.0;  // b_k, inverse-variance factor [1/m^2 when sigma = 1], > 0;
+                           // the YAML key is `width`
   double center = 0.0;     // d_k [m], finite
 };
 
@@ -22,7 +23,8 @@ struct ActiveLengthParams {
   std::vector<Gaussian> gaussians;   // at least one component
 };
 
-// Throws ParameterError ("optimal_range", "sigma", "gaussians", "gaussians[k].width", ...).
+// Throws ParameterError ("optimal_range", "sigma", "gaussians", "gaussians[k].width", ...),
+// naming each field by its YAML key.
 void Validate(const ActiveLengthParams& params);
 
 // The unnormalised sum f(x) with its first two derivatives. Immutable; evaluation

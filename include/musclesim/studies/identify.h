@@ -35,7 +35,9 @@ struct PassiveIdentification {
 struct ActiveIdentification {
   ActiveLengthParams curve;  // f_L: amplitudes scaled so that max f = 1 on optimal_range
   Estimate f_iso;            // [N], the fitted curve's maximum
-  std::vector<Estimate> amplitudes, widths, centers;  // of `curve`, with standard errors
+  std::vector<Estimate> amplitudes;  // a_k of `curve` [-], with standard errors
+  std::vector<Estimate> precisions;  // b_k of `curve` [1/m^2] (YAML key `width`)
+  std::vector<Estimate> centers;     // d_k of `curve` [m]
   double rmse = 0.0;         // [N]
   double Evaluate(double x) const;  // f_iso f_L(x)
 };
