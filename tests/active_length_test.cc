@@ -53,6 +53,23 @@ TEST(ActiveLength, SumMatchesDefinition) {
   }
 }
 
+TEST(ActiveLength, UnitTermIsAComponentOverItsAmplitude) {
+  std::mt19937 rng(8);
+  for (int trial = 0; trial < 20; ++trial) {
+    ActiveLengthParams p = RandomParams(rng);
+    p.sigma = 0.5 + trial * 0.1;  // only b / sigma matters, so any sigma must agree
+    for (const Gaussian& g : p.gaussians) {
+      const ActiveLengthParams one{p.optimal_min, p.optimal_max, p.sigma, {g}};
+      const GaussianTerm phi = GaussianTerm::Unit(g.precision, g.center, p.sigma);
+      for (double x : {0.08, 0.095, 0.1, 0.1033, 0.12}) {
+        // a few roundings apart: one exp, a division and products
+        EXPECT_NEAR(g.amplitude * phi(x), SumOfGaussians(one, x),
+                    1e-14 * (1.0 + SumOfGaussians(one, x)));
+      }
+    }
+  }
+}
+
 TEST(ActiveLength, DerivativesMatchFiniteDifferences) {
   std::mt19937 rng(11);
   for (int trial = 0; trial < 20; ++trial) {

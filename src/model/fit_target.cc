@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "musclesim/model/active_length.h"
 #include "musclesim/model/enum_names.h"
 
 namespace musclesim {
@@ -200,14 +201,13 @@ class SampleTarget final : public FitTarget {
   double SupportMax() const override { return support_max_; }
 
  private:
+  // phi_k(x_s): the unit-amplitude components at the samples, one column each.
   Eigen::MatrixXd Basis(const GaussianShapes& shapes) const {
-    const double norm = 1.0 / std::sqrt(2.0 * std::numbers::pi * sigma_);
     Eigen::MatrixXd basis(samples_.size(), shapes.precisions.size());
     for (Eigen::Index k = 0; k < basis.cols(); ++k) {
-      for (std::size_t s = 0; s < samples_.size(); ++s) {
-        const double dx = samples_[s].x - shapes.centers(k);
-        basis(s, k) = norm * std::exp(-shapes.precisions(k) * dx * dx / (2.0 * sigma_));
-      }
+      const GaussianTerm phi =
+          GaussianTerm::Unit(shapes.precisions(k), shapes.centers(k), sigma_);
+      for (std::size_t s = 0; s < samples_.size(); ++s) basis(s, k) = phi(samples_[s].x);
     }
     return basis;
   }

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "musclesim/io/csv_table.h"
 #include "musclesim/errors.h"
@@ -220,14 +219,14 @@ ActiveIdentification IdentifyActive(const std::vector<DataPoint>& data, int coun
   const auto m = static_cast<Eigen::Index>(fit.gaussians.size());
   Eigen::MatrixXd jacobian(static_cast<Eigen::Index>(data.size()), 3 * m);
   double rss = 0.0;
-  const double norm = 1.0 / std::sqrt(2.0 * std::numbers::pi);
   for (std::size_t s = 0; s < data.size(); ++s) {
     const auto row = static_cast<Eigen::Index>(s);
     rss += std::pow(sum.Value(data[s].x) - data[s].y / top, 2);
     for (Eigen::Index k = 0; k < m; ++k) {
       const Gaussian& g = fit.gaussians[static_cast<std::size_t>(k)];
       const double dx = data[s].x - g.center;
-      const double phi = norm * std::exp(-g.precision * dx * dx / 2.0);
+      // psi_k = a_k phi_k with sigma = 1: d/da = phi, d/db = -psi dx^2 / 2, d/dd = psi b dx
+      const double phi = GaussianTerm::Unit(g.precision, g.center, 1.0)(data[s].x);
       jacobian(row, k) = phi;
       jacobian(row, m + k) = g.amplitude * phi * (-dx * dx / 2.0);
       jacobian(row, 2 * m + k) = g.amplitude * phi * g.precision * dx;

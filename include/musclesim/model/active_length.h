@@ -2,6 +2,8 @@
 // maximum over the optimal length range (eq. 13, MODEL.md section 3).
 #pragma once
 
+#include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "musclesim/model/curve_point.h"
@@ -23,6 +25,31 @@ struct ActiveLengthParams {
   std::vector<Gaussian> gaussians;   // at least one component
 };
 
+// One component in the form it is evaluated in, psi(x) = scale * exp(-rate (x - center)^2):
+// the single implementation of eq. 3's Gaussian, shared by the curve, the fit's basis, the
+// identification's Jacobian and the plotted components.
+struct GaussianTerm {
+  double scale = 0.0;   // a_k / sqrt(2 pi sigma), the peak value [-]
+  double rate = 0.0;    // b_k / (2 sigma) [1/m^2]
+  double center = 0.0;  // d_k [m]
+
+  // psi_k of `g` under the common scale `sigma`.
+  static GaussianTerm Of(const Gaussian& g, double sigma) {
+    const double norm = 1.0 / std::sqrt(2.0 * std::numbers::pi * sigma);
+    return {g.amplitude * norm, g.precision / (2.0 * sigma), g.center};
+  }
+  // phi_k = psi_k / a_k, the unit-amplitude basis function: amplitudes enter the cost
+  // linearly, so the fit and the standard errors work with these.
+  static GaussianTerm Unit(double precision, double center, double sigma) {
+    return Of({1.0, precision, center}, sigma);
+  }
+
+  double operator()(double x) const {
+    const double dx = x - center;
+    return scale * std::exp(-rate * dx * dx);
+  }
+};
+
 // Throws ParameterError ("optimal_range", "sigma", "gaussians", "gaussians[k].width", ...),
 // naming each field by its YAML key.
 void Validate(const ActiveLengthParams& params);
@@ -41,13 +68,11 @@ class GaussianSum {
   // Smallest standard deviation sqrt(sigma / b_k) among the components [m].
   double NarrowestSpread() const;
 
+  // The components psi_k, in the order they were given.
+  const std::vector<GaussianTerm>& terms() const { return terms_; }
+
  private:
-  struct Term {
-    double scale;   // a_k / sqrt(2 pi sigma)
-    double rate;    // b_k / (2 sigma)
-    double center;  // d_k
-  };
-  std::vector<Term> terms_;
+  std::vector<GaussianTerm> terms_;
 };
 
 // f_L(x) = f(x) / max over L_opt of f. Construction finds that maximum exactly: the
