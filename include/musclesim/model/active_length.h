@@ -58,7 +58,9 @@ void Validate(const ActiveLengthParams& params);
 // allocates nothing.
 class GaussianSum {
  public:
-  // `params` must already be valid; sigma and the components are copied.
+  // The empty sum, zero everywhere: a placeholder to assign a built sum to.
+  GaussianSum() = default;
+  // `gaussians` and `sigma` must already be valid; they are copied.
   GaussianSum(const std::vector<Gaussian>& gaussians, double sigma);
 
   double Value(double x) const;

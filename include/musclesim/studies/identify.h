@@ -29,6 +29,7 @@ struct PassiveIdentification {
   Estimate k_p;           // [N]
   Estimate alpha;         // [1/m]
   double rmse = 0.0;      // [N]
+  // T_p(x) [N] at length x [m], through the model's PassiveTension.
   double Evaluate(double x) const;
 };
 
@@ -39,7 +40,9 @@ struct ActiveIdentification {
   std::vector<Estimate> precisions;  // b_k of `curve` [1/m^2] (YAML key `width`)
   std::vector<Estimate> centers;     // d_k of `curve` [m]
   double rmse = 0.0;         // [N]
-  double Evaluate(double x) const;  // f_iso f_L(x)
+  GaussianSum sum;           // f of `curve` [-], built once by IdentifyActive
+  // f_iso f(x) [N] at length x [m]; allocates nothing, so timing it times the curve.
+  double Evaluate(double x) const { return f_iso.value * sum.Value(x); }
 };
 
 struct VelocityCandidate {
