@@ -12,7 +12,7 @@ namespace musclesim {
 
 // One component psi_k(x) = a / sqrt(2 pi sigma) * exp(-b (x - d)^2 / (2 sigma)).
 struct Gaussian {
-  double amplitude = 0.0;  // a_k, dimensionless, finite (may be negative)
+  double amplitude = 0.0;  // a_k [-], finite (may be negative)
   double precision = 1.0;  // b_k, inverse-variance factor [1/m^2 when sigma = 1], > 0;
                            // the YAML key is `width`
   double center = 0.0;     // d_k [m], finite
@@ -21,8 +21,9 @@ struct Gaussian {
 struct ActiveLengthParams {
   double optimal_min = 0.0;          // l1, start of L_opt [m]
   double optimal_max = 1.0;          // l2, end of L_opt [m], > l1
-  double sigma = 1.0;                // common scale, > 0; only b_k / sigma shapes the curve
-  std::vector<Gaussian> gaussians;   // at least one component
+  double sigma = 1.0;                // common scale of the b_k [-], > 0; only
+                                     // b_k / sigma [1/m^2] shapes the curve
+  std::vector<Gaussian> gaussians;   // the components psi_k, at least one
 };
 
 // One component in the form it is evaluated in, psi(x) = scale * exp(-rate (x - center)^2):
@@ -94,21 +95,21 @@ class ActiveLengthCurve {
 
   const ActiveLengthParams& params() const { return params_; }
   const GaussianSum& sum() const { return sum_; }
-  double peak_value() const { return peak_value_; }      // max of f over L_opt
+  double peak_value() const { return peak_value_; }      // max of f over L_opt [-]
   double optimal_length() const { return peak_length_; }  // where it is reached [m]
 
  private:
-  ActiveLengthParams params_;
-  GaussianSum sum_;
-  double peak_value_ = 0.0;
-  double peak_length_ = 0.0;
-  double inverse_peak_ = 0.0;
+  ActiveLengthParams params_;  // as validated
+  GaussianSum sum_;            // f [-], built from params_
+  double peak_value_ = 0.0;    // max of f over L_opt [-]
+  double peak_length_ = 0.0;   // where it is reached [m]
+  double inverse_peak_ = 0.0;  // 1 / peak_value_ [-]
 };
 
 // Location and value of max f on [lo, hi], found as described for ActiveLengthCurve.
 struct Maximum {
-  double x = 0.0;
-  double value = 0.0;
+  double x = 0.0;      // where the maximum is reached [m]
+  double value = 0.0;  // f there [-]
 };
 Maximum MaximumOnInterval(const GaussianSum& sum, double lo, double hi);
 

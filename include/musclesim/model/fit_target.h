@@ -24,7 +24,7 @@ FitTargetKind ParseFitTargetKind(std::string_view text);
 
 struct TargetPoint {
   double x = 0.0;  // length [m]
-  double y = 0.0;  // target value (f_L scale, dimensionless)
+  double y = 0.0;  // target value on the f_L scale [-]
 };
 
 // Shapes of m components.

@@ -28,9 +28,9 @@ struct FitSpec {
 void Validate(const FitSpec& spec);
 
 struct FitResult {
-  std::vector<Gaussian> gaussians;
-  double cost = 0.0;               // N at the result
-  double relative_residual = 0.0;  // N / integral(target^2) (or / sum y^2)
+  std::vector<Gaussian> gaussians;  // the fitted components (a_k, b_k, d_k)
+  double cost = 0.0;               // N at the result [m] (continuous targets) or [-] (samples)
+  double relative_residual = 0.0;  // N / integral(target^2) (or / sum y^2) [-]
   int iterations = 0;              // cost evaluations of the winning start (0: shapes fixed)
   int starts = 0;                  // starting points tried
 };

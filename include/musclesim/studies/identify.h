@@ -19,9 +19,10 @@
 
 namespace musclesim {
 
+// A fitted parameter; both numbers are in the parameter's unit.
 struct Estimate {
-  double value = 0.0;
-  double standard_error = 0.0;  // NaN when it cannot be estimated
+  double value = 0.0;           // the estimate [the parameter's unit]
+  double standard_error = 0.0;  // [the parameter's unit]; NaN when it cannot be estimated
 };
 
 struct PassiveIdentification {
@@ -46,17 +47,18 @@ struct ActiveIdentification {
 };
 
 struct VelocityCandidate {
-  int n = 1;
-  Estimate v_max;   // [m/s]
-  Estimate f_iso;   // [N]
-  double rmse = 0.0;
+  int n = 1;           // the power is 1/n [-]
+  Estimate v_max;      // [m/s]
+  Estimate f_iso;      // [N]
+  double rmse = 0.0;   // [N]
   bool valid = false;  // false when the fit gives no positive v_max (tension rising with v)
 };
 
 struct VelocityIdentification {
-  VelocityCandidate best;
+  VelocityCandidate best;                     // the valid candidate of least RMSE
   std::vector<VelocityCandidate> candidates;  // n = 1..10
-  double Evaluate(double v) const;  // unregularised f_iso g(v)
+  // Unregularised f_iso g(v) [N] at shortening velocity v [m/s].
+  double Evaluate(double v) const;
 };
 
 // Each throws InputError when the data cannot determine the parameters.
