@@ -9,6 +9,7 @@
 
 #include "musclesim/errors.h"
 #include "support/numeric.h"
+#include "support/rejection.h"
 
 namespace musclesim {
 namespace {
@@ -147,12 +148,7 @@ TEST(ActiveLength, NormalisedSlopeIsScaledSlope) {
 }
 
 std::string Rejection(const ActiveLengthParams& p) {
-  try {
-    ActiveLengthCurve curve(p);
-  } catch (const ParameterError& e) {
-    return e.what();
-  }
-  return "accepted";
+  return testing::Rejection([&] { ActiveLengthCurve curve(p); });
 }
 
 TEST(ActiveLength, RejectsEachRule) {

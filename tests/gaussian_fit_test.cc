@@ -10,6 +10,7 @@
 #include <random>
 
 #include "musclesim/errors.h"
+#include "support/rejection.h"
 
 namespace musclesim {
 namespace {
@@ -235,12 +236,7 @@ TEST(GaussianFit, PolygonFitFollowsABellShapedCurve) {
 }
 
 std::string Rejection(const FitSpec& spec) {
-  try {
-    Validate(spec);
-  } catch (const ParameterError& e) {
-    return e.what();
-  }
-  return "accepted";
+  return testing::Rejection([&] { Validate(spec); });
 }
 
 TEST(GaussianFit, RejectsEachRule) {
