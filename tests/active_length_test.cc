@@ -9,6 +9,7 @@
 
 #include "musclesim/errors.h"
 #include "support/numeric.h"
+#include "support/rejection.h"
 
 namespace musclesim {
 namespace {
@@ -20,7 +21,7 @@ double SumOfGaussians(const ActiveLengthParams& p, double x) {
   double f = 0.0;
   for (const Gaussian& g : p.gaussians) {
     f += g.amplitude / std::sqrt(2.0 * std::numbers::pi * p.sigma) *
-         std::exp(-g.width * (x - g.center) * (x - g.center) / (2.0 * p.sigma));
+         std::exp(-g.precision * (x - g.center) * (x - g.center) / (2.0 * p.sigma));
   }
   return f;
 }
@@ -49,6 +50,23 @@ TEST(ActiveLength, SumMatchesDefinition) {
     const GaussianSum sum(p.gaussians, p.sigma);
     for (double x : {0.08, 0.095, 0.1, 0.1033, 0.12}) {
       EXPECT_NEAR(sum.Value(x), SumOfGaussians(p, x), 1e-13 * (1.0 + SumOfGaussians(p, x)));
+    }
+  }
+}
+
+TEST(ActiveLength, UnitTermIsAComponentOverItsAmplitude) {
+  std::mt19937 rng(8);
+  for (int trial = 0; trial < 20; ++trial) {
+    ActiveLengthParams p = RandomParams(rng);
+    p.sigma = 0.5 + trial * 0.1;  // only b / sigma matters, so any sigma must agree
+    for (const Gaussian& g : p.gaussians) {
+      const ActiveLengthParams one{p.optimal_min, p.optimal_max, p.sigma, {g}};
+      const GaussianTerm phi = GaussianTerm::Unit(g.precision, g.center, p.sigma);
+      for (double x : {0.08, 0.095, 0.1, 0.1033, 0.12}) {
+        // a few roundings apart: one exp, a division and products
+        EXPECT_NEAR(g.amplitude * phi(x), SumOfGaussians(one, x),
+                    1e-14 * (1.0 + SumOfGaussians(one, x)));
+      }
     }
   }
 }
@@ -130,12 +148,7 @@ TEST(ActiveLength, NormalisedSlopeIsScaledSlope) {
 }
 
 std::string Rejection(const ActiveLengthParams& p) {
-  try {
-    ActiveLengthCurve curve(p);
-  } catch (const ParameterError& e) {
-    return e.what();
-  }
-  return "accepted";
+  return testing::Rejection([&] { ActiveLengthCurve curve(p); });
 }
 
 TEST(ActiveLength, RejectsEachRule) {

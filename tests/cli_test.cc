@@ -110,8 +110,8 @@ TEST(Cli, FitPrintsPasteableGaussians) {
   const ModelSpec fitted = LoadModelSpec(Scenario("fit_indicator.yaml"));
   ASSERT_EQ(pasted.params.active_length.gaussians.size(), 2u);
   for (std::size_t k = 0; k < 2; ++k) {
-    EXPECT_EQ(pasted.params.active_length.gaussians[k].width,
-              fitted.params.active_length.gaussians[k].width);
+    EXPECT_EQ(pasted.params.active_length.gaussians[k].precision,
+              fitted.params.active_length.gaussians[k].precision);
   }
 }
 

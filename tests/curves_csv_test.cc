@@ -1,4 +1,4 @@
-// The curves tabulated as CSV, checked against the closed forms of MODEL.md sections 2-4.
+// The curves tabulated as CSV, checked against the closed forms of docs/model.md sections 2-4.
 #include "musclesim/io/curves_csv.h"
 
 #include <gmock/gmock.h>
@@ -80,7 +80,7 @@ TEST(CurvesCsv, VelocityTableMatchesTheRegularisedPowerLaw) {
     ASSERT_EQ(t.rows[i].size(), 2u);
     const double v = -2.0 + static_cast<double>(i);  // exact in binary
     EXPECT_EQ(t.rows[i][0], v);
-    // eq. 12 with the eps-regularisation (MODEL.md section 4), alpha = 1/n = 1/3
+    // eq. 12 with the eps-regularisation (docs/model.md section 4), alpha = 1/n = 1/3
     const double alpha = 1.0 / 3.0, eps = 1e-3;
     const double phi = v * std::pow(v * v + eps * eps, (alpha - 1.0) / 2.0);
     const double g = 1.0 - phi / std::pow(1.5, alpha);

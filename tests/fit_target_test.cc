@@ -6,6 +6,7 @@
 #include <numbers>
 #include <random>
 
+#include "musclesim/errors.h"
 #include "support/numeric.h"
 
 namespace musclesim {
@@ -22,7 +23,7 @@ double Psi(const Case& c, double x) {
   for (Eigen::Index k = 0; k < c.a.size(); ++k) {
     const double dx = x - c.shapes.centers(k);
     f += c.a(k) / std::sqrt(2.0 * std::numbers::pi * c.sigma) *
-         std::exp(-c.shapes.widths(k) * dx * dx / (2.0 * c.sigma));
+         std::exp(-c.shapes.precisions(k) * dx * dx / (2.0 * c.sigma));
   }
   return f;
 }
@@ -47,7 +48,7 @@ Case RandomCase(std::mt19937& rng) {
   for (int k = 0; k < m; ++k) {
     const double spread = std::exp(log_spread(rng));
     c.a(k) = amplitude(rng) * 0.01;
-    c.shapes.widths(k) = c.sigma / (spread * spread);
+    c.shapes.precisions(k) = c.sigma / (spread * spread);
     c.shapes.centers(k) = center(rng);
   }
   return c;
@@ -71,7 +72,7 @@ double QuadratureCost(const Case& c, const std::vector<TargetPoint>& polygon) {
   double spread = 0.0;
   std::vector<double> breaks;
   for (Eigen::Index k = 0; k < c.a.size(); ++k) {
-    spread = std::max(spread, std::sqrt(c.sigma / c.shapes.widths(k)));
+    spread = std::max(spread, std::sqrt(c.sigma / c.shapes.precisions(k)));
     breaks.push_back(c.shapes.centers(k));
   }
   for (const TargetPoint& p : polygon) breaks.push_back(p.x);
@@ -85,28 +86,39 @@ double QuadratureCost(const Case& c, const std::vector<TargetPoint>& polygon) {
       lo, hi, breaks, 1e-17);
 }
 
-TEST(FitTarget, IndicatorCostEqualsQuadrature) {
-  std::mt19937 rng(1);
+// The closed-form cost against quadrature for 40 random cases, each with the vertices
+// `make_vertices` draws.
+template <typename MakeVertices>
+void ExpectCostEqualsQuadrature(unsigned seed, MakeVertices make_vertices) {
+  std::mt19937 rng(seed);
   for (int trial = 0; trial < 40; ++trial) {
     const Case c = RandomCase(rng);
-    const std::vector<TargetPoint> indicator{{0.095, 1.0}, {0.105, 1.0}};
-    const auto target = MakePiecewiseLinearTarget(indicator, c.sigma);
-    const double quadrature = QuadratureCost(c, indicator);
+    const std::vector<TargetPoint> vertices = make_vertices(rng);
+    const auto target = MakePiecewiseLinearTarget(vertices, c.sigma);
+    const double quadrature = QuadratureCost(c, vertices);
     // 1e-10 relative: the bar; quadrature is converged far below it
     EXPECT_NEAR(target->Cost(c.a, c.shapes, nullptr), quadrature, 1e-10 * quadrature)
         << "trial " << trial;
   }
 }
 
-TEST(FitTarget, PolygonCostEqualsQuadrature) {
-  std::mt19937 rng(2);
-  for (int trial = 0; trial < 40; ++trial) {
-    const Case c = RandomCase(rng);
-    const std::vector<TargetPoint> polygon = RandomPolygon(rng);
-    const auto target = MakePiecewiseLinearTarget(polygon, c.sigma);
-    const double quadrature = QuadratureCost(c, polygon);
-    EXPECT_NEAR(target->Cost(c.a, c.shapes, nullptr), quadrature, 1e-10 * quadrature)
-        << "trial " << trial;
+TEST(FitTarget, IndicatorCostEqualsQuadrature) {
+  ExpectCostEqualsQuadrature(1, [](std::mt19937&) {
+    return std::vector<TargetPoint>{{0.095, 1.0}, {0.105, 1.0}};
+  });
+}
+
+TEST(FitTarget, PolygonCostEqualsQuadrature) { ExpectCostEqualsQuadrature(2, RandomPolygon); }
+
+TEST(FitTarget, KindNamesReadBackAndUnknownNamesListThemAll) {
+  for (const char* name : {"indicator", "polygon", "samples"}) {
+    EXPECT_EQ(ToString(ParseFitTargetKind(name)), name);
+  }
+  try {
+    ParseFitTargetKind("circle");
+    ADD_FAILURE() << "circle accepted";
+  } catch (const ParameterError& e) {
+    EXPECT_STREQ(e.what(), "target = circle: must be one of indicator, polygon, samples");
   }
 }
 
@@ -158,7 +170,7 @@ void ExpectGradientMatches(const FitTarget& target, Case c) {
     }
   };
   check(c.a, g.amplitudes, "amplitude");
-  check(c.shapes.widths, g.widths, "width");
+  check(c.shapes.precisions, g.precisions, "precision");
   check(c.shapes.centers, g.centers, "center");
 }
 

@@ -10,6 +10,7 @@
 #include <random>
 
 #include "musclesim/errors.h"
+#include "support/rejection.h"
 
 namespace musclesim {
 namespace {
@@ -30,7 +31,7 @@ double CostAt(const FitTarget& target, const std::vector<Gaussian>& gaussians) {
   GaussianShapes shapes{Eigen::VectorXd(m), Eigen::VectorXd(m)};
   for (Eigen::Index k = 0; k < m; ++k) {
     a(k) = gaussians[k].amplitude;
-    shapes.widths(k) = gaussians[k].width;
+    shapes.precisions(k) = gaussians[k].precision;
     shapes.centers(k) = gaussians[k].center;
   }
   return target.Cost(a, shapes, nullptr);
@@ -50,7 +51,7 @@ TEST(GaussianFit, IndicatorFitIsALocalMinimumInEveryDirection) {
     for (Gaussian& g : moved) {
       const bool all = trial >= 6;
       g.amplitude *= 1.0 + (all || trial == 0 ? 1e-4 * normal(rng) : 0.0);
-      g.width *= 1.0 + (all || trial == 1 ? 1e-4 * normal(rng) : 0.0);
+      g.precision *= 1.0 + (all || trial == 1 ? 1e-4 * normal(rng) : 0.0);
       g.center += (all || trial == 2 ? 1e-4 * (kL2 - kL1) * normal(rng) : 0.0);
     }
     EXPECT_GE(CostAt(*target, moved), fit.cost * (1.0 - 1e-13)) << "trial " << trial;
@@ -69,12 +70,12 @@ double ReducedCost(unsigned n, const double* x, double* grad, void* data) {
   const auto* r = static_cast<const Reduced*>(data);
   GaussianShapes shapes{Eigen::VectorXd(r->m), Eigen::VectorXd(r->m)};
   for (int k = 0; k < r->m; ++k) {
-    shapes.widths(k) = std::exp(x[k]);
+    shapes.precisions(k) = std::exp(x[k]);
     shapes.centers(k) = x[r->m + k];
   }
   Eigen::MatrixXd gram;
   Eigen::VectorXd projection;
-  r->target->Normal(shapes, gram, projection);
+  r->target->NormalEquations(shapes, gram, projection);
   const Eigen::VectorXd a = gram.completeOrthogonalDecomposition().solve(projection);
   return r->target->Cost(a, shapes, nullptr);
 }
@@ -85,7 +86,7 @@ TEST(GaussianFit, IndependentRandomStartsFindNoLowerCost) {
   const auto target = MakeFitTarget(Indicator(2), kL1, kL2, 1.0);
   Reduced reduced{target.get(), 2};
   std::mt19937 rng(2024);
-  std::uniform_real_distribution<double> log_width(std::log(1e4), std::log(1e7)),
+  std::uniform_real_distribution<double> log_precision(std::log(1e4), std::log(1e7)),
       center(0.09, 0.11);
   double lowest = INFINITY;
   int agreeing = 0;
@@ -94,7 +95,7 @@ TEST(GaussianFit, IndependentRandomStartsFindNoLowerCost) {
     nlopt_set_min_objective(opt, ReducedCost, &reduced);
     nlopt_set_xtol_rel(opt, 1e-12);
     nlopt_set_maxeval(opt, 20000);
-    double x[4] = {log_width(rng), log_width(rng), center(rng), center(rng)};
+    double x[4] = {log_precision(rng), log_precision(rng), center(rng), center(rng)};
     double value = INFINITY;
     nlopt_optimize(opt, x, &value);
     nlopt_destroy(opt);
@@ -119,8 +120,8 @@ TEST(GaussianFit, OnlyTheRatioOfWidthToSigmaMatters) {
   const FitResult one = FitGaussians(Indicator(2), kL1, kL2, 1.0);
   const FitResult four = FitGaussians(Indicator(2), kL1, kL2, 4.0);
   EXPECT_NEAR(one.cost, four.cost, 1e-10 * one.cost);
-  EXPECT_NEAR(4.0 * one.gaussians[0].width, four.gaussians[0].width,
-              1e-5 * four.gaussians[0].width);
+  EXPECT_NEAR(4.0 * one.gaussians[0].precision, four.gaussians[0].precision,
+              1e-5 * four.gaussians[0].precision);
 }
 
 TEST(GaussianFit, IsDeterministic) {
@@ -128,7 +129,7 @@ TEST(GaussianFit, IsDeterministic) {
   const FitResult b = FitGaussians(Indicator(3), kL1, kL2, 1.0);
   ASSERT_EQ(a.gaussians.size(), b.gaussians.size());
   for (std::size_t k = 0; k < a.gaussians.size(); ++k) {
-    EXPECT_EQ(a.gaussians[k].width, b.gaussians[k].width);
+    EXPECT_EQ(a.gaussians[k].precision, b.gaussians[k].precision);
     EXPECT_EQ(a.gaussians[k].center, b.gaussians[k].center);
     EXPECT_EQ(a.gaussians[k].amplitude, b.gaussians[k].amplitude);
   }
@@ -145,7 +146,7 @@ TEST(GaussianFit, SamplesFromKnownGaussiansAreRecovered) {
     double y = 0.0;
     for (const Gaussian& g : truth) {
       y += g.amplitude / std::sqrt(2 * std::numbers::pi) *
-           std::exp(-g.width * (x - g.center) * (x - g.center) / 2);
+           std::exp(-g.precision * (x - g.center) * (x - g.center) / 2);
     }
     spec.points.push_back({x, y});
   }
@@ -156,7 +157,7 @@ TEST(GaussianFit, SamplesFromKnownGaussiansAreRecovered) {
             [](const Gaussian& p, const Gaussian& q) { return p.center < q.center; });
   for (std::size_t k = 0; k < truth.size(); ++k) {
     EXPECT_NEAR(found[k].center, truth[k].center, 1e-7);
-    EXPECT_NEAR(found[k].width, truth[k].width, 1e-4 * truth[k].width);
+    EXPECT_NEAR(found[k].precision, truth[k].precision, 1e-4 * truth[k].precision);
     EXPECT_NEAR(found[k].amplitude, truth[k].amplitude, 1e-4 * truth[k].amplitude);
   }
 }
@@ -165,7 +166,7 @@ TEST(GaussianFit, FixedShapesGiveTheLinearLeastSquaresAmplitudes) {
   FitSpec spec;
   spec.count = 3;
   spec.target = FitTargetKind::kSamples;
-  spec.widths = {1e5, 3e5, 1e5};
+  spec.precisions = {1e5, 3e5, 1e5};
   spec.centers = {0.096, 0.1, 0.104};
   std::mt19937 rng(4);
   std::uniform_real_distribution<double> noise(-0.05, 0.05);
@@ -180,14 +181,14 @@ TEST(GaussianFit, FixedShapesGiveTheLinearLeastSquaresAmplitudes) {
     y(i) = spec.points[i].y;
     for (int k = 0; k < 3; ++k) {
       const double dx = spec.points[i].x - spec.centers[k];
-      design(i, k) = std::exp(-spec.widths[k] * dx * dx / 2) / std::sqrt(2 * std::numbers::pi);
+      design(i, k) = std::exp(-spec.precisions[k] * dx * dx / 2) / std::sqrt(2 * std::numbers::pi);
     }
   }
   const Eigen::VectorXd reference = design.householderQr().solve(y);
   const FitResult fit = FitGaussians(spec, kL1, kL2, 1.0);
   EXPECT_EQ(fit.iterations, 0);
   for (int k = 0; k < 3; ++k) {
-    EXPECT_EQ(fit.gaussians[k].width, spec.widths[k]);
+    EXPECT_EQ(fit.gaussians[k].precision, spec.precisions[k]);
     EXPECT_NEAR(fit.gaussians[k].amplitude, reference(k), 1e-8 * reference.norm());
   }
 }
@@ -235,12 +236,7 @@ TEST(GaussianFit, PolygonFitFollowsABellShapedCurve) {
 }
 
 std::string Rejection(const FitSpec& spec) {
-  try {
-    Validate(spec);
-  } catch (const ParameterError& e) {
-    return e.what();
-  }
-  return "accepted";
+  return testing::Rejection([&] { Validate(spec); });
 }
 
 TEST(GaussianFit, RejectsEachRule) {
@@ -253,12 +249,12 @@ TEST(GaussianFit, RejectsEachRule) {
   spec.points = {{0.1, 1.0}, {0.09, 1.0}};
   EXPECT_THAT(Rejection(spec), HasSubstr("points[1][0] = 0.09: polygon x must be strictly"));
   spec = Indicator(2);
-  spec.widths = {1.0, 2.0};
+  spec.precisions = {1.0, 2.0};
   EXPECT_THAT(Rejection(spec), HasSubstr("give both or neither"));
   spec.centers = {0.1};
   EXPECT_THAT(Rejection(spec), HasSubstr("centers = 1 values: must have count = 2"));
   spec.centers = {0.1, 0.1};
-  spec.widths = {1.0, 0.0};
+  spec.precisions = {1.0, 0.0};
   EXPECT_THAT(Rejection(spec), HasSubstr("widths[1] = 0: must be finite and > 0"));
   EXPECT_THAT([] { ParseFitTargetKind("square"); },
               ::testing::ThrowsMessage<ParameterError>(HasSubstr("target = square: must be")));

@@ -8,6 +8,7 @@
 
 #include "musclesim/errors.h"
 #include "support/numeric.h"
+#include "support/rejection.h"
 
 namespace musclesim {
 namespace {
@@ -54,14 +55,7 @@ TEST(Passive, SlopeMatchesFiniteDifference) {
 }
 
 TEST(Passive, ValidateRejectsEachRule) {
-  auto broken = [](PassiveParams p) {
-    try {
-      Validate(p);
-    } catch (const ParameterError& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
-  };
+  auto broken = [](PassiveParams p) { return testing::Rejection([&] { Validate(p); }); };
   EXPECT_THAT(broken({-1.0, 30.0, 0.1}), HasSubstr("k_p = -1: must be finite and >= 0"));
   EXPECT_THAT(broken({1.0, 0.0, 0.1}), HasSubstr("alpha = 0: must be finite and > 0"));
   EXPECT_THAT(broken({1.0, 30.0, std::numeric_limits<double>::quiet_NaN()}),

@@ -69,7 +69,7 @@ TEST(Tension, ValidationNamesTheBlock) {
   EXPECT_THAT([&] { TensionModel m(p); },
               ::testing::ThrowsMessage<ParameterError>(::testing::HasSubstr("f_iso = -1")));
   p = Example();
-  p.active_length.gaussians[0].width = 0;
+  p.active_length.gaussians[0].precision = 0;
   EXPECT_THAT([&] { TensionModel m(p); },
               ::testing::ThrowsMessage<ParameterError>(
                   ::testing::HasSubstr("active_length.gaussians[0].width = 0")));

@@ -7,6 +7,7 @@
 
 #include "musclesim/errors.h"
 #include "support/numeric.h"
+#include "support/rejection.h"
 
 namespace musclesim {
 namespace {
@@ -90,14 +91,7 @@ TEST(Velocity, SlopeMatchesFiniteDifference) {
 }
 
 TEST(Velocity, ValidateRejectsEachRule) {
-  auto broken = [](VelocityParams p) {
-    try {
-      Validate(p);
-    } catch (const ParameterError& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
-  };
+  auto broken = [](VelocityParams p) { return testing::Rejection([&] { Validate(p); }); };
   EXPECT_THAT(broken({0.0, 3, 1e-3}), HasSubstr("v_max = 0: must be finite and > 0"));
   EXPECT_THAT(broken({1.0, 0, 1e-3}), HasSubstr("n = 0: must be an integer >= 1"));
   EXPECT_THAT(broken({1.0, 3, -1e-3}), HasSubstr("epsilon = -0.001: must be finite and > 0"));

@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "musclesim/model/number_format.h"  // FormatNumber, which Require's messages use
+
 namespace musclesim {
 
 // A parameter value that breaks a rule. `path` is relative to the validated struct.
@@ -31,9 +33,6 @@ class InputError : public std::runtime_error {
  public:
   explicit InputError(const std::string& message) : std::runtime_error(message) {}
 };
-
-// Formats a double the way messages and output files print it: shortest exact form.
-std::string FormatNumber(double value);
 
 // Throws ParameterError(path, value, rule) unless the condition holds.
 void Require(bool condition, std::string_view path, double value, std::string_view rule);

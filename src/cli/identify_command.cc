@@ -74,7 +74,7 @@ ModelYamlDraft DraftModel(const IdentifySpec& spec,
     for (std::size_t k = 0; k < active->curve.gaussians.size(); ++k) {
       draft.gaussian_comments.push_back(
           "amplitude " + PlusMinus(active->amplitudes[k]) + ", width " +
-          PlusMinus(active->widths[k]) + ", center " + PlusMinus(active->centers[k]));
+          PlusMinus(active->precisions[k]) + ", center " + PlusMinus(active->centers[k]));
     }
   } else {
     draft.active_length.comments = {"not identified: one Gaussian a kilometre wide, a flat f_L"};

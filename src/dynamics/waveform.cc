@@ -6,28 +6,23 @@
 #include <string>
 
 #include "musclesim/errors.h"
+#include "musclesim/model/enum_names.h"
 
 namespace musclesim {
 
-std::string_view ToString(WaveformKind kind) {
-  switch (kind) {
-    case WaveformKind::kConstant: return "constant";
-    case WaveformKind::kStep: return "step";
-    case WaveformKind::kRamp: return "ramp";
-    case WaveformKind::kSine: return "sine";
-    case WaveformKind::kPulses: return "pulses";
-    case WaveformKind::kTable: return "table";
-  }
-  return "?";
-}
+constexpr EnumName<WaveformKind> kWaveformNames[] = {
+    {WaveformKind::kConstant, "constant"},
+    {WaveformKind::kStep, "step"},
+    {WaveformKind::kRamp, "ramp"},
+    {WaveformKind::kSine, "sine"},
+    {WaveformKind::kPulses, "pulses"},
+    {WaveformKind::kTable, "table"},
+};
+
+std::string_view ToString(WaveformKind kind) { return ToString(kWaveformNames, kind); }
 
 WaveformKind ParseWaveformKind(std::string_view text) {
-  for (WaveformKind kind : {WaveformKind::kConstant, WaveformKind::kStep, WaveformKind::kRamp,
-                            WaveformKind::kSine, WaveformKind::kPulses, WaveformKind::kTable}) {
-    if (text == ToString(kind)) return kind;
-  }
-  throw ParameterError("type", std::string(text),
-                       "must be one of constant, step, ramp, sine, pulses, table");
+  return Parse(kWaveformNames, "type", text);
 }
 
 double Waveform::Evaluate(double t) const {

@@ -61,7 +61,7 @@ FitSpec ReadFitSpec(const yaml::Source& src, const YAML::Node& node, const std::
   if (node["nonnegative"]) {
     spec.nonnegative = yaml::ReadBool(src, node["nonnegative"], Join(path, "nonnegative"));
   }
-  if (node["widths"]) spec.widths = yaml::ReadNumbers(src, node["widths"], Join(path, "widths"));
+  if (node["widths"]) spec.precisions = yaml::ReadNumbers(src, node["widths"], Join(path, "widths"));
   if (node["centers"]) {
     spec.centers = yaml::ReadNumbers(src, node["centers"], Join(path, "centers"));
   }

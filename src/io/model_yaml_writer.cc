@@ -45,7 +45,7 @@ std::string TrailingComment(const std::vector<std::string>& comments) {
 }
 
 std::string GaussianMap(const Gaussian& g, NumberFormat number) {
-  return "{amplitude: " + number(g.amplitude) + ", width: " + number(g.width) +
+  return "{amplitude: " + number(g.amplitude) + ", width: " + number(g.precision) +
          ", center: " + number(g.center) + "}";
 }
 

@@ -1,7 +1,6 @@
 #include "musclesim/io/output_file.h"
 
 #include <cerrno>
-#include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -108,14 +107,6 @@ void StreamedOutput::Commit() {
   if (error) {
     throw std::runtime_error(path_ + ": cannot replace the file (" + error.message() + ")");
   }
-}
-
-std::string FormatFull(double value) {
-  // as printf's %.17g, several times faster: CSV formatting dominated whole runs
-  char buffer[32];
-  const auto result =
-      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 17);
-  return std::string(buffer, result.ptr);
 }
 
 }  // namespace musclesim

@@ -3,17 +3,17 @@
 #include <sstream>
 
 #include "musclesim/io/output_file.h"
+#include "musclesim/model/enum_names.h"
 
 namespace musclesim {
 
-std::string_view ToString(Phase phase) {
-  switch (phase) {
-    case Phase::kConcentric: return "concentric";
-    case Phase::kEccentric: return "eccentric";
-    case Phase::kIsometric: return "isometric";
-  }
-  return "?";
-}
+constexpr EnumName<Phase> kPhaseNames[] = {
+    {Phase::kConcentric, "concentric"},
+    {Phase::kEccentric, "eccentric"},
+    {Phase::kIsometric, "isometric"},
+};
+
+std::string_view ToString(Phase phase) { return ToString(kPhaseNames, phase); }
 
 void AppendTrajectoryRow(std::string& csv, const TrajectoryPoint& p, double phase_tolerance) {
   const ActuatorSample& s = p.sample;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <string>
 
 #include "musclesim/errors.h"
@@ -25,53 +24,45 @@ void Validate(const ActiveLengthParams& params) {
     const Gaussian& g = params.gaussians[k];
     const std::string at = "gaussians[" + std::to_string(k) + "].";
     Require(std::isfinite(g.amplitude), at + "amplitude", g.amplitude, "must be finite");
-    Require(std::isfinite(g.width) && g.width > 0.0, at + "width", g.width,
+    Require(std::isfinite(g.precision) && g.precision > 0.0, at + "width", g.precision,
             "must be finite and > 0");
     Require(std::isfinite(g.center), at + "center", g.center, "must be finite [m]");
   }
 }
 
 GaussianSum::GaussianSum(const std::vector<Gaussian>& gaussians, double sigma) {
-  const double norm = 1.0 / std::sqrt(2.0 * std::numbers::pi * sigma);
   terms_.reserve(gaussians.size());
-  for (const Gaussian& g : gaussians) {
-    terms_.push_back({g.amplitude * norm, g.width / (2.0 * sigma), g.center});
-  }
+  for (const Gaussian& g : gaussians) terms_.push_back(GaussianTerm::Of(g, sigma));
 }
 
 double GaussianSum::Value(double x) const {
   double f = 0.0;
-  for (const Term& t : terms_) {
-    const double dx = x - t.center;
-    f += t.scale * std::exp(-t.rate * dx * dx);
-  }
+  for (const GaussianTerm& t : terms_) f += t(x);
   return f;
 }
 
 CurvePoint GaussianSum::ValueAndSlope(double x) const {
   CurvePoint out;
-  for (const Term& t : terms_) {
-    const double dx = x - t.center;
-    const double psi = t.scale * std::exp(-t.rate * dx * dx);
+  for (const GaussianTerm& t : terms_) {
+    const double psi = t(x);
     out.value += psi;
-    out.slope -= 2.0 * t.rate * dx * psi;
+    out.slope -= 2.0 * t.rate * (x - t.center) * psi;
   }
   return out;
 }
 
 double GaussianSum::Curvature(double x) const {
   double curvature = 0.0;
-  for (const Term& t : terms_) {
+  for (const GaussianTerm& t : terms_) {
     const double dx = x - t.center;
-    const double psi = t.scale * std::exp(-t.rate * dx * dx);
-    curvature += psi * (4.0 * t.rate * t.rate * dx * dx - 2.0 * t.rate);
+    curvature += t(x) * (4.0 * t.rate * t.rate * dx * dx - 2.0 * t.rate);
   }
   return curvature;
 }
 
 double GaussianSum::NarrowestSpread() const {
   double largest_rate = 0.0;
-  for (const Term& t : terms_) largest_rate = std::max(largest_rate, t.rate);
+  for (const GaussianTerm& t : terms_) largest_rate = std::max(largest_rate, t.rate);
   // rate = b / (2 sigma) = 1 / (2 s^2)
   return 1.0 / std::sqrt(2.0 * largest_rate);
 }

@@ -1,7 +1,6 @@
 #include "musclesim/errors.h"
 
-#include <charconv>
-#include <cmath>
+#include <utility>
 
 namespace musclesim {
 
@@ -10,13 +9,6 @@ ParameterError::ParameterError(std::string path, std::string value, std::string 
       path_(std::move(path)),
       value_(std::move(value)),
       rule_(std::move(rule)) {}
-
-std::string FormatNumber(double value) {
-  // std::to_chars gives the shortest text that reads back to the same double
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
 
 void Require(bool condition, std::string_view path, double value, std::string_view rule) {
   if (!condition) {

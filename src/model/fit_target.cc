@@ -3,26 +3,21 @@
 #include <cmath>
 #include <numbers>
 
-#include "musclesim/errors.h"
+#include "musclesim/model/active_length.h"
+#include "musclesim/model/enum_names.h"
 
 namespace musclesim {
 
-std::string_view ToString(FitTargetKind kind) {
-  switch (kind) {
-    case FitTargetKind::kIndicator: return "indicator";
-    case FitTargetKind::kPolygon: return "polygon";
-    case FitTargetKind::kSamples: return "samples";
-  }
-  return "?";
-}
+constexpr EnumName<FitTargetKind> kFitTargetNames[] = {
+    {FitTargetKind::kIndicator, "indicator"},
+    {FitTargetKind::kPolygon, "polygon"},
+    {FitTargetKind::kSamples, "samples"},
+};
+
+std::string_view ToString(FitTargetKind kind) { return ToString(kFitTargetNames, kind); }
 
 FitTargetKind ParseFitTargetKind(std::string_view text) {
-  for (FitTargetKind kind :
-       {FitTargetKind::kIndicator, FitTargetKind::kPolygon, FitTargetKind::kSamples}) {
-    if (text == ToString(kind)) return kind;
-  }
-  throw ParameterError("target", std::string(text),
-                       "must be one of indicator, polygon, samples");
+  return Parse(kFitTargetNames, "target", text);
 }
 
 namespace {
@@ -39,9 +34,9 @@ double NormalMass(double z1, double z2) {
 }
 
 // integral over [x1, x2] of phi(x) * (y1 + slope (x - x1)), phi the unit-amplitude
-// Gaussian of width b and centre d, with its derivatives in b and d.
+// Gaussian of precision b and centre d, with its derivatives in b and d.
 struct PieceIntegral {
-  double value, d_width, d_center;
+  double value, d_precision, d_center;
 };
 
 PieceIntegral IntegratePiece(double x1, double x2, double y1, double slope, double b,
@@ -64,8 +59,8 @@ PieceIntegral IntegratePiece(double x1, double x2, double y1, double slope, doub
   const double d_inner =
       (at_center * (z2 * n2 - z1 * n1) +
        slope * spread * (n2 - n1 + z2 * z2 * n2 - z1 * z1 * n1)) / (2.0 * b);
-  const double d_width = -value / (2.0 * b) + inv_sqrt_b * d_inner;
-  return {value, d_width, d_center};
+  const double d_precision = -value / (2.0 * b) + inv_sqrt_b * d_inner;
+  return {value, d_precision, d_center};
 }
 
 class PiecewiseLinearTarget final : public FitTarget {
@@ -79,16 +74,16 @@ class PiecewiseLinearTarget final : public FitTarget {
     }
   }
 
-  void Normal(const GaussianShapes& shapes, Eigen::MatrixXd& gram,
+  void NormalEquations(const GaussianShapes& shapes, Eigen::MatrixXd& gram,
               Eigen::VectorXd& projection) const override {
-    const Eigen::Index m = shapes.widths.size();
+    const Eigen::Index m = shapes.precisions.size();
     gram.resize(m, m);
     projection.resize(m);
     for (Eigen::Index i = 0; i < m; ++i) {
       for (Eigen::Index j = 0; j <= i; ++j) {
         gram(i, j) = gram(j, i) = GramEntry(shapes, i, j);
       }
-      projection(i) = Project(shapes.widths(i), shapes.centers(i)).value;
+      projection(i) = Project(shapes.precisions(i), shapes.centers(i)).value;
     }
   }
 
@@ -96,7 +91,7 @@ class PiecewiseLinearTarget final : public FitTarget {
               CostGradient* gradient) const override {
     Eigen::MatrixXd gram;
     Eigen::VectorXd projection;
-    Normal(shapes, gram, projection);
+    NormalEquations(shapes, gram, projection);
     const Eigen::VectorXd gram_a = gram * a;
     const double cost = a.dot(gram_a) - 2.0 * a.dot(projection) + norm_squared_;
     if (gradient != nullptr) FillGradient(a, shapes, gram, gram_a, projection, *gradient);
@@ -110,7 +105,7 @@ class PiecewiseLinearTarget final : public FitTarget {
  private:
   // G_ij = exp(-b_i b_j (d_i - d_j)^2 / (2 sigma B)) / sqrt(2 pi sigma B), B = b_i + b_j
   double GramEntry(const GaussianShapes& shapes, Eigen::Index i, Eigen::Index j) const {
-    const double bi = shapes.widths(i), bj = shapes.widths(j);
+    const double bi = shapes.precisions(i), bj = shapes.precisions(j);
     const double sum = bi + bj;
     const double gap = shapes.centers(i) - shapes.centers(j);
     return std::exp(-bi * bj * gap * gap / (2.0 * sigma_ * sum)) /
@@ -126,7 +121,7 @@ class PiecewiseLinearTarget final : public FitTarget {
       const PieceIntegral piece =
           IntegratePiece(p.x, q.x, p.y, (q.y - p.y) / (q.x - p.x), b, d, sigma_);
       total.value += piece.value;
-      total.d_width += piece.d_width;
+      total.d_precision += piece.d_precision;
       total.d_center += piece.d_center;
     }
     return total;
@@ -137,22 +132,22 @@ class PiecewiseLinearTarget final : public FitTarget {
                     const Eigen::VectorXd& projection, CostGradient& out) const {
     const Eigen::Index m = a.size();
     out.amplitudes = 2.0 * (gram_a - projection);
-    out.widths.setZero(m);
+    out.precisions.setZero(m);
     out.centers.setZero(m);
     for (Eigen::Index k = 0; k < m; ++k) {
-      const double bk = shapes.widths(k);
+      const double bk = shapes.precisions(k);
       // d/d(b_k, d_k) of sum_ij a_i a_j G_ij = 2 a_k sum_j a_j dG_kj / d(b_k, d_k)
-      double by_width = 0.0, by_center = 0.0;
+      double by_precision = 0.0, by_center = 0.0;
       for (Eigen::Index j = 0; j < m; ++j) {
-        const double bj = shapes.widths(j);
+        const double bj = shapes.precisions(j);
         const double sum = bk + bj;
         const double gap = shapes.centers(k) - shapes.centers(j);
-        by_width += a(j) * gram(k, j) *
+        by_precision += a(j) * gram(k, j) *
                     (-0.5 / sum - gap * gap * bj * bj / (2.0 * sigma_ * sum * sum));
         by_center += a(j) * gram(k, j) * (-bk * bj * gap / (sigma_ * sum));
       }
       const PieceIntegral r = Project(bk, shapes.centers(k));
-      out.widths(k) = 2.0 * a(k) * (by_width - r.d_width);
+      out.precisions(k) = 2.0 * a(k) * (by_precision - r.d_precision);
       out.centers(k) = 2.0 * a(k) * (by_center - r.d_center);
     }
   }
@@ -173,7 +168,7 @@ class SampleTarget final : public FitTarget {
     }
   }
 
-  void Normal(const GaussianShapes& shapes, Eigen::MatrixXd& gram,
+  void NormalEquations(const GaussianShapes& shapes, Eigen::MatrixXd& gram,
               Eigen::VectorXd& projection) const override {
     const Eigen::MatrixXd basis = Basis(shapes);
     gram = basis.transpose() * basis;
@@ -187,14 +182,14 @@ class SampleTarget final : public FitTarget {
     if (gradient != nullptr) {
       const Eigen::Index m = a.size();
       gradient->amplitudes = 2.0 * basis.transpose() * residual;
-      gradient->widths.setZero(m);
+      gradient->precisions.setZero(m);
       gradient->centers.setZero(m);
       for (Eigen::Index k = 0; k < m; ++k) {
         for (std::size_t s = 0; s < samples_.size(); ++s) {
           const double dx = samples_[s].x - shapes.centers(k);
           const double weight = 2.0 * residual(s) * a(k) * basis(s, k);
-          gradient->widths(k) += weight * (-dx * dx / (2.0 * sigma_));
-          gradient->centers(k) += weight * shapes.widths(k) * dx / sigma_;
+          gradient->precisions(k) += weight * (-dx * dx / (2.0 * sigma_));
+          gradient->centers(k) += weight * shapes.precisions(k) * dx / sigma_;
         }
       }
     }
@@ -206,14 +201,13 @@ class SampleTarget final : public FitTarget {
   double SupportMax() const override { return support_max_; }
 
  private:
+  // phi_k(x_s): the unit-amplitude components at the samples, one column each.
   Eigen::MatrixXd Basis(const GaussianShapes& shapes) const {
-    const double norm = 1.0 / std::sqrt(2.0 * std::numbers::pi * sigma_);
-    Eigen::MatrixXd basis(samples_.size(), shapes.widths.size());
+    Eigen::MatrixXd basis(samples_.size(), shapes.precisions.size());
     for (Eigen::Index k = 0; k < basis.cols(); ++k) {
-      for (std::size_t s = 0; s < samples_.size(); ++s) {
-        const double dx = samples_[s].x - shapes.centers(k);
-        basis(s, k) = norm * std::exp(-shapes.widths(k) * dx * dx / (2.0 * sigma_));
-      }
+      const GaussianTerm phi =
+          GaussianTerm::Unit(shapes.precisions(k), shapes.centers(k), sigma_);
+      for (std::size_t s = 0; s < samples_.size(); ++s) basis(s, k) = phi(samples_[s].x);
     }
     return basis;
   }

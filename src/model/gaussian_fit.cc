@@ -43,7 +43,7 @@ void Validate(const FitSpec& spec) {
       }
       break;
     case FitTargetKind::kSamples: {
-      const bool shapes_fixed = !spec.widths.empty();
+      const bool shapes_fixed = !spec.precisions.empty();
       const std::size_t needed = static_cast<std::size_t>(spec.count) * (shapes_fixed ? 1 : 3);
       if (spec.points.size() < needed) {
         throw ParameterError("points", std::to_string(spec.points.size()) + " points",
@@ -54,21 +54,21 @@ void Validate(const FitSpec& spec) {
       break;
     }
   }
-  if (spec.widths.empty() != spec.centers.empty()) {
-    throw ParameterError(spec.widths.empty() ? "centers" : "widths", "given alone",
+  if (spec.precisions.empty() != spec.centers.empty()) {
+    throw ParameterError(spec.precisions.empty() ? "centers" : "widths", "given alone",
                          "widths and centers fix the shapes together: give both or neither");
   }
-  if (!spec.widths.empty()) {
+  if (!spec.precisions.empty()) {
     for (const char* key : {"widths", "centers"}) {
-      const auto& list = std::string(key) == "widths" ? spec.widths : spec.centers;
+      const auto& list = std::string(key) == "widths" ? spec.precisions : spec.centers;
       if (list.size() != static_cast<std::size_t>(spec.count)) {
         throw ParameterError(key, std::to_string(list.size()) + " values",
                              "must have count = " + std::to_string(spec.count) + " values");
       }
     }
-    for (std::size_t k = 0; k < spec.widths.size(); ++k) {
-      Require(std::isfinite(spec.widths[k]) && spec.widths[k] > 0.0,
-              "widths[" + std::to_string(k) + "]", spec.widths[k], "must be finite and > 0");
+    for (std::size_t k = 0; k < spec.precisions.size(); ++k) {
+      Require(std::isfinite(spec.precisions[k]) && spec.precisions[k] > 0.0,
+              "widths[" + std::to_string(k) + "]", spec.precisions[k], "must be finite and > 0");
       Require(std::isfinite(spec.centers[k]), "centers[" + std::to_string(k) + "]",
               spec.centers[k], "must be finite");
     }
@@ -158,13 +158,13 @@ class ReducedCost {
         nonnegative_(nonnegative),
         lo_(target.SupportMin()),
         scale_(target.SupportMax() - target.SupportMin()),
-        width_ref_(sigma / (scale_ * scale_)),
+        precision_ref_(sigma / (scale_ * scale_)),
         norm_(target.NormSquared()) {}
 
   GaussianShapes Shapes(const double* theta, int m) const {
     GaussianShapes shapes{Eigen::VectorXd(m), Eigen::VectorXd(m)};
     for (int k = 0; k < m; ++k) {
-      shapes.widths(k) = width_ref_ * std::exp(theta[k]);
+      shapes.precisions(k) = precision_ref_ * std::exp(theta[k]);
       shapes.centers(k) = lo_ + scale_ * theta[m + k];
     }
     return shapes;
@@ -176,14 +176,14 @@ class ReducedCost {
     const GaussianShapes shapes = Shapes(theta, m);
     Eigen::MatrixXd gram;
     Eigen::VectorXd projection;
-    target_.Normal(shapes, gram, projection);
+    target_.NormalEquations(shapes, gram, projection);
     const Eigen::VectorXd a = SolveAmplitudes(gram, projection, nonnegative_);
     CostGradient g;
     // the amplitudes are optimal, so the reduced gradient is the partial one in (b, d)
     const double cost = target_.Cost(a, shapes, gradient != nullptr ? &g : nullptr) / norm_;
     if (gradient != nullptr) {
       for (int k = 0; k < m; ++k) {
-        gradient[k] = g.widths(k) * shapes.widths(k) / norm_;
+        gradient[k] = g.precisions(k) * shapes.precisions(k) / norm_;
         gradient[m + k] = g.centers(k) * scale_ / norm_;
       }
     }
@@ -197,7 +197,7 @@ class ReducedCost {
  private:
   const FitTarget& target_;
   bool nonnegative_;
-  double lo_, scale_, width_ref_, norm_;
+  double lo_, scale_, precision_ref_, norm_;
   int evaluations_ = 0;
 };
 
@@ -212,8 +212,8 @@ double NloptObjective(unsigned n, const double* theta, double* gradient, void* d
   return (*problem->cost)(theta, gradient, problem->m);
 }
 
-// Starting points: centres spread evenly over the support (tightly or fully) and widths
-// of a fraction of each component's share of it. Fixed, so fits are reproducible.
+// Starting points: centres spread evenly over the support (tightly or fully) and spreads
+// (standard deviations) of a fraction of each component's share of it. Fixed, so fits are reproducible.
 std::vector<std::vector<double>> StartingPoints(int m) {
   std::vector<std::vector<double>> starts;
   for (double spread : {1.0, 0.5}) {
@@ -234,11 +234,11 @@ std::vector<std::vector<double>> StartingPoints(int m) {
 FitResult Finish(const FitTarget& target, const GaussianShapes& shapes, bool nonnegative) {
   Eigen::MatrixXd gram;
   Eigen::VectorXd projection;
-  target.Normal(shapes, gram, projection);
+  target.NormalEquations(shapes, gram, projection);
   const Eigen::VectorXd a = SolveAmplitudes(gram, projection, nonnegative);
   FitResult result;
   for (Eigen::Index k = 0; k < a.size(); ++k) {
-    result.gaussians.push_back({a(k), shapes.widths(k), shapes.centers(k)});
+    result.gaussians.push_back({a(k), shapes.precisions(k), shapes.centers(k)});
   }
   result.cost = std::max(0.0, target.Cost(a, shapes, nullptr));
   result.relative_residual = result.cost / target.NormSquared();
@@ -255,8 +255,8 @@ FitResult FitGaussians(const FitSpec& spec, double l1, double l2, double sigma) 
   }
   const int m = spec.count;
 
-  if (!spec.widths.empty()) {
-    GaussianShapes fixed{Eigen::Map<const Eigen::VectorXd>(spec.widths.data(), m),
+  if (!spec.precisions.empty()) {
+    GaussianShapes fixed{Eigen::Map<const Eigen::VectorXd>(spec.precisions.data(), m),
                          Eigen::Map<const Eigen::VectorXd>(spec.centers.data(), m)};
     FitResult result = Finish(*target, fixed, spec.nonnegative);
     result.starts = 0;
@@ -270,7 +270,7 @@ FitResult FitGaussians(const FitSpec& spec, double l1, double l2, double sigma) 
   nlopt_opt optimiser = owner.get();
   std::vector<double> lower(2 * m), upper(2 * m);
   for (int k = 0; k < m; ++k) {
-    // widths from 100 support widths down to 1e-4 of one; centres near the support
+    // spreads from 100 support widths down to 1e-4 of one; centres near the support
     lower[k] = -2.0 * std::log(100.0);
     upper[k] = -2.0 * std::log(1e-4);
     lower[m + k] = -3.0;

@@ -14,37 +14,39 @@
 #include <stdexcept>
 
 #include "musclesim/errors.h"
+#include "musclesim/model/enum_names.h"
 
 namespace musclesim {
 
-std::string_view ToString(IntegrationMethod method) {
-  return method == IntegrationMethod::kBdf ? "bdf" : "adams";
-}
+constexpr EnumName<IntegrationMethod> kMethodNames[] = {
+    {IntegrationMethod::kBdf, "bdf"},
+    {IntegrationMethod::kAdams, "adams"},
+};
+
+std::string_view ToString(IntegrationMethod method) { return ToString(kMethodNames, method); }
 
 IntegrationMethod ParseIntegrationMethod(std::string_view text) {
-  if (text == "bdf") return IntegrationMethod::kBdf;
-  if (text == "adams") return IntegrationMethod::kAdams;
-  throw ParameterError("method", std::string(text), "must be bdf or adams");
+  return Parse(kMethodNames, "method", text);
 }
 
-std::string_view ToString(JacobianKind kind) {
-  return kind == JacobianKind::kAnalytic ? "analytic" : "difference_quotient";
-}
+constexpr EnumName<JacobianKind> kJacobianNames[] = {
+    {JacobianKind::kAnalytic, "analytic"},
+    {JacobianKind::kDifferenceQuotient, "difference_quotient"},
+};
+
+std::string_view ToString(JacobianKind kind) { return ToString(kJacobianNames, kind); }
 
 JacobianKind ParseJacobianKind(std::string_view text) {
-  if (text == "analytic") return JacobianKind::kAnalytic;
-  if (text == "difference_quotient") return JacobianKind::kDifferenceQuotient;
-  throw ParameterError("jacobian", std::string(text), "must be analytic or difference_quotient");
+  return Parse(kJacobianNames, "jacobian", text);
 }
 
-std::string_view ToString(RunStatus status) {
-  switch (status) {
-    case RunStatus::kCompleted: return "completed";
-    case RunStatus::kLimit: return "limit";
-    case RunStatus::kFailed: return "failed";
-  }
-  return "?";
-}
+constexpr EnumName<RunStatus> kStatusNames[] = {
+    {RunStatus::kCompleted, "completed"},
+    {RunStatus::kLimit, "limit"},
+    {RunStatus::kFailed, "failed"},
+};
+
+std::string_view ToString(RunStatus status) { return ToString(kStatusNames, status); }
 
 void Validate(const SolverOptions& o) {
   // below ~100 ulps double precision cannot meet a tolerance (CVODE: CV_TOO_MUCH_ACC); at 1

@@ -6,11 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "musclesim/io/csv_table.h"
 #include "musclesim/errors.h"
 #include "musclesim/model/gaussian_fit.h"
+#include "musclesim/model/passive.h"
 
 namespace musclesim {
 
@@ -30,7 +30,7 @@ Eigen::MatrixXd Covariance(const Eigen::MatrixXd& jacobian, double rss) {
 
 double Rmse(double rss, std::size_t n) { return std::sqrt(rss / static_cast<double>(n)); }
 
-// ---- passive: T = k (exp(alpha (x - x0)) - 1) above x0 ----------------------------------
+// ---- passive: the model's T_p (eq. 1) ------------------------------------------------
 
 // Parameters (ln k, ln alpha) with x0 fixed, or (ln k, ln alpha, x0): logs keep k, alpha > 0.
 struct PassiveResiduals : Eigen::DenseFunctor<double> {
@@ -38,27 +38,28 @@ struct PassiveResiduals : Eigen::DenseFunctor<double> {
       : Eigen::DenseFunctor<double>(slack ? 2 : 3, static_cast<int>(d.size())), data(d),
         fixed_slack(slack) {}
 
-  double Slack(const Eigen::VectorXd& p) const { return fixed_slack ? *fixed_slack : p(2); }
+  PassiveParams Params(const Eigen::VectorXd& p) const {
+    return {std::exp(p(0)), std::exp(p(1)), fixed_slack ? *fixed_slack : p(2)};
+  }
 
   int operator()(const Eigen::VectorXd& p, Eigen::VectorXd& r) const {
-    const double k = std::exp(p(0)), alpha = std::exp(p(1)), x0 = Slack(p);
+    const PassiveParams params = Params(p);
     for (std::size_t i = 0; i < data.size(); ++i) {
-      const double model = data[i].x > x0 ? k * std::expm1(alpha * (data[i].x - x0)) : 0.0;
-      r(static_cast<Eigen::Index>(i)) = model - data[i].y;
+      r(static_cast<Eigen::Index>(i)) = PassiveTension(params, data[i].x).value - data[i].y;
     }
     return 0;
   }
 
+  // with T and dT/dx from PassiveTension, u = x - x0: dT/d(ln k) = T,
+  // dT/d(ln alpha) = u dT/dx, dT/dx0 = -dT/dx
   int df(const Eigen::VectorXd& p, Eigen::MatrixXd& j) const {
-    const double k = std::exp(p(0)), alpha = std::exp(p(1)), x0 = Slack(p);
-    j.setZero();
+    const PassiveParams params = Params(p);
     for (std::size_t i = 0; i < data.size(); ++i) {
       const auto row = static_cast<Eigen::Index>(i);
-      if (data[i].x <= x0) continue;
-      const double u = data[i].x - x0, e = std::exp(alpha * u);
-      j(row, 0) = k * (e - 1.0);
-      j(row, 1) = k * e * alpha * u;
-      if (!fixed_slack) j(row, 2) = -k * alpha * e;
+      const CurvePoint t = PassiveTension(params, data[i].x);
+      j(row, 0) = t.value;
+      j(row, 1) = (data[i].x - params.slack_length) * t.slope;
+      if (!fixed_slack) j(row, 2) = -t.slope;
     }
     return 0;
   }
@@ -105,7 +106,7 @@ Eigen::VectorXd PassiveStart(const std::vector<DataPoint>& data, double x0, doub
 }  // namespace
 
 double PassiveIdentification::Evaluate(double x) const {
-  return x > slack_length.value ? k_p.value * std::expm1(alpha.value * (x - slack_length.value)) : 0.0;
+  return PassiveTension({k_p.value, alpha.value, slack_length.value}, x).value;
 }
 
 PassiveIdentification IdentifyPassive(const std::vector<DataPoint>& data) {
@@ -178,10 +179,6 @@ PassiveIdentification IdentifyPassive(const std::vector<DataPoint>& data) {
 
 // ---- active: the samples fit -----------------------------------------------------------
 
-double ActiveIdentification::Evaluate(double x) const {
-  return f_iso.value * GaussianSum(curve.gaussians, curve.sigma).Value(x);
-}
-
 ActiveIdentification IdentifyActive(const std::vector<DataPoint>& data, int count, bool nonnegative) {
   double top = 0.0;
   for (const DataPoint& d : data) top = std::max(top, std::abs(d.y));
@@ -215,29 +212,30 @@ ActiveIdentification IdentifyActive(const std::vector<DataPoint>& data, int coun
   if (!(l2 > l1)) { l1 = peak.x - 1e-6 * span; l2 = peak.x + 1e-6 * span; }
   out.curve.optimal_min = l1;
   out.curve.optimal_max = l2;
+  out.sum = GaussianSum(out.curve.gaussians, out.curve.sigma);
 
   // residual Jacobian of the normalised fit in (a, b, d), for the standard errors
   const auto m = static_cast<Eigen::Index>(fit.gaussians.size());
   Eigen::MatrixXd jacobian(static_cast<Eigen::Index>(data.size()), 3 * m);
   double rss = 0.0;
-  const double norm = 1.0 / std::sqrt(2.0 * std::numbers::pi);
   for (std::size_t s = 0; s < data.size(); ++s) {
     const auto row = static_cast<Eigen::Index>(s);
     rss += std::pow(sum.Value(data[s].x) - data[s].y / top, 2);
     for (Eigen::Index k = 0; k < m; ++k) {
       const Gaussian& g = fit.gaussians[static_cast<std::size_t>(k)];
       const double dx = data[s].x - g.center;
-      const double phi = norm * std::exp(-g.width * dx * dx / 2.0);
+      // psi_k = a_k phi_k with sigma = 1: d/da = phi, d/db = -psi dx^2 / 2, d/dd = psi b dx
+      const double phi = GaussianTerm::Unit(g.precision, g.center, 1.0)(data[s].x);
       jacobian(row, k) = phi;
       jacobian(row, m + k) = g.amplitude * phi * (-dx * dx / 2.0);
-      jacobian(row, 2 * m + k) = g.amplitude * phi * g.width * dx;
+      jacobian(row, 2 * m + k) = g.amplitude * phi * g.precision * dx;
     }
   }
   const Eigen::MatrixXd cov = Covariance(jacobian, rss);
   for (Eigen::Index k = 0; k < m; ++k) {
     const Gaussian& g = out.curve.gaussians[static_cast<std::size_t>(k)];
     out.amplitudes.push_back({g.amplitude, std::sqrt(cov(k, k)) / peak.value});
-    out.widths.push_back({g.width, std::sqrt(cov(m + k, m + k))});
+    out.precisions.push_back({g.precision, std::sqrt(cov(m + k, m + k))});
     out.centers.push_back({g.center, std::sqrt(cov(2 * m + k, 2 * m + k))});
   }
   // f_iso's error by the delta method, its gradient by central differences of the peak
@@ -246,7 +244,7 @@ ActiveIdentification IdentifyActive(const std::vector<DataPoint>& data, int coun
     const auto shifted = [&](double sign) {
       std::vector<Gaussian> gs = fit.gaussians;
       Gaussian& g = gs[static_cast<std::size_t>(j % m)];
-      double& value = j < m ? g.amplitude : (j < 2 * m ? g.width : g.center);
+      double& value = j < m ? g.amplitude : (j < 2 * m ? g.precision : g.center);
       const double h = 1e-6 * std::max(std::abs(value), j < 2 * m ? 1e-12 : span);
       value += sign * h;
       return std::make_pair(MaximumOnInterval(GaussianSum(gs, 1.0), data.front().x, data.back().x).value, h);

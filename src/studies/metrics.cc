@@ -6,6 +6,7 @@
 #include <string>
 
 #include "musclesim/errors.h"
+#include "musclesim/model/enum_names.h"
 
 namespace musclesim {
 
@@ -17,29 +18,20 @@ const std::vector<Metric>& AllMetrics() {
   return all;
 }
 
-std::string_view ToString(Metric metric) {
-  switch (metric) {
-    case Metric::kFinalLength: return "final_length";
-    case Metric::kMinLength: return "min_length";
-    case Metric::kMaxLength: return "max_length";
-    case Metric::kPeakTension: return "peak_tension";
-    case Metric::kMeanShorteningVelocity: return "mean_shortening_velocity";
-    case Metric::kFinalShorteningVelocity: return "final_shortening_velocity";
-    case Metric::kWork: return "work";
-    case Metric::kTimeToLength: return "time_to_length";
-  }
-  return "?";
-}
+constexpr EnumName<Metric> kMetricNames[] = {
+    {Metric::kFinalLength, "final_length"},
+    {Metric::kMinLength, "min_length"},
+    {Metric::kMaxLength, "max_length"},
+    {Metric::kPeakTension, "peak_tension"},
+    {Metric::kMeanShorteningVelocity, "mean_shortening_velocity"},
+    {Metric::kFinalShorteningVelocity, "final_shortening_velocity"},
+    {Metric::kWork, "work"},
+    {Metric::kTimeToLength, "time_to_length"},
+};
 
-Metric ParseMetric(std::string_view text) {
-  for (Metric m : AllMetrics()) {
-    if (text == ToString(m)) return m;
-  }
-  throw ParameterError("metrics", std::string(text),
-                       "must be one of final_length, min_length, max_length, peak_tension, "
-                       "mean_shortening_velocity, final_shortening_velocity, work, "
-                       "time_to_length");
-}
+std::string_view ToString(Metric metric) { return ToString(kMetricNames, metric); }
+
+Metric ParseMetric(std::string_view text) { return Parse(kMetricNames, "metrics", text); }
 
 namespace {
 

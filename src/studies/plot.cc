@@ -29,6 +29,7 @@ std::string Quoted(const std::string& text) {
   return out + "'";
 }
 
+// Plot data in the shortest exact form, as messages print numbers.
 std::string Number(double value) { return FormatNumber(value); }
 
 // What every figure shares.
@@ -123,11 +124,12 @@ std::string CurvesPlotScript(const TensionModel& model, const PlotOptions& optio
   // lengths where the components live, L_opt and the start of the passive rise
   double lo = a.optimal_min, hi = std::max(a.optimal_max, p.passive.slack_length);
   for (const Gaussian& g : a.gaussians) {
-    const double spread = std::sqrt(a.sigma / g.width);
+    const double spread = std::sqrt(a.sigma / g.precision);
     lo = std::min(lo, g.center - 3.0 * spread);
     hi = std::max(hi, g.center + 3.0 * spread);
   }
-  const double norm = 1.0 / (std::sqrt(2.0 * M_PI * a.sigma) * model.active_length().peak_value());
+  // psi_k scaled as f_iso f_L is: f_iso psi_k / max f
+  const double component_scale = p.f_iso / model.active_length().peak_value();
 
   std::ostringstream s;
   s << kFrame;
@@ -138,12 +140,10 @@ std::string CurvesPlotScript(const TensionModel& model, const PlotOptions& optio
     const double x = lo + (hi - lo) * i / samples;
     const TensionSample t = model.Evaluate(x, 0.0, 1.0);
     s << Number(x) << " " << Number(t.passive) << " " << Number(t.active) << " " << Number(t.total);
-    for (const Gaussian& g : a.gaussians) {
-      // psi_k scaled as f_iso f_L is: f_iso psi_k / max f
-      const double psi = p.f_iso * g.amplitude * norm *
-                         std::exp(-g.width * (x - g.center) * (x - g.center) / (2.0 * a.sigma));
-      lowest = std::min(lowest, psi);
-      s << " " << Number(psi);
+    for (const GaussianTerm& psi : model.active_length().sum().terms()) {
+      const double component = component_scale * psi(x);
+      lowest = std::min(lowest, component);
+      s << " " << Number(component);
     }
     s << "\n";
   }

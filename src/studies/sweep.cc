@@ -4,28 +4,27 @@
 #include <filesystem>
 
 #include "musclesim/errors.h"
+#include "musclesim/model/enum_names.h"
 #include "musclesim/io/scenario.h"
 #include "io/yaml_fields.h"
 
 namespace musclesim {
 
-std::string_view ToString(SweepMode mode) {
-  switch (mode) {
-    case SweepMode::kGrid: return "grid";
-    case SweepMode::kZip: return "zip";
-    case SweepMode::kRandom: return "random";
-  }
-  return "?";
-}
+constexpr EnumName<SweepMode> kModeNames[] = {
+    {SweepMode::kGrid, "grid"},
+    {SweepMode::kZip, "zip"},
+    {SweepMode::kRandom, "random"},
+};
 
-std::string_view ToString(TrajectoryPolicy policy) {
-  switch (policy) {
-    case TrajectoryPolicy::kNone: return "none";
-    case TrajectoryPolicy::kAll: return "all";
-    case TrajectoryPolicy::kFailed: return "failed";
-  }
-  return "?";
-}
+std::string_view ToString(SweepMode mode) { return ToString(kModeNames, mode); }
+
+constexpr EnumName<TrajectoryPolicy> kPolicyNames[] = {
+    {TrajectoryPolicy::kNone, "none"},
+    {TrajectoryPolicy::kAll, "all"},
+    {TrajectoryPolicy::kFailed, "failed"},
+};
+
+std::string_view ToString(TrajectoryPolicy policy) { return ToString(kPolicyNames, policy); }
 
 namespace {
 

@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "musclesim/model/number_format.h"  // FormatFull, which the writers of files use
+
 namespace musclesim {
 
 // Writes `content` to `path` atomically; "-" writes to standard output, and an existing
@@ -41,8 +43,5 @@ class StreamedOutput {
   std::FILE* file_ = nullptr;
   bool owns_file_ = false;  // false for standard output
 };
-
-// Formats with 17 significant digits, enough to read back the same double.
-std::string FormatFull(double value);
 
 }  // namespace musclesim

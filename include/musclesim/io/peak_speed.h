@@ -1,5 +1,5 @@
 // The fastest shortening or lengthening of a finished run, against the model's v_max:
-// outside [-v_max, v_max] g(v) is the paper's power law extrapolated (MODEL.md section 4),
+// outside [-v_max, v_max] g(v) is the paper's power law extrapolated (docs/model.md section 4),
 // which whoever reads the result should be told. Data only; the caller words the note.
 #pragma once
 

@@ -4,8 +4,8 @@
 namespace musclesim {
 
 struct CurvePoint {
-  double value = 0.0;  // the function's value
-  double slope = 0.0;  // its first derivative in the function's argument
+  double value = 0.0;  // the function's value [its unit: N for tensions, - for factors]
+  double slope = 0.0;  // its first derivative in the argument [value's unit / argument's]
 };
 
 }  // namespace musclesim

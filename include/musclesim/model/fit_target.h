@@ -1,5 +1,5 @@
 // The least-squares cost of a sum of Gaussians against a target (docs/model.md section 3.1),
-// in closed form, with its gradient in every amplitude, width and centre.
+// in closed form, with its gradient in every amplitude, precision b_k and centre.
 //
 // With unit-amplitude components phi_k (so psi_k = a_k phi_k) every target gives
 //   N(a, b, d) = a^T G(b, d) a - 2 a^T r(b, d) + c,
@@ -24,20 +24,21 @@ FitTargetKind ParseFitTargetKind(std::string_view text);
 
 struct TargetPoint {
   double x = 0.0;  // length [m]
-  double y = 0.0;  // target value (f_L scale, dimensionless)
+  double y = 0.0;  // target value on the f_L scale [-]
 };
 
-// Shapes of m components: width factors b (> 0) and centres d.
+// Shapes of m components.
 struct GaussianShapes {
-  Eigen::VectorXd widths;
-  Eigen::VectorXd centers;
+  Eigen::VectorXd precisions;  // b_k, inverse-variance factors [1/m^2 when sigma = 1], > 0
+  Eigen::VectorXd centers;     // d_k [m]
 };
 
-// Gradient of N in all parameters.
+// Gradient of the cost N in all parameters. N is in [m] for the continuous targets (the
+// integral over length of a dimensionless square) and [-] for samples: "[N]" below.
 struct CostGradient {
-  Eigen::VectorXd amplitudes;
-  Eigen::VectorXd widths;
-  Eigen::VectorXd centers;
+  Eigen::VectorXd amplitudes;  // dN/da_k [N]
+  Eigen::VectorXd precisions;  // dN/db_k [N m^2 when sigma = 1]
+  Eigen::VectorXd centers;     // dN/dd_k [N/m]
 };
 
 class FitTarget {
@@ -45,8 +46,8 @@ class FitTarget {
   virtual ~FitTarget() = default;
 
   // The normal equations at the given shapes: G (m x m) and r (m), resized here.
-  virtual void Normal(const GaussianShapes& shapes, Eigen::MatrixXd& gram,
-                      Eigen::VectorXd& projection) const = 0;
+  virtual void NormalEquations(const GaussianShapes& shapes, Eigen::MatrixXd& gram,
+                               Eigen::VectorXd& projection) const = 0;
   // N(a, b, d), and its gradient when `gradient` is not null.
   virtual double Cost(const Eigen::VectorXd& amplitudes, const GaussianShapes& shapes,
                       CostGradient* gradient) const = 0;

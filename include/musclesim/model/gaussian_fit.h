@@ -1,5 +1,5 @@
 // Fitting a sum of Gaussians to a target by variable projection (docs/model.md section 3.2):
-// amplitudes from the linear least-squares solve (optionally non-negative), widths and
+// amplitudes from the linear least-squares solve (optionally non-negative), precisions and
 // centres by a gradient-based minimiser (NLopt's L-BFGS) of the reduced cost, from a
 // fixed, deterministic set of well-spread starting points; the best result is kept.
 #pragma once
@@ -12,24 +12,25 @@
 namespace musclesim {
 
 struct FitSpec {
-  int count = 2;                                   // number of Gaussians m, 1..12
-  FitTargetKind target = FitTargetKind::kIndicator;
-  std::vector<TargetPoint> points;   // polygon vertices or samples (x strictly increasing)
+  int count = 2;                     // number of Gaussians m [-], 1..12
+  FitTargetKind target = FitTargetKind::kIndicator;  // what the sum approximates
+  std::vector<TargetPoint> points;   // polygon vertices or samples ([m], [-]; x strictly
+                                     // increasing for a polygon)
   bool nonnegative = false;          // keep every amplitude >= 0
   // When both are given (count entries each), the shapes are held fixed and only the
   // amplitudes are solved for: the paper's linear case.
-  std::vector<double> widths;
-  std::vector<double> centers;
+  std::vector<double> precisions;    // b_k [1/m^2 when sigma = 1], > 0; YAML key `widths`
+  std::vector<double> centers;       // d_k [m]
 };
 
-// Throws ParameterError ("count", "points", "points[i]", "widths[k]", ...). `l1`, `l2` is
-// L_opt (the indicator target) and must already be valid.
+// Throws ParameterError ("count", "points", "points[i]", "widths[k]", ...), naming each
+// field by its YAML key.
 void Validate(const FitSpec& spec);
 
 struct FitResult {
-  std::vector<Gaussian> gaussians;
-  double cost = 0.0;               // N at the result
-  double relative_residual = 0.0;  // N / integral(target^2) (or / sum y^2)
+  std::vector<Gaussian> gaussians;  // the fitted components (a_k, b_k, d_k)
+  double cost = 0.0;               // N at the result [m] (continuous targets) or [-] (samples)
+  double relative_residual = 0.0;  // N / integral(target^2) (or / sum y^2) [-]
   int iterations = 0;              // cost evaluations of the winning start (0: shapes fixed)
   int starts = 0;                  // starting points tried
 };

@@ -10,9 +10,9 @@ namespace musclesim {
 
 struct ModelParams {
   double f_iso = 1.0;                 // isometric active tension at optimal length [N], > 0
-  PassiveParams passive;
-  ActiveLengthParams active_length;
-  VelocityParams velocity;
+  PassiveParams passive;              // T_p(x) [N] (eq. 1)
+  ActiveLengthParams active_length;   // f_L(x) [-] (eqs. 3-4, 13)
+  VelocityParams velocity;            // g_eps(v) [-] (eq. 12)
 };
 
 // Throws ParameterError with paths such as "f_iso" or "velocity.n".
@@ -56,9 +56,9 @@ class TensionModel {
   const VelocityCurve& velocity() const { return velocity_; }
 
  private:
-  ModelParams params_;
-  ActiveLengthCurve active_length_;
-  VelocityCurve velocity_;
+  ModelParams params_;                // as validated (units as in ModelParams)
+  ActiveLengthCurve active_length_;   // f_L [-], built from params_.active_length
+  VelocityCurve velocity_;            // g_eps [-], built from params_.velocity
 };
 
 }  // namespace musclesim

@@ -10,7 +10,7 @@ namespace musclesim {
 
 struct VelocityParams {
   double v_max = 1.0;      // maximum shortening velocity [m/s], > 0
-  int n = 1;               // curvature: the power is 1/n, an integer >= 1
+  int n = 1;               // curvature [-]: the power is 1/n, an integer >= 1
   double epsilon = 1e-3;   // regularisation width [m/s], > 0
 };
 
@@ -42,10 +42,10 @@ class VelocityCurve {
 
  private:
   VelocityParams params_;
-  double alpha_;             // 1 / n
-  double half_exponent_;     // (alpha - 1) / 2
-  double epsilon_squared_;
-  double inverse_scale_;     // v_max^-alpha
+  double alpha_;             // 1 / n [-]
+  double half_exponent_;     // (alpha - 1) / 2 [-]
+  double epsilon_squared_;   // eps^2 [m^2/s^2]
+  double inverse_scale_;     // v_max^-alpha [(s/m)^alpha]
   bool linear_;              // n == 1: phi_eps(v) = v exactly
 };
 

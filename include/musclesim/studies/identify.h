@@ -19,9 +19,10 @@
 
 namespace musclesim {
 
+// A fitted parameter; both numbers are in the parameter's unit.
 struct Estimate {
-  double value = 0.0;
-  double standard_error = 0.0;  // NaN when it cannot be estimated
+  double value = 0.0;           // the estimate [the parameter's unit]
+  double standard_error = 0.0;  // [the parameter's unit]; NaN when it cannot be estimated
 };
 
 struct PassiveIdentification {
@@ -29,29 +30,35 @@ struct PassiveIdentification {
   Estimate k_p;           // [N]
   Estimate alpha;         // [1/m]
   double rmse = 0.0;      // [N]
+  // T_p(x) [N] at length x [m], through the model's PassiveTension.
   double Evaluate(double x) const;
 };
 
 struct ActiveIdentification {
   ActiveLengthParams curve;  // f_L: amplitudes scaled so that max f = 1 on optimal_range
   Estimate f_iso;            // [N], the fitted curve's maximum
-  std::vector<Estimate> amplitudes, widths, centers;  // of `curve`, with standard errors
+  std::vector<Estimate> amplitudes;  // a_k of `curve` [-], with standard errors
+  std::vector<Estimate> precisions;  // b_k of `curve` [1/m^2] (YAML key `width`)
+  std::vector<Estimate> centers;     // d_k of `curve` [m]
   double rmse = 0.0;         // [N]
-  double Evaluate(double x) const;  // f_iso f_L(x)
+  GaussianSum sum;           // f of `curve` [-], built once by IdentifyActive
+  // f_iso f(x) [N] at length x [m]; allocates nothing, so timing it times the curve.
+  double Evaluate(double x) const { return f_iso.value * sum.Value(x); }
 };
 
 struct VelocityCandidate {
-  int n = 1;
-  Estimate v_max;   // [m/s]
-  Estimate f_iso;   // [N]
-  double rmse = 0.0;
+  int n = 1;           // the power is 1/n [-]
+  Estimate v_max;      // [m/s]
+  Estimate f_iso;      // [N]
+  double rmse = 0.0;   // [N]
   bool valid = false;  // false when the fit gives no positive v_max (tension rising with v)
 };
 
 struct VelocityIdentification {
-  VelocityCandidate best;
+  VelocityCandidate best;                     // the valid candidate of least RMSE
   std::vector<VelocityCandidate> candidates;  // n = 1..10
-  double Evaluate(double v) const;  // unregularised f_iso g(v)
+  // Unregularised f_iso g(v) [N] at shortening velocity v [m/s].
+  double Evaluate(double v) const;
 };
 
 // Each throws InputError when the data cannot determine the parameters.

@@ -15,22 +15,23 @@ namespace musclesim {
 // Fits a model to data and returns it as a function of x.
 using Fitter = std::function<std::function<double(double)>(const std::vector<DataPoint>&)>;
 
+// Tensions and errors below are in the CSV's tension unit, written [N].
 struct ModelScore {
-  std::string name;
-  double rmse = 0.0;          // on the data it was fitted to
-  double loocv_rmse = 0.0;    // each point predicted by a fit without it; NaN if a fit failed
-  double outside_min = 0.0;   // extremes over the quarter-span beyond each end of the data
-  double outside_max = 0.0;
+  std::string name;           // the model, as the report's row names it
+  double rmse = 0.0;          // on the data it was fitted to [N]
+  double loocv_rmse = 0.0;    // each point predicted by a fit without it [N]; NaN: a fit failed
+  double outside_min = 0.0;   // least value over the quarter-span beyond each end of the data [N]
+  double outside_max = 0.0;   // greatest value there [N]
   bool nonnegative = false;   // outside_min >= 0 (to 1e-9 of the data's scale)
   bool bounded = false;       // |value| <= 2 max|data| outside the data
-  double ns_per_eval = 0.0;   // measured, through the same std::function call for every model
+  double ns_per_eval = 0.0;   // [ns], measured through the same std::function call for every model
 };
 
 struct CurveComparison {
-  std::string curve;          // "passive", "active", "velocity"
-  std::string x_unit;
-  std::size_t points = 0;
-  std::vector<ModelScore> models;
+  std::string curve;               // which curve, as the report's heading names it
+  std::string x_unit;              // the unit of x, as the report prints it
+  std::size_t points = 0;          // data points compared on
+  std::vector<ModelScore> models;  // one row each, in the order given
 };
 
 CurveComparison Compare(const std::string& curve, const std::string& x_unit,

@@ -12,10 +12,10 @@
 namespace musclesim {
 
 struct PlotOptions {
-  std::string output;   // .png or .svg: the format follows the extension
-  int width = 1000;     // [pixels]
-  int height = 750;
-  std::string title;    // empty: a title made from the input
+  std::string output;   // file path, .png or .svg: the format follows the extension
+  int width = 1000;     // figure width [pixels], 100..10000
+  int height = 750;     // figure height [pixels], 100..10000
+  std::string title;    // text; empty: a title made from the input
 };
 
 // Throws InputError unless `output` ends in .png or .svg and the size is 100..10000 px.

@@ -24,7 +24,9 @@ class NaturalCubicSpline {
   double operator()(double x) const;
 
  private:
-  std::vector<double> x_, y_, second_;  // knots, values, second derivatives
+  std::vector<double> x_;       // knots [the data's x unit]
+  std::vector<double> y_;       // values there [the data's y unit]
+  std::vector<double> second_;  // second derivatives there [y unit / x unit^2]
 };
 
 // The least-squares polynomial of `degree` (Householder QR on a Vandermonde matrix in a
@@ -35,8 +37,9 @@ class PolynomialFit {
   double operator()(double x) const;
 
  private:
-  double center_, half_width_;
-  Eigen::VectorXd coefficients_;  // in the scaled variable, constant first
+  double center_;      // middle of the data's x range [x unit]
+  double half_width_;  // half that range [x unit]; t = (x - center_) / half_width_
+  Eigen::VectorXd coefficients_;  // of t^j [y unit], constant first
 };
 
 }  // namespace musclesim

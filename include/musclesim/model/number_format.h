@@ -1,0 +1,18 @@
+// How numbers become text, for every layer: messages and YAML print the shortest exact form,
+// CSV and JSON columns a fixed 17 significant digits. Both read back to the same double;
+// they differ only in how many digits they spend.
+#pragma once
+
+#include <string>
+
+namespace musclesim {
+
+// The shortest text that reads back to the same double ("0.1", "1e-06"): for error
+// messages, model YAML and plot scripts, where a reader wants the value as it was typed.
+std::string FormatNumber(double value);
+
+// Exactly as printf's %.17g ("0.10000000000000001"): for CSV and JSON columns, whose bytes
+// must not depend on how short a value happens to be.
+std::string FormatFull(double value);
+
+}  // namespace musclesim
