@@ -94,7 +94,7 @@ TEST(Velocity, ValidateRejectsEachRule) {
   auto broken = [](VelocityParams p) { return testing::Rejection([&] { Validate(p); }); };
   EXPECT_THAT(broken({0.0, 3, 1e-3}), HasSubstr("v_max = 0: must be finite and > 0"));
   EXPECT_THAT(broken({1.0, 0, 1e-3}), HasSubstr("n = 0: must be an integer >= 1"));
-  EXPECT_THAT(broken({1.0, 3, -1e-3}), HasSubstr("epsilon = -0.001: must be finite and > 0"));
+  EXPECT_THAT(broken({1.0, 3, -1e-3}), HasSubstr("epsilon = -0.001: must be between 1e-12 v_max"));
   EXPECT_THROW(VelocityCurve({1.0, -2, 1e-3}), ParameterError);
 }
 

@@ -26,6 +26,13 @@ void Validate(const ActiveLengthParams& params) {
     Require(std::isfinite(g.amplitude), at + "amplitude", g.amplitude, "must be finite");
     Require(std::isfinite(g.precision) && g.precision > 0.0, at + "width", g.precision,
             "must be finite and > 0");
+    // the normalisation searches L_opt on a grid of at most kMaxPeakSearchCells cells, a
+    // quarter spread each: a narrower component could hide a maximum between two cells
+    const double spread = std::sqrt(params.sigma / g.precision);
+    Require(spread >= (params.optimal_max - params.optimal_min) / kMaxPeakSearchCells * 4.0,
+            at + "width", g.precision,
+            "gives a spread sqrt(sigma / width) = " + FormatNumber(spread) +
+                " m, below 4e-6 of the optimal range: too narrow to locate max f on it");
     Require(std::isfinite(g.center), at + "center", g.center, "must be finite [m]");
   }
 }
@@ -98,7 +105,9 @@ Maximum MaximumOnInterval(const GaussianSum& sum, double lo, double hi) {
   // the narrowest spread cannot step over a maximum and the minimum next to it
   const double width = hi - lo;
   const double step = std::min(width / 64.0, 0.25 * sum.NarrowestSpread());
-  const long cells = std::clamp(static_cast<long>(std::ceil(width / step)), 64L, 1000000L);
+  // clamped as a double first: a cast of an out-of-range double is undefined
+  const long cells = static_cast<long>(
+      std::clamp(std::ceil(width / step), 64.0, static_cast<double>(kMaxPeakSearchCells)));
   double left = lo;
   double left_slope = sum.ValueAndSlope(lo).slope;
   for (long i = 1; i <= cells; ++i) {

@@ -18,6 +18,10 @@ struct Gaussian {
   double center = 0.0;     // d_k [m], finite
 };
 
+// The finest grid the search for max f over L_opt uses: a component must be at least four
+// cells wide (a spread sqrt(sigma / b_k) of 4e-6 of the optimal range) to be resolved.
+inline constexpr long kMaxPeakSearchCells = 1000000;
+
 struct ActiveLengthParams {
   double optimal_min = 0.0;          // l1, start of L_opt [m]
   double optimal_max = 1.0;          // l2, end of L_opt [m], > l1

@@ -8,6 +8,9 @@
 
 namespace musclesim {
 
+// The largest curvature n accepted: the power 1/n is then 0.001, the curve a step.
+inline constexpr int kMaxVelocityExponent = 1000;
+
 struct VelocityParams {
   double v_max = 1.0;      // maximum shortening velocity [m/s], > 0
   int n = 1;               // curvature [-]: the power is 1/n, an integer >= 1
