@@ -37,4 +37,12 @@ class InputError : public std::runtime_error {
 // Throws ParameterError(path, value, rule) unless the condition holds.
 void Require(bool condition, std::string_view path, double value, std::string_view rule);
 
+// `value` after Validate(value) (found by argument-dependent lookup): what a validating
+// factory returns.
+template <typename T>
+T Validated(T value) {
+  Validate(value);
+  return value;
+}
+
 }  // namespace musclesim

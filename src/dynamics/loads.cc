@@ -26,15 +26,6 @@ void Validate(const Load& load) {
   }
 }
 
-namespace {
-
-Load Validated(Load load) {
-  Validate(load);
-  return load;
-}
-
-}  // namespace
-
 Load Load::Force(Waveform force) {
   Load load;
   load.kind = LoadKind::kForce;

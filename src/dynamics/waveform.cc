@@ -166,10 +166,6 @@ void Validate(const Waveform& w) {
   }
 }
 
-}  // namespace musclesim
-
-namespace musclesim {
-
 void ValidateActivation(const Waveform& w) {
   Validate(w);
   const auto unit = [](const std::string& key, double v) {
@@ -193,19 +189,6 @@ void ValidateActivation(const Waveform& w) {
       break;
   }
 }
-
-}  // namespace musclesim
-
-namespace musclesim {
-
-namespace {
-
-Waveform Validated(Waveform w) {
-  Validate(w);
-  return w;
-}
-
-}  // namespace
 
 Waveform Waveform::Constant(double value) {
   Waveform w;
