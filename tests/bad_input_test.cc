@@ -106,6 +106,10 @@ const std::vector<Case> kCases = {
      {"YAML syntax error"}},
     {"EmptyFile", "run {file} -o -", "# nothing\n", 2, {"{file}: the file is empty"}},
     {"TopLevelNotAMap", "run {file} -o -", "@[1, 2]\n", 2, {"(top level) = [1, 2] ({at}): must be a map of keys"}},
+    {"LongValueShownByItsStart", "run {file} -o -", Scenario("name: bad_input", "name: @[" + std::string(400, '1') + "]"), 2,
+     {"name = [" + std::string(116, '1') + "... ({at}): must be a text value"}},
+    {"AliasCycle", "run {file} -o -", Scenario("  f_iso: 100.0", "  f_iso: @&f [*f]"), 2,
+     {"model.f_iso = &1 [*1] ({at}): must be a number"}},
     {"Directory", "run {dir} -o -", "", 2, {"is a directory; give a YAML file"}},
     {"MissingFile", "run {dir}/none.yaml -o -", "", 2, {"none.yaml: cannot open the file"}},
     // --- scenario: keys -------------------------------------------------------------------

@@ -22,7 +22,12 @@ std::string Describe(const YAML::Node& node) {
   if (node.IsScalar()) return node.Scalar();
   YAML::Emitter out;
   out << YAML::Flow << node;
-  return out.c_str();
+  // a message is one line, and a long list is shown by its start
+  std::string text = out.c_str();
+  for (char& c : text) c = c == '\n' ? ' ' : c;
+  constexpr std::size_t kLongest = 120;
+  if (text.size() > kLongest) text = text.substr(0, kLongest - 3) + "...";
+  return text;
 }
 
 void Fail(const Source& source, const YAML::Node& node, const std::string& path,

@@ -27,7 +27,8 @@ struct Source {
 // "file:line:column" of a node (1-based), or the bare file name without a position.
 std::string Location(const Source& source, const YAML::Node& node);
 
-// The node's text as written, for messages ("[1, 2]", "abc", "~").
+// The node's text as written, for messages ("[1, 2]", "abc", "~"): one line of at most
+// 120 characters, a longer one cut with "...".
 std::string Describe(const YAML::Node& node);
 
 // Requires `node` to be a map whose keys are all in `allowed`.
