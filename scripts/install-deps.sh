@@ -13,6 +13,7 @@ packages=(
   libbenchmark-dev      # bench/
   libopenmpi-dev openmpi-bin   # sweeps across machines (-DMUSCLESIM_WITH_MPI=ON)
   gnuplot-nox           # musclesim plot draws its figures with gnuplot
+  clang libclang-rt-14-dev   # scripts/fuzz.sh: libFuzzer, ASan and UBSan runtimes
 )
 
 missing=()

@@ -3,7 +3,6 @@
 
 #include <gtest/gtest.h>
 
-#include <stdexcept>
 
 namespace musclesim::yaml {
 namespace {
@@ -49,8 +48,13 @@ TEST(KeyPath, RejectsMalformedPaths) {
   }
 }
 
-TEST(KeyPath, IndexBeyondSizeTypeIsOutOfRange) {
-  EXPECT_THROW(SplitKeyPath("load[99999999999999999999999]"), std::out_of_range);
+TEST(KeyPath, IndexBeyondTheLongestListIsMalformed) {
+  // 2^64 - 1 and beyond do not fit std::size_t; 1e9 is above kMaxKeyPathIndex
+  for (const char* path : {"load[99999999999999999999999]", "load[18446744073709551615]",
+                           "load[1000000000]"}) {
+    EXPECT_FALSE(SplitKeyPath(path).has_value()) << path;
+  }
+  EXPECT_EQ(Spelled("load[999999999]"), (Steps{"load", "[999999999]"}));
 }
 
 }  // namespace

@@ -116,7 +116,7 @@ TEST(ModelFile, RejectsEveryBrokenRule) {
       {"model: [1, 2]\n", "model = [1, 2] (FILE:1:8): must be a map of keys"},
       {"model: {f_iso: 1\n", "FILE:2:1: YAML syntax error"},
       {"", "FILE: the file is empty"},
-      {"model: {? [a]: 1}\n", "model = [a] (FILE:1:11): keys must be plain names"},
+      {"model: {? [a]: 1}\n", "model (FILE:1:11): a key is a list; keys must be plain names"},
   };
   for (const auto& [text, expected] : cases) {
     EXPECT_THAT(LoadError(text), HasSubstr(expected)) << text;

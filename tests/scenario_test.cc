@@ -110,13 +110,42 @@ TEST(Scenario, SetIsValidatedLikeTheFile) {
   EXPECT_THAT(ErrorFor("", "", {"a..b=1"}), HasSubstr("is not a dotted key path"));
 }
 
+TEST(Scenario, SetKeepsTheFileLocationsOfOtherErrors) {
+  // the copy the overrides go into must not lose where the file's values are
+  EXPECT_THAT(ErrorFor("mass: 0.1,", "mass: -1,", {"model.velocity.n=2"}),
+              HasSubstr("actuator.mass = -1 (FILE:8:18): must be from 1e-09"));
+  EXPECT_THAT(ErrorFor("", "", {"actuator.mass=-1"}), HasSubstr("actuator.mass = -1 (--set)"));
+}
+
+TEST(Scenario, SetIndexesOnlyLists) {
+  EXPECT_THAT(ErrorFor("", "", {"model[0].f_iso=50"}),
+              HasSubstr("--set model[0].f_iso=50: model is a map, not a list"));
+  EXPECT_THAT(ErrorFor("", "", {"[0].name=x"}), HasSubstr("the file's top level is a map"));
+  // one load written as a map is load[0], as the README says
+  const std::string path = testing::WriteTempFile(
+      "scenario_one_load.yaml",
+      kModel + std::string(kRest).replace(kRest.find("load:\n  - {"), 11, "load: {"));
+  const ScenarioSpec s = LoadScenario(path, {"load[0].value=55"});
+  ASSERT_EQ(s.loads.size(), 1u);
+  EXPECT_EQ(s.loads[0].force.value, 55.0);
+}
+
+TEST(Scenario, DuplicateKeysAreErrorsNamingBothPlaces) {
+  EXPECT_EQ(ErrorFor("mass: 0.1,", "mass: 0.1, mass: -5.0,"),
+            "actuator.mass (FILE:8:23): duplicate key: already given at line 8, column 12; a map "
+            "holds each key once");
+  EXPECT_THAT(ErrorFor("time: {start: 0.0, end: 1.0}\n",
+                       "time: {start: 0.0, end: 1.0}\ntime: {start: 0.0, end: 2.0}\n"),
+              HasSubstr("time (FILE:14:1): duplicate key: already given at line 13, column 1"));
+}
+
 TEST(Scenario, RejectsEveryBrokenRule) {
   const std::vector<std::tuple<std::string, std::string, std::string>> cases = {
-      {"mass: 0.1,", "mass: 0,", "actuator.mass = 0 (FILE:8:18): must be finite and > 0 [kg]"},
+      {"mass: 0.1,", "mass: 0,", "actuator.mass = 0 (FILE:8:18): must be from 1e-09 to 1e+09 [kg]: a microgram"},
       {"damping: 0.0", "damping: -1", "actuator.damping = -1"},
       {"stiffness: 0.0", "stiffness: -5", "actuator.stiffness = -5"},
       {"rest_length: 0.1}", "rest_length: 0.1, color: red}", "actuator.color (FILE:8:71): unknown key"},
-      {"length: 0.1,", "length: 0,", "initial.length = 0 (FILE:9:19): must be finite and > 0"},
+      {"length: 0.1,", "length: 0,", "initial.length = 0 (FILE:9:19): must be > 0 and <= 1000 [m]"},
       {"lengthening_rate: 0.0", "lengthening_rate: x", "initial.lengthening_rate = x"},
       {"after: 1.0}", "after: 1.2}", "activation.after = 1.2 (FILE:10:58): activation must stay within [0, 1]"},
       {"before: 0.0,", "before: -0.5,", "activation.before = -0.5"},
@@ -135,19 +164,19 @@ TEST(Scenario, RejectsEveryBrokenRule) {
       {"{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: step, time: 0.05, after: 1.0}",
        "activation.before (FILE:10:13): missing required key"},
       {"{type: constant, value: 40.0}", "{type: spring, stiffness: -1, anchor: 0.1}",
-       "load[0].stiffness = -1 (FILE:12:31): must be finite and >= 0 [N/m]"},
+       "load[0].stiffness = -1 (FILE:12:31): must be from 0 to 1e+12 [N/m]"},
       {"{type: constant, value: 40.0}", "{type: mass, mass: 0}", "load[0].mass = 0"},
       {"{type: constant, value: 40.0}", "{type: rocket, value: 1}",
        "load[0].type = rocket (FILE:12:12): must be one of constant, step, ramp, sine, pulses, table, spring, mass"},
       {"{type: constant, value: 40.0}", "{type: pulses, start: 0, period: 1.0e-8, width: 1.0e-9, low: 0, high: 1}",
        "load[0].period = 1e-08 (FILE:12:38): gives more than 5 million pulses"},
-      {"end: 1.0}", "end: 0.0}", "time.end = 0.0 (FILE:13:25): must be finite and greater than time.start = 0"},
+      {"end: 1.0}", "end: 0.0}", "time.end = 0.0 (FILE:13:25): must be greater than time.start = 0 by at least 1e-09 s"},
       {"rtol: 1.0e-6", "rtol: 0", "solver.rtol = 0 (FILE:14:29)"},
       {"atol: 1.0e-9", "atol: -1", "solver.atol = -1"},
       {"method: bdf", "method: rk4", "solver.method = rk4 (FILE:14:18): must be bdf or adams"},
       {"jacobian: analytic", "jacobian: exact", "solver.jacobian = exact (FILE:14:61): must be analytic or difference_quotient"},
       {"max_step: 0.0", "max_step: -1", "solver.max_step = -1"},
-      {"interval: 0.001", "interval: 0", "output.interval = 0 (FILE:15:35): must be `steps` or a time > 0"},
+      {"interval: 0.001", "interval: 0", "output.interval = 0 (FILE:15:35): must be `steps` or a time [s] giving at most 1e8 rows"},
       {"interval: 0.001", "interval: often", "output.interval = often"},
       {"min_length: 0.05", "min_length: 0.15", "limits.min_length = 0.15 (FILE:16:22): must be >= 0 and below initial.length = 0.1"},
       {"max_length: 0.2", "max_length: 0.1", "limits.max_length = 0.1 (FILE:16:40): must be above initial.length"},

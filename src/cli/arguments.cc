@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 
+#include "musclesim/errors.h"
+
 namespace musclesim::cli {
 
 std::string Arguments::Value(const std::string& option, const std::string& fallback) const {
@@ -26,7 +28,10 @@ Arguments Parse(int argc, char** argv, int first, const std::set<std::string>& w
       word.resize(eq);
       inline_value = true;
     }
-    if (flags.count(word) != 0 && !inline_value) {
+    if (flags.count(word) != 0) {
+      if (inline_value) {
+        throw UsageError(word + "=" + value + ": " + word + " is a flag and takes no value");
+      }
       args.flags.insert(word);
     } else if (with_value.count(word) != 0) {
       if (!inline_value) {
@@ -55,7 +60,8 @@ double ParseDouble(const std::string& option, const std::string& text) {
 
 }  // namespace
 
-UniformGrid ParseGrid(const std::string& option, const std::string& text) {
+UniformGrid ParseGrid(const std::string& option, const std::string& text,
+                      const InputRange& range) {
   const auto first = text.find(':');
   const auto second = text.find(':', first == std::string::npos ? first : first + 1);
   if (first == std::string::npos || second == std::string::npos) {
@@ -72,6 +78,12 @@ UniformGrid ParseGrid(const std::string& option, const std::string& text) {
   }
   if (!(grid.from < grid.to)) {
     throw UsageError(option + " " + text + ": A must be less than B");
+  }
+  for (const double end : {grid.from, grid.to}) {
+    if (!range.Contains(end)) {
+      throw UsageError(option + " " + text + ": " + (end == grid.from ? "A" : "B") + " = " +
+                       FormatNumber(end) + " " + range.Rule());
+    }
   }
   return grid;
 }

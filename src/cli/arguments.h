@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "musclesim/io/curves_csv.h"
+#include "musclesim/io/input_ranges.h"
 
 namespace musclesim::cli {
 
@@ -30,12 +31,14 @@ struct Arguments {
 };
 
 // Parses argv[first..]. `with_value` lists options that take a value (both "--opt V" and
-// "--opt=V"), `flags` options that take none; anything else starting with '-' (but "-"
-// alone) is a UsageError.
+// "--opt=V"), `flags` options that take none ("--flag=V" is a UsageError); anything else
+// starting with '-' (but "-" alone) is a UsageError.
 Arguments Parse(int argc, char** argv, int first, const std::set<std::string>& with_value,
                 const std::set<std::string>& flags);
 
-// An evenly spaced grid "A:B:N": N >= 2 points from A to B inclusive, A < B.
-UniformGrid ParseGrid(const std::string& option, const std::string& text);
+// An evenly spaced grid "A:B:N": N >= 2 points from A to B inclusive, A < B, both within
+// `range`. A malformed grid is a UsageError naming `option` and `text`.
+UniformGrid ParseGrid(const std::string& option, const std::string& text,
+                      const InputRange& range);
 
 }  // namespace musclesim::cli

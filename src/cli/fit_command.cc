@@ -32,11 +32,7 @@ int FitCommand(int argc, char** argv) {
     return 0;
   }
   if (args.positional.size() != 1) throw UsageError("expected one model file (see --help)");
-  const ModelSpec loaded = LoadModelSpec(args.positional[0]);
-  if (!loaded.fit_result) {
-    throw InputError("model.active_length.fit (" + args.positional[0] +
-                     "): the file gives explicit gaussians; add a fit block to fit");
-  }
+  const ModelSpec loaded = LoadModelFit(args.positional[0]);
   const FitResult& fit = *loaded.fit_result;
   std::ostringstream out;
   out << "gaussians:\n";

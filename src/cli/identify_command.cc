@@ -100,6 +100,17 @@ ModelYamlDraft DraftModel(const IdentifySpec& spec,
   return draft;
 }
 
+// Runs `step` on the curve of `spec`'s block `key` (its CSV `csv`, named at `at`): an input
+// error in that data says which entry of which data file led to it.
+template <typename Step>
+auto InData(const std::string& key, const std::string& csv, const std::string& at, Step step) {
+  try {
+    return step();
+  } catch (const InputError& e) {
+    throw InputError(key + ".csv = " + csv + " (" + at + "): " + e.what());
+  }
+}
+
 }  // namespace
 
 int IdentifyCommand(int argc, char** argv) {
@@ -117,8 +128,10 @@ int IdentifyCommand(int argc, char** argv) {
   std::vector<CurveComparison> comparisons;
   const bool report = args.Has("--report");
   if (spec.passive_csv) {
-    const auto data = ReadCurveCsv(*spec.passive_csv, "length", "tension", 4);
-    passive = IdentifyPassive(data);
+    const auto data = InData("passive", *spec.passive_csv, spec.passive_csv_at,
+                             [&] { return ReadCurveCsv(*spec.passive_csv, "length", "tension", 4); });
+    passive = InData("passive", *spec.passive_csv, spec.passive_csv_at,
+                     [&] { return IdentifyPassive(data); });
     if (report) {
       auto models = ReferenceFitters();
       models.insert(models.begin(), {"exponential (eq. 1)", [](const std::vector<DataPoint>& d) {
@@ -129,9 +142,13 @@ int IdentifyCommand(int argc, char** argv) {
     }
   }
   if (spec.active_csv) {
-    const auto data = ReadCurveCsv(*spec.active_csv, "length", "tension",
-                                   3 * static_cast<std::size_t>(spec.active_count) + 1);
-    active = IdentifyActive(data, spec.active_count, spec.active_nonnegative);
+    const auto data = InData("active", *spec.active_csv, spec.active_csv_at, [&] {
+      return ReadCurveCsv(*spec.active_csv, "length", "tension",
+                          3 * static_cast<std::size_t>(spec.active_count) + 1);
+    });
+    active = InData("active", *spec.active_csv, spec.active_csv_at, [&] {
+      return IdentifyActive(data, spec.active_count, spec.active_nonnegative);
+    });
     if (report) {
       auto models = ReferenceFitters();
       const int count = spec.active_count;
@@ -145,9 +162,12 @@ int IdentifyCommand(int argc, char** argv) {
     }
   }
   if (spec.velocity_csv) {
-    const auto data = ReadCurveCsv(*spec.velocity_csv, "shortening_velocity", "tension",
-                                   spec.velocity_f_iso ? 2 : 3);
-    velocity = IdentifyVelocity(data, spec.velocity_f_iso);
+    const auto data = InData("velocity", *spec.velocity_csv, spec.velocity_csv_at, [&] {
+      return ReadCurveCsv(*spec.velocity_csv, "shortening_velocity", "tension",
+                          spec.velocity_f_iso ? 2 : 3);
+    });
+    velocity = InData("velocity", *spec.velocity_csv, spec.velocity_csv_at,
+                      [&] { return IdentifyVelocity(data, spec.velocity_f_iso); });
     if (report) {
       auto models = ReferenceFitters();
       const std::optional<double> f_iso = spec.velocity_f_iso;

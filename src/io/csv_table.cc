@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 
 #include "musclesim/errors.h"
@@ -68,6 +69,10 @@ double CsvTable::Number(std::size_t row, int column) const {
 }
 
 CsvTable ReadCsv(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw InputError(path + ": is a directory; give a CSV file");
+  }
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the file for reading");
   CsvTable table;

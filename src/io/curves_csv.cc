@@ -16,6 +16,16 @@ void Validate(const UniformGrid& grid) {
   Require(grid.count >= 2, "count", grid.count, "must be an integer >= 2");
 }
 
+// A value of the table: finite, or a ParameterError naming the grid point (`axis` = `at`).
+double Finite(double value, const char* axis, double at, const char* column) {
+  if (!std::isfinite(value)) {
+    throw ParameterError(axis, FormatNumber(at),
+                         std::string(column) + " = " + FormatNumber(value) +
+                             " there: the model's arithmetic overflows; choose a narrower range");
+  }
+  return value;
+}
+
 }  // namespace
 
 std::string FormatLengthCurvesCsv(const TensionModel& model, const UniformGrid& lengths) {
@@ -23,8 +33,10 @@ std::string FormatLengthCurvesCsv(const TensionModel& model, const UniformGrid& 
   std::string csv = "length,f_L,tension_passive\n";
   for (int i = 0; i < lengths.count; ++i) {
     const double x = lengths.At(i);
-    csv += FormatFull(x) + ',' + FormatFull(model.active_length().Evaluate(x).value) + ',' +
-           FormatFull(PassiveTension(model.params().passive, x).value) + '\n';
+    const double f_l = Finite(model.active_length().Evaluate(x).value, "length", x, "f_L");
+    const double passive =
+        Finite(PassiveTension(model.params().passive, x).value, "length", x, "tension_passive");
+    csv += FormatFull(x) + ',' + FormatFull(f_l) + ',' + FormatFull(passive) + '\n';
   }
   return csv;
 }
@@ -34,7 +46,8 @@ std::string FormatVelocityCurveCsv(const TensionModel& model, const UniformGrid&
   std::string csv = "shortening_velocity,g\n";
   for (int i = 0; i < velocities.count; ++i) {
     const double v = velocities.At(i);
-    csv += FormatFull(v) + ',' + FormatFull(model.velocity().Evaluate(v).value) + '\n';
+    const double g = Finite(model.velocity().Evaluate(v).value, "shortening_velocity", v, "g");
+    csv += FormatFull(v) + ',' + FormatFull(g) + '\n';
   }
   return csv;
 }

@@ -1,5 +1,4 @@
 // Reads the data file of `musclesim identify`.
-#include <cmath>
 #include <filesystem>
 
 #include "musclesim/io/identify_spec.h"
@@ -16,17 +15,21 @@ IdentifySpec LoadIdentifySpec(const std::string& path) {
   }
   IdentifySpec spec;
   spec.source = path;
-  const auto csv = [&](const YAML::Node& block, const std::string& name) {
-    const std::string file = yaml::ReadString(src, yaml::Required(src, block, name, "csv"), name + ".csv");
+  // a CSV path relative to the data file, and where the data file names it
+  const auto csv = [&](const YAML::Node& block, const std::string& name, std::string& at) {
+    const YAML::Node node = yaml::Required(src, block, name, "csv");
+    const std::string file = yaml::ReadString(src, node, name + ".csv");
+    if (file.empty()) yaml::Fail(src, node, name + ".csv", "\"\"", "must name a CSV file");
+    at = yaml::Location(src, node);
     return (std::filesystem::path(path).parent_path() / file).lexically_normal().string();
   };
   if (const YAML::Node passive = root["passive"]) {
     yaml::RequireMap(src, passive, "passive", {"csv"});
-    spec.passive_csv = csv(passive, "passive");
+    spec.passive_csv = csv(passive, "passive", spec.passive_csv_at);
   }
   if (const YAML::Node active = root["active"]) {
     yaml::RequireMap(src, active, "active", {"csv", "count", "nonnegative"});
-    spec.active_csv = csv(active, "active");
+    spec.active_csv = csv(active, "active", spec.active_csv_at);
     if (active["count"]) {
       spec.active_count = yaml::ReadInteger(src, active["count"], "active.count");
       if (spec.active_count < 1 || spec.active_count > 12) {
@@ -40,14 +43,10 @@ IdentifySpec LoadIdentifySpec(const std::string& path) {
   }
   if (const YAML::Node velocity = root["velocity"]) {
     yaml::RequireMap(src, velocity, "velocity", {"csv", "f_iso"});
-    spec.velocity_csv = csv(velocity, "velocity");
+    spec.velocity_csv = csv(velocity, "velocity", spec.velocity_csv_at);
     if (velocity["f_iso"]) {
-      const double f_iso = yaml::ReadNumber(src, velocity["f_iso"], "velocity.f_iso");
-      if (!(std::isfinite(f_iso) && f_iso > 0.0)) {
-        yaml::Fail(src, velocity["f_iso"], "velocity.f_iso", yaml::Describe(velocity["f_iso"]),
-                   "must be finite and > 0 [N]");
-      }
-      spec.velocity_f_iso = f_iso;
+      spec.velocity_f_iso =
+          yaml::ReadNumberIn(src, velocity["f_iso"], "velocity.f_iso", kPositiveForceRange);
     }
   }
   return spec;

@@ -1,5 +1,7 @@
 #include "io/key_path.h"
 
+#include <charconv>
+
 namespace musclesim::yaml {
 
 std::optional<std::vector<KeyPathStep>> SplitKeyPath(const std::string& path) {
@@ -11,7 +13,12 @@ std::optional<std::vector<KeyPathStep>> SplitKeyPath(const std::string& path) {
       if (close == std::string::npos || close == pos + 1) return std::nullopt;
       const std::string digits = path.substr(pos + 1, close - pos - 1);
       if (digits.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
-      steps.push_back({"", std::stoul(digits)});
+      std::size_t index = 0;
+      const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), index);
+      if (error != std::errc() || end != digits.data() + digits.size() || index > kMaxKeyPathIndex) {
+        return std::nullopt;
+      }
+      steps.push_back({"", index});
       pos = close + 1;
       if (pos < path.size() && path[pos] == '.') ++pos;
     } else {

@@ -16,10 +16,14 @@ struct KeyPathStep {
   std::size_t index = 0;   // sequence index (0-based) when `key` is empty
 };
 
+// The largest index a path may hold [-]: no list in a file the program reads is longer (a
+// waveform has at most 5 million points).
+inline constexpr std::size_t kMaxKeyPathIndex = 999999999;
+
 // Splits "a.b[2].c" into {a}, {b}, {[2]}, {c}. A dot on either side of an index is
 // optional and one trailing dot is ignored. Returns nullopt for a malformed path: an empty
-// key ("a..b", ".a"), an index that is empty or not decimal digits, or an unclosed "[".
-// The empty path has no steps. An index too large for std::size_t throws std::out_of_range.
+// key ("a..b", ".a"), an index that is empty, not decimal digits or above kMaxKeyPathIndex,
+// or an unclosed "[". The empty path has no steps.
 std::optional<std::vector<KeyPathStep>> SplitKeyPath(const std::string& path);
 
 }  // namespace musclesim::yaml

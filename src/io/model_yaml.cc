@@ -1,5 +1,8 @@
 #include "io/model_yaml_node.h"
 
+#include "musclesim/io/input_ranges.h"
+#include "io/scenario_node.h"
+
 namespace musclesim {
 
 namespace {
@@ -41,8 +44,17 @@ std::vector<TargetPoint> ReadPoints(const yaml::Source& src, const YAML::Node& n
   }
   std::vector<TargetPoint> points;
   for (std::size_t i = 0; i < node.size(); ++i) {
-    const std::vector<double> pair =
-        yaml::ReadNumbers(src, node[i], path + "[" + std::to_string(i) + "]", 2);
+    const std::string at = path + "[" + std::to_string(i) + "]";
+    const std::vector<double> pair = yaml::ReadNumbers(src, node[i], at, 2);
+    // x is a length, y a target value of about 1: bounded so the fit's integrals stay finite
+    if (!kPositionRange.Contains(pair[0])) {
+      yaml::Fail(src, node[i][0], at + "[0]", yaml::Describe(node[i][0]),
+                 kPositionRange.Rule());
+    }
+    if (!kFitValueRange.Contains(pair[1])) {
+      yaml::Fail(src, node[i][1], at + "[1]", yaml::Describe(node[i][1]),
+                 kFitValueRange.Rule());
+    }
     points.push_back({pair[0], pair[1]});
   }
   return points;
@@ -64,6 +76,13 @@ FitSpec ReadFitSpec(const yaml::Source& src, const YAML::Node& node, const std::
   if (node["widths"]) spec.precisions = yaml::ReadNumbers(src, node["widths"], Join(path, "widths"));
   if (node["centers"]) {
     spec.centers = yaml::ReadNumbers(src, node["centers"], Join(path, "centers"));
+    for (std::size_t k = 0; k < spec.centers.size(); ++k) {
+      if (!kPositionRange.Contains(spec.centers[k])) {
+        const YAML::Node center = node["centers"][k];
+        yaml::Fail(src, center, Join(path, "centers") + "[" + std::to_string(k) + "]",
+                   yaml::Describe(center), kPositionRange.Rule());
+      }
+    }
   }
   if (spec.target != FitTargetKind::kIndicator && spec.points.empty() && !node["points"]) {
     yaml::Fail(src, node, Join(path, "points"), "~",
@@ -139,16 +158,56 @@ ModelSpec ReadModelSpec(const yaml::Source& src, const YAML::Node& node, const s
   }
 
   // the model's constructor validates everything, including that f_L can be normalised
-  yaml::ValidateAt(src, node, path, [&] { TensionModel check(p); });
+  try {
+    TensionModel check(p);
+  } catch (const ParameterError& error) {
+    // components nobody wrote came from the fit: the message names the fit's target
+    if (has_fit && error.path().rfind("active_length.gaussians", 0) == 0) {
+      const YAML::Node fit = active["fit"];
+      const bool has_points = static_cast<bool>(fit["points"]);
+      const std::string target_path = Join(active_path, has_points ? "fit.points" : "fit");
+      yaml::Fail(src, has_points ? fit["points"] : fit, target_path,
+                 has_points ? std::to_string(fit["points"].size()) + " points"
+                            : yaml::Describe(fit),
+                 "the fit of this target gave " + error.path() + " = " + error.value() +
+                     " (rule: " + error.rule() + "); choose a target the Gaussians can follow");
+    }
+    yaml::Relocate(src, node, path, error);
+  }
   return model;
 }
 
+namespace {
+
+// A model file, or a scenario read whole: only `name` and `model` make a model file; any
+// other key of the scenario vocabulary makes it a scenario, which must then be valid.
+ModelSpec ReadModelFile(const yaml::Source& src, const YAML::Node& root) {
+  yaml::RequireMap(src, root, "", kScenarioKeys);
+  for (const auto& entry : root) {
+    const std::string& key = entry.first.Scalar();
+    if (key != "model" && key != "name") return ReadScenario(src, root).model;
+  }
+  return ReadModelSpec(src, Required(src, root, "", "model"), "model");
+}
+
+}  // namespace
+
 ModelSpec LoadModelSpec(const std::string& path) {
+  return ReadModelFile(yaml::Source{path}, yaml::LoadFile(path));
+}
+
+ModelSpec LoadModelFit(const std::string& path) {
   const YAML::Node root = yaml::LoadFile(path);
   const yaml::Source src{path};
-  // the scenario vocabulary: other verbs read the rest, none of it may be misspelt
-  yaml::RequireMap(src, root, "", kScenarioKeys);
-  return ReadModelSpec(src, Required(src, root, "", "model"), "model");
+  ModelSpec model = ReadModelFile(src, root);
+  if (!model.fit_result) {
+    const YAML::Node gaussians = root["model"]["active_length"]["gaussians"];
+    yaml::Fail(src, gaussians, "model.active_length.gaussians",
+               std::to_string(gaussians.size()) + " components",
+               "explicit components leave nothing to fit: give model.active_length.fit instead "
+               "(README \"The closed-form fit\")");
+  }
+  return model;
 }
 
 }  // namespace musclesim

@@ -1,8 +1,11 @@
 // Reads scenario files: LoadScenario and the `--set` overrides applied before validation.
+#include <algorithm>
 #include <cmath>
 
+#include "musclesim/io/input_ranges.h"
 #include "io/key_path.h"
 #include "io/model_yaml_node.h"
+#include "io/scenario_node.h"
 #include "musclesim/io/scenario.h"
 
 namespace musclesim {
@@ -30,56 +33,86 @@ using yaml::ReadOptionalNumber;
 using yaml::Required;
 using yaml::ValidateAt;
 
+// The time scale of a run [s]: max(1 s, |start|, |end|). The shortest span, interval and
+// step are fractions of it (io/input_ranges.h), so that they stay many roundoffs wide.
+double TimeScale(double t_start, double t_end) {
+  return std::max({1.0, std::abs(t_start), std::abs(t_end)});
+}
+
+// Reads one waveform. `values` bounds its values (a force's); nullptr leaves them to
+// ValidateActivation, which keeps an activation within [0, 1].
 Waveform ReadWaveform(const yaml::Source& src, const YAML::Node& node, const std::string& path,
-                      WaveformKind kind) {
+                      WaveformKind kind, const InputRange* values) {
   Waveform w;
   w.kind = kind;
+  const auto value = [&](const char* key) {
+    const YAML::Node item = Required(src, node, path, key);
+    return values ? yaml::ReadNumberIn(src, item, Join(path, key), *values)
+                  : yaml::ReadNumber(src, item, Join(path, key));
+  };
+  const auto time = [&](const char* key) {
+    return yaml::ReadNumberIn(src, Required(src, node, path, key), Join(path, key),
+                              kTimeRange);
+  };
   const auto number = [&](const char* key) {
     return yaml::ReadNumber(src, Required(src, node, path, key), Join(path, key));
   };
   switch (kind) {
     case WaveformKind::kConstant:
       yaml::RequireMap(src, node, path, {"type", "value"});
-      w.value = number("value");
+      w.value = value("value");
       break;
     case WaveformKind::kStep:
       yaml::RequireMap(src, node, path, {"type", "time", "before", "after"});
-      w.time = number("time");
-      w.before = number("before");
-      w.after = number("after");
+      w.time = time("time");
+      w.before = value("before");
+      w.after = value("after");
       break;
     case WaveformKind::kRamp:
       yaml::RequireMap(src, node, path, {"type", "start", "end", "from", "to"});
-      w.start = number("start");
-      w.end = number("end");
-      w.from = number("from");
-      w.to = number("to");
+      w.start = time("start");
+      w.end = time("end");
+      w.from = value("from");
+      w.to = value("to");
       break;
     case WaveformKind::kSine:
       yaml::RequireMap(src, node, path, {"type", "offset", "amplitude", "frequency", "phase"});
-      w.offset = number("offset");
-      w.amplitude = number("amplitude");
-      w.frequency = number("frequency");
+      w.offset = value("offset");
+      w.amplitude = value("amplitude");
+      w.frequency = yaml::ReadNumberIn(src, Required(src, node, path, "frequency"),
+                                       Join(path, "frequency"), kFrequencyRange);
       w.phase = ReadOptionalNumber(src, node, path, "phase", 0.0);
       break;
     case WaveformKind::kPulses:
       yaml::RequireMap(src, node, path, {"type", "start", "period", "width", "low", "high"});
-      w.start = number("start");
-      w.period = number("period");
+      w.start = time("start");
+      w.period = number("period");  // checked against the run's time scale by CheckPulses
       w.width = number("width");
-      w.low = number("low");
-      w.high = number("high");
+      w.low = value("low");
+      w.high = value("high");
       break;
     case WaveformKind::kTable: {
       yaml::RequireMap(src, node, path, {"type", "points"});
       const YAML::Node points = Required(src, node, path, "points");
+      const std::string at = Join(path, "points");
       if (!points.IsSequence()) {
-        yaml::Fail(src, points, Join(path, "points"), yaml::Describe(points),
-                   "must be a list of [t, value] pairs");
+        yaml::Fail(src, points, at, yaml::Describe(points), "must be a list of [t, value] pairs");
+      }
+      if (static_cast<double>(points.size()) > kMaxBreakpoints) {
+        yaml::Fail(src, points, at, std::to_string(points.size()) + " points",
+                   "at most 5 million: each point is a stop time where the integrator restarts");
       }
       for (std::size_t i = 0; i < points.size(); ++i) {
-        const std::vector<double> pair = yaml::ReadNumbers(
-            src, points[i], Join(path, "points") + "[" + std::to_string(i) + "]", 2);
+        const std::string item = at + "[" + std::to_string(i) + "]";
+        const std::vector<double> pair = yaml::ReadNumbers(src, points[i], item, 2);
+        if (!kTimeRange.Contains(pair[0])) {
+          yaml::Fail(src, points[i][0], item + "[0]", yaml::Describe(points[i][0]),
+                     kTimeRange.Rule());
+        }
+        if (values && !values->Contains(pair[1])) {
+          yaml::Fail(src, points[i][1], item + "[1]", yaml::Describe(points[i][1]),
+                     values->Rule());
+        }
         w.points.push_back({pair[0], pair[1]});
       }
       break;
@@ -97,7 +130,7 @@ Waveform ReadActivation(const yaml::Source& src, const YAML::Node& node, const s
   const std::string type = ReadType(src, node, path);
   WaveformKind kind{};
   ValidateAt(src, node, path, [&] { kind = ParseWaveformKind(type); });
-  Waveform w = ReadWaveform(src, node, path, kind);
+  Waveform w = ReadWaveform(src, node, path, kind, nullptr);
   ValidateAt(src, node, path, [&] { ValidateActivation(w); });
   return w;
 }
@@ -108,15 +141,17 @@ Load ReadLoad(const yaml::Source& src, const YAML::Node& node, const std::string
   if (type == "spring") {
     yaml::RequireMap(src, node, path, {"type", "stiffness", "anchor"});
     load.kind = LoadKind::kSpring;
-    load.stiffness = yaml::ReadNumber(src, Required(src, node, path, "stiffness"),
-                                      Join(path, "stiffness"));
-    load.anchor =
-        yaml::ReadNumber(src, Required(src, node, path, "anchor"), Join(path, "anchor"));
+    load.stiffness = yaml::ReadNumberIn(src, Required(src, node, path, "stiffness"),
+                                        Join(path, "stiffness"), kStiffnessRange);
+    load.anchor = yaml::ReadNumberIn(src, Required(src, node, path, "anchor"),
+                                     Join(path, "anchor"), kPositionRange);
   } else if (type == "mass") {
     yaml::RequireMap(src, node, path, {"type", "mass", "gravity"});
     load.kind = LoadKind::kMass;
-    load.mass = yaml::ReadNumber(src, Required(src, node, path, "mass"), Join(path, "mass"));
-    load.gravity = ReadOptionalNumber(src, node, path, "gravity", 9.81);
+    load.mass = yaml::ReadNumberIn(src, Required(src, node, path, "mass"), Join(path, "mass"),
+                                   kMassRange);
+    load.gravity =
+        yaml::ReadOptionalNumberIn(src, node, path, "gravity", kGravityRange, 9.81);
   } else {
     WaveformKind kind{};
     try {
@@ -126,23 +161,53 @@ Load ReadLoad(const yaml::Source& src, const YAML::Node& node, const std::string
                  "must be one of constant, step, ramp, sine, pulses, table, spring, mass");
     }
     load.kind = LoadKind::kForce;
-    load.force = ReadWaveform(src, node, path, kind);
+    load.force = ReadWaveform(src, node, path, kind, &kForceRange);
   }
   ValidateAt(src, node, path, [&] { Validate(load); });
   return load;
 }
 
-// Pulse trains and tables become stop times: refuse counts that could never run.
-void CheckBreakpointCount(const yaml::Source& src, const YAML::Node& node,
-                          const std::string& path, const Waveform& w, double t_end) {
-  if (w.kind == WaveformKind::kPulses && (t_end - w.start) / w.period > 5e6) {
+// A pulse train's edges become stop times: its period and width must be resolved at the
+// run's times, and the run may hold at most kMaxBreakpoints edges.
+void CheckPulses(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                 const Waveform& w, double t_start, double t_end) {
+  if (w.kind != WaveformKind::kPulses) return;
+  const double resolution = kMinIntervalRelative * TimeScale(t_start, t_end);
+  for (const char* key : {"period", "width"}) {
+    const double value = std::string(key) == "period" ? w.period : w.width;
+    if (!(value >= resolution)) {
+      yaml::Fail(src, node[key], Join(path, key), yaml::Describe(node[key]),
+                 "must be at least " + FormatNumber(resolution) +
+                     " s, 1e-12 of the run's time scale max(1 s, |time.start|, |time.end|): "
+                     "shorter times are not resolved in double precision");
+    }
+  }
+  if ((t_end - std::max(w.start, t_start)) / w.period > kMaxBreakpoints) {
     yaml::Fail(src, node["period"], Join(path, "period"), FormatNumber(w.period),
-               "gives more than 5 million pulses between the start and time.end");
+               "gives more than 5 million pulses between the start and time.end: each edge is "
+               "a stop time where the integrator restarts");
+  }
+}
+
+void ReadTime(const yaml::Source& src, const YAML::Node& time, ScenarioSpec& s) {
+  yaml::RequireMap(src, time, "time", {"start", "end"});
+  s.t_start = yaml::ReadNumberIn(src, Required(src, time, "time", "start"), "time.start",
+                                 kTimeRange);
+  s.t_end = yaml::ReadNumberIn(src, Required(src, time, "time", "end"), "time.end",
+                               kTimeRange);
+  const double shortest = kMinSpanRelative * TimeScale(s.t_start, s.t_end);
+  if (!(s.t_end - s.t_start >= shortest)) {
+    yaml::Fail(src, time["end"], "time.end", yaml::Describe(time["end"]),
+               "must be greater than time.start = " + FormatNumber(s.t_start) + " by at least " +
+                   FormatNumber(shortest) +
+                   " s, 1e-9 of the time scale max(1 s, |start|, |end|): room for 1000 output "
+                   "rows that double precision tells apart");
   }
 }
 
 void ReadSolver(const yaml::Source& src, const YAML::Node& node, const std::string& path,
-                SolverOptions& o) {
+                ScenarioSpec& s) {
+  SolverOptions& o = s.solver;
   yaml::RequireMap(src, node, path,
                    {"method", "rtol", "atol", "jacobian", "max_step", "max_steps"});
   if (node["method"]) {
@@ -165,6 +230,17 @@ void ReadSolver(const yaml::Source& src, const YAML::Node& node, const std::stri
     o.max_steps = static_cast<long>(steps);
   }
   ValidateAt(src, node, path, [&] { Validate(o); });
+  // a step limit the run could never finish with, or one below the time resolution
+  const double span = s.t_end - s.t_start;
+  const double shortest = std::max(kMinIntervalRelative * TimeScale(s.t_start, s.t_end),
+                                   span / static_cast<double>(o.max_steps));
+  if (o.max_step != 0.0 && o.max_step < shortest) {
+    yaml::Fail(src, node["max_step"], Join(path, "max_step"), yaml::Describe(node["max_step"]),
+               "must be 0 (no limit) or at least " + FormatNumber(shortest) +
+                   " s: (time.end - time.start) / solver.max_steps, or else the run cannot "
+                   "reach time.end, and 1e-12 of the time scale max(1 s, |start|, |end|), "
+                   "below which double precision does not resolve a step");
+  }
 }
 
 void ReadOutput(const yaml::Source& src, const YAML::Node& node, const std::string& path,
@@ -184,21 +260,47 @@ void ReadOutput(const yaml::Source& src, const YAML::Node& node, const std::stri
       s.output.interval = 0.0;
     } else {
       s.output.interval = yaml::ReadNumber(src, interval, Join(path, "interval"));
-      if (!(std::isfinite(s.output.interval) && s.output.interval > 0.0) ||
-          span / s.output.interval > 1e8) {
+      const double shortest = kMinIntervalRelative * TimeScale(s.t_start, s.t_end);
+      if (!(s.output.interval >= shortest && span / s.output.interval <= 1e8)) {
         yaml::Fail(src, interval, Join(path, "interval"), yaml::Describe(interval),
-                   "must be `steps` or a time > 0 [s] giving at most 1e8 rows");
+                   "must be `steps` or a time [s] giving at most 1e8 rows (at least " +
+                       FormatNumber(span / 1e8) + " s here) and at least " +
+                       FormatNumber(shortest) +
+                       " s, 1e-12 of the time scale max(1 s, |start|, |end|), so that "
+                       "double precision tells the output times apart");
       }
     }
   }
-  if (const YAML::Node tol = node["phase_tolerance"]) {
-    s.output.phase_tolerance = yaml::ReadNumber(src, tol, Join(path, "phase_tolerance"));
-    if (!(std::isfinite(*s.output.phase_tolerance) && *s.output.phase_tolerance >= 0.0)) {
-      yaml::Fail(src, tol, Join(path, "phase_tolerance"), yaml::Describe(tol),
-                 "must be finite and >= 0 [m/s]");
-    }
+  if (node["phase_tolerance"]) {
+    s.output.phase_tolerance = yaml::ReadNumberIn(src, node["phase_tolerance"],
+                                                  Join(path, "phase_tolerance"),
+                                                  kPhaseToleranceRange);
   }
 }
+
+void ReadLimits(const yaml::Source& src, const YAML::Node& limits, ScenarioSpec& s) {
+  yaml::RequireMap(src, limits, "limits", {"min_length", "max_length"});
+  if (const YAML::Node min = limits["min_length"]) {
+    const double value = yaml::ReadNumber(src, min, "limits.min_length");
+    if (!(value >= 0.0 && value < s.initial_length)) {
+      yaml::Fail(src, min, "limits.min_length", yaml::Describe(min),
+                 "must be >= 0 and below initial.length = " + FormatNumber(s.initial_length) +
+                     " [m]");
+    }
+    s.min_length = value;
+  }
+  if (const YAML::Node max = limits["max_length"]) {
+    const double value = yaml::ReadNumber(src, max, "limits.max_length");
+    if (!(value > s.initial_length && value <= kLengthRange.max)) {
+      yaml::Fail(src, max, "limits.max_length", yaml::Describe(max),
+                 "must be above initial.length = " + FormatNumber(s.initial_length) +
+                     " and at most 1000 [m]: " + kLengthRange.why);
+    }
+    s.max_length = value;
+  }
+}
+
+}  // namespace
 
 ScenarioSpec ReadScenario(const yaml::Source& src, const YAML::Node& root) {
   yaml::RequireMap(src, root, "", kScenarioKeys);
@@ -209,87 +311,56 @@ ScenarioSpec ReadScenario(const yaml::Source& src, const YAML::Node& root) {
 
   const YAML::Node actuator = Required(src, root, "", "actuator");
   yaml::RequireMap(src, actuator, "actuator", {"mass", "damping", "stiffness", "rest_length"});
-  s.actuator.mass =
-      yaml::ReadNumber(src, Required(src, actuator, "actuator", "mass"), "actuator.mass");
-  s.actuator.damping = ReadOptionalNumber(src, actuator, "actuator", "damping", 0.0);
-  s.actuator.stiffness = ReadOptionalNumber(src, actuator, "actuator", "stiffness", 0.0);
-  s.actuator.rest_length = ReadOptionalNumber(src, actuator, "actuator", "rest_length", 0.0);
+  s.actuator.mass = yaml::ReadNumberIn(src, Required(src, actuator, "actuator", "mass"),
+                                       "actuator.mass", kMassRange);
+  s.actuator.damping =
+      yaml::ReadOptionalNumberIn(src, actuator, "actuator", "damping", kDampingRange, 0.0);
+  s.actuator.stiffness = yaml::ReadOptionalNumberIn(src, actuator, "actuator", "stiffness",
+                                                    kStiffnessRange, 0.0);
+  s.actuator.rest_length = yaml::ReadOptionalNumberIn(src, actuator, "actuator", "rest_length",
+                                                      kPositionRange, 0.0);
   ValidateAt(src, actuator, "actuator", [&] { Validate(s.actuator); });
-
-  const YAML::Node time = Required(src, root, "", "time");
-  yaml::RequireMap(src, time, "time", {"start", "end"});
-  s.t_start = yaml::ReadNumber(src, Required(src, time, "time", "start"), "time.start");
-  s.t_end = yaml::ReadNumber(src, Required(src, time, "time", "end"), "time.end");
-  if (!std::isfinite(s.t_start)) {
-    yaml::Fail(src, time["start"], "time.start", yaml::Describe(time["start"]), "must be finite [s]");
-  }
-  if (!(std::isfinite(s.t_end) && s.t_end > s.t_start)) {
-    yaml::Fail(src, time["end"], "time.end", yaml::Describe(time["end"]),
-               "must be finite and greater than time.start = " + FormatNumber(s.t_start));
-  }
+  // before what needs it: the shortest interval, step and pulse are measured against it
+  ReadTime(src, Required(src, root, "", "time"), s);
 
   const YAML::Node initial = Required(src, root, "", "initial");
   yaml::RequireMap(src, initial, "initial", {"length", "lengthening_rate"});
-  const YAML::Node length = Required(src, initial, "initial", "length");
-  s.initial_length = yaml::ReadNumber(src, length, "initial.length");
-  s.initial_lengthening_rate = ReadOptionalNumber(src, initial, "initial", "lengthening_rate", 0.0);
-  if (!(std::isfinite(s.initial_length) && s.initial_length > 0.0)) {
-    yaml::Fail(src, length, "initial.length", yaml::Describe(length), "must be finite and > 0 [m]");
-  }
-  if (!std::isfinite(s.initial_lengthening_rate)) {
-    yaml::Fail(src, initial["lengthening_rate"], "initial.lengthening_rate",
-               yaml::Describe(initial["lengthening_rate"]), "must be finite [m/s]");
-  }
+  s.initial_length = yaml::ReadNumberIn(src, Required(src, initial, "initial", "length"),
+                                        "initial.length", kLengthRange);
+  s.initial_lengthening_rate = yaml::ReadOptionalNumberIn(
+      src, initial, "initial", "lengthening_rate", kSpeedRange, 0.0);
 
   const YAML::Node activation = Required(src, root, "", "activation");
   s.activation = ReadActivation(src, activation, "activation");
-  CheckBreakpointCount(src, activation, "activation", s.activation, s.t_end);
+  CheckPulses(src, activation, "activation", s.activation, s.t_start, s.t_end);
 
   if (const YAML::Node load = root["load"]) {
-    if (load.IsMap()) {
-      s.loads.push_back(ReadLoad(src, load, "load"));
+    const auto read = [&](const YAML::Node& node, const std::string& at) {
+      s.loads.push_back(ReadLoad(src, node, at));
       if (s.loads.back().kind == LoadKind::kForce) {
-        CheckBreakpointCount(src, load, "load", s.loads.back().force, s.t_end);
+        CheckPulses(src, node, at, s.loads.back().force, s.t_start, s.t_end);
       }
+    };
+    if (load.IsMap()) {
+      read(load, "load");
     } else if (load.IsSequence()) {
-      for (std::size_t i = 0; i < load.size(); ++i) {
-        const std::string at = "load[" + std::to_string(i) + "]";
-        s.loads.push_back(ReadLoad(src, load[i], at));
-        if (s.loads.back().kind == LoadKind::kForce) {
-          CheckBreakpointCount(src, load[i], at, s.loads.back().force, s.t_end);
-        }
-      }
+      for (std::size_t i = 0; i < load.size(); ++i) read(load[i], "load[" + std::to_string(i) + "]");
     } else {
       yaml::Fail(src, load, "load", yaml::Describe(load), "must be one load (a map) or a list of loads");
     }
   }
 
-  if (const YAML::Node solver = root["solver"]) ReadSolver(src, solver, "solver", s.solver);
+  if (const YAML::Node solver = root["solver"]) ReadSolver(src, solver, "solver", s);
   if (const YAML::Node output = root["output"]) {
     ReadOutput(src, output, "output", s);
   } else {
     s.output.interval = (s.t_end - s.t_start) / 1000.0;
   }
-
-  if (const YAML::Node limits = root["limits"]) {
-    yaml::RequireMap(src, limits, "limits", {"min_length", "max_length"});
-    for (const char* key : {"min_length", "max_length"}) {
-      if (!limits[key]) continue;
-      const std::string path = Join("limits", key);
-      const double value = yaml::ReadNumber(src, limits[key], path);
-      const bool is_min = std::string(key) == "min_length";
-      const bool ok = std::isfinite(value) && (is_min ? value < s.initial_length && value >= 0.0
-                                                      : value > s.initial_length);
-      if (!ok) {
-        yaml::Fail(src, limits[key], path, yaml::Describe(limits[key]),
-                   std::string(is_min ? "must be >= 0 and below" : "must be above") +
-                       " initial.length = " + FormatNumber(s.initial_length) + " [m]");
-      }
-      (is_min ? s.min_length : s.max_length) = value;
-    }
-  }
+  if (const YAML::Node limits = root["limits"]) ReadLimits(src, limits, s);
   return s;
 }
+
+namespace {
 
 void ApplyOverride(YAML::Node root, const std::string& text, const std::string& file) {
   const std::size_t eq = text.find('=');
@@ -301,7 +372,8 @@ void ApplyOverride(YAML::Node root, const std::string& text, const std::string& 
   const auto split = yaml::SplitKeyPath(path);
   if (!split || split->empty()) {
     throw InputError("--set " + text + ": '" + path +
-                     "' is not a dotted key path such as model.velocity.n or load[0].value");
+                     "' is not a dotted key path such as model.velocity.n or load[0].value (names "
+                     "joined by dots, list indices in brackets from 0 to 999999999)");
   }
   const std::vector<yaml::KeyPathStep>& steps = *split;
   YAML::Node node = root;  // handles share the document: assignment below edits it
@@ -314,8 +386,12 @@ void ApplyOverride(YAML::Node root, const std::string& text, const std::string& 
                                  : (walked.empty() ? step.key : walked + "." + step.key);
     YAML::Node next;
     if (step.key.empty()) {
-      if (node.IsMap() && step.index == 0) {
+      if (node.IsMap() && walked == "load" && step.index == 0) {
         next.reset(node);  // a single load written as a map is load[0]
+      } else if (node.IsMap()) {
+        const std::string map = walked.empty() ? "the file's top level" : walked;
+        throw InputError("--set " + text + ": " + map + " is a map, not a list, in " + file +
+                         ": an index on it has no meaning (name a key instead)");
       } else if (!node.IsSequence() || step.index >= node.size()) {
         throw InputError("--set " + text + ": " + here + " does not exist in " + file);
       } else {
@@ -372,10 +448,21 @@ std::unique_ptr<ScenarioTemplate> ScenarioTemplate::Copy() const {
 }
 
 ScenarioSpec ScenarioTemplate::Instantiate(const std::vector<std::string>& overrides) const {
-  if (overrides.empty()) return ReadScenario(yaml::Source{path_}, parsed_->root);
-  YAML::Node root = YAML::Clone(parsed_->root);  // overrides must not touch the template
-  for (const std::string& text : overrides) ApplyOverride(root, text, path_);
-  return ReadScenario(yaml::Source{path_}, root);
+  const yaml::Source src{path_};
+  if (overrides.empty()) return ReadScenario(src, parsed_->root);
+  // overrides must not touch the template, so they go into a copy. yaml-cpp's Clone is fast
+  // but gives no node its file position; errors are rare, so a failing scenario is read
+  // again from its text parsed afresh, whose nodes keep their file:line:column for the
+  // message (and the overridden nodes, which have none, say --set)
+  try {
+    YAML::Node root = YAML::Clone(parsed_->root);
+    for (const std::string& text : overrides) ApplyOverride(root, text, path_);
+    return ReadScenario(src, root);
+  } catch (const InputError&) {
+    YAML::Node root = YAML::Load(text_);
+    for (const std::string& text : overrides) ApplyOverride(root, text, path_);
+    return ReadScenario(src, root);
+  }
 }
 
 ScenarioSpec LoadScenario(const std::string& path, const std::vector<std::string>& overrides) {

@@ -1,10 +1,12 @@
 #include "io/yaml_fields.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "io/key_path.h"
+#include "io/yaml_document_check.h"
 
 namespace musclesim::yaml {
 
@@ -20,7 +22,12 @@ std::string Describe(const YAML::Node& node) {
   if (node.IsScalar()) return node.Scalar();
   YAML::Emitter out;
   out << YAML::Flow << node;
-  return out.c_str();
+  // a message is one line, and a long list is shown by its start
+  std::string text = out.c_str();
+  for (char& c : text) c = c == '\n' ? ' ' : c;
+  constexpr std::size_t kLongest = 120;
+  if (text.size() > kLongest) text = text.substr(0, kLongest - 3) + "...";
+  return text;
 }
 
 void Fail(const Source& source, const YAML::Node& node, const std::string& path,
@@ -77,6 +84,18 @@ double ReadNumber(const Source& source, const YAML::Node& node, const std::strin
 double ReadOptionalNumber(const Source& source, const YAML::Node& map, const std::string& path,
                           const char* key, double fallback) {
   return map[key] ? ReadNumber(source, map[key], Join(path, key)) : fallback;
+}
+
+double ReadNumberIn(const Source& source, const YAML::Node& node, const std::string& path,
+                    const InputRange& range) {
+  const double value = ReadNumber(source, node, path);
+  if (!range.Contains(value)) Fail(source, node, path, Describe(node), range.Rule());
+  return value;
+}
+
+double ReadOptionalNumberIn(const Source& source, const YAML::Node& map, const std::string& path,
+                            const char* key, const InputRange& range, double fallback) {
+  return map[key] ? ReadNumberIn(source, map[key], Join(path, key), range) : fallback;
 }
 
 int ReadInteger(const Source& source, const YAML::Node& node, const std::string& path) {
@@ -141,11 +160,24 @@ void Relocate(const Source& source, const YAML::Node& block, const std::string& 
 }
 
 std::string ReadText(const std::string& path) {
-  std::ifstream in(path);
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw InputError(path + ": is a directory; give a YAML file");
+  }
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the file for reading");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
+  // read in blocks up to the limit: a device or a pipe may never end
+  std::string text;
+  char block[65536];
+  while (in.read(block, sizeof block) || in.gcount() > 0) {
+    text.append(block, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxFileBytes) {
+      throw InputError(path + ": larger than " + std::to_string(kMaxFileBytes >> 20) +
+                       " MiB, the most a YAML file may hold");
+    }
+  }
+  if (in.bad()) throw InputError(path + ": cannot read the file");
+  return text;
 }
 
 YAML::Node Parse(const std::string& path, const std::string& text) {
@@ -153,6 +185,7 @@ YAML::Node Parse(const std::string& path, const std::string& text) {
     YAML::Node root = YAML::Load(text);
     // an empty document has no position; say so here rather than at an unplaced node
     if (!root.IsDefined() || root.IsNull()) throw InputError(path + ": the file is empty");
+    CheckDocument(path, text);
     return root;
   } catch (const YAML::ParserException& e) {
     throw InputError(path + ":" + std::to_string(e.mark.line + 1) + ":" +

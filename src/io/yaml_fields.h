@@ -5,11 +5,13 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cstddef>
 #include <initializer_list>
 #include <string>
 #include <vector>
 
 #include "musclesim/errors.h"
+#include "musclesim/io/input_ranges.h"
 
 namespace musclesim::yaml {
 
@@ -25,7 +27,8 @@ struct Source {
 // "file:line:column" of a node (1-based), or the bare file name without a position.
 std::string Location(const Source& source, const YAML::Node& node);
 
-// The node's text as written, for messages ("[1, 2]", "abc", "~").
+// The node's text as written, for messages ("[1, 2]", "abc", "~"): one line of at most
+// 120 characters, a longer one cut with "...".
 std::string Describe(const YAML::Node& node);
 
 // Requires `node` to be a map whose keys are all in `allowed`.
@@ -39,6 +42,13 @@ YAML::Node Required(const Source& source, const YAML::Node& map, const std::stri
 std::string Join(const std::string& path, const std::string& key);
 
 double ReadNumber(const Source& source, const YAML::Node& node, const std::string& path);
+
+// A number within `range` (NaN never is); its message states the range and why.
+double ReadNumberIn(const Source& source, const YAML::Node& node, const std::string& path,
+                    const InputRange& range);
+// The number at `map[key]` within `range`, or `fallback` when the key is absent.
+double ReadOptionalNumberIn(const Source& source, const YAML::Node& map, const std::string& path,
+                            const char* key, const InputRange& range, double fallback);
 // The number at `map[key]` (its path `path.key`), or `fallback` when the key is absent.
 double ReadOptionalNumber(const Source& source, const YAML::Node& map, const std::string& path,
                           const char* key, double fallback);
@@ -66,10 +76,16 @@ void ValidateAt(const Source& source, const YAML::Node& node, const std::string&
   }
 }
 
-// Parses a YAML file; a missing file or a syntax error is an InputError.
+// Parses a YAML file; a missing file, a directory, a syntax error, a key given twice in one
+// map, a key that is not a plain name or a second document is an InputError.
 YAML::Node LoadFile(const std::string& path);
-// The two halves of LoadFile: the file's text, and that text parsed (`path` for messages).
+// The two halves of LoadFile: the file's text (at most kMaxFileBytes), and that text parsed
+// and checked as LoadFile says (`path` for messages).
 std::string ReadText(const std::string& path);
 YAML::Node Parse(const std::string& path, const std::string& text);
+
+// The largest YAML file read [bytes]: far above any scenario (a table of 5 million points, the
+// most a waveform may have, is about 150 MiB), and it stops a device such as /dev/zero.
+inline constexpr std::size_t kMaxFileBytes = std::size_t{256} << 20;
 
 }  // namespace musclesim::yaml

@@ -19,11 +19,14 @@ struct UniformGrid {
 };
 
 // Header "length,f_L,tension_passive", then per grid point the length [m], f_L(x) [-] and
-// T_p(x) [N]. Throws ParameterError ("from", "to" or "count") for a grid breaking its rules.
+// T_p(x) [N]. Throws ParameterError ("from", "to" or "count") for a grid breaking its rules,
+// and ParameterError ("length", the grid point) where a value is not finite: a table holds
+// numbers only.
 std::string FormatLengthCurvesCsv(const TensionModel& model, const UniformGrid& lengths);
 
 // Header "shortening_velocity,g", then per grid point v [m/s] and the eps-regularised
-// g_eps(v) [-]. Throws ParameterError as FormatLengthCurvesCsv does.
+// g_eps(v) [-]. Throws ParameterError as FormatLengthCurvesCsv does ("shortening_velocity"
+// for a value that is not finite).
 std::string FormatVelocityCurveCsv(const TensionModel& model, const UniformGrid& velocities);
 
 }  // namespace musclesim

@@ -15,7 +15,9 @@ struct IdentifySpec {
   int active_count = 3;                     // Gaussians to fit [-], 1 to 12
   bool active_nonnegative = false;          // keep every amplitude >= 0 [-]
   std::optional<std::string> velocity_csv;  // path; columns shortening_velocity [m/s], tension [N]
-  std::optional<double> velocity_f_iso;     // held fixed when given [N], > 0
+  std::optional<double> velocity_f_iso;     // held fixed when given [N], > 0 and <= 1e9
+  // where each csv is named, "data.yaml:1:11", so that errors in its data point back [-]
+  std::string passive_csv_at, active_csv_at, velocity_csv_at;
 };
 
 // Reads a data file; CSV paths are relative to it. Throws InputError with file:line:column.

@@ -1,0 +1,149 @@
+#include "io/yaml_document_check.h"
+
+#include <yaml-cpp/eventhandler.h>
+#include <yaml-cpp/yaml.h>
+
+#include <sstream>
+#include <unordered_map>
+#include <vector>
+
+#include "musclesim/errors.h"
+
+namespace musclesim::yaml {
+
+namespace {
+
+std::string Place(const std::string& path, const YAML::Mark& mark) {
+  return path + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
+}
+
+// The parse events of one document, with the open maps and lists on a stack. Events never
+// expand aliases, so a document that aliases itself or multiplies nodes costs no more than
+// its text.
+class DocumentChecker : public YAML::EventHandler {
+ public:
+  explicit DocumentChecker(const std::string& path) : path_(path) {}
+
+  void OnDocumentStart(const YAML::Mark&) override {}
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t) override { Value(mark, nullptr); }
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { Value(mark, nullptr); }
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                const std::string& value) override {
+    Value(mark, &value);
+  }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {
+    Open(mark, false);
+  }
+  void OnSequenceEnd() override { open_.pop_back(); }
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {
+    Open(mark, true);
+  }
+  void OnMapEnd() override { open_.pop_back(); }
+
+ private:
+  struct Collection {
+    bool is_map = false;
+    std::string path;                                   // key path of this map or list
+    std::size_t items = 0;                              // list items seen so far
+    bool expecting_key = true;                          // maps alternate key, value
+    std::string key;                                    // the key of the value to come
+    std::unordered_map<std::string, YAML::Mark> keys;   // every key so far, where given
+  };
+
+  // A scalar (`value`) or a null or alias (nullptr) at `mark`.
+  void Value(const YAML::Mark& mark, const std::string* value) {
+    if (!open_.empty() && open_.back().is_map && open_.back().expecting_key) {
+      Collection& map = open_.back();
+      if (value == nullptr) KeyNotAName(mark, "empty or an alias");
+      const auto [seen, inserted] = map.keys.emplace(*value, mark);
+      if (!inserted) {
+        throw InputError(Join(map.path, *value) + " (" + Place(path_, mark) +
+                         "): duplicate key: already given at line " +
+                         std::to_string(seen->second.line + 1) + ", column " +
+                         std::to_string(seen->second.column + 1) +
+                         "; a map holds each key once");
+      }
+      map.key = *value;
+      map.expecting_key = false;
+      return;
+    }
+    ChildPath();
+  }
+
+  void Open(const YAML::Mark& mark, bool is_map) {
+    if (!open_.empty() && open_.back().is_map && open_.back().expecting_key) {
+      KeyNotAName(mark, is_map ? "a map" : "a list");
+    }
+    Collection next;
+    next.is_map = is_map;
+    next.path = ChildPath();
+    open_.push_back(std::move(next));
+  }
+
+  // The key path of the value now starting inside the innermost collection; advances it.
+  std::string ChildPath() {
+    if (open_.empty()) return "";
+    Collection& parent = open_.back();
+    if (parent.is_map) {
+      parent.expecting_key = true;
+      return Join(parent.path, parent.key);
+    }
+    return parent.path + "[" + std::to_string(parent.items++) + "]";
+  }
+
+  [[noreturn]] void KeyNotAName(const YAML::Mark& mark, const std::string& what) const {
+    const std::string& at = open_.back().path;
+    throw InputError((at.empty() ? std::string("(top level)") : at) + " (" +
+                     Place(path_, mark) + "): a key is " + what +
+                     "; keys must be plain names");
+  }
+
+  static std::string Join(const std::string& path, const std::string& key) {
+    return path.empty() ? key : path + "." + key;
+  }
+
+  const std::string& path_;
+  std::vector<Collection> open_;
+};
+
+// Counts the documents of a stream and remembers where the second starts.
+class DocumentCounter : public YAML::EventHandler {
+ public:
+  void OnDocumentStart(const YAML::Mark& mark) override { start = mark; }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+  YAML::Mark start;
+};
+
+}  // namespace
+
+void CheckDocument(const std::string& path, const std::string& text) {
+  std::istringstream stream(text);
+  YAML::Parser parser(stream);
+  DocumentChecker checker(path);
+  parser.HandleNextDocument(checker);
+  // YAML::Load reads the first document only: a second would be ignored without a word
+  DocumentCounter counter;
+  try {
+    if (parser.HandleNextDocument(counter)) {
+      throw InputError(Place(path, counter.start) +
+                       ": a second YAML document (after ---); a file holds one document");
+    }
+  } catch (const YAML::ParserException& e) {
+    throw InputError(Place(path, e.mark) + ": YAML syntax error: " + e.msg);
+  }
+}
+
+}  // namespace musclesim::yaml

@@ -1,0 +1,461 @@
+// Bad input, every reader and every verb, run through the built program: each case asserts
+// the exit code and that the message names the key path (or the flag), the place
+// (file:line:column, or --set) and the rule. A new key or flag is not done until its error
+// has a row here.
+//
+// A case's file is written with one '@' marking where the error is; the test removes it and
+// expects "FILE:line:column" of that spot, found by counting lines and columns in the text
+// (independently of yaml-cpp's marks).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <vector>
+
+namespace musclesim {
+namespace {
+
+using ::testing::HasSubstr;
+
+constexpr const char* kModel = R"(name: bad_input
+model:
+  f_iso: 100.0
+  passive: {k_p: 1.0, alpha: 100.0, slack_length: 0.105}
+  active_length:
+    optimal_range: [0.095, 0.105]
+    gaussians: [{amplitude: 2.0, width: 4000.0, center: 0.1}]
+  velocity: {v_max: 1.0, n: 3, epsilon: 1.0e-3}
+)";
+
+constexpr const char* kRest = R"(actuator: {mass: 0.1, damping: 0.0, stiffness: 0.0, rest_length: 0.1}
+initial: {length: 0.1, lengthening_rate: 0.0}
+activation: {type: step, time: 0.05, before: 0.0, after: 1.0}
+load:
+  - {type: constant, value: 40.0}
+time: {start: 0.0, end: 1.0}
+solver: {method: bdf, rtol: 1.0e-6, atol: 1.0e-9, jacobian: analytic, max_step: 0.0, max_steps: 100000}
+output: {file: out.csv, interval: 0.001}
+limits: {min_length: 0.05, max_length: 0.2}
+)";
+
+constexpr const char* kSweep = R"(base: base.yaml
+mode: grid
+parameters:
+  actuator.mass: [0.1, 0.2]
+  model.velocity.n: {from: 2, to: 4, count: 3}
+metrics: [final_length]
+output: sweep.csv
+)";
+
+constexpr const char* kData = R"(passive: {csv: passive.csv}
+active: {csv: active.csv, count: 2, nonnegative: true}
+velocity: {csv: velocity.csv, f_iso: 100}
+)";
+
+// `text` with the first `from` replaced by `to` (which must be there: a case that edits
+// nothing would test the valid file).
+std::string Edit(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  if (at == std::string::npos) throw std::logic_error("no '" + from + "' to edit");
+  return text.replace(at, from.size(), to);
+}
+std::string Scenario(const std::string& from = "", const std::string& to = "") {
+  const std::string text = std::string(kModel) + kRest;
+  return from.empty() ? text : Edit(text, from, to);
+}
+std::string ModelOnly(const std::string& from, const std::string& to) {
+  return Edit(kModel, from, to);
+}
+std::string Sweep(const std::string& from, const std::string& to) { return Edit(kSweep, from, to); }
+std::string Data(const std::string& from, const std::string& to) { return Edit(kData, from, to); }
+
+struct Case {
+  std::string name;
+  std::string command;  // after `musclesim`; {file} is the case's file, {dir} its directory
+  std::string file;     // the case's file, with one '@' where the error is ("" : none written)
+  int exit_code;
+  std::vector<std::string> needles;  // in standard error; {at} is FILE:line:column of '@',
+                                     // {file} the file's path
+  std::string extension = "yaml";
+};
+
+std::ostream& operator<<(std::ostream& out, const Case& c) { return out << c.name; }
+
+// clang-format off
+const std::vector<Case> kCases = {
+    // --- any YAML file: structure -----------------------------------------------------
+    {"DuplicateKeyInAFlowMap", "run {file} -o -", Scenario("rest_length: 0.1}", "rest_length: 0.1, @mass: 1}"), 2,
+     {"actuator.mass ({at}): duplicate key: already given at line 9, column 12"}},
+    {"DuplicateTopLevelBlock", "run {file} -o -", Scenario() + "@time: {start: 0.0, end: 2.0}\n", 2,
+     {"time ({at}): duplicate key: already given at line 14, column 1"}},
+    {"DuplicateKeyInAListItem", "run {file} -o -", Scenario("value: 40.0}", "value: 40.0, @value: 3}"), 2,
+     {"load[0].value ({at}): duplicate key"}},
+    {"DuplicateKeyInTheModel", "run {file} -o -", Scenario("k_p: 1.0,", "k_p: 1.0, @k_p: 2.0,"), 2,
+     {"model.passive.k_p ({at}): duplicate key"}},
+    {"SecondDocument", "run {file} -o -", Scenario() + "@---\nname: again\n", 2,
+     {"{at}: a second YAML document"}},
+    {"ListAsAKey", "run {file} -o -", Scenario("{type: step, time", "{type: step, @[x]: 1, time"), 2,
+     {"activation ({at}): a key is a list; keys must be plain names"}},
+    {"SyntaxError", "run {file} -o -", Scenario("{mass: 0.1,", "{mass: 0.1,,]"), 2,
+     {"YAML syntax error"}},
+    {"EmptyFile", "run {file} -o -", "# nothing\n", 2, {"{file}: the file is empty"}},
+    {"TopLevelNotAMap", "run {file} -o -", "@[1, 2]\n", 2, {"(top level) = [1, 2] ({at}): must be a map of keys"}},
+    {"LongValueShownByItsStart", "run {file} -o -", Scenario("name: bad_input", "name: @[" + std::string(400, '1') + "]"), 2,
+     {"name = [" + std::string(116, '1') + "... ({at}): must be a text value"}},
+    {"AliasCycle", "run {file} -o -", Scenario("  f_iso: 100.0", "  f_iso: @&f [*f]"), 2,
+     {"model.f_iso = &1 [*1] ({at}): must be a number"}},
+    {"Directory", "run {dir} -o -", "", 2, {"is a directory; give a YAML file"}},
+    {"MissingFile", "run {dir}/none.yaml -o -", "", 2, {"none.yaml: cannot open the file"}},
+    // --- scenario: keys -------------------------------------------------------------------
+    {"UnknownTopLevelKey", "run {file} -o -", Scenario("time: {", "@tim: {"), 2,
+     {"tim ({at}): unknown key; allowed here: name, model"}},
+    {"UnknownActuatorKey", "run {file} -o -", Scenario("rest_length: 0.1}", "rest_length: 0.1, @color: red}"), 2,
+     {"actuator.color ({at}): unknown key; allowed here: mass, damping, stiffness, rest_length"}},
+    {"MissingTimeEnd", "run {file} -o -", Scenario("time: {start: 0.0, end: 1.0}", "time: @{start: 0.0}"), 2,
+     {"time.end ({at}): missing required key"}},
+    // --- scenario: time -------------------------------------------------------------------
+    {"TimeStartHuge", "run {file} -o -", Scenario("start: 0.0,", "start: @-1.7e308,"), 2,
+     {"time.start = -1.7e308 ({at}): must be from -1e+09 to 1e+09 [s]: beyond 1e9 s"}},
+    {"TimeEndHuge", "run {file} -o -", Scenario("end: 1.0}", "end: @1.7e308}"), 2,
+     {"time.end = 1.7e308 ({at}): must be from -1e+09 to 1e+09 [s]"}},
+    {"TimeEndNotAfterStart", "run {file} -o -", Scenario("end: 1.0}", "end: @0}"), 2,
+     {"time.end = 0 ({at}): must be greater than time.start = 0 by at least 1e-09 s"}},
+    {"TimeSpanBelowResolution", "run {file} -o -", Scenario("time: {start: 0.0, end: 1.0}", "time: {start: 1.0e8, end: @100000000.01}"), 2,
+     {"time.end = 100000000.01 ({at}): must be greater than time.start = 1e+08 by at least 0.10000000001 s"}},
+    {"TimeStartNaN", "run {file} -o -", Scenario("start: 0.0,", "start: @.nan,"), 2,
+     {"time.start = .nan ({at}): must be from"}},
+    // --- scenario: actuator and initial state -----------------------------------------------
+    {"MassZero", "run {file} -o -", Scenario("mass: 0.1,", "mass: @0,"), 2,
+     {"actuator.mass = 0 ({at}): must be from 1e-09 to 1e+09 [kg]: a microgram to a million tonnes"}},
+    {"MassHuge", "run {file} -o -", Scenario("mass: 0.1,", "mass: @1e300,"), 2,
+     {"actuator.mass = 1e300 ({at}): must be from 1e-09 to 1e+09 [kg]"}},
+    {"MassNotANumber", "run {file} -o -", Scenario("mass: 0.1,", "mass: @abc,"), 2,
+     {"actuator.mass = abc ({at}): must be a number"}},
+    {"DampingNegative", "run {file} -o -", Scenario("damping: 0.0", "damping: @-1"), 2,
+     {"actuator.damping = -1 ({at}): must be from 0 to 1e+12 [N s/m]"}},
+    {"DampingHuge", "run {file} -o -", Scenario("damping: 0.0", "damping: @1e300"), 2,
+     {"actuator.damping = 1e300 ({at}): must be from 0 to 1e+12"}},
+    {"StiffnessHuge", "run {file} -o -", Scenario("stiffness: 0.0", "stiffness: @1e13"), 2,
+     {"actuator.stiffness = 1e13 ({at}): must be from 0 to 1e+12 [N/m]"}},
+    {"RestLengthHuge", "run {file} -o -", Scenario("rest_length: 0.1}", "rest_length: @1e4}"), 2,
+     {"actuator.rest_length = 1e4 ({at}): must be from -1000 to 1000 [m]"}},
+    {"InitialLengthZero", "run {file} -o -", Scenario("length: 0.1,", "length: @0,"), 2,
+     {"initial.length = 0 ({at}): must be > 0 and <= 1000 [m]"}},
+    {"InitialLengthHuge", "run {file} -o -", Scenario("length: 0.1,", "length: @2000,"), 2,
+     {"initial.length = 2000 ({at}): must be > 0 and <= 1000 [m]"}},
+    {"LengtheningRateHuge", "run {file} -o -", Scenario("lengthening_rate: 0.0", "lengthening_rate: @1e308"), 2,
+     {"initial.lengthening_rate = 1e308 ({at}): must be from -1000 to 1000 [m/s]"}},
+    {"LengtheningRateText", "run {file} -o -", Scenario("lengthening_rate: 0.0", "lengthening_rate: @x"), 2,
+     {"initial.lengthening_rate = x ({at}): must be a number"}},
+    // --- scenario: activation waveforms ---------------------------------------------------
+    {"ActivationKindUnknown", "run {file} -o -", Scenario("{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: @square, value: 1}"), 2,
+     {"activation.type = square ({at}): must be one of constant, step, ramp, sine, pulses, table"}},
+    {"ActivationMissingKey", "run {file} -o -", Scenario("{type: step, time: 0.05, before: 0.0, after: 1.0}", "@{type: step, time: 0.05, after: 1.0}"), 2,
+     {"activation.before ({at}): missing required key"}},
+    {"ActivationAboveOne", "run {file} -o -", Scenario("after: 1.0}", "after: @1.2}"), 2,
+     {"activation.after = 1.2 ({at}): activation must stay within [0, 1]"}},
+    {"ActivationStepTimeHuge", "run {file} -o -", Scenario("time: 0.05,", "time: @1e300,"), 2,
+     {"activation.time = 1e300 ({at}): must be from -1e+09 to 1e+09 [s]"}},
+    {"ActivationRampBackwards", "run {file} -o -", Scenario("{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: ramp, start: 0.5, end: @0.2, from: 0, to: 1}"), 2,
+     {"activation.end = 0.2 ({at}): must be finite and greater than start = 0.5"}},
+    {"ActivationSineLeavesUnit", "run {file} -o -", Scenario("{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: sine, offset: 0.5, amplitude: @0.7, frequency: 1}"), 2,
+     {"activation.amplitude = 0.7 ({at}): activation must stay within [0, 1]"}},
+    {"ActivationSineFrequencyHuge", "run {file} -o -", Scenario("{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: sine, offset: 0.5, amplitude: 0.2, frequency: @1e7}"), 2,
+     {"activation.frequency = 1e7 ({at}): must be from 0 to 1e+06 [Hz]"}},
+    {"ActivationPulsesTooMany", "run {file} -o -", Scenario("{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: pulses, start: 0, period: @1.0e-8, width: 1.0e-9, low: 0, high: 1}"), 2,
+     {"activation.period = 1e-08 ({at}): gives more than 5 million pulses"}},
+    {"ActivationPulsesBelowResolution", "run {file} -o -", Scenario("{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: pulses, start: 0.9, period: 1.0e-6, width: @1.0e-13, low: 0, high: 1}"), 2,
+     {"activation.width = 1.0e-13 ({at}): must be at least 1e-12 s"}},
+    {"ActivationPulsesWidthAbovePeriod", "run {file} -o -", Scenario("{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: pulses, start: 0, period: 0.1, width: @0.2, low: 0, high: 1}"), 2,
+     {"activation.width = 0.2 ({at}): must be > 0 and at most period = 0.1"}},
+    {"ActivationTableNotIncreasing", "run {file} -o -", Scenario("{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: table, points: [[0, 0], [1, 1], [@0.5, 1]]}"), 2,
+     {"activation.points[2][0] = 0.5 ({at}): table times must be strictly increasing"}},
+    {"ActivationTableValueAboveOne", "run {file} -o -", Scenario("{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: table, points: [[0, 0], [1, @1.5]]}"), 2,
+     {"activation.points[1][1] = 1.5 ({at}): activation must stay within [0, 1]"}},
+    {"ActivationTableTimeHuge", "run {file} -o -", Scenario("{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: table, points: [[0, 0], [@1e10, 1]]}"), 2,
+     {"activation.points[1][0] = 1e10 ({at}): must be from -1e+09 to 1e+09 [s]"}},
+    {"ActivationTablePairTooLong", "run {file} -o -", Scenario("{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: table, points: [[0, 0], @[1, 1, 1]]}"), 2,
+     {"activation.points[1] = [1, 1, 1] ({at}): must be a list of exactly 2 numbers"}},
+    {"ActivationNotAMap", "run {file} -o -", Scenario("activation: {type: step, time: 0.05, before: 0.0, after: 1.0}", "activation: @0.5"), 2,
+     {"activation = 0.5 ({at}): must be a map with a type"}},
+    // --- scenario: loads ------------------------------------------------------------------
+    {"LoadKindUnknown", "run {file} -o -", Scenario("{type: constant, value: 40.0}", "{type: @rocket, value: 1}"), 2,
+     {"load[0].type = rocket ({at}): must be one of constant, step, ramp, sine, pulses, table, spring, mass"}},
+    {"LoadForceHuge", "run {file} -o -", Scenario("value: 40.0}", "value: @1e300}"), 2,
+     {"load[0].value = 1e300 ({at}): must be from -1e+09 to 1e+09 [N]"}},
+    {"LoadStepAfterHuge", "run {file} -o -", Scenario("{type: constant, value: 40.0}", "{type: step, time: 0.1, before: 0, after: @1e10}"), 2,
+     {"load[0].after = 1e10 ({at}): must be from -1e+09 to 1e+09 [N]"}},
+    {"LoadSineOffsetHuge", "run {file} -o -", Scenario("{type: constant, value: 40.0}", "{type: sine, offset: @1e300, amplitude: 1e300, frequency: 1}"), 2,
+     {"load[0].offset = 1e300 ({at}): must be from -1e+09 to 1e+09 [N]"}},
+    {"LoadSpringStiffnessNegative", "run {file} -o -", Scenario("{type: constant, value: 40.0}", "{type: spring, stiffness: @-1, anchor: 0.1}"), 2,
+     {"load[0].stiffness = -1 ({at}): must be from 0 to 1e+12 [N/m]"}},
+    {"LoadSpringAnchorHuge", "run {file} -o -", Scenario("{type: constant, value: 40.0}", "{type: spring, stiffness: 1, anchor: @1e5}"), 2,
+     {"load[0].anchor = 1e5 ({at}): must be from -1000 to 1000 [m]"}},
+    {"LoadMassZero", "run {file} -o -", Scenario("{type: constant, value: 40.0}", "{type: mass, mass: @0}"), 2,
+     {"load[0].mass = 0 ({at}): must be from 1e-09 to 1e+09 [kg]"}},
+    {"LoadGravityHuge", "run {file} -o -", Scenario("{type: constant, value: 40.0}", "{type: mass, mass: 1, gravity: @1e6}"), 2,
+     {"load[0].gravity = 1e6 ({at}): must be from -1000 to 1000 [m/s^2]"}},
+    {"LoadMassUnknownKey", "run {file} -o -", Scenario("{type: constant, value: 40.0}", "{type: mass, mass: 1, @value: 2}"), 2,
+     {"load[0].value ({at}): unknown key; allowed here: type, mass, gravity"}},
+    {"LoadPulsesTooMany", "run {file} -o -", Scenario("{type: constant, value: 40.0}", "{type: pulses, start: 0, period: @1.0e-7, width: 1.0e-8, low: 0, high: 1}"), 2,
+     {"load[0].period = 1e-07 ({at}): gives more than 5 million pulses"}},
+    {"LoadTableValueHuge", "run {file} -o -", Scenario("{type: constant, value: 40.0}", "{type: table, points: [[0, 0], [1, @1e300]]}"), 2,
+     {"load[0].points[1][1] = 1e300 ({at}): must be from -1e+09 to 1e+09 [N]"}},
+    {"LoadNotAMapOrList", "run {file} -o -", Scenario("load:\n  - {type: constant, value: 40.0}", "load: @5"), 2,
+     {"load = 5 ({at}): must be one load (a map) or a list of loads"}},
+    {"SecondLoadBad", "run {file} -o -", Scenario("- {type: constant, value: 40.0}", "- {type: constant, value: 40.0}\n  - {type: constant, value: @1e12}"), 2,
+     {"load[1].value = 1e12 ({at}): must be from -1e+09 to 1e+09 [N]"}},
+    // --- scenario: solver, output, limits ---------------------------------------------------
+    {"SolverMethodUnknown", "run {file} -o -", Scenario("method: bdf", "method: @rk4"), 2,
+     {"solver.method = rk4 ({at}): must be bdf or adams"}},
+    {"SolverJacobianUnknown", "run {file} -o -", Scenario("jacobian: analytic", "jacobian: @exact"), 2,
+     {"solver.jacobian = exact ({at}): must be analytic or difference_quotient"}},
+    {"SolverRtolZero", "run {file} -o -", Scenario("rtol: 1.0e-6", "rtol: @0"), 2,
+     {"solver.rtol = 0 ({at}): must be >= 1e-14"}},
+    {"SolverAtolNegative", "run {file} -o -", Scenario("atol: 1.0e-9", "atol: @-1"), 2,
+     {"solver.atol = -1 ({at}): must be > 0 and < 1"}},
+    {"SolverMaxStepNegative", "run {file} -o -", Scenario("max_step: 0.0", "max_step: @-1"), 2,
+     {"solver.max_step = -1 ({at}): must be finite and >= 0"}},
+    {"SolverMaxStepTooSmallForTheSpan", "run {file} -o -", Scenario("max_step: 0.0", "max_step: @1.0e-9"), 2,
+     {"solver.max_step = 1.0e-9 ({at}): must be 0 (no limit) or at least 1e-05 s"}},
+    {"SolverMaxStepsZero", "run {file} -o -", Scenario("max_steps: 100000", "max_steps: @0"), 2,
+     {"solver.max_steps = 0 ({at}): must be an integer from 1 to 1e12"}},
+    {"SolverMaxStepsFraction", "run {file} -o -", Scenario("max_steps: 100000", "max_steps: @2.5"), 2,
+     {"solver.max_steps = 2.5 ({at}): must be an integer from 1 to 1e12"}},
+    {"SolverUnknownKey", "run {file} -o -", Scenario("max_steps: 100000", "max_steps: 100000, @order: 5"), 2,
+     {"solver.order ({at}): unknown key"}},
+    {"OutputIntervalZero", "run {file} -o -", Scenario("interval: 0.001", "interval: @0"), 2,
+     {"output.interval = 0 ({at}): must be `steps` or a time [s] giving at most 1e8 rows"}},
+    {"OutputIntervalText", "run {file} -o -", Scenario("interval: 0.001", "interval: @often"), 2,
+     {"output.interval = often ({at}): must be a number"}},
+    {"OutputIntervalTooManyRows", "run {file} -o -", Scenario("interval: 0.001", "interval: @1.0e-10"), 2,
+     {"output.interval = 1.0e-10 ({at}): must be `steps` or a time [s] giving at most 1e8 rows"}},
+    {"OutputFileEmpty", "run {file}", Scenario("file: out.csv", "file: @\"\""), 2,
+     {"output.file = \"\" ({at}): must not be empty"}},
+    {"OutputPhaseToleranceNegative", "run {file} -o -", Scenario("interval: 0.001}", "interval: 0.001, phase_tolerance: @-1}"), 2,
+     {"output.phase_tolerance = -1 ({at}): must be from 0 to 1000 [m/s]"}},
+    {"OutputPhaseToleranceHuge", "run {file} -o -", Scenario("interval: 0.001}", "interval: 0.001, phase_tolerance: @1e4}"), 2,
+     {"output.phase_tolerance = 1e4 ({at}): must be from 0 to 1000 [m/s]"}},
+    {"NoOutputFile", "run {file}", Scenario("output: {file: out.csv, interval: 0.001}\n", ""), 2,
+     {"no output file: set output.file or pass -o PATH"}},
+    {"LimitMinAboveInitial", "run {file} -o -", Scenario("min_length: 0.05", "min_length: @0.15"), 2,
+     {"limits.min_length = 0.15 ({at}): must be >= 0 and below initial.length = 0.1"}},
+    {"LimitMaxBelowInitial", "run {file} -o -", Scenario("max_length: 0.2", "max_length: @0.1"), 2,
+     {"limits.max_length = 0.1 ({at}): must be above initial.length = 0.1"}},
+    {"LimitMaxHuge", "run {file} -o -", Scenario("max_length: 0.2", "max_length: @1e4"), 2,
+     {"limits.max_length = 1e4 ({at}): must be above initial.length = 0.1 and at most 1000 [m]"}},
+    // --- the model block --------------------------------------------------------------------
+    {"ModelVelocityNZero", "run {file} -o -", Scenario("n: 3", "n: @0"), 2,
+     {"model.velocity.n = 0 ({at}): must be an integer >= 1 (at most 1000)"}},
+    {"ModelFIsoText", "run {file} -o -", Scenario("f_iso: 100.0", "f_iso: @lots"), 2,
+     {"model.f_iso = lots ({at}): must be a number"}},
+    {"ModelGaussiansAndFit", "run {file} -o -", Scenario("    gaussians:", "    fit: {count: 2}\n    gaussians:"), 2,
+     {"model.active_length = gaussians and fit", "give exactly one of gaussians"}},
+    {"ModelUnknownKey", "run {file} -o -", Scenario("  f_iso: 100.0", "  f_iso: 100.0\n  @fiso: 3"), 2,
+     {"model.fiso ({at}): unknown key; allowed here: f_iso, passive, active_length, velocity"}},
+    // --- --set ------------------------------------------------------------------------------
+    {"SetBreaksARule", "run {file} -o - --set model.velocity.n=0", Scenario(), 2,
+     {"model.velocity.n = 0 (--set): must be an integer >= 1"}},
+    {"SetKeepsTheFilesLocations", "run {file} -o - --set model.velocity.n=2", Scenario("mass: 0.1,", "mass: @-1,"), 2,
+     {"actuator.mass = -1 ({at}): must be from 1e-09"}},
+    {"SetTimeEndHuge", "run {file} -o - --set time.end=1e300", Scenario(), 2,
+     {"time.end = 1e300 (--set): must be from -1e+09 to 1e+09 [s]"}},
+    {"SetIndexOnAMap", "run {file} -o - --set 'model[0].f_iso=50'", Scenario(), 2,
+     {"--set model[0].f_iso=50: model is a map, not a list"}},
+    {"SetIndexTooLarge", "run {file} -o - --set 'load[99999999999999999999].value=1'", Scenario(), 2,
+     {"--set load[99999999999999999999].value=1: 'load[99999999999999999999].value' is not a dotted key path"}},
+    {"SetEmptyKey", "run {file} -o - --set a..b=1", Scenario(), 2, {"--set a..b=1: 'a..b' is not a dotted key path"}},
+    {"SetWithoutValue", "run {file} -o - --set model.velocity.n", Scenario(), 2,
+     {"--set model.velocity.n: expected KEY=VALUE"}},
+    {"SetMissingPath", "run {file} -o - --set model.speed.n=3", Scenario(), 2,
+     {"--set model.speed.n=3: model.speed does not exist in {file}"}},
+    {"SetOnAMap", "run {file} -o - --set model.velocity=3", Scenario(), 2,
+     {"--set model.velocity=3: model.velocity is a map or list; --set replaces single values only"}},
+    {"SetUnknownKey", "run {file} -o - --set actuator.colour=red", Scenario(), 2,
+     {"actuator.colour (--set): unknown key"}},
+    // --- run's arguments ----------------------------------------------------------------------
+    {"RunFlagWithValue", "run {file} -o - --quiet=1", Scenario(), 2, {"--quiet=1: --quiet is a flag and takes no value"}},
+    {"RunUnknownOption", "run {file} --fast", Scenario(), 2, {"unknown option --fast"}},
+    {"RunOptionWithoutValue", "run {file} --stats", Scenario(), 2, {"--stats needs a value"}},
+    {"RunTwoScenarios", "run {file} {file}", Scenario(), 2, {"expected one scenario file"}},
+    {"RunNoScenario", "run", "", 2, {"expected one scenario file"}},
+    // --- curves -------------------------------------------------------------------------------
+    {"CurvesVelocityHuge", "curves {file} --velocity -1e308:1e308:3", Scenario(), 2,
+     {"--velocity -1e308:1e308:3: A = -1e+308 must be from -1000 to 1000 [m/s]"}},
+    {"CurvesLengthHuge", "curves {file} --length 0:1e4:3", Scenario(), 2,
+     {"--length 0:1e4:3: B = 10000 must be from -1000 to 1000 [m]"}},
+    {"CurvesOverflowIsNotPrinted", "curves {file} --length 0:1000:3", Scenario(), 2,
+     {"--length 0:1000:3: length = 500: tension_passive = inf there"}},
+    {"CurvesBackwards", "curves {file} --length 0.1:0.05:10", Scenario(), 2, {"--length 0.1:0.05:10: A must be less than B"}},
+    {"CurvesCountNotANumber", "curves {file} --length 0:1:x", Scenario(), 2, {"--length 0:1:x: N must be an integer from 2"}},
+    {"CurvesBothGrids", "curves {file} --length 0:1:3 --velocity 0:1:3", Scenario(), 2, {"give exactly one of --length"}},
+    {"CurvesTypoOutsideTheModel", "curves {file} --length 0.1:0.2:3", Scenario("{mass: 0.1,", "{@mas: 0.1,"), 2,
+     {"actuator.mas ({at}): unknown key"}},
+    {"CurvesScenarioValidatedWhole", "curves {file} --length 0.1:0.2:3", Scenario("mass: 0.1,", "mass: @-0.1,"), 2,
+     {"actuator.mass = -0.1 ({at}): must be from 1e-09"}},
+    {"CurvesPartialScenario", "curves {file} --length 0.1:0.2:3", "@" + std::string(kModel) + "actuator: {mass: 0.1}\n", 2,
+     {"time ({at}): missing required key"}},
+    {"CurvesHelpWithValue", "curves --help=yes", "", 2, {"--help=yes: --help is a flag and takes no value"}},
+    // --- fit ----------------------------------------------------------------------------------
+    {"FitOnExplicitGaussians", "fit {file}", ModelOnly("gaussians: [", "gaussians: @["), 2,
+     {"model.active_length.gaussians = 1 components ({at}): explicit components leave nothing to fit"}},
+    {"FitPolygonXHuge", "fit {file}", ModelOnly("gaussians: [{amplitude: 2.0, width: 4000.0, center: 0.1}]",
+                                                "fit: {count: 2, target: polygon, points: [[0.09, 0], [0.1, 1], [@1e300, 0]]}"), 2,
+     {"model.active_length.fit.points[2][0] = 1e300 ({at}): must be from -1000 to 1000 [m]"}},
+    {"FitTargetOutsideTheRangeIsBlamed", "fit {file}", ModelOnly("gaussians: [{amplitude: 2.0, width: 4000.0, center: 0.1}]",
+                                                "fit: {count: 1, target: polygon, points: @[[500, 0], [501, 1], [502, 0]]}"), 2,
+     {"model.active_length.fit.points = 3 points ({at}): the fit of this target gave"}},
+    {"FitSampleValueHuge", "fit {file}", ModelOnly("gaussians: [{amplitude: 2.0, width: 4000.0, center: 0.1}]",
+                                                   "fit: {count: 1, target: samples, points: [[0.1, @1e7], [0.11, 0]]}"), 2,
+     {"model.active_length.fit.points[0][1] = 1e7 ({at}): must be from -1e+06 to 1e+06 [-]"}},
+    {"FitCentersHuge", "fit {file}", ModelOnly("gaussians: [{amplitude: 2.0, width: 4000.0, center: 0.1}]",
+                                               "fit: {count: 1, widths: [4000], centers: [@1e4]}"), 2,
+     {"model.active_length.fit.centers[0] = 1e4 ({at}): must be from -1000 to 1000 [m]"}},
+    {"FitCountText", "fit {file}", ModelOnly("gaussians: [{amplitude: 2.0, width: 4000.0, center: 0.1}]",
+                                             "fit: {count: @two}"), 2,
+     {"model.active_length.fit.count = two ({at}): must be a number"}},
+    // --- identify -----------------------------------------------------------------------------
+    {"IdentifyDuplicateKey", "identify {file}", Data("count: 2,", "count: 2, @count: 3,"), 2,
+     {"active.count ({at}): duplicate key"}},
+    {"IdentifyUnknownKey", "identify {file}", Data("passive: {", "@pasive: {"), 2, {"pasive ({at}): unknown key"}},
+    {"IdentifyNothing", "identify {file}", "@{}\n", 2, {"(top level) = {} ({at}): give at least one of passive"}},
+    {"IdentifyCountHigh", "identify {file}", Data("count: 2,", "count: @13,"), 2,
+     {"active.count = 13 ({at}): must be an integer from 1 to 12"}},
+    {"IdentifyFIsoHuge", "identify {file}", Data("f_iso: 100}", "f_iso: @1e10}"), 2,
+     {"velocity.f_iso = 1e10 ({at}): must be > 0 and <= 1e+09 [N]"}},
+    {"IdentifyCsvMissing", "identify {file}", Data("csv: passive.csv", "csv: @none.csv"), 2,
+     {"passive.csv = {dir}/none.csv ({at}): {dir}/none.csv: cannot open the file"}},
+    {"IdentifyCsvAllZero", "identify {file}", Data("csv: passive.csv", "csv: @zero.csv"), 2,
+     {"passive.csv = {dir}/zero.csv ({at}): {dir}/zero.csv: every tension is zero"}},
+    {"IdentifyCsvTooFewPositive", "identify {file}", Data("csv: passive.csv", "csv: @one_positive.csv"), 2,
+     {"passive.csv = {dir}/one_positive.csv ({at}): ", "fewer than 2 points with positive tension"}},
+    {"IdentifyCsvNotANumber", "identify {file}", Data("csv: velocity.csv", "csv: @text.csv"), 2,
+     {"velocity.csv = {dir}/text.csv ({at}): {dir}/text.csv:3: column tension = 'heavy': must be a number"}},
+    {"IdentifyCsvIsADirectory", "identify {file}", Data("csv: passive.csv", "csv: @sub"), 2,
+     {"passive.csv = {dir}/sub ({at}): {dir}/sub: is a directory"}},
+    {"IdentifyCsvEmptyName", "identify {file}", Data("csv: passive.csv", "csv: @\"\""), 2,
+     {"passive.csv = \"\" ({at}): must name a CSV file"}},
+    // --- sweep --------------------------------------------------------------------------------
+    {"SweepDuplicateAxis", "sweep {file} --quiet", Sweep("  model.velocity.n:", "  @actuator.mass: [0.3]\n  model.velocity.n:"), 2,
+     {"parameters.actuator.mass ({at}): duplicate key: already given at line 4"}},
+    {"SweepUnknownKey", "sweep {file} --quiet", Sweep("mode: grid", "@mdoe: grid"), 2, {"mdoe ({at}): unknown key"}},
+    {"SweepModeUnknown", "sweep {file} --quiet", Sweep("mode: grid", "mode: @spiral"), 2,
+     {"mode = spiral ({at}): must be grid, zip or random"}},
+    {"SweepCountZero", "sweep {file} --quiet", Sweep("count: 3", "count: @0"), 2,
+     {"parameters.model.velocity.n.count = 0 ({at}): must be >= 1"}},
+    {"SweepPointInvalid", "sweep {file} --quiet", Sweep("[0.1, 0.2]", "@[0.1, -0.2]"), 2,
+     {"{at}: point 3 (actuator.mass=-0.2, model.velocity.n=2) is not a valid scenario: actuator.mass = -0.2 (--set)"}},
+    {"SweepJobsZero", "sweep {file} --jobs 0", Sweep("mode: grid", "mode: grid"), 2, {"--jobs 0: must be an integer from 1 to 4096"}},
+    {"SweepFlagWithValue", "sweep {file} --resume=no", Sweep("mode: grid", "mode: grid"), 2,
+     {"--resume=no: --resume is a flag and takes no value"}},
+    // --- plot ---------------------------------------------------------------------------------
+    {"PlotNoOutput", "plot {file}", "t,length\n0,0.1\n", 2, {"-o PATH (a .png or .svg file) is required"}, "csv"},
+    {"PlotSizeMalformed", "plot {file} -o {dir}/x.png --size 10", "t,length\n0,0.1\n", 2,
+     {"--size 10: expected WIDTHxHEIGHT"}, "csv"},
+    {"PlotCurvesScenarioTypo", "plot --curves {file} -o {dir}/x.png", Scenario("{mass: 0.1,", "{@mas: 0.1,"), 2,
+     {"actuator.mas ({at}): unknown key"}},
+    {"PlotCsvIsADirectory", "plot {dir} -o {dir}/x.png", "", 2, {"is a directory; give a CSV file"}},
+    {"PlotUnknownOption", "plot {file} -o {dir}/x.png --quiet", "t,length\n0,0.1\n", 2, {"unknown option --quiet"}, "csv"},
+    // --- the program --------------------------------------------------------------------------
+    {"UnknownVerb", "dance", "", 2, {"unknown verb 'dance'"}},
+};
+// clang-format on
+
+struct Outcome {
+  int exit_code;
+  std::string err;
+};
+
+// Runs the built program with `arguments` from a shell, standard output discarded.
+Outcome RunCli(const std::string& arguments, const std::string& err_path) {
+  const std::string command =
+      std::string(MUSCLESIM_BINARY) + " " + arguments + " >/dev/null 2>" + err_path;
+  const int status = std::system(command.c_str());
+  std::ifstream err_file(err_path);
+  std::stringstream err;
+  err << err_file.rdbuf();
+  return {WEXITSTATUS(status), err.str()};
+}
+
+std::string ReplaceAll(std::string text, const std::string& from, const std::string& to) {
+  for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+    text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
+// "line:column" (1-based) of byte `offset` in `text`.
+std::string LineColumn(const std::string& text, std::size_t offset) {
+  std::size_t line = 1, line_start = 0;
+  for (std::size_t i = 0; i < offset; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      line_start = i + 1;
+    }
+  }
+  return std::to_string(line) + ":" + std::to_string(offset - line_start + 1);
+}
+
+// The data files of the identify cases, beside the case's file.
+void WriteIdentifyData(const std::string& dir) {
+  std::ofstream(dir + "/passive.csv") << "length,tension\n0.10,0\n0.11,0.5\n0.12,1.5\n0.13,4\n0.14,10\n";
+  std::ofstream(dir + "/active.csv")
+      << "length,tension\n0.08,5\n0.085,20\n0.09,60\n0.095,95\n0.1,100\n0.105,95\n0.11,60\n"
+         "0.115,20\n0.12,5\n";
+  std::ofstream(dir + "/velocity.csv")
+      << "shortening_velocity,tension\n0,100\n0.2,60\n0.4,35\n0.6,18\n0.8,7\n1.0,0\n";
+  std::ofstream(dir + "/zero.csv") << "length,tension\n0.1,0\n0.2,0\n0.3,0\n0.4,0\n";
+  std::ofstream(dir + "/one_positive.csv") << "length,tension\n0.1,0\n0.2,0\n0.3,0\n0.4,5\n";
+  std::ofstream(dir + "/text.csv") << "shortening_velocity,tension\n0,100\n0.5,heavy\n1,0\n";
+  std::filesystem::create_directories(dir + "/sub");
+}
+
+class BadInput : public ::testing::TestWithParam<Case> {};
+
+TEST_P(BadInput, ExitsWithTheCodeAndNamesKeyPlaceAndRule) {
+  const Case& c = GetParam();
+  // a directory per case: ctest runs the cases in parallel processes
+  const std::string dir = ::testing::TempDir() + "bad_input_" + c.name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string path = dir + "/case." + c.extension;
+  std::string at = "(no @ in the case's file)";
+  if (!c.file.empty()) {
+    std::string text = c.file;
+    if (const auto marker = text.find('@'); marker != std::string::npos) {
+      text.erase(marker, 1);
+      at = path + ":" + LineColumn(text, marker);
+    }
+    std::ofstream(path) << text;
+  }
+  WriteIdentifyData(dir);
+  std::ofstream(dir + "/base.yaml") << Scenario();
+
+  const std::string command = ReplaceAll(ReplaceAll(c.command, "{file}", path), "{dir}", dir);
+  const Outcome r = RunCli(command, dir + "/stderr.txt");
+  EXPECT_EQ(r.exit_code, c.exit_code) << command << "\n" << r.err;
+  for (const std::string& needle : c.needles) {
+    const std::string expected =
+        ReplaceAll(ReplaceAll(ReplaceAll(needle, "{at}", at), "{file}", path), "{dir}", dir);
+    EXPECT_THAT(r.err, HasSubstr(expected)) << command;
+  }
+  // one line: `main` prints one clear line
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryReaderAndVerb, BadInput, ::testing::ValuesIn(kCases),
+                         [](const ::testing::TestParamInfo<Case>& param) { return param.param.name; });
+
+TEST(BadInputTable, CoversEnoughCases) {
+  // the table is the list of every input error the program promises; it only grows
+  EXPECT_GE(kCases.size(), 80u);
+}
+
+}  // namespace
+}  // namespace musclesim
