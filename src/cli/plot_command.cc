@@ -26,6 +26,8 @@ stacked panels, concentric, eccentric and isometric intervals shaded. Curves: pa
 and total tension against length (L_opt shaded, each Gaussian thin) and g(v). A sweep: METRIC
 (default the first) against the swept path PATH, a line per value of --color; without
 --color and with two swept paths, a heat map. Failed rows are left out.
+Text is drawn as written (no gnuplot markup); titles, file names and the CSV's column names
+must be UTF-8 without control characters, and plotted cells finite numbers.
 Needs gnuplot (Debian package gnuplot-nox; scripts/install-deps.sh installs it).
 )";
 

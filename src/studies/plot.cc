@@ -1,18 +1,24 @@
 #include "musclesim/studies/plot.h"
 
+#include <fcntl.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <sstream>
 
 #include "musclesim/errors.h"
-#include "musclesim/io/output_file.h"
+
+extern char** environ;
 
 namespace musclesim {
 
@@ -22,18 +28,93 @@ bool EndsWith(const std::string& text, const std::string& end) {
   return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
 }
 
-// A gnuplot string literal: single quotes, with '' for a quote inside.
-std::string Quoted(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) out += c == '\'' ? std::string("''") : std::string(1, c);
-  return out + "'";
+bool IsControl(unsigned char byte) { return byte < 0x20 || byte == 0x7f; }
+
+// Offset of the first byte that does not start a well-formed UTF-8 sequence (RFC 3629: no
+// overlong forms, no surrogates, nothing above U+10FFFF), or npos.
+std::size_t FirstInvalidUtf8(const std::string& text) {
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+  for (std::size_t i = 0; i < text.size();) {
+    const unsigned char lead = byte(i);
+    std::size_t length = 1;
+    unsigned char lo = 0x80, hi = 0xbf;  // the range allowed for the second byte
+    if (lead < 0x80) {
+      ++i;
+      continue;
+    } else if (lead >= 0xc2 && lead <= 0xdf) {
+      length = 2;
+    } else if (lead >= 0xe0 && lead <= 0xef) {
+      length = 3;
+      if (lead == 0xe0) lo = 0xa0;  // overlong
+      if (lead == 0xed) hi = 0x9f;  // surrogates
+    } else if (lead >= 0xf0 && lead <= 0xf4) {
+      length = 4;
+      if (lead == 0xf0) lo = 0x90;  // overlong
+      if (lead == 0xf4) hi = 0x8f;  // above U+10FFFF
+    } else {
+      return i;
+    }
+    if (i + length > text.size()) return i;
+    for (std::size_t k = 1; k < length; ++k) {
+      const unsigned char next = byte(i + k);
+      if (next < (k == 1 ? lo : 0x80) || next > (k == 1 ? hi : 0xbf)) return i;
+    }
+    i += length;
+  }
+  return std::string::npos;
+}
+
+std::string Hex(unsigned char byte) {
+  char text[8];
+  std::snprintf(text, sizeof text, "0x%02x", byte);
+  return text;
+}
+
+// Text echoed in a message: control bytes (and every non-ASCII byte of invalid UTF-8) as
+// \xNN, so that an error never sends a terminal escape; cut after 80 bytes.
+std::string Printable(const std::string& text) {
+  const bool utf8 = FirstInvalidUtf8(text) == std::string::npos;
+  std::string out;
+  std::size_t i = 0;
+  for (; i < text.size() && i < 80; ++i) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    if (IsControl(byte) || (!utf8 && byte >= 0x80)) {
+      out += "\\x" + Hex(byte).substr(2);
+    } else {
+      out += text[i];
+    }
+  }
+  // finish a multi-byte character the cut fell into
+  while (utf8 && i < text.size() && (static_cast<unsigned char>(text[i]) & 0xc0) == 0x80) {
+    out += text[i++];
+  }
+  return i < text.size() ? out + "..." : out;
 }
 
 // Plot data in the shortest exact form, as messages print numbers.
 std::string Number(double value) { return FormatNumber(value); }
 
-// What every figure shares.
-constexpr const char* kFrame = "set encoding utf8\nset grid lc rgb '#dddddd'\n";
+// The cell as a plotted number: gnuplot would draw NaN and infinity as gaps or clip them
+// without a word, so they are errors here.
+double FiniteValue(const CsvTable& table, std::size_t row, int column) {
+  const std::string& text = table.rows[row][static_cast<std::size_t>(column)];
+  const std::string where = table.source + ":" + std::to_string(table.lines[row]) + ": column " +
+                            Printable(table.header[static_cast<std::size_t>(column)]) + " = '" +
+                            Printable(text) + "'";
+  const auto control = [](char c) { return IsControl(static_cast<unsigned char>(c)); };
+  if (std::any_of(text.begin(), text.end(), control)) {
+    throw InputError(where + ": must be a number");
+  }
+  const double value = table.Number(row, column);
+  if (!std::isfinite(value)) throw InputError(where + ": must be a finite number");
+  return value;
+}
+
+// What every figure shares. Text is drawn as written: enhanced-text markup (^ _ @ & { })
+// is off here as well as in Render's terminal, so a script saved with --script and run
+// under another terminal draws user text literally too.
+constexpr const char* kFrame =
+    "set encoding utf8\nset termoption noenhanced\nset grid lc rgb '#dddddd'\n";
 
 // A wide axis of positive values reads better on a log scale.
 bool WantsLogScale(const std::vector<double>& values) {
@@ -42,13 +123,41 @@ bool WantsLogScale(const std::vector<double>& values) {
   return *lo > 0.0 && *hi / *lo >= 100.0;
 }
 
-std::string TitleOf(const PlotOptions& options, const std::string& fallback) {
-  return Quoted(options.title.empty() ? fallback : options.title);
+std::string TitleOf(const PlotOptions& options, const std::string& fallback,
+                    const std::string& fallback_source) {
+  return options.title.empty() ? GnuplotString(fallback, fallback_source)
+                               : GnuplotString(options.title, "--title");
 }
 
 }  // namespace
 
+std::string GnuplotString(const std::string& text, const std::string& what) {
+  const auto control = std::find_if(text.begin(), text.end(), [](char c) {
+    return IsControl(static_cast<unsigned char>(c));
+  });
+  if (control != text.end()) {
+    throw InputError(what + " '" + Printable(text) +
+                     "': must not contain control characters (bytes below 0x20, and 0x7f); byte " +
+                     Hex(static_cast<unsigned char>(*control)) + " at offset " +
+                     std::to_string(control - text.begin()));
+  }
+  if (const std::size_t bad = FirstInvalidUtf8(text); bad != std::string::npos) {
+    throw InputError(what + " '" + Printable(text) + "': must be valid UTF-8; byte " +
+                     Hex(static_cast<unsigned char>(text[bad])) + " at offset " +
+                     std::to_string(bad) + " starts no UTF-8 character");
+  }
+  // gnuplot 5.4's own '' escape fails at the start of a string and for two quotes in a row
+  // (its scanner ends the string there), so each quote is sprintf's %c of 39 between quoted
+  // pieces; a quote inside double quotes would mislead its macro expander about where the
+  // single-quoted text is, so the pieces only ever sit between single quotes
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("'.sprintf(\"%c\",39).'") : std::string(1, c);
+  return out + "'";
+}
+
 void Validate(const PlotOptions& options) {
+  GnuplotString(options.output, "-o");
+  if (!options.title.empty()) GnuplotString(options.title, "--title");
   if (!EndsWith(options.output, ".png") && !EndsWith(options.output, ".svg")) {
     throw InputError("-o " + options.output + ": the figure's file must end in .png or .svg");
   }
@@ -74,7 +183,7 @@ std::string TrajectoryPlotScript(const CsvTable& table, const PlotOptions& optio
   s << "$trajectory << EOD\n";
   for (std::size_t r = 0; r < table.rows.size(); ++r) {
     for (std::size_t c = 0; c < columns.size(); ++c) {
-      s << (c ? " " : "") << Number(table.Number(r, columns[c]));
+      s << (c ? " " : "") << Number(FiniteValue(table, r, columns[c]));
     }
     s << "\n";
   }
@@ -88,8 +197,8 @@ std::string TrajectoryPlotScript(const CsvTable& table, const PlotOptions& optio
     const std::string& label = table.rows[r][static_cast<std::size_t>(phase)];
     std::size_t end = r + 1;
     while (end < table.rows.size() && table.rows[end][static_cast<std::size_t>(phase)] == label) ++end;
-    const double t0 = table.Number(r, columns[0]);
-    const double t1 = table.Number(end < table.rows.size() ? end : end - 1, columns[0]);
+    const double t0 = FiniteValue(table, r, columns[0]);
+    const double t1 = FiniteValue(table, end < table.rows.size() ? end : end - 1, columns[0]);
     const auto color = shade.find(label);
     if (color != shade.end() && t1 > t0) {
       s << "set object " << object++ << " rect from first " << Number(t0) << ", graph 0 to first "
@@ -98,7 +207,8 @@ std::string TrajectoryPlotScript(const CsvTable& table, const PlotOptions& optio
     r = end;
   }
 
-  s << "set multiplot layout 4,1 title " << TitleOf(options, table.source) << "\n"
+  s << "set multiplot layout 4,1 title "
+    << TitleOf(options, table.source, "the CSV file's name (the default title)") << "\n"
     << "set lmargin 12\nset rmargin 22\nset key outside right top\nset format x ''\n"
     << "set ylabel 'length [m]'\n"
     << "plot $trajectory using 1:2 with lines lw 2 lc rgb '#000000' title 'length', \\\n"
@@ -155,7 +265,8 @@ std::string CurvesPlotScript(const TensionModel& model, const PlotOptions& optio
   }
   s << "EOD\n";
 
-  s << "set multiplot layout 1,2 title " << TitleOf(options, "model curves") << "\n"
+  s << "set multiplot layout 1,2 title "
+    << TitleOf(options, "model curves", "the default title") << "\n"
     << "set key top left\nset autoscale xfix\nset xlabel 'length [m]'\nset ylabel 'tension [N]'\n"
     << "set yrange [" << Number(1.1 * lowest) << ":" << Number(1.6 * p.f_iso) << "]\n"
     << "set object 1 rect from first " << Number(a.optimal_min) << ", graph 0 to first "
@@ -180,60 +291,129 @@ std::string CurvesPlotScript(const TensionModel& model, const PlotOptions& optio
   return s.str();
 }
 
+namespace {
+
+constexpr const char* kSummaryLayout =
+    "a summary CSV of musclesim sweep has the columns index, the swept paths, status, the "
+    "metrics, steps, rhs_evals, wall_seconds, message";
+
+// Where the parts of a sweep summary are; throws InputError naming what is missing or out of
+// place when the header is not a summary's.
+struct SummaryColumns {
+  int status = -1;                   // index of the status column [-]
+  int message = -1;                  // index of the message column, the last [-]
+  std::vector<std::string> swept;    // the swept paths, in column order [-]
+  std::vector<std::string> metrics;  // the metrics, in column order [-]
+};
+
+SummaryColumns FindSummaryColumns(const CsvTable& table) {
+  table.Require({"index", "status", "steps", "rhs_evals", "wall_seconds", "message"},
+                kSummaryLayout);
+  const std::vector<std::string>& h = table.header;
+  const std::size_t n = h.size();
+  SummaryColumns c;
+  c.status = table.Find("status");
+  c.message = static_cast<int>(n) - 1;
+  std::string problem;
+  if (h[0] != "index") {
+    problem = "index is not the first column";
+  } else if (c.status < 2) {
+    problem = "no swept path between index and status";
+  } else if (h[n - 4] != "steps" || h[n - 3] != "rhs_evals" || h[n - 2] != "wall_seconds" ||
+             h[n - 1] != "message" || c.status > static_cast<int>(n) - 5) {
+    problem = "steps, rhs_evals, wall_seconds, message are not the last columns, after status";
+  }
+  if (!problem.empty()) {
+    throw InputError(table.source + ": " + problem + " (" + kSummaryLayout + ")");
+  }
+  c.swept.assign(h.begin() + 1, h.begin() + c.status);
+  c.metrics.assign(h.begin() + c.status + 1, h.end() - 4);
+  return c;
+}
+
+std::string List(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& name : names) out += (out.empty() ? "" : ", ") + Printable(name);
+  return out.empty() ? "none" : out;
+}
+
+}  // namespace
+
 std::string SweepPlotScript(const CsvTable& table, const std::string& x,
                             const std::optional<std::string>& y,
                             const std::optional<std::string>& color, const PlotOptions& options) {
-  table.Require({"index", "status", "steps"}, "a summary CSV of musclesim sweep");
-  const int status = table.Find("status"), steps = table.Find("steps");
-  std::vector<std::string> swept(table.header.begin() + 1, table.header.begin() + status);
-  std::vector<std::string> metrics(table.header.begin() + status + 1, table.header.begin() + steps);
-  std::string swept_list;
-  for (const std::string& path : swept) swept_list += (swept_list.empty() ? "" : ", ") + path;
+  const SummaryColumns summary = FindSummaryColumns(table);
+  const std::vector<std::string>& swept = summary.swept;
+  const int status = summary.status;
   const auto is_swept = [&](const std::string& path) {
     return std::find(swept.begin(), swept.end(), path) != swept.end();
   };
   if (!is_swept(x)) {
-    throw InputError("--x " + x + ": not a swept path of " + table.source + " (it sweeps " +
-                     swept_list + ")");
+    throw InputError("--x " + Printable(x) + ": not a swept path of " + table.source +
+                     " (it sweeps " + List(swept) + ")");
   }
   if (color && (!is_swept(*color) || *color == x)) {
-    throw InputError("--color " + *color + ": must be a swept path other than --x (" +
-                     table.source + " sweeps " + swept_list + ")");
+    throw InputError("--color " + Printable(*color) + ": must be a swept path other than --x (" +
+                     table.source + " sweeps " + List(swept) + ")");
   }
-  const std::string y_name = y ? *y : (metrics.empty() ? "steps" : metrics.front());
+  const std::string y_name = y ? *y : (summary.metrics.empty() ? "steps" : summary.metrics.front());
   const int y_column = table.Find(y_name);
-  if (y_column < 0 || y_column <= status) {
-    throw InputError("--y " + y_name + ": not a metric of " + table.source);
+  // a metric, or one of the run's counts (steps, rhs_evals, wall_seconds)
+  if (y_column <= status || y_column >= summary.message) {
+    throw InputError("--y " + Printable(y_name) + ": not a metric of " + table.source +
+                     " (its metrics: " + List(summary.metrics) +
+                     "; also steps, rhs_evals, wall_seconds)");
   }
   const int x_column = table.Find(x);
   std::optional<std::string> other = color;
   const bool heat_map = !color && swept.size() == 2;
   if (heat_map) other = swept[0] == x ? swept[1] : swept[0];
   const int other_column = other ? table.Find(*other) : -1;
+  // every column name that reaches the script, checked before any row
+  const std::string x_text = GnuplotString(x, "--x");
+  const std::string y_text =
+      GnuplotString(y_name, y ? "--y" : table.source + ": the first metric's name");
+  const std::string other_text =
+      other ? GnuplotString(*other, color ? "--color" : table.source + ": the other swept path")
+            : "";
 
   // the usable rows: status ok and a value for y
-  std::map<std::string, std::vector<std::pair<double, double>>> groups;  // other value -> points
+  struct Group {
+    std::string title;                             // gnuplot string of the legend entry [-]
+    std::vector<std::pair<double, double>> points;  // (x, y) in the CSV's units
+  };
+  std::map<std::string, Group> groups;  // by the value of `other` as written in the CSV
   std::vector<double> xs, others;
   std::vector<std::tuple<double, double, double>> cells;
   for (std::size_t r = 0; r < table.rows.size(); ++r) {
     if (table.rows[r][static_cast<std::size_t>(status)] != "ok") continue;
     if (table.rows[r][static_cast<std::size_t>(y_column)].empty()) continue;
-    const double xv = table.Number(r, x_column), yv = table.Number(r, y_column);
+    const double xv = FiniteValue(table, r, x_column), yv = FiniteValue(table, r, y_column);
     xs.push_back(xv);
     if (heat_map) {
-      const double ov = table.Number(r, other_column);
+      const double ov = FiniteValue(table, r, other_column);
       others.push_back(ov);
       cells.emplace_back(xv, ov, yv);
-    } else {
-      groups[other ? table.rows[r][static_cast<std::size_t>(other_column)] : ""].emplace_back(xv, yv);
+      continue;
     }
+    const std::string label = other ? table.rows[r][static_cast<std::size_t>(other_column)] : "";
+    Group& group = groups[label];
+    if (group.title.empty()) {
+      group.title = other ? GnuplotString(*other + " = " + label,
+                                          table.source + ":" + std::to_string(table.lines[r]) +
+                                              ": the legend entry")
+                          : y_text;
+    }
+    group.points.emplace_back(xv, yv);
   }
-  if (xs.empty()) throw InputError(table.source + ": no successful row with a value of " + y_name);
+  if (xs.empty()) {
+    throw InputError(table.source + ": no successful row with a value of " + Printable(y_name));
+  }
 
   std::ostringstream s;
   s << kFrame;
-  s << "set title " << TitleOf(options, y_name + " against " + x) << "\n"
-    << "set xlabel " << Quoted(x) << "\n";
+  s << "set title " << TitleOf(options, y_name + " against " + x, "the default title") << "\n"
+    << "set xlabel " << x_text << "\n";
   if (WantsLogScale(xs)) s << "set logscale x\nset format x '%g'\n";
 
   if (heat_map) {
@@ -262,7 +442,7 @@ std::string SweepPlotScript(const CsvTable& table, const std::string& x,
     const auto x_cells = bounds(xs, log_x), y_cells = bounds(others, log_y);
     if (log_y) s << "set logscale y\nset format y '%g'\n";
     s << "set autoscale xfix\nset autoscale yfix\n";
-    s << "set ylabel " << Quoted(*other) << "\nset cblabel " << Quoted(y_name) << "\n"
+    s << "set ylabel " << other_text << "\nset cblabel " << y_text << "\n"
       << "set palette rgb 33,13,10\nset key off\n$cells << EOD\n";
     for (const auto& [xv, ov, yv] : cells) {
       const auto [x0, x1] = x_cells.at(xv);
@@ -272,21 +452,22 @@ std::string SweepPlotScript(const CsvTable& table, const std::string& x,
     }
     s << "EOD\n"
       << "plot $cells using 1:2:3:4:5:6:7 with boxxyerror fs solid 1.0 noborder lc palette title "
-      << Quoted(y_name) << "\n";
+      << y_text << "\n";
     return s.str();
   }
 
-  s << "set ylabel " << Quoted(y_name) << "\nset key outside right top\nset autoscale xfix\n";
+  s << "set ylabel " << y_text << "\nset key outside right top\nset autoscale xfix\n";
   std::ostringstream plots;
   int block = 0;
-  for (auto& [label, points] : groups) {
+  for (auto& entry : groups) {
+    Group& group = entry.second;
+    std::vector<std::pair<double, double>>& points = group.points;
     std::sort(points.begin(), points.end());
     s << "$group" << block << " << EOD\n";
     for (const auto& [xv, yv] : points) s << Number(xv) << " " << Number(yv) << "\n";
     s << "EOD\n";
     plots << (block ? ", \\\n  " : "plot ") << "$group" << block
-          << " using 1:2 with linespoints lw 2 pt 7 title "
-          << Quoted(other ? *other + " = " + label : y_name);
+          << " using 1:2 with linespoints lw 2 pt 7 title " << group.title;
     ++block;
   }
   s << plots.str() << "\n";
@@ -295,55 +476,130 @@ std::string SweepPlotScript(const CsvTable& table, const std::string& x,
 
 namespace {
 
-bool OnPath(const std::string& program) {
-  const char* path = std::getenv("PATH");
-  std::istringstream dirs(path != nullptr ? path : "");
-  for (std::string dir; std::getline(dirs, dir, ':');) {
-    if (!dir.empty() && ::access((dir + "/" + program).c_str(), X_OK) == 0) return true;
+// A file removed when this goes out of scope unless kept, so that no temporary file
+// outlives a failure, whichever way the failure leaves.
+class TemporaryFile {
+ public:
+  explicit TemporaryFile(std::string path) : path_(std::move(path)) {}
+  ~TemporaryFile() {
+    if (kept_) return;
+    std::error_code ignored;
+    std::filesystem::remove(path_, ignored);
   }
-  return false;
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+
+  const std::string& path() const { return path_; }
+  void Keep() { kept_ = true; }
+
+ private:
+  std::string path_;
+  bool kept_ = false;
+};
+
+// The script in a new file of the system's temporary folder.
+std::unique_ptr<TemporaryFile> WriteScript(const std::string& script) {
+  std::string name =
+      (std::filesystem::temp_directory_path() / "musclesim_plot_XXXXXX.gp").string();
+  const int fd = ::mkstemps(name.data(), 3);
+  if (fd < 0) {
+    throw std::runtime_error(name + ": cannot create the gnuplot script (" +
+                             std::strerror(errno) + ")");
+  }
+  auto file = std::make_unique<TemporaryFile>(name);
+  std::size_t written = 0;
+  while (written < script.size()) {
+    const ssize_t n = ::write(fd, script.data() + written, script.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const std::string reason = std::strerror(errno);
+      ::close(fd);
+      throw std::runtime_error(name + ": cannot write the gnuplot script (" + reason + ")");
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  ::close(fd);
+  return file;
+}
+
+// Runs `gnuplot script_path` (no shell between: no name is ever parsed as a command) with
+// standard input from /dev/null; returns whether it exited with 0, and what it printed.
+bool RunGnuplot(const std::string& script_path, std::string& messages) {
+  int out[2];
+  if (::pipe2(out, O_CLOEXEC) != 0) {
+    throw std::runtime_error(std::string("cannot start gnuplot (") + std::strerror(errno) + ")");
+  }
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_adddup2(&actions, out[1], 1);
+  posix_spawn_file_actions_adddup2(&actions, out[1], 2);
+  std::string program = "gnuplot", script = script_path;
+  char* argv[] = {program.data(), script.data(), nullptr};
+  pid_t pid = 0;
+  const int spawned = ::posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(out[1]);
+  if (spawned != 0) {
+    ::close(out[0]);
+    if (spawned == ENOENT) {
+      throw std::runtime_error(
+          "gnuplot is not installed (or not on PATH): install the Debian package gnuplot-nox "
+          "(scripts/install-deps.sh does)");
+    }
+    throw std::runtime_error(std::string("cannot start gnuplot (") + std::strerror(spawned) + ")");
+  }
+  char buffer[4096];
+  for (;;) {
+    const ssize_t n = ::read(out[0], buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    messages.append(buffer, static_cast<std::size_t>(n));
+  }
+  ::close(out[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
 }  // namespace
 
 void Render(const std::string& script, const PlotOptions& options) {
   Validate(options);
-  if (!OnPath("gnuplot")) {
-    throw std::runtime_error(
-        "gnuplot is not installed (or not on PATH): install the Debian package gnuplot-nox "
-        "(scripts/install-deps.sh does)");
+  const bool svg = EndsWith(options.output, ".svg");
+  const std::filesystem::path folder = std::filesystem::path(options.output).parent_path();
+  if (!folder.empty() && !std::filesystem::is_directory(folder)) {
+    throw std::runtime_error(options.output + ": cannot write the figure (no folder " +
+                             folder.string() + ")");
   }
-  const std::string temporary = options.output + ".tmp." + std::to_string(::getpid()) +
-                                (EndsWith(options.output, ".svg") ? ".svg" : ".png");
+  // the figure goes beside its target, so that the rename is atomic; a relative name starts
+  // with ./ because gnuplot's `set output` reads '|command' as a pipe and '~' as $HOME
+  std::string figure_path =
+      options.output + ".tmp." + std::to_string(::getpid()) + (svg ? ".svg" : ".png");
+  if (std::filesystem::path(options.output).is_relative()) figure_path = "./" + figure_path;
+  TemporaryFile figure(figure_path);
   const std::string terminal =
-      EndsWith(options.output, ".svg")
-          ? "set terminal svg size " + std::to_string(options.width) + "," +
+      svg ? "set terminal svg size " + std::to_string(options.width) + "," +
                 std::to_string(options.height) + " noenhanced font 'sans,12' background '#ffffff'\n"
           : "set terminal pngcairo size " + std::to_string(options.width) + "," +
                 std::to_string(options.height) + " noenhanced font 'sans,10'\n";
-  const std::string full = terminal + "set output " + Quoted(temporary) + "\n" + script +
-                           "unset output\n";
+  const auto script_file = WriteScript(terminal + "set output " +
+                                       GnuplotString(figure.path(), "-o") + "\n" + script +
+                                       "unset output\n");
 
-  char script_path[] = "/tmp/musclesim_plot_XXXXXX";
-  const int fd = ::mkstemp(script_path);
-  if (fd < 0) throw std::runtime_error("cannot create a temporary gnuplot script");
-  if (::write(fd, full.data(), full.size()) != static_cast<ssize_t>(full.size())) {
-    ::close(fd);
-    ::unlink(script_path);
-    throw std::runtime_error("cannot write the temporary gnuplot script");
-  }
-  ::close(fd);
-  FILE* pipe = ::popen(("gnuplot " + std::string(script_path) + " 2>&1").c_str(), "r");
   std::string messages;
-  char buffer[512];
-  while (pipe != nullptr && std::fgets(buffer, sizeof buffer, pipe) != nullptr) messages += buffer;
-  const int status = pipe != nullptr ? ::pclose(pipe) : -1;
-  ::unlink(script_path);
-  if (status != 0 || !std::filesystem::exists(temporary)) {
-    std::filesystem::remove(temporary);
+  const bool ran = RunGnuplot(script_file->path(), messages);
+  std::error_code error;
+  if (!ran || std::filesystem::file_size(figure.path(), error) == 0 || error) {
     throw std::runtime_error("gnuplot failed: " + messages);
   }
-  std::filesystem::rename(temporary, options.output);
+  std::filesystem::rename(figure.path(), options.output, error);
+  if (error) {
+    throw std::runtime_error(options.output + ": cannot replace the file (" + error.message() +
+                             ")");
+  }
+  figure.Keep();
 }
 
 }  // namespace musclesim

@@ -1,6 +1,11 @@
 // Figures drawn by gnuplot (Debian's gnuplot-nox): musclesim writes a gnuplot script with
 // the data inline and runs gnuplot on it. The script builders are pure functions, so what
 // a figure contains can be checked as text; Render runs gnuplot.
+//
+// Titles, labels, column names and file names come from the user and from CSV files, and a
+// gnuplot script is a program: every such string enters the script only through
+// GnuplotString, every number only as a finite number, and text is drawn literally
+// (enhanced-text markup such as ^{} and @ is switched off).
 #pragma once
 
 #include <optional>
@@ -18,13 +23,23 @@ struct PlotOptions {
   std::string title;    // text; empty: a title made from the input
 };
 
-// Throws InputError unless `output` ends in .png or .svg and the size is 100..10000 px.
+// `text` as a gnuplot string expression: pieces in single quotes, inside which gnuplot
+// interprets nothing (no backslash escapes, no `command` substitution, no @macros), each
+// quote of the text joined in as sprintf("%c",39): "it's" is 'it'.sprintf("%c",39).'s'.
+// Throws InputError naming `what` (the flag, file or column the text came from) when the
+// text holds a control character (a byte below 0x20, or 0x7f: a newline would end the
+// command, and no quoting carries it) or is not valid UTF-8 (an SVG must be).
+std::string GnuplotString(const std::string& text, const std::string& what);
+
+// Throws InputError unless `output` ends in .png or .svg, the size is 100..10000 px and
+// `output` and `title` pass GnuplotString's rules.
 void Validate(const PlotOptions& options);
 
 // A trajectory CSV of `musclesim run`: length, shortening velocity, activation and the
 // tensions (with the load) against time in stacked panels sharing the time axis, with the
-// concentric, eccentric and isometric intervals shaded. Throws InputError naming missing
-// columns.
+// concentric, eccentric and isometric intervals shaded; the title defaults to the file's
+// name. Throws InputError naming missing columns, a table without rows, or the row and column
+// of a cell that is not a finite number.
 std::string TrajectoryPlotScript(const CsvTable& trajectory, const PlotOptions& options);
 
 // The model's curves (the paper's Figures 1, 3 and 5): passive, active (u = 1, v = 0) and
@@ -32,16 +47,21 @@ std::string TrajectoryPlotScript(const CsvTable& trajectory, const PlotOptions& 
 // and g(v) against shortening velocity.
 std::string CurvesPlotScript(const TensionModel& model, const PlotOptions& options);
 
-// A sweep summary: `y` (a metric; default the first) against the swept path `x`, a line per
-// value of the swept path `color`; without `color`, a heat map over `x` and the other swept
-// path when there are exactly two. Failed rows are left out.
+// A sweep summary (columns index, the swept paths, status, the metrics, steps, rhs_evals,
+// wall_seconds, message): `y` (a metric; default the first) against the swept path `x`, a
+// line per value of the swept path `color`; without `color`, a heat map over `x` and the
+// other swept path when there are exactly two. Failed rows and empty metrics are left out.
+// Throws InputError for another layout (naming the missing columns), an unknown path or
+// metric, a plotted cell that is not a finite number, or no row left to plot.
 std::string SweepPlotScript(const CsvTable& summary, const std::string& x,
                             const std::optional<std::string>& y,
                             const std::optional<std::string>& color, const PlotOptions& options);
 
-// Runs gnuplot on `script`, whose output goes to a temporary file renamed to
-// options.output when gnuplot succeeds. Throws std::runtime_error naming the Debian
-// package when gnuplot is missing, and gnuplot's own message when it fails.
+// Runs gnuplot on `script`, whose output goes to a temporary file beside options.output,
+// renamed over it only when gnuplot succeeds: a failure leaves an earlier figure as it was
+// and no temporary file behind. Throws InputError as Validate does, std::runtime_error
+// naming the Debian package when gnuplot is missing, and gnuplot's own message when it
+// fails.
 void Render(const std::string& script, const PlotOptions& options);
 
 }  // namespace musclesim
