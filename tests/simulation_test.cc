@@ -8,11 +8,13 @@
 #include <thread>
 
 #include "musclesim/errors.h"
+#include "support/canonical_actuator.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {
 namespace {
 
+using testing::Experiment;
 using testing::Outcome;
 using testing::ScenarioPath;
 using testing::Simulate;
@@ -20,22 +22,29 @@ using ::testing::HasSubstr;
 
 // A model whose f_L is almost flat over the motion (one Gaussian 1 m wide) and with no
 // passive tension, so that an isotonic run reaches a true steady velocity.
-std::string FlatModelScenario(double load, double mass) {
-  return R"(model:
-  f_iso: 100.0
-  passive: {k_p: 0.0, alpha: 100.0, slack_length: 0.105}
-  active_length:
-    optimal_range: [0.095, 0.105]
-    gaussians: [{amplitude: 1.0, width: 1.0, center: 0.1}]
-  velocity: {v_max: 1.0, n: 3, epsilon: 1.0e-3}
-actuator: {mass: )" + std::to_string(mass) + R"(}
-initial: {length: 0.1}
-activation: {type: constant, value: 1.0}
-load: {type: constant, value: )" + std::to_string(load) + R"(}
-time: {start: 0.0, end: 0.2}
-solver: {rtol: 1.0e-10, atol: 1.0e-13}
-output: {interval: 0.001}
-)";
+ModelParams FlatModel() {
+  ModelParams p;
+  p.f_iso = 100.0;
+  p.passive = {0.0, 100.0, 0.105};
+  p.active_length = {0.095, 0.105, 1.0, {{1.0, 1.0, 0.1}}};
+  p.velocity = {1.0, 3, 1e-3};
+  return p;
+}
+
+// The flat model, fully active, mass 0.01 kg, under a constant `load` from rest at
+// `length`, for 0.2 s recorded every 1 ms at rtol 1e-10.
+Experiment FlatIsotonic(double load, double length = 0.1) {
+  ActuatorParams actuator;
+  actuator.mass = 0.01;
+  RunRequest request;
+  request.t_end = 0.2;
+  request.length = length;
+  request.output_interval = 1e-3;
+  SolverOptions options;
+  options.rtol = 1e-10;
+  options.atol = 1e-13;
+  return {ActuatorSystem(FlatModel(), actuator, Waveform::Constant(1.0), {Load::Constant(load)}),
+          request, options};
 }
 
 // The shortening velocity at which T(x, v, u) = load: bisection on the model functions,
@@ -50,15 +59,16 @@ double SteadyVelocity(const TensionModel& model, double x, double u, double load
 }
 
 void ExpectSteadyVelocity(double load) {
-  const Outcome run = Simulate(
-      testing::WriteTempFile("steady_" + std::to_string(load) + ".yaml", FlatModelScenario(load, 0.01)));
+  const Experiment experiment = FlatIsotonic(load);
+  const RunResult run = experiment.Run();
   ASSERT_EQ(run.stats.status, RunStatus::kCompleted) << run.stats.message;
-  const TensionModel model(run.spec.model.params);
+  const TensionModel& model = experiment.system.model();
   int checked = 0;
   for (const TrajectoryPoint& p : run.trajectory) {
     if (p.t < 0.05) continue;  // the transient lasts a few m / (dT/dv) ~ 1e-4 s
     const double expected = SteadyVelocity(model, p.sample.length, 1.0, load);
-    // what is left is inertia: m dv/dt / (dT/dv) ~ 1e-7 relative with m = 0.01 kg
+    // what is left is inertia: m dv/dt / (dT/dv) ~ 1e-7 relative with m = 0.01 kg, and the
+    // solver's error at rtol 1e-10; 1e-5 relative leaves a margin of a hundred
     EXPECT_NEAR(p.sample.shortening_velocity, expected, 1e-5 * std::abs(expected)) << p.t;
     ++checked;
   }
@@ -73,6 +83,7 @@ TEST(Simulation, EccentricSteadyVelocitySolvesTheTensionBalance) {
   ExpectSteadyVelocity(130.0);  // g = 1.3: v = -0.027 m/s, lengthening
 }
 
+// The subject here is the canonical scenario file, so it is read from scenarios/.
 TEST(Simulation, IsometricTransducerReadsTheIsometricTension) {
   // run long enough for the transducer to settle (time constant (dT/dv) / k_t = 0.1 s)
   const Outcome run = Simulate(ScenarioPath("isometric.yaml"), {"time.end=3"});
@@ -82,12 +93,19 @@ TEST(Simulation, IsometricTransducerReadsTheIsometricTension) {
   const double transducer = 1.0e5 * (0.1 - x);
   const double isometric = PassiveTension(model.params().passive, x).value +
                            100.0 * model.active_length().Evaluate(x).value;
-  EXPECT_NEAR(transducer, isometric, 1e-6 * isometric);
+  // after 30 time constants the transient is e^-30 of its start, and the solver's error,
+  // decaying towards a stable rest point, leaves 1e-10 relative here: 1e-8 gives a margin
+  // of a hundred, while a wrong T_p or f_L would be per cents off
+  EXPECT_NEAR(transducer, isometric, 1e-8 * isometric);
+  // settled: 1e-12 m/s here; 1e-9 m/s is ten times atol, still at rest
   EXPECT_NEAR(run.trajectory.back().sample.shortening_velocity, 0.0, 1e-9);
+  // README "The canonical scenarios": "holds while the length moves 1 mm" (printed to
+  // the millimetre: within half of one)
+  EXPECT_NEAR(0.1 - x, 1e-3, 0.5e-3);
 }
 
 // Largest difference of length over the common output grid, relative to the length.
-double LengthError(const Outcome& a, const Outcome& b) {
+double LengthError(const RunResult& a, const RunResult& b) {
   EXPECT_EQ(a.trajectory.size(), b.trajectory.size());
   double error = 0.0;
   for (std::size_t i = 0; i < std::min(a.trajectory.size(), b.trajectory.size()); ++i) {
@@ -98,62 +116,79 @@ double LengthError(const Outcome& a, const Outcome& b) {
   return error;
 }
 
+// `experiment` run with other solver settings.
+RunResult RunWith(Experiment experiment, double rtol, double atol,
+                  IntegrationMethod method = IntegrationMethod::kBdf,
+                  JacobianKind jacobian = JacobianKind::kAnalytic) {
+  experiment.options.rtol = rtol;
+  experiment.options.atol = atol;
+  experiment.options.method = method;
+  experiment.options.jacobian = jacobian;
+  return experiment.Run();
+}
+
 TEST(Simulation, ErrorFallsWithTheTolerance) {
-  const std::string path = ScenarioPath("concentric.yaml");
-  const Outcome reference = Simulate(path, {"solver.rtol=1e-11", "solver.atol=1e-14"});
+  const Experiment concentric = testing::Concentric();
+  const RunResult reference = RunWith(concentric, 1e-11, 1e-14);
   double previous = INFINITY;
-  for (const char* rtol : {"1e-4", "1e-6", "1e-8"}) {
-    const double atol = std::stod(rtol) * 1e-3;
-    const Outcome run =
-        Simulate(path, {std::string("solver.rtol=") + rtol, "solver.atol=" + FormatNumber(atol)});
-    const double error = LengthError(run, reference);
+  for (double rtol : {1e-4, 1e-6, 1e-8}) {
+    const double error = LengthError(RunWith(concentric, rtol, 1e-3 * rtol), reference);
     EXPECT_LT(error, previous) << "rtol " << rtol;
-    EXPECT_LT(error, 100 * std::stod(rtol)) << "rtol " << rtol;  // CVODE's global error
+    // CVODE controls the local error; the global error it leaves is a modest multiple of
+    // rtol (0.2 to 0.4 rtol in this run). 100 rtol bounds it with room for other step
+    // sequences; the reference's own error, 2e-11, is below every rtol tried
+    EXPECT_LT(error, 100 * rtol) << "rtol " << rtol;
     previous = error;
   }
 }
 
 TEST(Simulation, BdfAndAdamsAgree) {
-  const std::string path = ScenarioPath("concentric.yaml");
-  const Outcome bdf = Simulate(path, {"solver.rtol=1e-9", "solver.atol=1e-12"});
-  const Outcome adams =
-      Simulate(path, {"solver.method=adams", "solver.rtol=1e-9", "solver.atol=1e-12"});
+  const Experiment concentric = testing::Concentric();
+  const RunResult bdf = RunWith(concentric, 1e-9, 1e-12);
+  const RunResult adams = RunWith(concentric, 1e-9, 1e-12, IntegrationMethod::kAdams);
+  // two methods, each within a modest multiple of rtol = 1e-9 of the truth (3e-9 apart
+  // here); 100 rtol bounds their difference as in ErrorFallsWithTheTolerance
   EXPECT_LT(LengthError(adams, bdf), 1e-7);
 }
 
 TEST(Simulation, AnalyticAndDifferenceQuotientJacobiansGiveOneTrajectory) {
-  for (const char* scenario : {"concentric.yaml", "isometric.yaml"}) {
-    const std::string path = ScenarioPath(scenario);
-    const Outcome analytic = Simulate(path, {"solver.rtol=1e-8", "solver.atol=1e-11"});
-    const Outcome quotient =
-        Simulate(path, {"solver.jacobian=difference_quotient", "solver.rtol=1e-8", "solver.atol=1e-11"});
-    EXPECT_LT(LengthError(analytic, quotient), 1e-6) << scenario;
+  for (const Experiment& experiment : {testing::Concentric(), testing::Isometric()}) {
+    const RunResult analytic = RunWith(experiment, 1e-8, 1e-11);
+    const RunResult quotient =
+        RunWith(experiment, 1e-8, 1e-11, IntegrationMethod::kBdf,
+                JacobianKind::kDifferenceQuotient);
+    // the Jacobian only steers Newton's iteration: both runs meet rtol 1e-8, so they agree
+    // to their global errors (3e-9 and 2e-10 apart here), bounded by 100 rtol = 1e-6
+    EXPECT_LT(LengthError(analytic, quotient), 1e-6);
   }
 }
 
 TEST(Simulation, AnalyticJacobianNeedsFewerRightHandSides) {
   // with two states a difference-quotient Jacobian costs only two extra right-hand sides,
   // and single runs differ by more than that through their step sequences; summed over
-  // a tolerance sweep the analytic Jacobian needs fewer
-  for (const char* scenario : {"concentric.yaml", "eccentric.yaml"}) {
+  // a tolerance sweep the analytic Jacobian needs fewer (README "Step cost")
+  for (const Experiment& experiment : {testing::Concentric(), testing::Eccentric()}) {
     long analytic_total = 0, quotient_total = 0;
-    for (const char* rtol : {"1e-4", "1e-6", "1e-8", "1e-10"}) {
-      const std::vector<std::string> sets = {std::string("solver.rtol=") + rtol,
-                                             "solver.atol=1e-12"};
-      std::vector<std::string> dq = sets;
-      dq.push_back("solver.jacobian=difference_quotient");
-      analytic_total += Simulate(ScenarioPath(scenario), sets).stats.rhs_evals;
-      const Outcome quotient = Simulate(ScenarioPath(scenario), dq);
+    for (double rtol : {1e-4, 1e-6, 1e-8, 1e-10}) {
+      analytic_total += RunWith(experiment, rtol, 1e-12).stats.rhs_evals;
+      const RunResult quotient = RunWith(experiment, rtol, 1e-12, IntegrationMethod::kBdf,
+                                         JacobianKind::kDifferenceQuotient);
       quotient_total += quotient.stats.rhs_evals;
       EXPECT_GT(quotient.stats.jac_evals, 0);
     }
-    EXPECT_LT(analytic_total, quotient_total) << scenario;
+    EXPECT_LT(analytic_total, quotient_total) << experiment.request.max_length.value_or(0.0);
   }
 }
 
 TEST(Simulation, NothingMovesWithoutActivationOrLoadBelowSlack) {
-  const Outcome run = Simulate(ScenarioPath("concentric.yaml"),
-                               {"activation.after=0", "load[0].after=0"});
+  // the concentric experiment with both steps going to zero: below the slack length with
+  // u = 0 and no load, the acceleration is exactly zero, through both breakpoints
+  const Experiment concentric = testing::Concentric();
+  const Experiment still{
+      ActuatorSystem(concentric.system.shared_model(), concentric.system.actuator(),
+                     Waveform::Step(0.05, 0.0, 0.0), {Load::Force(Waveform::Step(0.05, 0.0, 0.0))}),
+      concentric.request, concentric.options};
+  const RunResult run = still.Run();
   ASSERT_EQ(run.stats.status, RunStatus::kCompleted);
   for (const TrajectoryPoint& p : run.trajectory) {
     EXPECT_EQ(p.sample.length, 0.1) << p.t;
@@ -163,25 +198,31 @@ TEST(Simulation, NothingMovesWithoutActivationOrLoadBelowSlack) {
 }
 
 TEST(Simulation, LengthLimitEndsTheRunNormally) {
-  const Outcome run = Simulate(ScenarioPath("concentric.yaml"), {"limits.min_length=0.09"});
+  Experiment concentric = testing::Concentric();
+  concentric.request.min_length = 0.09;
+  const RunResult run = concentric.Run();
   EXPECT_EQ(run.stats.status, RunStatus::kLimit);
   EXPECT_THAT(run.stats.message, HasSubstr("min_length = 0.09 reached"));
-  EXPECT_NEAR(run.trajectory.back().sample.length, 0.09, 1e-9);
+  // CVODE locates the root of x - 0.09 on its own solution to ~100 ulps of t (~1e-14 s);
+  // at the 0.15 m/s of that moment the recorded length misses 0.09 m by ~1e-15 m: 1e-12 m
+  EXPECT_NEAR(run.trajectory.back().sample.length, 0.09, 1e-12);
   EXPECT_LT(run.stats.final_time, 0.5);
   EXPECT_EQ(run.trajectory.back().t, run.stats.final_time);
 }
 
 TEST(Simulation, ReachingZeroLengthIsAFailure) {
-  std::string text = FlatModelScenario(0.0, 0.01);
-  text.replace(text.find("initial: {length: 0.1}"), 22, "initial: {length: 0.01}");
-  const Outcome run = Simulate(testing::WriteTempFile("collapse.yaml", text));
+  // no load: the active actuator pulls itself shut from 1 cm
+  const RunResult run = FlatIsotonic(0.0, 0.01).Run();
   EXPECT_EQ(run.stats.status, RunStatus::kFailed);
   EXPECT_THAT(run.stats.message, HasSubstr("the length reached zero"));
+  // the root of x itself, located to ~1e-14 s at a speed below 1 m/s (atol 1e-13 m)
   EXPECT_NEAR(run.trajectory.back().sample.length, 0.0, 1e-12);
 }
 
 TEST(Simulation, TooManyStepsIsAFailureNamingCvodesFlag) {
-  const Outcome run = Simulate(ScenarioPath("isometric.yaml"), {"solver.max_steps=20"});
+  Experiment isometric = testing::Isometric();
+  isometric.options.max_steps = 20;
+  const RunResult run = isometric.Run();
   EXPECT_EQ(run.stats.status, RunStatus::kFailed);
   EXPECT_THAT(run.stats.message, HasSubstr("CV_TOO_MUCH_WORK"));
   EXPECT_THAT(run.stats.message, HasSubstr("CVODE failed at t = "));
@@ -189,7 +230,9 @@ TEST(Simulation, TooManyStepsIsAFailureNamingCvodesFlag) {
 }
 
 TEST(Simulation, EveryStepModeStopsExactlyAtBreakpoints) {
-  const Outcome run = Simulate(ScenarioPath("concentric.yaml"), {"output.interval=steps"});
+  Experiment concentric = testing::Concentric();
+  concentric.request.output_interval = 0.0;  // every internal step
+  const RunResult run = concentric.Run();
   ASSERT_EQ(run.stats.status, RunStatus::kCompleted);
   EXPECT_GE(static_cast<long>(run.trajectory.size()), run.stats.steps);
   bool hit_step = false;
@@ -202,12 +245,11 @@ TEST(Simulation, EveryStepModeStopsExactlyAtBreakpoints) {
 }
 
 TEST(Simulation, ReuseAndThreadsGiveIdenticalRuns) {
-  const ScenarioSpec concentric = LoadScenario(ScenarioPath("concentric.yaml"));
-  const ScenarioSpec eccentric = LoadScenario(ScenarioPath("eccentric.yaml"));
-  const auto run = [](Simulation& sim, const ScenarioSpec& s) {
-    const ActuatorSystem system(s.model.params, s.actuator, s.activation, s.loads);
+  const Experiment concentric = testing::Concentric();
+  const Experiment eccentric = testing::Eccentric();
+  const auto run = [](Simulation& sim, const Experiment& e) {
     std::vector<TrajectoryPoint> trajectory;
-    sim.Run(system, s.solver, s.Request(), trajectory);
+    sim.Run(e.system, e.options, e.request, trajectory);
     return trajectory;
   };
   Simulation sim;
@@ -230,12 +272,10 @@ TEST(Simulation, ReuseAndThreadsGiveIdenticalRuns) {
 
 // The path of the ParameterError that running `request` throws, or "accepted".
 std::string RequestErrorPath(const RunRequest& request) {
-  const Outcome concentric = Simulate(ScenarioPath("concentric.yaml"));
+  const Experiment concentric = testing::Concentric();
   Simulation simulation;
-  const ActuatorSystem system(concentric.spec.model.params, concentric.spec.actuator,
-                              concentric.spec.activation, concentric.spec.loads);
   try {
-    simulation.Run(system, concentric.spec.solver, request);
+    simulation.Run(concentric.system, concentric.options, request);
   } catch (const ParameterError& e) {
     return e.path();
   }
@@ -267,15 +307,17 @@ TEST(Simulation, RunValidatesItsRequest) {
 }
 
 TEST(Simulation, RunResultHoldsWhatTheBufferedRunRecords) {
-  const Outcome buffered = Simulate(ScenarioPath("concentric.yaml"));
+  const Experiment concentric = testing::Concentric();
   Simulation simulation;
-  const ActuatorSystem system(buffered.spec.model.params, buffered.spec.actuator,
-                              buffered.spec.activation, buffered.spec.loads);
-  const RunResult result = simulation.Run(system, buffered.spec.solver, buffered.spec.Request());
-  ASSERT_EQ(result.trajectory.size(), buffered.trajectory.size());
-  EXPECT_EQ(result.stats.steps, buffered.stats.steps);
+  std::vector<TrajectoryPoint> buffered;
+  const RunStats stats =
+      simulation.Run(concentric.system, concentric.options, concentric.request, buffered);
+  const RunResult result =
+      simulation.Run(concentric.system, concentric.options, concentric.request);
+  ASSERT_EQ(result.trajectory.size(), buffered.size());
+  EXPECT_EQ(result.stats.steps, stats.steps);
   for (std::size_t i = 0; i < result.trajectory.size(); ++i) {
-    ASSERT_EQ(result.trajectory[i].sample.length, buffered.trajectory[i].sample.length) << i;
+    ASSERT_EQ(result.trajectory[i].sample.length, buffered[i].sample.length) << i;
   }
 }
 
