@@ -187,8 +187,8 @@ TEST(ClosedForm, IsotonicLengtheningWithLinearTensionVelocity) {
 }
 
 TEST(ClosedForm, EpsilonChangesNothingWhenNIsOne) {
-  Isotonic wide;  // eps larger than every velocity of the run
-  wide.epsilon = 10.0;
+  Isotonic wide;  // eps at its largest allowed value, v_max, above every velocity of the run
+  wide.epsilon = wide.v_max;
   wide.ExpectClosedForm();
 }
 

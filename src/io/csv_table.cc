@@ -1,6 +1,7 @@
 #include "musclesim/io/csv_table.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -60,7 +61,10 @@ double CsvTable::Number(std::size_t row, int column) const {
   char* end = nullptr;
   errno = 0;
   const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE) {
+  // ERANGE on underflow still gives the nearest double (subnormals musclesim itself writes);
+  // only an overflow to +-HUGE_VAL is not the number written
+  const bool overflow = errno == ERANGE && std::abs(value) == HUGE_VAL;
+  if (text.empty() || end != text.c_str() + text.size() || overflow) {
     throw InputError(source + ":" + std::to_string(lines[row]) + ": column " +
                      header[static_cast<std::size_t>(column)] + " = '" + text +
                      "': must be a number");
