@@ -120,16 +120,17 @@ metrics: [final_length]
 }
 
 TEST(Sweep, EveryPointIsValidatedBeforeAnythingRunsNamingTheAxis) {
+  // the axis is at line 3, column 3 of the sweep file (after `base:` and `parameters:`)
   EXPECT_THAT([] {
     LoadSweep(WriteSweep("bad_path", "parameters:\n  model.speed.n: [1, 2]\nmetrics: [work]\n"));
   }, ::testing::ThrowsMessage<InputError>(HasSubstr(
-         ":3:18: point 0 (model.speed.n=1) is not a valid scenario: --set model.speed.n=1: "
-         "model.speed does not exist")));
+         "bad_path.yaml:3:3: axis model.speed.n = 1 makes point 0 (model.speed.n=1) an invalid "
+         "scenario: --set model.speed.n=1: model.speed does not exist")));
   EXPECT_THAT([] {
     LoadSweep(WriteSweep("bad_value", "parameters:\n  model.velocity.n: [3, fast]\nmetrics: [work]\n"));
   }, ::testing::ThrowsMessage<InputError>(HasSubstr(
-         "point 1 (model.velocity.n=fast) is not a valid scenario: model.velocity.n = fast "
-         "(--set): must be a number")));
+         "bad_value.yaml:3:3: axis model.velocity.n = fast makes point 1 (model.velocity.n=fast) "
+         "an invalid scenario: model.velocity.n = fast (--set): must be a number")));
   EXPECT_THAT([] {
     LoadSweep(WriteSweep("bad_metric", "parameters:\n  model.velocity.n: [3]\nmetrics: [speed]\n"));
   }, ::testing::ThrowsMessage<InputError>(HasSubstr("metrics[0] = speed (")));
@@ -139,6 +140,92 @@ TEST(Sweep, EveryPointIsValidatedBeforeAnythingRunsNamingTheAxis) {
   EXPECT_THAT([] {
     LoadSweep(WriteSweep("bad_mode", "mode: spiral\nparameters:\n  model.velocity.n: [3]\nmetrics: [work]\n"));
   }, ::testing::ThrowsMessage<InputError>(HasSubstr("mode = spiral (")));
+}
+
+TEST(Sweep, AnAxisValueErrorNamesTheAxisValuePointAndTheAxisLine) {
+  // the second axis, at line 4 column 3, is the culprit of point 2 = (n=1, epsilon=-1)
+  const std::string sweep = WriteSweep("axis_error", R"(parameters:
+  model.velocity.n: [1, 3]
+  model.velocity.epsilon: [1.0e-3, 2.0e-3, -1, 3.0e-3]
+metrics: [work]
+)");
+  EXPECT_EQ(testing::InputErrorOf(sweep, [&] { LoadSweep(sweep); }),
+            "FILE:4:3: axis model.velocity.epsilon = -1 makes point 2 (model.velocity.n=1, "
+            "model.velocity.epsilon=-1) an invalid scenario: model.velocity.epsilon = -1 (--set): "
+            "must be finite and > 0 [m/s]");
+}
+
+TEST(Sweep, AnErrorInTheBaseScenarioNamesTheBaseFileLineAndColumn) {
+  // a bad value in the base file, on a line no axis touches
+  std::string text = testing::ReadFile(testing::ScenarioPath("concentric.yaml"));
+  const std::string good = "epsilon: 1.0e-3", bad = "epsilon: -1.0e-3";
+  const std::size_t at = text.find(good);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, good.size(), bad);
+  // its position, counted here from the text: 1-based line, and the column of the value
+  const long line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n');
+  const std::size_t column = at - text.rfind('\n', at) + std::string("epsilon: ").size();
+  const std::string base = testing::WriteTempFile("bad_base.yaml", text);
+  const std::string sweep = testing::WriteTempFile("bad_base_sweep.yaml",
+      "base: " + std::filesystem::path(base).filename().string() +
+      "\nparameters:\n  load[0].after: [10, 20]\nmetrics: [work]\n");
+  const std::string message = testing::InputErrorOf(sweep, [&] { LoadSweep(sweep); });
+  EXPECT_THAT(message, HasSubstr(base + " (the base scenario of the sweep FILE) is not a valid "
+                                 "scenario: model.velocity.epsilon = -0.001 (" + base + ":" +
+                                 std::to_string(line) + ":" + std::to_string(column) +
+                                 "): must be finite and > 0 [m/s]"));
+  EXPECT_THAT(message, ::testing::Not(HasSubstr("FILE:1:1")));
+}
+
+TEST(Sweep, APointInvalidOnlyInCombinationIsToldSo) {
+  // each value is valid alone (with the base's other values), not 0.19 m against 0.15 m
+  const std::string sweep = WriteSweep("combination", R"(parameters:
+  initial.length: [0.1, 0.19]
+  limits.max_length: [0.2, 0.15]
+metrics: [work]
+)");
+  EXPECT_THAT(testing::InputErrorOf(sweep, [&] { LoadSweep(sweep); }),
+              HasSubstr("point 3 (initial.length=0.19, limits.max_length=0.15) is not a valid "
+                        "scenario, though each of its values is valid alone: limits.max_length "
+                        "= 0.15 (--set): must be above initial.length = 0.19 [m]"));
+}
+
+TEST(Sweep, SeedAndSamplesAreForRandomModeOnly) {
+  const std::string grid = WriteSweep("grid_seed", "seed: 3\nparameters:\n  model.velocity.n: [3]\nmetrics: [work]\n");
+  EXPECT_EQ(testing::InputErrorOf(grid, [&] { LoadSweep(grid); }),
+            "seed = 3 (FILE:2:7): is for mode random only (this sweep is grid)");
+  const std::string zip = WriteSweep("zip_samples", "mode: zip\nsamples: 5\nparameters:\n  model.velocity.n: [3]\nmetrics: [work]\n");
+  EXPECT_EQ(testing::InputErrorOf(zip, [&] { LoadSweep(zip); }),
+            "samples = 5 (FILE:3:10): is for mode random only (this sweep is zip)");
+}
+
+TEST(Sweep, RandomModeRequiresASeed) {
+  const std::string sweep = WriteSweep("no_seed", "mode: random\nsamples: 5\nparameters:\n  model.velocity.n: [3]\nmetrics: [work]\n");
+  EXPECT_THAT(testing::InputErrorOf(sweep, [&] { LoadSweep(sweep); }),
+              HasSubstr("seed (FILE:1:1): missing required key"));
+}
+
+TEST(Sweep, RefusesMoreThanTheMaximumPointsBeforeAllocatingThem) {
+  // 1000 x 1000 x 1001 values, and 1e6^4 (which overflows 64 bits): refused from the counts
+  const std::string over = WriteSweep("over", R"(parameters:
+  load[0].after: {from: 10.0, to: 90.0, count: 1000}
+  actuator.mass: {from: 0.05, to: 0.5, count: 1000}
+  model.velocity.epsilon: {from: 1.0e-4, to: 1.0e-2, count: 1001}
+metrics: [work]
+)");
+  EXPECT_EQ(testing::InputErrorOf(over, [&] { LoadSweep(over); }),
+            "parameters = 1000 x 1000 x 1001 = 1001000000 points (FILE:3:3): a sweep may have at "
+            "most 1e9 points: a running sweep keeps a bit per point in memory and about 150 bytes "
+            "per point on disk (150 GB at 1e9)");
+  const std::string huge = WriteSweep("huge", R"(parameters:
+  load[0].after: {from: 10.0, to: 90.0, count: 1000000}
+  actuator.mass: {from: 0.05, to: 0.5, count: 1000000}
+  model.velocity.epsilon: {from: 1.0e-4, to: 1.0e-2, count: 1000000}
+  actuator.damping: {from: 0.0, to: 1.0, count: 1000000}
+metrics: [work]
+)");
+  EXPECT_THAT(testing::InputErrorOf(huge, [&] { LoadSweep(huge); }),
+              HasSubstr("= more than 9e18 points (FILE:3:3): a sweep may have at most 1e9 points"));
 }
 
 std::string SweepOf(long points_per_axis) {
