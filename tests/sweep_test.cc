@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -609,6 +610,45 @@ metrics: [work]
   }
   EXPECT_TRUE(seen);
   std::filesystem::remove(options.output + ".partial");
+}
+
+TEST(SweepRunner, EveryShippedSweepRunsEveryPoint) {
+  // each sweep in scenarios/, its number of points counted here from its axes
+  const std::map<std::string, long> points = {
+      {"force_velocity_sweep.yaml", 19},  // 19 loads
+      {"stiffness_sweep.yaml", 20},       // 4 exponents x 5 widths
+  };
+  std::set<std::string> shipped;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios")) {
+    const std::string name = entry.path().filename().string();
+    if (name.find("sweep") != std::string::npos) shipped.insert(name);
+  }
+  std::set<std::string> known;
+  for (const auto& [name, count] : points) known.insert(name);
+  EXPECT_EQ(shipped, known) << "a sweep was added to scenarios/: give its point count here";
+  for (const auto& [name, count] : points) {
+    SCOPED_TRACE(name);
+    const SweepSpec spec = LoadSweep(testing::ScenarioPath(name));
+    SweepRunOptions options;
+    options.output = testing::WriteTempFile(name + ".csv", "");
+    std::filesystem::remove(options.output + ".partial");
+    const SweepOutcome outcome = RunSweep(spec, options);
+    EXPECT_EQ(outcome.points, count);
+    EXPECT_EQ(outcome.failed, 0);
+    EXPECT_EQ(outcome.invalid, 0);
+    EXPECT_FALSE(outcome.interrupted);
+    const std::vector<std::string> lines = LinesOf(options.output);
+    ASSERT_EQ(static_cast<long>(lines.size()), count + 1);
+    const std::size_t status = spec.axes.size() + 1;  // the field after index and the axes
+    for (long i = 0; i < count; ++i) {
+      const std::string& line = lines[static_cast<std::size_t>(i + 1)];
+      EXPECT_EQ(line.substr(0, line.find(',')), std::to_string(i));
+      std::size_t at = 0;
+      for (std::size_t f = 0; f < status; ++f) at = line.find(',', at) + 1;
+      EXPECT_EQ(line.substr(at, 3), "ok,") << line;
+    }
+  }
 }
 
 TEST(SweepSortedSummary, RowsBeyondTheMemoryBudgetAreMergedFromSortedRuns) {
