@@ -4,8 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -14,6 +18,7 @@
 #include "musclesim/errors.h"
 #include "musclesim/studies/sweep_mpi.h"
 #include "musclesim/studies/sweep_runner.h"
+#include "studies/sweep_sorted_summary.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {
@@ -120,16 +125,17 @@ metrics: [final_length]
 }
 
 TEST(Sweep, EveryPointIsValidatedBeforeAnythingRunsNamingTheAxis) {
+  // the axis is at line 3, column 3 of the sweep file (after `base:` and `parameters:`)
   EXPECT_THAT([] {
     LoadSweep(WriteSweep("bad_path", "parameters:\n  model.speed.n: [1, 2]\nmetrics: [work]\n"));
   }, ::testing::ThrowsMessage<InputError>(HasSubstr(
-         ":3:18: point 0 (model.speed.n=1) is not a valid scenario: --set model.speed.n=1: "
-         "model.speed does not exist")));
+         "bad_path.yaml:3:3: axis model.speed.n = 1 makes point 0 (model.speed.n=1) an invalid "
+         "scenario: --set model.speed.n=1: model.speed does not exist")));
   EXPECT_THAT([] {
     LoadSweep(WriteSweep("bad_value", "parameters:\n  model.velocity.n: [3, fast]\nmetrics: [work]\n"));
   }, ::testing::ThrowsMessage<InputError>(HasSubstr(
-         "point 1 (model.velocity.n=fast) is not a valid scenario: model.velocity.n = fast "
-         "(--set): must be a number")));
+         "bad_value.yaml:3:3: axis model.velocity.n = fast makes point 1 (model.velocity.n=fast) "
+         "an invalid scenario: model.velocity.n = fast (--set): must be a number")));
   EXPECT_THAT([] {
     LoadSweep(WriteSweep("bad_metric", "parameters:\n  model.velocity.n: [3]\nmetrics: [speed]\n"));
   }, ::testing::ThrowsMessage<InputError>(HasSubstr("metrics[0] = speed (")));
@@ -139,6 +145,92 @@ TEST(Sweep, EveryPointIsValidatedBeforeAnythingRunsNamingTheAxis) {
   EXPECT_THAT([] {
     LoadSweep(WriteSweep("bad_mode", "mode: spiral\nparameters:\n  model.velocity.n: [3]\nmetrics: [work]\n"));
   }, ::testing::ThrowsMessage<InputError>(HasSubstr("mode = spiral (")));
+}
+
+TEST(Sweep, AnAxisValueErrorNamesTheAxisValuePointAndTheAxisLine) {
+  // the second axis, at line 4 column 3, is the culprit of point 2 = (n=1, epsilon=-1)
+  const std::string sweep = WriteSweep("axis_error", R"(parameters:
+  model.velocity.n: [1, 3]
+  model.velocity.epsilon: [1.0e-3, 2.0e-3, -1, 3.0e-3]
+metrics: [work]
+)");
+  EXPECT_EQ(testing::InputErrorOf(sweep, [&] { LoadSweep(sweep); }),
+            "FILE:4:3: axis model.velocity.epsilon = -1 makes point 2 (model.velocity.n=1, "
+            "model.velocity.epsilon=-1) an invalid scenario: model.velocity.epsilon = -1 (--set): "
+            "must be finite and > 0 [m/s]");
+}
+
+TEST(Sweep, AnErrorInTheBaseScenarioNamesTheBaseFileLineAndColumn) {
+  // a bad value in the base file, on a line no axis touches
+  std::string text = testing::ReadFile(testing::ScenarioPath("concentric.yaml"));
+  const std::string good = "epsilon: 1.0e-3", bad = "epsilon: -1.0e-3";
+  const std::size_t at = text.find(good);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, good.size(), bad);
+  // its position, counted here from the text: 1-based line, and the column of the value
+  const long line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n');
+  const std::size_t column = at - text.rfind('\n', at) + std::string("epsilon: ").size();
+  const std::string base = testing::WriteTempFile("bad_base.yaml", text);
+  const std::string sweep = testing::WriteTempFile("bad_base_sweep.yaml",
+      "base: " + std::filesystem::path(base).filename().string() +
+      "\nparameters:\n  load[0].after: [10, 20]\nmetrics: [work]\n");
+  const std::string message = testing::InputErrorOf(sweep, [&] { LoadSweep(sweep); });
+  EXPECT_THAT(message, HasSubstr(base + " (the base scenario of the sweep FILE) is not a valid "
+                                 "scenario: model.velocity.epsilon = -0.001 (" + base + ":" +
+                                 std::to_string(line) + ":" + std::to_string(column) +
+                                 "): must be finite and > 0 [m/s]"));
+  EXPECT_THAT(message, ::testing::Not(HasSubstr("FILE:1:1")));
+}
+
+TEST(Sweep, APointInvalidOnlyInCombinationIsToldSo) {
+  // each value is valid alone (with the base's other values), not 0.19 m against 0.15 m
+  const std::string sweep = WriteSweep("combination", R"(parameters:
+  initial.length: [0.1, 0.19]
+  limits.max_length: [0.2, 0.15]
+metrics: [work]
+)");
+  EXPECT_THAT(testing::InputErrorOf(sweep, [&] { LoadSweep(sweep); }),
+              HasSubstr("point 3 (initial.length=0.19, limits.max_length=0.15) is not a valid "
+                        "scenario, though each of its values is valid alone: limits.max_length "
+                        "= 0.15 (--set): must be above initial.length = 0.19 [m]"));
+}
+
+TEST(Sweep, SeedAndSamplesAreForRandomModeOnly) {
+  const std::string grid = WriteSweep("grid_seed", "seed: 3\nparameters:\n  model.velocity.n: [3]\nmetrics: [work]\n");
+  EXPECT_EQ(testing::InputErrorOf(grid, [&] { LoadSweep(grid); }),
+            "seed = 3 (FILE:2:7): is for mode random only (this sweep is grid)");
+  const std::string zip = WriteSweep("zip_samples", "mode: zip\nsamples: 5\nparameters:\n  model.velocity.n: [3]\nmetrics: [work]\n");
+  EXPECT_EQ(testing::InputErrorOf(zip, [&] { LoadSweep(zip); }),
+            "samples = 5 (FILE:3:10): is for mode random only (this sweep is zip)");
+}
+
+TEST(Sweep, RandomModeRequiresASeed) {
+  const std::string sweep = WriteSweep("no_seed", "mode: random\nsamples: 5\nparameters:\n  model.velocity.n: [3]\nmetrics: [work]\n");
+  EXPECT_THAT(testing::InputErrorOf(sweep, [&] { LoadSweep(sweep); }),
+              HasSubstr("seed (FILE:1:1): missing required key"));
+}
+
+TEST(Sweep, RefusesMoreThanTheMaximumPointsBeforeAllocatingThem) {
+  // 1000 x 1000 x 1001 values, and 1e6^4 (which overflows 64 bits): refused from the counts
+  const std::string over = WriteSweep("over", R"(parameters:
+  load[0].after: {from: 10.0, to: 90.0, count: 1000}
+  actuator.mass: {from: 0.05, to: 0.5, count: 1000}
+  model.velocity.epsilon: {from: 1.0e-4, to: 1.0e-2, count: 1001}
+metrics: [work]
+)");
+  EXPECT_EQ(testing::InputErrorOf(over, [&] { LoadSweep(over); }),
+            "parameters = 1000 x 1000 x 1001 = 1001000000 points (FILE:3:3): a sweep may have at "
+            "most 1e9 points: a running sweep keeps a bit per point in memory and about 150 bytes "
+            "per point on disk (150 GB at 1e9)");
+  const std::string huge = WriteSweep("huge", R"(parameters:
+  load[0].after: {from: 10.0, to: 90.0, count: 1000000}
+  actuator.mass: {from: 0.05, to: 0.5, count: 1000000}
+  model.velocity.epsilon: {from: 1.0e-4, to: 1.0e-2, count: 1000000}
+  actuator.damping: {from: 0.0, to: 1.0, count: 1000000}
+metrics: [work]
+)");
+  EXPECT_THAT(testing::InputErrorOf(huge, [&] { LoadSweep(huge); }),
+              HasSubstr("= more than 9e18 points (FILE:3:3): a sweep may have at most 1e9 points"));
 }
 
 std::string SweepOf(long points_per_axis) {
@@ -154,12 +246,14 @@ class ProgressLog : public SweepObserver {
  public:
   explicit ProgressLog(long stop_after = -1) : stop_after_(stop_after) {}
   void OnProgress(long done, long total) override { calls.emplace_back(done, total); }
+  void OnNotice(const std::string& message) override { notices.push_back(message); }
   bool StopRequested() override {
     if (stop_after_ < 0 || calls.empty() || calls.back().first < stop_after_) return false;
     if (stopped_at < 0) stopped_at = calls.back().first;
     return true;
   }
   std::vector<std::pair<long, long>> calls;  // (done, total) per call [points]
+  std::vector<std::string> notices;
   long stopped_at = -1;                      // rows in when it first asked to stop [points]
 
  private:
@@ -184,6 +278,27 @@ TEST(SweepRunner, OneAndTwoJobsGiveTheSameSummary) {
   EXPECT_FALSE(std::filesystem::exists(options.output + ".partial"));
 }
 
+std::vector<std::string> LinesOf(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+// The first line of the partial file a sweep starts (its signature), from a sweep stopped
+// before any point ran.
+std::string SignatureLine(const SweepSpec& spec, const std::string& name) {
+  SweepRunOptions options;
+  options.output = testing::WriteTempFile(name + "_signature.csv", "");
+  std::filesystem::remove(options.output + ".partial");
+  ProgressLog stop_at_once(0);
+  options.observer = &stop_at_once;
+  RunSweep(spec, options);
+  const std::vector<std::string> lines = LinesOf(options.output + ".partial");
+  std::filesystem::remove(options.output + ".partial");
+  return lines.empty() ? "" : lines[0];
+}
+
 TEST(SweepRunner, ResumeFromAPartialSummaryGivesTheSameResult) {
   const SweepSpec spec = LoadSweep(WriteSweep("resume", SweepOf(8)));
   SweepRunOptions options;
@@ -191,26 +306,147 @@ TEST(SweepRunner, ResumeFromAPartialSummaryGivesTheSameResult) {
   RunSweep(spec, options);
   const std::string full = testing::SummaryWithoutWallTime(options.output);
 
-  // what an interrupted sweep leaves: the header, some rows in any order, a cut-off line
-  std::ifstream in(options.output);
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  // what an interrupted sweep leaves: signature, header, some rows in any order, a cut-off line
+  const std::vector<std::string> lines = LinesOf(options.output);
   const std::string resumed = testing::WriteTempFile("resumed.csv", "");
   std::filesystem::remove(resumed);
-  std::ofstream(resumed + ".partial") << lines[0] << "\n" << lines[7] << "\n" << lines[2] << "\n"
-                                      << lines[12] << "\n" << lines[5].substr(0, 9);
+  std::ofstream(resumed + ".partial") << SignatureLine(spec, "resume") << "\n" << lines[0] << "\n"
+                                      << lines[7] << "\n" << lines[2] << "\n" << lines[12] << "\n"
+                                      << lines[5].substr(0, 9);
   options.output = resumed;
-  EXPECT_THROW(RunSweep(spec, options), InputError);  // no silent restart over it
+  EXPECT_THAT([&] { RunSweep(spec, options); },  // no silent restart over it
+              ::testing::ThrowsMessage<InputError>(HasSubstr(
+                  "resumed.csv.partial exists: an earlier sweep was interrupted. Pass --resume")));
   options.resume = true;
   ProgressLog log;
   options.observer = &log;
   const SweepOutcome outcome = RunSweep(spec, options);
   EXPECT_EQ(outcome.resumed, 3);
   EXPECT_EQ(outcome.ran, 13);
+  EXPECT_TRUE(log.notices.empty());  // a line cut short by a kill is expected, not malformed
   // the first report, before anything runs, counts the three complete rows kept
   ASSERT_FALSE(log.calls.empty());
   EXPECT_EQ(log.calls.front(), std::make_pair(3L, 16L));
   EXPECT_EQ(testing::SummaryWithoutWallTime(resumed), full);
+}
+
+TEST(SweepRunner, ResumeDropsMalformedRowsAndRunsTheirPointsAgain) {
+  const SweepSpec spec = LoadSweep(WriteSweep("malformed", SweepOf(4)));  // 8 points
+  SweepRunOptions options;
+  options.output = testing::WriteTempFile("reference.csv", "");
+  RunSweep(spec, options);
+  const std::vector<std::string> lines = LinesOf(options.output);  // header, rows 0..7
+  ASSERT_EQ(lines.size(), 9u);
+  const std::string full = testing::SummaryWithoutWallTime(options.output);
+
+  // two good rows (points 0 and 6) among rows no resume may trust
+  std::string row3_other_value = lines[4];
+  row3_other_value.replace(row3_other_value.find(','), 3, ",11");  // its load, 36.66... N, edited
+  std::string row2_bad_status = lines[3];
+  row2_bad_status.replace(row2_bad_status.find(",ok,"), 4, ",done,");
+  std::string row5_beyond = lines[6];
+  row5_beyond.replace(0, 1, "8");  // index 8 of 8 points
+  const std::string partial = options.output = testing::WriteTempFile("malformed.csv", "");
+  std::filesystem::remove(partial);
+  std::ofstream(partial + ".partial")
+      << SignatureLine(spec, "malformed") << "\n" << lines[0] << "\n"
+      << lines[1] << "\n"         // point 0, kept
+      << "1,zzz\n"                // too few fields
+      << "x" << lines[2] << "\n"  // an index that is not a number
+      << lines[1] << "\n"         // point 0 again
+      << row2_bad_status << "\n" << row3_other_value << "\n" << row5_beyond << "\n"
+      << lines[7] << "\n";        // point 6, kept
+  options.resume = true;
+  ProgressLog log;
+  options.observer = &log;
+  const SweepOutcome outcome = RunSweep(spec, options);
+  EXPECT_EQ(outcome.resumed, 2);
+  EXPECT_EQ(outcome.ran, 6);
+  ASSERT_EQ(log.notices.size(), 1u);
+  EXPECT_THAT(log.notices[0], HasSubstr("malformed.csv.partial: dropped 6 malformed rows (line 4: "
+                                        "2 fields, expected 16; line 5: index 'x1' is not a number"));
+  EXPECT_THAT(log.notices[0], HasSubstr("line 6: a second row for point 0"));
+  EXPECT_THAT(log.notices[0], HasSubstr("; ...); their points run again"));
+  EXPECT_EQ(testing::SummaryWithoutWallTime(partial), full);
+  EXPECT_THAT(testing::ReadFile(partial), ::testing::Not(HasSubstr("zzz")));
+}
+
+TEST(SweepRunner, ResumeRefusesThePartialOfAnotherSweepSayingWhatChanged) {
+  // a sweep of loads 5..95 N interrupted, then its range edited to 50..95 N
+  const std::string base = testing::WriteTempFile("edited_base.yaml",
+      testing::ReadFile(testing::ScenarioPath("concentric.yaml")));
+  const auto sweep_file = [&](const std::string& range, const std::string& metrics) {
+    return testing::WriteTempFile("edited.yaml",
+        "base: " + std::filesystem::path(base).filename().string() +
+        "\nparameters:\n  load[0].after: {from: " + range + ", to: 95.0, count: 19}\nmetrics: [" +
+        metrics + "]\n");
+  };
+  SweepRunOptions options;
+  options.output = testing::WriteTempFile("edited.csv", "");
+  std::filesystem::remove(options.output + ".partial");
+  ProgressLog stop(3);
+  options.observer = &stop;
+  options.jobs = 1;
+  ASSERT_TRUE(RunSweep(LoadSweep(sweep_file("5.0", "work")), options).interrupted);
+  options.observer = nullptr;
+  options.resume = true;
+  const std::string refused = "edited.csv.partial belongs to a different sweep (base scenario, "
+                              "axes or metrics changed): ";
+  EXPECT_THAT([&] { RunSweep(LoadSweep(sweep_file("50.0", "work")), options); },
+              ::testing::ThrowsMessage<InputError>(HasSubstr(refused + "the axes changed")));
+  EXPECT_THAT([&] { RunSweep(LoadSweep(sweep_file("5.0", "peak_tension")), options); },
+              ::testing::ThrowsMessage<InputError>(HasSubstr(refused + "the metrics changed")));
+  std::ofstream(base, std::ios::app) << "# edited\n";
+  EXPECT_THAT([&] { RunSweep(LoadSweep(sweep_file("5.0", "work")), options); },
+              ::testing::ThrowsMessage<InputError>(HasSubstr(refused + "the base scenario changed")));
+  // a partial file of an older musclesim, header first, has no signature
+  const std::string header = LinesOf(options.output + ".partial")[1];
+  std::ofstream(options.output + ".partial") << header << "\n";
+  EXPECT_THAT([&] { RunSweep(LoadSweep(sweep_file("5.0", "work")), options); },
+              ::testing::ThrowsMessage<InputError>(HasSubstr(
+                  refused + "its first line is not a sweep's signature")));
+}
+
+TEST(SweepRunner, ASecondSweepOnTheSameOutputIsRefusedWhileTheFirstRuns) {
+  const SweepSpec spec = LoadSweep(WriteSweep("busy", SweepOf(300)));
+  SweepRunOptions first;
+  first.jobs = 1;
+  first.output = testing::WriteTempFile("busy.csv", "");
+  std::filesystem::remove(first.output + ".partial");
+  // the first sweep stops once the second has been tried
+  std::atomic<bool> tried{false};
+  class StopWhenTold : public SweepObserver {
+   public:
+    StopWhenTold(std::atomic<long>& rows, std::atomic<bool>& tried) : rows_(rows), tried_(tried) {}
+    void OnProgress(long done, long) override { rows_ = done; }
+    bool StopRequested() override { return tried_; }
+
+   private:
+    std::atomic<long>& rows_;
+    std::atomic<bool>& tried_;
+  };
+  std::atomic<long> rows{0};
+  StopWhenTold observer(rows, tried);
+  first.observer = &observer;
+  SweepOutcome outcome;
+  std::thread running([&] { outcome = RunSweep(spec, first); });
+  while (rows < 1) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+
+  SweepRunOptions second = first;
+  second.observer = nullptr;
+  for (const bool resume : {false, true}) {
+    second.resume = resume;
+    EXPECT_THAT([&] { RunSweep(spec, second); },
+                ::testing::ThrowsMessage<InputError>(HasSubstr(
+                    "busy.csv.partial is in use by a running sweep writing the same output")));
+  }
+  tried = true;
+  running.join();
+  ASSERT_TRUE(outcome.interrupted);
+  // once the first has stopped, its file is free to resume
+  ProgressLog stop_at_once(0);
+  second.observer = &stop_at_once;
+  EXPECT_EQ(RunSweep(spec, second).resumed, outcome.ran);
 }
 
 TEST(SweepRunner, AFailingPointIsMarkedAndTheRestGoesOn) {
@@ -279,13 +515,172 @@ TEST(SweepRunner, AStopRequestEndsOnlyTheSweepOfItsObserver) {
   EXPECT_LE(first.ran, stopper.stopped_at + 1);
   EXPECT_FALSE(std::filesystem::exists(stopped.output));
   const std::string partial = testing::ReadFile(stopped.output + ".partial");
-  EXPECT_EQ(partial.find(SummaryHeader(long_spec) + "\n"), 0u);
-  EXPECT_EQ(std::count(partial.begin(), partial.end(), '\n'), first.ran + 1);  // and the header
+  // the signature line, the header, the rows
+  EXPECT_EQ(partial.find("# sweep "), 0u);
+  EXPECT_EQ(partial.find("\n" + SummaryHeader(long_spec) + "\n"), partial.find('\n'));
+  EXPECT_EQ(std::count(partial.begin(), partial.end(), '\n'), first.ran + 2);
 
   EXPECT_FALSE(second.interrupted);
   EXPECT_EQ(second.ran, 40);
   EXPECT_EQ(watcher.calls.back().first, 40);
   EXPECT_FALSE(std::filesystem::exists(completed.output + ".partial"));
+}
+
+// The concentric scenario cut to 0.06 s (activation and load come at 0.05 s): cheap points.
+std::string ShortBase(const std::string& name) {
+  std::string text = testing::ReadFile(testing::ScenarioPath("concentric.yaml"));
+  const std::string end = "end: 0.5}";
+  text.replace(text.find(end), end.size(), "end: 0.06}");
+  return testing::WriteTempFile(name + "_short_base.yaml", text);
+}
+
+std::string SweepOn(const std::string& base, const std::string& name, const std::string& body) {
+  return testing::WriteTempFile(name + ".yaml",
+      "base: " + std::filesystem::path(base).filename().string() + "\n" + body);
+}
+
+TEST(SweepRunner, ASweepOfTheMaximumSizeStartsRunningAtOnce) {
+  // 1000 x 1000 x 1000 points: a few thousand are validated up front, the rest as they run
+  const std::string sweep = SweepOn(ShortBase("maximum"), "maximum", R"(parameters:
+  load[0].after: {from: 10.0, to: 90.0, count: 1000}
+  actuator.mass: {from: 0.05, to: 0.5, count: 1000}
+  model.velocity.epsilon: {from: 1.0e-4, to: 1.0e-2, count: 1000, scale: log}
+metrics: [work]
+)");
+  const SweepSpec spec = LoadSweep(sweep);
+  ASSERT_EQ(PointCount(spec), 1000000000L);
+  EXPECT_TRUE(spec.scenarios.empty());
+  EXPECT_THAT(PointValues(spec, 999999999L), ElementsAre("90", "0.5", "0.01"));
+  SweepRunOptions options;
+  options.jobs = 2;
+  options.output = testing::WriteTempFile("maximum.csv", "");
+  std::filesystem::remove(options.output + ".partial");
+  ProgressLog stop_after_five(5);
+  options.observer = &stop_after_five;
+  const SweepOutcome outcome = RunSweep(spec, options);
+  EXPECT_TRUE(outcome.interrupted);
+  EXPECT_GE(outcome.ran, 5);
+  EXPECT_EQ(stop_after_five.calls.front(), std::make_pair(0L, 1000000000L));
+  const std::vector<std::string> lines = LinesOf(options.output + ".partial");
+  ASSERT_GE(lines.size(), 7u);  // signature, header, five rows or more
+  EXPECT_NE(std::find_if(lines.begin(), lines.end(), [](const std::string& line) {
+              return line.rfind("0,10,0.05,1e-04,ok,", 0) == 0;
+            }), lines.end());
+  std::filesystem::remove(options.output + ".partial");
+}
+
+TEST(SweepRunner, AnInvalidPointOfALargeSweepIsAnInvalidRow) {
+  // 3000 x 2 x 2 = 12,000 points, more than are validated up front. Point 3 (initial
+  // length 0.19 m, max_length 0.15 m) is invalid, though both values are valid alone: the
+  // sample validated up front (every value of every axis, the others at their first) misses it.
+  const std::string body = R"(parameters:
+  load[0].after: {from: 10.0, to: 90.0, count: COUNT}
+  initial.length: [0.1, 0.19]
+  limits.max_length: [0.2, 0.15]
+metrics: [work]
+)";
+  const std::string base = ShortBase("large_invalid");
+  const auto with_count = [&](const std::string& count) {
+    std::string text = body;
+    text.replace(text.find("COUNT"), 5, count);
+    return SweepOn(base, "large_invalid_" + count, text);
+  };
+  // a small sweep of the same values is refused before anything runs
+  EXPECT_THROW(LoadSweep(with_count("10")), InputError);
+  const SweepSpec spec = LoadSweep(with_count("3000"));
+  ASSERT_EQ(PointCount(spec), 12000);
+  SweepRunOptions options;
+  options.jobs = 1;
+  options.output = testing::WriteTempFile("large_invalid.csv", "");
+  std::filesystem::remove(options.output + ".partial");
+  ProgressLog stop_after_eight(8);
+  options.observer = &stop_after_eight;
+  const SweepOutcome outcome = RunSweep(spec, options);
+  // rows come in order from one thread: points 0 to 7 at least, one in four of them invalid
+  // (those with index 3 mod 4: the last two axes at their second values)
+  EXPECT_GE(outcome.ran, 8);
+  EXPECT_EQ(outcome.failed, 0);
+  long expected_invalid = 0;
+  bool seen = false;
+  const std::vector<std::string> lines = LinesOf(options.output + ".partial");
+  for (std::size_t r = 2; r < lines.size(); ++r) {
+    const std::string& line = lines[r];
+    const long index = std::stol(line.substr(0, line.find(',')));
+    const bool invalid = index % 4 == 3;
+    expected_invalid += invalid;
+    EXPECT_THAT(line, HasSubstr(invalid ? ",invalid," : ",ok,")) << line;
+    if (index != 3) continue;
+    seen = true;
+    EXPECT_THAT(line, ::testing::StartsWith("3,10,0.19,0.15,invalid,,0,0,0,\""));
+    EXPECT_THAT(line, HasSubstr("point 3 (load[0].after=10, initial.length=0.19, "
+                                "limits.max_length=0.15) is not a valid scenario, though each of "
+                                "its values is valid alone: limits.max_length = 0.15 (--set): "
+                                "must be above initial.length = 0.19 [m]"));
+  }
+  EXPECT_EQ(outcome.invalid, expected_invalid);
+  EXPECT_TRUE(seen);
+  std::filesystem::remove(options.output + ".partial");
+}
+
+TEST(SweepRunner, EveryShippedSweepRunsEveryPoint) {
+  // each sweep in scenarios/, its number of points counted here from its axes
+  const std::map<std::string, long> points = {
+      {"force_velocity_sweep.yaml", 19},  // 19 loads
+      {"stiffness_sweep.yaml", 20},       // 4 exponents x 5 widths
+  };
+  std::set<std::string> shipped;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios")) {
+    const std::string name = entry.path().filename().string();
+    if (name.find("sweep") != std::string::npos) shipped.insert(name);
+  }
+  std::set<std::string> known;
+  for (const auto& [name, count] : points) known.insert(name);
+  EXPECT_EQ(shipped, known) << "a sweep was added to scenarios/: give its point count here";
+  for (const auto& [name, count] : points) {
+    SCOPED_TRACE(name);
+    const SweepSpec spec = LoadSweep(testing::ScenarioPath(name));
+    SweepRunOptions options;
+    options.output = testing::WriteTempFile(name + ".csv", "");
+    std::filesystem::remove(options.output + ".partial");
+    const SweepOutcome outcome = RunSweep(spec, options);
+    EXPECT_EQ(outcome.points, count);
+    EXPECT_EQ(outcome.failed, 0);
+    EXPECT_EQ(outcome.invalid, 0);
+    EXPECT_FALSE(outcome.interrupted);
+    const std::vector<std::string> lines = LinesOf(options.output);
+    ASSERT_EQ(static_cast<long>(lines.size()), count + 1);
+    const std::size_t status = spec.axes.size() + 1;  // the field after index and the axes
+    for (long i = 0; i < count; ++i) {
+      const std::string& line = lines[static_cast<std::size_t>(i + 1)];
+      EXPECT_EQ(line.substr(0, line.find(',')), std::to_string(i));
+      std::size_t at = 0;
+      for (std::size_t f = 0; f < status; ++f) at = line.find(',', at) + 1;
+      EXPECT_EQ(line.substr(at, 3), "ok,") << line;
+    }
+  }
+}
+
+TEST(SweepSortedSummary, RowsBeyondTheMemoryBudgetAreMergedFromSortedRuns) {
+  // 5000 rows in a scrambled order, sorted with room for about 100 rows at a time
+  const long n = 5000;
+  std::vector<long> order(n);
+  for (long i = 0; i < n; ++i) order[static_cast<std::size_t>(i)] = (i * 2711) % n;  // 2711 is prime
+  std::string text = "# first line\nindex,value\n";
+  for (const long i : order) text += std::to_string(i) + ",row " + std::to_string(i) + "\n";
+  const std::string partial = testing::WriteTempFile("rows.partial", text);
+  const std::string output = testing::WriteTempFile("rows.csv", "");
+  WriteSortedSummary(partial, 2, "index,value", output, 100 * 80);
+  const std::vector<std::string> lines = LinesOf(output);
+  ASSERT_EQ(static_cast<long>(lines.size()), n + 1);
+  EXPECT_EQ(lines[0], "index,value");
+  for (long i = 0; i < n; ++i) {
+    EXPECT_EQ(lines[static_cast<std::size_t>(i + 1)], std::to_string(i) + ",row " + std::to_string(i));
+  }
+  // no sorted run is left behind
+  for (const auto& entry : std::filesystem::directory_iterator(::testing::TempDir())) {
+    EXPECT_EQ(entry.path().string().find(partial + ".sort"), std::string::npos);
+  }
 }
 
 TEST(SweepMpi, RefusesToRunWithoutAnInitialisedMpi) {

@@ -21,18 +21,24 @@ namespace {
 constexpr const char* kHelp = R"(usage: musclesim sweep SWEEP.yaml [-o PATH] [--jobs N] [--resume] [--quiet]
 
 Runs every point of the sweep (a base scenario with values overridden at dotted paths) and
-writes one summary CSV: index, one column per swept path, status (ok or failed), the metrics,
-steps, rhs_evals, wall_seconds, message; rows sorted by index.
+writes one summary CSV: index, one column per swept path, status (ok, failed, or invalid),
+the metrics, steps, rhs_evals, wall_seconds, message; rows sorted by index.
   -o PATH     overrides the sweep file's `output`
   --jobs N    worker threads (default: every core); points are handed out dynamically
-  --resume    skip the points already in PATH.partial (left by an interrupted sweep)
+  --resume    skip the points already in PATH.partial (left by an interrupted run of the
+              same sweep; malformed rows in it are dropped and run again)
   --quiet     no progress on standard error
-Finished rows are flushed to PATH.partial as they complete; PATH appears atomically at the
-end. SIGINT or SIGTERM stop the sweep after the running points, keeping PATH.partial.
+Sweeps of up to 10,000 points are validated point by point before anything runs; larger
+ones validate a sample up front (for a grid, every value of every axis) and the rest as
+they run, an invalid point giving an `invalid` row. A sweep has at most 1e9 points.
+Finished rows are flushed to PATH.partial as they complete, which a running sweep locks;
+PATH appears atomically at the end. SIGINT or SIGTERM stop the sweep after the running
+points, keeping PATH.partial.
 Under mpirun (built with -DMUSCLESIM_WITH_MPI=ON) the points are spread over the ranks and
 rank 0 writes the summary.
-Exit codes: 0 every point ok, 3 some points failed, 130 interrupted (resume with --resume),
-2 invalid input, 1 anything else.
+Exit codes: 0 every point ok, 3 some points failed, 2 invalid input (or some points were
+not valid scenarios: the summary is written), 130 interrupted (resume with --resume),
+1 anything else.
 )";
 
 // set by SIGINT or SIGTERM; the sweep polls it through the observer below
@@ -46,6 +52,9 @@ class CommandObserver final : public SweepObserver {
  public:
   explicit CommandObserver(bool quiet) : progress_(quiet) {}
   void OnProgress(long done, long total) override { progress_.Update(done, total); }
+  void OnNotice(const std::string& message) override {
+    std::cerr << "musclesim sweep: " << message << std::endl;
+  }
   bool StopRequested() override { return stop_signal != 0; }
   int OnRankError(int rank, const std::exception& error) override {
     std::cerr << "musclesim sweep: rank " << rank << ": " << error.what() << std::endl;
@@ -112,8 +121,16 @@ int SweepCommand(int argc, char** argv) {
   }
   if (!quiet) {
     std::cerr << "musclesim sweep: " << outcome.points << " points (" << outcome.ran << " run now, "
-              << outcome.resumed << " resumed), " << outcome.failed << " failed -> "
-              << options.output << "\n";
+              << outcome.resumed << " resumed), " << outcome.failed << " failed";
+    if (outcome.invalid > 0) std::cerr << ", " << outcome.invalid << " invalid";
+    std::cerr << " -> " << options.output << "\n";
+  }
+  // an invalid point is invalid input, found late: it outranks a solver failure
+  if (outcome.invalid > 0) {
+    std::cerr << "musclesim sweep: " << outcome.invalid << " of " << outcome.points
+              << " points are not valid scenarios (status invalid in " << options.output
+              << ", the reason in their message)\n";
+    return kExitInvalidInput;
   }
   return outcome.failed > 0 ? kExitSolverFailure : kExitSuccess;
 }

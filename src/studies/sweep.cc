@@ -1,5 +1,6 @@
 #include "musclesim/studies/sweep.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -7,6 +8,8 @@
 #include "musclesim/model/enum_names.h"
 #include "musclesim/io/scenario.h"
 #include "io/yaml_fields.h"
+#include "studies/sweep_point_error.h"
+#include "studies/sweep_signature.h"
 
 namespace musclesim {
 
@@ -42,30 +45,32 @@ double Uniform(std::uint64_t seed, long index, std::size_t axis) {
   return static_cast<double>(h >> 11) * 0x1.0p-53;
 }
 
-// count values from `from` to `to`, both ends exact; geometric with `log_scale`.
-std::vector<std::string> Spaced(double from, double to, long count, bool log_scale) {
-  std::vector<std::string> values;
-  for (long i = 0; i < count; ++i) {
-    double v;
-    if (i == 0) {
-      v = from;
-    } else if (i == count - 1) {
-      v = to;
-    } else if (log_scale) {
-      // in decades, so that decade steps land on round values (1e-5, not 1.0000000000000016e-05)
-      v = std::pow(10.0, std::log10(from) + (std::log10(to) - std::log10(from)) * i / (count - 1));
-    } else {
-      v = from + (to - from) * i / (count - 1);
-    }
-    values.push_back(FormatNumber(v));
+// Value i of `count` from `from` to `to`, both ends exact; geometric with `log_scale`.
+std::string Spaced(double from, double to, long count, long i, bool log_scale) {
+  double v;
+  if (i == 0) {
+    v = from;
+  } else if (i == count - 1) {
+    v = to;
+  } else if (log_scale) {
+    // in decades, so that decade steps land on round values (1e-5, not 1.0000000000000016e-05)
+    v = std::pow(10.0, std::log10(from) + (std::log10(to) - std::log10(from)) * i / (count - 1));
+  } else {
+    v = from + (to - from) * static_cast<double>(i) / static_cast<double>(count - 1);
   }
-  return values;
+  return FormatNumber(v);
+}
+
+std::string AxisValue(const SweepAxis& axis, long i) {
+  return axis.is_range() ? Spaced(axis.from, axis.to, axis.count, i, axis.log_scale)
+                         : axis.values[static_cast<std::size_t>(i)];
 }
 
 SweepAxis ReadAxis(const yaml::Source& src, const YAML::Node& key, const YAML::Node& node,
                    SweepMode mode) {
   SweepAxis axis;
   axis.path = key.as<std::string>();
+  axis.location = yaml::Location(src, key);
   const std::string where = "parameters." + axis.path;
   if (node.IsSequence()) {
     if (node.size() == 0) yaml::Fail(src, node, where, "[]", "needs at least one value");
@@ -106,20 +111,63 @@ SweepAxis ReadAxis(const yaml::Source& src, const YAML::Node& key, const YAML::N
     return axis;
   }
   const YAML::Node count_node = yaml::Required(src, node, where, "count");
-  const int count = yaml::ReadInteger(src, count_node, where + ".count");
-  if (count < 1) yaml::Fail(src, count_node, where + ".count", yaml::Describe(count_node), "must be >= 1");
-  axis.values = Spaced(axis.from, axis.to, count, axis.log_scale);
+  axis.count = yaml::ReadInteger(src, count_node, where + ".count");
+  if (axis.count < 1) yaml::Fail(src, count_node, where + ".count", yaml::Describe(count_node), "must be >= 1");
   return axis;
+}
+
+// The points checked before anything runs: all of a small sweep; of a large one, point 0
+// and, for a grid, the lines through it (every value of every axis, the others at their
+// first value), or the first points of a zip or random sweep; at most kUpFrontPoints.
+std::vector<long> UpFrontPoints(const SweepSpec& spec) {
+  const long points = PointCount(spec);
+  std::vector<long> chosen;
+  if (points <= kUpFrontPoints || spec.mode != SweepMode::kGrid) {
+    for (long i = 0; i < std::min(points, kUpFrontPoints); ++i) chosen.push_back(i);
+    return chosen;
+  }
+  chosen.push_back(0);
+  long stride = 1;  // index step of one value along axis k: the product of the later axes
+  for (std::size_t k = spec.axes.size(); k-- > 0;) {
+    const long n = AxisLength(spec.axes[k]);
+    for (long j = 1; j < n && static_cast<long>(chosen.size()) < kUpFrontPoints; ++j) {
+      chosen.push_back(j * stride);
+    }
+    stride *= n;
+  }
+  std::sort(chosen.begin(), chosen.end());
+  return chosen;
+}
+
+// Requires the product of the axis lengths within kMaxSweepPoints, without overflowing.
+void CheckGridSize(const yaml::Source& src, const YAML::Node& parameters, const SweepSpec& spec) {
+  long count = 1;
+  bool overflow = false;
+  std::string lengths;
+  for (const SweepAxis& axis : spec.axes) {
+    overflow = overflow || __builtin_mul_overflow(count, AxisLength(axis), &count);
+    lengths += (lengths.empty() ? "" : " x ") + std::to_string(AxisLength(axis));
+  }
+  if (overflow || count > kMaxSweepPoints) {
+    yaml::Fail(src, parameters, "parameters",
+               lengths + " = " + (overflow ? "more than 9e18" : std::to_string(count)) + " points",
+               "a sweep may have at most 1e9 points: a running sweep keeps a bit per point in "
+               "memory and about 150 bytes per point on disk (150 GB at 1e9)");
+  }
 }
 
 }  // namespace
 
+long AxisLength(const SweepAxis& axis) {
+  return axis.is_range() ? axis.count : static_cast<long>(axis.values.size());
+}
+
 long PointCount(const SweepSpec& spec) {
   if (spec.mode == SweepMode::kRandom) return spec.samples;
   if (spec.axes.empty()) return 0;
-  if (spec.mode == SweepMode::kZip) return static_cast<long>(spec.axes.front().values.size());
+  if (spec.mode == SweepMode::kZip) return AxisLength(spec.axes.front());
   long count = 1;
-  for (const SweepAxis& a : spec.axes) count *= static_cast<long>(a.values.size());
+  for (const SweepAxis& a : spec.axes) count *= AxisLength(a);
   return count;
 }
 
@@ -129,14 +177,14 @@ std::vector<std::string> PointValues(const SweepSpec& spec, long index) {
     case SweepMode::kGrid: {
       long rest = index;
       for (std::size_t k = spec.axes.size(); k-- > 0;) {
-        const long n = static_cast<long>(spec.axes[k].values.size());
-        values[k] = spec.axes[k].values[rest % n];
+        const long n = AxisLength(spec.axes[k]);
+        values[k] = AxisValue(spec.axes[k], rest % n);
         rest /= n;
       }
       break;
     }
     case SweepMode::kZip:
-      for (std::size_t k = 0; k < spec.axes.size(); ++k) values[k] = spec.axes[k].values[index];
+      for (std::size_t k = 0; k < spec.axes.size(); ++k) values[k] = AxisValue(spec.axes[k], index);
       break;
     case SweepMode::kRandom:
       for (std::size_t k = 0; k < spec.axes.size(); ++k) {
@@ -190,16 +238,26 @@ SweepSpec LoadSweep(const std::string& path) {
       yaml::Fail(src, samples, "samples", yaml::Describe(samples), "must be an integer from 1 to 1e9");
     }
     spec.samples = static_cast<long>(n);
-  } else if (root["samples"]) {
-    yaml::Fail(src, root["samples"], "samples", yaml::Describe(root["samples"]),
-               "is for mode random only");
-  }
-  if (root["seed"]) {
-    const double seed = yaml::ReadNumber(src, root["seed"], "seed");
-    if (!(seed >= 0 && seed <= 9.007199254740992e15) || seed != std::floor(seed)) {
-      yaml::Fail(src, root["seed"], "seed", yaml::Describe(root["seed"]), "must be an integer >= 0");
+    // no default seed: a documented, reproducible sweep names the seed it draws from
+    const YAML::Node seed = root["seed"];
+    if (!seed) {
+      throw InputError("seed (" + yaml::Location(src, root) +
+                       "): missing required key: mode random draws every value from a hash "
+                       "of (seed, index, axis); give an integer >= 0");
     }
-    spec.seed = static_cast<std::uint64_t>(seed);
+    const double value = yaml::ReadNumber(src, seed, "seed");
+    if (!(value >= 0 && value <= 9.007199254740992e15) || value != std::floor(value)) {
+      yaml::Fail(src, seed, "seed", yaml::Describe(seed), "must be an integer from 0 to 2^53");
+    }
+    spec.seed = static_cast<std::uint64_t>(value);
+  } else {
+    for (const char* key : {"samples", "seed"}) {
+      if (root[key]) {
+        yaml::Fail(src, root[key], key, yaml::Describe(root[key]),
+                   "is for mode random only (this sweep is " + std::string(ToString(spec.mode)) +
+                       ")");
+      }
+    }
   }
 
   const YAML::Node parameters = yaml::Required(src, root, "", "parameters");
@@ -210,17 +268,14 @@ SweepSpec LoadSweep(const std::string& path) {
   for (const auto& entry : parameters) {
     spec.axes.push_back(ReadAxis(src, entry.first, entry.second, spec.mode));
     if (spec.mode == SweepMode::kZip &&
-        spec.axes.back().values.size() != spec.axes.front().values.size()) {
+        AxisLength(spec.axes.back()) != AxisLength(spec.axes.front())) {
       yaml::Fail(src, entry.second, "parameters." + spec.axes.back().path,
-                 std::to_string(spec.axes.back().values.size()) + " values",
+                 std::to_string(AxisLength(spec.axes.back())) + " values",
                  "zip needs every axis as long as the first (" +
-                     std::to_string(spec.axes.front().values.size()) + " values)");
+                     std::to_string(AxisLength(spec.axes.front())) + " values)");
     }
   }
-  if (PointCount(spec) > 1000000000L) {
-    yaml::Fail(src, parameters, "parameters", std::to_string(PointCount(spec)) + " points",
-               "a sweep may have at most 1e9 points");
-  }
+  if (spec.mode == SweepMode::kGrid) CheckGridSize(src, parameters, spec);
 
   const YAML::Node metrics = yaml::Required(src, root, "", "metrics");
   if (!metrics.IsSequence() || metrics.size() == 0) {
@@ -271,27 +326,18 @@ SweepSpec LoadSweep(const std::string& path) {
     spec.output = yaml::ReadString(src, root["output"], "output");
   }
 
-  // every point is a full scenario: validate them all before anything runs
+  // every point is a full scenario: validate them (or, for a large sweep, a sample of them)
+  // before anything runs; a point's error is told in terms of the file at fault
+  spec.base_digest = Digest(yaml::ReadText(spec.base));
   const ScenarioTemplate base_template(spec.base);
   const long points = PointCount(spec);
-  const bool keep = points <= kKeptScenarioLimit;
-  for (long i = 0; i < points; ++i) {
+  const bool all = points <= kUpFrontPoints;
+  for (const long i : UpFrontPoints(spec)) {
     try {
       ScenarioSpec scenario = base_template.Instantiate(PointOverrides(spec, i));
-      if (keep) spec.scenarios.push_back(std::move(scenario));
+      if (all) spec.scenarios.push_back(std::move(scenario));
     } catch (const InputError& e) {
-      // name the axis whose value the message is about, else every axis of the point
-      const std::vector<std::string> values = PointValues(spec, i);
-      std::string point;
-      YAML::Node where = parameters;
-      for (std::size_t k = 0; k < spec.axes.size(); ++k) {
-        point += (k ? ", " : "") + spec.axes[k].path + "=" + values[k];
-        if (std::string(e.what()).find(spec.axes[k].path) != std::string::npos) {
-          where.reset(parameters[spec.axes[k].path]);
-        }
-      }
-      throw InputError(yaml::Location(src, where) + ": point " + std::to_string(i) + " (" + point +
-                       ") is not a valid scenario: " + e.what());
+      throw InputError(PointErrorExplainer(spec, base_template).Explain(i, e.what()).message);
     }
   }
   return spec;

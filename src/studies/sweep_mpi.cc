@@ -20,13 +20,27 @@ namespace {
 enum Tag : int {
   kRequest = 1,  // worker -> root: {1 for more work or 0 when it stops, its thread count}
   kWork = 2,     // root -> worker: indices (longs); none means stop
-  kResult = 3,   // worker -> root: finished rows, one per line, "F" or "O" in front
+  kResult = 3,   // worker -> root: finished rows, one per line, its status letter in front
 };
+
+// A row's status as one letter on the wire: O ok, F failed, I invalid.
+char StatusLetter(RowStatus status) {
+  switch (status) {
+    case RowStatus::kOk: return 'O';
+    case RowStatus::kFailed: return 'F';
+    case RowStatus::kInvalid: return 'I';
+  }
+  return '?';
+}
+
+RowStatus StatusOfLetter(char letter) {
+  return letter == 'F' ? RowStatus::kFailed : letter == 'I' ? RowStatus::kInvalid : RowStatus::kOk;
+}
 
 std::string Encode(const std::vector<WorkerPool::Row>& rows) {
   std::string text;
   for (const WorkerPool::Row& row : rows) {
-    text.append(row.failed ? "F" : "O").append(row.text).append("\n");
+    text.append(1, StatusLetter(row.status)).append(row.text).append("\n");
   }
   return text;
 }
@@ -34,19 +48,15 @@ std::string Encode(const std::vector<WorkerPool::Row>& rows) {
 // Rank 0: serves requests, runs its own share, gathers every row.
 SweepOutcome Root(const SweepSpec& spec, const SweepRunOptions& options, int ranks,
                   SweepObserver& observer, WorkerPool& pool) {
-  const long points = PointCount(spec);
-  SummaryFile summary(options.output, SummaryHeader(spec), options.resume, points);
-  const std::vector<long> todo = summary.Remaining();
+  SummaryFile summary(spec, options.output, options.resume);
+  if (!summary.dropped().empty()) observer.OnNotice(summary.dropped());
+  const long points = summary.Points();
   observer.OnProgress(summary.Count(), points);
 
-  std::size_t next = 0;
   const auto chunk = [&](int workers) {
     // small chunks near the end keep every rank busy until the last point
-    const std::size_t left = todo.size() - next;
-    const std::size_t size = std::clamp<std::size_t>(left / (4 * ranks * workers), 1, 64);
-    std::vector<long> indices(todo.begin() + next, todo.begin() + next + std::min(size, left));
-    next += indices.size();
-    return indices;
+    const long size = std::clamp<long>(summary.Unhanded() / (4L * ranks * workers), 1, 64);
+    return summary.Hand(size);
   };
 
   int stopped_ranks = 0;
@@ -57,14 +67,14 @@ SweepOutcome Root(const SweepSpec& spec, const SweepRunOptions& options, int ran
       pool.Stop();
       stopping = closed = true;
     }
-    if (!closed && next >= todo.size()) {
+    if (!closed && summary.Unhanded() == 0) {
       pool.Close();
       closed = true;
     }
     if (!closed && pool.Queued() < static_cast<std::size_t>(pool.jobs())) {
       pool.Push(chunk(pool.jobs()));
     }
-    for (const WorkerPool::Row& row : pool.Take()) summary.Add(row.index, row.text, row.failed);
+    for (const WorkerPool::Row& row : pool.Take()) summary.Add(row.index, row.text, row.status);
 
     int waiting = 0;
     MPI_Status status;
@@ -78,7 +88,7 @@ SweepOutcome Root(const SweepSpec& spec, const SweepRunOptions& options, int ran
       int wants[2] = {0, 1};  // {wants more, that rank's threads}
       MPI_Recv(wants, 2, MPI_INT, status.MPI_SOURCE, kRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
       std::vector<long> indices;
-      if (wants[0] != 0 && next < todo.size() && !stopping) indices = chunk(wants[1]);
+      if (wants[0] != 0 && summary.Unhanded() > 0 && !stopping) indices = chunk(wants[1]);
       if (indices.empty()) ++stopped_ranks;
       MPI_Send(indices.data(), static_cast<int>(indices.size()), MPI_LONG, status.MPI_SOURCE,
                kWork, MPI_COMM_WORLD);
@@ -91,7 +101,7 @@ SweepOutcome Root(const SweepSpec& spec, const SweepRunOptions& options, int ran
       std::size_t start = 0;
       for (std::size_t end; (end = text.find('\n', start)) != std::string::npos; start = end + 1) {
         const std::string row = text.substr(start + 1, end - start - 1);
-        summary.Add(std::strtol(row.c_str(), nullptr, 10), row, text[start] == 'F');
+        summary.Add(std::strtol(row.c_str(), nullptr, 10), row, StatusOfLetter(text[start]));
       }
     }
     observer.OnProgress(summary.Count(), points);

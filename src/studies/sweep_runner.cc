@@ -1,11 +1,11 @@
 #include "musclesim/studies/sweep_runner.h"
 #include "studies/sweep_workers.h"
+#include "studies/sweep_point_error.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -17,17 +17,6 @@
 namespace musclesim {
 
 namespace {
-
-// RFC 4180 quoting for the free-text message column.
-std::string CsvField(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"') out += '"';
-    out += c == '\n' ? ' ' : c;
-  }
-  return out + "\"";
-}
 
 std::string MetricField(double value) { return std::isfinite(value) ? FormatFull(value) : ""; }
 
@@ -46,6 +35,7 @@ struct PointRunner::State {
   State(const SweepSpec& s, std::unique_ptr<ScenarioTemplate> b) : spec(s), base(std::move(b)) {}
   const SweepSpec& spec;
   std::unique_ptr<ScenarioTemplate> base;  // this thread's own copy
+  std::unique_ptr<PointErrorExplainer> explainer;  // made at this thread's first invalid point
   std::string trajectory_folder;
   Simulation simulation;                   // re-used by every point of this thread
   std::vector<TrajectoryPoint> trajectory;
@@ -60,32 +50,48 @@ PointRunner::PointRunner(const SweepSpec& spec, const ScenarioTemplate& base, st
 
 PointRunner::~PointRunner() = default;
 
-std::string PointRunner::Run(long index, bool& failed) {
+std::string PointRunner::Run(long index, RowStatus& status) {
   State& s = *state_;
   const std::vector<std::string> values = PointValues(s.spec, index);
   std::string row = std::to_string(index);
   for (const std::string& v : values) row.append(",").append(CsvField(v));
 
+  // kept from validation for small sweeps; built (and so validated) here for large ones
+  std::optional<ScenarioSpec> built;
+  if (s.spec.scenarios.empty()) {
+    try {
+      built = s.base->Instantiate(PointOverrides(s.spec, index));
+    } catch (const InputError& e) {
+      std::string message = e.what();
+      try {
+        if (!s.explainer) s.explainer = std::make_unique<PointErrorExplainer>(s.spec, *s.base);
+        message = s.explainer->Explain(index, message).message;
+      } catch (const std::exception&) {
+        // the base file went away since the sweep started: keep the reader's own message
+      }
+      status = RowStatus::kInvalid;
+      row.append(",").append(ToString(status));
+      for (std::size_t m = 0; m < s.spec.metrics.size(); ++m) row += ',';
+      return row.append(",0,0,0,").append(CsvField(message));
+    }
+  }
+  const ScenarioSpec& scenario =
+      built ? *built : s.spec.scenarios[static_cast<std::size_t>(index)];
+
   RunStats stats;
-  double phase_tolerance = 0.0;
   s.trajectory.clear();
   try {
-    // kept from validation for modest sweeps; rebuilt from the template for huge ones
-    std::optional<ScenarioSpec> rebuilt;
-    if (s.spec.scenarios.empty()) rebuilt = s.base->Instantiate(PointOverrides(s.spec, index));
-    const ScenarioSpec& scenario =
-        rebuilt ? *rebuilt : s.spec.scenarios[static_cast<std::size_t>(index)];
     const ActuatorSystem system(scenario.model.params, scenario.actuator, scenario.activation,
                                 scenario.loads);
     stats = s.simulation.Run(system, scenario.solver, scenario.Request(), s.trajectory);
-    phase_tolerance = scenario.PhaseTolerance();
   } catch (const std::exception& e) {
     stats.status = RunStatus::kFailed;
     stats.message = e.what();
   }
-  failed = stats.status == RunStatus::kFailed;
+  const bool failed = stats.status == RunStatus::kFailed;
+  status = failed ? RowStatus::kFailed : RowStatus::kOk;
 
-  row += failed ? ",failed" : ",ok";
+  row.append(",").append(ToString(status));
   for (Metric m : s.spec.metrics) {
     row += ',';
     if (!s.trajectory.empty() && !failed) {
@@ -102,78 +108,9 @@ std::string PointRunner::Run(long index, bool& failed) {
   if (keep && !s.trajectory.empty()) {
     std::filesystem::create_directories(s.trajectory_folder);
     WriteOutput(s.trajectory_folder + "/" + std::to_string(index) + ".csv",
-                FormatTrajectoryCsv(s.trajectory, phase_tolerance));
+                FormatTrajectoryCsv(s.trajectory, scenario.PhaseTolerance()));
   }
   return row;
-}
-
-SummaryFile::SummaryFile(std::string path, std::string header, bool resume, long points)
-    : path_(std::move(path)),
-      partial_path_(path_ + ".partial"),
-      header_(std::move(header)),
-      points_(points),
-      partial_(nullptr, &std::fclose) {
-  const bool exists = std::filesystem::exists(partial_path_);
-  if (exists && !resume) {
-    throw InputError(partial_path_ + " exists: an earlier sweep was interrupted. Pass --resume "
-                     "to continue it, or delete the file to start again");
-  }
-  if (exists) {
-    // keep every complete row; a line cut short by a kill has no newline and is dropped
-    std::ifstream in(partial_path_);
-    std::string line;
-    std::getline(in, line);
-    if (line != header_) {
-      throw InputError(partial_path_ + ": its header differs from this sweep's (" + header_ +
-                       "): it belongs to another sweep");
-    }
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    std::size_t start = 0;
-    for (std::size_t end; (end = text.find('\n', start)) != std::string::npos; start = end + 1) {
-      const std::string row = text.substr(start, end - start);
-      char* tail = nullptr;
-      const long index = std::strtol(row.c_str(), &tail, 10);
-      if (tail == row.c_str() || *tail != ',' || index < 0 || index >= points) continue;
-      if (rows_.emplace(index, row).second && row.find(",failed,") != std::string::npos) ++failed_;
-    }
-  }
-  resumed_ = Count();
-  // rewrite the partial file with exactly the rows kept, then append to it
-  partial_.reset(std::fopen(partial_path_.c_str(), "w"));
-  if (!partial_) throw std::runtime_error(partial_path_ + ": cannot write");
-  std::fprintf(partial_.get(), "%s\n", header_.c_str());
-  for (const auto& [index, row] : rows_) std::fprintf(partial_.get(), "%s\n", row.c_str());
-  std::fflush(partial_.get());
-}
-
-void SummaryFile::Add(long index, const std::string& row, bool failed) {
-  std::fprintf(partial_.get(), "%s\n", row.c_str());
-  std::fflush(partial_.get());
-  if (rows_.emplace(index, row).second && failed) ++failed_;
-}
-
-std::vector<long> SummaryFile::Remaining() const {
-  std::vector<long> todo;
-  for (long i = 0; i < points_; ++i) {
-    if (rows_.count(i) == 0) todo.push_back(i);
-  }
-  return todo;
-}
-
-SweepOutcome SummaryFile::Close() {
-  SweepOutcome outcome;
-  outcome.points = points_;
-  outcome.resumed = resumed_;
-  outcome.ran = Count() - resumed_;
-  outcome.failed = failed_;
-  outcome.interrupted = Count() < points_;
-  if (outcome.interrupted) return outcome;
-  std::string text = header_ + "\n";
-  for (const auto& [index, row] : rows_) text += row + "\n";
-  WriteOutput(path_, text);
-  partial_.reset();
-  std::filesystem::remove(partial_path_);
-  return outcome;
 }
 
 WorkerPool::WorkerPool(const SweepSpec& spec, const ScenarioTemplate& base, std::string output,
@@ -208,10 +145,10 @@ void WorkerPool::Work(const SweepSpec& spec, const ScenarioTemplate& base,
         index = queue_.front();
         queue_.pop_front();
       }
-      bool failed = false;
-      std::string row = runner.Run(index, failed);
+      RowStatus status = RowStatus::kOk;
+      std::string row = runner.Run(index, status);
       std::lock_guard<std::mutex> lock(mutex_);
-      done_.push_back({index, std::move(row), failed});
+      done_.push_back({index, std::move(row), status});
       row_ready_.notify_all();
     }
   } catch (...) {
@@ -274,25 +211,34 @@ int WorkerThreads(int jobs) {
 SweepOutcome RunSweep(const SweepSpec& spec, const SweepRunOptions& options) {
   SweepObserver silent;
   SweepObserver& observer = options.observer != nullptr ? *options.observer : silent;
-  const long points = PointCount(spec);
-  SummaryFile summary(options.output, SummaryHeader(spec), options.resume, points);
-  const std::vector<long> todo = summary.Remaining();
+  SummaryFile summary(spec, options.output, options.resume);
+  if (!summary.dropped().empty()) observer.OnNotice(summary.dropped());
+  const long points = summary.Points();
   observer.OnProgress(summary.Count(), points);
 
   const ScenarioTemplate base(spec.base);
-  WorkerPool pool(spec, base, options.output,
-                  std::min<long>(WorkerThreads(options.jobs), std::max<long>(1, todo.size())));
-  pool.Push(todo);
-  pool.Close();
-  bool stopping = false;
+  const int jobs = static_cast<int>(
+      std::min<long>(WorkerThreads(options.jobs), std::max<long>(1, summary.Unhanded())));
+  WorkerPool pool(spec, base, options.output, jobs);
+  bool stopping = false, closed = false;
   while (!pool.Finished()) {
     // the observer is asked on this thread only, so it need not be thread-safe
     if (!stopping && observer.StopRequested()) {
       pool.Stop();
-      stopping = true;
+      stopping = closed = true;
     }
-    pool.Wait(0.2);
-    for (const WorkerPool::Row& row : pool.Take()) summary.Add(row.index, row.text, row.failed);
+    // indices go out a few at a time, so that a sweep of any size starts at once
+    if (!closed && pool.Queued() < static_cast<std::size_t>(4 * jobs)) {
+      const std::vector<long> indices = summary.Hand(16L * jobs);
+      if (indices.empty()) {
+        pool.Close();
+        closed = true;
+      } else {
+        pool.Push(indices);
+      }
+    }
+    pool.Wait(closed ? 0.2 : 0.05);
+    for (const WorkerPool::Row& row : pool.Take()) summary.Add(row.index, row.text, row.status);
     observer.OnProgress(summary.Count(), points);
   }
   return summary.Close();

@@ -1,12 +1,10 @@
 // Private: the machinery of a sweep, shared by the thread and MPI runners: one point's
-// runner, the summary file with its partial, and the pool of worker threads.
+// runner and the pool of worker threads (the summary file is in sweep_summary.h).
 #pragma once
 
 #include <condition_variable>
-#include <cstdio>
 #include <deque>
 #include <exception>
-#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -15,6 +13,8 @@
 
 #include "musclesim/io/scenario.h"
 #include "musclesim/studies/sweep_runner.h"
+#include "studies/sweep_summary.h"
+#include "studies/sweep_summary_row.h"
 
 namespace musclesim {
 
@@ -25,38 +25,13 @@ class PointRunner {
   PointRunner(const SweepSpec& spec, const ScenarioTemplate& base, std::string output);
   ~PointRunner();
 
-  // Runs point `index` and returns its summary row (no newline); `failed` tells its status.
-  std::string Run(long index, bool& failed);
+  // Runs point `index` and returns its summary row (no newline) and status. A point not
+  // validated up front that is not a valid scenario gives an `invalid` row saying why.
+  std::string Run(long index, RowStatus& status);
 
  private:
   struct State;
   std::unique_ptr<State> state_;
-};
-
-// The rows of a sweep, kept in PATH.partial while it runs and written to PATH at the end.
-class SummaryFile {
- public:
-  // Opens PATH.partial: on `resume` it keeps the complete rows already there (the header
-  // must match), otherwise it refuses to overwrite one (InputError) and starts it anew.
-  SummaryFile(std::string path, std::string header, bool resume, long points);
-
-  long Count() const { return static_cast<long>(rows_.size()); }
-  // The indices not yet in the summary, in order.
-  std::vector<long> Remaining() const;
-  // Appends one finished row and flushes it. Not thread-safe: callers serialise.
-  void Add(long index, const std::string& row, bool failed);
-  // The sweep's outcome; when every point is in, writes PATH atomically with the rows
-  // sorted by index and removes PATH.partial.
-  SweepOutcome Close();
-  const std::string& partial_path() const { return partial_path_; }
-
- private:
-  std::string path_, partial_path_, header_;
-  long points_ = 0;
-  long resumed_ = 0;  // rows taken from an earlier PATH.partial
-  std::map<long, std::string> rows_;
-  long failed_ = 0;
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> partial_;
 };
 
 // Worker threads that run the points pushed to them, each thread with its own
@@ -66,7 +41,7 @@ class WorkerPool {
   struct Row {
     long index;
     std::string text;
-    bool failed;
+    RowStatus status;
   };
 
   WorkerPool(const SweepSpec& spec, const ScenarioTemplate& base, std::string output, int jobs);

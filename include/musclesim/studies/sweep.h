@@ -19,42 +19,61 @@ std::string_view ToString(SweepMode mode);
 enum class TrajectoryPolicy { kNone, kAll, kFailed };
 std::string_view ToString(TrajectoryPolicy policy);
 
-// One swept parameter. Grid and zip take `values`; random draws from [from, to] (uniform,
-// or log-uniform with `log_scale`), or picks uniformly among `values` when given a list.
+// One swept parameter: a list of `values`, or a range [from, to]. Grid and zip space a
+// range's `count` values evenly (geometrically with `log_scale`), computed when asked for,
+// so that a long axis costs no memory; random draws from it (uniform, or log-uniform with
+// `log_scale`), or picks uniformly among `values` when given a list.
 struct SweepAxis {
-  std::string path;                  // dotted path into the scenario, e.g. load[0].value
-  std::vector<std::string> values;   // the values as text, exactly as --set receives them
-  double from = 0.0, to = 0.0;       // random: the draw's range
-  bool log_scale = false;
+  std::string path;                  // dotted path into the scenario, e.g. load[0].value [-]
+  std::vector<std::string> values;   // the values as text, exactly as --set receives them [-]
+  double from = 0.0, to = 0.0;       // a range's ends, in the unit of the swept value
+  long count = 0;                    // grid and zip: values in the range; 0 for a list [-]
+  bool log_scale = false;            // geometric spacing (draws) in the range [-]
+  std::string location;              // "file:line:column" of the axis in the sweep file [-]
   bool is_range() const { return values.empty(); }
 };
 
 struct SweepSpec {
-  std::string source;                // the sweep file
-  std::string base;                  // the base scenario, resolved relative to the sweep file
+  std::string source;                // the sweep file [-]
+  std::string base;                  // the base scenario, resolved relative to the sweep file [-]
+  std::uint64_t base_digest = 0;     // hash of the base scenario file's bytes (resume checks it) [-]
   SweepMode mode = SweepMode::kGrid;
-  long samples = 0;                  // random: number of points
-  std::uint64_t seed = 1;            // random: the draws are a pure function of seed and index
+  long samples = 0;                  // random: number of points [-]
+  std::uint64_t seed = 0;            // random: the draws are a pure function of seed and index [-]
   std::vector<SweepAxis> axes;
   std::vector<Metric> metrics;
-  MetricOptions metric_options;
+  MetricOptions metric_options;      // units as in MetricOptions
   TrajectoryPolicy trajectories = TrajectoryPolicy::kNone;
-  std::string output;                // summary CSV, relative to the working directory
-  // The validated scenario of every point, kept from validation when there are at most
-  // kKeptScenarioLimit points (larger sweeps rebuild each point's scenario when it runs).
+  std::string output;                // summary CSV, relative to the working directory [-]
+  // The validated scenario of every point when all of them were validated up front (at most
+  // kUpFrontPoints points); empty otherwise, and then each point is built and validated
+  // when it runs, an invalid one becoming an `invalid` row of the summary.
   std::vector<ScenarioSpec> scenarios;
 };
 
-inline constexpr long kKeptScenarioLimit = 50000;
+// The most points a sweep may have. While it runs, a sweep keeps one bit per point in memory
+// (125 MB at 1e9) and each finished row, about 150 bytes, on disk in PATH.partial: 150 GB at
+// 1e9, and as much again for PATH. More would outgrow the disks of most machines.
+inline constexpr long kMaxSweepPoints = 1000000000L;
 
-// Reads and validates a sweep file, then every point of it against the base scenario, so
-// that nothing runs before all points are known to be valid. Throws InputError naming the
-// file, line, column and, for a bad point, the axis and value.
+// Sweeps of at most this many points are validated point by point before anything runs
+// (0.1 to 0.4 ms a point: a few seconds at most), so that a bad value fails at once. Larger
+// sweeps validate point 0 and, for a grid, every value of every axis with the other axes at
+// their first value (points of the grid, at most this many), and the rest as they run.
+inline constexpr long kUpFrontPoints = 10000;
+
+// Reads and validates a sweep file and its points (see kUpFrontPoints). Throws InputError:
+// for the sweep file, naming its file, line, column and key; for a point whose axis value
+// is bad, naming the axis, the value, the point and the axis's line and column; for an error
+// in the base scenario, naming the base file's line and column.
 SweepSpec LoadSweep(const std::string& path);
 
 // Number of points: the product of the axis lengths (grid), their common length (zip), or
 // `samples` (random).
 long PointCount(const SweepSpec& spec);
+
+// The number of values of a grid or zip axis.
+long AxisLength(const SweepAxis& axis);
 
 // The axis values of point `index` (0-based), in axis order. Grid: the last axis varies
 // fastest. Random: each draw depends only on (seed, index, axis), so any point can be made

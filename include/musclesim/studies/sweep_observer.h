@@ -5,6 +5,7 @@
 #pragma once
 
 #include <exception>
+#include <string>
 
 namespace musclesim {
 
@@ -21,6 +22,11 @@ class SweepObserver {
   // `done` never decreases. Called only on the thread that runs the sweep, and under MPI
   // on rank 0 alone. Throttling output is the observer's business.
   virtual void OnProgress(long /*done*/, long /*total*/) {}
+
+  // Something the user should know that does not stop the sweep, as one printable line:
+  // rows of PATH.partial dropped on resume, and why. Called before any point runs, on the
+  // thread that runs the sweep (rank 0 under MPI).
+  virtual void OnNotice(const std::string& /*message*/) {}
 
   // Polled on the thread that runs the sweep (on every MPI rank) between rows and at least
   // every 0.2 s. Once it returns true the sweep starts no new points, lets the running ones

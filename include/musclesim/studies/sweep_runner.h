@@ -12,28 +12,37 @@
 
 namespace musclesim {
 
-// The summary's header: index, one column per axis (its path), status, the metrics, steps,
+// The summary's header: index, one column per axis (its path), status (ok, failed, or
+// invalid for a point found not to be a valid scenario when it ran), the metrics, steps,
 // rhs_evals, wall_seconds, message.
 std::string SummaryHeader(const SweepSpec& spec);
 
 struct SweepRunOptions {
-  std::string output;   // summary CSV path; PATH.partial holds the rows done so far
-  int jobs = 0;         // worker threads (per MPI rank); 0: std::thread::hardware_concurrency
-  bool resume = false;  // skip the indices already in PATH.partial
+  std::string output;   // summary CSV path; PATH.partial holds the rows done so far [-]
+  int jobs = 0;         // worker threads (per MPI rank); 0: std::thread::hardware_concurrency [-]
+  bool resume = false;  // skip the points whose rows are already in PATH.partial [-]
   SweepObserver* observer = nullptr;  // not owned; null: no progress, never stops early
 };
 
 struct SweepOutcome {
-  long points = 0;      // in the sweep
-  long resumed = 0;     // taken from PATH.partial
-  long ran = 0;         // run now
-  long failed = 0;      // failed rows in the summary
+  long points = 0;      // in the sweep [-]
+  long resumed = 0;     // rows taken from PATH.partial [-]
+  long ran = 0;         // points run now [-]
+  long failed = 0;      // failed rows in the summary [-]
+  long invalid = 0;     // invalid rows in the summary (points not valid scenarios) [-]
   bool interrupted = false;
 };
 
 // Runs every point not yet in the summary on `options.jobs` threads of this process,
-// reporting to `options.observer`. Throws InputError when PATH.partial exists without
-// `resume` or belongs to another sweep, and rethrows a worker's I/O error.
+// reporting to `options.observer`.
+//
+// PATH.partial starts with a signature of the sweep (a hash of the base scenario file, the
+// points and the metrics) and is locked while the sweep runs. Throws InputError when
+// another running sweep holds PATH.partial, when it exists without `resume`, or when it
+// belongs to another sweep (naming what changed). On `resume`, rows of PATH.partial that
+// are malformed (field count, index, axis values, status, numbers) or repeat a point are
+// dropped and their points run again; the observer's OnNotice says so. Rethrows a
+// worker's I/O error.
 SweepOutcome RunSweep(const SweepSpec& spec, const SweepRunOptions& options);
 
 }  // namespace musclesim
