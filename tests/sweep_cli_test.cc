@@ -228,7 +228,7 @@ TEST(SweepCli, ErrorsNameTheBaseFileOrTheAxisThatCausedThem) {
   EXPECT_EQ(base.first, 2);
   EXPECT_THAT(base.second, HasSubstr("cli_base_error_base.yaml (the base scenario of the sweep "));
   EXPECT_THAT(base.second, HasSubstr("model.velocity.epsilon = -0.001 ("));
-  EXPECT_THAT(base.second, HasSubstr("cli_base_error_base.yaml:19:41): must be finite and > 0"));
+  EXPECT_THAT(base.second, HasSubstr("cli_base_error_base.yaml:19:41): must be between 1e-12 v_max"));
   const auto axis = SweepExit(SweepWithBase("cli_axis_error",
       "parameters:\n  load[0].after: [10, 20]\n  model.velocity.n: [3, 0]\nmetrics: [work]\n"),
       "cli_axis_error");

@@ -157,7 +157,7 @@ metrics: [work]
   EXPECT_EQ(testing::InputErrorOf(sweep, [&] { LoadSweep(sweep); }),
             "FILE:4:3: axis model.velocity.epsilon = -1 makes point 2 (model.velocity.n=1, "
             "model.velocity.epsilon=-1) an invalid scenario: model.velocity.epsilon = -1 (--set): "
-            "must be finite and > 0 [m/s]");
+            "must be between 1e-12 v_max and v_max = 1 [m/s] (smaller: too stiff to integrate in double precision; larger: the regularisation replaces the power law)");
 }
 
 TEST(Sweep, AnErrorInTheBaseScenarioNamesTheBaseFileLineAndColumn) {
@@ -178,7 +178,7 @@ TEST(Sweep, AnErrorInTheBaseScenarioNamesTheBaseFileLineAndColumn) {
   EXPECT_THAT(message, HasSubstr(base + " (the base scenario of the sweep FILE) is not a valid "
                                  "scenario: model.velocity.epsilon = -0.001 (" + base + ":" +
                                  std::to_string(line) + ":" + std::to_string(column) +
-                                 "): must be finite and > 0 [m/s]"));
+                                 "): must be between 1e-12 v_max"));
   EXPECT_THAT(message, ::testing::Not(HasSubstr("FILE:1:1")));
 }
 
@@ -192,7 +192,7 @@ metrics: [work]
   EXPECT_THAT(testing::InputErrorOf(sweep, [&] { LoadSweep(sweep); }),
               HasSubstr("point 3 (initial.length=0.19, limits.max_length=0.15) is not a valid "
                         "scenario, though each of its values is valid alone: limits.max_length "
-                        "= 0.15 (--set): must be above initial.length = 0.19 [m]"));
+                        "= 0.15 (--set): must be above initial.length = 0.19"));
 }
 
 TEST(Sweep, SeedAndSamplesAreForRandomModeOnly) {
@@ -615,7 +615,7 @@ metrics: [work]
     EXPECT_THAT(line, HasSubstr("point 3 (load[0].after=10, initial.length=0.19, "
                                 "limits.max_length=0.15) is not a valid scenario, though each of "
                                 "its values is valid alone: limits.max_length = 0.15 (--set): "
-                                "must be above initial.length = 0.19 [m]"));
+                                "must be above initial.length = 0.19"));
   }
   EXPECT_EQ(outcome.invalid, expected_invalid);
   EXPECT_TRUE(seen);
