@@ -10,6 +10,8 @@
 #include <functional>
 #include <memory>
 
+#include "support/canonical_actuator.h"
+
 namespace musclesim {
 namespace {
 
@@ -29,14 +31,7 @@ SolverOptions Tight() {
 }
 
 // A model that pulls nothing when u = 0 and k_p = 0: T = 0 (docs/model.md section 5).
-ModelParams SlackModel() {
-  ModelParams p;
-  p.f_iso = 100.0;
-  p.passive = {0.0, 100.0, 0.105};
-  p.active_length = {0.095, 0.105, 1.0, {{1.0, 1.0, 0.1}}};
-  p.velocity = {1.0, 3, 1e-3};
-  return p;
-}
+ModelParams SlackModel() { return testing::FlatModel(); }
 
 // Runs `system` from `length` at lengthening rate `rate` over [0, t_end], recording every
 // `interval`, and checks every recorded length and shortening velocity against x(t) and

@@ -20,16 +20,7 @@ using testing::ScenarioPath;
 using testing::Simulate;
 using ::testing::HasSubstr;
 
-// A model whose f_L is almost flat over the motion (one Gaussian 1 m wide) and with no
-// passive tension, so that an isotonic run reaches a true steady velocity.
-ModelParams FlatModel() {
-  ModelParams p;
-  p.f_iso = 100.0;
-  p.passive = {0.0, 100.0, 0.105};
-  p.active_length = {0.095, 0.105, 1.0, {{1.0, 1.0, 0.1}}};
-  p.velocity = {1.0, 3, 1e-3};
-  return p;
-}
+using testing::FlatModel;
 
 // The flat model, fully active, mass 0.01 kg, under a constant `load` from rest at
 // `length`, for 0.2 s recorded every 1 ms at rtol 1e-10.

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "musclesim/errors.h"
+#include "support/canonical_actuator.h"
 #include "support/numeric.h"
 
 namespace musclesim {
@@ -23,17 +24,7 @@ ModelParams Example() {
 
 // The canonical actuator of scenarios/*.yaml: three narrow Gaussians, the maximum of f
 // inside L_opt, n = 3.
-ModelParams Canonical() {
-  ModelParams p;
-  p.f_iso = 100.0;
-  p.passive = {1.0, 100.0, 0.105};
-  p.active_length = {0.095, 0.105, 1.0,
-                     {{0.35188944617853268, 20635.199147929347, 0.073556703926583866},
-                      {2.2575025981825489, 4125.1402656159307, 0.097194271247335401},
-                      {1.3136662819543681, 3009.3607405177986, 0.1301541244400391}}};
-  p.velocity = {1.0, 3, 1e-3};
-  return p;
-}
+ModelParams Canonical() { return testing::CanonicalModel(); }
 
 // T written out again from docs/model.md with plain std::exp and std::pow, sharing no code
 // with the library: eq. 1 (section 2), eqs. 3-4 and 13 (section 3), eq. 12 regularised

@@ -25,6 +25,18 @@ inline ModelParams CanonicalModel() {
   return p;
 }
 
+// A model whose f_L is almost flat over any motion of a few centimetres (one Gaussian 1 m
+// wide) and with no passive tension (k_p = 0): with u = 0 it pulls nothing (docs/model.md
+// section 5), and an isotonic run under it reaches a true steady velocity.
+inline ModelParams FlatModel() {
+  ModelParams p;
+  p.f_iso = 100.0;
+  p.passive = {0.0, 100.0, 0.105};
+  p.active_length = {0.095, 0.105, 1.0, {{1.0, 1.0, 0.1}}};
+  p.velocity = {1.0, 3, 1e-3};
+  return p;
+}
+
 // One experiment: the system, its run and its solver settings.
 struct Experiment {
   ActuatorSystem system;
