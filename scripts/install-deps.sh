@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libsundials-dev       # CVODE: the stiff integrator
+  libsuitesparse-dev    # KLU, the sparse direct solver behind linear_solver: sparse
   libeigen3-dev         # linear algebra of the Gaussian fit
   libyaml-cpp-dev       # scenario files
   libgtest-dev libgmock-dev googletest   # tests

@@ -70,7 +70,9 @@ TEST(Actuator, SystemsShareOneImmutableModel) {
                          {Load::Spring(200.0, 0.12), Load::Mass(2.0)});
   EXPECT_EQ(&a.model(), model.get());
   EXPECT_EQ(&b.model(), model.get());
-  EXPECT_EQ(model.use_count(), 3);
+  // the network form (docs/model.md 7.4) points at the same model too: no copy anywhere
+  EXPECT_EQ(a.network().elements()[0].model.get(), model.get());
+  EXPECT_EQ(b.network().elements()[0].model.get(), model.get());
   // each system's own inputs: m xddot = F - T(x, v, u) with its mass, load and activation
   const double x = 0.1, xdot = -0.01;
   EXPECT_NEAR(a.Acceleration(0.0, x, xdot), (30.0 - model->Evaluate(x, -xdot, 1.0).total) / 0.1,

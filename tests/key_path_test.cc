@@ -13,7 +13,10 @@ std::vector<std::string> Spelled(const std::string& path) {
   if (!steps) return {"malformed"};
   std::vector<std::string> out;
   for (const KeyPathStep& step : *steps) {
-    out.push_back(step.key.empty() ? "[" + std::to_string(step.index) + "]" : step.key);
+    // appended piece by piece: GCC 12 at -O3 warns falsely (-Wrestrict) on "[" + string
+    std::string text = step.key;
+    if (text.empty()) text.append("[").append(std::to_string(step.index)).append("]");
+    out.push_back(text);
   }
   return out;
 }

@@ -205,7 +205,7 @@ TEST(Simulation, ReachingZeroLengthIsAFailure) {
   // no load: the active actuator pulls itself shut from 1 cm
   const RunResult run = FlatIsotonic(0.0, 0.01).Run();
   EXPECT_EQ(run.stats.status, RunStatus::kFailed);
-  EXPECT_THAT(run.stats.message, HasSubstr("the length reached zero"));
+  EXPECT_THAT(run.stats.message, HasSubstr("the length of actuator reached zero"));
   // the root of x itself, located to ~1e-14 s at a speed below 1 m/s (atol 1e-13 m)
   EXPECT_NEAR(run.trajectory.back().sample.length, 0.0, 1e-12);
 }

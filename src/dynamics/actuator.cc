@@ -8,6 +8,26 @@
 
 namespace musclesim {
 
+namespace {
+
+// docs/model.md 7.4. The elements' order (actuator, damper, spring) makes the network's sum
+// of forces the same floating-point operations as Acceleration's, so both runs agree exactly.
+NetworkSystem AsNetwork(const std::shared_ptr<const TensionModel>& model,
+                        const ActuatorParams& actuator, const Waveform& activation,
+                        const std::vector<Load>& loads) {
+  std::vector<Node> nodes = {Node::Fixed("ground", 0.0),
+                             Node::Free("tip", actuator.mass, 0.0)};  // state set by each run
+  std::vector<Element> elements = {
+      Element::Actuator("actuator", "ground", "tip", model, activation),
+      Element::Damper("damper", "ground", "tip", actuator.damping),
+      Element::Spring("spring", "ground", "tip", actuator.stiffness, actuator.rest_length)};
+  std::vector<NodeLoad> node_loads;
+  for (const Load& load : loads) node_loads.push_back({"tip", load});
+  return NetworkSystem(std::move(nodes), std::move(elements), std::move(node_loads));
+}
+
+}  // namespace
+
 void Validate(const ActuatorParams& p) {
   Require(std::isfinite(p.mass) && p.mass > 0.0, "mass", p.mass, "must be finite and > 0 [kg]");
   Require(std::isfinite(p.damping) && p.damping >= 0.0, "damping", p.damping,
@@ -24,7 +44,8 @@ ActuatorSystem::ActuatorSystem(std::shared_ptr<const TensionModel> model,
       actuator_((Validate(actuator), actuator)),
       activation_((ValidateActivation(activation), std::move(activation))),
       loads_(std::move(loads)),
-      inverse_mass_(1.0 / (actuator.mass + loads_.AddedMass())) {}
+      inverse_mass_(1.0 / (actuator.mass + loads_.AddedMass())),
+      network_(AsNetwork(model_, actuator_, activation_, loads_.loads())) {}
 
 ActuatorSystem::ActuatorSystem(const ModelParams& model, const ActuatorParams& actuator,
                                Waveform activation, std::vector<Load> loads)

@@ -55,6 +55,30 @@ double Waveform::Evaluate(double t) const {
   return 0.0;
 }
 
+double Waveform::Slope(double t) const {
+  switch (kind) {
+    case WaveformKind::kConstant:
+    case WaveformKind::kStep:
+    case WaveformKind::kPulses:
+      return 0.0;
+    case WaveformKind::kRamp:
+      return t >= start && t < end ? (to - from) / (end - start) : 0.0;
+    case WaveformKind::kSine: {
+      const double omega = 2.0 * std::numbers::pi * frequency;
+      return amplitude * omega * std::cos(omega * t + phase);
+    }
+    case WaveformKind::kTable: {
+      if (t < points.front().t || t >= points.back().t) return 0.0;
+      const auto right = std::upper_bound(points.begin(), points.end(), t,
+                                          [](double s, const TablePoint& p) { return s < p.t; });
+      const TablePoint& a = *(right - 1);
+      const TablePoint& b = *right;
+      return (b.value - a.value) / (b.t - a.t);
+    }
+  }
+  return 0.0;
+}
+
 std::vector<double> Waveform::Breakpoints(double t0, double t1) const {
   std::vector<double> times;
   const auto add = [&](double t) {

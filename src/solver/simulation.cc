@@ -3,8 +3,6 @@
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
-#include <sunlinsol/sunlinsol_dense.h>
-#include <sunmatrix/sunmatrix_dense.h>
 
 #include <algorithm>
 #include <chrono>
@@ -15,6 +13,7 @@
 
 #include "musclesim/errors.h"
 #include "musclesim/model/enum_names.h"
+#include "linear_system.h"
 
 namespace musclesim {
 
@@ -40,6 +39,31 @@ JacobianKind ParseJacobianKind(std::string_view text) {
   return Parse(kJacobianNames, "jacobian", text);
 }
 
+constexpr EnumName<LinearSolverKind> kLinearSolverNames[] = {
+    {LinearSolverKind::kDense, "dense"},
+    {LinearSolverKind::kBand, "band"},
+    {LinearSolverKind::kSparse, "sparse"},
+    {LinearSolverKind::kAuto, "auto"},
+};
+
+std::string_view ToString(LinearSolverKind kind) { return ToString(kLinearSolverNames, kind); }
+
+LinearSolverKind ParseLinearSolverKind(std::string_view text) {
+  return Parse(kLinearSolverNames, "linear_solver", text);
+}
+
+LinearSolverKind ChooseLinearSolver(const JacobianPattern& pattern, JacobianKind jacobian) {
+  // up to a few dozen states a dense LU costs less than band or sparse bookkeeping
+  constexpr int kDenseUpTo = 16;
+  // a band this narrow (a chain has 3 + 2) factors in O(n) with less overhead than KLU
+  constexpr int kNarrowBand = 8;
+  if (pattern.size <= kDenseUpTo) return LinearSolverKind::kDense;
+  if (pattern.lower_bandwidth + pattern.upper_bandwidth <= kNarrowBand) {
+    return LinearSolverKind::kBand;
+  }
+  return jacobian == JacobianKind::kAnalytic ? LinearSolverKind::kSparse : LinearSolverKind::kBand;
+}
+
 constexpr EnumName<RunStatus> kStatusNames[] = {
     {RunStatus::kCompleted, "completed"},
     {RunStatus::kLimit, "limit"},
@@ -60,6 +84,11 @@ void Validate(const SolverOptions& o) {
   Require(std::isfinite(o.max_step) && o.max_step >= 0.0, "max_step", o.max_step,
           "must be finite and >= 0 (0: no limit) [s]");
   Require(o.max_steps >= 1, "max_steps", static_cast<double>(o.max_steps), "must be >= 1");
+  if (o.linear_solver == LinearSolverKind::kSparse && o.jacobian != JacobianKind::kAnalytic) {
+    throw ParameterError("linear_solver", "sparse",
+                         "needs jacobian: analytic (CVODE's difference-quotient Jacobian is "
+                         "for dense and band matrices only)");
+  }
 }
 
 void Validate(const RunRequest& r) {
@@ -88,45 +117,64 @@ void Validate(const RunRequest& r) {
   }
 }
 
+void Validate(const NetworkRunRequest& r) {
+  Require(std::isfinite(r.t_start), "t_start", r.t_start, "must be finite [s]");
+  Require(std::isfinite(r.t_end) && r.t_end > r.t_start, "t_end", r.t_end,
+          "must be finite and greater than t_start = " + FormatNumber(r.t_start) + " [s]");
+  // 0 asks for every internal step; otherwise a positive grid of at most 1e8 rows
+  Require(r.output_interval == 0.0 ||
+              (std::isfinite(r.output_interval) && r.output_interval > 0.0 &&
+               (r.t_end - r.t_start) / r.output_interval <= 1e8),
+          "output_interval", r.output_interval,
+          "must be > 0 with at most 1e8 rows over the run, or 0 for every step [s]");
+  for (double v : r.initial_state) Require(std::isfinite(v), "initial_state", v, "must be finite");
+}
+
 namespace {
+
+// What a root function watches: g = length(element) - level.
+struct Root {
+  enum Kind { kKink, kMinLength, kMaxLength, kZeroLength };
+  Kind kind;
+  int element;
+  double level;  // [m]
+};
 
 // What the C callbacks see through CVODE's user data.
 struct Callbacks {
-  const ActuatorSystem* system = nullptr;
-  // root functions g_i(x) = x - level_i, in this order of kinds
-  enum RootKind { kSlack, kMinLength, kMaxLength, kZeroLength };
-  RootKind kinds[4] = {};
-  double levels[4] = {};
-  int root_count = 0;
+  const NetworkSystem* system = nullptr;
+  LinearSystem* linear = nullptr;
+  std::vector<Root> roots;
   std::string last_error;
 };
 
 int RightHandSide(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
   const auto* cb = static_cast<const Callbacks*>(data);
-  const double* state = N_VGetArrayPointer(y);
   double* rate = N_VGetArrayPointer(ydot);
-  rate[0] = state[1];
-  rate[1] = cb->system->Acceleration(t, state[0], state[1]);
+  cb->system->RightHandSide(t, N_VGetArrayPointer(y), rate);
   // a non-finite value is a recoverable error: CVODE retries with a smaller step
-  return std::isfinite(rate[1]) ? 0 : 1;
+  const sunindextype n = N_VGetLength(ydot);
+  for (sunindextype i = 1; i < n; i += 2) {
+    if (!std::isfinite(rate[i])) return 1;
+  }
+  return 0;
 }
 
 int AnalyticJacobian(sunrealtype t, N_Vector y, N_Vector, SUNMatrix jacobian, void* data,
                      N_Vector, N_Vector, N_Vector) {
   const auto* cb = static_cast<const Callbacks*>(data);
-  const double* state = N_VGetArrayPointer(y);
-  const ActuatorSystem::JacobianRow row = cb->system->Jacobian(t, state[0], state[1]);
-  SM_ELEMENT_D(jacobian, 0, 0) = 0.0;
-  SM_ELEMENT_D(jacobian, 0, 1) = 1.0;
-  SM_ELEMENT_D(jacobian, 1, 0) = row.by_length;
-  SM_ELEMENT_D(jacobian, 1, 1) = row.by_rate;
+  std::vector<double>& values = cb->linear->values();
+  cb->system->Jacobian(t, N_VGetArrayPointer(y), values.data());
+  cb->linear->Fill(values.data(), jacobian);
   return 0;
 }
 
-int RootFunctions(sunrealtype, N_Vector y, sunrealtype* g, void* data) {
+int RootFunctions(sunrealtype t, N_Vector y, sunrealtype* g, void* data) {
   const auto* cb = static_cast<const Callbacks*>(data);
-  const double x = N_VGetArrayPointer(y)[0];
-  for (int i = 0; i < cb->root_count; ++i) g[i] = x - cb->levels[i];
+  const double* state = N_VGetArrayPointer(y);
+  for (std::size_t i = 0; i < cb->roots.size(); ++i) {
+    g[i] = cb->system->Length(cb->roots[i].element, t, state) - cb->roots[i].level;
+  }
   return 0;
 }
 
@@ -142,41 +190,91 @@ std::string FlagName(int flag) {
   return text;
 }
 
+// The root functions of a run: kinks (restart), the user's limits, zero lengths (failure),
+// one zero-length root per pair of nodes joined.
+std::vector<Root> RootsOf(const NetworkSystem& system, const NetworkRunRequest& request,
+                          const double* y) {
+  std::vector<Root> roots;
+  for (const NetworkSystem::Kink& kink : system.kinks()) {
+    roots.push_back({Root::kKink, kink.element, kink.length});
+  }
+  for (std::size_t i = 0; i < request.limits.size(); ++i) {
+    const LengthLimit& limit = request.limits[i];
+    const std::string path = "limits[" + std::to_string(i) + "].";
+    const int e = system.FindElement(limit.element);
+    if (e < 0) {
+      std::string known;
+      for (const Element& element : system.elements()) known += (known.empty() ? "" : ", ") + element.name;
+      throw ParameterError(path + "element", limit.element,
+                           "names no element; the elements are: " + known);
+    }
+    const double length = system.Length(e, request.t_start, y);
+    if (limit.min_length) {
+      Require(std::isfinite(*limit.min_length) && *limit.min_length >= 0.0 &&
+                  *limit.min_length < length,
+              path + "min_length", *limit.min_length,
+              "must be >= 0 and below " + limit.element + "'s initial length = " +
+                  FormatNumber(length) + " [m]");
+      roots.push_back({Root::kMinLength, e, *limit.min_length});
+    }
+    if (limit.max_length) {
+      Require(std::isfinite(*limit.max_length) && *limit.max_length > length,
+              path + "max_length", *limit.max_length,
+              "must be above " + limit.element + "'s initial length = " + FormatNumber(length) +
+                  " [m]");
+      roots.push_back({Root::kMaxLength, e, *limit.max_length});
+    }
+  }
+  std::vector<std::pair<std::string_view, std::string_view>> pairs;
+  for (std::size_t e = 0; e < system.elements().size(); ++e) {
+    const Element& element = system.elements()[e];
+    const std::pair<std::string_view, std::string_view> ends(element.from, element.to);
+    if (std::find(pairs.begin(), pairs.end(), ends) != pairs.end()) continue;
+    pairs.push_back(ends);
+    roots.push_back({Root::kZeroLength, static_cast<int>(e), 0.0});
+  }
+  return roots;
+}
+
 }  // namespace
 
 struct Simulation::Workspace {
   SUNContext context = nullptr;
   N_Vector state = nullptr;
-  SUNMatrix matrix = nullptr;
-  SUNLinearSolver solver = nullptr;
+  std::unique_ptr<LinearSystem> linear;
   void* cvode = nullptr;
   IntegrationMethod method = IntegrationMethod::kBdf;
   Callbacks callbacks;
+  NetworkSample sample;  // re-used by every record
 
   Workspace() {
     if (SUNContext_Create(nullptr, &context) != 0) throw std::runtime_error("SUNContext_Create failed");
-    state = N_VNew_Serial(2, context);
-    // fused vector operations: fewer calls per step, which dominate on a 2-state system
-    if (state != nullptr) N_VEnableFusedOps_Serial(state, SUNTRUE);
-    matrix = SUNDenseMatrix(2, 2, context);
-    solver = SUNLinSol_Dense(state, matrix, context);
-    if (state == nullptr || matrix == nullptr || solver == nullptr) {
-      Release();
-      throw std::runtime_error("allocating the CVODE workspace failed");
-    }
   }
-  ~Workspace() { Release(); }
-
-  void Release() {
+  ~Workspace() {
     if (cvode != nullptr) CVodeFree(&cvode);
-    if (solver != nullptr) SUNLinSolFree(solver);
-    if (matrix != nullptr) SUNMatDestroy(matrix);
+    linear.reset();
     if (state != nullptr) N_VDestroy(state);
     if (context != nullptr) SUNContext_Free(&context);
+  }
+
+  // Makes the state vector and linear system fit `system` with `kind`, keeping the CVODE
+  // memory when they already do (a sweep's runs of one scenario).
+  void Fit(const NetworkSystem& system, LinearSolverKind kind) {
+    const JacobianPattern& pattern = system.jacobian_pattern();
+    const bool same_size = state != nullptr && N_VGetLength(state) == pattern.size;
+    if (same_size && linear != nullptr && linear->Fits(kind, pattern)) return;
+    if (cvode != nullptr) CVodeFree(&cvode);
     cvode = nullptr;
-    solver = nullptr;
-    matrix = nullptr;
-    state = nullptr;
+    linear.reset();
+    if (!same_size) {
+      if (state != nullptr) N_VDestroy(state);
+      state = N_VNew_Serial(pattern.size, context);
+      if (state == nullptr) throw std::runtime_error("allocating the CVODE state failed");
+      // fused vector operations: fewer calls per step, which dominate on a small system
+      N_VEnableFusedOps_Serial(state, SUNTRUE);
+    }
+    linear = std::make_unique<LinearSystem>(kind, pattern, state, context);
+    callbacks.linear = linear.get();
   }
 
   // Creates the CVODE memory for `m`, or re-initialises the existing one at (t, state).
@@ -190,7 +288,7 @@ struct Simulation::Workspace {
     if (cvode == nullptr) throw std::runtime_error("CVodeCreate failed");
     method = m;
     Check(CVodeInit(cvode, RightHandSide, t, state), "CVodeInit");
-    Check(CVodeSetLinearSolver(cvode, solver, matrix), "CVodeSetLinearSolver");
+    Check(CVodeSetLinearSolver(cvode, linear->solver(), linear->matrix()), "CVodeSetLinearSolver");
     Check(CVodeSetUserData(cvode, &callbacks), "CVodeSetUserData");
     Check(CVodeSetErrHandlerFn(cvode, KeepError, &callbacks), "CVodeSetErrHandlerFn");
     Check(CVodeSetNoInactiveRootWarn(cvode), "CVodeSetNoInactiveRootWarn");
@@ -225,13 +323,6 @@ struct Simulation::Workspace {
 Simulation::Simulation() : workspace_(std::make_unique<Workspace>()) {}
 Simulation::~Simulation() = default;
 
-RunResult Simulation::Run(const ActuatorSystem& system, const SolverOptions& options,
-                          const RunRequest& request) {
-  RunResult result;
-  result.stats = Run(system, options, request, result.trajectory);
-  return result;
-}
-
 namespace {
 
 // Collects the points in a vector.
@@ -244,7 +335,45 @@ class VectorSink final : public TrajectorySink {
   std::vector<TrajectoryPoint>& points_;
 };
 
+// The single actuator's view of its network's samples (element 0 the actuator, node 1 the tip).
+class ActuatorView final : public NetworkSink {
+ public:
+  explicit ActuatorView(TrajectorySink& out) : out_(out) {}
+  void Record(double t, const NetworkSample& s) override {
+    const ElementSample& actuator = s.elements[0];
+    ActuatorSample sample;
+    sample.length = actuator.length;
+    sample.shortening_velocity = 0.0 - actuator.lengthening_rate;  // +0 rather than -0 at rest
+    sample.activation = actuator.activation;
+    sample.tension = actuator.parts;
+    sample.load = s.load[1];
+    out_.Record({t, sample});
+  }
+
+ private:
+  TrajectorySink& out_;
+};
+
+class NetworkVectorSink final : public NetworkSink {
+ public:
+  explicit NetworkVectorSink(NetworkRunResult& result) : result_(result) {}
+  void Record(double t, const NetworkSample& sample) override {
+    result_.times.push_back(t);
+    result_.samples.push_back(sample);
+  }
+
+ private:
+  NetworkRunResult& result_;
+};
+
 }  // namespace
+
+RunResult Simulation::Run(const ActuatorSystem& system, const SolverOptions& options,
+                          const RunRequest& request) {
+  RunResult result;
+  result.stats = Run(system, options, request, result.trajectory);
+  return result;
+}
 
 RunStats Simulation::Run(const ActuatorSystem& system, const SolverOptions& options,
                          const RunRequest& request, std::vector<TrajectoryPoint>& trajectory) {
@@ -254,30 +383,58 @@ RunStats Simulation::Run(const ActuatorSystem& system, const SolverOptions& opti
 
 RunStats Simulation::Run(const ActuatorSystem& system, const SolverOptions& options,
                          const RunRequest& request, TrajectorySink& sink) {
+  Validate(request);
+  NetworkRunRequest network_request;
+  network_request.t_start = request.t_start;
+  network_request.t_end = request.t_end;
+  network_request.output_interval = request.output_interval;
+  if (request.min_length || request.max_length) {
+    network_request.limits.push_back({"actuator", request.min_length, request.max_length});
+  }
+  network_request.initial_state = {request.length, request.lengthening_rate};
+  ActuatorView view(sink);
+  return Run(system.network(), options, network_request, view);
+}
+
+NetworkRunResult Simulation::Run(const NetworkSystem& system, const SolverOptions& options,
+                                 const NetworkRunRequest& request) {
+  NetworkRunResult result;
+  NetworkVectorSink sink(result);
+  result.stats = Run(system, options, request, sink);
+  return result;
+}
+
+RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& options,
+                         const NetworkRunRequest& request, NetworkSink& sink) {
   Validate(options);
   Validate(request);
   const auto wall_start = std::chrono::steady_clock::now();
   Workspace& ws = *workspace_;
 
-  // root functions: the passive kink, the user's limits, zero length
-  Callbacks& cb = ws.callbacks;
-  cb.system = &system;
-  cb.root_count = 0;
-  cb.last_error.clear();
-  const auto add_root = [&cb](Callbacks::RootKind kind, double level) {
-    cb.kinds[cb.root_count] = kind;
-    cb.levels[cb.root_count++] = level;
-  };
-  if (system.model().params().passive.k_p > 0.0) {
-    add_root(Callbacks::kSlack, system.model().params().passive.slack_length);
+  const int n = system.state_size();
+  if (!request.initial_state.empty() && static_cast<int>(request.initial_state.size()) != n) {
+    throw ParameterError("initial_state", std::to_string(request.initial_state.size()) + " values",
+                         "must hold " + std::to_string(n) + " values (x, xdot of every free node)");
   }
-  if (request.min_length) add_root(Callbacks::kMinLength, *request.min_length);
-  if (request.max_length) add_root(Callbacks::kMaxLength, *request.max_length);
-  add_root(Callbacks::kZeroLength, 0.0);
+  std::vector<double> start(static_cast<std::size_t>(n));
+  if (request.initial_state.empty()) {
+    system.InitialState(start.data());
+  } else {
+    start = request.initial_state;
+  }
+  system.CheckLengths(request.t_start, start.data());
+  Callbacks& cb = ws.callbacks;
+  cb.roots = RootsOf(system, request, start.data());
+
+  const LinearSolverKind kind = options.linear_solver == LinearSolverKind::kAuto
+                                    ? ChooseLinearSolver(system.jacobian_pattern(), options.jacobian)
+                                    : options.linear_solver;
+  ws.Fit(system, kind);
+  cb.system = &system;
+  cb.last_error.clear();
 
   double* y = N_VGetArrayPointer(ws.state);
-  y[0] = request.length;
-  y[1] = request.lengthening_rate;
+  std::copy(start.begin(), start.end(), y);
   const auto configure = [&](double t) {
     ws.Start(options.method, t);
     ws.Check(CVodeSStolerances(ws.cvode, options.rtol, options.atol), "CVodeSStolerances");
@@ -286,12 +443,15 @@ RunStats Simulation::Run(const ActuatorSystem& system, const SolverOptions& opti
              "CVodeSetJacFn");
     ws.Check(CVodeSetMaxStep(ws.cvode, options.max_step), "CVodeSetMaxStep");
     ws.Check(CVodeSetMaxNumSteps(ws.cvode, options.max_steps), "CVodeSetMaxNumSteps");
-    ws.Check(CVodeRootInit(ws.cvode, cb.root_count, RootFunctions), "CVodeRootInit");
+    ws.Check(CVodeRootInit(ws.cvode, static_cast<int>(cb.roots.size()), RootFunctions),
+             "CVodeRootInit");
   };
 
   RunStats stats;
+  stats.linear_solver = kind;
   const auto record = [&](double t) {
-    sink.Record({t, system.Observe(t, y[0], y[1])});
+    system.Observe(t, y, ws.sample);
+    sink.Record(t, ws.sample);
   };
   const auto finish = [&](RunStatus status, double t, std::string message) {
     ws.Accumulate(stats);
@@ -322,6 +482,7 @@ RunStats Simulation::Run(const ActuatorSystem& system, const SolverOptions& opti
     return k >= outputs ? request.t_end : request.t_start + k * request.output_interval;
   };
 
+  std::vector<int> found(cb.roots.size());
   double t = request.t_start;
   bool fresh = true;  // no step taken since the last (re)initialisation
   configure(t);
@@ -350,28 +511,32 @@ RunStats Simulation::Run(const ActuatorSystem& system, const SolverOptions& opti
                             " internal steps by t = " + FormatNumber(t) + " s");
         }
         if (flag == CV_ROOT_RETURN) {
-          int found[4] = {0, 0, 0, 0};
-          CVodeGetRootInfo(ws.cvode, found);
-          for (int i = 0; i < cb.root_count; ++i) {
+          CVodeGetRootInfo(ws.cvode, found.data());
+          for (std::size_t i = 0; i < cb.roots.size(); ++i) {
             if (found[i] == 0) continue;
-            const std::string where = "length " + FormatNumber(y[0]) + " m at t = " + FormatNumber(t) + " s";
-            switch (cb.kinds[i]) {
-              case Callbacks::kMinLength:
-              case Callbacks::kMaxLength:
+            const Root& root = cb.roots[i];
+            const std::string& name = system.elements()[root.element].name;
+            const std::string where = "length " + FormatNumber(system.Length(root.element, t, y)) +
+                                      " m at t = " + FormatNumber(t) + " s";
+            switch (root.kind) {
+              case Root::kMinLength:
+              case Root::kMaxLength:
                 record(t);
                 return finish(RunStatus::kLimit, t,
-                              std::string(cb.kinds[i] == Callbacks::kMinLength ? "min_length"
-                                                                               : "max_length") +
-                                  " = " + FormatNumber(cb.levels[i]) + " reached: " + where);
-              case Callbacks::kZeroLength:
+                              std::string(root.kind == Root::kMinLength ? "min_length"
+                                                                        : "max_length") +
+                                  " = " + FormatNumber(root.level) + " reached by " + name + ": " +
+                                  where);
+              case Root::kZeroLength:
                 record(t);
-                return finish(RunStatus::kFailed, t, "the length reached zero at t = " +
-                                                         FormatNumber(t) + " s: the actuator collapsed");
-              case Callbacks::kSlack:
+                return finish(RunStatus::kFailed, t,
+                              "the length of " + name + " reached zero at t = " + FormatNumber(t) +
+                                  " s: it collapsed");
+              case Root::kKink:
                 break;
             }
           }
-          // the slack kink: restart the integrator on its far side
+          // a kink: restart the integrator on its far side
           ws.Accumulate(stats);
           configure(t);
           fresh = true;

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "musclesim/dynamics/loads.h"
+#include "musclesim/dynamics/network.h"
 #include "musclesim/model/tension.h"
 #include "musclesim/dynamics/waveform.h"
 
@@ -74,12 +75,18 @@ class ActuatorSystem {
   const LoadSet& loads() const { return loads_; }
   double effective_mass() const { return 1.0 / inverse_mass_; }  // [kg]
 
+  // The same system as a network (docs/model.md 7.4): node `ground` fixed at 0, node `tip`
+  // free (its initial state is the run's), elements `actuator`, `damper` and `spring` from
+  // ground to tip, the loads on tip. Its right-hand side is this one's, bit for bit.
+  const NetworkSystem& network() const { return network_; }
+
  private:
   std::shared_ptr<const TensionModel> model_;
   ActuatorParams actuator_;
   Waveform activation_;
   LoadSet loads_;
   double inverse_mass_;  // 1 / (actuator mass + load masses) [1/kg]
+  NetworkSystem network_;
 };
 
 }  // namespace musclesim

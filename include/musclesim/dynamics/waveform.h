@@ -58,6 +58,9 @@ struct Waveform {
   static Waveform Table(std::vector<TablePoint> points);
 
   double Evaluate(double t) const;
+  // d/dt of the value; where the slope jumps, the slope after t (the side a run goes on).
+  // Step and pulses jump in value: their slope is 0 everywhere else.
+  double Slope(double t) const;
   // Times in (t0, t1) where the value or its slope jumps, sorted.
   std::vector<double> Breakpoints(double t0, double t1) const;
   // The least and greatest value on [t0, t1] (sine: offset -+ |amplitude|, a bound).

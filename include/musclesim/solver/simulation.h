@@ -1,11 +1,12 @@
-// One simulation of the actuator/load dynamics on SUNDIALS CVODE.
+// One simulation on SUNDIALS CVODE: of a network on a line (docs/model.md section 7), or of
+// the single actuator, which is the network of section 7.4.
 //
 // A Simulation owns its SUNContext, CVODE memory, vector, matrix and linear solver (RAII)
 // and shares nothing writable, so many may run on many threads. Running it again re-uses
 // the CVODE memory through CVodeReInit. Every breakpoint of the inputs is a CVODE stop
 // time, followed by a re-initialisation, so no step straddles a jump. Root functions stop
 // the run at the user's length limits and at zero length, and restart the integrator where
-// the length crosses the passive slack length (where dT_p/dx jumps).
+// an element's length crosses a kink (a passive or tendon slack length, where dT/dl jumps).
 #pragma once
 
 #include <memory>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "musclesim/dynamics/actuator.h"
+#include "musclesim/dynamics/network.h"
 
 namespace musclesim {
 
@@ -25,6 +27,17 @@ IntegrationMethod ParseIntegrationMethod(std::string_view text);  // ParameterEr
 enum class JacobianKind { kAnalytic, kDifferenceQuotient };
 std::string_view ToString(JacobianKind kind);
 JacobianKind ParseJacobianKind(std::string_view text);  // ParameterError("jacobian")
+
+// How the Newton iteration solves its linear systems: SUNDIALS dense, band (half-bandwidths
+// from the Jacobian's pattern) or KLU sparse; auto picks by size and structure.
+enum class LinearSolverKind { kDense, kBand, kSparse, kAuto };
+std::string_view ToString(LinearSolverKind kind);
+LinearSolverKind ParseLinearSolverKind(std::string_view text);  // ParameterError("linear_solver")
+
+// What `auto` picks for a system of `pattern` (dense for a few states, band for a narrow band,
+// else sparse; never sparse with a difference-quotient Jacobian, which CVODE has only for dense
+// and band matrices).
+LinearSolverKind ChooseLinearSolver(const JacobianPattern& pattern, JacobianKind jacobian);
 
 // The smallest relative tolerance double precision can meet (about 100 ulps).
 inline constexpr double kMinTolerance = 1e-14;
@@ -37,9 +50,10 @@ struct SolverOptions {
   JacobianKind jacobian = JacobianKind::kAnalytic;  // of the Newton iteration
   double max_step = 0.0;         // largest internal step [s], >= 0; 0: no limit
   long max_steps = 10000000;     // internal steps allowed in one run, >= 1 (a guard)
+  LinearSolverKind linear_solver = LinearSolverKind::kAuto;
 };
 
-// Throws ParameterError ("method", "rtol", "atol", "max_step", "max_steps").
+// Throws ParameterError ("method", "rtol", "atol", "max_step", "max_steps", "linear_solver").
 void Validate(const SolverOptions& options);
 
 // What one run integrates: the time span, the initial state, the output grid, the limits.
@@ -70,6 +84,7 @@ struct RunStats {
   long error_test_fails = 0;   // steps rejected by the local error test
   double wall_seconds = 0.0;   // [s] of wall-clock time for the whole run
   double final_time = 0.0;     // [s], where the run ended
+  LinearSolverKind linear_solver = LinearSolverKind::kDense;  // the one used (never auto)
   RunStatus status = RunStatus::kCompleted;
   std::string message;         // why a run ended early (limit or failure)
 };
@@ -93,6 +108,39 @@ struct RunResult {
   RunStats stats;
 };
 
+// A network's run: the time span, the output grid, the limits.
+struct LengthLimit {
+  std::string element;              // the element's name
+  std::optional<double> min_length; // [m], in [0, its initial length): reaching it ends the run
+  std::optional<double> max_length; // [m], above its initial length
+};
+
+struct NetworkRunRequest {
+  double t_start = 0.0;            // [s], finite
+  double t_end = 1.0;              // [s], finite, > t_start
+  double output_interval = 1e-3;   // [s], > 0, at most 1e8 rows; 0 records every internal step
+  std::vector<LengthLimit> limits;
+  std::vector<double> initial_state;  // y(t_start); empty: the nodes' own positions and velocities
+};
+
+// Throws ParameterError ("t_end", "output_interval", ...); the limits are checked against
+// the system by Simulation::Run ("limits[0].element", "limits[0].min_length").
+void Validate(const NetworkRunRequest& request);
+
+// Receives a network's recorded points as they are produced; `sample` is valid only during
+// the call (the simulation re-uses it).
+class NetworkSink {
+ public:
+  virtual ~NetworkSink() = default;
+  virtual void Record(double t, const NetworkSample& sample) = 0;
+};
+
+struct NetworkRunResult {
+  std::vector<double> times;           // [s]
+  std::vector<NetworkSample> samples;  // one per time
+  RunStats stats;
+};
+
 class Simulation {
  public:
   Simulation();
@@ -113,6 +161,13 @@ class Simulation {
   // grow with the run's length). An exception from the sink ends the run and propagates.
   RunStats Run(const ActuatorSystem& system, const SolverOptions& options,
                const RunRequest& request, TrajectorySink& sink);
+
+  // A network, as the above: validates `options` and `request`, the limits and that every
+  // element starts longer than zero (ParameterError); a solver failure is status kFailed.
+  NetworkRunResult Run(const NetworkSystem& system, const SolverOptions& options,
+                       const NetworkRunRequest& request);
+  RunStats Run(const NetworkSystem& system, const SolverOptions& options,
+               const NetworkRunRequest& request, NetworkSink& sink);
 
  private:
   struct Workspace;

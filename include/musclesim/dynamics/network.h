@@ -1,0 +1,118 @@
+// A network on a line (docs/model.md section 7) as a first-order system: the state is
+// (x_i, xdot_i) of every free node, in the order the nodes are given, interleaved, so a
+// chain given in order has a banded Jacobian. Immutable once built; evaluation allocates
+// nothing, so one system may be integrated on many threads.
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "musclesim/dynamics/jacobian_pattern.h"
+#include "musclesim/dynamics/network_parts.h"
+
+namespace musclesim {
+
+// What one element observes at one instant.
+struct ElementSample {
+  double length = 0.0;            // l = x_to - x_from [m]
+  double lengthening_rate = 0.0;  // dl/dt [m/s]
+  double tension = 0.0;           // T [N]
+  double activation = 0.0;        // actuator: u(t) [-]; other kinds 0
+  TensionSample parts;            // actuator: T split into parts, with derivatives
+};
+
+// Everything the state observes at one instant: what a network's CSV records.
+struct NetworkSample {
+  std::vector<double> position;  // of every node [m]
+  std::vector<double> velocity;  // of every node [m/s]
+  std::vector<double> load;      // the sum of the loads on every node [N] (0 off free nodes)
+  std::vector<ElementSample> elements;
+};
+
+class NetworkSystem {
+ public:
+  // Validates every part and how they fit (ParameterError with paths such as
+  // "nodes[1].mass", "elements[2].to", "loads[0].node"): names unique and non-empty, every
+  // reference resolved, loads on free nodes, at least one free node, every free node joined
+  // by elements to a fixed or prescribed node.
+  NetworkSystem(std::vector<Node> nodes, std::vector<Element> elements,
+                std::vector<NodeLoad> loads = {});
+
+  int state_size() const { return 2 * static_cast<int>(free_nodes_.size()); }
+  // y at the start: every free node's position and velocity.
+  void InitialState(double* y) const;
+  // Throws ParameterError("elements[i]", ...) unless every element is longer than zero at
+  // (t, y).
+  void CheckLengths(double t, const double* y) const;
+
+  // ydot = f(t, y).
+  void RightHandSide(double t, const double* y, double* ydot) const;
+  // df/dy at (t, y), one value per entry of jacobian_pattern().
+  void Jacobian(double t, const double* y, double* values) const;
+  const JacobianPattern& jacobian_pattern() const { return pattern_; }
+
+  // The length of element e at (t, y) [m].
+  double Length(int e, double t, const double* y) const;
+  // Lengths where an element's tension has a kink (an actuator's passive slack length,
+  // a tendon's slack length): the integrator restarts there.
+  struct Kink {
+    int element;
+    double length;  // [m]
+  };
+  const std::vector<Kink>& kinks() const { return kinks_; }
+  // Where the inputs jump (activations, force loads, prescribed motions): sorted, in (t0, t1).
+  std::vector<double> Breakpoints(double t0, double t1) const;
+
+  void Observe(double t, const double* y, NetworkSample& sample) const;
+
+  const std::vector<Node>& nodes() const { return nodes_; }
+  const std::vector<Element>& elements() const { return elements_; }
+  const std::vector<NodeLoad>& loads() const { return loads_; }
+  int FindNode(std::string_view name) const;     // -1 if none
+  int FindElement(std::string_view name) const;  // -1 if none
+  // The state index of a node's position (its velocity follows), -1 unless free.
+  int StateIndex(int node) const { return ends_[node].state; }
+
+ private:
+  // A node as the right-hand side sees it.
+  struct End {
+    NodeKind kind;
+    int state;            // free: index of x in y; else -1
+    double position;      // fixed
+    const Waveform* motion;  // prescribed
+  };
+  // An element as the right-hand side sees it: its ends and where its Jacobian goes.
+  struct Link {
+    int from, to;              // node indices
+    int slot[2][4];            // entry of (row: accel from/to, column: x_from, v_from, x_to, v_to); -1 if none
+  };
+  struct FreeNode {
+    int node;            // index in nodes_
+    LoadSet loads;
+    double inverse_mass; // 1 / (mass + mass loads) [1/kg]
+    int slot_rate;       // entry (x row, xdot column): 1
+    int slot_position;   // entry (xdot row, x column): the loads' slope
+  };
+
+  double PositionOf(const End& end, double t, const double* y) const;
+  double VelocityOf(const End& end, double t, const double* y) const;
+  // T, dT/dl and dT/d(dl/dt) of element e at length l and lengthening rate ldot.
+  struct Tension {
+    double value, by_length, by_rate;
+  };
+  Tension TensionOf(int e, double t, double l, double ldot) const;
+  void Resolve();
+  void BuildPattern();
+
+  std::vector<Node> nodes_;
+  std::vector<Element> elements_;
+  std::vector<NodeLoad> loads_;
+  std::vector<End> ends_;
+  std::vector<Link> links_;
+  std::vector<FreeNode> free_nodes_;
+  std::vector<int> row_scale_;  // per Jacobian entry: the free node whose 1/m scales it, or -1
+  std::vector<Kink> kinks_;
+  JacobianPattern pattern_;
+};
+
+}  // namespace musclesim

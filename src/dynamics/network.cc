@@ -1,0 +1,391 @@
+#include "musclesim/dynamics/network.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+#include <utility>
+
+#include "musclesim/errors.h"
+#include "musclesim/model/number_format.h"
+
+namespace musclesim {
+
+namespace {
+
+// ParameterError of a part, its path put under the part's list entry.
+template <typename Part>
+void ValidateEntry(const Part& part, const char* list, std::size_t i) {
+  try {
+    Validate(part);
+  } catch (const ParameterError& e) {
+    throw ParameterError(std::string(list) + "[" + std::to_string(i) + "]." + e.path(), e.value(),
+                         e.rule());
+  }
+}
+
+std::string Entry(const char* list, std::size_t i, const char* key) {
+  return std::string(list) + "[" + std::to_string(i) + "]." + key;
+}
+
+template <typename Part>
+std::string KnownNames(const std::vector<Part>& parts) {
+  std::string names;
+  for (const Part& p : parts) names += (names.empty() ? "" : ", ") + p.name;
+  return names;
+}
+
+template <typename Part>
+void RequireUniqueNames(const std::vector<Part>& parts, const char* list) {
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (parts[i].name.empty()) throw ParameterError(Entry(list, i, "name"), "", "must not be empty");
+    for (std::size_t j = 0; j < i; ++j) {
+      if (parts[j].name == parts[i].name) {
+        throw ParameterError(Entry(list, i, "name"), parts[i].name,
+                             "must be unique: " + std::string(list) + "[" + std::to_string(j) +
+                                 "] has it too");
+      }
+    }
+  }
+}
+
+// A union-find over node indices: which nodes the elements join.
+class Components {
+ public:
+  explicit Components(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  std::size_t Find(std::size_t i) {
+    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
+    return i;
+  }
+  void Join(std::size_t a, std::size_t b) { parent_[Find(a)] = Find(b); }
+
+ private:
+  std::vector<std::size_t> parent_;
+};
+
+}  // namespace
+
+NetworkSystem::NetworkSystem(std::vector<Node> nodes, std::vector<Element> elements,
+                             std::vector<NodeLoad> loads)
+    : nodes_(std::move(nodes)), elements_(std::move(elements)), loads_(std::move(loads)) {
+  for (std::size_t i = 0; i < nodes_.size(); ++i) ValidateEntry(nodes_[i], "nodes", i);
+  for (std::size_t i = 0; i < elements_.size(); ++i) ValidateEntry(elements_[i], "elements", i);
+  RequireUniqueNames(nodes_, "nodes");
+  RequireUniqueNames(elements_, "elements");
+  Resolve();
+  BuildPattern();
+}
+
+int NetworkSystem::FindNode(std::string_view name) const {
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    if (nodes_[i].name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+int NetworkSystem::FindElement(std::string_view name) const {
+  for (std::size_t i = 0; i < elements_.size(); ++i) {
+    if (elements_[i].name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+void NetworkSystem::Resolve() {
+  int states = 0;
+  for (const Node& node : nodes_) {
+    End end{node.kind, -1, node.position, &node.motion};
+    if (node.kind == NodeKind::kFree) {
+      end.state = states;
+      states += 2;
+    }
+    ends_.push_back(end);
+  }
+  const auto node_named = [&](const std::string& name, const std::string& path) {
+    const int i = FindNode(name);
+    if (i < 0) {
+      throw ParameterError(path, name, "names no node; the nodes are: " + KnownNames(nodes_));
+    }
+    return i;
+  };
+
+  Components joined(nodes_.size());
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    const Element& element = elements_[e];
+    Link link{node_named(element.from, Entry("elements", e, "from")),
+              node_named(element.to, Entry("elements", e, "to")), {}};
+    if (link.from == link.to) {
+      throw ParameterError(Entry("elements", e, "to"), element.to,
+                           "must differ from `from`: an element joins two nodes");
+    }
+    joined.Join(static_cast<std::size_t>(link.from), static_cast<std::size_t>(link.to));
+    links_.push_back(link);
+    if (element.kind == ElementKind::kTendon) {
+      kinks_.push_back({static_cast<int>(e), element.slack_length});
+    } else if (element.kind == ElementKind::kActuator && element.model->params().passive.k_p > 0.0) {
+      kinks_.push_back({static_cast<int>(e), element.model->params().passive.slack_length});
+    }
+  }
+
+  std::vector<std::vector<Load>> node_loads(nodes_.size());
+  for (std::size_t l = 0; l < loads_.size(); ++l) {
+    const int node = node_named(loads_[l].node, Entry("loads", l, "node"));
+    if (nodes_[node].kind != NodeKind::kFree) {
+      throw ParameterError(Entry("loads", l, "node"), loads_[l].node,
+                           "must name a free node (one with a mass); it is " +
+                               std::string(ToString(nodes_[node].kind)));
+    }
+    try {
+      Validate(loads_[l].load);
+    } catch (const ParameterError& e) {
+      throw ParameterError("loads[" + std::to_string(l) + "]." + e.path(), e.value(), e.rule());
+    }
+    node_loads[node].push_back(loads_[l].load);
+  }
+
+  std::vector<bool> anchored(nodes_.size(), false);
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    if (nodes_[i].kind != NodeKind::kFree) anchored[joined.Find(i)] = true;
+  }
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    if (nodes_[i].kind != NodeKind::kFree) continue;
+    if (!anchored[joined.Find(i)]) {
+      throw ParameterError(Entry("nodes", i, "name"), nodes_[i].name,
+                           "floats: no chain of elements joins this free node to a fixed or "
+                           "prescribed node");
+    }
+    LoadSet set(std::move(node_loads[i]));
+    const double inverse_mass = 1.0 / (nodes_[i].mass + set.AddedMass());
+    free_nodes_.push_back({static_cast<int>(i), std::move(set), inverse_mass, -1, -1});
+  }
+  if (free_nodes_.empty()) {
+    throw ParameterError("nodes", std::to_string(nodes_.size()) + " nodes",
+                         "need at least one free node (one with a mass): nothing would move");
+  }
+}
+
+void NetworkSystem::BuildPattern() {
+  // every (row, column) pair that can be nonzero, then compressed-column order
+  std::vector<std::pair<int, int>> pairs;  // (column, row)
+  for (const FreeNode& f : free_nodes_) {
+    const int s = ends_[f.node].state;
+    for (int r = s; r < s + 2; ++r) {
+      for (int c = s; c < s + 2; ++c) pairs.emplace_back(c, r);
+    }
+  }
+  for (const Link& link : links_) {
+    for (int row_end : {link.from, link.to}) {
+      for (int col_end : {link.from, link.to}) {
+        const int r = ends_[row_end].state, c = ends_[col_end].state;
+        if (r < 0 || c < 0) continue;
+        pairs.emplace_back(c, r + 1);
+        pairs.emplace_back(c + 1, r + 1);
+      }
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+
+  pattern_.size = state_size();
+  pattern_.column_starts.assign(static_cast<std::size_t>(pattern_.size) + 1, 0);
+  for (const auto& [c, r] : pairs) {
+    pattern_.rows.push_back(r);
+    ++pattern_.column_starts[static_cast<std::size_t>(c) + 1];
+    pattern_.lower_bandwidth = std::max(pattern_.lower_bandwidth, r - c);
+    pattern_.upper_bandwidth = std::max(pattern_.upper_bandwidth, c - r);
+  }
+  std::partial_sum(pattern_.column_starts.begin(), pattern_.column_starts.end(),
+                   pattern_.column_starts.begin());
+  const auto slot = [&](int r, int c) {
+    const auto it = std::lower_bound(pairs.begin(), pairs.end(), std::make_pair(c, r));
+    return static_cast<int>(it - pairs.begin());
+  };
+
+  for (FreeNode& node : free_nodes_) {
+    const int s = ends_[node.node].state;
+    node.slot_rate = slot(s, s + 1);
+    node.slot_position = slot(s + 1, s);
+  }
+  // an entry in a velocity row (odd: free node f has states 2f, 2f + 1) is scaled by 1/m_f
+  row_scale_.assign(pairs.size(), -1);
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const int r = pattern_.rows[k];
+    if (r % 2 == 1) row_scale_[k] = r / 2;
+  }
+  for (Link& link : links_) {
+    const int ends[2] = {link.from, link.to};
+    for (int r = 0; r < 2; ++r) {
+      for (int c = 0; c < 2; ++c) {
+        const int row = ends_[ends[r]].state, col = ends_[ends[c]].state;
+        const bool present = row >= 0 && col >= 0;
+        link.slot[r][2 * c] = present ? slot(row + 1, col) : -1;
+        link.slot[r][2 * c + 1] = present ? slot(row + 1, col + 1) : -1;
+      }
+    }
+  }
+}
+
+void NetworkSystem::InitialState(double* y) const {
+  for (const FreeNode& f : free_nodes_) {
+    const int s = ends_[f.node].state;
+    y[s] = nodes_[f.node].position;
+    y[s + 1] = nodes_[f.node].velocity;
+  }
+}
+
+void NetworkSystem::CheckLengths(double t, const double* y) const {
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    const double l = Length(static_cast<int>(e), t, y);
+    if (!(l > 0.0)) {
+      const Element& element = elements_[e];
+      throw ParameterError("elements[" + std::to_string(e) + "]", element.name,
+                           "must be longer than 0 at the start: its length x(" + element.to + ") - x(" +
+                               element.from + ") is " + FormatNumber(l) +
+                               " m");
+    }
+  }
+}
+
+double NetworkSystem::PositionOf(const End& end, double t, const double* y) const {
+  switch (end.kind) {
+    case NodeKind::kFree:
+      return y[end.state];
+    case NodeKind::kFixed:
+      return end.position;
+    case NodeKind::kPrescribed:
+      return end.motion->Evaluate(t);
+  }
+  return 0.0;
+}
+
+double NetworkSystem::VelocityOf(const End& end, double t, const double* y) const {
+  switch (end.kind) {
+    case NodeKind::kFree:
+      return y[end.state + 1];
+    case NodeKind::kFixed:
+      return 0.0;
+    case NodeKind::kPrescribed:
+      return end.motion->Slope(t);
+  }
+  return 0.0;
+}
+
+double NetworkSystem::Length(int e, double t, const double* y) const {
+  const Link& link = links_[e];
+  return PositionOf(ends_[link.to], t, y) - PositionOf(ends_[link.from], t, y);
+}
+
+NetworkSystem::Tension NetworkSystem::TensionOf(int e, double t, double l, double ldot) const {
+  const Element& element = elements_[e];
+  switch (element.kind) {
+    case ElementKind::kActuator: {
+      const TensionSample s = element.model->Evaluate(l, -ldot, element.activation.Evaluate(t));
+      return {s.total, s.d_length, -s.d_velocity};  // v = -ldot
+    }
+    case ElementKind::kSpring:
+      return {element.stiffness * (l - element.rest_length), element.stiffness, 0.0};
+    case ElementKind::kTendon: {
+      const double stretch = l - element.slack_length;
+      if (stretch <= 0.0) return {0.0, 0.0, 0.0};
+      if (!element.exponential()) return {element.stiffness * stretch, element.stiffness, 0.0};
+      const double grow = std::exp(element.alpha * stretch);
+      return {element.k * (grow - 1.0), element.k * element.alpha * grow, 0.0};
+    }
+    case ElementKind::kDamper:
+      return {element.damping * ldot, 0.0, element.damping};
+  }
+  return {0.0, 0.0, 0.0};
+}
+
+void NetworkSystem::RightHandSide(double t, const double* y, double* ydot) const {
+  for (const FreeNode& f : free_nodes_) {
+    const int s = ends_[f.node].state;
+    ydot[s] = y[s + 1];
+    ydot[s + 1] = f.loads.Force(t, y[s]);
+  }
+  for (std::size_t e = 0; e < links_.size(); ++e) {
+    const End& a = ends_[links_[e].from];
+    const End& b = ends_[links_[e].to];
+    const double l = PositionOf(b, t, y) - PositionOf(a, t, y);
+    const double ldot = VelocityOf(b, t, y) - VelocityOf(a, t, y);
+    const double tension = TensionOf(static_cast<int>(e), t, l, ldot).value;
+    // +T pulls `from` towards `to`, -T pulls `to` back
+    if (a.state >= 0) ydot[a.state + 1] += tension;
+    if (b.state >= 0) ydot[b.state + 1] -= tension;
+  }
+  for (const FreeNode& f : free_nodes_) ydot[ends_[f.node].state + 1] *= f.inverse_mass;
+}
+
+void NetworkSystem::Jacobian(double t, const double* y, double* values) const {
+  std::fill(values, values + pattern_.entries(), 0.0);
+  for (const FreeNode& f : free_nodes_) {
+    values[f.slot_rate] = 1.0;
+    values[f.slot_position] = f.loads.ForceSlope();
+  }
+  for (std::size_t e = 0; e < links_.size(); ++e) {
+    const Link& link = links_[e];
+    const End& a = ends_[link.from];
+    const End& b = ends_[link.to];
+    const double l = PositionOf(b, t, y) - PositionOf(a, t, y);
+    const double ldot = VelocityOf(b, t, y) - VelocityOf(a, t, y);
+    const Tension tension = TensionOf(static_cast<int>(e), t, l, ldot);
+    // d(force on from)/d(x_from, v_from, x_to, v_to) = (-dT/dl, -dT/dldot, dT/dl, dT/dldot);
+    // the force on `to` is the opposite
+    const double by_state[4] = {-tension.by_length, -tension.by_rate, tension.by_length,
+                                tension.by_rate};
+    for (int c = 0; c < 4; ++c) {
+      if (link.slot[0][c] >= 0) values[link.slot[0][c]] += by_state[c];
+      if (link.slot[1][c] >= 0) values[link.slot[1][c]] -= by_state[c];
+    }
+  }
+  for (int k = 0; k < pattern_.entries(); ++k) {
+    if (row_scale_[k] >= 0) values[k] *= free_nodes_[row_scale_[k]].inverse_mass;
+  }
+}
+
+std::vector<double> NetworkSystem::Breakpoints(double t0, double t1) const {
+  std::vector<double> times;
+  const auto add = [&](const std::vector<double>& more) {
+    times.insert(times.end(), more.begin(), more.end());
+  };
+  for (const Element& e : elements_) {
+    if (e.kind == ElementKind::kActuator) add(e.activation.Breakpoints(t0, t1));
+  }
+  for (const Node& n : nodes_) {
+    if (n.kind == NodeKind::kPrescribed) add(n.motion.Breakpoints(t0, t1));
+  }
+  for (const FreeNode& f : free_nodes_) add(f.loads.Breakpoints(t0, t1));
+  SortUnique(times);
+  return times;
+}
+
+void NetworkSystem::Observe(double t, const double* y, NetworkSample& sample) const {
+  sample.position.resize(nodes_.size());
+  sample.velocity.resize(nodes_.size());
+  sample.load.assign(nodes_.size(), 0.0);
+  sample.elements.resize(elements_.size());
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    sample.position[i] = PositionOf(ends_[i], t, y);
+    sample.velocity[i] = VelocityOf(ends_[i], t, y);
+  }
+  for (const FreeNode& f : free_nodes_) {
+    sample.load[f.node] = f.loads.Force(t, sample.position[f.node]);
+  }
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    const Link& link = links_[e];
+    ElementSample& out = sample.elements[e];
+    out.length = sample.position[link.to] - sample.position[link.from];
+    out.lengthening_rate = sample.velocity[link.to] - sample.velocity[link.from];
+    const Element& element = elements_[e];
+    if (element.kind == ElementKind::kActuator) {
+      out.activation = element.activation.Evaluate(t);
+      out.parts = element.model->Evaluate(out.length, -out.lengthening_rate, out.activation);
+      out.tension = out.parts.total;
+    } else {
+      out.activation = 0.0;
+      out.parts = TensionSample{};
+      out.tension = TensionOf(static_cast<int>(e), t, out.length, out.lengthening_rate).value;
+    }
+  }
+}
+
+}  // namespace musclesim

@@ -1,0 +1,173 @@
+#include "musclesim/dynamics/network_parts.h"
+
+#include <cassert>
+#include <cmath>
+
+#include "musclesim/errors.h"
+#include "musclesim/model/enum_names.h"
+
+namespace musclesim {
+
+constexpr EnumName<NodeKind> kNodeKindNames[] = {
+    {NodeKind::kFixed, "fixed"},
+    {NodeKind::kPrescribed, "prescribed"},
+    {NodeKind::kFree, "free"},
+};
+
+std::string_view ToString(NodeKind kind) { return ToString(kNodeKindNames, kind); }
+
+constexpr EnumName<ElementKind> kElementKindNames[] = {
+    {ElementKind::kActuator, "actuator"},
+    {ElementKind::kSpring, "spring"},
+    {ElementKind::kTendon, "tendon"},
+    {ElementKind::kDamper, "damper"},
+};
+
+std::string_view ToString(ElementKind kind) { return ToString(kElementKindNames, kind); }
+
+ElementKind ParseElementKind(std::string_view text) {
+  return Parse(kElementKindNames, "type", text);
+}
+
+void Validate(const Node& node) {
+  switch (node.kind) {
+    case NodeKind::kFixed:
+      Require(std::isfinite(node.position), "fixed", node.position, "must be finite [m]");
+      break;
+    case NodeKind::kPrescribed:
+      try {
+        Validate(node.motion);
+      } catch (const ParameterError& e) {
+        throw ParameterError("prescribed." + e.path(), e.value(), e.rule());
+      }
+      // a jump in position would move the node at infinite speed
+      if (node.motion.kind == WaveformKind::kStep || node.motion.kind == WaveformKind::kPulses) {
+        throw ParameterError("prescribed.type", std::string(ToString(node.motion.kind)),
+                             "must be continuous in time: constant, ramp, sine or table");
+      }
+      break;
+    case NodeKind::kFree:
+      Require(std::isfinite(node.mass) && node.mass > 0.0, "mass", node.mass,
+              "must be finite and > 0 [kg]");
+      Require(std::isfinite(node.position), "position", node.position, "must be finite [m]");
+      Require(std::isfinite(node.velocity), "velocity", node.velocity, "must be finite [m/s]");
+      break;
+  }
+}
+
+Node Node::Fixed(std::string name, double position) {
+  Node node;
+  node.name = std::move(name);
+  node.kind = NodeKind::kFixed;
+  node.position = position;
+  return Validated(std::move(node));
+}
+
+Node Node::Prescribed(std::string name, Waveform motion) {
+  Node node;
+  node.name = std::move(name);
+  node.kind = NodeKind::kPrescribed;
+  node.motion = std::move(motion);
+  return Validated(std::move(node));
+}
+
+Node Node::Free(std::string name, double mass, double position, double velocity) {
+  Node node;
+  node.name = std::move(name);
+  node.kind = NodeKind::kFree;
+  node.mass = mass;
+  node.position = position;
+  node.velocity = velocity;
+  return Validated(std::move(node));
+}
+
+void Validate(const Element& e) {
+  switch (e.kind) {
+    case ElementKind::kActuator:
+      if (e.model == nullptr) throw ParameterError("model", "none", "an actuator needs a model");
+      try {
+        ValidateActivation(e.activation);
+      } catch (const ParameterError& error) {
+        throw ParameterError("activation." + error.path(), error.value(), error.rule());
+      }
+      break;
+    case ElementKind::kSpring:
+      Require(std::isfinite(e.stiffness) && e.stiffness >= 0.0, "stiffness", e.stiffness,
+              "must be finite and >= 0 [N/m]");
+      Require(std::isfinite(e.rest_length), "rest_length", e.rest_length, "must be finite [m]");
+      break;
+    case ElementKind::kTendon:
+      Require(std::isfinite(e.slack_length) && e.slack_length >= 0.0, "slack_length",
+              e.slack_length, "must be finite and >= 0 [m]");
+      if (e.exponential()) {
+        Require(std::isfinite(e.k), "exponential.k", e.k, "must be finite and > 0 [N]");
+        Require(std::isfinite(e.alpha) && e.alpha > 0.0, "exponential.alpha", e.alpha,
+                "must be finite and > 0 [1/m]");
+      } else {
+        Require(e.k == 0.0, "exponential.k", e.k, "must be finite and > 0 [N]");
+        Require(std::isfinite(e.stiffness) && e.stiffness >= 0.0, "stiffness", e.stiffness,
+                "must be finite and >= 0 [N/m]");
+      }
+      break;
+    case ElementKind::kDamper:
+      Require(std::isfinite(e.damping) && e.damping >= 0.0, "damping", e.damping,
+              "must be finite and >= 0 [N s/m]");
+      break;
+  }
+}
+
+namespace {
+
+Element Make(std::string name, ElementKind kind, std::string from, std::string to) {
+  Element e;
+  e.name = std::move(name);
+  e.kind = kind;
+  e.from = std::move(from);
+  e.to = std::move(to);
+  return e;
+}
+
+}  // namespace
+
+Element Element::Actuator(std::string name, std::string from, std::string to,
+                          std::shared_ptr<const TensionModel> model, Waveform activation) {
+  Element e = Make(std::move(name), ElementKind::kActuator, std::move(from), std::move(to));
+  e.model = std::move(model);
+  e.activation = std::move(activation);
+  return Validated(std::move(e));
+}
+
+Element Element::Spring(std::string name, std::string from, std::string to, double stiffness,
+                        double rest_length) {
+  Element e = Make(std::move(name), ElementKind::kSpring, std::move(from), std::move(to));
+  e.stiffness = stiffness;
+  e.rest_length = rest_length;
+  return Validated(std::move(e));
+}
+
+Element Element::LinearTendon(std::string name, std::string from, std::string to,
+                              double slack_length, double stiffness) {
+  Element e = Make(std::move(name), ElementKind::kTendon, std::move(from), std::move(to));
+  e.slack_length = slack_length;
+  e.stiffness = stiffness;
+  return Validated(std::move(e));
+}
+
+Element Element::ExponentialTendon(std::string name, std::string from, std::string to,
+                                   double slack_length, double k, double alpha) {
+  Element e = Make(std::move(name), ElementKind::kTendon, std::move(from), std::move(to));
+  e.slack_length = slack_length;
+  e.k = k;
+  e.alpha = alpha;
+  // k = 0 would read as a linear tendon: name the rule here
+  Require(std::isfinite(k) && k > 0.0, "exponential.k", k, "must be finite and > 0 [N]");
+  return Validated(std::move(e));
+}
+
+Element Element::Damper(std::string name, std::string from, std::string to, double damping) {
+  Element e = Make(std::move(name), ElementKind::kDamper, std::move(from), std::move(to));
+  e.damping = damping;
+  return Validated(std::move(e));
+}
+
+}  // namespace musclesim

@@ -1,0 +1,46 @@
+// The Newton iteration's matrix and linear solver for one system size and pattern: SUNDIALS
+// dense, band or KLU sparse, and how a Jacobian in pattern order is written into each.
+#pragma once
+
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_linearsolver.h>
+#include <sundials/sundials_matrix.h>
+#include <sundials/sundials_nvector.h>
+
+#include <vector>
+
+#include "musclesim/dynamics/jacobian_pattern.h"
+#include "musclesim/solver/simulation.h"
+
+namespace musclesim {
+
+class LinearSystem {
+ public:
+  // `kind` is never kAuto. Throws std::runtime_error if SUNDIALS cannot allocate.
+  LinearSystem(LinearSolverKind kind, const JacobianPattern& pattern, N_Vector state,
+               SUNContext context);
+  ~LinearSystem();
+  LinearSystem(const LinearSystem&) = delete;
+  LinearSystem& operator=(const LinearSystem&) = delete;
+
+  // Whether this one serves a system of `pattern` with `kind`.
+  bool Fits(LinearSolverKind kind, const JacobianPattern& pattern) const;
+  // Writes `values` (one per pattern entry) into `matrix` (CVODE has zeroed it).
+  void Fill(const double* values, SUNMatrix matrix) const;
+
+  LinearSolverKind kind() const { return kind_; }
+  SUNMatrix matrix() const { return matrix_; }
+  SUNLinearSolver solver() const { return solver_; }
+  // A buffer for the Jacobian's values, one per pattern entry.
+  std::vector<double>& values() { return values_; }
+
+ private:
+  LinearSolverKind kind_;
+  JacobianPattern pattern_;
+  std::vector<int> columns_;  // the column of every entry
+  std::vector<double> values_;
+  SUNMatrix matrix_ = nullptr;
+  SUNLinearSolver solver_ = nullptr;
+};
+
+}  // namespace musclesim
