@@ -55,6 +55,53 @@ TEST(Plot, TrajectoryScriptHasEveryPanelAndPhase) {
   EXPECT_THAT(script, HasSubstr("set object 2 rect from first 0.1, graph 0 to first 0.3, graph 1 fc rgb '#9ecae1'"));
 }
 
+CsvTable NetworkTrajectory() {
+  const std::string path = testing::WriteTempFile("network.csv",
+      "t,wall.position,wall.velocity,it's.position,it's.velocity,flexor.length,flexor.tension,"
+      "flexor.shortening_velocity,flexor.activation,flexor.tension_passive,flexor.tension_active,"
+      "flexor.phase,spring.length,spring.tension,it's.load\n"
+      "0,0,0,0.1,0,0.1,0,0,0,0,0,isometric,0.1,0,5\n"
+      "0.5,0,0,0.09,-0.02,0.09,40,0.02,1,0,40,concentric,0.09,-1,5\n");
+  return ReadCsv(path);
+}
+
+TEST(Plot, NetworkScriptHasAPanelPerKindAndALinePerPart) {
+  PlotOptions options;
+  options.output = "network.png";
+  const CsvTable table = NetworkTrajectory();
+  ASSERT_TRUE(IsNetworkTrajectory(table));
+  EXPECT_FALSE(IsNetworkTrajectory(Trajectory()));
+  const std::string script = NetworkPlotScript(table, options);
+  // the inline data: t, the positions, the lengths, the tensions, the activations
+  EXPECT_THAT(script, HasSubstr("$network << EOD\n0 0 0.1 0.1 0.1 0 0 0\n0.5 0 0.09 0.09 0.09 40 -1 1\n"));
+  EXPECT_THAT(script, HasSubstr("set multiplot layout 4,1"));
+  EXPECT_THAT(script, HasSubstr("$network using 1:2 with lines lw 2 title 'wall'"));
+  // a quote in a node's name enters the script only through GnuplotString
+  EXPECT_THAT(script, HasSubstr("$network using 1:3 with lines lw 2 title 'it'.sprintf(\"%c\",39).'s'"));
+  EXPECT_THAT(script, HasSubstr("$network using 1:7 with lines lw 2 title 'spring'"));
+  EXPECT_THAT(script, HasSubstr("$network using 1:8 with lines lw 2 title 'flexor'"));
+  for (const char* label : {"position [m]", "length [m]", "tension [N]", "activation [-]", "time [s]"}) {
+    EXPECT_THAT(script, HasSubstr(label));
+  }
+}
+
+TEST(Plot, NetworkWithoutActuatorsHasThreePanels) {
+  const std::string path = testing::WriteTempFile("springs.csv",
+      "t,m.position,m.velocity,s.length,s.tension,m.load\n0,0.1,0,0.1,0,0\n1,0.2,0,0.2,5,0\n");
+  PlotOptions options;
+  options.output = "springs.png";
+  EXPECT_THAT(NetworkPlotScript(ReadCsv(path), options), HasSubstr("set multiplot layout 3,1"));
+}
+
+TEST(Plot, NetworkCellThatIsNotFiniteIsNamed) {
+  const std::string path = testing::WriteTempFile("nan.csv",
+      "t,m.position,m.velocity,s.length,s.tension\n0,0.1,0,0.1,0\n1,nan,0,0.2,5\n");
+  PlotOptions options;
+  options.output = "nan.png";
+  EXPECT_THAT([&] { NetworkPlotScript(ReadCsv(path), options); },
+              ThrowsMessage<InputError>(HasSubstr("nan.csv:3: column m.position = 'nan'")));
+}
+
 TEST(Plot, MissingColumnsAreNamed) {
   const std::string path = testing::WriteTempFile("short.csv", "t,length,load\n0,0.1,0\n");
   PlotOptions options;

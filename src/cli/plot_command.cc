@@ -72,7 +72,8 @@ int PlotCommand(int argc, char** argv) {
       script = SweepPlotScript(table, args.Value("--x"), optional("--y"), optional("--color"), options);
     } else {
       if (args.Has("--y") || args.Has("--color")) throw UsageError("--y and --color go with --x");
-      script = TrajectoryPlotScript(table, options);
+      script = IsNetworkTrajectory(table) ? NetworkPlotScript(table, options)
+                                          : TrajectoryPlotScript(table, options);
     }
   }
   if (args.Has("--script")) WriteOutput(args.Value("--script"), script);

@@ -42,6 +42,15 @@ void Validate(const PlotOptions& options);
 // of a cell that is not a finite number.
 std::string TrajectoryPlotScript(const CsvTable& trajectory, const PlotOptions& options);
 
+// A network's trajectory CSV of `musclesim run` (columns <node>.position, <element>.length,
+// <element>.tension, <actuator>.activation): one panel per quantity kind (node positions,
+// element lengths, tensions, activations when there are actuators), one line per node or
+// element, sharing the time axis. Throws InputError as TrajectoryPlotScript does.
+std::string NetworkPlotScript(const CsvTable& trajectory, const PlotOptions& options);
+
+// Whether `table` is a network's trajectory (it has a <node>.position column).
+bool IsNetworkTrajectory(const CsvTable& table);
+
 // The model's curves (the paper's Figures 1, 3 and 5): passive, active (u = 1, v = 0) and
 // total tension against length with L_opt shaded and each Gaussian component drawn thin,
 // and g(v) against shortening velocity.
