@@ -41,6 +41,11 @@ std::string Join(const std::string& path, const std::string& key) {
 
 void RequireMap(const Source& source, const YAML::Node& node, const std::string& path,
                 std::initializer_list<const char*> allowed) {
+  RequireMap(source, node, path, allowed, nullptr);
+}
+
+void RequireMap(const Source& source, const YAML::Node& node, const std::string& path,
+                std::initializer_list<const char*> allowed, const char* extra) {
   if (!node.IsMap()) {
     Fail(source, node, path.empty() ? "(top level)" : path, Describe(node),
          "must be a map of keys");
@@ -56,6 +61,10 @@ void RequireMap(const Source& source, const YAML::Node& node, const std::string&
     for (const char* name : allowed) {
       known = known || key == name;
       list += (list.empty() ? "" : ", ") + std::string(name);
+    }
+    if (extra != nullptr) {
+      known = known || key == extra;
+      list += ", " + std::string(extra);
     }
     if (!known) {
       throw InputError(Join(path, key) + " (" + Location(source, entry.first) +

@@ -34,6 +34,10 @@ std::string Describe(const YAML::Node& node);
 // Requires `node` to be a map whose keys are all in `allowed`.
 void RequireMap(const Source& source, const YAML::Node& node, const std::string& path,
                 std::initializer_list<const char*> allowed);
+// The same with one more allowed key, `extra`, listed after them (nullptr: none): a block
+// read by a shared reader inside a map that adds a key of its own (a load's `node`).
+void RequireMap(const Source& source, const YAML::Node& node, const std::string& path,
+                std::initializer_list<const char*> allowed, const char* extra);
 
 // A key that must be present in a map.
 YAML::Node Required(const Source& source, const YAML::Node& map, const std::string& path,

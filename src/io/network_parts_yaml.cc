@@ -1,0 +1,261 @@
+#include "io/network_parts_yaml.h"
+
+#include "io/scenario_fields.h"
+#include "musclesim/io/input_ranges.h"
+
+namespace musclesim {
+
+namespace {
+
+using yaml::Join;
+using yaml::Required;
+using yaml::ValidateAt;
+
+std::string Item(const char* list, std::size_t i) {
+  return std::string(list) + "[" + std::to_string(i) + "]";
+}
+
+void RequireList(const yaml::Source& src, const YAML::Node& node, const char* list,
+                 const char* what) {
+  if (!node.IsSequence()) {
+    yaml::Fail(src, node, list, yaml::Describe(node), std::string("must be a list of ") + what);
+  }
+}
+
+// A node's or element's name heads CSV columns ("load.position"): a plain name keeps the
+// header one comma-separated line whose names split at their last dot.
+std::string ReadName(const yaml::Source& src, const YAML::Node& item, const std::string& path) {
+  const YAML::Node node = Required(src, item, path, "name");
+  const std::string name = yaml::ReadString(src, node, Join(path, "name"));
+  bool plain = !name.empty();
+  for (const char c : name) {
+    plain = plain && ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                      (c >= '0' && c <= '9') || c == '_' || c == '-');
+  }
+  if (!plain) {
+    yaml::Fail(src, node, Join(path, "name"), name.empty() ? "\"\"" : yaml::Describe(node),
+               "must be a plain name of letters, digits, _ and - (it heads CSV columns such "
+               "as name.position)");
+  }
+  return name;
+}
+
+Waveform ReadMotion(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+  const std::string type = ReadType(src, node, path);
+  WaveformKind kind{};
+  ValidateAt(src, node, path, [&] { kind = ParseWaveformKind(type); });
+  if (kind == WaveformKind::kStep || kind == WaveformKind::kPulses) {
+    yaml::Fail(src, node["type"], Join(path, "type"), type,
+               "must be continuous in time: constant, ramp, sine or table (a jump in position "
+               "would move the node at infinite speed)");
+  }
+  return ReadWaveform(src, node, path, kind, &kPositionRange);
+}
+
+Node ReadNode(const yaml::Source& src, const YAML::Node& item, const std::string& path) {
+  if (!item.IsMap()) {
+    yaml::Fail(src, item, path, yaml::Describe(item),
+               "must be a map: a name and one of fixed, prescribed or mass");
+  }
+  // a misspelt key first: it would otherwise read as a missing kind
+  yaml::RequireMap(src, item, path, {"name", "fixed", "prescribed", "mass", "position", "velocity"});
+  Node node;
+  node.name = ReadName(src, item, path);
+  const int kinds = static_cast<int>(static_cast<bool>(item["fixed"])) +
+                    static_cast<int>(static_cast<bool>(item["prescribed"])) +
+                    static_cast<int>(static_cast<bool>(item["mass"]));
+  if (kinds != 1) {
+    yaml::Fail(src, item, path, yaml::Describe(item),
+               "give exactly one of fixed (its position [m]), prescribed (its motion) or mass "
+               "(a free node [kg], with position and velocity)");
+  }
+  if (item["fixed"]) {
+    yaml::RequireMap(src, item, path, {"name", "fixed"});
+    node.kind = NodeKind::kFixed;
+    node.position = yaml::ReadNumberIn(src, item["fixed"], Join(path, "fixed"), kPositionRange);
+  } else if (item["prescribed"]) {
+    yaml::RequireMap(src, item, path, {"name", "prescribed"});
+    node.kind = NodeKind::kPrescribed;
+    node.motion = ReadMotion(src, item["prescribed"], Join(path, "prescribed"));
+  } else {
+    yaml::RequireMap(src, item, path, {"name", "mass", "position", "velocity"});
+    node.kind = NodeKind::kFree;
+    node.mass = yaml::ReadNumberIn(src, item["mass"], Join(path, "mass"), kMassRange);
+    node.position = yaml::ReadNumberIn(src, Required(src, item, path, "position"),
+                                       Join(path, "position"), kPositionRange);
+    node.velocity = yaml::ReadOptionalNumberIn(src, item, path, "velocity", kSpeedRange, 0.0);
+  }
+  ValidateAt(src, item, path, [&] { Validate(node); });
+  return node;
+}
+
+std::shared_ptr<const TensionModel> FindModel(const yaml::Source& src, const YAML::Node& item,
+                                              const std::string& path,
+                                              const NamedModels& models) {
+  const YAML::Node node = Required(src, item, path, "model");
+  const std::string name = yaml::ReadString(src, node, Join(path, "model"));
+  const auto found = models.by_name.find(name);
+  if (found == models.by_name.end()) {
+    std::string known;
+    for (const std::string& n : models.names) known += (known.empty() ? "" : ", ") + n;
+    yaml::Fail(src, node, Join(path, "model"), name,
+               known.empty() ? "names no model: the file has no models block"
+                             : "names no model; the models are: " + known);
+  }
+  return found->second;
+}
+
+Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+                    const NamedModels& models, double t_start, double t_end) {
+  const std::string type = ReadType(src, item, path);
+  Element e;
+  ValidateAt(src, item, path, [&] { e.kind = ParseElementKind(type); });
+  switch (e.kind) {
+    case ElementKind::kActuator:
+      yaml::RequireMap(src, item, path, {"name", "type", "from", "to", "model", "activation"});
+      break;
+    case ElementKind::kSpring:
+      yaml::RequireMap(src, item, path, {"name", "type", "from", "to", "stiffness", "rest_length"});
+      break;
+    case ElementKind::kTendon:
+      yaml::RequireMap(src, item, path,
+                       {"name", "type", "from", "to", "slack_length", "stiffness", "exponential"});
+      break;
+    case ElementKind::kDamper:
+      yaml::RequireMap(src, item, path, {"name", "type", "from", "to", "damping"});
+      break;
+  }
+  e.name = ReadName(src, item, path);
+  e.from = yaml::ReadString(src, Required(src, item, path, "from"), Join(path, "from"));
+  e.to = yaml::ReadString(src, Required(src, item, path, "to"), Join(path, "to"));
+  const auto number_in = [&](const char* key, const InputRange& range) {
+    return yaml::ReadNumberIn(src, Required(src, item, path, key), Join(path, key), range);
+  };
+  switch (e.kind) {
+    case ElementKind::kActuator: {
+      e.model = FindModel(src, item, path, models);
+      const YAML::Node activation = Required(src, item, path, "activation");
+      e.activation = ReadActivation(src, activation, Join(path, "activation"));
+      CheckPulses(src, activation, Join(path, "activation"), e.activation, t_start, t_end);
+      break;
+    }
+    case ElementKind::kSpring:
+      e.stiffness = number_in("stiffness", kStiffnessRange);
+      e.rest_length = number_in("rest_length", kPositionRange);
+      break;
+    case ElementKind::kTendon: {
+      e.slack_length = number_in("slack_length", kPositionRange);
+      const YAML::Node exponential = item["exponential"];
+      if (static_cast<bool>(item["stiffness"]) == static_cast<bool>(exponential)) {
+        yaml::Fail(src, item, path, exponential ? "stiffness and exponential" : "neither",
+                   "give exactly one of stiffness (a linear tendon [N/m]) or exponential "
+                   "({k, alpha}: k (exp(alpha (l - slack_length)) - 1))");
+      }
+      if (exponential) {
+        const std::string at = Join(path, "exponential");
+        yaml::RequireMap(src, exponential, at, {"k", "alpha"});
+        e.k = yaml::ReadNumberIn(src, Required(src, exponential, at, "k"), Join(at, "k"),
+                                 kPositiveForceRange);
+        e.alpha = yaml::ReadNumber(src, Required(src, exponential, at, "alpha"),
+                                   Join(at, "alpha"));
+      } else {
+        e.stiffness = number_in("stiffness", kStiffnessRange);
+      }
+      break;
+    }
+    case ElementKind::kDamper:
+      e.damping = number_in("damping", kDampingRange);
+      break;
+  }
+  ValidateAt(src, item, path, [&] { Validate(e); });
+  return e;
+}
+
+}  // namespace
+
+std::vector<Node> ReadNodes(const yaml::Source& src, const YAML::Node& node) {
+  RequireList(src, node, "nodes", "nodes, each a name and one of fixed, prescribed or mass");
+  std::vector<Node> nodes;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    nodes.push_back(ReadNode(src, node[i], Item("nodes", i)));
+  }
+  return nodes;
+}
+
+std::vector<Element> ReadElements(const yaml::Source& src, const YAML::Node& node,
+                                  const NamedModels& models, double t_start, double t_end) {
+  RequireList(src, node, "elements", "elements, each {name, type, from, to, ...}");
+  std::vector<Element> elements;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    elements.push_back(ReadElement(src, node[i], Item("elements", i), models, t_start, t_end));
+  }
+  return elements;
+}
+
+std::vector<NodeLoad> ReadNodeLoads(const yaml::Source& src, const YAML::Node& node,
+                                    double t_start, double t_end) {
+  RequireList(src, node, "loads", "loads, each {node, type, ...}");
+  std::vector<NodeLoad> loads;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string path = Item("loads", i);
+    const YAML::Node item = node[i];
+    NodeLoad load;
+    load.load = ReadLoad(src, item, path, "node");
+    load.node = yaml::ReadString(src, Required(src, item, path, "node"), Join(path, "node"));
+    if (load.load.kind == LoadKind::kForce) {
+      CheckPulses(src, item, path, load.load.force, t_start, t_end);
+    }
+    loads.push_back(std::move(load));
+  }
+  return loads;
+}
+
+std::vector<LengthLimit> ReadLengthLimits(const yaml::Source& src, const YAML::Node& node,
+                                          const NetworkSystem& system, double t_start) {
+  RequireList(src, node, "limits", "limits, each {element, min_length, max_length}");
+  std::vector<double> y(static_cast<std::size_t>(system.state_size()));
+  system.InitialState(y.data());
+  std::vector<LengthLimit> limits;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string path = Item("limits", i);
+    const YAML::Node item = node[i];
+    yaml::RequireMap(src, item, path, {"element", "min_length", "max_length"});
+    LengthLimit limit;
+    const YAML::Node element = Required(src, item, path, "element");
+    limit.element = yaml::ReadString(src, element, Join(path, "element"));
+    const int e = system.FindElement(limit.element);
+    if (e < 0) {
+      std::string known;
+      for (const Element& part : system.elements()) known += (known.empty() ? "" : ", ") + part.name;
+      yaml::Fail(src, element, Join(path, "element"), limit.element,
+                 "names no element; the elements are: " + known);
+    }
+    if (!item["min_length"] && !item["max_length"]) {
+      yaml::Fail(src, item, path, yaml::Describe(item),
+                 "give min_length, max_length or both [m]");
+    }
+    const double length = system.Length(e, t_start, y.data());
+    const std::string initial =
+        limit.element + "'s initial length = " + FormatNumber(length) + " [m]";
+    if (const YAML::Node min = item["min_length"]) {
+      const double value = yaml::ReadNumber(src, min, Join(path, "min_length"));
+      if (!(value >= 0.0 && value < length)) {
+        yaml::Fail(src, min, Join(path, "min_length"), yaml::Describe(min),
+                   "must be >= 0 and below " + initial);
+      }
+      limit.min_length = value;
+    }
+    if (const YAML::Node max = item["max_length"]) {
+      const double value = yaml::ReadNumber(src, max, Join(path, "max_length"));
+      if (!(value > length && value <= kLengthRange.max)) {
+        yaml::Fail(src, max, Join(path, "max_length"), yaml::Describe(max),
+                   "must be above " + initial + " and at most 1000 [m]: " + kLengthRange.why);
+      }
+      limit.max_length = value;
+    }
+    limits.push_back(std::move(limit));
+  }
+  return limits;
+}
+
+}  // namespace musclesim

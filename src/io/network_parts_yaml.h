@@ -1,0 +1,41 @@
+// Private: reads the lists of a network scenario (`nodes`, `elements`, `loads`, `limits`)
+// into the parts of dynamics/network_parts.h. Each part is validated on its own here, with
+// file:line:column; how the parts fit together (names unique, references resolved, nothing
+// floating) is NetworkSystem's to check, whose errors the caller relocates.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "io/yaml_fields.h"
+#include "musclesim/dynamics/network.h"
+#include "musclesim/solver/simulation.h"
+
+namespace musclesim {
+
+// The tension models an actuator may name, by name, and the names in the file's order
+// (for messages listing them).
+struct NamedModels {
+  std::map<std::string, std::shared_ptr<const TensionModel>> by_name;
+  std::vector<std::string> names;
+};
+
+// `node` is the value of `nodes` (a list). Prescribed motions must be continuous.
+std::vector<Node> ReadNodes(const yaml::Source& src, const YAML::Node& node);
+
+// `node` is the value of `elements` (a list); an actuator's `model` must name one of `models`.
+std::vector<Element> ReadElements(const yaml::Source& src, const YAML::Node& node,
+                                  const NamedModels& models, double t_start, double t_end);
+
+// `node` is the value of `loads` (a list of loads, each with the `node` it acts on).
+std::vector<NodeLoad> ReadNodeLoads(const yaml::Source& src, const YAML::Node& node,
+                                    double t_start, double t_end);
+
+// `node` is the value of `limits` (a list); each limit's element must be one of `system`'s
+// and its lengths must lie on either side of that element's length at t_start.
+std::vector<LengthLimit> ReadLengthLimits(const yaml::Source& src, const YAML::Node& node,
+                                          const NetworkSystem& system, double t_start);
+
+}  // namespace musclesim

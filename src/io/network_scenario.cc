@@ -1,0 +1,109 @@
+// Reads network scenario files: the top-level blocks in order, the parts checked one by one,
+// then as a whole by building the system, whose ParameterErrors are put back at their keys.
+#include "musclesim/io/network_scenario.h"
+
+#include <initializer_list>
+#include <memory>
+#include <optional>
+
+#include "io/model_yaml_node.h"
+#include "io/network_parts_yaml.h"
+#include "io/scenario_fields.h"
+#include "io/yaml_override.h"
+
+namespace musclesim {
+
+NetworkSystem NetworkScenarioSpec::Build() const { return NetworkSystem(nodes, elements, loads); }
+
+NetworkRunRequest NetworkScenarioSpec::Request() const {
+  NetworkRunRequest r;
+  r.t_start = t_start;
+  r.t_end = t_end;
+  r.output_interval = output.every_step ? 0.0 : output.interval;
+  r.limits = limits;
+  return r;
+}
+
+namespace {
+
+using yaml::Required;
+
+// The top-level keys of a network scenario file.
+constexpr std::initializer_list<const char*> kNetworkKeys = {
+    "name", "models", "nodes", "elements", "loads", "time", "solver", "output", "limits"};
+
+NamedModels ReadModels(const yaml::Source& src, const YAML::Node& node,
+                       NetworkScenarioSpec& s) {
+  if (!node.IsMap()) {
+    yaml::Fail(src, node, "models", yaml::Describe(node),
+               "must be a map of named model blocks (name: {f_iso, passive, active_length, "
+               "velocity})");
+  }
+  NamedModels models;
+  for (const auto& entry : node) {
+    const std::string name = entry.first.Scalar();  // CheckDocument: keys are plain names
+    const ModelSpec spec = ReadModelSpec(src, entry.second, "models." + name);
+    models.by_name[name] = std::make_shared<const TensionModel>(spec.params);
+    models.names.push_back(name);
+    s.models[name] = spec;
+  }
+  return models;
+}
+
+NetworkScenarioSpec ReadNetworkScenario(const yaml::Source& src, const YAML::Node& root) {
+  yaml::RequireMap(src, root, "", kNetworkKeys);
+  NetworkScenarioSpec s;
+  s.source = src.file;
+  if (root["name"]) s.name = yaml::ReadString(src, root["name"], "name");
+  // before what needs it: the shortest interval, step and pulse are measured against it
+  const TimeSpan time = ReadTime(src, Required(src, root, "", "time"));
+  s.t_start = time.start;
+  s.t_end = time.end;
+
+  NamedModels models;
+  if (const YAML::Node node = root["models"]) models = ReadModels(src, node, s);
+  s.nodes = ReadNodes(src, Required(src, root, "", "nodes"));
+  s.elements = ReadElements(src, Required(src, root, "", "elements"), models, s.t_start, s.t_end);
+  if (const YAML::Node node = root["loads"]) s.loads = ReadNodeLoads(src, node, s.t_start, s.t_end);
+
+  // how the parts fit: the system's paths ("elements[2].to") are the file's key paths
+  std::optional<NetworkSystem> system;
+  yaml::ValidateAt(src, root, "", [&] {
+    system.emplace(s.Build());
+    std::vector<double> y(static_cast<std::size_t>(system->state_size()));
+    system->InitialState(y.data());
+    system->CheckLengths(s.t_start, y.data());
+  });
+
+  if (const YAML::Node node = root["solver"]) {
+    s.solver = ReadSolver(src, node, "solver", s.t_start, s.t_end);
+  }
+  if (const YAML::Node node = root["output"]) {
+    s.output = ReadOutput(src, node, "output", s.t_start, s.t_end);
+  } else {
+    s.output.interval = (s.t_end - s.t_start) / 1000.0;
+  }
+  if (const YAML::Node node = root["limits"]) {
+    s.limits = ReadLengthLimits(src, node, *system, s.t_start);
+  }
+  return s;
+}
+
+}  // namespace
+
+NetworkScenarioSpec LoadNetworkScenario(const std::string& path,
+                                        const std::vector<std::string>& overrides) {
+  // read once, so no clone is needed: the nodes not overridden keep their file positions
+  YAML::Node root = yaml::LoadFile(path);
+  for (const std::string& text : overrides) yaml::ApplyOverride(root, text, path);
+  return ReadNetworkScenario(yaml::Source{path}, root);
+}
+
+NetworkRunResult RunNetworkScenarioFile(const std::string& path,
+                                        const std::vector<std::string>& overrides) {
+  const NetworkScenarioSpec spec = LoadNetworkScenario(path, overrides);
+  Simulation simulation;
+  return simulation.Run(spec.Build(), spec.solver, spec.Request());
+}
+
+}  // namespace musclesim

@@ -1,0 +1,58 @@
+// Private: the blocks both forms of a scenario file share (the single actuator of
+// io/scenario.h and the network of io/network_scenario.h): waveforms, loads, the time span,
+// the solver and the output. Each reader validates what it reads and throws InputError
+// naming file:line:column, key path, value and rule.
+#pragma once
+
+#include <string>
+
+#include "io/yaml_fields.h"
+#include "musclesim/dynamics/loads.h"
+#include "musclesim/dynamics/waveform.h"
+#include "musclesim/io/scenario.h"
+#include "musclesim/solver/simulation.h"
+
+namespace musclesim {
+
+// The time scale of a run [s]: max(1 s, |start|, |end|). The shortest span, interval and
+// step are fractions of it (io/input_ranges.h), so that they stay many roundoffs wide.
+double TimeScale(double t_start, double t_end);
+
+// The `type` of a map that must have one (a waveform, a load, an element).
+std::string ReadType(const yaml::Source& src, const YAML::Node& node, const std::string& path);
+
+// Reads one waveform of `kind`. `values` bounds its values (a force's, a position's); nullptr
+// leaves them to ValidateActivation, which keeps an activation within [0, 1]. `extra` is
+// one more key the map may hold besides the waveform's (nullptr: none), read by the caller.
+Waveform ReadWaveform(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                      WaveformKind kind, const InputRange* values, const char* extra = nullptr);
+
+// An activation u(t): any waveform kind, validated within [0, 1].
+Waveform ReadActivation(const yaml::Source& src, const YAML::Node& node, const std::string& path);
+
+// One load: a force waveform, a spring or a mass. `extra` as for ReadWaveform.
+Load ReadLoad(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+              const char* extra = nullptr);
+
+// A pulse train's edges become stop times: its period and width must be resolved at the
+// run's times, and the run may hold at most kMaxBreakpoints edges. Nothing for other kinds.
+void CheckPulses(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                 const Waveform& w, double t_start, double t_end);
+
+// The `time` block: start and end [s], the span at least kMinSpanRelative of the time scale.
+struct TimeSpan {
+  double start = 0.0;  // [s]
+  double end = 1.0;    // [s], > start
+};
+TimeSpan ReadTime(const yaml::Source& src, const YAML::Node& time);
+
+// The `solver` block (`path` its key path) of a run over [t_start, t_end].
+SolverOptions ReadSolver(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                         double t_start, double t_end);
+
+// The `output` block (`path` its key path) of a run over [t_start, t_end]; the interval
+// defaults to a thousandth of the span.
+OutputSpec ReadOutput(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                      double t_start, double t_end);
+
+}  // namespace musclesim

@@ -1,0 +1,74 @@
+#include "io/yaml_override.h"
+
+#include "io/key_path.h"
+#include "musclesim/errors.h"
+
+namespace musclesim::yaml {
+
+void ApplyOverride(YAML::Node root, const std::string& text, const std::string& file) {
+  const std::size_t eq = text.find('=');
+  if (eq == std::string::npos) {
+    throw InputError("--set " + text + ": expected KEY=VALUE, e.g. model.velocity.n=4");
+  }
+  const std::string path = text.substr(0, eq);
+  const std::string value = text.substr(eq + 1);
+  const auto split = SplitKeyPath(path);
+  if (!split || split->empty()) {
+    throw InputError("--set " + text + ": '" + path +
+                     "' is not a dotted key path such as model.velocity.n or load[0].value (names "
+                     "joined by dots, list indices in brackets from 0 to 999999999)");
+  }
+  const std::vector<KeyPathStep>& steps = *split;
+  YAML::Node node = root;  // handles share the document: assignment below edits it
+  std::string walked;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const KeyPathStep& step = steps[i];
+    const bool last = i + 1 == steps.size();
+    const std::string here = step.key.empty()
+                                 ? walked + "[" + std::to_string(step.index) + "]"
+                                 : (walked.empty() ? step.key : walked + "." + step.key);
+    YAML::Node next;
+    if (step.key.empty()) {
+      if (node.IsMap() && walked == "load" && step.index == 0) {
+        next.reset(node);  // a single load written as a map is load[0]
+      } else if (node.IsMap()) {
+        const std::string map = walked.empty() ? "the file's top level" : walked;
+        throw InputError("--set " + text + ": " + map + " is a map, not a list, in " + file +
+                         ": an index on it has no meaning (name a key instead)");
+      } else if (!node.IsSequence() || step.index >= node.size()) {
+        throw InputError("--set " + text + ": " + here + " does not exist in " + file);
+      } else {
+        next.reset(node[step.index]);
+      }
+    } else {
+      if (!node.IsMap()) {
+        throw InputError("--set " + text + ": " + (walked.empty() ? "the file" : walked) +
+                         " is not a map in " + file);
+      }
+      if (!node[step.key] && !last) {
+        throw InputError("--set " + text + ": " + here + " does not exist in " + file);
+      }
+      if (last) {
+        if (node[step.key] && !node[step.key].IsScalar() && !node[step.key].IsNull()) {
+          throw InputError("--set " + text + ": " + here +
+                           " is a map or list; --set replaces single values only");
+        }
+        node[step.key] = YAML::Node(value);
+        return;
+      }
+      next.reset(node[step.key]);
+    }
+    if (last) {
+      if (!next.IsScalar()) {
+        throw InputError("--set " + text + ": " + here +
+                         " is a map or list; --set replaces single values only");
+      }
+      next = YAML::Node(value);
+      return;
+    }
+    node.reset(next);
+    walked = here;
+  }
+}
+
+}  // namespace musclesim::yaml

@@ -1,0 +1,17 @@
+// Private: `--set KEY=VALUE`, one value of a parsed document replaced (or one key added to
+// an existing map) before the document is read, so that the override is validated exactly
+// as the file's own value would be. Used by both forms of a scenario file.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+
+namespace musclesim::yaml {
+
+// Applies `text` ("dotted.path=value", the path as io/key_path.h reads it) to `root`, the
+// top-level map of `file` (named in messages). Throws InputError when the text is not
+// KEY=VALUE, the path is malformed, leads nowhere, or names a map or list.
+void ApplyOverride(YAML::Node root, const std::string& text, const std::string& file);
+
+}  // namespace musclesim::yaml
