@@ -346,6 +346,37 @@ TEST(Network, RejectsANetworkWithNoFreeNode) {
             "nodes = 2 nodes: need at least one free node (one with a mass): nothing would move");
 }
 
+// ---- a system is a value ------------------------------------------------------------------
+
+// A 0.5 kg mass on a spring (50 N/m, rest 0.1 m) to a crank moving as `offset` +
+// 0.01 sin(2 pi t) m.
+NetworkSystem Cranked(double offset) {
+  return NetworkSystem({Node::Free("load", 0.5, 0.1),
+                        Node::Prescribed("crank", Waveform::Sine(offset, 0.01, 1.0))},
+                       {Element::Spring("spring", "load", "crank", 50.0, 0.1)});
+}
+
+// A NetworkSystem is a value: its copy must own everything it evaluates. (It fails today:
+// the implicit copy keeps End::motion, a pointer into the original's nodes_, so the copy
+// reads freed memory once the original is gone; AddressSanitizer reports it as a
+// heap-use-after-free in Waveform::Evaluate from NetworkSystem::PositionOf.)
+TEST(Network, CopyKeepsItsPrescribedMotionWhenTheOriginalIsGone) {
+  auto original = std::make_unique<NetworkSystem>(Cranked(0.3));
+  const NetworkSystem copy = *original;
+  original.reset();
+  // another system of the same shape, likely to take the memory the original freed: a
+  // copy that still read the original's prescribed motions would read this one's
+  const NetworkSystem other = Cranked(0.5);
+  const double y[2] = {0.1, 0.0};
+  double ydot[2];
+  copy.RightHandSide(0.25, y, ydot);
+  // at t = 0.25 s the crank is at 0.3 + 0.01 = 0.31 m: the spring, 0.21 m long, pulls the
+  // load with 50 * 0.11 = 5.5 N
+  EXPECT_NEAR(ydot[1], 5.5 / 0.5, 1e-12);
+  other.RightHandSide(0.25, y, ydot);
+  EXPECT_NEAR(ydot[1], 50.0 * 0.31 / 0.5, 1e-12);  // 0.51 m: 0.41 m long
+}
+
 // ---- the single actuator as a network (docs/model.md 7.4) --------------------------------
 
 TEST(Network, SingleActuatorNetworkIsItsAccelerationBitForBit) {
