@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "musclesim/errors.h"
+#include "musclesim/io/network_scenario.h"
 #include "support/canonical_actuator.h"
 #include "support/scenario_files.h"
 
@@ -320,13 +321,21 @@ TEST(Simulation, EveryShippedScenarioRunsToTenTimesItsEnd) {
   for (const auto& entry : std::filesystem::directory_iterator(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios")) {
     const std::string path = entry.path().string();
     if (testing::ReadFile(path).find("\ntime:") == std::string::npos) continue;  // sweeps, fits
+    if (IsNetworkScenario(path)) {
+      const NetworkScenarioSpec network = LoadNetworkScenario(path);
+      const std::string end = FormatNumber(network.t_start + 10.0 * (network.t_end - network.t_start));
+      const NetworkRunResult run = RunNetworkScenarioFile(path, {"time.end=" + end});
+      EXPECT_NE(run.stats.status, RunStatus::kFailed) << path << ": " << run.stats.message;
+      ++checked;
+      continue;
+    }
     const ScenarioSpec spec = LoadScenario(path);
     const std::string end = FormatNumber(spec.t_start + 10.0 * (spec.t_end - spec.t_start));
     const Outcome run = Simulate(path, {"time.end=" + end});
     EXPECT_NE(run.stats.status, RunStatus::kFailed) << path << ": " << run.stats.message;
     ++checked;
   }
-  EXPECT_GE(checked, 7);
+  EXPECT_GE(checked, 12);  // the seven single-actuator scenarios and the five networks
 }
 
 }  // namespace

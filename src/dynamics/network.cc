@@ -93,7 +93,7 @@ int NetworkSystem::FindElement(std::string_view name) const {
 void NetworkSystem::Resolve() {
   int states = 0;
   for (const Node& node : nodes_) {
-    End end{node.kind, -1, node.position, &node.motion};
+    End end{node.kind, -1, node.position, static_cast<int>(ends_.size())};
     if (node.kind == NodeKind::kFree) {
       end.state = states;
       states += 2;
@@ -252,7 +252,7 @@ double NetworkSystem::PositionOf(const End& end, double t, const double* y) cons
     case NodeKind::kFixed:
       return end.position;
     case NodeKind::kPrescribed:
-      return end.motion->Evaluate(t);
+      return nodes_[end.node].motion.Evaluate(t);
   }
   return 0.0;
 }
@@ -264,7 +264,7 @@ double NetworkSystem::VelocityOf(const End& end, double t, const double* y) cons
     case NodeKind::kFixed:
       return 0.0;
     case NodeKind::kPrescribed:
-      return end.motion->Slope(t);
+      return nodes_[end.node].motion.Slope(t);
   }
   return 0.0;
 }

@@ -79,7 +79,7 @@ class NetworkSystem {
     NodeKind kind;
     int state;            // free: index of x in y; else -1
     double position;      // fixed
-    const Waveform* motion;  // prescribed
+    int node;             // index in nodes_ (prescribed: its motion; an index, so copies work)
   };
   // An element as the right-hand side sees it: its ends and where its Jacobian goes.
   struct Link {
