@@ -22,7 +22,9 @@ constexpr const char* kHelp = R"(usage: musclesim sweep SWEEP.yaml [-o PATH] [--
 
 Runs every point of the sweep (a base scenario with values overridden at dotted paths) and
 writes one summary CSV: index, one column per swept path, status (ok, failed, or invalid),
-the metrics, steps, rhs_evals, wall_seconds, message; rows sorted by index.
+the metrics, steps, rhs_evals, wall_seconds, message; rows sorted by index. The base may be
+a network scenario: its metrics read the element metric_options.element names (by default
+its only actuator), and its kept trajectories are network CSVs.
   -o PATH     overrides the sweep file's `output`
   --jobs N    worker threads (default: every core); points are handed out dynamically
   --resume    skip the points already in PATH.partial (left by an interrupted run of the

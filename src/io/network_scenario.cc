@@ -8,6 +8,7 @@
 
 #include "io/model_yaml_node.h"
 #include "io/network_parts_yaml.h"
+#include "io/network_scenario_reader.h"
 #include "io/scenario_fields.h"
 #include "io/yaml_override.h"
 
@@ -50,6 +51,8 @@ NamedModels ReadModels(const yaml::Source& src, const YAML::Node& node,
   return models;
 }
 
+}  // namespace
+
 NetworkScenarioSpec ReadNetworkScenario(const yaml::Source& src, const YAML::Node& root) {
   yaml::RequireMap(src, root, "", kNetworkKeys);
   NetworkScenarioSpec s;
@@ -88,8 +91,6 @@ NetworkScenarioSpec ReadNetworkScenario(const yaml::Source& src, const YAML::Nod
   }
   return s;
 }
-
-}  // namespace
 
 NetworkScenarioSpec LoadNetworkScenario(const std::string& path,
                                         const std::vector<std::string>& overrides) {

@@ -48,6 +48,16 @@ double LengthAt(const std::vector<TrajectoryPoint>& tr, double t) {
 
 }  // namespace
 
+TrajectoryPoint ElementPoint(double t, const ElementSample& element) {
+  TrajectoryPoint point{t, {}};
+  point.sample.length = element.length;
+  point.sample.shortening_velocity = -element.lengthening_rate;
+  point.sample.activation = element.activation;
+  point.sample.tension = element.parts;  // all zero but for an actuator
+  point.sample.tension.total = element.tension;
+  return point;
+}
+
 double ComputeMetric(Metric metric, const std::vector<TrajectoryPoint>& tr,
                      const MetricOptions& options) {
   const double nan = std::numeric_limits<double>::quiet_NaN();

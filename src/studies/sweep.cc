@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <memory>
 
 #include "musclesim/errors.h"
 #include "musclesim/model/enum_names.h"
-#include "musclesim/io/scenario.h"
+#include "musclesim/io/network_scenario.h"
 #include "io/yaml_fields.h"
+#include "studies/sweep_base.h"
+#include "studies/sweep_metric_element.h"
 #include "studies/sweep_point_error.h"
 #include "studies/sweep_signature.h"
 
@@ -290,7 +293,8 @@ SweepSpec LoadSweep(const std::string& path) {
     }
   }
   if (const YAML::Node options = root["metric_options"]) {
-    yaml::RequireMap(src, options, "metric_options", {"window", "target_length"});
+    // `element` is read once the base's elements are known, below
+    yaml::RequireMap(src, options, "metric_options", {"window", "target_length", "element"});
     if (options["window"]) {
       const std::vector<double> w = yaml::ReadNumbers(src, options["window"], "metric_options.window", 2);
       if (!(std::isfinite(w[0]) && std::isfinite(w[1]) && w[1] > w[0])) {
@@ -329,16 +333,19 @@ SweepSpec LoadSweep(const std::string& path) {
   // every point is a full scenario: validate them (or, for a large sweep, a sample of them)
   // before anything runs; a point's error is told in terms of the file at fault
   spec.base_digest = Digest(yaml::ReadText(spec.base));
-  const ScenarioTemplate base_template(spec.base);
-  const long points = PointCount(spec);
-  const bool all = points <= kUpFrontPoints;
-  for (const long i : UpFrontPoints(spec)) {
+  spec.network = IsNetworkScenario(spec.base);
+  const std::unique_ptr<SweepBase> base_scenario = OpenSweepBase(spec);
+  const bool all = PointCount(spec) <= kUpFrontPoints;
+  for (const long i : UpFrontPoints(spec)) {  // point 0 first
+    MetricElements elements;
     try {
-      ScenarioSpec scenario = base_template.Instantiate(PointOverrides(spec, i));
-      if (all) spec.scenarios.push_back(std::move(scenario));
+      elements = base_scenario->Validate(PointOverrides(spec, i), spec.metric_options.element,
+                                         all ? &spec : nullptr);
     } catch (const InputError& e) {
-      throw InputError(PointErrorExplainer(spec, base_template).Explain(i, e.what()).message);
+      throw InputError(PointErrorExplainer(spec, *base_scenario).Explain(i, e.what()).message);
     }
+    // the element the metrics read, from point 0; every later point must have it too
+    if (i == 0) spec.metric_options.element = ResolveMetricElement(src, root, spec, elements);
   }
   return spec;
 }

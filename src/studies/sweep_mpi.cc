@@ -158,8 +158,8 @@ SweepOutcome RunSweepMpi(const SweepSpec& spec, const SweepRunOptions& options) 
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   try {
-    const ScenarioTemplate base(spec.base);
-    WorkerPool pool(spec, base, options.output, WorkerThreads(options.jobs));
+    const std::unique_ptr<SweepBase> base = OpenSweepBase(spec);
+    WorkerPool pool(spec, *base, options.output, WorkerThreads(options.jobs));
     if (rank == 0) return Root(spec, options, ranks, observer, pool);
     Worker(observer, pool);
     return {};

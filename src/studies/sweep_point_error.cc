@@ -70,11 +70,11 @@ std::string Describe(const SweepSpec& spec, const std::vector<std::string>& valu
 
 }  // namespace
 
-PointErrorExplainer::PointErrorExplainer(const SweepSpec& spec, const ScenarioTemplate& base)
+PointErrorExplainer::PointErrorExplainer(const SweepSpec& spec, const SweepBase& base)
     : spec_(spec), base_(base), base_root_(yaml::LoadFile(spec.base)) {
   // the base alone is read from its own nodes, whose positions are exact
   try {
-    base_.Instantiate({});
+    base_.Validate({}, spec_.metric_options.element, nullptr);
   } catch (const InputError& e) {
     base_error_ = e.what();
   }
@@ -123,7 +123,7 @@ PointErrorExplainer::Explanation PointErrorExplainer::Explain(long index,
   const std::vector<std::string> overrides = PointOverrides(spec_, index);
   for (std::size_t k = 0; k < spec_.axes.size(); ++k) {
     try {
-      base_.Instantiate({overrides[k]});
+      base_.Validate({overrides[k]}, spec_.metric_options.element, nullptr);
     } catch (const InputError& e) {
       if (IsBaseError(e.what())) continue;  // that value leaves the base's own error as it is
       const SweepAxis& axis = spec_.axes[k];

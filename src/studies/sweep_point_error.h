@@ -10,8 +10,8 @@
 #include <optional>
 #include <string>
 
-#include "musclesim/io/scenario.h"
 #include "musclesim/studies/sweep.h"
+#include "studies/sweep_base.h"
 
 namespace musclesim {
 
@@ -19,7 +19,7 @@ class PointErrorExplainer {
  public:
   // `base` must be the spec's base scenario; both must outlive the explainer, which reads
   // the base file once more (for the positions of its keys) and validates it alone.
-  PointErrorExplainer(const SweepSpec& spec, const ScenarioTemplate& base);
+  PointErrorExplainer(const SweepSpec& spec, const SweepBase& base);
 
   struct Explanation {
     std::string message;         // complete and printable, as an InputError's [-]
@@ -27,7 +27,7 @@ class PointErrorExplainer {
   };
 
   // `error` is the message of the InputError that instantiating point `index` threw.
-  // Instantiates the base with single axis values to find the culprit (only on failure,
+  // Validates the base with single axis values to find the culprit (only on failure,
   // so its cost does not matter).
   Explanation Explain(long index, const std::string& error) const;
 
@@ -40,7 +40,7 @@ class PointErrorExplainer {
   bool IsBaseError(const std::string& message) const;
 
   const SweepSpec& spec_;
-  const ScenarioTemplate& base_;
+  const SweepBase& base_;
   YAML::Node base_root_;                   // the base file as written, with positions
   std::optional<std::string> base_error_;  // the base scenario's own error, if any
 };

@@ -12,7 +12,6 @@
 
 #include "musclesim/errors.h"
 #include "musclesim/io/output_file.h"
-#include "musclesim/io/trajectory_csv.h"
 
 namespace musclesim {
 
@@ -32,16 +31,15 @@ std::string SummaryHeader(const SweepSpec& spec) {
 }
 
 struct PointRunner::State {
-  State(const SweepSpec& s, std::unique_ptr<ScenarioTemplate> b) : spec(s), base(std::move(b)) {}
+  State(const SweepSpec& s, std::unique_ptr<SweepBase> b) : spec(s), base(std::move(b)) {}
   const SweepSpec& spec;
-  std::unique_ptr<ScenarioTemplate> base;  // this thread's own copy
+  std::unique_ptr<SweepBase> base;                 // this thread's own copy
   std::unique_ptr<PointErrorExplainer> explainer;  // made at this thread's first invalid point
   std::string trajectory_folder;
-  Simulation simulation;                   // re-used by every point of this thread
-  std::vector<TrajectoryPoint> trajectory;
+  Simulation simulation;                           // re-used by every point of this thread
 };
 
-PointRunner::PointRunner(const SweepSpec& spec, const ScenarioTemplate& base, std::string output)
+PointRunner::PointRunner(const SweepSpec& spec, const SweepBase& base, std::string output)
     : state_(std::make_unique<State>(spec, base.Copy())) {
   const std::filesystem::path out(output);
   state_->trajectory_folder =
@@ -57,33 +55,25 @@ std::string PointRunner::Run(long index, RowStatus& status) {
   for (const std::string& v : values) row.append(",").append(CsvField(v));
 
   // kept from validation for small sweeps; built (and so validated) here for large ones
-  std::optional<ScenarioSpec> built;
-  if (s.spec.scenarios.empty()) {
+  try {
+    s.base->Prepare(s.spec, index);
+  } catch (const InputError& e) {
+    std::string message = e.what();
     try {
-      built = s.base->Instantiate(PointOverrides(s.spec, index));
-    } catch (const InputError& e) {
-      std::string message = e.what();
-      try {
-        if (!s.explainer) s.explainer = std::make_unique<PointErrorExplainer>(s.spec, *s.base);
-        message = s.explainer->Explain(index, message).message;
-      } catch (const std::exception&) {
-        // the base file went away since the sweep started: keep the reader's own message
-      }
-      status = RowStatus::kInvalid;
-      row.append(",").append(ToString(status));
-      for (std::size_t m = 0; m < s.spec.metrics.size(); ++m) row += ',';
-      return row.append(",0,0,0,").append(CsvField(message));
+      if (!s.explainer) s.explainer = std::make_unique<PointErrorExplainer>(s.spec, *s.base);
+      message = s.explainer->Explain(index, message).message;
+    } catch (const std::exception&) {
+      // the base file went away since the sweep started: keep the reader's own message
     }
+    status = RowStatus::kInvalid;
+    row.append(",").append(ToString(status));
+    for (std::size_t m = 0; m < s.spec.metrics.size(); ++m) row += ',';
+    return row.append(",0,0,0,").append(CsvField(message));
   }
-  const ScenarioSpec& scenario =
-      built ? *built : s.spec.scenarios[static_cast<std::size_t>(index)];
 
   RunStats stats;
-  s.trajectory.clear();
   try {
-    const ActuatorSystem system(scenario.model.params, scenario.actuator, scenario.activation,
-                                scenario.loads);
-    stats = s.simulation.Run(system, scenario.solver, scenario.Request(), s.trajectory);
+    stats = s.base->Run(s.simulation);
   } catch (const std::exception& e) {
     stats.status = RunStatus::kFailed;
     stats.message = e.what();
@@ -92,10 +82,11 @@ std::string PointRunner::Run(long index, RowStatus& status) {
   status = failed ? RowStatus::kFailed : RowStatus::kOk;
 
   row.append(",").append(ToString(status));
+  const std::vector<TrajectoryPoint>& trajectory = s.base->trajectory();
   for (Metric m : s.spec.metrics) {
     row += ',';
-    if (!s.trajectory.empty() && !failed) {
-      row += MetricField(ComputeMetric(m, s.trajectory, s.spec.metric_options));
+    if (!trajectory.empty() && !failed) {
+      row += MetricField(ComputeMetric(m, trajectory, s.spec.metric_options));
     }
   }
   row.append(",").append(std::to_string(stats.steps));
@@ -105,15 +96,15 @@ std::string PointRunner::Run(long index, RowStatus& status) {
 
   const bool keep = s.spec.trajectories == TrajectoryPolicy::kAll ||
                     (s.spec.trajectories == TrajectoryPolicy::kFailed && failed);
-  if (keep && !s.trajectory.empty()) {
+  if (keep && !trajectory.empty()) {
     std::filesystem::create_directories(s.trajectory_folder);
     WriteOutput(s.trajectory_folder + "/" + std::to_string(index) + ".csv",
-                FormatTrajectoryCsv(s.trajectory, scenario.PhaseTolerance()));
+                s.base->TrajectoryCsv());
   }
   return row;
 }
 
-WorkerPool::WorkerPool(const SweepSpec& spec, const ScenarioTemplate& base, std::string output,
+WorkerPool::WorkerPool(const SweepSpec& spec, const SweepBase& base, std::string output,
                        int jobs) {
   running_ = jobs;
   for (int j = 0; j < jobs; ++j) {
@@ -132,7 +123,7 @@ WorkerPool::~WorkerPool() {
   for (std::thread& t : threads_) t.join();
 }
 
-void WorkerPool::Work(const SweepSpec& spec, const ScenarioTemplate& base,
+void WorkerPool::Work(const SweepSpec& spec, const SweepBase& base,
                       const std::string& output) {
   try {
     PointRunner runner(spec, base, output);
@@ -216,10 +207,10 @@ SweepOutcome RunSweep(const SweepSpec& spec, const SweepRunOptions& options) {
   const long points = summary.Points();
   observer.OnProgress(summary.Count(), points);
 
-  const ScenarioTemplate base(spec.base);
+  const std::unique_ptr<SweepBase> base = OpenSweepBase(spec);
   const int jobs = static_cast<int>(
       std::min<long>(WorkerThreads(options.jobs), std::max<long>(1, summary.Unhanded())));
-  WorkerPool pool(spec, base, options.output, jobs);
+  WorkerPool pool(spec, *base, options.output, jobs);
   bool stopping = false, closed = false;
   while (!pool.Finished()) {
     // the observer is asked on this thread only, so it need not be thread-safe

@@ -59,6 +59,9 @@ SweepSignature SweepSignature::Of(const SweepSpec& spec) {
   Add(metrics, Optional(spec.metric_options.window_start));
   Add(metrics, Optional(spec.metric_options.window_end));
   Add(metrics, Optional(spec.metric_options.target_length));
+  // the single actuator's metrics always read its actuator: leaving the element out keeps
+  // the signatures of sweeps written before networks could be swept
+  if (spec.network) Add(metrics, spec.metric_options.element);
   return {spec.base_digest, Digest(points), Digest(metrics)};
 }
 

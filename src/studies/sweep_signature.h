@@ -1,7 +1,8 @@
 // Private: what identifies a sweep, so that `--resume` continues only the sweep that wrote
 // PATH.partial. Three 64-bit digests (FNV-1a; they detect edits, not deliberate forgeries):
 // the base scenario file's bytes, the points (mode, samples, seed and every axis), and what
-// a row holds (the metrics and their options). The partial file's first line carries them:
+// a row holds (the metrics and their options, a network's metric element among them). The
+// partial file's first line carries them:
 //   # sweep base=0123456789abcdef points=... metrics=...
 #pragma once
 

@@ -11,18 +11,18 @@
 #include <thread>
 #include <vector>
 
-#include "musclesim/io/scenario.h"
 #include "musclesim/studies/sweep_runner.h"
+#include "studies/sweep_base.h"
 #include "studies/sweep_summary.h"
 #include "studies/sweep_summary_row.h"
 
 namespace musclesim {
 
-// Runs single points. One per thread: it owns its template copy, Simulation and buffers.
+// Runs single points. One per thread: it owns its copy of the base, Simulation and buffers.
 class PointRunner {
  public:
   // `output` is the summary path, which names the trajectory folder.
-  PointRunner(const SweepSpec& spec, const ScenarioTemplate& base, std::string output);
+  PointRunner(const SweepSpec& spec, const SweepBase& base, std::string output);
   ~PointRunner();
 
   // Runs point `index` and returns its summary row (no newline) and status. A point not
@@ -44,7 +44,7 @@ class WorkerPool {
     RowStatus status;
   };
 
-  WorkerPool(const SweepSpec& spec, const ScenarioTemplate& base, std::string output, int jobs);
+  WorkerPool(const SweepSpec& spec, const SweepBase& base, std::string output, int jobs);
   ~WorkerPool();  // closes and joins
   WorkerPool(const WorkerPool&) = delete;
   WorkerPool& operator=(const WorkerPool&) = delete;
@@ -61,7 +61,7 @@ class WorkerPool {
   int jobs() const { return static_cast<int>(threads_.size()); }
 
  private:
-  void Work(const SweepSpec& spec, const ScenarioTemplate& base, const std::string& output);
+  void Work(const SweepSpec& spec, const SweepBase& base, const std::string& output);
 
   mutable std::mutex mutex_;
   std::condition_variable work_ready_, row_ready_;

@@ -1,6 +1,8 @@
 // Parameter sweeps: many scenario runs made from one base scenario by overriding values at
-// dotted paths (as `--set` does), summarised by metrics. This header holds the sweep file
-// and its points; sweep_runner.h runs them.
+// dotted paths (as `--set` does), summarised by metrics. The base may be of either form: the
+// single actuator (io/scenario.h) or a network (io/network_scenario.h), whose metrics read
+// the element metric_options.element names. This header holds the sweep file and its points;
+// sweep_runner.h runs them.
 #pragma once
 
 #include <cstdint>
@@ -9,6 +11,7 @@
 #include <vector>
 
 #include "musclesim/studies/metrics.h"
+#include "musclesim/io/network_scenario.h"
 #include "musclesim/io/scenario.h"
 
 namespace musclesim {
@@ -37,6 +40,7 @@ struct SweepSpec {
   std::string source;                // the sweep file [-]
   std::string base;                  // the base scenario, resolved relative to the sweep file [-]
   std::uint64_t base_digest = 0;     // hash of the base scenario file's bytes (resume checks it) [-]
+  bool network = false;              // the base is a network scenario (a top-level `nodes:`) [-]
   SweepMode mode = SweepMode::kGrid;
   long samples = 0;                  // random: number of points [-]
   std::uint64_t seed = 0;            // random: the draws are a pure function of seed and index [-]
@@ -47,8 +51,10 @@ struct SweepSpec {
   std::string output;                // summary CSV, relative to the working directory [-]
   // The validated scenario of every point when all of them were validated up front (at most
   // kUpFrontPoints points); empty otherwise, and then each point is built and validated
-  // when it runs, an invalid one becoming an `invalid` row of the summary.
+  // when it runs, an invalid one becoming an `invalid` row of the summary. `scenarios` holds
+  // them for a single-actuator base, `network_scenarios` for a network.
   std::vector<ScenarioSpec> scenarios;
+  std::vector<NetworkScenarioSpec> network_scenarios;
 };
 
 // The most points a sweep may have. While it runs, a sweep keeps one bit per point in memory
@@ -62,10 +68,12 @@ inline constexpr long kMaxSweepPoints = 1000000000L;
 // their first value (points of the grid, at most this many), and the rest as they run.
 inline constexpr long kUpFrontPoints = 10000;
 
-// Reads and validates a sweep file and its points (see kUpFrontPoints). Throws InputError:
-// for the sweep file, naming its file, line, column and key; for a point whose axis value
-// is bad, naming the axis, the value, the point and the axis's line and column; for an error
-// in the base scenario, naming the base file's line and column.
+// Reads and validates a sweep file and its points (see kUpFrontPoints), and resolves the
+// element the metrics read (metric_options.element; by default the only actuator). Throws
+// InputError: for the sweep file, naming its file, line, column and key (a network without
+// one actuator and no metric_options.element, an element that point 0 does not have); for a
+// point whose axis value is bad, naming the axis, the value, the point and the axis's line
+// and column; for an error in the base scenario, naming the base file's line and column.
 SweepSpec LoadSweep(const std::string& path);
 
 // Number of points: the product of the axis lengths (grid), their common length (zip), or
