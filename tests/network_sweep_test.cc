@@ -18,7 +18,6 @@
 #include "musclesim/io/csv_table.h"
 #include "musclesim/studies/sweep.h"
 #include "musclesim/studies/sweep_runner.h"
-#include "support/millard_sweep.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {
@@ -154,7 +153,7 @@ TEST(NetworkSweep, MetricElementReadsTheElementItNames) {
 TEST(NetworkSweep, TheOnlyActuatorIsTheDefaultElement) {
   const std::string points = "parameters:\n  elements[0].activation.value: [0.5, 1.0]\n"
                              "  time.end: [0.2]\nmetrics: [peak_tension, work, final_length]\n";
-  const std::string text = testing::MillardBaseText();
+  const std::string text = testing::ReadFile(testing::ScenarioPath("millard_benchmark.yaml"));
   const SweepSpec by_default = LoadSweep(WriteSweep("default", text, points));
   EXPECT_EQ(by_default.metric_options.element, "muscle");
   const SweepSpec named = LoadSweep(
@@ -333,7 +332,7 @@ double MillardPassiveTension(double x) {
 }
 
 TEST(NetworkSweep, MillardBenchmarkSweepRunsEveryActivation) {
-  const SweepSpec spec = LoadSweep(testing::MillardSweepPath());
+  const SweepSpec spec = LoadSweep(testing::ScenarioPath("millard_benchmark_sweep.yaml"));
   EXPECT_EQ(spec.metric_options.element, "muscle");
   const CsvTable summary = ReadCsv(RunInto(spec, "millard", 2));
   ASSERT_EQ(summary.rows.size(), 11u);

@@ -19,7 +19,6 @@
 #include "musclesim/studies/sweep_mpi.h"
 #include "musclesim/studies/sweep_runner.h"
 #include "studies/sweep_sorted_summary.h"
-#include "support/millard_sweep.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {
@@ -644,10 +643,7 @@ TEST(SweepRunner, EveryShippedSweepRunsEveryPoint) {
   EXPECT_EQ(shipped, known) << "a sweep was added to scenarios/: give its point count here";
   for (const auto& [name, count] : points) {
     SCOPED_TRACE(name);
-    // the Millard sweep's base may not be in this tree yet: then it runs on a stand-in
-    const SweepSpec spec = LoadSweep(name == "millard_benchmark_sweep.yaml"
-                                         ? testing::MillardSweepPath()
-                                         : testing::ScenarioPath(name));
+    const SweepSpec spec = LoadSweep(testing::ScenarioPath(name));
     SweepRunOptions options;
     options.output = testing::WriteTempFile(name + ".csv", "");
     std::filesystem::remove(options.output + ".partial");
