@@ -18,9 +18,16 @@ NetworkSystem AsNetwork(const std::shared_ptr<const TensionModel>& model,
   std::vector<Node> nodes = {Node::Fixed("ground", 0.0),
                              Node::Free("tip", actuator.mass, 0.0)};  // state set by each run
   std::vector<Element> elements = {
-      Element::Actuator("actuator", "ground", "tip", model, activation),
-      Element::Damper("damper", "ground", "tip", actuator.damping),
-      Element::Spring("spring", "ground", "tip", actuator.stiffness, actuator.rest_length)};
+      Element::Actuator("actuator", "ground", "tip", model, activation)};
+  // a damper or spring of zero coefficient subtracts a signed zero from a force that is
+  // never -0 (F - T is +0 at worst): leaving it out changes no bit and saves its evaluation
+  if (actuator.damping != 0.0) {
+    elements.push_back(Element::Damper("damper", "ground", "tip", actuator.damping));
+  }
+  if (actuator.stiffness != 0.0) {
+    elements.push_back(
+        Element::Spring("spring", "ground", "tip", actuator.stiffness, actuator.rest_length));
+  }
   std::vector<NodeLoad> node_loads;
   for (const Load& load : loads) node_loads.push_back({"tip", load});
   return NetworkSystem(std::move(nodes), std::move(elements), std::move(node_loads));

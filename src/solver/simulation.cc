@@ -338,7 +338,12 @@ class VectorSink final : public TrajectorySink {
 // The single actuator's view of its network's samples (element 0 the actuator, node 1 the tip).
 class ActuatorView final : public NetworkSink {
  public:
-  explicit ActuatorView(TrajectorySink& out) : out_(out) {}
+  ActuatorView(const ActuatorSystem& system, TrajectorySink& out) : system_(system), out_(out) {}
+  // the actuator's own Observe: what Record computes from the network, without the network
+  bool RecordState(double t, const double* y) override {
+    out_.Record({t, system_.Observe(t, y[0], y[1])});
+    return true;
+  }
   void Record(double t, const NetworkSample& s) override {
     const ElementSample& actuator = s.elements[0];
     ActuatorSample sample;
@@ -351,6 +356,7 @@ class ActuatorView final : public NetworkSink {
   }
 
  private:
+  const ActuatorSystem& system_;
   TrajectorySink& out_;
 };
 
@@ -392,7 +398,7 @@ RunStats Simulation::Run(const ActuatorSystem& system, const SolverOptions& opti
     network_request.limits.push_back({"actuator", request.min_length, request.max_length});
   }
   network_request.initial_state = {request.length, request.lengthening_rate};
-  ActuatorView view(sink);
+  ActuatorView view(system, sink);
   return Run(system.network(), options, network_request, view);
 }
 
@@ -450,6 +456,7 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
   RunStats stats;
   stats.linear_solver = kind;
   const auto record = [&](double t) {
+    if (sink.RecordState(t, y)) return;
     system.Observe(t, y, ws.sample);
     sink.Record(t, ws.sample);
   };

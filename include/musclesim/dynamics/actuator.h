@@ -77,7 +77,8 @@ class ActuatorSystem {
 
   // The same system as a network (docs/model.md 7.4): node `ground` fixed at 0, node `tip`
   // free (its initial state is the run's), elements `actuator`, `damper` and `spring` from
-  // ground to tip, the loads on tip. Its right-hand side is this one's, bit for bit.
+  // ground to tip (the last two only when their coefficient is not 0), the loads on tip. Its
+  // right-hand side is this one's, bit for bit.
   const NetworkSystem& network() const { return network_; }
 
  private:

@@ -133,6 +133,9 @@ class NetworkSink {
  public:
   virtual ~NetworkSink() = default;
   virtual void Record(double t, const NetworkSample& sample) = 0;
+  // A sink that records straight from the state y (the network's state vector) does so here
+  // and returns true; the default returns false, and Record gets the observed sample.
+  virtual bool RecordState(double /*t*/, const double* /*y*/) { return false; }
 };
 
 struct NetworkRunResult {
