@@ -163,6 +163,7 @@ TEST(TrajectoryCsv, StatsJsonHoldsEveryCounterAndEscapesTheMessage) {
   stats.error_test_fails = 2;
   stats.wall_seconds = 0.25;
   stats.final_time = 0.1;
+  stats.linear_solver = LinearSolverKind::kBand;
   stats.status = RunStatus::kFailed;
   stats.message = "CVODE said \"no\" at C:\\path\n\tthen stopped";
   EXPECT_EQ(FormatStatsJson(stats),
@@ -176,6 +177,7 @@ TEST(TrajectoryCsv, StatsJsonHoldsEveryCounterAndEscapesTheMessage) {
             "  \"error_test_fails\": 2,\n"
             "  \"wall_seconds\": 0.25,\n"
             "  \"final_time\": 0.10000000000000001,\n"
+            "  \"linear_solver\": \"band\",\n"
             "  \"status\": \"failed\",\n"
             // quotes and backslashes escaped; control characters (not valid raw in a JSON
             // string) become spaces

@@ -92,6 +92,7 @@ std::string FormatStatsJson(const RunStats& s) {
       << "  \"error_test_fails\": " << s.error_test_fails << ",\n"
       << "  \"wall_seconds\": " << FormatFull(s.wall_seconds) << ",\n"
       << "  \"final_time\": " << FormatFull(s.final_time) << ",\n"
+      << "  \"linear_solver\": " << JsonString(std::string(ToString(s.linear_solver))) << ",\n"
       << "  \"status\": " << JsonString(std::string(ToString(s.status))) << ",\n"
       << "  \"message\": " << JsonString(s.message) << "\n"
       << "}\n";
