@@ -147,6 +147,15 @@ TEST(ActiveLength, NormalisedSlopeIsScaledSlope) {
   }
 }
 
+TEST(ActiveLength, NarrowestSpreadIsTheSmallestStandardDeviation) {
+  // spreads sqrt(sigma / b_k) of 1.58 mm, 0.79 mm and 3.16 mm under sigma = 0.5: the second
+  const double sigma = 0.5;
+  const GaussianSum sum({{1.0, 2e5, 0.1}, {-0.3, 8e5, 0.098}, {2.0, 5e4, 0.103}}, sigma);
+  // sqrt(sigma / b) and 1 / sqrt(2 b / (2 sigma)) differ by a few roundings: 1e-15 relative
+  const double narrowest = std::sqrt(sigma / 8e5);
+  EXPECT_NEAR(sum.NarrowestSpread(), narrowest, 1e-15 * narrowest);
+}
+
 std::string Rejection(const ActiveLengthParams& p) {
   return testing::Rejection([&] { ActiveLengthCurve curve(p); });
 }

@@ -34,8 +34,9 @@ SolverOptions Tight() {
 ModelParams SlackModel() { return testing::FlatModel(); }
 
 // Runs `system` from `length` at lengthening rate `rate` over [0, t_end], recording every
-// `interval`, and checks every recorded length and shortening velocity against x(t) and
-// xdot(t), to kAgreement of `length_scale` [m] and `rate_scale` [m/s].
+// `interval` and at t_end, and checks the grid and every recorded length and shortening
+// velocity against x(t) and xdot(t), to kAgreement of `length_scale` [m] and `rate_scale`
+// [m/s].
 void ExpectTrajectory(const ActuatorSystem& system, double length, double rate, double t_end,
                       double interval, const std::function<double(double)>& x,
                       const std::function<double(double)>& xdot, double length_scale,
@@ -48,7 +49,15 @@ void ExpectTrajectory(const ActuatorSystem& system, double length, double rate, 
   Simulation simulation;
   const RunResult run = simulation.Run(system, Tight(), request);
   ASSERT_EQ(run.stats.status, RunStatus::kCompleted) << run.stats.message;
-  ASSERT_EQ(run.trajectory.size(), static_cast<std::size_t>(std::llround(t_end / interval)) + 1);
+  // rows at 0, interval, 2 interval, ... below t_end, and one at t_end: 1 + ceil(t_end /
+  // interval), the quotient's rounding error (below 1e-12 here) kept off an exact multiple
+  const auto rows = static_cast<std::size_t>(std::ceil(t_end / interval - 1e-6)) + 1;
+  ASSERT_EQ(run.trajectory.size(), rows);
+  for (std::size_t k = 0; k + 1 < rows; ++k) {
+    // k interval, computed once: rounding only
+    EXPECT_NEAR(run.trajectory[k].t, static_cast<double>(k) * interval, 1e-15 * t_end) << k;
+  }
+  EXPECT_EQ(run.trajectory.back().t, t_end);
   for (const TrajectoryPoint& p : run.trajectory) {
     EXPECT_NEAR(p.sample.length, x(p.t), kAgreement * length_scale) << "t = " << p.t;
     // v = -xdot (section 1)
@@ -111,14 +120,23 @@ TEST(ClosedForm, OverDampedSpringDamperCreep) {
   ExpectTrajectory(o.System(), o.start, 0.0, 0.3, 1e-3, x, xdot, y0, w0 * y0 / (2.0 * z));
 }
 
-TEST(ClosedForm, CriticallyDampedReturn) {
+// The critically damped return, recorded every `interval` over 0.1 s.
+void ExpectCriticallyDampedReturn(double interval) {
   Oscillator o;
   o.damping = 20.0;  // zeta = 1
   const double y0 = o.start - o.rest_length, w0 = o.omega0();
   // y = y0 (1 + w0 t) e^(-w0 t), y' = -y0 w0^2 t e^(-w0 t)
   const auto x = [&](double t) { return o.rest_length + y0 * (1.0 + w0 * t) * std::exp(-w0 * t); };
   const auto xdot = [&](double t) { return -y0 * w0 * w0 * t * std::exp(-w0 * t); };
-  ExpectTrajectory(o.System(), o.start, 0.0, 0.1, 1e-4, x, xdot, y0, w0 * y0);
+  ExpectTrajectory(o.System(), o.start, 0.0, 0.1, interval, x, xdot, y0, w0 * y0);
+}
+
+TEST(ClosedForm, CriticallyDampedReturn) { ExpectCriticallyDampedReturn(1e-4); }
+
+// An output interval that does not divide the span: rows every 3 ms up to 99 ms, then the
+// last at t_end = 0.1 s, each on the closed form.
+TEST(ClosedForm, OutputGridThatDoesNotDivideTheSpanEndsAtItsEnd) {
+  ExpectCriticallyDampedReturn(3e-3);
 }
 
 // (b) n = 1 makes g linear, g(v) = 1 - v / v_max exactly, whatever eps (docs/model.md

@@ -230,8 +230,26 @@ TEST(GaussianFit, FixedShapesGiveTheLinearLeastSquaresAmplitudes) {
   }
 }
 
+// The Karush-Kuhn-Tucker conditions of min a^T G a - 2 r^T a over a >= 0: a >= 0, the
+// gradient 2(Ga - r) zero where a > 0 and >= 0 where a = 0.
+void ExpectOptimalityConditions(const Eigen::MatrixXd& gram, const Eigen::VectorXd& r,
+                                const Eigen::VectorXd& a, int trial) {
+  const Eigen::VectorXd gradient = gram * a - r;
+  // the active-set solve is exact up to rounding in the normal equations, gradients below
+  // 1e-15 of |r| in these tests (even where G is nearly singular); 1e-10 leaves a wide
+  // margin, while a wrong active set leaves gradients of order |r|
+  for (Eigen::Index k = 0; k < a.size(); ++k) {
+    EXPECT_GE(a(k), 0.0) << trial;
+    if (a(k) > 0) {
+      EXPECT_NEAR(gradient(k), 0.0, 1e-10 * (1 + r.norm())) << trial;
+    } else {
+      EXPECT_GE(gradient(k), -1e-10 * (1 + r.norm())) << trial;
+    }
+  }
+}
+
 TEST(GaussianFit, NonnegativeAmplitudesSatisfyOptimalityConditions) {
-  // random Gram systems: a >= 0, gradient 2(Ga - r) zero where a > 0 and >= 0 where a = 0
+  // random Gram systems (cond(G) <= 190)
   std::mt19937 rng(8);
   std::normal_distribution<double> normal;
   for (int trial = 0; trial < 200; ++trial) {
@@ -241,18 +259,35 @@ TEST(GaussianFit, NonnegativeAmplitudesSatisfyOptimalityConditions) {
     const Eigen::MatrixXd gram = basis.transpose() * basis;
     Eigen::VectorXd r(m);
     for (int k = 0; k < m; ++k) r(k) = normal(rng);
-    const Eigen::VectorXd a = SolveAmplitudes(gram, r, true);
-    const Eigen::VectorXd gradient = gram * a - r;
-    // the active-set solve is exact up to rounding in the normal equations: cond(G) <= 190
-    // for these random Grams, so ~1e-14 of |r|; 1e-10 leaves a wide margin
+    ExpectOptimalityConditions(gram, r, SolveAmplitudes(gram, r, true), trial);
+  }
+}
+
+TEST(GaussianFit, NonnegativeAmplitudesOfOverlappingGaussiansSatisfyOptimalityConditions) {
+  // the systems a samples fit meets: 4 to 12 Gaussians of spread 0.2 at random centres on
+  // [0, 1], sampled at 40 points, against noisy data of mean 1. Neighbours overlap, so G is
+  // nearly singular and many amplitudes want to be negative: the active set changes often,
+  // and an update that drops every negative amplitude at once, instead of stepping back to
+  // the feasible point first, can cycle here without reaching the optimum.
+  std::mt19937 rng(9);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> center(0.0, 1.0);
+  for (int trial = 0; trial < 100; ++trial) {
+    const int m = 4 + trial % 9, rows = 40;
+    const double spread = 0.2;
+    Eigen::MatrixXd basis(rows, m);
     for (int k = 0; k < m; ++k) {
-      EXPECT_GE(a(k), 0.0);
-      if (a(k) > 0) {
-        EXPECT_NEAR(gradient(k), 0.0, 1e-10 * (1 + r.norm())) << trial;
-      } else {
-        EXPECT_GE(gradient(k), -1e-10 * (1 + r.norm())) << trial;
+      const double c = center(rng);
+      for (int i = 0; i < rows; ++i) {
+        const double x = (i + 0.5) / rows;
+        basis(i, k) = std::exp(-0.5 * (x - c) * (x - c) / (spread * spread));
       }
     }
+    Eigen::VectorXd y(rows);
+    for (int i = 0; i < rows; ++i) y(i) = 1.0 + normal(rng);
+    const Eigen::MatrixXd gram = basis.transpose() * basis;
+    const Eigen::VectorXd r = basis.transpose() * y;
+    ExpectOptimalityConditions(gram, r, SolveAmplitudes(gram, r, true), trial);
   }
 }
 
@@ -328,6 +363,22 @@ TEST(GaussianFit, ReadmeFiguresOfThePapersIndicatorFit) {
 
 std::string Rejection(const FitSpec& spec) {
   return testing::Rejection([&] { Validate(spec); });
+}
+
+TEST(GaussianFit, SamplesNeedThreePointsPerGaussianOrOneWithShapesFixed) {
+  // b, d and a for each Gaussian: 2 Gaussians need 6 samples; with b and d given, 2
+  FitSpec spec = Indicator(2);
+  spec.target = FitTargetKind::kSamples;
+  for (int i = 0; i < 5; ++i) spec.points.push_back({0.09 + 0.005 * i, 1.0});
+  EXPECT_THAT(Rejection(spec), HasSubstr("points = 5 points: samples need at least 6 points"));
+  spec.points.push_back({0.12, 0.5});
+  EXPECT_EQ(Rejection(spec), "accepted");
+  spec.precisions = {1e5, 1e5};
+  spec.centers = {0.095, 0.105};
+  spec.points.resize(1);
+  EXPECT_THAT(Rejection(spec), HasSubstr("points = 1 points: samples need at least 2 points"));
+  spec.points.push_back({0.1, 1.0});
+  EXPECT_EQ(Rejection(spec), "accepted");
 }
 
 TEST(GaussianFit, RejectsEachRule) {

@@ -73,6 +73,42 @@ TEST(Waveform, PulsesRiseAndFallEveryPeriod) {
   for (int i = 0; i < 6; ++i) EXPECT_NEAR(edges[i], expected[i], 1e-15);
 }
 
+// Binary fractions, so that every edge start + k period (+ width) is exact.
+Waveform ExactPulses() {
+  Waveform w = Make(WaveformKind::kPulses);
+  w.start = 0.5;
+  w.period = 1.0;
+  w.width = 0.25;
+  w.low = 0.0;
+  w.high = 1.0;
+  return w;
+}
+
+TEST(Waveform, PulsesTakeTheirNewValueExactlyAtEachEdge) {
+  // like a step at its time, a pulse is high from its rise on and low from its fall on
+  const Waveform w = ExactPulses();
+  EXPECT_EQ(w.Evaluate(std::nextafter(0.5, 0.0)), 0.0);
+  EXPECT_EQ(w.Evaluate(0.5), 1.0);
+  EXPECT_EQ(w.Evaluate(std::nextafter(0.75, 0.0)), 1.0);
+  EXPECT_EQ(w.Evaluate(0.75), 0.0);
+  EXPECT_EQ(w.Evaluate(1.5), 1.0);
+  EXPECT_EQ(w.Evaluate(1.75), 0.0);
+  // at every breakpoint the value is already the one that follows it
+  const std::vector<double> edges = w.Breakpoints(0.0, 3.0);
+  EXPECT_THAT(edges, ElementsAre(0.5, 0.75, 1.5, 1.75, 2.5, 2.75));
+  for (double edge : edges) {
+    EXPECT_EQ(w.Evaluate(edge), w.Evaluate(std::nextafter(edge, 3.0))) << edge;
+  }
+}
+
+TEST(Waveform, PulseBreakpointsFromInsideAPulseIncludeItsFall) {
+  const Waveform w = ExactPulses();
+  // from inside the second pulse (1.5 to 1.75): its fall, then the third pulse's edges
+  EXPECT_THAT(w.Breakpoints(1.6, 3.0), ElementsAre(1.75, 2.5, 2.75));
+  // from between pulses: only later edges
+  EXPECT_THAT(w.Breakpoints(1.8, 3.0), ElementsAre(2.5, 2.75));
+}
+
 TEST(Waveform, TableInterpolatesAndHoldsItsEnds) {
   Waveform w = Make(WaveformKind::kTable);
   w.points = {{0.0, 1.0}, {1.0, 3.0}, {2.0, 2.0}};

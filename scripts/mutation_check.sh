@@ -1,0 +1,448 @@
+#!/usr/bin/env bash
+# Mutation check: do the tests notice small, plausible mistakes in the model, dynamics and
+# solver code? Each mutation below is a literal edit (a flipped sign, a dropped term, a
+# changed constant, an off-by-one, < for <=) applied alone to a pristine copy of one file;
+# the affected test targets are rebuilt in build-mutation/ (Release, tests on, benchmarks,
+# examples and MPI off) and their tests run. A mutation is KILLED when a test fails, a test
+# times out or the code no longer compiles (said so), SURVIVED when every test passes, and
+# EQUIVALENT when it changes no observable behaviour (the reason is given; it is still run,
+# as a check of that claim). Not part of CI: a full run takes about half an hour on 2 cores.
+#
+#   scripts/mutation_check.sh             every mutation; stdout is the report
+#   scripts/mutation_check.sh --list      id, file and whether its pattern still applies
+#   scripts/mutation_check.sh --only ID   one mutation (repeatable)
+#
+# Exit status 0 when every non-equivalent mutation is killed and every pattern applies.
+# The mutated files must match HEAD before a run; they are restored on exit, Ctrl-C included,
+# and checked with `git diff --quiet` at the end. Build and test logs: build-mutation/logs/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+build_dir=build-mutation
+jobs=${JOBS:-2}
+test_timeout=120  # [s] per test: the slowest test takes a few seconds; a hang is a kill
+
+# ---------------------------------------------------------------------------------------
+# The mutations. mutation ID FILE ORIGINAL REPLACEMENT TARGETS CTEST_REGEX [EQUIVALENT_REASON]
+# ORIGINAL must occur exactly once in FILE; both are literal text (multi-line allowed).
+ids=() files=() originals=() replacements=() targets=() regexes=() reasons=()
+mutation() {
+  ids+=("$1") files+=("$2") originals+=("$3") replacements+=("$4") targets+=("$5")
+  regexes+=("$6") reasons+=("${7:-}")
+}
+
+# test targets and ctest regexes of each unit and the units that use it
+t_passive="passive_test tension_test closed_form_test simulation_test"
+r_passive='^(Passive|Tension|ClosedForm|Simulation)\.'
+t_velocity="velocity_test tension_test closed_form_test simulation_test"
+r_velocity='^(Velocity|Tension|ClosedForm|Simulation)\.'
+t_active="active_length_test tension_test model_ranges_test"
+r_active='^(ActiveLength|Tension|ModelRanges)\.'
+t_tension="tension_test actuator_test closed_form_test simulation_test"
+r_tension='^(Tension|Actuator|ClosedForm|Simulation)\.'
+t_fit="fit_target_test gaussian_fit_test"
+r_fit='^(FitTarget|GaussianFit)\.'
+t_waveform="waveform_test loads_test closed_form_test simulation_test"
+r_waveform='^(Waveform|Loads|ClosedForm|Simulation)\.'
+t_loads="loads_test actuator_test closed_form_test"
+r_loads='^(Loads|Actuator|ClosedForm)\.'
+t_solver="actuator_test simulation_test closed_form_test"
+r_solver='^(Actuator|Simulation|ClosedForm)\.'
+
+# --- passive tension (eq. 1) ---
+mutation passive-kink-strict include/musclesim/model/passive.h \
+  'if (x <= params.slack_length)' \
+  'if (x < params.slack_length)' "$t_passive" "$r_passive"
+mutation passive-slope-drops-alpha include/musclesim/model/passive.h \
+  'params.k_p * params.alpha * growth' \
+  'params.k_p * growth' "$t_passive" "$r_passive"
+mutation passive-kp-zero-refused src/model/passive.cc \
+  'params.k_p >= 0.0, "k_p"' \
+  'params.k_p > 0.0, "k_p"' "$t_passive" "$r_passive"
+mutation passive-alpha-zero-accepted src/model/passive.cc \
+  'params.alpha > 0.0, "alpha"' \
+  'params.alpha >= 0.0, "alpha"' "$t_passive" "$r_passive"
+
+# --- tension-velocity g_eps and its slope (eq. 12, section 4) ---
+mutation velocity-exponent-sign src/model/velocity.cc \
+  'half_exponent_(0.5 * (alpha_ - 1.0))' \
+  'half_exponent_(0.5 * (1.0 - alpha_))' "$t_velocity" "$r_velocity"
+mutation velocity-epsilon-not-squared src/model/velocity.cc \
+  'epsilon_squared_(params.epsilon * params.epsilon)' \
+  'epsilon_squared_(params.epsilon)' "$t_velocity" "$r_velocity"
+mutation velocity-scale-exponent-sign src/model/velocity.cc \
+  'std::pow(params.v_max, -alpha_)' \
+  'std::pow(params.v_max, alpha_)' "$t_velocity" "$r_velocity"
+mutation velocity-epsilon-max-refused src/model/velocity.cc \
+  'params.epsilon <= params.v_max,' \
+  'params.epsilon < params.v_max,' "$t_velocity" "$r_velocity"
+mutation velocity-linear-shortcut-off src/model/velocity.cc \
+  'linear_(params.n == 1)' \
+  'linear_(false)' "$t_velocity" "$r_velocity" \
+  'for n = 1 the general branch computes pow(w, 0), which IEEE 754 defines as exactly 1 for every w: the shortcut only saves a pow call'
+mutation velocity-slope-drops-alpha include/musclesim/model/velocity.h \
+  'p * (alpha_ * v * v + epsilon_squared_) / w' \
+  'p * (v * v + epsilon_squared_) / w' "$t_velocity" "$r_velocity"
+mutation velocity-g-slope-sign include/musclesim/model/velocity.h \
+  '-phi.slope * inverse_scale_' \
+  'phi.slope * inverse_scale_' "$t_velocity" "$r_velocity"
+
+# --- active tension-length: Gaussians, their derivatives, the normalisation ---
+mutation active-rate-drops-half include/musclesim/model/active_length.h \
+  'g.precision / (2.0 * sigma)' \
+  'g.precision / sigma' "$t_active" "$r_active"
+mutation active-slope-factor src/model/active_length.cc \
+  'out.slope -= 2.0 * t.rate * (x - t.center) * psi;' \
+  'out.slope -= t.rate * (x - t.center) * psi;' "$t_active" "$r_active"
+mutation active-curvature-sign src/model/active_length.cc \
+  '4.0 * t.rate * t.rate * dx * dx - 2.0 * t.rate' \
+  '4.0 * t.rate * t.rate * dx * dx + 2.0 * t.rate' "$t_active" "$r_active"
+mutation active-narrowest-spread src/model/active_length.cc \
+  'return 1.0 / std::sqrt(2.0 * largest_rate);' \
+  'return 1.0 / std::sqrt(largest_rate);' "$t_active" "$r_active"
+mutation active-bisection-direction src/model/active_length.cc \
+  'if (sum.ValueAndSlope(mid).slope > 0.0) {' \
+  'if (sum.ValueAndSlope(mid).slope < 0.0) {' "$t_active" "$r_active"
+mutation active-max-ignores-right-end src/model/active_length.cc \
+  '  consider(hi);' \
+  '  // consider(hi);' "$t_active" "$r_active"
+mutation active-max-misses-flat-grid-point src/model/active_length.cc \
+  'left_slope > 0.0 && right_slope <= 0.0' \
+  'left_slope > 0.0 && right_slope < 0.0' "$t_active" "$r_active"
+mutation active-grid-min-cells src/model/active_length.cc \
+  'std::clamp(std::ceil(width / step), 64.0,' \
+  'std::clamp(std::ceil(width / step), 1.0,' "$t_active" "$r_active" \
+  'step <= width / 64, exactly since dividing by a power of two is exact (for any width above the subnormals, 2e-308 m), so ceil(width / step) >= 64 and the lower bound of the clamp never binds'
+
+# --- tension composition (eqs. 16-17) ---
+mutation tension-total-sign include/musclesim/model/tension.h \
+  'out.total = passive.value + out.active;' \
+  'out.total = passive.value - out.active;' "$t_tension" "$r_tension"
+mutation tension-d-length-drops-passive include/musclesim/model/tension.h \
+  'out.d_length = passive.slope + u * params_.f_iso' \
+  'out.d_length = u * params_.f_iso' "$t_tension" "$r_tension"
+mutation tension-d-velocity-swaps-factor include/musclesim/model/tension.h \
+  'length.value * velocity.slope' \
+  'length.slope * velocity.slope' "$t_tension" "$r_tension"
+mutation tension-error-loses-block src/model/tension.cc \
+  'throw ParameterError(std::string(block) + "." + e.path(), e.value(), e.rule());' \
+  'throw ParameterError(e.path(), e.value(), e.rule());' "$t_tension" "$r_tension"
+
+# --- fit targets: closed-form normal equations and gradients (section 3.1) ---
+mutation fit-normal-mass-tail-sign src/model/fit_target.cc \
+  'if (z1 > 0.0) return 0.5 * (std::erfc(z1 * kInvSqrt2) - std::erfc(z2 * kInvSqrt2));' \
+  'if (z1 > 0.0) return 0.5 * (std::erfc(z2 * kInvSqrt2) - std::erfc(z1 * kInvSqrt2));' \
+  "$t_fit" "$r_fit"
+mutation fit-polygon-norm-drops-cross-term src/model/fit_target.cc \
+  '(p.y * p.y + p.y * q.y + q.y * q.y) / 3.0' \
+  '(p.y * p.y + q.y * q.y) / 2.0' "$t_fit" "$r_fit"
+mutation fit-gram-exponent-factor src/model/fit_target.cc \
+  'std::exp(-bi * bj * gap * gap / (2.0 * sigma_ * sum))' \
+  'std::exp(-bi * bj * gap * gap / (sigma_ * sum))' "$t_fit" "$r_fit"
+mutation fit-gram-transposed src/model/fit_target.cc \
+  'gram(i, j) = gram(j, i) = GramEntry(shapes, i, j);' \
+  'gram(i, j) = gram(j, i) = GramEntry(shapes, j, i);' "$t_fit" "$r_fit" \
+  'G_ij is symmetric bit for bit: b_i b_j and b_i + b_j commute exactly in IEEE arithmetic and the gap d_i - d_j enters only squared (negation is exact)'
+mutation fit-piece-center-derivative-sign src/model/fit_target.cc \
+  '- at_center * (n2 - n1) / spread' \
+  '+ at_center * (n2 - n1) / spread' "$t_fit" "$r_fit"
+mutation fit-projection-drops-last-piece src/model/fit_target.cc \
+  '    for (std::size_t i = 0; i + 1 < vertices_.size(); ++i) {
+      const TargetPoint& p = vertices_[i];
+      const TargetPoint& q = vertices_[i + 1];
+      const PieceIntegral piece =' \
+  '    for (std::size_t i = 0; i + 2 < vertices_.size(); ++i) {
+      const TargetPoint& p = vertices_[i];
+      const TargetPoint& q = vertices_[i + 1];
+      const PieceIntegral piece =' "$t_fit" "$r_fit"
+mutation fit-gram-precision-gradient-sign src/model/fit_target.cc \
+  '(-0.5 / sum - gap * gap * bj * bj' \
+  '(0.5 / sum - gap * gap * bj * bj' "$t_fit" "$r_fit"
+mutation fit-sample-center-gradient src/model/fit_target.cc \
+  'gradient->centers(k) += weight * shapes.precisions(k) * dx / sigma_;' \
+  'gradient->centers(k) += weight * shapes.precisions(k) * dx / (2.0 * sigma_);' \
+  "$t_fit" "$r_fit"
+mutation fit-cost-cross-term src/model/fit_target.cc \
+  '- 2.0 * a.dot(projection) + norm_squared_' \
+  '- a.dot(projection) + norm_squared_' "$t_fit" "$r_fit"
+
+# --- the fit: reduced gradient, non-negative amplitudes, results (section 3.2) ---
+mutation fit-reduced-gradient-chain-rule src/model/gaussian_fit.cc \
+  'gradient[k] = g.precisions(k) * shapes.precisions(k) / norm_;' \
+  'gradient[k] = g.precisions(k) / norm_;' "$t_fit" "$r_fit"
+mutation fit-nnls-no-step-back src/model/gaussian_fit.cc \
+  'a += step * (trial - a);' \
+  'a = trial;' "$t_fit" "$r_fit"
+mutation fit-relative-residual-unscaled src/model/gaussian_fit.cc \
+  'result.relative_residual = result.cost / target.NormSquared();' \
+  'result.relative_residual = result.cost;' "$t_fit" "$r_fit"
+mutation fit-samples-needed src/model/gaussian_fit.cc \
+  '(shapes_fixed ? 1 : 3)' \
+  '(shapes_fixed ? 1 : 2)' "$t_fit" "$r_fit"
+
+# --- waveforms: evaluation and breakpoints ---
+mutation waveform-step-at-its-time src/dynamics/waveform.cc \
+  'return t < time ? before : after;' \
+  'return t <= time ? before : after;' "$t_waveform" "$r_waveform"
+mutation waveform-ramp-reversed src/dynamics/waveform.cc \
+  'return from + (to - from) * (t - start) / (end - start);' \
+  'return from + (to - from) * (end - t) / (end - start);' "$t_waveform" "$r_waveform"
+mutation waveform-sine-drops-two src/dynamics/waveform.cc \
+  '2.0 * std::numbers::pi * frequency * t + phase' \
+  'std::numbers::pi * frequency * t + phase' "$t_waveform" "$r_waveform"
+mutation waveform-pulse-rises-late src/dynamics/waveform.cc \
+  'if (t < start) return low;' \
+  'if (t <= start) return low;' "$t_waveform" "$r_waveform"
+mutation waveform-pulse-falls-late src/dynamics/waveform.cc \
+  'return into_period < width ? high : low;' \
+  'return into_period <= width ? high : low;' "$t_waveform" "$r_waveform"
+mutation waveform-table-interpolates-from-right src/dynamics/waveform.cc \
+  '(b.value - a.value) * (t - a.t) / (b.t - a.t)' \
+  '(b.value - a.value) * (t - b.t) / (b.t - a.t)' "$t_waveform" "$r_waveform"
+mutation waveform-table-first-point-strict src/dynamics/waveform.cc \
+  'if (t <= points.front().t) return points.front().value;' \
+  'if (t < points.front().t) return points.front().value;' "$t_waveform" "$r_waveform" \
+  'at t = t_0 the first segment gives a.value + (b.value - a.value) * 0 / (b.t - a.t) = a.value exactly (a value of -0 comes out as +0, equal to it), and a one-point table returns at the next line'
+mutation waveform-pulse-breakpoints-skip-current src/dynamics/waveform.cc \
+  'std::max(0.0, std::floor((t0 - start) / period))' \
+  'std::max(0.0, std::ceil((t0 - start) / period))' "$t_waveform" "$r_waveform"
+mutation waveform-breakpoints-include-t0 src/dynamics/waveform.cc \
+  'if (t > t0 && t < t1) times.push_back(t);' \
+  'if (t >= t0 && t < t1) times.push_back(t);' "$t_waveform" "$r_waveform"
+
+# --- loads ---
+mutation loads-spring-sign src/dynamics/loads.cc \
+  'weight_ + spring_pull_ - spring_stiffness_ * x' \
+  'weight_ + spring_pull_ + spring_stiffness_ * x' "$t_loads" "$r_loads"
+mutation loads-spring-drops-stiffness src/dynamics/loads.cc \
+  'spring_pull_ += load.stiffness * load.anchor;' \
+  'spring_pull_ += load.anchor;' "$t_loads" "$r_loads"
+mutation loads-added-mass-last-only src/dynamics/loads.cc \
+  'added_mass_ += load.mass;' \
+  'added_mass_ = load.mass;' "$t_loads" "$r_loads"
+mutation loads-breakpoints-unsorted src/dynamics/loads.cc \
+  '  SortUnique(times);' \
+  '  // SortUnique(times);' "$t_loads" "$r_loads"
+mutation loads-zero-mass-accepted src/dynamics/loads.cc \
+  'load.mass > 0.0, "mass"' \
+  'load.mass >= 0.0, "mass"' "$t_loads" "$r_loads"
+mutation loads-zero-stiffness-refused src/dynamics/loads.cc \
+  'load.stiffness >= 0.0, "stiffness"' \
+  'load.stiffness > 0.0, "stiffness"' "$t_loads" "$r_loads"
+mutation loads-error-index-off-by-one src/dynamics/loads.cc \
+  '"load[" + std::to_string(i) + "]."' \
+  '"load[" + std::to_string(i + 1) + "]."' "$t_loads" "$r_loads"
+
+# --- actuator right-hand side, Jacobian and solver ---
+# These files are being rewritten: when --list reports a pattern not found, copy the
+# corresponding line from the new code and redo the edit there.
+mutation actuator-damping-sign include/musclesim/dynamics/actuator.h \
+  '- actuator_.damping * xdot -' \
+  '+ actuator_.damping * xdot -' "$t_solver" "$r_solver"
+mutation actuator-jacobian-velocity-sign include/musclesim/dynamics/actuator.h \
+  '(s.d_velocity - actuator_.damping) * inverse_mass_' \
+  '(-s.d_velocity - actuator_.damping) * inverse_mass_' "$t_solver" "$r_solver"
+mutation actuator-ignores-load-mass src/dynamics/actuator.cc \
+  'inverse_mass_(1.0 / (actuator.mass + loads_.AddedMass()))' \
+  'inverse_mass_(1.0 / actuator.mass)' "$t_solver" "$r_solver"
+mutation simulation-root-sign src/solver/simulation.cc \
+  'g[i] = x - cb->levels[i];' \
+  'g[i] = cb->levels[i] - x;' "$t_solver" "$r_solver" \
+  'CVODE looks for sign changes in both directions (no root direction is set) and its Illinois iteration is invariant under g -> -g; the run reads only which root was found'
+mutation simulation-last-output-past-end src/solver/simulation.cc \
+  'return k >= outputs ? request.t_end' \
+  'return k > outputs ? request.t_end' "$t_solver" "$r_solver"
+mutation simulation-first-output-repeated src/solver/simulation.cc \
+  'long next_output = 1;' \
+  'long next_output = 0;' "$t_solver" "$r_solver"
+
+# ---------------------------------------------------------------------------------------
+
+# Literal single-occurrence replace: apply (default) or only check (--check).
+replace() {  # FILE ORIGINAL REPLACEMENT [--check]
+  python3 - "$@" <<'PY'
+import sys
+path, old, new = sys.argv[1:4]
+check = len(sys.argv) > 4
+with open(path) as f:
+    text = f.read()
+count = text.count(old)
+if count == 0:
+    sys.exit(f"{path}: pattern not found: {old!r}")
+if count > 1:
+    sys.exit(f"{path}: pattern not unique ({count} occurrences): {old!r}")
+if not check:
+    with open(path, "w") as f:
+        f.write(text.replace(old, new, 1))
+PY
+}
+
+usage() { echo "usage: scripts/mutation_check.sh [--list] [--only ID]..." >&2; exit 2; }
+list=false
+only=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --list) list=true ;;
+    --only) [ $# -ge 2 ] || usage; only+=("$2"); shift ;;
+    *) usage ;;
+  esac
+  shift
+done
+
+if $list; then
+  for i in "${!ids[@]}"; do
+    state=$(replace "${files[i]}" "${originals[i]}" "${replacements[i]}" --check 2>&1 |
+            sed 's/^[^:]*: \(pattern not [a-z]*\).*/\1/') || true
+    [ -n "$state" ] || state="applies"
+    [ -z "${reasons[i]}" ] || state="$state, equivalent"
+    printf '%-42s %-40s %s\n' "${ids[i]}" "${files[i]}" "$state"
+  done
+  exit 0
+fi
+
+# which mutations to run
+selected=()
+if [ ${#only[@]} -eq 0 ]; then
+  selected=("${!ids[@]}")
+else
+  for id in "${only[@]}"; do
+    found=false
+    for i in "${!ids[@]}"; do
+      if [ "${ids[i]}" = "$id" ]; then selected+=("$i"); found=true; fi
+    done
+    $found || { echo "unknown mutation id: $id (see --list)" >&2; exit 2; }
+  done
+fi
+
+# the files to mutate must match HEAD: they are restored from a copy and checked against it
+mutated_files=()
+for i in "${selected[@]}"; do mutated_files+=("${files[i]}"); done
+mapfile -t mutated_files < <(printf '%s\n' "${mutated_files[@]}" | sort -u)
+if ! git diff --quiet HEAD -- "${mutated_files[@]}"; then
+  echo "mutation_check: these files differ from HEAD; commit or stash first:" >&2
+  git diff --name-only HEAD -- "${mutated_files[@]}" >&2
+  exit 2
+fi
+
+pristine=$(mktemp -d)
+for f in "${mutated_files[@]}"; do
+  mkdir -p "$pristine/$(dirname "$f")"
+  cp "$f" "$pristine/$f"
+done
+current=""  # the file now mutated, if any
+restore() {
+  if [ -n "$current" ]; then
+    # a fresh modification time, so that the next build recompiles what the mutant built
+    cp "$pristine/$current" "$current"
+    touch "$current"
+    current=""
+  fi
+}
+on_exit() {
+  restore
+  rm -rf "$pristine"
+}
+trap on_exit EXIT
+trap 'echo "interrupted: tree restored" >&2; exit 130' INT TERM
+
+logs="$build_dir/logs"
+mkdir -p "$logs"
+# warnings are not errors here: a mutant must break a test, or the compiler, to count as killed
+cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DMUSCLESIM_BUILD_TESTS=ON \
+  -DMUSCLESIM_BUILD_BENCHMARKS=OFF -DMUSCLESIM_BUILD_EXAMPLES=OFF -DMUSCLESIM_WITH_MPI=OFF \
+  -DMUSCLESIM_WARNINGS_AS_ERRORS=OFF >"$logs/configure.log" 2>&1 ||
+  { echo "configuring $build_dir failed: $logs/configure.log" >&2; exit 1; }
+
+build() {  # LOG TARGETS...
+  local log=$1
+  shift
+  cmake --build "$build_dir" -j"$jobs" --target "$@" >"$log" 2>&1
+}
+run_tests() {  # LOG REGEX
+  ctest --test-dir "$build_dir" -R "$2" -j"$jobs" --timeout "$test_timeout" \
+    --no-tests=error --output-on-failure >"$1" 2>&1
+}
+# "Suite.Test" names of the failed tests in a ctest log, with how they failed unless plainly
+failed_tests() {
+  sed -nE 's/^[[:space:]]*[0-9]+ - ([^ ]+) \((.*)\)$/\1|\2/p' "$1" |
+    awk -F'|' '{ print ($2 == "Failed") ? $1 : $1 " (" tolower($2) ")" }'
+}
+summarise() {  # NAMES... : at most three names, then a count
+  if [ $# -le 3 ]; then
+    local IFS=,
+    echo "$*" | sed 's/,/, /g'
+  else
+    echo "$1, $2, $3 and $(($# - 3)) more"
+  fi
+}
+
+# the pristine tree must build and pass every test the mutations use
+all_targets=$(for i in "${selected[@]}"; do echo "${targets[i]}"; done | tr ' ' '\n' | sort -u | tr '\n' ' ')
+all_regex=$(for i in "${selected[@]}"; do echo "${regexes[i]}"; done | sort -u | paste -sd'|')
+echo "baseline: building $all_targets" >&2
+build "$logs/baseline.build.log" $all_targets ||
+  { echo "the unmutated tree does not build: $logs/baseline.build.log" >&2; exit 1; }
+run_tests "$logs/baseline.test.log" "$all_regex" ||
+  { echo "the unmutated tree fails its tests: $logs/baseline.test.log" >&2; exit 1; }
+
+echo "mutation check of $(git rev-parse --short HEAD): ${#selected[@]} mutations, $build_dir, -j$jobs"
+printf '%-42s %-40s %-10s %s\n' ID FILE RESULT "BY / REASON"
+killed=0 survived=0 equivalent=0 broken=0 equivalent_killed=0
+survivors=()
+for i in "${selected[@]}"; do
+  id=${ids[i]} file=${files[i]}
+  echo "[$id] $file" >&2
+  current=$file  # before the edit, so that an interrupt at any point restores the file
+  if ! message=$(replace "$file" "${originals[i]}" "${replacements[i]}" 2>&1); then
+    restore
+    printf '%-42s %-40s %-10s %s\n' "$id" "$file" ERROR "$message"
+    broken=$((broken + 1))
+    continue
+  fi
+  status="" detail=""
+  if ! build "$logs/$id.build.log" ${targets[i]}; then
+    status=KILLED detail="compile error (build failed: $logs/$id.build.log)"
+  elif run_tests "$logs/$id.test.log" "${regexes[i]}"; then
+    status=SURVIVED detail="every test of ${regexes[i]} passed"
+  else
+    mapfile -t names < <(failed_tests "$logs/$id.test.log")
+    status=KILLED detail="$(summarise "${names[@]}")"
+    [ ${#names[@]} -gt 0 ] || detail="ctest failed ($logs/$id.test.log)"
+  fi
+  restore
+  if [ -n "${reasons[i]}" ]; then
+    equivalent=$((equivalent + 1))
+    if [ "$status" = SURVIVED ]; then
+      detail=${reasons[i]}
+    else
+      # the claim of equivalence is wrong: say so loudly
+      equivalent_killed=$((equivalent_killed + 1))
+      detail="CLAIMED EQUIVALENT BUT KILLED by $detail; reason given: ${reasons[i]}"
+    fi
+    status=EQUIVALENT
+  elif [ "$status" = KILLED ]; then
+    killed=$((killed + 1))
+  else
+    survived=$((survived + 1))
+    survivors+=("$id")
+  fi
+  printf '%-42s %-40s %-10s %s\n' "$id" "$file" "$status" "$detail"
+done
+
+restore
+if ! git diff --quiet HEAD -- "${mutated_files[@]}"; then
+  echo "mutation_check: the tree was not restored exactly:" >&2
+  git diff --stat HEAD -- "${mutated_files[@]}" >&2
+  exit 1
+fi
+
+non_equivalent=$((killed + survived))
+echo
+if [ "$non_equivalent" -gt 0 ]; then
+  echo "kill rate: $killed / $non_equivalent non-equivalent mutations killed" \
+       "($(awk -v k="$killed" -v n="$non_equivalent" 'BEGIN { printf "%.0f", 100 * k / n }')%)," \
+       "$equivalent equivalent, $broken with a stale pattern"
+fi
+[ ${#survivors[@]} -eq 0 ] || echo "survivors: ${survivors[*]}"
+[ "$equivalent_killed" -eq 0 ] || echo "equivalent mutations that were killed: $equivalent_killed (check their reasons)"
+[ "$survived" -eq 0 ] && [ "$broken" -eq 0 ] && [ "$equivalent_killed" -eq 0 ]
