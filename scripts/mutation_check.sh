@@ -48,6 +48,8 @@ t_loads="loads_test actuator_test closed_form_test"
 r_loads='^(Loads|Actuator|ClosedForm)\.'
 t_solver="actuator_test simulation_test closed_form_test"
 r_solver='^(Actuator|Simulation|ClosedForm)\.'
+t_network="network_test network_simulation_test"
+r_network='^(Network|NetworkSimulation)\.'
 
 # --- passive tension (eq. 1) ---
 mutation passive-kink-strict include/musclesim/model/passive.h \
@@ -246,9 +248,31 @@ mutation actuator-ignores-load-mass src/dynamics/actuator.cc \
   'inverse_mass_(1.0 / (actuator.mass + loads_.AddedMass()))' \
   'inverse_mass_(1.0 / actuator.mass)' "$t_solver" "$r_solver"
 mutation simulation-root-sign src/solver/simulation.cc \
-  'g[i] = x - cb->levels[i];' \
-  'g[i] = cb->levels[i] - x;' "$t_solver" "$r_solver" \
+  'g[i] = cb->system->Length(cb->roots[i].element, t, state) - cb->roots[i].level;' \
+  'g[i] = cb->roots[i].level - cb->system->Length(cb->roots[i].element, t, state);' "$t_solver" "$r_solver" \
   'CVODE looks for sign changes in both directions (no root direction is set) and its Illinois iteration is invariant under g -> -g; the run reads only which root was found'
+# the network (docs/model.md section 7)
+mutation network-from-node-pushed src/dynamics/network.cc \
+  'if (a.state >= 0) ydot[a.state + 1] += tension;' \
+  'if (a.state >= 0) ydot[a.state + 1] -= tension;' "$t_network" "$r_network"
+mutation network-mass-unscaled src/dynamics/network.cc \
+  'for (const FreeNode& f : free_nodes_) ydot[ends_[f.node].state + 1] *= f.inverse_mass;' \
+  'for (const FreeNode& f : free_nodes_) ydot[ends_[f.node].state + 1] *= 1.0;' "$t_network" "$r_network"
+mutation network-jacobian-rate-sign src/dynamics/network.cc \
+  'const double by_state[4] = {-tension.by_length, -tension.by_rate, tension.by_length,' \
+  'const double by_state[4] = {-tension.by_length, tension.by_rate, tension.by_length,' "$t_network" "$r_network"
+mutation network-tendon-pushes-when-slack src/dynamics/network.cc \
+  'if (stretch <= 0.0) return {0.0, 0.0, 0.0};' \
+  'if (stretch < -1.0) return {0.0, 0.0, 0.0};' "$t_network" "$r_network"
+mutation network-prescribed-still src/dynamics/network.cc \
+  'return nodes_[end.node].motion.Slope(t);' \
+  'return 0.0;' "$t_network" "$r_network"
+mutation network-exponential-slope-drops-alpha src/dynamics/network.cc \
+  'return {element.k * (grow - 1.0), element.k * element.alpha * grow, 0.0};' \
+  'return {element.k * (grow - 1.0), element.k * grow, 0.0};' "$t_network" "$r_network"
+mutation network-band-skips-lower src/dynamics/network.cc \
+  'pattern_.lower_bandwidth = std::max(pattern_.lower_bandwidth, r - c);' \
+  'pattern_.lower_bandwidth = std::max(pattern_.lower_bandwidth, r - c - 1);' "$t_network" "$r_network"
 mutation simulation-last-output-past-end src/solver/simulation.cc \
   'return k >= outputs ? request.t_end' \
   'return k > outputs ? request.t_end' "$t_solver" "$r_solver"
