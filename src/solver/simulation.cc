@@ -92,20 +92,32 @@ void Validate(const SolverOptions& o) {
   }
 }
 
+namespace {
+
+// The time span and the output grid, as both kinds of run request have them.
+void ValidateSpan(double t_start, double t_end) {
+  Require(std::isfinite(t_start), "t_start", t_start, "must be finite [s]");
+  Require(std::isfinite(t_end) && t_end > t_start, "t_end", t_end,
+          "must be finite and greater than t_start = " + FormatNumber(t_start) + " [s]");
+}
+
+void ValidateOutputInterval(double t_start, double t_end, double interval) {
+  // 0 asks for every internal step; otherwise a positive grid of at most 1e8 rows
+  Require(interval == 0.0 ||
+              (std::isfinite(interval) && interval > 0.0 && (t_end - t_start) / interval <= 1e8),
+          "output_interval", interval,
+          "must be > 0 with at most 1e8 rows over the run, or 0 for every step [s]");
+}
+
+}  // namespace
+
 void Validate(const RunRequest& r) {
-  Require(std::isfinite(r.t_start), "t_start", r.t_start, "must be finite [s]");
-  Require(std::isfinite(r.t_end) && r.t_end > r.t_start, "t_end", r.t_end,
-          "must be finite and greater than t_start = " + FormatNumber(r.t_start) + " [s]");
+  ValidateSpan(r.t_start, r.t_end);
   Require(std::isfinite(r.length) && r.length > 0.0, "length", r.length,
           "must be finite and > 0 [m]");
   Require(std::isfinite(r.lengthening_rate), "lengthening_rate", r.lengthening_rate,
           "must be finite [m/s]");
-  // 0 asks for every internal step; otherwise a positive grid of at most 1e8 rows
-  Require(r.output_interval == 0.0 ||
-              (std::isfinite(r.output_interval) && r.output_interval > 0.0 &&
-               (r.t_end - r.t_start) / r.output_interval <= 1e8),
-          "output_interval", r.output_interval,
-          "must be > 0 with at most 1e8 rows over the run, or 0 for every step [s]");
+  ValidateOutputInterval(r.t_start, r.t_end, r.output_interval);
   if (r.min_length) {
     Require(std::isfinite(*r.min_length) && *r.min_length >= 0.0 && *r.min_length < r.length,
             "min_length", *r.min_length,
@@ -119,15 +131,8 @@ void Validate(const RunRequest& r) {
 }
 
 void Validate(const NetworkRunRequest& r) {
-  Require(std::isfinite(r.t_start), "t_start", r.t_start, "must be finite [s]");
-  Require(std::isfinite(r.t_end) && r.t_end > r.t_start, "t_end", r.t_end,
-          "must be finite and greater than t_start = " + FormatNumber(r.t_start) + " [s]");
-  // 0 asks for every internal step; otherwise a positive grid of at most 1e8 rows
-  Require(r.output_interval == 0.0 ||
-              (std::isfinite(r.output_interval) && r.output_interval > 0.0 &&
-               (r.t_end - r.t_start) / r.output_interval <= 1e8),
-          "output_interval", r.output_interval,
-          "must be > 0 with at most 1e8 rows over the run, or 0 for every step [s]");
+  ValidateSpan(r.t_start, r.t_end);
+  ValidateOutputInterval(r.t_start, r.t_end, r.output_interval);
   for (double v : r.initial_state) Require(std::isfinite(v), "initial_state", v, "must be finite");
 }
 
