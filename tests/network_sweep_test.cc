@@ -304,24 +304,30 @@ TEST(NetworkSweep, AResumedSweepGivesTheUninterruptedSummary) {
 }
 
 #ifdef MUSCLESIM_MPIEXEC
-TEST(NetworkSweep, TwoMpiRanksGiveTheThreadedSummary) {
+// Eight ranks of one thread each, several times: a rank told that no points are left may still
+// be running its last ones, and rank 0 must wait for their rows (this lost a row in about one
+// run in three before rank 0 waited for every rank to say it was done).
+TEST(NetworkSweep, MpiRanksGiveTheThreadedSummary) {
   const std::string sweep = WriteSweep("mpi", kSeries,
       "parameters:\n  loads[0].value: {from: 1.0, to: 4.0, count: 10}\n"
       "  elements[0].stiffness: [100.0, 200.0]\nmetrics: [final_length, peak_tension, work]\n"
       "metric_options: {element: soft}\n");
   const std::string dir = ::testing::TempDir();
-  const std::string threaded = RunInto(LoadSweep(sweep), "mpi_threaded", 2);
+  const std::string threaded = SummaryWithoutWallTime(RunInto(LoadSweep(sweep), "mpi_threaded", 2));
   const std::string output = dir + "network_sweep_mpi.csv";
-  std::filesystem::remove(output + ".partial");
-  const std::string command = std::string(MUSCLESIM_MPIEXEC) +
-                              " -n 2 --oversubscribe --allow-run-as-root " + MUSCLESIM_BINARY +
-                              " sweep '" + sweep + "' -o '" + output + "' --jobs 1 --quiet 2>'" +
-                              dir + "network_sweep_mpi.err' >/dev/null";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0)
-      << ReadFile(dir + "network_sweep_mpi.err");
-  EXPECT_EQ(ReadCsv(output).rows.size(), 20u);
-  EXPECT_EQ(SummaryWithoutWallTime(output), SummaryWithoutWallTime(threaded));
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    std::filesystem::remove(output);
+    std::filesystem::remove(output + ".partial");
+    const std::string command = std::string(MUSCLESIM_MPIEXEC) +
+                                " -n 8 --oversubscribe --allow-run-as-root " + MUSCLESIM_BINARY +
+                                " sweep '" + sweep + "' -o '" + output + "' --jobs 1 --quiet 2>'" +
+                                dir + "network_sweep_mpi.err' >/dev/null";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0)
+        << "attempt " << attempt << ": " << ReadFile(dir + "network_sweep_mpi.err");
+    EXPECT_EQ(ReadCsv(output).rows.size(), 20u);
+    EXPECT_EQ(SummaryWithoutWallTime(output), threaded);
+  }
 }
 #endif
 

@@ -21,6 +21,7 @@ enum Tag : int {
   kRequest = 1,  // worker -> root: {1 for more work or 0 when it stops, its thread count}
   kWork = 2,     // root -> worker: indices (longs); none means stop
   kResult = 3,   // worker -> root: finished rows, one per line, its status letter in front
+  kDone = 4,     // worker -> root: every row of this rank has been sent (empty message)
 };
 
 // A row's status as one letter on the wire: O ok, F failed, I invalid.
@@ -59,9 +60,11 @@ SweepOutcome Root(const SweepSpec& spec, const SweepRunOptions& options, int ran
     return summary.Hand(size);
   };
 
-  int stopped_ranks = 0;
+  // a rank that was told to stop may still be running points: it is done only when it says so,
+  // after its last rows (messages between two ranks arrive in the order they were sent)
+  int done_ranks = 0;
   bool closed = false, stopping = false;
-  while (stopped_ranks < ranks - 1 || !pool.Finished()) {
+  while (done_ranks < ranks - 1 || !pool.Finished()) {
     // feed this rank's own threads
     if (!stopping && observer.StopRequested()) {
       pool.Stop();
@@ -89,9 +92,11 @@ SweepOutcome Root(const SweepSpec& spec, const SweepRunOptions& options, int ran
       MPI_Recv(wants, 2, MPI_INT, status.MPI_SOURCE, kRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
       std::vector<long> indices;
       if (wants[0] != 0 && summary.Unhanded() > 0 && !stopping) indices = chunk(wants[1]);
-      if (indices.empty()) ++stopped_ranks;
       MPI_Send(indices.data(), static_cast<int>(indices.size()), MPI_LONG, status.MPI_SOURCE,
                kWork, MPI_COMM_WORLD);
+    } else if (status.MPI_TAG == kDone) {
+      MPI_Recv(nullptr, 0, MPI_CHAR, status.MPI_SOURCE, kDone, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      ++done_ranks;
     } else if (status.MPI_TAG == kResult) {
       int bytes = 0;
       MPI_Get_count(&status, MPI_CHAR, &bytes);
@@ -141,6 +146,7 @@ void Worker(SweepObserver& observer, WorkerPool& pool) {
     }
     pool.Wait(0.002);
   }
+  MPI_Send(nullptr, 0, MPI_CHAR, 0, kDone, MPI_COMM_WORLD);
 }
 
 }  // namespace
