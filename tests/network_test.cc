@@ -163,11 +163,11 @@ std::vector<double> DifferenceJacobian(const NetworkSystem& system, double t,
   return jacobian;
 }
 
-// Whether every element's length at (t, y) is more than `margin` from its kinks.
+// Whether (t, y) is more than `margin` (in the kink's unit) from every kink.
 bool AwayFromKinks(const NetworkSystem& system, double t, const std::vector<double>& y,
                    double margin) {
   for (const NetworkSystem::Kink& kink : system.kinks()) {
-    if (std::abs(system.Length(kink.element, t, y.data()) - kink.length) < margin) return false;
+    if (std::abs(system.KinkValue(kink, t, y.data())) < margin) return false;
   }
   return true;
 }

@@ -120,9 +120,10 @@ void NetworkSystem::Resolve() {
     joined.Join(static_cast<std::size_t>(link.from), static_cast<std::size_t>(link.to));
     links_.push_back(link);
     if (element.kind == ElementKind::kTendon) {
-      kinks_.push_back({static_cast<int>(e), element.slack_length});
+      kinks_.push_back({Kink::kLength, static_cast<int>(e), element.slack_length});
     } else if (element.kind == ElementKind::kActuator && element.model->params().passive.k_p > 0.0) {
-      kinks_.push_back({static_cast<int>(e), element.model->params().passive.slack_length});
+      kinks_.push_back(
+          {Kink::kLength, static_cast<int>(e), element.model->params().passive.slack_length});
     }
   }
 
@@ -272,6 +273,19 @@ double NetworkSystem::VelocityOf(const End& end, double t, const double* y) cons
 double NetworkSystem::Length(int e, double t, const double* y) const {
   const Link& link = links_[e];
   return PositionOf(ends_[link.to], t, y) - PositionOf(ends_[link.from], t, y);
+}
+
+double NetworkSystem::LengtheningRate(int e, double t, const double* y) const {
+  const Link& link = links_[e];
+  return VelocityOf(ends_[link.to], t, y) - VelocityOf(ends_[link.from], t, y);
+}
+
+double NetworkSystem::KinkValue(const Kink& kink, double t, const double* y) const {
+  switch (kink.kind) {
+    case Kink::kLength: return Length(kink.element, t, y) - kink.level;
+    case Kink::kLengtheningRate: return LengtheningRate(kink.element, t, y) - kink.level;
+  }
+  return 0.0;
 }
 
 NetworkSystem::Tension NetworkSystem::TensionOf(int e, double t, double l, double ldot) const {

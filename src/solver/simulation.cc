@@ -138,11 +138,12 @@ void Validate(const NetworkRunRequest& r) {
 
 namespace {
 
-// What a root function watches: g = length(element) - level.
+// What a root function watches: a kink of the system (its KinkValue), or
+// g = length(element) - level.
 struct Root {
   enum Kind { kKink, kMinLength, kMaxLength, kZeroLength };
   Kind kind;
-  int element;
+  int element;   // kink: its index in system.kinks()
   double level;  // [m]
 };
 
@@ -197,7 +198,10 @@ int RootFunctions(sunrealtype t, N_Vector y, sunrealtype* g, void* data) {
   const auto* cb = static_cast<const Callbacks*>(data);
   const double* state = N_VGetArrayPointer(y);
   for (std::size_t i = 0; i < cb->roots.size(); ++i) {
-    g[i] = cb->system->Length(cb->roots[i].element, t, state) - cb->roots[i].level;
+    const Root& root = cb->roots[i];
+    g[i] = root.kind == Root::kKink
+               ? cb->system->KinkValue(cb->system->kinks()[root.element], t, state)
+               : cb->system->Length(root.element, t, state) - root.level;
   }
   return 0;
 }
@@ -219,8 +223,8 @@ std::string FlagName(int flag) {
 std::vector<Root> RootsOf(const NetworkSystem& system, const NetworkRunRequest& request,
                           const double* y) {
   std::vector<Root> roots;
-  for (const NetworkSystem::Kink& kink : system.kinks()) {
-    roots.push_back({Root::kKink, kink.element, kink.length});
+  for (std::size_t k = 0; k < system.kinks().size(); ++k) {
+    roots.push_back({Root::kKink, static_cast<int>(k), 0.0});
   }
   for (std::size_t i = 0; i < request.limits.size(); ++i) {
     const LengthLimit& limit = request.limits[i];

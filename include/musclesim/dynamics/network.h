@@ -51,14 +51,21 @@ class NetworkSystem {
   void Jacobian(double t, const double* y, double* values) const;
   const JacobianPattern& jacobian_pattern() const { return pattern_; }
 
-  // The length of element e at (t, y) [m].
+  // The length of element e at (t, y) [m], and its rate of change [m/s].
   double Length(int e, double t, const double* y) const;
-  // Lengths where an element's tension has a kink (an actuator's passive slack length,
-  // a tendon's slack length): the integrator restarts there.
+  double LengtheningRate(int e, double t, const double* y) const;
+  // Where an element's tension has a kink, as the zero of a scalar function of (t, y): the
+  // integrator restarts there. kLength: the length at `level` (an actuator's passive slack
+  // length, a tendon's slack length); kLengtheningRate: dl/dt at `level` (an actuator whose
+  // tension-velocity slopes differ at v = 0).
   struct Kink {
+    enum Kind { kLength, kLengtheningRate };
+    Kind kind;
     int element;
-    double length;  // [m]
+    double level;  // [m] or [m/s]
   };
+  // The kink's function at (t, y): its sign changes where the kink is crossed.
+  double KinkValue(const Kink& kink, double t, const double* y) const;
   const std::vector<Kink>& kinks() const { return kinks_; }
   // Where the inputs jump (activations, force loads, prescribed motions): sorted, in (t0, t1).
   std::vector<double> Breakpoints(double t0, double t1) const;
