@@ -23,10 +23,11 @@ constexpr const char* kHelp = R"(usage: musclesim run SCENARIO.yaml [-o PATH] [-
 Integrates the scenario's dynamics with CVODE and writes the trajectory CSV. A single
 actuator's CSV has the columns
   t,length,shortening_velocity,activation,tension_passive,tension_active,tension_total,load,phase
-A network's (a file with a top-level `nodes:` key) has t; NODE.position, NODE.velocity of
-every node; ELEMENT.length, ELEMENT.tension of every element, an actuator adding
-.shortening_velocity, .activation, .tension_passive, .tension_active and .phase; and
-NODE.load of every free node.
+with `excitation` after `activation` when the scenario gives an excitation (activation
+dynamics). A network's (a file with a top-level `nodes:` key) has t; NODE.position,
+NODE.velocity of every node; ELEMENT.length, ELEMENT.tension of every element, an actuator
+adding .shortening_velocity, .activation (.excitation with activation dynamics),
+.tension_passive, .tension_active and .phase; and NODE.load of every free node.
   -o PATH          overrides output.file ("-" is standard output)
   --set KEY=VALUE  overrides one value by its dotted path, e.g. model.velocity.n=4,
                    load[0].value=55 or elements[1].activation.after=0.5; validated like
@@ -45,7 +46,7 @@ int RunActuator(const Arguments& args, const std::vector<std::string>& sets) {
 
   // rows stream to PATH.partial as they are recorded; PATH is replaced only on success
   StreamedOutput csv(output);
-  TrajectoryCsvWriter writer(csv, spec.PhaseTolerance());
+  TrajectoryCsvWriter writer(csv, spec.PhaseTolerance(), spec.excitation.has_value());
   struct Watch final : TrajectorySink {
     TrajectorySink* next;
     PeakSpeed peak;

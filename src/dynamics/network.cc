@@ -112,12 +112,18 @@ void NetworkSystem::Resolve() {
   for (std::size_t e = 0; e < elements_.size(); ++e) {
     const Element& element = elements_[e];
     Link link{node_named(element.from, Entry("elements", e, "from")),
-              node_named(element.to, Entry("elements", e, "to")), {}};
+              node_named(element.to, Entry("elements", e, "to")), {}, -1, {-1, -1}};
     if (link.from == link.to) {
       throw ParameterError(Entry("elements", e, "to"), element.to,
                            "must differ from `from`: an element joins two nodes");
     }
     joined.Join(static_cast<std::size_t>(link.from), static_cast<std::size_t>(link.to));
+    if (element.kind == ElementKind::kActuator && element.excitation) {
+      // after every node's states (the nodes were numbered above)
+      link.activation = states++;
+      activations_.push_back({static_cast<int>(e), link.activation, -1});
+      kinks_.push_back({Kink::kExcitation, static_cast<int>(e), 0.0});
+    }
     links_.push_back(link);
     if (element.kind == ElementKind::kTendon) {
       kinks_.push_back({Kink::kLength, static_cast<int>(e), element.slack_length});
@@ -182,7 +188,14 @@ void NetworkSystem::BuildPattern() {
         pairs.emplace_back(c + 1, r + 1);
       }
     }
+    // the tension's u: in both ends' acceleration rows
+    for (int row_end : {link.from, link.to}) {
+      const int r = ends_[row_end].state;
+      if (link.activation >= 0 && r >= 0) pairs.emplace_back(link.activation, r + 1);
+    }
   }
+  // udot depends on u alone (and t)
+  for (const Activation& a : activations_) pairs.emplace_back(a.state, a.state);
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
 
@@ -206,12 +219,15 @@ void NetworkSystem::BuildPattern() {
     node.slot_rate = slot(s, s + 1);
     node.slot_position = slot(s + 1, s);
   }
-  // an entry in a velocity row (odd: free node f has states 2f, 2f + 1) is scaled by 1/m_f
+  // an entry in a velocity row (odd: free node f has states 2f, 2f + 1) is scaled by 1/m_f;
+  // the activation rows after the nodes' are not
+  const int node_states = 2 * static_cast<int>(free_nodes_.size());
   row_scale_.assign(pairs.size(), -1);
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const int r = pattern_.rows[k];
-    if (r % 2 == 1) row_scale_[k] = r / 2;
+    if (r < node_states && r % 2 == 1) row_scale_[k] = r / 2;
   }
+  for (Activation& a : activations_) a.slot = slot(a.state, a.state);
   for (Link& link : links_) {
     const int ends[2] = {link.from, link.to};
     for (int r = 0; r < 2; ++r) {
@@ -221,15 +237,21 @@ void NetworkSystem::BuildPattern() {
         link.slot[r][2 * c] = present ? slot(row + 1, col) : -1;
         link.slot[r][2 * c + 1] = present ? slot(row + 1, col + 1) : -1;
       }
+      const int row = ends_[ends[r]].state;
+      link.slot_activation[r] =
+          link.activation >= 0 && row >= 0 ? slot(row + 1, link.activation) : -1;
     }
   }
 }
 
-void NetworkSystem::InitialState(double* y) const {
+void NetworkSystem::InitialState(double t_start, double* y) const {
   for (const FreeNode& f : free_nodes_) {
     const int s = ends_[f.node].state;
     y[s] = nodes_[f.node].position;
     y[s + 1] = nodes_[f.node].velocity;
+  }
+  for (const Activation& a : activations_) {
+    y[a.state] = elements_[a.element].excitation->InitialActivation(t_start);
   }
 }
 
@@ -284,30 +306,38 @@ double NetworkSystem::KinkValue(const Kink& kink, double t, const double* y) con
   switch (kink.kind) {
     case Kink::kLength: return Length(kink.element, t, y) - kink.level;
     case Kink::kLengtheningRate: return LengtheningRate(kink.element, t, y) - kink.level;
+    case Kink::kExcitation:
+      return elements_[kink.element].excitation->signal.Evaluate(t) -
+             y[links_[kink.element].activation];
   }
   return 0.0;
 }
 
-NetworkSystem::Tension NetworkSystem::TensionOf(int e, double t, double l, double ldot) const {
+NetworkSystem::Tension NetworkSystem::TensionOf(int e, double t, double l, double ldot,
+                                                const double* y) const {
   const Element& element = elements_[e];
   switch (element.kind) {
     case ElementKind::kActuator: {
-      const TensionSample s = element.model->Evaluate(l, -ldot, element.activation.Evaluate(t));
-      return {s.total, s.d_length, -s.d_velocity};  // v = -ldot
+      const int state = links_[e].activation;
+      const double u = state < 0 ? element.activation.Evaluate(t) : y[state];
+      const TensionSample s = element.model->Evaluate(l, -ldot, u);
+      return {s.total, s.d_length, -s.d_velocity, s.d_activation};  // v = -ldot
     }
     case ElementKind::kSpring:
-      return {element.stiffness * (l - element.rest_length), element.stiffness, 0.0};
+      return {element.stiffness * (l - element.rest_length), element.stiffness, 0.0, 0.0};
     case ElementKind::kTendon: {
       const double stretch = l - element.slack_length;
-      if (stretch <= 0.0) return {0.0, 0.0, 0.0};
-      if (!element.exponential()) return {element.stiffness * stretch, element.stiffness, 0.0};
+      if (stretch <= 0.0) return {0.0, 0.0, 0.0, 0.0};
+      if (!element.exponential()) {
+        return {element.stiffness * stretch, element.stiffness, 0.0, 0.0};
+      }
       const double grow = std::exp(element.alpha * stretch);
-      return {element.k * (grow - 1.0), element.k * element.alpha * grow, 0.0};
+      return {element.k * (grow - 1.0), element.k * element.alpha * grow, 0.0, 0.0};
     }
     case ElementKind::kDamper:
-      return {element.damping * ldot, 0.0, element.damping};
+      return {element.damping * ldot, 0.0, element.damping, 0.0};
   }
-  return {0.0, 0.0, 0.0};
+  return {0.0, 0.0, 0.0, 0.0};
 }
 
 void NetworkSystem::RightHandSide(double t, const double* y, double* ydot) const {
@@ -321,12 +351,17 @@ void NetworkSystem::RightHandSide(double t, const double* y, double* ydot) const
     const End& b = ends_[links_[e].to];
     const double l = PositionOf(b, t, y) - PositionOf(a, t, y);
     const double ldot = VelocityOf(b, t, y) - VelocityOf(a, t, y);
-    const double tension = TensionOf(static_cast<int>(e), t, l, ldot).value;
+    const double tension = TensionOf(static_cast<int>(e), t, l, ldot, y).value;
     // +T pulls `from` towards `to`, -T pulls `to` back
     if (a.state >= 0) ydot[a.state + 1] += tension;
     if (b.state >= 0) ydot[b.state + 1] -= tension;
   }
   for (const FreeNode& f : free_nodes_) ydot[ends_[f.node].state + 1] *= f.inverse_mass;
+  for (const Activation& a : activations_) {
+    const ExcitationInput& input = *elements_[a.element].excitation;
+    ydot[a.state] =
+        EvaluateActivationRate(input.dynamics, input.signal.Evaluate(t), y[a.state]).value;
+  }
 }
 
 void NetworkSystem::Jacobian(double t, const double* y, double* values) const {
@@ -341,7 +376,7 @@ void NetworkSystem::Jacobian(double t, const double* y, double* values) const {
     const End& b = ends_[link.to];
     const double l = PositionOf(b, t, y) - PositionOf(a, t, y);
     const double ldot = VelocityOf(b, t, y) - VelocityOf(a, t, y);
-    const Tension tension = TensionOf(static_cast<int>(e), t, l, ldot);
+    const Tension tension = TensionOf(static_cast<int>(e), t, l, ldot, y);
     // d(force on from)/d(x_from, v_from, x_to, v_to) = (-dT/dl, -dT/dldot, dT/dl, dT/dldot);
     // the force on `to` is the opposite
     const double by_state[4] = {-tension.by_length, -tension.by_rate, tension.by_length,
@@ -350,6 +385,14 @@ void NetworkSystem::Jacobian(double t, const double* y, double* values) const {
       if (link.slot[0][c] >= 0) values[link.slot[0][c]] += by_state[c];
       if (link.slot[1][c] >= 0) values[link.slot[1][c]] -= by_state[c];
     }
+    // +T on `from`, -T on `to`: d/du of each is +-dT/du
+    if (link.slot_activation[0] >= 0) values[link.slot_activation[0]] += tension.by_activation;
+    if (link.slot_activation[1] >= 0) values[link.slot_activation[1]] -= tension.by_activation;
+  }
+  for (const Activation& a : activations_) {
+    const ExcitationInput& input = *elements_[a.element].excitation;
+    values[a.slot] = EvaluateActivationRate(input.dynamics, input.signal.Evaluate(t), y[a.state])
+                         .by_activation;
   }
   for (int k = 0; k < pattern_.entries(); ++k) {
     if (row_scale_[k] >= 0) values[k] *= free_nodes_[row_scale_[k]].inverse_mass;
@@ -362,7 +405,9 @@ std::vector<double> NetworkSystem::Breakpoints(double t0, double t1) const {
     times.insert(times.end(), more.begin(), more.end());
   };
   for (const Element& e : elements_) {
-    if (e.kind == ElementKind::kActuator) add(e.activation.Breakpoints(t0, t1));
+    if (e.kind != ElementKind::kActuator) continue;
+    add(e.excitation ? e.excitation->signal.Breakpoints(t0, t1)
+                     : e.activation.Breakpoints(t0, t1));
   }
   for (const Node& n : nodes_) {
     if (n.kind == NodeKind::kPrescribed) add(n.motion.Breakpoints(t0, t1));
@@ -391,13 +436,18 @@ void NetworkSystem::Observe(double t, const double* y, NetworkSample& sample) co
     out.lengthening_rate = sample.velocity[link.to] - sample.velocity[link.from];
     const Element& element = elements_[e];
     if (element.kind == ElementKind::kActuator) {
-      out.activation = element.activation.Evaluate(t);
+      if (element.excitation) {
+        out.activation = y[link.activation];
+        out.excitation = element.excitation->signal.Evaluate(t);
+      } else {
+        out.activation = out.excitation = element.activation.Evaluate(t);
+      }
       out.parts = element.model->Evaluate(out.length, -out.lengthening_rate, out.activation);
       out.tension = out.parts.total;
     } else {
-      out.activation = 0.0;
+      out.activation = out.excitation = 0.0;
       out.parts = TensionSample{};
-      out.tension = TensionOf(static_cast<int>(e), t, out.length, out.lengthening_rate).value;
+      out.tension = TensionOf(static_cast<int>(e), t, out.length, out.lengthening_rate, y).value;
     }
   }
 }

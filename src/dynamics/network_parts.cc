@@ -85,6 +85,10 @@ void Validate(const Element& e) {
   switch (e.kind) {
     case ElementKind::kActuator:
       if (e.model == nullptr) throw ParameterError("model", "none", "an actuator needs a model");
+      if (e.excitation) {
+        Validate(*e.excitation);  // paths already the element's keys
+        break;
+      }
       try {
         ValidateActivation(e.activation);
       } catch (const ParameterError& error) {
@@ -134,6 +138,14 @@ Element Element::Actuator(std::string name, std::string from, std::string to,
   Element e = Make(std::move(name), ElementKind::kActuator, std::move(from), std::move(to));
   e.model = std::move(model);
   e.activation = std::move(activation);
+  return Validated(std::move(e));
+}
+
+Element Element::Actuator(std::string name, std::string from, std::string to,
+                          std::shared_ptr<const TensionModel> model, ExcitationInput excitation) {
+  Element e = Make(std::move(name), ElementKind::kActuator, std::move(from), std::move(to));
+  e.model = std::move(model);
+  e.excitation = std::move(excitation);
   return Validated(std::move(e));
 }
 

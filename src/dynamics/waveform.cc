@@ -190,10 +190,14 @@ void Validate(const Waveform& w) {
   }
 }
 
-void ValidateActivation(const Waveform& w) {
+namespace {
+
+// Every value of `w` within [0, 1]; `what` names the signal in the rule ("activation").
+void ValidateUnitInterval(const Waveform& w, const std::string& what) {
   Validate(w);
-  const auto unit = [](const std::string& key, double v) {
-    Require(v >= 0.0 && v <= 1.0, key, v, "activation must stay within [0, 1]");
+  const std::string rule = what + " must stay within [0, 1]";
+  const auto unit = [&](const std::string& key, double v) {
+    Require(v >= 0.0 && v <= 1.0, key, v, rule);
   };
   switch (w.kind) {
     case WaveformKind::kConstant: unit("value", w.value); break;
@@ -202,8 +206,7 @@ void ValidateActivation(const Waveform& w) {
     case WaveformKind::kSine:
       Require(w.offset - std::abs(w.amplitude) >= 0.0 && w.offset + std::abs(w.amplitude) <= 1.0,
               "amplitude", w.amplitude,
-              "activation must stay within [0, 1]: offset = " + FormatNumber(w.offset) +
-                  " -+ |amplitude| leaves it");
+              rule + ": offset = " + FormatNumber(w.offset) + " -+ |amplitude| leaves it");
       break;
     case WaveformKind::kPulses: unit("low", w.low); unit("high", w.high); break;
     case WaveformKind::kTable:
@@ -213,6 +216,12 @@ void ValidateActivation(const Waveform& w) {
       break;
   }
 }
+
+}  // namespace
+
+void ValidateActivation(const Waveform& w) { ValidateUnitInterval(w, "activation"); }
+
+void ValidateExcitation(const Waveform& w) { ValidateUnitInterval(w, "excitation"); }
 
 Waveform Waveform::Constant(double value) {
   Waveform w;

@@ -1,5 +1,7 @@
 #include "musclesim/io/network_csv.h"
 
+#include <string_view>
+
 #include "musclesim/io/trajectory_csv.h"
 
 namespace musclesim {
@@ -8,7 +10,8 @@ namespace {
 
 constexpr std::size_t kBlockBytes = 1 << 16;
 
-// The columns an actuator adds after its length and tension.
+// The columns an actuator adds after its length and tension; one with activation dynamics
+// has `excitation` after `activation` too.
 constexpr const char* kActuatorColumns[] = {"shortening_velocity", "activation",
                                             "tension_passive", "tension_active", "phase"};
 
@@ -24,7 +27,12 @@ std::vector<std::string> NetworkCsvColumns(const NetworkSystem& system) {
     columns.push_back(element.name + ".length");
     columns.push_back(element.name + ".tension");
     if (element.kind != ElementKind::kActuator) continue;
-    for (const char* column : kActuatorColumns) columns.push_back(element.name + "." + column);
+    for (const char* column : kActuatorColumns) {
+      columns.push_back(element.name + "." + column);
+      if (element.excitation && std::string_view(column) == "activation") {
+        columns.push_back(element.name + ".excitation");
+      }
+    }
   }
   for (const Node& node : system.nodes()) {
     if (node.kind == NodeKind::kFree) columns.push_back(node.name + ".load");
@@ -38,6 +46,7 @@ NetworkCsvFormat::NetworkCsvFormat(const NetworkSystem& system,
     header_ += (header_.empty() ? "" : ",") + column;
   }
   for (const Element& element : system.elements()) {
+    excitation_.push_back(element.excitation.has_value());
     // the single actuator's default (ScenarioSpec::PhaseTolerance): its model's epsilon
     phase_tolerance_.push_back(
         element.kind != ElementKind::kActuator
@@ -68,6 +77,7 @@ void NetworkCsvFormat::AppendRow(std::string& csv, double t, const NetworkSample
     const double shortening_velocity = 0.0 - element.lengthening_rate;
     number(shortening_velocity);
     number(element.activation);
+    if (excitation_[e]) number(element.excitation);
     number(element.parts.passive);
     number(element.parts.active);
     csv += ',';

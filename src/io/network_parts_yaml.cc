@@ -112,7 +112,9 @@ Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::
   ValidateAt(src, item, path, [&] { e.kind = ParseElementKind(type); });
   switch (e.kind) {
     case ElementKind::kActuator:
-      yaml::RequireMap(src, item, path, {"name", "type", "from", "to", "model", "activation"});
+      yaml::RequireMap(src, item, path,
+                       {"name", "type", "from", "to", "model", "activation", "excitation",
+                        "activation_dynamics", "initial_activation"});
       break;
     case ElementKind::kSpring:
       yaml::RequireMap(src, item, path, {"name", "type", "from", "to", "stiffness", "rest_length"});
@@ -134,9 +136,10 @@ Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::
   switch (e.kind) {
     case ElementKind::kActuator: {
       e.model = FindModel(src, item, path, models);
-      const YAML::Node activation = Required(src, item, path, "activation");
-      e.activation = ReadActivation(src, activation, Join(path, "activation"));
-      CheckPulses(src, activation, Join(path, "activation"), e.activation, t_start, t_end);
+      ActuatorDrive drive = ReadActuatorDrive(src, item, path, item["initial_activation"],
+                                              Join(path, "initial_activation"), t_start, t_end);
+      e.activation = std::move(drive.activation);
+      e.excitation = std::move(drive.excitation);
       break;
     }
     case ElementKind::kSpring:
@@ -214,7 +217,7 @@ std::vector<LengthLimit> ReadLengthLimits(const yaml::Source& src, const YAML::N
                                           const NetworkSystem& system, double t_start) {
   RequireList(src, node, "limits", "limits, each {element, min_length, max_length}");
   std::vector<double> y(static_cast<std::size_t>(system.state_size()));
-  system.InitialState(y.data());
+  system.InitialState(t_start, y.data());
   std::vector<LengthLimit> limits;
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string path = Item("limits", i);

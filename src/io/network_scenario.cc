@@ -74,7 +74,7 @@ NetworkScenarioSpec ReadNetworkScenario(const yaml::Source& src, const YAML::Nod
   yaml::ValidateAt(src, root, "", [&] {
     system.emplace(s.Build());
     std::vector<double> y(static_cast<std::size_t>(system->state_size()));
-    system->InitialState(y.data());
+    system->InitialState(s.t_start, y.data());
     system->CheckLengths(s.t_start, y.data());
   });
 

@@ -3,6 +3,9 @@
 namespace musclesim {
 
 ActuatorSystem BuildSystem(const ScenarioSpec& spec) {
+  if (spec.excitation) {
+    return ActuatorSystem(spec.model.params, spec.actuator, *spec.excitation, spec.loads);
+  }
   return ActuatorSystem(spec.model.params, spec.actuator, spec.activation, spec.loads);
 }
 

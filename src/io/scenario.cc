@@ -77,15 +77,16 @@ ScenarioSpec ReadScenario(const yaml::Source& src, const YAML::Node& root) {
   s.t_end = time.end;
 
   const YAML::Node initial = Required(src, root, "", "initial");
-  yaml::RequireMap(src, initial, "initial", {"length", "lengthening_rate"});
+  yaml::RequireMap(src, initial, "initial", {"length", "lengthening_rate", "activation"});
   s.initial_length = yaml::ReadNumberIn(src, Required(src, initial, "initial", "length"),
                                         "initial.length", kLengthRange);
   s.initial_lengthening_rate = yaml::ReadOptionalNumberIn(
       src, initial, "initial", "lengthening_rate", kSpeedRange, 0.0);
 
-  const YAML::Node activation = Required(src, root, "", "activation");
-  s.activation = ReadActivation(src, activation, "activation");
-  CheckPulses(src, activation, "activation", s.activation, s.t_start, s.t_end);
+  ActuatorDrive drive = ReadActuatorDrive(src, root, "", initial["activation"],
+                                          "initial.activation", s.t_start, s.t_end);
+  s.activation = std::move(drive.activation);
+  s.excitation = std::move(drive.excitation);
 
   if (const YAML::Node load = root["load"]) {
     const auto read = [&](const YAML::Node& node, const std::string& at) {

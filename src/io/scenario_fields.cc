@@ -112,6 +112,69 @@ Waveform ReadActivation(const yaml::Source& src, const YAML::Node& node, const s
   return w;
 }
 
+ActuatorDrive ReadActuatorDrive(const yaml::Source& src, const YAML::Node& owner,
+                                const std::string& path, const YAML::Node& initial,
+                                const std::string& initial_path, double t_start, double t_end) {
+  const YAML::Node activation = owner["activation"];
+  const YAML::Node excitation = owner["excitation"];
+  const YAML::Node dynamics = owner["activation_dynamics"];
+  const std::string activation_path = Join(path, "activation");
+  const std::string excitation_path = Join(path, "excitation");
+  const std::string dynamics_path = Join(path, "activation_dynamics");
+  constexpr const char* kEither =
+      "give either activation (u(t) itself) or excitation (e(t), driving u through "
+      "activation_dynamics)";
+  ActuatorDrive drive;
+  if (activation && excitation) {
+    yaml::Fail(src, excitation, excitation_path, yaml::Describe(excitation),
+               std::string(kEither) + ", not both");
+  }
+  if (!excitation) {
+    if (dynamics) {
+      yaml::Fail(src, dynamics, dynamics_path, yaml::Describe(dynamics),
+                 "only with excitation: the time constants lag the activation behind an "
+                 "excitation; activation: gives u(t) itself");
+    }
+    if (!activation) {
+      throw InputError(activation_path + " (" + yaml::Location(src, owner) +
+                       "): missing required key: " + kEither);
+    }
+    if (initial) {
+      yaml::Fail(src, initial, initial_path, yaml::Describe(initial),
+                 "only with excitation and activation_dynamics: activation: gives u(t) "
+                 "itself, its start included");
+    }
+    drive.activation = ReadActivation(src, activation, activation_path);
+    CheckPulses(src, activation, activation_path, drive.activation, t_start, t_end);
+    return drive;
+  }
+
+  ExcitationInput input;
+  const std::string type = ReadType(src, excitation, excitation_path);
+  WaveformKind kind{};
+  ValidateAt(src, excitation, excitation_path, [&] { kind = ParseWaveformKind(type); });
+  input.signal = ReadWaveform(src, excitation, excitation_path, kind, nullptr);
+  ValidateAt(src, excitation, excitation_path, [&] { ValidateExcitation(input.signal); });
+  CheckPulses(src, excitation, excitation_path, input.signal, t_start, t_end);
+  if (!dynamics) {
+    yaml::Fail(src, excitation, excitation_path, yaml::Describe(excitation),
+               "needs activation_dynamics: {tau_activation, tau_deactivation} [s] beside it, "
+               "the time constants through which it drives the activation");
+  }
+  yaml::RequireMap(src, dynamics, dynamics_path, {"tau_activation", "tau_deactivation"});
+  const auto time_constant = [&](const char* key) {
+    return yaml::ReadNumberIn(src, Required(src, dynamics, dynamics_path, key),
+                              Join(dynamics_path, key), kActivationTimeConstantRange);
+  };
+  input.dynamics.tau_activation = time_constant("tau_activation");
+  input.dynamics.tau_deactivation = time_constant("tau_deactivation");
+  if (initial) {
+    input.initial_activation = yaml::ReadNumberIn(src, initial, initial_path, kActivationRange);
+  }
+  drive.excitation = std::move(input);
+  return drive;
+}
+
 Load ReadLoad(const yaml::Source& src, const YAML::Node& node, const std::string& path,
               const char* extra) {
   const std::string type = ReadType(src, node, path);

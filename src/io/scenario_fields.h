@@ -4,9 +4,11 @@
 // naming file:line:column, key path, value and rule.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "io/yaml_fields.h"
+#include "musclesim/dynamics/activation_dynamics.h"
 #include "musclesim/dynamics/loads.h"
 #include "musclesim/dynamics/waveform.h"
 #include "musclesim/io/scenario.h"
@@ -29,6 +31,22 @@ Waveform ReadWaveform(const yaml::Source& src, const YAML::Node& node, const std
 
 // An activation u(t): any waveform kind, validated within [0, 1].
 Waveform ReadActivation(const yaml::Source& src, const YAML::Node& node, const std::string& path);
+
+// How an actuator's activation is given: `activation` (u(t) itself) or `excitation` with
+// `activation_dynamics` (docs/model.md section 8), exactly one.
+struct ActuatorDrive {
+  Waveform activation;                        // without activation dynamics: u(t) [-]
+  std::optional<ExcitationInput> excitation;  // with them: units as in ExcitationInput
+};
+
+// Reads the drive of the map `owner` at key path `path` (the top level of a single-actuator
+// scenario, "", or a network's actuator element): its `activation`, or its `excitation` and
+// `activation_dynamics`; and the initial activation from `initial` at `initial_path` (an
+// undefined node when absent), allowed only with an excitation. Pulses are checked against
+// the run [t_start, t_end] (CheckPulses).
+ActuatorDrive ReadActuatorDrive(const yaml::Source& src, const YAML::Node& owner,
+                                const std::string& path, const YAML::Node& initial,
+                                const std::string& initial_path, double t_start, double t_end);
 
 // One load: a force waveform, a spring or a mass. `extra` as for ReadWaveform.
 Load ReadLoad(const yaml::Source& src, const YAML::Node& node, const std::string& path,

@@ -15,24 +15,31 @@ constexpr EnumName<Phase> kPhaseNames[] = {
 
 std::string_view ToString(Phase phase) { return ToString(kPhaseNames, phase); }
 
-void AppendTrajectoryRow(std::string& csv, const TrajectoryPoint& p, double phase_tolerance) {
+void AppendTrajectoryRow(std::string& csv, const TrajectoryPoint& p, double phase_tolerance,
+                         bool with_excitation) {
   const ActuatorSample& s = p.sample;
-  for (double value : {p.t, s.length, s.shortening_velocity, s.activation, s.tension.passive,
-                       s.tension.active, s.tension.total, s.load}) {
+  const auto number = [&](double value) {
     csv += FormatFull(value);
     csv += ',';
+  };
+  for (double value : {p.t, s.length, s.shortening_velocity, s.activation}) number(value);
+  if (with_excitation) number(s.excitation);
+  for (double value : {s.tension.passive, s.tension.active, s.tension.total, s.load}) {
+    number(value);
   }
   csv += ToString(ClassifyPhase(s.shortening_velocity, phase_tolerance));
   csv += '\n';
 }
 
 std::string FormatTrajectoryCsv(const std::vector<TrajectoryPoint>& trajectory,
-                                double phase_tolerance) {
+                                double phase_tolerance, bool with_excitation) {
   std::string csv;
   csv.reserve(200 * (trajectory.size() + 1));
-  csv += kTrajectoryHeader;
+  csv += with_excitation ? kTrajectoryHeaderWithExcitation : kTrajectoryHeader;
   csv += '\n';
-  for (const TrajectoryPoint& p : trajectory) AppendTrajectoryRow(csv, p, phase_tolerance);
+  for (const TrajectoryPoint& p : trajectory) {
+    AppendTrajectoryRow(csv, p, phase_tolerance, with_excitation);
+  }
   return csv;
 }
 
@@ -42,15 +49,16 @@ constexpr std::size_t kBlockBytes = 1 << 16;
 
 }  // namespace
 
-TrajectoryCsvWriter::TrajectoryCsvWriter(StreamedOutput& output, double phase_tolerance)
-    : output_(output), phase_tolerance_(phase_tolerance) {
+TrajectoryCsvWriter::TrajectoryCsvWriter(StreamedOutput& output, double phase_tolerance,
+                                         bool with_excitation)
+    : output_(output), phase_tolerance_(phase_tolerance), with_excitation_(with_excitation) {
   buffer_.reserve(kBlockBytes + 512);
-  buffer_ += kTrajectoryHeader;
+  buffer_ += with_excitation ? kTrajectoryHeaderWithExcitation : kTrajectoryHeader;
   buffer_ += '\n';
 }
 
 void TrajectoryCsvWriter::Record(const TrajectoryPoint& point) {
-  AppendTrajectoryRow(buffer_, point, phase_tolerance_);
+  AppendTrajectoryRow(buffer_, point, phase_tolerance_, with_excitation_);
   ++rows_;
   last_ = point;
   if (buffer_.size() >= kBlockBytes) Flush();

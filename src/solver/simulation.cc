@@ -150,8 +150,9 @@ struct Root {
 // What the C callbacks see through CVODE's user data.
 struct Callbacks {
   const NetworkSystem* system = nullptr;
-  // set when the network is a single actuator's (docs/model.md 7.4): its own right-hand side
-  // and Jacobian are the network's bit for bit (network_test checks) and cost less
+  // set when the network is a single actuator's (docs/model.md 7.4) without activation
+  // dynamics: its own right-hand side and Jacobian are the network's bit for bit
+  // (network_test checks) and cost less
   const ActuatorSystem* actuator = nullptr;
   LinearSystem* linear = nullptr;
   std::vector<Root> roots;
@@ -168,9 +169,15 @@ int RightHandSide(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
     return std::isfinite(rate[1]) ? 0 : 1;
   }
   cb->system->RightHandSide(t, N_VGetArrayPointer(y), rate);
-  // a non-finite value is a recoverable error: CVODE retries with a smaller step
+  // a non-finite value is a recoverable error: CVODE retries with a smaller step. The
+  // velocities' rates are their states (already checked by CVODE's error test); the
+  // accelerations and the activation rates after them are computed
   const sunindextype n = N_VGetLength(ydot);
-  for (sunindextype i = 1; i < n; i += 2) {
+  const sunindextype node_states = n - cb->system->activation_count();
+  for (sunindextype i = 1; i < node_states; i += 2) {
+    if (!std::isfinite(rate[i])) return 1;
+  }
+  for (sunindextype i = node_states; i < n; ++i) {
     if (!std::isfinite(rate[i])) return 1;
   }
   return 0;
@@ -369,7 +376,11 @@ class ActuatorView final : public NetworkSink {
   ActuatorView(const ActuatorSystem& system, TrajectorySink& out) : system_(system), out_(out) {}
   // the actuator's own Observe: what Record computes from the network, without the network
   bool RecordState(double t, const double* y) override {
-    out_.Record({t, system_.Observe(t, y[0], y[1])});
+    if (system_.excitation()) {
+      out_.Record({t, system_.Observe(t, y[0], y[1], y[2])});  // y = (x, xdot, u)
+    } else {
+      out_.Record({t, system_.Observe(t, y[0], y[1])});
+    }
     return true;
   }
   void Record(double t, const NetworkSample& s) override {
@@ -378,6 +389,7 @@ class ActuatorView final : public NetworkSink {
     sample.length = actuator.length;
     sample.shortening_velocity = 0.0 - actuator.lengthening_rate;  // +0 rather than -0 at rest
     sample.activation = actuator.activation;
+    sample.excitation = actuator.excitation;
     sample.tension = actuator.parts;
     sample.load = s.load[1];
     out_.Record({t, sample});
@@ -426,8 +438,12 @@ RunStats Simulation::Run(const ActuatorSystem& system, const SolverOptions& opti
     network_request.limits.push_back({"actuator", request.min_length, request.max_length});
   }
   network_request.initial_state = {request.length, request.lengthening_rate};
+  if (system.excitation()) {
+    network_request.initial_state.push_back(system.excitation()->InitialActivation(request.t_start));
+  }
   ActuatorView view(system, sink);
-  workspace_->callbacks.actuator = &system;
+  // the actuator's own right-hand side knows no activation state
+  workspace_->callbacks.actuator = system.excitation() ? nullptr : &system;
   try {
     const RunStats stats = Run(system.network(), options, network_request, view);
     workspace_->callbacks.actuator = nullptr;
@@ -456,11 +472,13 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
   const int n = system.state_size();
   if (!request.initial_state.empty() && static_cast<int>(request.initial_state.size()) != n) {
     throw ParameterError("initial_state", std::to_string(request.initial_state.size()) + " values",
-                         "must hold " + std::to_string(n) + " values (x, xdot of every free node)");
+                         "must hold " + std::to_string(n) +
+                             " values (x, xdot of every free node, then the activation of "
+                             "every actuator with activation dynamics)");
   }
   std::vector<double> start(static_cast<std::size_t>(n));
   if (request.initial_state.empty()) {
-    system.InitialState(start.data());
+    system.InitialState(request.t_start, start.data());
   } else {
     start = request.initial_state;
   }
@@ -558,6 +576,7 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
           for (std::size_t i = 0; i < cb.roots.size(); ++i) {
             if (found[i] == 0) continue;
             const Root& root = cb.roots[i];
+            if (root.kind == Root::kKink) continue;  // its `element` indexes kinks()
             const std::string& name = system.elements()[root.element].name;
             const std::string where = "length " + FormatNumber(system.Length(root.element, t, y)) +
                                       " m at t = " + FormatNumber(t) + " s";

@@ -53,6 +53,7 @@ TrajectoryPoint ElementPoint(double t, const ElementSample& element) {
   point.sample.length = element.length;
   point.sample.shortening_velocity = -element.lengthening_rate;
   point.sample.activation = element.activation;
+  point.sample.excitation = element.excitation;
   point.sample.tension = element.parts;  // all zero but for an actuator
   point.sample.tension.total = element.tension;
   return point;

@@ -26,6 +26,8 @@ struct Panel {
   std::string ylabel;
   std::string suffix;
   std::vector<int> columns;
+  std::string dashed_suffix;  // drawn dashed in the same panel ("" none): the excitations
+  std::vector<int> dashed;
 };
 
 }  // namespace
@@ -36,15 +38,20 @@ bool IsNetworkTrajectory(const CsvTable& table) {
 
 std::string NetworkPlotScript(const CsvTable& table, const PlotOptions& options) {
   table.Require({"t"}, "a network trajectory CSV of musclesim run");
-  std::vector<Panel> panels = {{"position [m]", ".position", {}},
-                               {"length [m]", ".length", {}},
-                               {"tension [N]", ".tension", {}},
-                               {"activation [-]", ".activation", {}}};
+  std::vector<Panel> panels = {{"position [m]", ".position", {}, "", {}},
+                               {"length [m]", ".length", {}, "", {}},
+                               {"tension [N]", ".tension", {}, "", {}},
+                               {"activation [-]", ".activation", {}, ".excitation", {}}};
   std::vector<int> data = {table.Find("t")};  // the inline data's columns, time first
   for (Panel& panel : panels) {
     for (int column : ColumnsEndingIn(table, panel.suffix)) {
       data.push_back(column);
       panel.columns.push_back(static_cast<int>(data.size()));  // gnuplot counts from 1
+    }
+    if (panel.dashed_suffix.empty()) continue;
+    for (int column : ColumnsEndingIn(table, panel.dashed_suffix)) {
+      data.push_back(column);
+      panel.dashed.push_back(static_cast<int>(data.size()));
     }
   }
   if (panels[0].columns.empty()) {
@@ -76,6 +83,12 @@ std::string NetworkPlotScript(const CsvTable& table, const PlotOptions& options)
       const std::string label = name.substr(0, name.size() - panel.suffix.size());
       s << (i ? ", \\\n  " : "") << "$network using 1:" << column << " with lines lw 2 title "
         << GnuplotString(label, "column " + Printable(name));
+    }
+    for (const int column : panel.dashed) {
+      const std::string& name = table.header[static_cast<std::size_t>(data[column - 1])];
+      const std::string label = name.substr(0, name.size() - panel.dashed_suffix.size());
+      s << ", \\\n  $network using 1:" << column << " with lines lw 1 dt 2 title "
+        << GnuplotString(label + " excitation", "column " + Printable(name));
     }
     s << "\n";
   }

@@ -71,6 +71,9 @@ std::string TrajectoryPlotScript(const CsvTable& table, const PlotOptions& optio
   std::vector<int> columns;
   for (std::size_t i = 0; i + 1 < needed.size(); ++i) columns.push_back(table.Find(needed[i]));
   const int phase = table.Find("phase");
+  // a scenario with activation dynamics has its excitation too: the inline data's column 9
+  const bool excitation = table.Find("excitation") >= 0;
+  if (excitation) columns.push_back(table.Find("excitation"));
 
   std::ostringstream s;
   s << kFrame;
@@ -112,7 +115,10 @@ std::string TrajectoryPlotScript(const CsvTable& table, const PlotOptions& optio
     << "set ylabel 'shortening velocity [m/s]'\n"
     << "plot $trajectory using 1:3 with lines lw 2 lc rgb '#08519c' title 'shortening velocity'\n"
     << "set ylabel 'activation [-]'\nset yrange [-0.05:1.05]\n"
-    << "plot $trajectory using 1:4 with lines lw 2 lc rgb '#54278f' title 'activation'\n"
+    << "plot $trajectory using 1:4 with lines lw 2 lc rgb '#54278f' title 'activation'"
+    << (excitation ? ", \\\n  $trajectory using 1:9 with lines lw 1 dt 2 lc rgb '#9e9ac8' "
+                     "title 'excitation'\n"
+                   : "\n")
     << "set autoscale y\nset format x '%g'\nset xlabel 'time [s]'\nset ylabel 'tension [N]'\n"
     << "plot $trajectory using 1:5 with lines lw 2 lc rgb '#31a354' title 'passive', \\\n"
     << "  $trajectory using 1:6 with lines lw 2 lc rgb '#de2d26' title 'active', \\\n"

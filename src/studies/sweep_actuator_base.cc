@@ -2,6 +2,7 @@
 // the actuator, whose samples are the run's own trajectory.
 #include <optional>
 
+#include "musclesim/io/run_scenario.h"
 #include "musclesim/io/scenario.h"
 #include "musclesim/io/trajectory_csv.h"
 #include "studies/sweep_base.h"
@@ -35,14 +36,14 @@ class ActuatorSweepBase final : public SweepBase {
   RunStats Run(Simulation& simulation) override {
     trajectory_.clear();
     const ScenarioSpec& s = *scenario_;
-    const ActuatorSystem system(s.model.params, s.actuator, s.activation, s.loads);
-    return simulation.Run(system, s.solver, s.Request(), trajectory_);
+    return simulation.Run(BuildSystem(s), s.solver, s.Request(), trajectory_);
   }
 
   const std::vector<TrajectoryPoint>& trajectory() const override { return trajectory_; }
 
   std::string TrajectoryCsv() const override {
-    return FormatTrajectoryCsv(trajectory_, scenario_->PhaseTolerance());
+    return FormatTrajectoryCsv(trajectory_, scenario_->PhaseTolerance(),
+                               scenario_->excitation.has_value());
   }
 
  private:

@@ -1,7 +1,12 @@
-// A network on a line (docs/model.md section 7) as a first-order system: the state is
-// (x_i, xdot_i) of every free node, in the order the nodes are given, interleaved, so a
-// chain given in order has a banded Jacobian. Immutable once built; evaluation allocates
-// nothing, so one system may be integrated on many threads.
+// A network on a line (docs/model.md section 7) as a first-order system. The state is
+//   y = (x_1, xdot_1, x_2, xdot_2, ..., u_1, u_2, ...):
+// (x_i, xdot_i) of every free node, in the order the nodes are given, interleaved, so a chain
+// given in order has a banded Jacobian; then the activation u_k of every actuator with
+// activation dynamics (docs/model.md section 8), in the order the elements are given, at the
+// end, so that a network without them has exactly the node states. (An activation column
+// couples its actuator's nodes to the end of the state: such a network's Jacobian is not
+// banded, and `auto` gives it the dense or the sparse solver.) Immutable once built;
+// evaluation allocates nothing, so one system may be integrated on many threads.
 #pragma once
 
 #include <string_view>
@@ -17,7 +22,10 @@ struct ElementSample {
   double length = 0.0;            // l = x_to - x_from [m]
   double lengthening_rate = 0.0;  // dl/dt [m/s]
   double tension = 0.0;           // T [N]
-  double activation = 0.0;        // actuator: u(t) [-]; other kinds 0
+  double activation = 0.0;        // actuator: u [-], the state's with activation dynamics,
+                                  // else u(t); other kinds 0
+  double excitation = 0.0;        // actuator with activation dynamics: e(t) [-]; an actuator
+                                  // without them: u(t) (e = u); other kinds 0
   TensionSample parts;            // actuator: T split into parts, with derivatives
 };
 
@@ -38,9 +46,16 @@ class NetworkSystem {
   NetworkSystem(std::vector<Node> nodes, std::vector<Element> elements,
                 std::vector<NodeLoad> loads = {});
 
-  int state_size() const { return 2 * static_cast<int>(free_nodes_.size()); }
-  // y at the start: every free node's position and velocity.
-  void InitialState(double* y) const;
+  int state_size() const {
+    return 2 * static_cast<int>(free_nodes_.size()) + static_cast<int>(activations_.size());
+  }
+  // How many actuators have activation dynamics: the last this many states are theirs.
+  int activation_count() const { return static_cast<int>(activations_.size()); }
+  // y at a run's start t_start [s]: every free node's position and velocity, every
+  // activation state at its initial_activation (by default its excitation at t_start).
+  void InitialState(double t_start, double* y) const;
+  // The same at t_start = 0.
+  void InitialState(double* y) const { InitialState(0.0, y); }
   // Throws ParameterError("elements[i]", ...) unless every element is longer than zero at
   // (t, y).
   void CheckLengths(double t, const double* y) const;
@@ -57,9 +72,10 @@ class NetworkSystem {
   // Where an element's tension has a kink, as the zero of a scalar function of (t, y): the
   // integrator restarts there. kLength: the length at `level` (an actuator's passive slack
   // length, a tendon's slack length); kLengtheningRate: dl/dt at `level` (an actuator whose
-  // tension-velocity slopes differ at v = 0).
+  // tension-velocity slopes differ at v = 0); kExcitation: an actuator's activation state at
+  // its excitation, e(t) - u (`level` unused), where d(udot)/du jumps (docs/model.md 8).
   struct Kink {
-    enum Kind { kLength, kLengtheningRate };
+    enum Kind { kLength, kLengtheningRate, kExcitation };
     Kind kind;
     int element;
     double level;  // [m] or [m/s]
@@ -67,7 +83,8 @@ class NetworkSystem {
   // The kink's function at (t, y): its sign changes where the kink is crossed.
   double KinkValue(const Kink& kink, double t, const double* y) const;
   const std::vector<Kink>& kinks() const { return kinks_; }
-  // Where the inputs jump (activations, force loads, prescribed motions): sorted, in (t0, t1).
+  // Where the inputs jump (activations, excitations, force loads, prescribed motions):
+  // sorted, in (t0, t1).
   std::vector<double> Breakpoints(double t0, double t1) const;
 
   void Observe(double t, const double* y, NetworkSample& sample) const;
@@ -79,6 +96,9 @@ class NetworkSystem {
   int FindElement(std::string_view name) const;  // -1 if none
   // The state index of a node's position (its velocity follows), -1 unless free.
   int StateIndex(int node) const { return ends_[node].state; }
+  // The state index of an element's activation, -1 unless it is an actuator with activation
+  // dynamics.
+  int ActivationStateIndex(int element) const { return links_[element].activation; }
 
  private:
   // A node as the right-hand side sees it.
@@ -92,6 +112,14 @@ class NetworkSystem {
   struct Link {
     int from, to;              // node indices
     int slot[2][4];            // entry of (row: accel from/to, column: x_from, v_from, x_to, v_to); -1 if none
+    int activation;            // actuator with activation dynamics: index of u in y; else -1
+    int slot_activation[2];    // entry of (row: accel from/to, column: u); -1 if none
+  };
+  // An activation state (docs/model.md section 8).
+  struct Activation {
+    int element;         // index in elements_
+    int state;           // index of u in y
+    int slot;            // entry (u row, u column): d(udot)/du
   };
   struct FreeNode {
     int node;            // index in nodes_
@@ -103,11 +131,12 @@ class NetworkSystem {
 
   double PositionOf(const End& end, double t, const double* y) const;
   double VelocityOf(const End& end, double t, const double* y) const;
-  // T, dT/dl and dT/d(dl/dt) of element e at length l and lengthening rate ldot.
+  // T, dT/dl, dT/d(dl/dt) and dT/du of element e at length l and lengthening rate ldot (an
+  // actuator's u read from y when it is a state, else its waveform's at t).
   struct Tension {
-    double value, by_length, by_rate;
+    double value, by_length, by_rate, by_activation;
   };
-  Tension TensionOf(int e, double t, double l, double ldot) const;
+  Tension TensionOf(int e, double t, double l, double ldot, const double* y) const;
   void Resolve();
   void BuildPattern();
 
@@ -117,6 +146,7 @@ class NetworkSystem {
   std::vector<End> ends_;
   std::vector<Link> links_;
   std::vector<FreeNode> free_nodes_;
+  std::vector<Activation> activations_;  // in element order, their states after the nodes'
   std::vector<int> row_scale_;  // per Jacobian entry: the free node whose 1/m scales it, or -1
   std::vector<Kink> kinks_;
   JacobianPattern pattern_;

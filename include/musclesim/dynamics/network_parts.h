@@ -4,9 +4,11 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
+#include "musclesim/dynamics/activation_dynamics.h"
 #include "musclesim/dynamics/loads.h"
 #include "musclesim/dynamics/waveform.h"
 #include "musclesim/model/tension.h"
@@ -42,7 +44,9 @@ ElementKind ParseElementKind(std::string_view text);  // ParameterError("type")
 
 // A two-node element: length l = x_to - x_from, a tension T pulling its nodes together
 // (+T on `from`, -T on `to`). Only the fields of its kind are used:
-//   actuator: T(l, v, u) of the model, v = -dl/dt, u = activation(t)
+//   actuator: T(l, v, u) of the model, v = -dl/dt, u = activation(t); or, with activation
+//             dynamics (`excitation` set, docs/model.md section 8), u a state of the ODE
+//             driven by excitation->signal, and `activation` unused
 //   spring:   T = stiffness (l - rest_length), negative when compressed
 //   tendon:   T = stiffness (l - slack_length) above slack_length, else 0 (linear), or
 //             T = k (exp(alpha (l - slack_length)) - 1) above it (exponential: k > 0)
@@ -53,6 +57,7 @@ struct Element {
   std::string from, to;                       // node names
   std::shared_ptr<const TensionModel> model;  // actuator: its tension model
   Waveform activation;                        // actuator: u(t) in [0, 1]
+  std::optional<ExcitationInput> excitation;  // actuator: set for activation dynamics
   double stiffness = 0.0;     // spring, linear tendon [N/m], >= 0
   double rest_length = 0.0;   // spring [m]
   double slack_length = 0.0;  // tendon [m]
@@ -62,6 +67,9 @@ struct Element {
 
   static Element Actuator(std::string name, std::string from, std::string to,
                           std::shared_ptr<const TensionModel> model, Waveform activation);
+  // An actuator with activation dynamics: its activation is a state driven by `excitation`.
+  static Element Actuator(std::string name, std::string from, std::string to,
+                          std::shared_ptr<const TensionModel> model, ExcitationInput excitation);
   static Element Spring(std::string name, std::string from, std::string to, double stiffness,
                         double rest_length);
   static Element LinearTendon(std::string name, std::string from, std::string to,
@@ -73,7 +81,8 @@ struct Element {
   bool exponential() const { return kind == ElementKind::kTendon && k > 0.0; }
 };
 
-// Throws ParameterError (paths as the YAML keys of an element: "stiffness", "activation.to").
+// Throws ParameterError (paths as the YAML keys of an element: "stiffness", "activation.to",
+// "excitation.high", "activation_dynamics.tau_activation", "initial_activation").
 void Validate(const Element& element);
 
 // A load (dynamics/loads.h) on a free node.

@@ -77,5 +77,7 @@ void SortUnique(std::vector<double>& times);
 // An activation must stay within [0, 1] at every point of its waveform (sine: offset -+
 // |amplitude|). Throws ParameterError naming the offending key.
 void ValidateActivation(const Waveform& waveform);
+// The same for an excitation (docs/model.md section 8), its rule naming the excitation.
+void ValidateExcitation(const Waveform& waveform);
 
 }  // namespace musclesim

@@ -7,6 +7,8 @@
 
 #include <string>
 
+#include "musclesim/dynamics/activation_dynamics.h"  // the time constants' bounds
+
 namespace musclesim {
 
 // The numbers a value may take, with its unit and the reason for the bounds: messages print
@@ -79,6 +81,15 @@ inline constexpr InputRange kDampingRange{
 // Gravity [m/s^2] of a hanging mass.
 inline constexpr InputRange kGravityRange{
     -1e3, 1e3, "m/s^2", "about 100 g, beyond any rig; m g stays finite"};
+
+// Activation dynamics (docs/model.md section 8): the time constants [s] and an initial
+// activation [-].
+inline constexpr InputRange kActivationTimeConstantRange{
+    kMinActivationTimeConstant, kMaxActivationTimeConstant, "s",
+    "muscles take 5 to 60 ms; below 0.1 ms the lag is in effect instantaneous (give activation "
+    "instead) and only makes the run stiff, and 10 s is slower than any muscle-like actuator"};
+inline constexpr InputRange kActivationRange{
+    0.0, 1.0, "-", "an activation is a fraction of the full activation"};
 
 // Frequency of a sine [Hz].
 inline constexpr InputRange kFrequencyRange{

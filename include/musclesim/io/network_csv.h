@@ -4,7 +4,8 @@
 //   for every node, in node order:        <node>.position, <node>.velocity
 //   for every element, in element order:  <element>.length, <element>.tension, and for an
 //                                         actuator right after them <name>.shortening_velocity,
-//                                         <name>.activation, <name>.tension_passive,
+//                                         <name>.activation, <name>.excitation (only with
+//                                         activation dynamics), <name>.tension_passive,
 //                                         <name>.tension_active, <name>.phase
 //   for every free node, in node order:   <node>.load (the sum of the loads on it)
 // Numbers have 17 significant digits and `phase` is classified as the single actuator's CSV
@@ -39,6 +40,7 @@ class NetworkCsvFormat {
  private:
   std::string header_;
   std::vector<double> phase_tolerance_;  // per element [m/s]; negative: not an actuator
+  std::vector<bool> excitation_;         // per element: an excitation column
   std::vector<int> free_nodes_;          // node indices, in node order
 };
 

@@ -27,7 +27,11 @@ struct ScenarioSpec {
   ActuatorParams actuator;                // units as in ActuatorParams
   double initial_length = 0.0;            // x(t_start) [m], > 0
   double initial_lengthening_rate = 0.0;  // dx/dt at t_start [m/s]
-  Waveform activation;                    // u(t) [-], within [0, 1]
+  Waveform activation;                    // u(t) [-], within [0, 1]; unused with excitation
+  // activation dynamics (docs/model.md section 8): the activation is a state driven by this
+  // excitation, the top-level keys `excitation` and `activation_dynamics` and
+  // `initial.activation`; nullopt when the file gives `activation`
+  std::optional<ExcitationInput> excitation;
   std::vector<Load> loads;                // units as in Load
   double t_start = 0.0, t_end = 1.0;      // the simulated interval [s], t_end > t_start
   SolverOptions solver;                   // units as in SolverOptions

@@ -21,24 +21,32 @@ inline Phase ClassifyPhase(double shortening_velocity, double tolerance) {
   return Phase::kIsometric;
 }
 
-// The header line of every trajectory CSV.
+// The header line of every trajectory CSV of a scenario giving `activation`.
 inline constexpr std::string_view kTrajectoryHeader =
     "t,length,shortening_velocity,activation,tension_passive,tension_active,tension_total,"
     "load,phase";
+// The header of one giving `excitation` (activation dynamics, docs/model.md section 8): the
+// same with the column `excitation` right after `activation`.
+inline constexpr std::string_view kTrajectoryHeaderWithExcitation =
+    "t,length,shortening_velocity,activation,excitation,tension_passive,tension_active,"
+    "tension_total,load,phase";
 
-// Header and one row per point, numbers with 17 significant digits.
+// Header and one row per point, numbers with 17 significant digits; `with_excitation` adds
+// the excitation column (a scenario with activation dynamics).
 std::string FormatTrajectoryCsv(const std::vector<TrajectoryPoint>& trajectory,
-                                double phase_tolerance);
+                                double phase_tolerance, bool with_excitation = false);
 
 // Appends one CSV row (with its newline) for `point` to `csv`.
-void AppendTrajectoryRow(std::string& csv, const TrajectoryPoint& point, double phase_tolerance);
+void AppendTrajectoryRow(std::string& csv, const TrajectoryPoint& point, double phase_tolerance,
+                         bool with_excitation = false);
 
 // Streams a run's CSV into `output` as the simulation records it: the header at once, rows
 // in blocks of about 64 KiB, so that memory does not grow with the run's length. Keeps the
 // count of rows and the last point. Flush() before committing the output.
 class TrajectoryCsvWriter final : public TrajectorySink {
  public:
-  TrajectoryCsvWriter(StreamedOutput& output, double phase_tolerance);
+  TrajectoryCsvWriter(StreamedOutput& output, double phase_tolerance,
+                      bool with_excitation = false);
   void Record(const TrajectoryPoint& point) override;
   void Flush();
 
@@ -48,6 +56,7 @@ class TrajectoryCsvWriter final : public TrajectorySink {
  private:
   StreamedOutput& output_;
   double phase_tolerance_;  // [m/s]
+  bool with_excitation_;    // the excitation column
   std::string buffer_;
   long rows_ = 0;
   TrajectoryPoint last_{};

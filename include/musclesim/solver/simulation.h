@@ -6,7 +6,8 @@
 // the CVODE memory through CVodeReInit. Every breakpoint of the inputs is a CVODE stop
 // time, followed by a re-initialisation, so no step straddles a jump. Root functions stop
 // the run at the user's length limits and at zero length, and restart the integrator where
-// an element's length crosses a kink (a passive or tendon slack length, where dT/dl jumps).
+// an element's length crosses a kink (a passive or tendon slack length, where dT/dl jumps)
+// and where an activation state meets its excitation (docs/model.md section 8).
 #pragma once
 
 #include <memory>
@@ -120,7 +121,9 @@ struct NetworkRunRequest {
   double t_end = 1.0;              // [s], finite, > t_start
   double output_interval = 1e-3;   // [s], > 0, at most 1e8 rows; 0 records every internal step
   std::vector<LengthLimit> limits;
-  std::vector<double> initial_state;  // y(t_start); empty: the nodes' own positions and velocities
+  std::vector<double> initial_state;  // y(t_start) in NetworkSystem's state order; empty: the
+                                      // nodes' own positions and velocities and the
+                                      // activations' initial values (NetworkSystem::InitialState)
 };
 
 // Throws ParameterError ("t_end", "output_interval", ...); the limits are checked against
