@@ -1,6 +1,6 @@
 // Activation dynamics (docs/model.md section 8): an actuator given an excitation e(t) instead
 // of an activation has the activation u as a state of the ODE, following the first-order lag
-// of the Thelen 2003 and Millard 2012 muscles,
+// of the Thelen (2003) and Millard et al. (2013) muscles,
 //   udot = (e - u) / tau(e, u),
 //   tau  = tau_act (0.5 + 1.5 u)  if e > u,   tau_deact / (0.5 + 1.5 u)  otherwise.
 // u stays in [0, 1] when e does. udot is continuous at e = u, where its slope in u jumps:
