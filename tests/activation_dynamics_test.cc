@@ -19,11 +19,13 @@
 #include <vector>
 
 #include "musclesim/errors.h"
+#include "musclesim/io/csv_table.h"
 #include "musclesim/io/network_csv.h"
 #include "musclesim/io/network_scenario.h"
 #include "musclesim/io/run_scenario.h"
 #include "musclesim/io/trajectory_csv.h"
 #include "musclesim/solver/simulation.h"
+#include "musclesim/studies/plot.h"
 #include "musclesim/studies/sweep.h"
 #include "support/canonical_actuator.h"
 #include "support/scenario_files.h"
@@ -502,6 +504,24 @@ TEST(ActivationDynamics, SingleActuatorCsvHasTheExcitationRightAfterTheActivatio
   EXPECT_EQ(std::string(kTrajectoryHeaderWithExcitation),
             "t,length,shortening_velocity,activation,excitation,tension_passive,tension_active,"
             "tension_total,load,phase");
+}
+
+TEST(ActivationDynamics, PlotsDrawTheExcitationDashedBesideTheActivation) {
+  PlotOptions options;
+  options.output = "x.png";
+  TrajectoryPoint point{0.0, {}};
+  point.sample.excitation = 1.0;
+  const std::string single = testing::WriteTempFile(
+      "single.csv", FormatTrajectoryCsv({point, {0.1, point.sample}}, 1e-3, true));
+  const std::string script = TrajectoryPlotScript(ReadCsv(single), options);
+  EXPECT_THAT(script, HasSubstr("$trajectory using 1:9 with lines lw 1 dt 2"));
+  EXPECT_THAT(script, HasSubstr("title 'excitation'"));
+  EXPECT_THAT(script, HasSubstr("\n0 0 0 0 0 0 0 0 1\n"));  // its inline column 9
+
+  const std::string network = testing::WriteTempFile(
+      "network.csv", "t,load.position,m.activation,m.excitation\n0,0.1,0.2,1\n0.1,0.1,0.3,1\n");
+  EXPECT_THAT(NetworkPlotScript(ReadCsv(network), options),
+              HasSubstr("$network using 1:4 with lines lw 1 dt 2 title 'm excitation'"));
 }
 
 // ---- overrides and sweeps reach the new keys ----------------------------------------------------

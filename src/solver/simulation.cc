@@ -169,9 +169,9 @@ int RightHandSide(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
     return std::isfinite(rate[1]) ? 0 : 1;
   }
   cb->system->RightHandSide(t, N_VGetArrayPointer(y), rate);
-  // a non-finite value is a recoverable error: CVODE retries with a smaller step. The
-  // velocities' rates are their states (already checked by CVODE's error test); the
-  // accelerations and the activation rates after them are computed
+  // a non-finite value is a recoverable error: CVODE retries with a smaller step. A
+  // position's rate is a velocity of the state itself; the accelerations (odd entries) and
+  // the activation rates after the nodes' states are computed
   const sunindextype n = N_VGetLength(ydot);
   const sunindextype node_states = n - cb->system->activation_count();
   for (sunindextype i = 1; i < node_states; i += 2) {
@@ -439,7 +439,8 @@ RunStats Simulation::Run(const ActuatorSystem& system, const SolverOptions& opti
   }
   network_request.initial_state = {request.length, request.lengthening_rate};
   if (system.excitation()) {
-    network_request.initial_state.push_back(system.excitation()->InitialActivation(request.t_start));
+    const double u0 = system.excitation()->InitialActivation(request.t_start);
+    network_request.initial_state.push_back(u0);
   }
   ActuatorView view(system, sink);
   // the actuator's own right-hand side knows no activation state

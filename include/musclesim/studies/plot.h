@@ -37,16 +37,16 @@ void Validate(const PlotOptions& options);
 
 // A trajectory CSV of `musclesim run`: length, shortening velocity, activation (with the
 // excitation dashed, when the CSV has that column) and the tensions (with the load) against
-// time in stacked panels sharing the time axis, with the
-// concentric, eccentric and isometric intervals shaded; the title defaults to the file's
-// name. Throws InputError naming missing columns, a table without rows, or the row and column
+// time in stacked panels sharing the time axis, with the concentric, eccentric and isometric
+// intervals shaded; the title defaults to the file's name. Throws InputError naming missing columns, a table without rows, or the row and column
 // of a cell that is not a finite number.
 std::string TrajectoryPlotScript(const CsvTable& trajectory, const PlotOptions& options);
 
 // A network's trajectory CSV of `musclesim run` (columns <node>.position, <element>.length,
 // <element>.tension, <actuator>.activation): one panel per quantity kind (node positions,
-// element lengths, tensions, activations when there are actuators, with any <actuator>.excitation
-// dashed beside them), one line per node or element, sharing the time axis. Throws InputError as TrajectoryPlotScript does.
+// element lengths, tensions, activations when there are actuators, with any
+// <actuator>.excitation dashed beside them), one line per node or element, sharing the time
+// axis. Throws InputError as TrajectoryPlotScript does.
 std::string NetworkPlotScript(const CsvTable& trajectory, const PlotOptions& options);
 
 // Whether `table` is a network's trajectory (it has a <node>.position column).
