@@ -224,6 +224,12 @@ TEST(SlackLengthInterval, MatchesABruteForceProfileOnTheShippedData) {
   EXPECT_TRUE(fit.slack_length_interval.wide);  // ~14 mm against a 70 mm span
   EXPECT_EQ(fit.slack_length_interval.level, 0.95);
   ExpectIntervalOfBruteForceProfile(data, fit);
+  // README: the truth, 0.105 m, is rejected with "p = 0.015": the F statistic's two-sided
+  // t(26) tail, by brute force and quadrature
+  const double least = BruteForceMinimum(data, BruteForceScan(data));
+  const double f = (BruteForceRss(data, kSlack) - least) / (least / 26);
+  const double p = 1.0 - CentralProbabilityByQuadrature(std::sqrt(f), 26);
+  EXPECT_NEAR(p, 0.015, 0.0005) << p;  // as printed
 }
 
 TEST(SlackLengthInterval, UnboundedBelowWhenTheNoiseHidesTheToe) {
@@ -280,6 +286,10 @@ TEST(SlackLengthInterval, CoversTheTruthAtItsLevel) {
   }
   EXPECT_GE(covered, 180);
   EXPECT_LE(covered, 198);
+  // README "Identification" quotes these three counts
+  EXPECT_EQ(covered, 195);
+  EXPECT_EQ(unbounded_below, 185);
+  EXPECT_EQ(by_standard_error, 130);
   // the estimate +- t(26) standard errors, what the profile interval replaces, covers far
   // less often (65% here)
   EXPECT_LT(by_standard_error, 180);
