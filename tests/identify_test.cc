@@ -47,7 +47,7 @@ TEST(IdentifyPassive, RecoversExactDataToNearMachinePrecision) {
   const PassiveIdentification fit = IdentifyPassive(PassiveData(0.0, 1));
   // exact data are matched to rounding (1e-13 relative, 1e-15 m and an RMSE of 4e-14 N
   // here); 1e-8 relative, 1e-10 m and 1e-9 N (tensions up to 260 N) leave room for the
-  // stopping rules of Levenberg-Marquardt and of the golden section on the slack length
+  // stopping rules of Levenberg-Marquardt and of Brent's method on the slack length
   EXPECT_NEAR(fit.k_p.value, kKp, 1e-8 * kKp);
   EXPECT_NEAR(fit.alpha.value, kAlpha, 1e-8 * kAlpha);
   EXPECT_NEAR(fit.slack_length.value, kSlack, 1e-10);
