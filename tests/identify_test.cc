@@ -47,7 +47,7 @@ TEST(IdentifyPassive, RecoversExactDataToNearMachinePrecision) {
   const PassiveIdentification fit = IdentifyPassive(PassiveData(0.0, 1));
   // exact data are matched to rounding (1e-13 relative, 1e-15 m and an RMSE of 4e-14 N
   // here); 1e-8 relative, 1e-10 m and 1e-9 N (tensions up to 260 N) leave room for the
-  // stopping rules of Levenberg-Marquardt and of the golden section on the slack length
+  // stopping rules of Levenberg-Marquardt and of Brent's method on the slack length
   EXPECT_NEAR(fit.k_p.value, kKp, 1e-8 * kKp);
   EXPECT_NEAR(fit.alpha.value, kAlpha, 1e-8 * kAlpha);
   EXPECT_NEAR(fit.slack_length.value, kSlack, 1e-10);
@@ -304,6 +304,45 @@ TEST(IdentifyReport, ReadmeTableSyntheticPassive) {
                {"polynomial, degree 3", "7.842", "10.42", "-117.3", "609.5", false, false},
                {"polynomial, degree 4", "4.174", "4.955", "5.312", "848.6", true, false}},
               data);
+}
+
+// `value` is `printed` rounded to the decimals printed (with 1e-9 of slack for the decimal
+// conversion): the README's prose quotes numbers to fewer digits than its tables.
+void ExpectRounded(double value, const std::string& printed, const std::string& what) {
+  const std::size_t point = printed.find('.');
+  const int decimals = point == std::string::npos ? 0 : static_cast<int>(printed.size() - point - 1);
+  EXPECT_NEAR(value, std::stod(printed), 0.5 * std::pow(10.0, -decimals) * (1.0 + 1e-9))
+      << what << " printed " << printed;
+}
+
+// README "What this shows", synthetic passive data: the numbers quoted from the report's notes
+// and docs/identify_synthetic.yaml, as printed there
+TEST(IdentifyReport, ReadmeSlackLengthSyntheticPassive) {
+  const auto data = ShippedData("synthetic_passive.csv", "length");
+  const PassiveIdentification fit = IdentifyPassive(data);
+  const ProfileInterval& in = fit.slack_length_interval;
+  ASSERT_TRUE(in.low_bounded && in.high_bounded);
+  EXPECT_TRUE(in.wide);
+  ExpectRounded(in.low, "0.1109", "interval low");
+  ExpectRounded(in.high, "0.1249", "interval high");
+  EXPECT_GT(in.low, 0.105);  // "misses the truth"
+  // the notes (4 digits), and "What this shows" (fewer)
+  ExpectRounded(fit.k_p_over_interval.low, "1.798", "k_p low");
+  ExpectRounded(fit.k_p_over_interval.low, "1.8", "k_p low");
+  ExpectRounded(fit.k_p_over_interval.high, "10.1", "k_p high");
+  ExpectRounded(fit.alpha_over_interval.low, "91.67", "alpha low");
+  ExpectRounded(fit.alpha_over_interval.low, "91.7", "alpha low");
+  ExpectRounded(fit.alpha_over_interval.high, "100.2", "alpha high");
+  ExpectRounded(fit.slack_length.value, "0.12", "slack length");
+  ExpectRounded(fit.slack_length.standard_error, "0.0035", "its standard error");
+  ExpectRounded((fit.slack_length.value - 0.105) / fit.slack_length.standard_error, "4.3",
+                "standard errors from the truth");
+  ExpectRounded(fit.k_p.value, "5.35", "k_p");
+  ExpectRounded(fit.k_p.standard_error, "2.37", "its standard error");
+  ExpectRounded(fit.rmse, "3.75", "RMSE");
+  // "the true tension stays under 11.2 N up to 0.13 m"; the noise, 2% of the largest
+  EXPECT_LT(std::expm1(100.0 * (0.13 - 0.105)), 11.2);
+  ExpectRounded(0.02 * std::expm1(100.0 * (0.16 - 0.105)), "4.9", "noise");
 }
 
 TEST(IdentifyReport, ReadmeTableSyntheticActive) {

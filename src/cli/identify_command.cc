@@ -1,5 +1,6 @@
 // musclesim identify DATA.yaml [-o MODEL.yaml] [--report PATH]
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 
 #include "cli/arguments.h"
@@ -19,7 +20,9 @@ namespace {
 constexpr const char* kHelp = R"(usage: musclesim identify DATA.yaml [-o MODEL.yaml] [--report PATH]
 
 Fits the model's parameters to measured curves and prints a complete `model:` block, each
-parameter with its standard error and each curve's RMSE in comments. DATA.yaml holds any of:
+parameter with its standard error and each curve's RMSE in comments, and the slack length's
+95% profile-likelihood interval with the range of k_p and alpha across it (the slack length
+can be weakly determined: see the README). DATA.yaml holds any of:
   passive:  {csv: passive.csv}                                columns length,tension
   active:   {csv: active.csv, count: 3, nonnegative: true}    columns length,tension
   velocity: {csv: velocity.csv, f_iso: 100}                   columns shortening_velocity,tension
@@ -27,7 +30,7 @@ parameter with its standard error and each curve's RMSE in comments. DATA.yaml h
   -o PATH         write the model block there (atomically) instead of standard output
   --report PATH   also write a Markdown report comparing each fit with a natural cubic spline
                   and polynomials of degree 3 and 4 (RMSE, leave-one-out RMSE, behaviour outside
-                  the data, ns per evaluation)
+                  the data, ns per evaluation), and the passive notes of the model block
 Exit codes: 0 success, 2 invalid input or data, 1 anything else.
 )";
 
@@ -62,6 +65,9 @@ ModelYamlDraft DraftModel(const IdentifySpec& spec,
                               PlusMinus(passive->alpha) + " 1/m, slack_length = " +
                               PlusMinus(passive->slack_length) + " m; RMSE " +
                               FormatNumber(passive->rmse) + " N"};
+    for (const std::string& note : PassiveUncertaintyNotes(*passive, FormatNumber)) {
+      draft.passive.comments.push_back(note);
+    }
   } else {
     draft.passive.comments = {"not identified: no passive tension"};
   }
@@ -139,6 +145,11 @@ int IdentifyCommand(int argc, char** argv) {
         return std::function<double(double)>([fit](double x) { return fit.Evaluate(x); });
       }});
       comparisons.push_back(Compare("passive tension-length", "length units of the CSV", data, models));
+      comparisons.back().notes = PassiveUncertaintyNotes(*passive, [](double x) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.4g", x);
+        return std::string(text);
+      });
     }
   }
   if (spec.active_csv) {

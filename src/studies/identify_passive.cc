@@ -1,5 +1,6 @@
 // Passive identification: the model's T_p (eq. 1) by profile likelihood in the slack length,
-// then Levenberg-Marquardt on all three parameters.
+// then Levenberg-Marquardt on all three parameters, and the slack length's interval from the
+// same profile.
 #include "musclesim/studies/identify.h"
 
 #include <unsupported/Eigen/LevenbergMarquardt>
@@ -8,26 +9,30 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
-#include "musclesim/errors.h"
 #include "musclesim/model/passive.h"
+#include "studies/brent_minimum.h"
 #include "studies/identify_fit_statistics.h"
+#include "studies/identify_passive_profile.h"
+#include "studies/identify_slack_interval.h"
 
 namespace musclesim {
 
 using identify_detail::Covariance;
+using identify_detail::PassiveProfile;
+using identify_detail::ProfilePoint;
 using identify_detail::Rmse;
 
 namespace {
 
-// Parameters (ln k, ln alpha) with x0 fixed, or (ln k, ln alpha, x0): logs keep k, alpha > 0.
+// Parameters (ln k, ln alpha, x0): logs keep k, alpha > 0.
 struct PassiveResiduals : Eigen::DenseFunctor<double> {
-  PassiveResiduals(const std::vector<DataPoint>& d, std::optional<double> slack)
-      : Eigen::DenseFunctor<double>(slack ? 2 : 3, static_cast<int>(d.size())), data(d),
-        fixed_slack(slack) {}
+  explicit PassiveResiduals(const std::vector<DataPoint>& d)
+      : Eigen::DenseFunctor<double>(3, static_cast<int>(d.size())), data(d) {}
 
-  PassiveParams Params(const Eigen::VectorXd& p) const {
-    return {std::exp(p(0)), std::exp(p(1)), fixed_slack ? *fixed_slack : p(2)};
+  static PassiveParams Params(const Eigen::VectorXd& p) {
+    return {std::exp(p(0)), std::exp(p(1)), p(2)};
   }
 
   int operator()(const Eigen::VectorXd& p, Eigen::VectorXd& r) const {
@@ -47,13 +52,12 @@ struct PassiveResiduals : Eigen::DenseFunctor<double> {
       const CurvePoint t = PassiveTension(params, data[i].x);
       j(row, 0) = t.value;
       j(row, 1) = (data[i].x - params.slack_length) * t.slope;
-      if (!fixed_slack) j(row, 2) = -t.slope;
+      j(row, 2) = -t.slope;
     }
     return 0;
   }
 
   const std::vector<DataPoint>& data;
-  std::optional<double> fixed_slack;
 };
 
 double Minimise(PassiveResiduals& residuals, Eigen::VectorXd& p) {
@@ -67,28 +71,25 @@ double Minimise(PassiveResiduals& residuals, Eigen::VectorXd& p) {
   return std::isfinite(r.squaredNorm()) ? r.squaredNorm() : std::numeric_limits<double>::infinity();
 }
 
-// (ln k, ln alpha) to start from for a slack length x0: a log-linear fit of the larger
-// tensions, where T ~ k exp(alpha (x - x0)).
-Eigen::VectorXd PassiveStart(const std::vector<DataPoint>& data, double x0, double span) {
-  double top = 0.0;
-  for (const DataPoint& d : data) top = std::max(top, d.y);
-  double su = 0, sl = 0, suu = 0, sul = 0, n = 0;
-  for (const DataPoint& d : data) {
-    if (d.x <= x0 || d.y <= 0.05 * top) continue;
-    const double u = d.x - x0, l = std::log(d.y);
-    su += u; sl += l; suu += u * u; sul += u * l; n += 1;
-  }
-  double alpha = 3.0 / span, log_k = std::log(std::max(top, 1e-300)) - 3.0;
-  if (n >= 2 && n * suu - su * su > 0) {
-    const double slope = (n * sul - su * sl) / (n * suu - su * su);
-    if (slope > 0) {
-      alpha = slope;
-      log_k = (sl - slope * su) / n;
+// The best scanned slack length no further than one data span below the data (below that
+// the curve is all but a pure exponential, whatever x0: such data leave the slack length
+// undetermined, which the interval says), refined between its scanned neighbours.
+ProfilePoint ProfileMinimum(const PassiveProfile& profile, const std::vector<ProfilePoint>& scan,
+                            double lowest) {
+  std::size_t best = scan.size();
+  for (std::size_t i = 0; i < scan.size(); ++i) {
+    if (scan[i].slack_length >= lowest && (best == scan.size() || scan[i].rss < scan[best].rss)) {
+      best = i;
     }
   }
-  Eigen::VectorXd p(2);
-  p << log_k, std::log(alpha);
-  return p;
+  // the scan always reaches a quarter spacing below the first data point
+  const double below = best > 0 && std::isfinite(scan[best - 1].slack_length)
+                           ? scan[best - 1].slack_length : scan[best].slack_length;
+  const double above = best + 1 < scan.size() ? scan[best + 1].slack_length : scan[best].slack_length;
+  // to 1e-12 of the bracket: the joint fit that follows polishes the rest
+  const auto [x0, rss] = identify_detail::BrentMinimum(
+      [&](double x) { return profile.At(x).rss; }, below, above, 1e-12 * (above - below));
+  return rss < scan[best].rss ? profile.At(x0) : scan[best];
 }
 
 }  // namespace
@@ -97,61 +98,26 @@ double PassiveIdentification::Evaluate(double x) const {
   return PassiveTension({k_p.value, alpha.value, slack_length.value}, x).value;
 }
 
-PassiveIdentification IdentifyPassive(const std::vector<DataPoint>& data) {
-  const double lo = data.front().x, hi = data.back().x, span = hi - lo;
-  // the profile: the best (k, alpha) for each candidate slack length
-  const auto profile = [&](double x0, Eigen::VectorXd* best) {
-    std::size_t above = 0;
-    for (const DataPoint& d : data) above += d.x > x0 && d.y > 0;
-    if (above < 2) return std::numeric_limits<double>::infinity();
-    PassiveResiduals residuals(data, x0);
-    Eigen::VectorXd p = PassiveStart(data, x0, span);
-    const double rss = Minimise(residuals, p);
-    if (best != nullptr) *best = p;
-    return rss;
-  };
-  const int candidates = 200;
-  const double first = lo - 0.25 * span, step = (hi - first) / candidates;
-  double best_x0 = first, best_rss = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < candidates; ++i) {
-    const double x0 = first + step * i;
-    const double rss = profile(x0, nullptr);
-    if (rss < best_rss) {
-      best_rss = rss;
-      best_x0 = x0;
-    }
+PassiveIdentification IdentifyPassive(const std::vector<DataPoint>& data, double level) {
+  if (!(level > 0.0 && level < 1.0)) {
+    throw std::invalid_argument("IdentifyPassive: level = " + std::to_string(level) +
+                                ": must lie strictly between 0 and 1");
   }
-  if (!std::isfinite(best_rss)) {
-    throw InputError("passive data: fewer than 2 points with positive tension; nothing to fit");
-  }
-  // golden-section refinement of the profile around the best candidate
-  double a = best_x0 - step, b = best_x0 + step;
-  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
-  for (int it = 0; it < 60; ++it) {
-    const double c = b - ratio * (b - a), d = a + ratio * (b - a);
-    if (profile(c, nullptr) < profile(d, nullptr)) {
-      b = d;
-    } else {
-      a = c;
-    }
-  }
-  double x0 = 0.5 * (a + b);
-  Eigen::VectorXd p2;
-  if (!(profile(x0, &p2) <= best_rss)) {
-    x0 = best_x0;
-    profile(x0, &p2);
-  }
-  // all three jointly from the profile's optimum
+  const PassiveProfile profile(data);  // throws InputError without 2 positive tensions
+  const double span = data.back().x - data.front().x;
+  std::vector<ProfilePoint> scan = identify_detail::ScanSlackLengths(profile, data);
+  const ProfilePoint best = ProfileMinimum(profile, scan, data.front().x - span);
+
+  // all three jointly from the profile's optimum; kept when it fits better (the profile's
+  // optimum often sits on a data point, where RSS(x0) has a kink and the joint fit stops)
   Eigen::VectorXd p(3);
-  p << p2(0), p2(1), x0;
-  PassiveResiduals joint(data, std::nullopt);
+  p << std::log(std::max(best.k_p, std::numeric_limits<double>::min())), std::log(best.alpha),
+      best.slack_length;
+  PassiveResiduals joint(data);
   Eigen::VectorXd q = p;
   const double joint_rss = Minimise(joint, q);
-  PassiveResiduals fixed(data, x0);
-  Eigen::VectorXd r2 = p2;
-  const double profile_rss = Minimise(fixed, r2);
-  if (joint_rss <= profile_rss) p = q; else p << r2(0), r2(1), x0;
-  const double rss = std::min(joint_rss, profile_rss);
+  if (joint_rss < best.rss) p = q;
+  const double rss = std::min(joint_rss, best.rss);
 
   Eigen::MatrixXd jacobian(joint.values(), 3);
   joint.df(p, jacobian);
@@ -162,6 +128,17 @@ PassiveIdentification IdentifyPassive(const std::vector<DataPoint>& data) {
   out.alpha = {alpha, alpha * std::sqrt(cov(1, 1))};
   out.slack_length = {p(2), std::sqrt(cov(2, 2))};
   out.rmse = Rmse(rss, data.size());
+
+  // the estimate joins the scan, so that the interval holds it
+  const ProfilePoint estimate = profile.At(p(2));
+  scan.insert(std::upper_bound(scan.begin(), scan.end(), estimate.slack_length,
+                               [](double x, const ProfilePoint& s) { return x < s.slack_length; }),
+              estimate);
+  const identify_detail::SlackInterval interval =
+      identify_detail::SlackLengthInterval(profile, scan, data.size(), span, level);
+  out.slack_length_interval = interval.interval;
+  out.k_p_over_interval = interval.k_p;
+  out.alpha_over_interval = interval.alpha;
   return out;
 }
 

@@ -87,7 +87,57 @@ std::string Cell(double value) {
   return text;
 }
 
+// a fraction as a percentage: "95%", "97.5%"
+std::string Percent(double fraction) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g%%", 100.0 * fraction);
+  return text;
+}
+
 }  // namespace
+
+std::vector<std::string> PassiveUncertaintyNotes(const PassiveIdentification& fit,
+                                                 const std::function<std::string(double)>& number) {
+  const ProfileInterval& in = fit.slack_length_interval;
+  // appended piece by piece: GCC 12 warns (-Wrestrict, wrongly) on "literal" + temporary
+  std::string interval = "slack_length: ";
+  interval += Percent(in.level);
+  interval += " profile-likelihood interval ";
+  interval += in.low_bounded ? "[" : "(";
+  interval += in.low_bounded ? number(in.low) : std::string("-inf");
+  interval += ", ";
+  interval += number(in.high);
+  interval += in.high_bounded ? "] m (F test)" : ") m (F test)";
+  if (!in.low_bounded) {
+    interval += "; not bounded below: the data reject no slack length however low (the curve "
+                "then tends to a pure exponential)";
+  }
+  if (!in.high_bounded) {
+    interval += "; not bounded above: it reaches ";
+    interval += number(in.high);
+    interval += " m, above which fewer than 2 positive tensions are left to fit";
+  }
+  if (in.wide) {
+    interval += "; wide (";
+    interval += in.low_bounded && in.high_bounded
+                    ? "more than " + Percent(ProfileInterval::kWideFraction) +
+                          " of the data's length span"
+                    : std::string("one-sided");
+    interval += "): the data place it only coarsely, and its +-, a linearisation at the "
+                "optimum, does not describe that";
+  }
+  std::string carried = "k_p and alpha at the slack lengths inside that interval: k_p from ";
+  carried += number(fit.k_p_over_interval.low);
+  carried += " to ";
+  carried += number(fit.k_p_over_interval.high);
+  carried += " N, alpha from ";
+  carried += number(fit.alpha_over_interval.low);
+  carried += " to ";
+  carried += number(fit.alpha_over_interval.high);
+  carried += " 1/m";
+  if (in.wide) carried += "; their +-, a linearisation at the optimum, understate this";
+  return {interval, carried};
+}
 
 CurveComparison Compare(const std::string& curve, const std::string& x_unit,
                         const std::vector<DataPoint>& data,
@@ -118,6 +168,8 @@ std::string FormatReport(const std::vector<CurveComparison>& comparisons) {
         << (m.nonnegative ? "yes" : "no") << " | " << (m.bounded ? "yes" : "no") << " | "
         << Cell(m.ns_per_eval) << " |\n";
     }
+    if (!c.notes.empty()) s << "\n";
+    for (const std::string& note : c.notes) s << "- " << note << "\n";
   }
   return s.str();
 }

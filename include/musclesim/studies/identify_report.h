@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "musclesim/studies/identify.h"
 #include "musclesim/studies/reference_fits.h"
 
 namespace musclesim {
@@ -32,6 +33,7 @@ struct CurveComparison {
   std::string x_unit;              // the unit of x, as the report prints it
   std::size_t points = 0;          // data points compared on
   std::vector<ModelScore> models;  // one row each, in the order given
+  std::vector<std::string> notes;  // printed below the table, one item each [-]
 };
 
 CurveComparison Compare(const std::string& curve, const std::string& x_unit,
@@ -41,7 +43,13 @@ CurveComparison Compare(const std::string& curve, const std::string& x_unit,
 // The spline and the two polynomials, for Compare's list.
 std::vector<std::pair<std::string, Fitter>> ReferenceFitters();
 
-// A Markdown report: one table per curve.
+// What a passive fit leaves uncertain, one sentence each: the slack length's interval (and
+// whether it is wide or one-sided), and the best k_p and alpha across it. Numbers are written
+// by `number`. For the report's notes and the model block's comments.
+std::vector<std::string> PassiveUncertaintyNotes(const PassiveIdentification& fit,
+                                                 const std::function<std::string(double)>& number);
+
+// A Markdown report: one table per curve, then its notes.
 std::string FormatReport(const std::vector<CurveComparison>& comparisons);
 
 }  // namespace musclesim
