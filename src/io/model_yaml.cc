@@ -62,7 +62,8 @@ std::vector<TargetPoint> ReadPoints(const yaml::Source& src, const YAML::Node& n
 
 FitSpec ReadFitSpec(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
   yaml::RequireMap(src, node, path,
-                   {"count", "target", "points", "nonnegative", "widths", "centers"});
+                   {"count", "target", "points", "nonnegative", "widths", "centers", "name",
+                    "optimal_length"});
   FitSpec spec;
   spec.count = yaml::ReadInteger(src, Required(src, node, path, "count"), Join(path, "count"));
   if (node["target"]) {
@@ -70,6 +71,14 @@ FitSpec ReadFitSpec(const yaml::Source& src, const YAML::Node& node, const std::
     yaml::ValidateAt(src, node, path, [&] { spec.target = ParseFitTargetKind(text); });
   }
   if (node["points"]) spec.points = ReadPoints(src, node["points"], Join(path, "points"));
+  if (node["name"]) {
+    const std::string text = yaml::ReadString(src, node["name"], Join(path, "name"));
+    yaml::ValidateAt(src, node, path, [&] { spec.preset = ParseForceLengthPreset(text); });
+  }
+  if (node["optimal_length"]) {
+    spec.optimal_length = yaml::ReadNumberIn(src, node["optimal_length"],
+                                             Join(path, "optimal_length"), kLengthRange);
+  }
   if (node["nonnegative"]) {
     spec.nonnegative = yaml::ReadBool(src, node["nonnegative"], Join(path, "nonnegative"));
   }
@@ -84,7 +93,9 @@ FitSpec ReadFitSpec(const yaml::Source& src, const YAML::Node& node, const std::
       }
     }
   }
-  if (spec.target != FitTargetKind::kIndicator && spec.points.empty() && !node["points"]) {
+  const bool needs_points =
+      spec.target == FitTargetKind::kPolygon || spec.target == FitTargetKind::kSamples;
+  if (needs_points && spec.points.empty() && !node["points"]) {
     yaml::Fail(src, node, Join(path, "points"), "~",
                "target " + std::string(ToString(spec.target)) + " needs points");
   }
