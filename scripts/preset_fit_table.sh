@@ -7,7 +7,8 @@
 #   max abs error      the largest |f - preset| on 0 <= l / l_opt <= 2 at 2001 points: the
 #                      fitted sum f evaluated here from the printed components, the preset
 #                      from `musclesim curves --preset NAME --length 0:2:2001`
-# Values below 1e-12 (roundoff: thelen2003 is one Gaussian) print as "< 1e-12".
+# A residual below 1e-12 or an error below 1e-6 is roundoff and the optimiser's tolerance
+# (thelen2003 is one Gaussian): it prints as "< 1e-12" or "< 1e-6".
 #   scripts/preset_fit_table.sh          (uses `musclesim` on PATH, or $MUSCLESIM)
 set -euo pipefail
 
@@ -32,7 +33,7 @@ EOF
     "$musclesim" fit "$work/fit.yaml" -o "$work/fit.out"
     # components "  - {amplitude: a, width: b, center: d}", then "relative_residual: r"
     awk -v preset="$preset" -v count="$count" '
-      function show(x) { return x < 1e-12 ? "< 1e-12" : sprintf("%.3g", x) }
+      function show(x, bound) { return x + 0 < bound + 0 ? "< " bound : sprintf("%.3g", x) }
       BEGIN { n = 0; worst = 0 }
       FNR == NR && /amplitude:/ {
         line = $0
@@ -57,7 +58,7 @@ EOF
         if (error < 0) error = -error
         if (error > worst) worst = error
       }
-      END { printf "| %s | %d | %s | %s |\n", preset, count, show(residual), show(worst) }
+      END { printf "| %s | %d | %s | %s |\n", preset, count, show(residual, "1e-12"), show(worst, "1e-6") }
     ' "$work/fit.out" "$work/curve.csv"
   done
 done

@@ -60,7 +60,7 @@ std::string FormatPresetCurveCsv(ForceLengthPreset preset, double optimal_length
   std::string csv = "length,normalized_length,f_L\n";
   for (int i = 0; i < lengths.count; ++i) {
     const double x = lengths.At(i);
-    const double s = x / optimal_length;
+    const double s = Finite(x / optimal_length, "length", x, "normalized_length");
     csv += FormatFull(x) + ',' + FormatFull(s) + ',' + FormatFull(EvaluatePreset(preset, s)) +
            '\n';
   }

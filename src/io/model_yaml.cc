@@ -161,6 +161,17 @@ ModelSpec ReadModelSpec(const yaml::Source& src, const YAML::Node& node, const s
   } else {
     const std::string fit_path = Join(active_path, "fit");
     model.fit = ReadFitSpec(src, active["fit"], fit_path);
+    // a preset peaks at its optimal length: f_L, normalised over L_opt, follows it only if
+    // that peak lies in L_opt
+    if (const std::optional<double> l_opt = model.fit->optimal_length;
+        l_opt && !(*l_opt >= range[0] && *l_opt <= range[1])) {
+      const YAML::Node at = active["fit"]["optimal_length"];
+      yaml::Fail(src, at, Join(fit_path, "optimal_length"), yaml::Describe(at),
+                 "must lie within optimal_range [" + FormatNumber(range[0]) + ", " +
+                     FormatNumber(range[1]) +
+                     "]: the preset peaks there, and f_L is normalised by its maximum over "
+                     "optimal_range");
+    }
     yaml::ValidateAt(src, active["fit"], fit_path, [&] {
       model.fit_result = FitGaussians(*model.fit, p.active_length.optimal_min,
                                       p.active_length.optimal_max, p.active_length.sigma);
