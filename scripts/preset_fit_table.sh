@@ -52,13 +52,19 @@ EOF
       FNR > 1 {
         split($0, column, ",")
         x = column[1]
+        # psi_k = a_k / sqrt(2 pi sigma) exp(-b_k (x - d_k)^2 / (2 sigma)), sigma = 1
         f = 0
-        for (k = 0; k < n; k++) f += a[k] / sqrt(2 * 3.141592653589793) * exp(-b[k] * (x - d[k])^2 / 2)
+        for (k = 0; k < n; k++) {
+          f += a[k] / sqrt(2 * 3.141592653589793) * exp(-b[k] * (x - d[k])^2 / 2)
+        }
         error = f - column[3]
         if (error < 0) error = -error
         if (error > worst) worst = error
       }
-      END { printf "| %s | %d | %s | %s |\n", preset, count, show(residual, "1e-12"), show(worst, "1e-6") }
+      END {
+        printf "| %s | %d | %s | %s |\n", preset, count, show(residual, "1e-12"),
+               show(worst, "1e-6")
+      }
     ' "$work/fit.out" "$work/curve.csv"
   done
 done

@@ -112,7 +112,7 @@ double DeGroote(double s) {
 // deviations (1 - 2.85 <= s <= 1 + 2.85), where it is 1.5e-8, so that one Gaussian can
 // reproduce it to roundoff.
 constexpr double kThelenGamma = 0.45;
-const double kThelenHalfWidth = 6.0 * std::sqrt(kThelenGamma / 2.0);
+constexpr double kThelenHalfWidth = 2.846049894151541;  // 6 sqrt(kThelenGamma / 2)
 
 double Thelen(double s) {
   if (std::abs(s - 1.0) > kThelenHalfWidth) return 0.0;
@@ -138,7 +138,9 @@ double Gordon(double s) {
   const auto& v = kGordonVertices;
   if (s < v[0].s || s > v[4].s) return 0.0;
   for (int i = 0; i < 4; ++i) {
-    if (s <= v[i + 1].s) return v[i].f + (v[i + 1].f - v[i].f) * (s - v[i].s) / (v[i + 1].s - v[i].s);
+    if (s <= v[i + 1].s) {
+      return v[i].f + (v[i + 1].f - v[i].f) * (s - v[i].s) / (v[i + 1].s - v[i].s);
+    }
   }
   return 0.0;
 }
