@@ -164,7 +164,8 @@ ModelSpec ReadModelSpec(const yaml::Source& src, const YAML::Node& node, const s
     // a preset peaks at its optimal length: f_L, normalised over L_opt, follows it only if
     // that peak lies in L_opt
     if (const std::optional<double> l_opt = model.fit->optimal_length;
-        l_opt && !(*l_opt >= range[0] && *l_opt <= range[1])) {
+        model.fit->target == FitTargetKind::kPreset && l_opt &&
+        !(*l_opt >= range[0] && *l_opt <= range[1])) {
       const YAML::Node at = active["fit"]["optimal_length"];
       yaml::Fail(src, at, Join(fit_path, "optimal_length"), yaml::Describe(at),
                  "must lie within optimal_range [" + FormatNumber(range[0]) + ", " +
