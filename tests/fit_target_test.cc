@@ -111,14 +111,14 @@ TEST(FitTarget, IndicatorCostEqualsQuadrature) {
 TEST(FitTarget, PolygonCostEqualsQuadrature) { ExpectCostEqualsQuadrature(2, RandomPolygon); }
 
 TEST(FitTarget, KindNamesReadBackAndUnknownNamesListThemAll) {
-  for (const char* name : {"indicator", "polygon", "samples"}) {
+  for (const char* name : {"indicator", "polygon", "samples", "preset"}) {
     EXPECT_EQ(ToString(ParseFitTargetKind(name)), name);
   }
   try {
     ParseFitTargetKind("circle");
     ADD_FAILURE() << "circle accepted";
   } catch (const ParameterError& e) {
-    EXPECT_STREQ(e.what(), "target = circle: must be one of indicator, polygon, samples");
+    EXPECT_STREQ(e.what(), "target = circle: must be one of indicator, polygon, samples, preset");
   }
 }
 
@@ -184,6 +184,91 @@ TEST(FitTarget, GradientMatchesFiniteDifferences) {
     std::vector<TargetPoint> samples(12);
     for (TargetPoint& s : samples) s = {x(rng), y(rng)};
     ExpectGradientMatches(*MakeSampleTarget(samples, c.sigma), c);
+  }
+}
+
+// --- preset targets ----------------------------------------------------------------------
+
+// A random sum of Gaussians around a preset scaled to l_opt, widths from a fiftieth to twice
+// l_opt (narrower than any panel of the target's quadrature, and wider than its support).
+Case RandomPresetCase(std::mt19937& rng, double l_opt) {
+  std::uniform_real_distribution<double> amplitude(-0.5, 1.5), center(0.3, 1.9),
+      log_spread(std::log(0.02), std::log(2.0)), log_sigma(std::log(0.1), std::log(10.0));
+  const int m = 1 + static_cast<int>(rng() % 4);
+  Case c{Eigen::VectorXd(m), {Eigen::VectorXd(m), Eigen::VectorXd(m)}, std::exp(log_sigma(rng))};
+  for (int k = 0; k < m; ++k) {
+    const double spread = std::exp(log_spread(rng)) * l_opt;
+    c.a(k) = amplitude(rng) * l_opt;
+    c.shapes.precisions(k) = c.sigma / (spread * spread);
+    c.shapes.centers(k) = center(rng) * l_opt;
+  }
+  return c;
+}
+
+// integral of (f - preset(x / l_opt))^2 by adaptive Simpson, split at the preset's breaks and
+// the centres, over the support widened by 12 spreads of the widest Gaussian (beyond, each
+// Gaussian is below e^-72 of its peak); to 1e-13 l_opt, where the cost is of order l_opt
+double PresetQuadratureCost(const Case& c, ForceLengthPreset preset, double l_opt) {
+  std::vector<double> breaks;
+  double spread = 0.0;
+  for (double s : PiecesOf(preset).breaks) breaks.push_back(s * l_opt);
+  for (Eigen::Index k = 0; k < c.a.size(); ++k) {
+    spread = std::max(spread, std::sqrt(c.sigma / c.shapes.precisions(k)));
+    breaks.push_back(c.shapes.centers(k));
+  }
+  const double lo = *std::min_element(breaks.begin(), breaks.end()) - 12 * spread;
+  const double hi = *std::max_element(breaks.begin(), breaks.end()) + 12 * spread;
+  return testing::Integrate(
+      [&](double x) {
+        const double r = Psi(c, x) - EvaluatePreset(preset, x / l_opt);
+        return r * r;
+      },
+      lo, hi, breaks, 1e-13 * l_opt, 64);
+}
+
+TEST(FitTarget, PresetCostEqualsQuadrature) {
+  std::mt19937 rng(6);
+  for (const ForceLengthPreset preset : AllForceLengthPresets()) {
+    for (const double l_opt : {1.0, 0.062}) {
+      for (int trial = 0; trial < 8; ++trial) {
+        const Case c = RandomPresetCase(rng, l_opt);
+        const auto target = MakePresetTarget(preset, l_opt, c.sigma);
+        const double quadrature = PresetQuadratureCost(c, preset, l_opt);
+        // 1e-10 relative, as for the polygon: Gauss-Legendre and Simpson are both converged
+        // far below it
+        EXPECT_NEAR(target->Cost(c.a, c.shapes, nullptr), quadrature, 1e-10 * quadrature)
+            << ToString(preset) << " l_opt " << l_opt << " trial " << trial;
+      }
+    }
+  }
+}
+
+TEST(FitTarget, PresetNormSquaredScalesWithTheOptimalLength) {
+  for (const ForceLengthPreset preset : AllForceLengthPresets()) {
+    const PresetPieces pieces = PiecesOf(preset);
+    const double normalised = testing::Integrate(
+        [&](double s) { return std::pow(EvaluatePreset(preset, s), 2); },
+        pieces.breaks.front(), pieces.breaks.back(), pieces.breaks, 1e-14, 64);
+    for (const double l_opt : {1.0, 0.062, 7.0}) {
+      // integral of C(x / l_opt)^2 dx = l_opt * integral of C(s)^2 ds; 1e-12: quadrature
+      EXPECT_NEAR(MakePresetTarget(preset, l_opt, 1.0)->NormSquared(), l_opt * normalised,
+                  1e-12 * l_opt * normalised)
+          << ToString(preset);
+      EXPECT_DOUBLE_EQ(MakePresetTarget(preset, l_opt, 1.0)->SupportMin(),
+                       pieces.breaks.front() * l_opt);
+      EXPECT_DOUBLE_EQ(MakePresetTarget(preset, l_opt, 1.0)->SupportMax(),
+                       pieces.breaks.back() * l_opt);
+    }
+  }
+}
+
+TEST(FitTarget, PresetGradientMatchesFiniteDifferences) {
+  std::mt19937 rng(7);
+  for (const ForceLengthPreset preset : AllForceLengthPresets()) {
+    for (int trial = 0; trial < 4; ++trial) {
+      const Case c = RandomPresetCase(rng, 0.1);
+      ExpectGradientMatches(*MakePresetTarget(preset, 0.1, c.sigma), c);
+    }
   }
 }
 

@@ -6,8 +6,10 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <random>
+#include <sstream>
 
 #include "musclesim/errors.h"
 #include "musclesim/io/model_yaml.h"
@@ -400,6 +402,165 @@ TEST(GaussianFit, RejectsEachRule) {
   EXPECT_THAT(Rejection(spec), HasSubstr("widths[1] = 0: must be finite and > 0"));
   EXPECT_THAT([] { ParseFitTargetKind("square"); },
               ::testing::ThrowsMessage<ParameterError>(HasSubstr("target = square: must be")));
+}
+
+// --- target preset -----------------------------------------------------------------------
+
+FitSpec Preset(ForceLengthPreset preset, double l_opt, int count) {
+  FitSpec spec;
+  spec.count = count;
+  spec.target = FitTargetKind::kPreset;
+  spec.preset = preset;
+  spec.optimal_length = l_opt;
+  return spec;
+}
+
+TEST(GaussianFit, PresetRulesRejected) {
+  FitSpec spec = Preset(ForceLengthPreset::kMuJoCo, 0.1, 2);
+  EXPECT_EQ(Rejection(spec), "accepted");
+  spec.preset.reset();
+  EXPECT_THAT(Rejection(spec), HasSubstr("name = ~: target preset needs the name of a curve: "
+                                         "one of degroote2016, thelen2003, gordon1966, mujoco"));
+  spec = Preset(ForceLengthPreset::kMuJoCo, 0.1, 2);
+  spec.optimal_length.reset();
+  EXPECT_THAT(Rejection(spec), HasSubstr("optimal_length = ~: target preset needs optimal_length"));
+  for (const double bad : {0.0, -0.1, std::nan(""), HUGE_VAL}) {
+    spec.optimal_length = bad;
+    EXPECT_THAT(Rejection(spec), HasSubstr("must be finite and > 0 [m]")) << bad;
+  }
+  spec = Preset(ForceLengthPreset::kMuJoCo, 0.1, 13);
+  EXPECT_THAT(Rejection(spec), HasSubstr("count = 13: must be an integer from 1 to 12"));
+  spec = Preset(ForceLengthPreset::kMuJoCo, 0.1, 2);
+  spec.points = {{0.1, 1.0}, {0.2, 0.0}};
+  EXPECT_THAT(Rejection(spec), HasSubstr("points = 2 points: must be absent for target preset"));
+  spec = Indicator(2);
+  spec.preset = ForceLengthPreset::kThelen2003;
+  EXPECT_THAT(Rejection(spec),
+              HasSubstr("name = thelen2003: only for target preset (this target is indicator)"));
+  spec = Indicator(2);
+  spec.optimal_length = 0.1;
+  EXPECT_THAT(Rejection(spec), HasSubstr("optimal_length = 0.1: only for target preset"));
+}
+
+// Thelen's curve exp(-(x / l_opt - 1)^2 / gamma) is the component a = sqrt(2 pi sigma),
+// b = 2 sigma / (gamma l_opt^2), d = l_opt: one Gaussian reproduces it.
+TEST(GaussianFit, ThelenIsOneGaussianFoundExactly) {
+  const double l_opt = 0.1, sigma = 2.0, gamma = 0.45;
+  const FitResult fit = FitGaussians(Preset(ForceLengthPreset::kThelen2003, l_opt, 1), 0.0, 0.0,
+                                     sigma);
+  ASSERT_EQ(fit.gaussians.size(), 1u);
+  // the optimiser stops within ~1e-8 of the optimum in the shapes; the cut at 6 standard
+  // deviations moves it by less
+  EXPECT_NEAR(fit.gaussians[0].amplitude, std::sqrt(2.0 * std::numbers::pi * sigma), 1e-6);
+  EXPECT_NEAR(fit.gaussians[0].precision, 2.0 * sigma / (gamma * l_opt * l_opt),
+              1e-6 * 2.0 * sigma / (gamma * l_opt * l_opt));
+  EXPECT_NEAR(fit.gaussians[0].center, l_opt, 1e-8 * l_opt);
+  EXPECT_LT(fit.relative_residual, 1e-12);
+}
+
+// The fit of a preset scaled to l_opt is the normalised fit scaled: f_L(x) = f_1(x / l_opt)
+// has the centres times l_opt, the widths over l_opt^2 and the same amplitudes, and the same
+// relative residual. (Thelen's is left out of the shapes: one Gaussian fits it exactly, and the
+// second of two can go anywhere.)
+TEST(GaussianFit, PresetFitScalesWithTheOptimalLength) {
+  for (const ForceLengthPreset preset : AllForceLengthPresets()) {
+    const FitResult unit = FitGaussians(Preset(preset, 1.0, 2), 0.0, 0.0, 1.0);
+    const FitResult scaled = FitGaussians(Preset(preset, 0.05, 2), 0.0, 0.0, 1.0);
+    // the two are separate searches that stop within ~1e-8 relative of the same optimum
+    EXPECT_NEAR(scaled.relative_residual, unit.relative_residual,
+                1e-6 * unit.relative_residual + 1e-14)
+        << ToString(preset);
+    if (preset == ForceLengthPreset::kThelen2003) continue;
+    std::vector<Gaussian> a = unit.gaussians, b = scaled.gaussians;
+    const auto by_center = [](const Gaussian& p, const Gaussian& q) { return p.center < q.center; };
+    std::sort(a.begin(), a.end(), by_center);
+    std::sort(b.begin(), b.end(), by_center);
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      // 1e-4: shapes at a minimum are known to the square root of the cost's precision
+      EXPECT_NEAR(b[k].center / 0.05, a[k].center, 1e-4) << ToString(preset);
+      EXPECT_NEAR(b[k].precision * 0.05 * 0.05, a[k].precision, 1e-4 * a[k].precision);
+      EXPECT_NEAR(b[k].amplitude, a[k].amplitude, 1e-4 * std::abs(a[k].amplitude));
+    }
+  }
+}
+
+// The fitted sum f of a result, evaluated directly.
+double SumOf(const std::vector<Gaussian>& gaussians, double sigma, double x) {
+  double f = 0.0;
+  for (const Gaussian& g : gaussians) {
+    f += g.amplitude / std::sqrt(2.0 * std::numbers::pi * sigma) *
+         std::exp(-g.precision * (x - g.center) * (x - g.center) / (2.0 * sigma));
+  }
+  return f;
+}
+
+// integral((f - preset)^2) / integral(preset^2) by adaptive Simpson, not read from the fit:
+// over the preset's support widened by 12 spreads of the widest component (beyond, each is
+// below e^-72 of its peak), split at the preset's kinks
+double PresetQuadratureResidual(ForceLengthPreset preset, const std::vector<Gaussian>& g) {
+  const std::vector<double> breaks = PiecesOf(preset).breaks;
+  double spread = 0.0;
+  for (const Gaussian& c : g) spread = std::max(spread, 1.0 / std::sqrt(c.precision));
+  const auto curve = [&](double x) { return EvaluatePreset(preset, x); };
+  // to 1e-13 absolute: the smallest residual printed (2e-5 of a norm of about 0.5) is known
+  // to 1e-8 of itself
+  const double error = testing::Integrate(
+      [&](double x) { return std::pow(SumOf(g, 1.0, x) - curve(x), 2); },
+      breaks.front() - 12 * spread, breaks.back() + 12 * spread, breaks, 1e-13);
+  const double norm = testing::Integrate([&](double x) { return curve(x) * curve(x); },
+                                         breaks.front(), breaks.back(), breaks, 1e-13);
+  return error / norm;
+}
+
+// A README figure against the value computed here: "< 1e-12" (or any "< BOUND") holds when
+// the value is below the bound; a number printed to 3 significant digits, when the value
+// rounds to it (half a unit of the third digit, and 1e-9 relative for the two computations'
+// own roundoff).
+void ExpectReadmeFigure(const std::string& printed, double value, const std::string& what) {
+  if (printed.rfind("< ", 0) == 0) {
+    EXPECT_LT(value, std::stod(printed.substr(2))) << what;
+    return;
+  }
+  const double number = std::stod(printed);
+  const double unit = std::pow(10.0, std::floor(std::log10(number)) - 2);
+  EXPECT_NEAR(value, number, 0.5 * unit + 1e-9 * number) << what << " printed " << printed;
+}
+
+// README "The closed-form fit": the table scripts/preset_fit_table.sh prints. Each row's fit
+// is run again and its relative residual and max abs error recomputed here independently.
+TEST(GaussianFit, ReadmeTableOfPresetFits) {
+  std::ifstream in(std::string(MUSCLESIM_SOURCE_DIR) + "/README.md");
+  std::string line;
+  while (std::getline(in, line) &&
+         line != "| preset | Gaussians | relative residual | max abs error |") {
+  }
+  ASSERT_TRUE(in) << "the README has no table of preset fits";
+  std::getline(in, line);  // |---|---|...
+  int rows = 0;
+  while (std::getline(in, line) && line.rfind("| ", 0) == 0) {
+    std::vector<std::string> cells;
+    std::istringstream fields(line.substr(2));
+    for (std::string cell; std::getline(fields, cell, '|');) {
+      cell.erase(0, cell.find_first_not_of(' '));
+      cell.erase(cell.find_last_not_of(' ') + 1);
+      cells.push_back(cell);
+    }
+    ASSERT_GE(cells.size(), 4u) << line;
+    const ForceLengthPreset preset = ParseForceLengthPreset(cells[0]);
+    const int count = std::stoi(cells[1]);
+    const FitResult fit = FitGaussians(Preset(preset, 1.0, count), 0.0, 0.0, 1.0);
+    ExpectReadmeFigure(cells[2], PresetQuadratureResidual(preset, fit.gaussians),
+                       line + ": relative residual");
+    // the same 2001 points from 0 to 2 l_opt as the script
+    double worst = 0.0;
+    for (int i = 0; i <= 2000; ++i) {
+      const double x = 2.0 * i / 2000;
+      worst = std::max(worst, std::abs(SumOf(fit.gaussians, 1.0, x) - EvaluatePreset(preset, x)));
+    }
+    ExpectReadmeFigure(cells[3], worst, line + ": max abs error");
+    ++rows;
+  }
+  EXPECT_EQ(rows, 12);  // four presets, m = 2, 3, 4
 }
 
 }  // namespace

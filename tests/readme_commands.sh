@@ -14,8 +14,9 @@
 #                                         before every block runs
 #
 # Each block runs on its own, with `bash -e -o pipefail`, in a fresh temporary directory
-# holding a copy of scenarios/, data/ and docs/, as if from the repository root; `musclesim`
-# is the given binary, through a symlink on PATH. Nothing is written to the repository.
+# holding a copy of scenarios/, data/, docs/ and scripts/, as if from the repository root;
+# `musclesim` is the given binary, through a symlink on PATH. Nothing is written to the
+# repository.
 # A failing block is reported with its README line range and the line that failed.
 set -euo pipefail
 
@@ -134,7 +135,7 @@ while read -r n from to needs; do
   fi
   dir=$work/run$n
   mkdir "$dir"
-  cp -R "$source_dir/scenarios" "$source_dir/data" "$source_dir/docs" "$dir/"
+  cp -R "$source_dir/scenarios" "$source_dir/data" "$source_dir/docs" "$source_dir/scripts" "$dir/"
   cp -R "$work/files/." "$dir/"
   # the block's first line is line 2 of the script, so README line = from + LINENO - 2
   {

@@ -88,4 +88,18 @@ UniformGrid ParseGrid(const std::string& option, const std::string& text,
   return grid;
 }
 
+double ParseNumber(const std::string& option, const std::string& text, const InputRange& range) {
+  const double value = ParseDouble(option, text);
+  if (!range.Contains(value)) throw UsageError(option + " " + text + ": " + range.Rule());
+  return value;
+}
+
+ForceLengthPreset ParsePreset(const std::string& option, const std::string& text) {
+  try {
+    return ParseForceLengthPreset(text);
+  } catch (const ParameterError& e) {
+    throw UsageError(option + " " + text + ": " + e.rule());
+  }
+}
+
 }  // namespace musclesim::cli

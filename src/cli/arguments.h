@@ -9,6 +9,7 @@
 
 #include "musclesim/io/curves_csv.h"
 #include "musclesim/io/input_ranges.h"
+#include "musclesim/model/force_length_presets.h"
 
 namespace musclesim::cli {
 
@@ -40,5 +41,12 @@ Arguments Parse(int argc, char** argv, int first, const std::set<std::string>& w
 // `range`. A malformed grid is a UsageError naming `option` and `text`.
 UniformGrid ParseGrid(const std::string& option, const std::string& text,
                       const InputRange& range);
+
+// A number within `range` (NaN and infinities never are). A UsageError names `option`,
+// `text` and the rule otherwise.
+double ParseNumber(const std::string& option, const std::string& text, const InputRange& range);
+
+// A standard force-length curve by name; an unknown name is a UsageError listing them all.
+ForceLengthPreset ParsePreset(const std::string& option, const std::string& text);
 
 }  // namespace musclesim::cli

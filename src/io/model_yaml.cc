@@ -62,7 +62,8 @@ std::vector<TargetPoint> ReadPoints(const yaml::Source& src, const YAML::Node& n
 
 FitSpec ReadFitSpec(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
   yaml::RequireMap(src, node, path,
-                   {"count", "target", "points", "nonnegative", "widths", "centers"});
+                   {"count", "target", "points", "nonnegative", "widths", "centers", "name",
+                    "optimal_length"});
   FitSpec spec;
   spec.count = yaml::ReadInteger(src, Required(src, node, path, "count"), Join(path, "count"));
   if (node["target"]) {
@@ -70,6 +71,14 @@ FitSpec ReadFitSpec(const yaml::Source& src, const YAML::Node& node, const std::
     yaml::ValidateAt(src, node, path, [&] { spec.target = ParseFitTargetKind(text); });
   }
   if (node["points"]) spec.points = ReadPoints(src, node["points"], Join(path, "points"));
+  if (node["name"]) {
+    const std::string text = yaml::ReadString(src, node["name"], Join(path, "name"));
+    yaml::ValidateAt(src, node, path, [&] { spec.preset = ParseForceLengthPreset(text); });
+  }
+  if (node["optimal_length"]) {
+    spec.optimal_length = yaml::ReadNumberIn(src, node["optimal_length"],
+                                             Join(path, "optimal_length"), kLengthRange);
+  }
   if (node["nonnegative"]) {
     spec.nonnegative = yaml::ReadBool(src, node["nonnegative"], Join(path, "nonnegative"));
   }
@@ -84,7 +93,9 @@ FitSpec ReadFitSpec(const yaml::Source& src, const YAML::Node& node, const std::
       }
     }
   }
-  if (spec.target != FitTargetKind::kIndicator && spec.points.empty() && !node["points"]) {
+  const bool needs_points =
+      spec.target == FitTargetKind::kPolygon || spec.target == FitTargetKind::kSamples;
+  if (needs_points && spec.points.empty() && !node["points"]) {
     yaml::Fail(src, node, Join(path, "points"), "~",
                "target " + std::string(ToString(spec.target)) + " needs points");
   }
@@ -150,6 +161,18 @@ ModelSpec ReadModelSpec(const yaml::Source& src, const YAML::Node& node, const s
   } else {
     const std::string fit_path = Join(active_path, "fit");
     model.fit = ReadFitSpec(src, active["fit"], fit_path);
+    // a preset peaks at its optimal length: f_L, normalised over L_opt, follows it only if
+    // that peak lies in L_opt
+    if (const std::optional<double> l_opt = model.fit->optimal_length;
+        model.fit->target == FitTargetKind::kPreset && l_opt &&
+        !(*l_opt >= range[0] && *l_opt <= range[1])) {
+      const YAML::Node at = active["fit"]["optimal_length"];
+      yaml::Fail(src, at, Join(fit_path, "optimal_length"), yaml::Describe(at),
+                 "must lie within optimal_range [" + FormatNumber(range[0]) + ", " +
+                     FormatNumber(range[1]) +
+                     "]: the preset peaks there, and f_L is normalised by its maximum over "
+                     "optimal_range");
+    }
     yaml::ValidateAt(src, active["fit"], fit_path, [&] {
       model.fit_result = FitGaussians(*model.fit, p.active_length.optimal_min,
                                       p.active_length.optimal_max, p.active_length.sigma);

@@ -1,10 +1,12 @@
 #include "musclesim/model/fit_target.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "musclesim/model/active_length.h"
 #include "musclesim/model/enum_names.h"
+#include "musclesim/model/force_length_presets.h"
 
 namespace musclesim {
 
@@ -12,6 +14,7 @@ constexpr EnumName<FitTargetKind> kFitTargetNames[] = {
     {FitTargetKind::kIndicator, "indicator"},
     {FitTargetKind::kPolygon, "polygon"},
     {FitTargetKind::kSamples, "samples"},
+    {FitTargetKind::kPreset, "preset"},
 };
 
 std::string_view ToString(FitTargetKind kind) { return ToString(kFitTargetNames, kind); }
@@ -63,19 +66,14 @@ PieceIntegral IntegratePiece(double x1, double x2, double y1, double slope, doub
   return {value, d_precision, d_center};
 }
 
-class PiecewiseLinearTarget final : public FitTarget {
+// The targets integrated over the real line: G in closed form, r_k (with its derivatives)
+// from each target's Project, c from its NormSquared.
+class ContinuousTarget : public FitTarget {
  public:
-  PiecewiseLinearTarget(std::vector<TargetPoint> vertices, double sigma)
-      : vertices_(std::move(vertices)), sigma_(sigma) {
-    for (std::size_t i = 0; i + 1 < vertices_.size(); ++i) {
-      const TargetPoint& p = vertices_[i];
-      const TargetPoint& q = vertices_[i + 1];
-      norm_squared_ += (q.x - p.x) * (p.y * p.y + p.y * q.y + q.y * q.y) / 3.0;
-    }
-  }
+  explicit ContinuousTarget(double sigma) : sigma_(sigma) {}
 
   void NormalEquations(const GaussianShapes& shapes, Eigen::MatrixXd& gram,
-              Eigen::VectorXd& projection) const override {
+                       Eigen::VectorXd& projection) const override {
     const Eigen::Index m = shapes.precisions.size();
     gram.resize(m, m);
     projection.resize(m);
@@ -93,14 +91,16 @@ class PiecewiseLinearTarget final : public FitTarget {
     Eigen::VectorXd projection;
     NormalEquations(shapes, gram, projection);
     const Eigen::VectorXd gram_a = gram * a;
-    const double cost = a.dot(gram_a) - 2.0 * a.dot(projection) + norm_squared_;
+    const double cost = a.dot(gram_a) - 2.0 * a.dot(projection) + NormSquared();
     if (gradient != nullptr) FillGradient(a, shapes, gram, gram_a, projection, *gradient);
     return cost;
   }
 
-  double NormSquared() const override { return norm_squared_; }
-  double SupportMin() const override { return vertices_.front().x; }
-  double SupportMax() const override { return vertices_.back().x; }
+ protected:
+  // r_k = integral of phi_k times the target, and its derivatives in b_k and d_k.
+  virtual PieceIntegral Project(double b, double d) const = 0;
+
+  double sigma_;
 
  private:
   // G_ij = exp(-b_i b_j (d_i - d_j)^2 / (2 sigma B)) / sqrt(2 pi sigma B), B = b_i + b_j
@@ -110,21 +110,6 @@ class PiecewiseLinearTarget final : public FitTarget {
     const double gap = shapes.centers(i) - shapes.centers(j);
     return std::exp(-bi * bj * gap * gap / (2.0 * sigma_ * sum)) /
            std::sqrt(2.0 * std::numbers::pi * sigma_ * sum);
-  }
-
-  // r_k and its derivatives: the sum over the polygon's pieces.
-  PieceIntegral Project(double b, double d) const {
-    PieceIntegral total{0.0, 0.0, 0.0};
-    for (std::size_t i = 0; i + 1 < vertices_.size(); ++i) {
-      const TargetPoint& p = vertices_[i];
-      const TargetPoint& q = vertices_[i + 1];
-      const PieceIntegral piece =
-          IntegratePiece(p.x, q.x, p.y, (q.y - p.y) / (q.x - p.x), b, d, sigma_);
-      total.value += piece.value;
-      total.d_precision += piece.d_precision;
-      total.d_center += piece.d_center;
-    }
-    return total;
   }
 
   void FillGradient(const Eigen::VectorXd& a, const GaussianShapes& shapes,
@@ -151,9 +136,123 @@ class PiecewiseLinearTarget final : public FitTarget {
       out.centers(k) = 2.0 * a(k) * (by_center - r.d_center);
     }
   }
+};
+
+class PiecewiseLinearTarget final : public ContinuousTarget {
+ public:
+  PiecewiseLinearTarget(std::vector<TargetPoint> vertices, double sigma)
+      : ContinuousTarget(sigma), vertices_(std::move(vertices)) {
+    for (std::size_t i = 0; i + 1 < vertices_.size(); ++i) {
+      const TargetPoint& p = vertices_[i];
+      const TargetPoint& q = vertices_[i + 1];
+      norm_squared_ += (q.x - p.x) * (p.y * p.y + p.y * q.y + q.y * q.y) / 3.0;
+    }
+  }
+
+  double NormSquared() const override { return norm_squared_; }
+  double SupportMin() const override { return vertices_.front().x; }
+  double SupportMax() const override { return vertices_.back().x; }
+
+ private:
+  // r_k and its derivatives: the sum over the polygon's pieces.
+  PieceIntegral Project(double b, double d) const override {
+    PieceIntegral total{0.0, 0.0, 0.0};
+    for (std::size_t i = 0; i + 1 < vertices_.size(); ++i) {
+      const TargetPoint& p = vertices_[i];
+      const TargetPoint& q = vertices_[i + 1];
+      const PieceIntegral piece =
+          IntegratePiece(p.x, q.x, p.y, (q.y - p.y) / (q.x - p.x), b, d, sigma_);
+      total.value += piece.value;
+      total.d_precision += piece.d_precision;
+      total.d_center += piece.d_center;
+    }
+    return total;
+  }
 
   std::vector<TargetPoint> vertices_;
-  double sigma_;
+  double norm_squared_ = 0.0;
+};
+
+// 8-point Gauss-Legendre rule on [-1, 1]: nodes and weights, symmetric pairs.
+constexpr double kLegendreNodes[4] = {0.183434642495649804939476142360,
+                                      0.525532409916328985817739049189,
+                                      0.796666477413626739591553936476,
+                                      0.960289856497536231683560868569};
+constexpr double kLegendreWeights[4] = {0.362683783378361982965150449277,
+                                        0.313706645877887287337962201987,
+                                        0.222381034453374470544355994426,
+                                        0.101228536290376259152531354310};
+
+// Calls visit(x, w) for the nodes and weights of the composite 8-point rule on [lo, hi],
+// split into equal panels no wider than `panel`.
+template <typename Visit>
+void ForEachNode(double lo, double hi, double panel, Visit visit) {
+  const double count = std::ceil((hi - lo) / panel);
+  const int panels = std::max(1, static_cast<int>(count));
+  const double width = (hi - lo) / panels;
+  for (int p = 0; p < panels; ++p) {
+    const double mid = lo + (p + 0.5) * width;
+    const double half = 0.5 * width;
+    for (int i = 0; i < 4; ++i) {
+      visit(mid - half * kLegendreNodes[i], half * kLegendreWeights[i]);
+      visit(mid + half * kLegendreNodes[i], half * kLegendreWeights[i]);
+    }
+  }
+}
+
+// A standard curve scaled to l_opt: C(x) = preset(x / l_opt). It is smooth between its breaks,
+// so r_k is integrated by Gauss-Legendre on panels no wider than the curve's own panel nor than
+// one spread of the Gaussian, over the Gaussian's +-10 spreads (beyond, it is below e^-50 of
+// its peak): accurate to roundoff for any width the fit may try.
+class PresetTarget final : public ContinuousTarget {
+ public:
+  PresetTarget(ForceLengthPreset preset, double optimal_length, double sigma)
+      : ContinuousTarget(sigma), preset_(preset), optimal_length_(optimal_length) {
+    const PresetPieces pieces = PiecesOf(preset);
+    for (double s : pieces.breaks) breaks_.push_back(s * optimal_length);
+    panel_ = pieces.panel * optimal_length;
+    for (std::size_t i = 0; i + 1 < breaks_.size(); ++i) {
+      ForEachNode(breaks_[i], breaks_[i + 1], panel_, [&](double x, double w) {
+        const double c = Curve(x);
+        norm_squared_ += w * c * c;
+      });
+    }
+  }
+
+  double NormSquared() const override { return norm_squared_; }
+  double SupportMin() const override { return breaks_.front(); }
+  double SupportMax() const override { return breaks_.back(); }
+
+ private:
+  double Curve(double x) const { return EvaluatePreset(preset_, x / optimal_length_); }
+
+  PieceIntegral Project(double b, double d) const override {
+    const double spread = std::sqrt(sigma_ / b);
+    const double rate = b / (2.0 * sigma_);
+    const double peak = kInvSqrt2Pi / std::sqrt(sigma_);  // phi_k at its centre
+    const double reach_lo = d - 10.0 * spread, reach_hi = d + 10.0 * spread;
+    const double panel = std::min(panel_, spread);
+    PieceIntegral total{0.0, 0.0, 0.0};
+    for (std::size_t i = 0; i + 1 < breaks_.size(); ++i) {
+      const double lo = std::max(breaks_[i], reach_lo);
+      const double hi = std::min(breaks_[i + 1], reach_hi);
+      if (!(hi > lo)) continue;
+      ForEachNode(lo, hi, panel, [&](double x, double w) {
+        const double dx = x - d;
+        const double weighted = w * peak * std::exp(-rate * dx * dx) * Curve(x);
+        total.value += weighted;
+        // dphi/db = -phi (x - d)^2 / (2 sigma), dphi/dd = phi b (x - d) / sigma
+        total.d_precision -= weighted * dx * dx / (2.0 * sigma_);
+        total.d_center += weighted * b * dx / sigma_;
+      });
+    }
+    return total;
+  }
+
+  ForceLengthPreset preset_;
+  double optimal_length_;
+  std::vector<double> breaks_;
+  double panel_ = 0.0;
   double norm_squared_ = 0.0;
 };
 
@@ -234,6 +333,11 @@ std::unique_ptr<FitTarget> MakePiecewiseLinearTarget(std::vector<TargetPoint> ve
 
 std::unique_ptr<FitTarget> MakeSampleTarget(std::vector<TargetPoint> samples, double sigma) {
   return std::make_unique<SampleTarget>(std::move(samples), sigma);
+}
+
+std::unique_ptr<FitTarget> MakePresetTarget(ForceLengthPreset preset, double optimal_length,
+                                            double sigma) {
+  return std::make_unique<PresetTarget>(preset, optimal_length, sigma);
 }
 
 }  // namespace musclesim

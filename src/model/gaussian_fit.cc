@@ -13,6 +13,20 @@
 
 namespace musclesim {
 
+namespace {
+
+// "one of degroote2016, thelen2003, ...": the names a preset may have
+std::string PresetNamesRule() {
+  std::string rule = "one of ";
+  for (const ForceLengthPreset preset : AllForceLengthPresets()) {
+    if (preset != AllForceLengthPresets().front()) rule += ", ";
+    rule += ToString(preset);
+  }
+  return rule;
+}
+
+}  // namespace
+
 void Validate(const FitSpec& spec) {
   Require(spec.count >= 1 && spec.count <= 12, "count", spec.count,
           "must be an integer from 1 to 12");
@@ -42,6 +56,23 @@ void Validate(const FitSpec& spec) {
                     FormatNumber(spec.points[i - 1].x) + ")");
       }
       break;
+    case FitTargetKind::kPreset:
+      if (!spec.points.empty()) {
+        throw ParameterError("points", std::to_string(spec.points.size()) + " points",
+                             "must be absent for target preset (it uses name and optimal_length)");
+      }
+      if (!spec.preset) {
+        throw ParameterError("name", "~", "target preset needs the name of a curve: " +
+                                              PresetNamesRule());
+      }
+      if (!spec.optimal_length) {
+        throw ParameterError("optimal_length", "~",
+                             "target preset needs optimal_length, the length [m] where the "
+                             "curve peaks");
+      }
+      Require(std::isfinite(*spec.optimal_length) && *spec.optimal_length > 0.0,
+              "optimal_length", *spec.optimal_length, "must be finite and > 0 [m]");
+      break;
     case FitTargetKind::kSamples: {
       const bool shapes_fixed = !spec.precisions.empty();
       const std::size_t needed = static_cast<std::size_t>(spec.count) * (shapes_fixed ? 1 : 3);
@@ -53,6 +84,13 @@ void Validate(const FitSpec& spec) {
       }
       break;
     }
+  }
+  if (spec.target != FitTargetKind::kPreset && (spec.preset || spec.optimal_length)) {
+    throw ParameterError(spec.preset ? "name" : "optimal_length",
+                         spec.preset ? std::string(ToString(*spec.preset))
+                                     : FormatNumber(*spec.optimal_length),
+                         "only for target preset (this target is " +
+                             std::string(ToString(spec.target)) + ")");
   }
   if (spec.precisions.empty() != spec.centers.empty()) {
     throw ParameterError(spec.precisions.empty() ? "centers" : "widths", "given alone",
@@ -84,6 +122,8 @@ std::unique_ptr<FitTarget> MakeFitTarget(const FitSpec& spec, double l1, double 
       return MakePiecewiseLinearTarget(spec.points, sigma);
     case FitTargetKind::kSamples:
       return MakeSampleTarget(spec.points, sigma);
+    case FitTargetKind::kPreset:
+      return MakePresetTarget(*spec.preset, *spec.optimal_length, sigma);
   }
   return nullptr;
 }

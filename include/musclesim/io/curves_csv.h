@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "musclesim/model/force_length_presets.h"
 #include "musclesim/model/tension.h"
 
 namespace musclesim {
@@ -28,5 +29,12 @@ std::string FormatLengthCurvesCsv(const TensionModel& model, const UniformGrid& 
 // g_eps(v) [-]. Throws ParameterError as FormatLengthCurvesCsv does ("shortening_velocity"
 // for a value that is not finite).
 std::string FormatVelocityCurveCsv(const TensionModel& model, const UniformGrid& velocities);
+
+// Header "length,normalized_length,f_L", then per grid point the length l [m], l / l_opt [-]
+// and the preset's value there [-] (1 at l = l_opt). Throws ParameterError as
+// FormatLengthCurvesCsv does, and ParameterError("optimal_length", ...) unless l_opt is finite
+// and > 0.
+std::string FormatPresetCurveCsv(ForceLengthPreset preset, double optimal_length,
+                                 const UniformGrid& lengths);
 
 }  // namespace musclesim

@@ -5,7 +5,9 @@
 //   N(a, b, d) = a^T G(b, d) a - 2 a^T r(b, d) + c,
 // G the Gram matrix of the phi_k, r their products with the target, c the target's norm:
 //   indicator / polygon: continuous L2 over the real line (G_ij and erf terms);
-//   samples:             the discrete sum over measured points.
+//   samples:             the discrete sum over measured points;
+//   preset:              continuous L2 against a standard curve scaled to l_opt (G in
+//                        closed form, r by Gauss-Legendre between the curve's breaks).
 #pragma once
 
 #include <memory>
@@ -15,9 +17,11 @@
 
 #include <Eigen/Core>
 
+#include "musclesim/model/force_length_presets.h"
+
 namespace musclesim {
 
-enum class FitTargetKind { kIndicator, kPolygon, kSamples };
+enum class FitTargetKind { kIndicator, kPolygon, kSamples, kPreset };
 std::string_view ToString(FitTargetKind kind);
 // Throws ParameterError("target", text, ...) for an unknown name.
 FitTargetKind ParseFitTargetKind(std::string_view text);
@@ -64,5 +68,9 @@ std::unique_ptr<FitTarget> MakePiecewiseLinearTarget(std::vector<TargetPoint> ve
                                                      double sigma);
 // Discrete least squares on measured samples.
 std::unique_ptr<FitTarget> MakeSampleTarget(std::vector<TargetPoint> samples, double sigma);
+// The standard curve `preset` scaled to the optimal length l_opt [m] (> 0): the target is
+// EvaluatePreset(preset, x / l_opt), zero outside the preset's support times l_opt.
+std::unique_ptr<FitTarget> MakePresetTarget(ForceLengthPreset preset, double optimal_length,
+                                            double sigma);
 
 }  // namespace musclesim

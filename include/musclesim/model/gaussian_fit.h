@@ -4,6 +4,7 @@
 // fixed, deterministic set of well-spread starting points; the best result is kept.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "musclesim/model/active_length.h"
@@ -21,10 +22,14 @@ struct FitSpec {
   // amplitudes are solved for: the paper's linear case.
   std::vector<double> precisions;    // b_k [1/m^2 when sigma = 1], > 0; YAML key `widths`
   std::vector<double> centers;       // d_k [m]
+  // Target preset only, and then both required: the standard curve (YAML key `name`) and the
+  // optimal length it is scaled to.
+  std::optional<ForceLengthPreset> preset;
+  std::optional<double> optimal_length;  // l_opt [m], finite and > 0
 };
 
-// Throws ParameterError ("count", "points", "points[i]", "widths[k]", ...), naming each
-// field by its YAML key.
+// Throws ParameterError ("count", "points", "points[i]", "widths[k]", "name",
+// "optimal_length", ...), naming each field by its YAML key.
 void Validate(const FitSpec& spec);
 
 struct FitResult {
@@ -35,7 +40,8 @@ struct FitResult {
   int starts = 0;                  // starting points tried
 };
 
-// The target that `spec` describes, with L_opt = [l1, l2] for the indicator.
+// The target that `spec` describes, with L_opt = [l1, l2] for the indicator (the other
+// targets ignore l1 and l2).
 std::unique_ptr<FitTarget> MakeFitTarget(const FitSpec& spec, double l1, double l2,
                                          double sigma);
 
