@@ -28,6 +28,7 @@
 #include "musclesim/studies/plot.h"
 #include "musclesim/studies/sweep.h"
 #include "support/canonical_actuator.h"
+#include "support/difference_jacobian.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {
@@ -196,26 +197,8 @@ TEST(ActivationDynamics, ActivationCatchingAFallingExcitationCrossesTheKink) {
 
 // ---- the Jacobian -------------------------------------------------------------------------
 
-std::size_t Dense(int n, int i, int j) { return static_cast<std::size_t>(i * n + j); }
-
-// df/dy by central differences of RightHandSide, column by column.
-std::vector<double> DifferenceJacobian(const NetworkSystem& system, double t,
-                                       const std::vector<double>& y, double step) {
-  const int n = system.state_size();
-  std::vector<double> jacobian(Dense(n, n, 0));
-  std::vector<double> plus(y), minus(y), f_plus(y.size()), f_minus(y.size());
-  for (int j = 0; j < n; ++j) {
-    plus[j] = y[j] + step;
-    minus[j] = y[j] - step;
-    system.RightHandSide(t, plus.data(), f_plus.data());
-    system.RightHandSide(t, minus.data(), f_minus.data());
-    for (int i = 0; i < n; ++i) {
-      jacobian[Dense(n, i, j)] = (f_plus[i] - f_minus[i]) / (plus[j] - minus[j]);
-    }
-    plus[j] = minus[j] = y[j];
-  }
-  return jacobian;
-}
+using testing::Dense;
+using testing::DifferenceJacobian;
 
 // Two free nodes between a wall and a prescribed crank: two actuators with activation
 // dynamics (from the wall, and between the nodes), one without (to the crank), a spring and a

@@ -17,6 +17,7 @@
 #include "musclesim/errors.h"
 #include "support/canonical_actuator.h"
 #include "support/canonical_networks.h"
+#include "support/difference_jacobian.h"
 
 namespace musclesim {
 namespace {
@@ -141,27 +142,8 @@ TEST(Network, RightHandSideIsSection72ByHandWithTendonTautAndSheathSlack) {
 
 // ---- the Jacobian against central differences -------------------------------------------
 
-// Entry (i, j) of a dense n x n matrix stored row by row.
-std::size_t Dense(int n, int i, int j) { return static_cast<std::size_t>(i * n + j); }
-
-// df/dy by central differences of RightHandSide, column by column.
-std::vector<double> DifferenceJacobian(const NetworkSystem& system, double t,
-                                       const std::vector<double>& y, double step) {
-  const int n = system.state_size();
-  std::vector<double> jacobian(Dense(n, n, 0));
-  std::vector<double> plus(y), minus(y), f_plus(y.size()), f_minus(y.size());
-  for (int j = 0; j < n; ++j) {
-    plus[j] = y[j] + step;
-    minus[j] = y[j] - step;
-    system.RightHandSide(t, plus.data(), f_plus.data());
-    system.RightHandSide(t, minus.data(), f_minus.data());
-    for (int i = 0; i < n; ++i) {
-      jacobian[Dense(n, i, j)] = (f_plus[i] - f_minus[i]) / (plus[j] - minus[j]);
-    }
-    plus[j] = minus[j] = y[j];
-  }
-  return jacobian;
-}
+using testing::Dense;
+using testing::DifferenceJacobian;
 
 // Whether (t, y) is more than `margin` (in the kink's unit) from every kink.
 bool AwayFromKinks(const NetworkSystem& system, double t, const std::vector<double>& y,
