@@ -21,7 +21,8 @@ verbs:
   sweep    run many scenarios made from one by overriding values; one summary CSV
   plot     draw a trajectory, the model's curves or a sweep with gnuplot (PNG or SVG)
   identify fit the model's parameters to measured curves; compare with splines
-  curves   tabulate f_L and passive tension over length, or g over velocity, as CSV
+  curves   tabulate f_L and passive tension over length, g over velocity, or a standard
+           force-length curve (--preset NAME), as CSV
   fit      fit the sum of Gaussians that a model file asks for; print the components
 
 exit codes: 0 success, 1 other failure, 2 invalid input, 3 solver failure,
