@@ -1,4 +1,6 @@
-// Velocity identification: linear least squares in s = sgn(v) |v|^(1/n) for each n.
+// Velocity identification: linear least squares in s = sgn(v) |v|^(1/n) for each n, from
+// the points v >= 0 when there are eccentric ones (v < 0), which then give the eccentric
+// branch (identify_eccentric.cc).
 #include "musclesim/studies/identify.h"
 
 #include <Eigen/Dense>
@@ -6,6 +8,7 @@
 #include <cmath>
 
 #include "musclesim/errors.h"
+#include "studies/identify_eccentric.h"
 #include "studies/identify_fit_statistics.h"
 
 namespace musclesim {
@@ -14,13 +17,26 @@ using identify_detail::Covariance;
 using identify_detail::Rmse;
 
 double VelocityIdentification::Evaluate(double v) const {
+  if (v < 0 && eccentric && eccentric->identified) {
+    return best.f_iso.value * identify_detail::EccentricFactor(eccentric->best, v);
+  }
   const double s = (v > 0) - (v < 0);
   return best.f_iso.value * (1.0 - s * std::pow(std::abs(v) / best.v_max.value, 1.0 / best.n));
 }
 
-VelocityIdentification IdentifyVelocity(const std::vector<DataPoint>& data,
+VelocityIdentification IdentifyVelocity(const std::vector<DataPoint>& all,
                                         std::optional<double> f_iso) {
   VelocityIdentification out;
+  // with eccentric points, the concentric power law from v >= 0 alone (the v = 0 point,
+  // which fixes f_iso, among them)
+  std::vector<DataPoint> data, lengthening;
+  for (const DataPoint& p : all) (p.x < 0 ? lengthening : data).push_back(p);
+  const std::size_t needed = f_iso ? 2 : 3;
+  if (!lengthening.empty() && data.size() < needed) {
+    throw InputError("velocity data: " + std::to_string(data.size()) +
+                     " points with shortening velocity >= 0; the concentric branch (v_max, n" +
+                     (f_iso ? "" : ", f_iso") + ") needs at least " + std::to_string(needed));
+  }
   const auto n_points = static_cast<Eigen::Index>(data.size());
   for (int n = 1; n <= 10; ++n) {
     VelocityCandidate c;
@@ -65,6 +81,7 @@ VelocityIdentification IdentifyVelocity(const std::vector<DataPoint>& data,
                      "in 1..10; nothing to fit");
   }
   out.best = *best;
+  if (!lengthening.empty()) out.eccentric = identify_detail::IdentifyEccentric(lengthening, out.best.f_iso);
   return out;
 }
 

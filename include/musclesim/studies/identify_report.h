@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "musclesim/studies/identify.h"
 #include "musclesim/studies/reference_fits.h"
 
 namespace musclesim {
@@ -32,6 +33,7 @@ struct CurveComparison {
   std::string x_unit;              // the unit of x, as the report prints it
   std::size_t points = 0;          // data points compared on
   std::vector<ModelScore> models;  // one row each, in the order given
+  std::vector<std::string> notes;  // sentences printed under the table, one bullet each
 };
 
 CurveComparison Compare(const std::string& curve, const std::string& x_unit,
@@ -41,7 +43,12 @@ CurveComparison Compare(const std::string& curve, const std::string& x_unit,
 // The spline and the two polynomials, for Compare's list.
 std::vector<std::pair<std::string, Fitter>> ReferenceFitters();
 
-// A Markdown report: one table per curve.
+// What the eccentric identification found, in sentences for a reader: the branch's
+// parameters with their standard errors, or plainly that the data do not determine them and
+// why, and the same for the limit.
+std::vector<std::string> DescribeEccentric(const EccentricIdentification& eccentric);
+
+// A Markdown report: one table per curve, its notes below it.
 std::string FormatReport(const std::vector<CurveComparison>& comparisons);
 
 }  // namespace musclesim
