@@ -190,6 +190,14 @@ const Fit* LeastSquares(const std::vector<Fit>& fits) {
   return best;
 }
 
+// Whether the Bayesian information criterion prefers a fit with one parameter more, of
+// residual sum of squares `rss`, to one of `simpler_rss`, both over `points` points:
+// points ln(simpler_rss / rss) > ln(points).
+bool BicPrefers(double simpler_rss, double rss, std::size_t points) {
+  const auto k = static_cast<double>(points);
+  return k * std::log(simpler_rss / rss) > std::log(k);
+}
+
 std::string PlusMinus(const Estimate& e, const char* unit) {
   return FormatNumber(e.value) + " +- " + FormatNumber(e.standard_error) + unit;
 }
@@ -235,8 +243,21 @@ EccentricIdentification IdentifyEccentric(const std::vector<DataPoint>& lengthen
 
   const std::string count = std::to_string(out.points) + " with v < 0";
   const Fit* free = LeastSquares(unbounded);
+  const Fit* bound = LeastSquares(bounded);
+  // a tension flat over the eccentric points (at f_iso, or saturated at L f_iso) has no
+  // v_max_e to show: the branch must beat a constant by the Bayesian information criterion
+  double mean = 0.0, flat_rss = 0.0;
+  for (const DataPoint& p : lengthening) mean += p.y / static_cast<double>(out.points);
+  for (const DataPoint& p : lengthening) flat_rss += (p.y - mean) * (p.y - mean);
+  const double branch_rss = std::min(free ? free->rss : kInfinity, bound ? bound->rss : kInfinity);
+  const bool beats_flat = BicPrefers(flat_rss, branch_rss, out.points);
   if (out.points < kMinPoints) {
     out.why_not = "too few eccentric points: " + count + ", need at least 3 for v_max_e and n_e";
+  } else if (free && !beats_flat) {
+    out.why_not = "the tension shows no trend with the lengthening speed (flat at " +
+                  FormatNumber(mean) + " N to within the noise, RMSE " +
+                  FormatNumber(std::sqrt(flat_rss / static_cast<double>(out.points))) +
+                  " N): nothing determines v_max_e and n_e";
   } else if (!free) {
     out.why_not = "the tension does not rise with the lengthening speed for any n_e in 1..10";
   } else if (!Determined(*free)) {
@@ -247,7 +268,6 @@ EccentricIdentification IdentifyEccentric(const std::vector<DataPoint>& lengthen
     out.best = free->candidate;
   }
 
-  const Fit* bound = LeastSquares(bounded);
   // residuals of 1e-12 of the tensions are rounding: a fit that good leaves nothing to explain
   const double rounding = static_cast<double>(out.points) * std::pow(1e-12 * scale, 2);
   if (!out.identified) {
@@ -260,8 +280,7 @@ EccentricIdentification IdentifyEccentric(const std::vector<DataPoint>& lengthen
     out.why_no_limit = "the bounded fit's Jacobian is singular: v_max_e and L cannot be told apart";
   } else if (free->rss <= rounding) {
     out.why_no_limit = "the unbounded branch fits the eccentric points to rounding";
-  } else if (!(static_cast<double>(out.points) * std::log(free->rss / bound->rss) >
-               std::log(static_cast<double>(out.points)))) {
+  } else if (!BicPrefers(free->rss, bound->rss, out.points)) {
     out.why_no_limit = "no sign of levelling off: a limit fits no better than no limit (RMSE " +
                        FormatNumber(bound->candidate.rmse) + " N against " +
                        FormatNumber(free->candidate.rmse) +
