@@ -202,5 +202,52 @@ TEST(IdentifyEccentric, ConcentricPartComesFromNonNegativeVelocities) {
   EXPECT_NO_THROW(IdentifyVelocity(eccentric_only, 100.0));  // f_iso given: two suffice
 }
 
+std::vector<DataPoint> Shipped(const std::string& file) {
+  return ReadCurveCsv(std::string(MUSCLESIM_SOURCE_DIR) + "/data/" + file, "shortening_velocity",
+                      "tension", 3);
+}
+
+// |value - printed| within half a unit of the printed number's last digit.
+void ExpectPrinted(double value, double printed, double last_digit) {
+  EXPECT_NEAR(value, printed, 0.5 * last_digit * (1.0 + 1e-9)) << "printed " << printed;
+}
+
+TEST(IdentifyEccentric, ShippedDataAsTheReadmeSays) {
+  // README "Identification": the synthetic curve's branch, 0.92 +- 0.06 m/s, n_e = 3, no limit
+  const VelocityIdentification synthetic = IdentifyVelocity(Shipped("synthetic_velocity.csv"), std::nullopt);
+  const EccentricIdentification& s = Eccentric(synthetic);
+  ASSERT_TRUE(s.identified) << s.why_not;
+  EXPECT_EQ(s.points, 10u);
+  EXPECT_EQ(s.best.n, 3);
+  ExpectPrinted(s.best.v_max.value, 0.92, 0.01);
+  ExpectPrinted(s.best.v_max.standard_error, 0.06, 0.01);
+  EXPECT_FALSE(s.limit_identified);
+  EXPECT_THAT(s.why_no_limit, HasSubstr("no sign of levelling off"));
+  // the data's own truth (v_max_e = 1 m/s, n_e = 3) within two standard errors
+  EXPECT_LT(std::abs(s.best.v_max.value - 1.0), 2.0 * s.best.v_max.standard_error);
+
+  // data/eccentric.yaml: 0.523 +- 0.033 m/s, n_e = 2, L = 1.779 +- 0.014, each within two
+  // standard errors of the truth (0.5 m/s, 2, 1.8)
+  const EccentricIdentification e =
+      Eccentric(IdentifyVelocity(Shipped("eccentric_velocity.csv"), std::nullopt));
+  ASSERT_TRUE(e.limit_identified) << e.why_no_limit;
+  EXPECT_EQ(e.best.n, 2);
+  ExpectPrinted(e.best.v_max.value, 0.523, 0.001);
+  ExpectPrinted(e.best.v_max.standard_error, 0.033, 0.001);
+  ExpectPrinted(e.best.limit.value, 1.779, 0.001);
+  ExpectPrinted(e.best.limit.standard_error, 0.014, 0.001);
+  EXPECT_LT(std::abs(e.best.v_max.value - 0.5), 2.0 * e.best.v_max.standard_error);
+  EXPECT_LT(std::abs(e.best.limit.value - 1.8), 2.0 * e.best.limit.standard_error);
+
+  // "without it the concentric points alone put f_iso at 121 N": the synthetic curve
+  // without its isometric point
+  std::vector<DataPoint> moving;
+  for (const DataPoint& p : Shipped("synthetic_velocity.csv")) {
+    if (p.x != 0.0) moving.push_back(p);
+  }
+  ASSERT_EQ(moving.size(), 30u);
+  ExpectPrinted(IdentifyVelocity(moving, std::nullopt).best.f_iso.value, 121.0, 1.0);
+}
+
 }  // namespace
 }  // namespace musclesim
