@@ -202,6 +202,27 @@ TEST(EccentricVelocity, KinkFlaggedExactlyWhenTheSlopesDiffer) {
   }
 }
 
+TEST(EccentricVelocity, ExtremeAllowedValuesGiveFiniteValuesAndSlopes) {
+  // the corners of the accepted ranges, at the speeds `curves --velocity` reaches (1e3 m/s)
+  for (double eps : {1e-12, 1.0}) {
+    for (double v_max_e : {eps, 1e12 * eps}) {
+      for (int n_e : {1, kMaxVelocityExponent}) {
+        for (std::optional<double> limit :
+             {std::optional<double>{}, std::optional<double>{std::nextafter(1.0, 2.0)},
+              std::optional<double>{kMaxEccentricLimit}}) {
+          const VelocityCurve curve(Asymmetric(v_max_e, n_e, limit, 1.0, 3, eps));
+          for (double v : {-1e3, -1.0, -eps, -1e-300, 0.0}) {
+            const CurvePoint g = curve.Evaluate(v);
+            EXPECT_TRUE(std::isfinite(g.value) && std::isfinite(g.slope))
+                << "eps " << eps << " v_max_e " << v_max_e << " n_e " << n_e << " v " << v;
+            EXPECT_GE(g.value, 1.0);  // the lengthening side never pulls less than at rest
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST(EccentricVelocity, ValidateRejectsEachRule) {
   auto broken = [](VelocityParams p) { return testing::Rejection([&] { Validate(p); }); };
   EXPECT_THAT(broken(Asymmetric(0.0, 2, 1.5)), HasSubstr("eccentric.v_max = 0: must be finite and > 0"));
