@@ -113,6 +113,15 @@ ModelYamlDraft DraftModel(const IdentifySpec& spec,
         eccentric_comments.push_back(other_exponents);
       }
     }
+    try {
+      Validate(params);  // extreme eccentric estimates may break the model's rules: say so
+    } catch (const ParameterError& error) {
+      params.eccentric = {};
+      params.epsilon = StandInEpsilon(best.v_max.value);
+      epsilon_rule = "1e-3 v_max";
+      eccentric_comments.push_back("eccentric branch left out: it gives velocity." + error.path() +
+                                   " = " + error.value() + ", which " + error.rule());
+    }
     draft.velocity.params = params;
     draft.velocity.comments = {"v_max = " + PlusMinus(best.v_max) + " m/s, RMSE " +
                                    FormatNumber(best.rmse) + " N; epsilon is not identified (" +

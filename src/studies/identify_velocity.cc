@@ -33,9 +33,10 @@ VelocityIdentification IdentifyVelocity(const std::vector<DataPoint>& all,
   for (const DataPoint& p : all) (p.x < 0 ? lengthening : data).push_back(p);
   const std::size_t needed = f_iso ? 2 : 3;
   if (!lengthening.empty() && data.size() < needed) {
-    throw InputError("velocity data: " + std::to_string(data.size()) +
-                     " points with shortening velocity >= 0; the concentric branch (v_max, n" +
-                     (f_iso ? "" : ", f_iso") + ") needs at least " + std::to_string(needed));
+    throw InputError("velocity data: points with v >= 0: " + std::to_string(data.size()) +
+                     "; the concentric branch (v_max, n" + (f_iso ? "" : ", f_iso") +
+                     ") needs at least " + std::to_string(needed) +
+                     " (the points v < 0 give the eccentric branch only)");
   }
   const auto n_points = static_cast<Eigen::Index>(data.size());
   for (int n = 1; n <= 10; ++n) {
@@ -81,7 +82,9 @@ VelocityIdentification IdentifyVelocity(const std::vector<DataPoint>& all,
                      "in 1..10; nothing to fit");
   }
   out.best = *best;
-  if (!lengthening.empty()) out.eccentric = identify_detail::IdentifyEccentric(lengthening, out.best.f_iso);
+  if (!lengthening.empty()) {
+    out.eccentric = identify_detail::IdentifyEccentric(lengthening, out.best.f_iso);
+  }
   return out;
 }
 
