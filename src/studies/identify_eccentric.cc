@@ -36,8 +36,8 @@ Bend Bent(double psi, double q) {
   const double r = std::sqrt(q), z = r * psi, t = std::tanh(z), sech2 = 1.0 - t * t;
   // dm/dq = (z sech^2 z - tanh z) / (2 q^(3/2)); its two terms cancel to O(z^3) for small z,
   // where the series -2/3 z^3 + 8/15 z^5 - 34/105 z^7 is exact to 1e-12 relative
-  const double d_q = z < 1e-2 ? psi * psi * psi * (-1.0 / 3.0 + z * z * (4.0 / 15.0 - z * z * 17.0 / 105.0))
-                              : (z * sech2 - t) / (2.0 * q * r);
+  const double series = -1.0 / 3.0 + z * z * (4.0 / 15.0 - z * z * 17.0 / 105.0);
+  const double d_q = z < 1e-2 ? psi * psi * psi * series : (z * sech2 - t) / (2.0 * q * r);
   return {t / r, sech2, d_q};
 }
 
@@ -102,8 +102,9 @@ Eigen::MatrixXd ParameterCovariance(const Linearisation& at, double f_iso_varian
   if (!FullRank(at.jacobian)) return Eigen::MatrixXd::Constant(p, p, kNaN);
   Eigen::MatrixXd cov = Covariance(at.jacobian, at.rss());
   if (f_iso_variance > 0.0) {
+    const Eigen::MatrixXd normal = at.jacobian.transpose() * at.jacobian;
     const Eigen::VectorXd sensitivity =
-        -(at.jacobian.transpose() * at.jacobian).ldlt().solve(at.jacobian.transpose() * at.by_f_iso);
+        -normal.ldlt().solve(at.jacobian.transpose() * at.by_f_iso);
     cov += f_iso_variance * sensitivity * sensitivity.transpose();
   }
   return cov;
@@ -128,7 +129,9 @@ Fit Finish(const Branch& b, double c, double q, bool bounded, double f_iso_varia
     fit.q = q;
     fit.q_error = std::sqrt(cov(1, 1));
     // dL/dq = -q^(-3/2) / 2
-    if (q > 0.0) fit.candidate.limit = {1.0 + 1.0 / std::sqrt(q), fit.q_error / (2.0 * q * std::sqrt(q))};
+    if (q > 0.0) {
+      fit.candidate.limit = {1.0 + 1.0 / std::sqrt(q), fit.q_error / (2.0 * q * std::sqrt(q))};
+    }
   }
   return fit;
 }
@@ -221,21 +224,24 @@ EccentricIdentification IdentifyEccentric(const std::vector<DataPoint>& lengthen
                                           const Estimate& f_iso) {
   EccentricIdentification out;
   out.points = lengthening.size();
+  // 0 when f_iso was given; the concentric fit always leaves a degree of freedom (it needs 3
+  // points for 2 parameters), so its error is finite when fitted
   const double f_iso_variance =
       std::isfinite(f_iso.standard_error) ? f_iso.standard_error * f_iso.standard_error : 0.0;
   const auto k = static_cast<Eigen::Index>(lengthening.size());
-  double scale = 0.0;
+  Eigen::VectorXd tension(k);
+  for (Eigen::Index i = 0; i < k; ++i) tension(i) = lengthening[static_cast<std::size_t>(i)].y;
+  const double scale = k > 0 ? tension.cwiseAbs().maxCoeff() : 0.0;  // [N]
   std::vector<Fit> unbounded, bounded;
-  for (int n = 1; n <= kMaxExponent && out.points > 0; ++n) {
-    Branch b{n, Eigen::VectorXd(k), Eigen::VectorXd(k), f_iso.value};
+  for (int n = 1; n <= kMaxExponent && k > 0; ++n) {
+    Branch b{n, Eigen::VectorXd(k), tension, f_iso.value};
     for (Eigen::Index i = 0; i < k; ++i) {
       b.s(i) = std::pow(-lengthening[static_cast<std::size_t>(i)].x, 1.0 / n);
-      b.tension(i) = lengthening[static_cast<std::size_t>(i)].y;
-      scale = std::max(scale, std::abs(b.tension(i)));
     }
     unbounded.push_back(FitUnbounded(b, f_iso_variance));
-    bounded.push_back(out.points >= kMinLimitPoints ? FitBounded(b, unbounded.back(), f_iso_variance)
-                                                    : Fit{});
+    bounded.push_back(out.points >= kMinLimitPoints
+                          ? FitBounded(b, unbounded.back(), f_iso_variance)
+                          : Fit{});
     bounded.back().candidate.n = n;
     out.unbounded.push_back(unbounded.back().candidate);
     out.bounded.push_back(bounded.back().candidate);

@@ -99,10 +99,11 @@ std::vector<std::string> DescribeEccentric(const EccentricIdentification& e) {
     return {"eccentric branch not identifiable from the data (" + points + "): " + e.why_not +
             "; the model keeps the concentric v_max and n for it, and no limit"};
   }
-  std::vector<std::string> notes = {
-      "eccentric branch (" + points + "): v_max = " + plus_minus(e.best.v_max) + " m/s, n = " +
-      std::to_string(e.best.n) + (e.limit_identified ? ", limit = " + plus_minus(e.best.limit) : "") +
-      "; RMSE " + FormatNumber(e.best.rmse) + " N"};
+  const std::string limit = e.limit_identified ? ", limit = " + plus_minus(e.best.limit) : "";
+  std::vector<std::string> notes = {"eccentric branch (" + points + "): v_max = " +
+                                    plus_minus(e.best.v_max) + " m/s, n = " +
+                                    std::to_string(e.best.n) + limit + "; RMSE " +
+                                    FormatNumber(e.best.rmse) + " N"};
   if (!e.limit_identified) {
     notes.push_back("eccentric limit not identifiable from the data: " + e.why_no_limit +
                     "; the model has none (the paper's unbounded form)");
