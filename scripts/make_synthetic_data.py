@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Writes the derived data files in data/: synthetic measured curves (known model parameters
-plus seeded Gaussian noise), the Gordon-Huxley-Julian polygon sampled evenly, and Hill's
-force-velocity curve. Standard library only; the same seed gives the same files.
+plus seeded Gaussian noise), among them a tension-velocity curve with an eccentric limit, the
+Gordon-Huxley-Julian polygon sampled evenly, and Hill's force-velocity curve. Standard library
+only; the same seed gives the same files.
     python3 scripts/make_synthetic_data.py
 """
 import math
@@ -63,6 +64,27 @@ def main():
           velocity)
 
 
+def eccentric():
+    """The asymmetric tension-velocity curve of docs/model.md section 9 (unregularised): the
+    canonical concentric branch, and an eccentric one with v_max_e = 0.5 m/s, n_e = 2 and the
+    limit L = 1.8, from -1 to 1 m/s, plus N(0, 1 N^2) noise with its own seed."""
+    rng = random.Random(20261123)
+    v_max_e, n_e, limit = 0.5, 2, 1.8
+    rows = []
+    for i in range(41):
+        v = -1.0 + 0.05 * i
+        if v >= 0:
+            g = 1 - (v / V_MAX) ** (1.0 / N)
+        else:
+            psi = (-v / v_max_e) ** (1.0 / n_e)
+            g = 1 + (limit - 1) * math.tanh(psi / (limit - 1))
+        rows.append((v, F_ISO * g + rng.gauss(0.0, 1.0)))
+    write("eccentric_velocity.csv", "shortening_velocity,tension",
+          ["synthetic asymmetric tension-velocity curve (docs/model.md section 9): f_iso = 100 N,",
+           "v_max = 1 m/s, n = 3; eccentric v_max = 0.5 m/s, n = 2, limit L = 1.8;",
+           "plus N(0, 1 N^2) noise, seed 20261123 (scripts/make_synthetic_data.py)"], rows)
+
+
 def sampled_ghj():
     """The GHJ breakpoints of data/ghj1966_breakpoints.csv, sampled every 0.05 um."""
     points = []
@@ -100,3 +122,4 @@ if __name__ == "__main__":
     sampled_ghj()
     hill()
     main()
+    eccentric()

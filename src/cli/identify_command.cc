@@ -26,7 +26,9 @@ can be weakly determined: see the README). DATA.yaml holds any of:
   passive:  {csv: passive.csv}                                columns length,tension
   active:   {csv: active.csv, count: 3, nonnegative: true}    columns length,tension
   velocity: {csv: velocity.csv, f_iso: 100}                   columns shortening_velocity,tension
-(CSV paths relative to DATA.yaml; f_iso optional, held fixed when given.)
+(CSV paths relative to DATA.yaml; f_iso optional, held fixed when given.) Velocity data with
+points v < 0 give the eccentric branch too (v_max, n and a limit under `eccentric:`), the
+concentric one then coming from v >= 0; what the data cannot determine is said so and left out.
   -o PATH         write the model block there (atomically) instead of standard output
   --report PATH   also write a Markdown report comparing each fit with a natural cubic spline
                   and polynomials of degree 3 and 4 (RMSE, leave-one-out RMSE, behaviour outside
@@ -88,18 +90,51 @@ ModelYamlDraft DraftModel(const IdentifySpec& spec,
 
   if (velocity) {
     const VelocityCandidate& best = velocity->best;
-    draft.velocity.params =
-        VelocityParams{best.v_max.value, best.n, StandInEpsilon(best.v_max.value)};
+    VelocityParams params{best.v_max.value, best.n, StandInEpsilon(best.v_max.value)};
     std::string others = "other n:";
     for (const VelocityCandidate& c : velocity->candidates) {
       if (c.n == best.n) continue;
       others += " n=" + std::to_string(c.n) + " " +
                 (c.valid ? "RMSE " + FormatNumber(c.rmse) : "no fit") + ";";
     }
+    std::vector<std::string> eccentric_comments;
+    std::string epsilon_rule = "1e-3 v_max";
+    if (velocity->eccentric) {
+      const EccentricIdentification& e = *velocity->eccentric;
+      eccentric_comments = DescribeEccentric(e);
+      if (e.identified) {
+        params.eccentric = {e.best.v_max.value, e.best.n, std::nullopt};
+        if (e.limit_identified) params.eccentric.limit = e.best.limit.value;
+        // eps must not exceed either v_max (the model's rule)
+        if (e.best.v_max.value < best.v_max.value) {
+          params.epsilon = StandInEpsilon(e.best.v_max.value);
+          epsilon_rule = "1e-3 times the eccentric v_max, the smaller";
+        }
+        std::string other_exponents = "other eccentric n:";
+        for (const EccentricCandidate& c : e.limit_identified ? e.bounded : e.unbounded) {
+          if (c.n == e.best.n) continue;
+          other_exponents += " n=" + std::to_string(c.n) + " " +
+                             (c.valid ? "RMSE " + FormatNumber(c.rmse) : "no fit") + ";";
+        }
+        eccentric_comments.push_back(other_exponents);
+      }
+    }
+    try {
+      Validate(params);  // extreme eccentric estimates may break the model's rules: say so
+    } catch (const ParameterError& error) {
+      params.eccentric = {};
+      params.epsilon = StandInEpsilon(best.v_max.value);
+      epsilon_rule = "1e-3 v_max";
+      eccentric_comments.push_back("eccentric branch left out: it gives velocity." + error.path() +
+                                   " = " + error.value() + ", which " + error.rule());
+    }
+    draft.velocity.params = params;
     draft.velocity.comments = {"v_max = " + PlusMinus(best.v_max) + " m/s, RMSE " +
-                                   FormatNumber(best.rmse) +
-                                   " N; epsilon is not identified (1e-3 v_max)",
+                                   FormatNumber(best.rmse) + " N; epsilon is not identified (" +
+                                   epsilon_rule + ")",
                                others};
+    draft.velocity.comments.insert(draft.velocity.comments.end(), eccentric_comments.begin(),
+                                   eccentric_comments.end());
   } else {
     draft.velocity.comments = {"not identified: g close to 1"};
   }
@@ -187,6 +222,7 @@ int IdentifyCommand(int argc, char** argv) {
         return std::function<double(double)>([fit](double v) { return fit.Evaluate(v); });
       }});
       comparisons.push_back(Compare("tension-velocity", "shortening velocity units of the CSV", data, models));
+      if (velocity->eccentric) comparisons.back().notes = DescribeEccentric(*velocity->eccentric);
     }
   }
 

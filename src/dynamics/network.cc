@@ -131,6 +131,9 @@ void NetworkSystem::Resolve() {
       kinks_.push_back(
           {Kink::kLength, static_cast<int>(e), element.model->params().passive.slack_length});
     }
+    if (element.kind == ElementKind::kActuator && element.model->velocity().has_kink()) {
+      kinks_.push_back({Kink::kLengtheningRate, static_cast<int>(e), 0.0});  // v = 0
+    }
   }
 
   std::vector<std::vector<Load>> node_loads(nodes_.size());

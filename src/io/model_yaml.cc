@@ -21,19 +21,38 @@ PassiveParams ReadPassive(const yaml::Source& src, const YAML::Node& node,
   return p;
 }
 
+// The curvature n of eq. 12: an integer 1..1000, written as a number ("3" or "3.0").
+int ReadExponent(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+  const double value = yaml::ReadNumber(src, node, path);
+  if (!(value >= 1.0 && value <= kMaxVelocityExponent) || value != std::floor(value)) {
+    yaml::Fail(src, node, path, yaml::Describe(node), "must be an integer >= 1 (at most 1000)");
+  }
+  return static_cast<int>(value);
+}
+
+// `eccentric: {v_max, n, limit}`, every key optional (docs/model.md section 9); the rules
+// between keys are the model's Validate.
+EccentricParams ReadEccentric(const yaml::Source& src, const YAML::Node& node,
+                              const std::string& path) {
+  yaml::RequireMap(src, node, path, {"v_max", "n", "limit"});
+  EccentricParams e;
+  if (node["v_max"]) e.v_max = yaml::ReadNumber(src, node["v_max"], Join(path, "v_max"));
+  if (node["n"]) e.n = ReadExponent(src, node["n"], Join(path, "n"));
+  if (node["limit"]) e.limit = yaml::ReadNumber(src, node["limit"], Join(path, "limit"));
+  return e;
+}
+
 VelocityParams ReadVelocity(const yaml::Source& src, const YAML::Node& node,
                             const std::string& path) {
-  yaml::RequireMap(src, node, path, {"v_max", "n", "epsilon"});
+  yaml::RequireMap(src, node, path, {"v_max", "n", "epsilon", "eccentric"});
   VelocityParams p;
   p.v_max = yaml::ReadNumber(src, Required(src, node, path, "v_max"), Join(path, "v_max"));
-  const YAML::Node n = Required(src, node, path, "n");
-  const double n_value = yaml::ReadNumber(src, n, Join(path, "n"));
-  if (!(n_value >= 1.0 && n_value <= 1000.0) || n_value != std::floor(n_value)) {
-    yaml::Fail(src, n, Join(path, "n"), yaml::Describe(n), "must be an integer >= 1 (at most 1000)");
-  }
-  p.n = static_cast<int>(n_value);
+  p.n = ReadExponent(src, Required(src, node, path, "n"), Join(path, "n"));
   p.epsilon =
       yaml::ReadNumber(src, Required(src, node, path, "epsilon"), Join(path, "epsilon"));
+  if (node["eccentric"]) {
+    p.eccentric = ReadEccentric(src, node["eccentric"], Join(path, "eccentric"));
+  }
   return p;
 }
 

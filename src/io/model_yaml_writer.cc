@@ -54,9 +54,21 @@ std::string PassiveMap(const PassiveParams& p, NumberFormat number) {
          ", slack_length: " + number(p.slack_length) + "}";
 }
 
+// `eccentric: {...}` with the keys given, or nothing when none is (the symmetric curve).
+std::string EccentricEntry(const EccentricParams& e, NumberFormat number) {
+  std::string keys;
+  const auto add = [&](const std::string& key_value) {
+    keys += (keys.empty() ? "" : ", ") + key_value;
+  };
+  if (e.v_max) add("v_max: " + number(*e.v_max));
+  if (e.n) add("n: " + std::to_string(*e.n));
+  if (e.limit) add("limit: " + number(*e.limit));
+  return keys.empty() ? "" : ", eccentric: {" + keys + "}";
+}
+
 std::string VelocityMap(const VelocityParams& p, NumberFormat number) {
   return "{v_max: " + number(p.v_max) + ", n: " + std::to_string(p.n) +
-         ", epsilon: " + number(p.epsilon) + "}";
+         ", epsilon: " + number(p.epsilon) + EccentricEntry(p.eccentric, number) + "}";
 }
 
 std::string ActiveLengthBlock(const ModelYamlPart<ActiveLengthParams>& part,

@@ -5,6 +5,16 @@
 
 namespace musclesim::yaml {
 
+namespace {
+
+// Blocks whose keys are all optional, so that a file may leave the block out entirely:
+// `--set` of one of their keys creates the block. Any other missing map is a misspelt path.
+bool IsOptionalBlock(const std::string& key) {
+  return key == "eccentric";  // model.velocity.eccentric (docs/model.md section 9)
+}
+
+}  // namespace
+
 void ApplyOverride(YAML::Node root, const std::string& text, const std::string& file) {
   const std::size_t eq = text.find('=');
   if (eq == std::string::npos) {
@@ -46,7 +56,10 @@ void ApplyOverride(YAML::Node root, const std::string& text, const std::string& 
                          " is not a map in " + file);
       }
       if (!node[step.key] && !last) {
-        throw InputError("--set " + text + ": " + here + " does not exist in " + file);
+        if (!IsOptionalBlock(step.key)) {
+          throw InputError("--set " + text + ": " + here + " does not exist in " + file);
+        }
+        node[step.key] = YAML::Node(YAML::NodeType::Map);  // filled by the steps below
       }
       if (last) {
         if (node[step.key] && !node[step.key].IsScalar() && !node[step.key].IsNull()) {

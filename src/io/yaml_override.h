@@ -10,8 +10,9 @@
 namespace musclesim::yaml {
 
 // Applies `text` ("dotted.path=value", the path as io/key_path.h reads it) to `root`, the
-// top-level map of `file` (named in messages). Throws InputError when the text is not
-// KEY=VALUE, the path is malformed, leads nowhere, or names a map or list.
+// top-level map of `file` (named in messages). A block whose keys are all optional
+// (model.velocity.eccentric) is created when the file leaves it out. Throws InputError when
+// the text is not KEY=VALUE, the path is malformed, leads nowhere, or names a map or list.
 void ApplyOverride(YAML::Node root, const std::string& text, const std::string& file);
 
 }  // namespace musclesim::yaml

@@ -139,6 +139,28 @@ std::vector<std::string> PassiveUncertaintyNotes(const PassiveIdentification& fi
   return {interval, carried};
 }
 
+std::vector<std::string> DescribeEccentric(const EccentricIdentification& e) {
+  const auto plus_minus = [](const Estimate& x) {
+    return FormatNumber(x.value) + " +- " +
+           (std::isfinite(x.standard_error) ? FormatNumber(x.standard_error) : "n/a");
+  };
+  const std::string points = std::to_string(e.points) + " points with v < 0";
+  if (!e.identified) {
+    return {"eccentric branch not identifiable from the data (" + points + "): " + e.why_not +
+            "; the model keeps the concentric v_max and n for it, and no limit"};
+  }
+  const std::string limit = e.limit_identified ? ", limit = " + plus_minus(e.best.limit) : "";
+  std::vector<std::string> notes = {"eccentric branch (" + points + "): v_max = " +
+                                    plus_minus(e.best.v_max) + " m/s, n = " +
+                                    std::to_string(e.best.n) + limit + "; RMSE " +
+                                    FormatNumber(e.best.rmse) + " N"};
+  if (!e.limit_identified) {
+    notes.push_back("eccentric limit not identifiable from the data: " + e.why_no_limit +
+                    "; the model has none (the paper's unbounded form)");
+  }
+  return notes;
+}
+
 CurveComparison Compare(const std::string& curve, const std::string& x_unit,
                         const std::vector<DataPoint>& data,
                         const std::vector<std::pair<std::string, Fitter>>& models) {

@@ -6,7 +6,9 @@
 //             interval from the same profile;
 //   active:   a sum of Gaussians by the closed-form samples fit; f_iso its maximum;
 //   velocity: for each n in 1..10, f_iso and v_max by linear least squares in
-//             s = sgn(v) |v|^(1/n) (T = f_iso - (f_iso / v_max^(1/n)) s), the best n kept.
+//             s = sgn(v) |v|^(1/n) (T = f_iso - (f_iso / v_max^(1/n)) s), the best n kept;
+//             when the data hold eccentric points (v < 0), this from the points v >= 0
+//             only, and the eccentric branch (docs/model.md section 9) from those v < 0.
 // Standard errors come from the Jacobian at the optimum: sigma^2 (J^T J)^-1 with
 // sigma^2 = RSS / (points - parameters).
 #pragma once
@@ -85,10 +87,47 @@ struct VelocityCandidate {
   bool valid = false;  // false when the fit gives no positive v_max (tension rising with v)
 };
 
+// One fit of the eccentric branch, T = f_iso (1 + psi) or f_iso (1 + (L - 1) tanh(psi /
+// (L - 1))), psi = (-v / v_max_e)^(1/n_e), to the points with v < 0.
+struct EccentricCandidate {
+  int n = 1;              // n_e [-]
+  Estimate v_max;         // v_max_e [m/s]
+  Estimate limit;         // L [-]; value infinity (and error NaN) for the unbounded form
+  double rmse = 0.0;      // over the eccentric points [N]
+  bool valid = false;     // false when the tension does not rise with lengthening speed
+};
+
+// The eccentric branch, when the data hold points with v < 0. f_iso is held at the
+// concentric estimate (its standard error carried into the ones here). For each n_e in
+// 1..10 the unbounded form is a linear least-squares fit; the bounded one a Levenberg-
+// Marquardt fit in (v_max_e^(-1/n_e), q = 1/(L - 1)^2 >= 0), q = 0 being the unbounded form.
+// What the data cannot determine is said so, never guessed:
+//   identified: at least 3 eccentric points, the tension rising with lengthening speed,
+//     v_max_e's standard error finite and below its value, and the two-branch curve preferred
+//     to the symmetric one fitted to every point by the Bayesian information criterion
+//     (IdentifyVelocity decides this last rule; the symmetric fit is kept otherwise);
+//   limit_identified: besides, at least 4 eccentric points, the bounded fit's Jacobian of
+//     full rank, q more than two standard errors above 0 (a sign of levelling off), a better
+//     fit than the unbounded form by the Bayesian information criterion, and L <= 1e6.
+struct EccentricIdentification {
+  std::size_t points = 0;                   // data points with v < 0 [-]
+  bool identified = false;                  // v_max_e and n_e determined
+  bool limit_identified = false;            // L determined (implies `identified`)
+  std::string why_not;                      // when !identified: the reason, one sentence
+  std::string why_no_limit;                 // when !limit_identified: the reason
+  EccentricCandidate best;                  // what the model takes: the bounded candidate
+                                            // when limit_identified, else the unbounded one
+  std::vector<EccentricCandidate> unbounded;  // n_e = 1..10, no limit
+  std::vector<EccentricCandidate> bounded;    // n_e = 1..10, with a limit
+};
+
 struct VelocityIdentification {
   VelocityCandidate best;                     // the valid candidate of least RMSE
   std::vector<VelocityCandidate> candidates;  // n = 1..10
-  // Unregularised f_iso g(v) [N] at shortening velocity v [m/s].
+  std::optional<EccentricIdentification> eccentric;  // when the data hold points v < 0
+  // Unregularised f_iso g(v) [N] at shortening velocity v [m/s]: for v < 0 the identified
+  // eccentric branch, or the concentric power law mirrored when there is none (the model
+  // written out then has no `eccentric` block either).
   double Evaluate(double v) const;
 };
 

@@ -33,7 +33,7 @@ struct CurveComparison {
   std::string x_unit;              // the unit of x, as the report prints it
   std::size_t points = 0;          // data points compared on
   std::vector<ModelScore> models;  // one row each, in the order given
-  std::vector<std::string> notes;  // printed below the table, one item each [-]
+  std::vector<std::string> notes;  // sentences printed under the table, one bullet each
 };
 
 CurveComparison Compare(const std::string& curve, const std::string& x_unit,
@@ -49,7 +49,12 @@ std::vector<std::pair<std::string, Fitter>> ReferenceFitters();
 std::vector<std::string> PassiveUncertaintyNotes(const PassiveIdentification& fit,
                                                  const std::function<std::string(double)>& number);
 
-// A Markdown report: one table per curve, then its notes.
+// What the eccentric identification found, in sentences for a reader: the branch's
+// parameters with their standard errors, or plainly that the data do not determine them and
+// why, and the same for the limit.
+std::vector<std::string> DescribeEccentric(const EccentricIdentification& eccentric);
+
+// A Markdown report: one table per curve, its notes below it.
 std::string FormatReport(const std::vector<CurveComparison>& comparisons);
 
 }  // namespace musclesim
