@@ -2,6 +2,7 @@
 // dynamics: what CVODE calls in its innermost loop.
 #include <benchmark/benchmark.h>
 
+#include "musclesim/io/run_scenario.h"
 #include "musclesim/io/scenario.h"
 
 namespace musclesim {
@@ -9,7 +10,7 @@ namespace {
 
 ActuatorSystem Concentric() {
   const ScenarioSpec s = LoadScenario(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/concentric.yaml");
-  return ActuatorSystem(s.model.params, s.actuator, s.activation, s.loads);
+  return BuildSystem(s);
 }
 
 void BM_ActuatorAcceleration(benchmark::State& state) {

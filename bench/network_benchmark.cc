@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "musclesim/io/run_scenario.h"
 #include "musclesim/io/scenario.h"
 
 namespace musclesim {
@@ -26,7 +27,7 @@ ScenarioSpec Spec(const benchmark::State& state) {
 
 ActuatorSystem Canonical(const benchmark::State& state) {
   const ScenarioSpec s = Spec(state);
-  return ActuatorSystem(s.model.params, s.actuator, s.activation, s.loads);
+  return BuildSystem(s);
 }
 
 // The single actuator's network without its damper and spring (zero in the canonical
@@ -213,7 +214,7 @@ NetworkRunRequest AsNetworkRequest(const RunRequest& r) {
 // 2 the bare network run directly)
 void BM_SingleActuatorRun(benchmark::State& state) {
   const ScenarioSpec spec = Spec(state);
-  const ActuatorSystem system(spec.model.params, spec.actuator, spec.activation, spec.loads);
+  const ActuatorSystem system = BuildSystem(spec);
   const NetworkSystem bare = Bare(spec);
   const NetworkRunRequest request = AsNetworkRequest(spec.Request());
   Simulation simulation;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "musclesim/io/run_scenario.h"
 #include "musclesim/io/scenario.h"
 
 namespace musclesim {
@@ -22,7 +23,7 @@ void BM_SimulationRun(benchmark::State& state) {
   spec.solver.method = state.range(1) == 0 ? IntegrationMethod::kBdf : IntegrationMethod::kAdams;
   spec.solver.jacobian =
       state.range(2) == 0 ? JacobianKind::kAnalytic : JacobianKind::kDifferenceQuotient;
-  const ActuatorSystem system(spec.model.params, spec.actuator, spec.activation, spec.loads);
+  const ActuatorSystem system = BuildSystem(spec);
   Simulation simulation;
   std::vector<TrajectoryPoint> trajectory;
   // one untimed run allocates the CVODE memory and the trajectory's storage

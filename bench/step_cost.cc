@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "musclesim/io/run_scenario.h"
 #include "musclesim/io/scenario.h"
 
 namespace {
@@ -79,7 +80,7 @@ int main(int argc, char** argv) {
         const ScenarioSpec spec = LoadScenario(std::string(argv[1]) + "/" + name + ".yaml",
                                                {"model.velocity.epsilon=" + std::to_string(eps),
                                                 "model.velocity.n=" + std::to_string(n)});
-        const ActuatorSystem system(spec.model.params, spec.actuator, spec.activation, spec.loads);
+        const ActuatorSystem system = BuildSystem(spec);
         for (IntegrationMethod method : {IntegrationMethod::kBdf, IntegrationMethod::kAdams}) {
           for (JacobianKind jacobian : {JacobianKind::kAnalytic, JacobianKind::kDifferenceQuotient}) {
             SolverOptions options = spec.solver;

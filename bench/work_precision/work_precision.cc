@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "musclesim/io/run_scenario.h"
 #include "musclesim/io/scenario.h"
 
 namespace {
@@ -152,7 +153,7 @@ int main(int argc, char** argv) {
   }
   const ScenarioSpec spec = LoadScenario(argv[1]);
   const std::string name = std::filesystem::path(argv[1]).stem().string();
-  const ActuatorSystem system(spec.model.params, spec.actuator, spec.activation, spec.loads);
+  const ActuatorSystem system = BuildSystem(spec);
   Simulation sim;
 
   // the reference, and a second method to check it

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "musclesim/io/run_scenario.h"
 #include "musclesim/errors.h"
 #include "musclesim/io/scenario.h"
 #include "musclesim/solver/simulation.h"
@@ -70,8 +71,7 @@ struct Outcome {
 
 inline Outcome Simulate(const std::string& path, const std::vector<std::string>& sets = {}) {
   Outcome out{LoadScenario(path, sets), {}, {}};
-  const ActuatorSystem system(out.spec.model.params, out.spec.actuator, out.spec.activation,
-                              out.spec.loads);
+  const ActuatorSystem system = BuildSystem(out.spec);
   Simulation simulation;
   out.stats = simulation.Run(system, out.spec.solver, out.spec.Request(), out.trajectory);
   return out;
