@@ -525,6 +525,8 @@ const std::vector<Case> kCases = {
      {"passive.csv = {dir}/one_positive.csv ({at}): ", "fewer than 2 points with positive tension"}},
     {"IdentifyCsvNotANumber", "identify {file}", Data("csv: velocity.csv", "csv: @text.csv"), 2,
      {"velocity.csv = {dir}/text.csv ({at}): {dir}/text.csv:3: column tension = 'heavy': must be a number"}},
+    {"IdentifyEccentricWithoutConcentric", "identify {file}", Data("csv: velocity.csv", "csv: @eccentric_only.csv"), 2,
+     {"velocity.csv = {dir}/eccentric_only.csv ({at}): velocity data: points with v >= 0: 1; the concentric branch (v_max, n) needs at least 2"}},
     {"IdentifyCsvIsADirectory", "identify {file}", Data("csv: passive.csv", "csv: @sub"), 2,
      {"passive.csv = {dir}/sub ({at}): {dir}/sub: is a directory"}},
     {"IdentifyCsvEmptyName", "identify {file}", Data("csv: passive.csv", "csv: @\"\""), 2,
@@ -598,6 +600,7 @@ void WriteIdentifyData(const std::string& dir) {
          "0.115,20\n0.12,5\n";
   std::ofstream(dir + "/velocity.csv")
       << "shortening_velocity,tension\n0,100\n0.2,60\n0.4,35\n0.6,18\n0.8,7\n1.0,0\n";
+  std::ofstream(dir + "/eccentric_only.csv") << "shortening_velocity,tension\n-1,150\n-0.5,140\n-0.2,120\n0,100\n";
   std::ofstream(dir + "/zero.csv") << "length,tension\n0.1,0\n0.2,0\n0.3,0\n0.4,0\n";
   std::ofstream(dir + "/one_positive.csv") << "length,tension\n0.1,0\n0.2,0\n0.3,0\n0.4,5\n";
   std::ofstream(dir + "/text.csv") << "shortening_velocity,tension\n0,100\n0.5,heavy\n1,0\n";

@@ -10,7 +10,9 @@
 #include <random>
 #include <string>
 #include <utility>
+#include <vector>
 
+#include "musclesim/errors.h"
 #include "musclesim/studies/identify.h"
 #include "musclesim/studies/identify_report.h"
 #include "studies/student_t.h"
@@ -301,6 +303,35 @@ TEST(SlackLengthInterval, CoversTheTruthAtItsLevel) {
 TEST(SlackLengthInterval, RejectsALevelOutsideZeroToOne) {
   for (double level : {0.0, 1.0, -0.5, std::nan("")}) {
     EXPECT_THROW(IdentifyPassive(ShippedPassive(), level), std::invalid_argument) << level;
+  }
+}
+
+// Lengths 1e-8 m apart near 0.1 m: the bisection's tolerance (1e-10 of the span) is below the
+// spacing of doubles there, and the interval's ends must still be found (this looped forever).
+TEST(SlackLengthInterval, EndsFoundWhenTheToleranceIsBelowTheSpacingOfDoubles) {
+  const std::vector<DataPoint> data = {{0.1, 0.0}, {0.10000001, 1.0}, {0.10000002, 3.0},
+                                       {0.10000003, 8.0}, {0.10000004, 20.0}};
+  const PassiveIdentification fit = IdentifyPassive(data);
+  const ProfileInterval& in = fit.slack_length_interval;
+  EXPECT_LE(in.low, fit.slack_length.value);
+  EXPECT_GE(in.high, fit.slack_length.value);
+}
+
+// Finite data whose fit overflows is an input error, never a model of NaN or infinity.
+TEST(SlackLengthInterval, AFitThatOverflowsIsRefused) {
+  const std::vector<DataPoint> subnormal = {{1e-320, 0.0}, {2e-320, 1.0}, {3e-320, 3.0},
+                                            {4e-320, 8.0}};
+  const std::vector<DataPoint> huge_tension = {{0.1, 0.0}, {0.11, 1e308}, {0.12, 1e308},
+                                               {0.13, 1e308}};
+  for (const auto& data : {subnormal, huge_tension}) {
+    try {
+      const PassiveIdentification fit = IdentifyPassive(data);
+      // accepted: then every number is finite
+      EXPECT_TRUE(std::isfinite(fit.k_p.value) && std::isfinite(fit.alpha.value) &&
+                  std::isfinite(fit.slack_length.value));
+    } catch (const InputError& e) {
+      EXPECT_THAT(e.what(), HasSubstr("passive data"));
+    }
   }
 }
 

@@ -11,6 +11,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "musclesim/errors.h"
 #include "musclesim/model/passive.h"
 #include "studies/brent_minimum.h"
 #include "studies/identify_fit_statistics.h"
@@ -128,6 +129,16 @@ PassiveIdentification IdentifyPassive(const std::vector<DataPoint>& data, double
   out.alpha = {alpha, alpha * std::sqrt(cov(1, 1))};
   out.slack_length = {p(2), std::sqrt(cov(2, 2))};
   out.rmse = Rmse(rss, data.size());
+  // lengths or tensions near the ends of the doubles can defeat the fit: never write its
+  // overflow as a model
+  if (!std::isfinite(k) || !(k > 0.0) || !std::isfinite(alpha) || !(alpha > 0.0) ||
+      !std::isfinite(p(2)) || !std::isfinite(out.rmse)) {
+    throw InputError("passive data: the fit gives k_p = " + FormatNumber(k) + " N, alpha = " +
+                     FormatNumber(alpha) + " 1/m, slack_length = " + FormatNumber(p(2)) +
+                     " m, RMSE " + FormatNumber(out.rmse) +
+                     " N: not a passive curve; lengths [m] and tensions [N] must be of a "
+                     "size double precision can fit");
+  }
 
   // the estimate joins the scan, so that the interval holds it
   const ProfilePoint estimate = profile.At(p(2));

@@ -26,9 +26,12 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // inside end, so that the interval never claims more certainty than found.
 ProfilePoint Crossing(const PassiveProfile& profile, ProfilePoint inside, ProfilePoint outside,
                       double threshold, double tolerance) {
-  while (std::abs(outside.slack_length - inside.slack_length) > tolerance) {
-    const ProfilePoint middle =
-        profile.At(0.5 * (inside.slack_length + outside.slack_length));
+  // also ends where no double lies between the two (a tolerance below their spacing)
+  for (int halving = 0; halving < 200; ++halving) {
+    if (!(std::abs(outside.slack_length - inside.slack_length) > tolerance)) break;
+    const double x = 0.5 * (inside.slack_length + outside.slack_length);
+    if (x == inside.slack_length || x == outside.slack_length) break;
+    const ProfilePoint middle = profile.At(x);
     (middle.rss <= threshold ? inside : outside) = middle;
   }
   return inside;

@@ -113,16 +113,14 @@ VelocityIdentification IdentifyVelocity(const std::vector<DataPoint>& all,
   // with eccentric points: the concentric branch from v >= 0 alone (the v = 0 point, which
   // fixes f_iso, among them), the eccentric one from v < 0 with that f_iso
   const std::size_t needed = f_iso ? 2 : 3;
+  if (data.size() < needed) {
+    throw InputError("velocity data: points with v >= 0: " + std::to_string(data.size()) +
+                     "; the concentric branch (v_max, n" + (f_iso ? "" : ", f_iso") +
+                     ") needs at least " + std::to_string(needed) +
+                     " (the points v < 0 give the eccentric branch only)");
+  }
   EccentricIdentification eccentric;
   eccentric.points = lengthening.size();
-  if (data.size() < needed) {
-    eccentric.why_not = "only " + std::to_string(data.size()) +
-                        " points with v >= 0, and the concentric branch needs " +
-                        std::to_string(needed) + " to fix f_iso before the eccentric one";
-    eccentric.why_no_limit = eccentric.why_not;
-    out.eccentric = eccentric;
-    return out;
-  }
   const PowerLawFit concentric = FitPowerLaw(data, f_iso);
   if (!concentric.best.valid) {
     eccentric.why_not = "the points with v >= 0 alone show no tension falling with shortening "
