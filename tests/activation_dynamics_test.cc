@@ -198,7 +198,9 @@ TEST(ActivationDynamics, ActivationCatchingAFallingExcitationCrossesTheKink) {
 // ---- the Jacobian -------------------------------------------------------------------------
 
 using testing::Dense;
-using testing::DifferenceJacobian;
+using testing::AwayFromKinks;
+using testing::ExpectJacobianMatchesDifferences;
+using testing::PatternMask;
 
 // Two free nodes between a wall and a prescribed crank: two actuators with activation
 // dynamics (from the wall, and between the nodes), one without (to the crank), a spring and a
@@ -242,10 +244,7 @@ TEST(ActivationDynamics, JacobianMatchesCentralDifferencesOnItsPatternAndNothing
   const JacobianPattern& pattern = system.jacobian_pattern();
   const int n = system.state_size();
   ASSERT_EQ(pattern.size, n);
-  std::vector<bool> in_pattern(Dense(n, n, 0), false);
-  for (int k = 0; k < pattern.entries(); ++k) {
-    in_pattern[Dense(n, pattern.rows[k], pattern.ColumnOf(k))] = true;
-  }
+  const std::vector<bool> in_pattern = PatternMask(system);
   for (int j = 0; j < n; ++j) EXPECT_TRUE(in_pattern[Dense(n, j, j)]) << "diagonal " << j;
   // u of wall_a moves the accelerations of a (its `to`, row 1) only: the wall has no state
   EXPECT_TRUE(in_pattern[Dense(n, 1, 4)]);
@@ -267,33 +266,10 @@ TEST(ActivationDynamics, JacobianMatchesCentralDifferencesOnItsPatternAndNothing
     const std::vector<double> y = {xa, in(-scale, scale), xb, in(-scale, scale), in(0.0, 1.0),
                                    in(0.0, 1.0)};
     // a difference straddling a kink (e = u among them) measures neither side's slope
-    bool near_kink = false;
-    for (const NetworkSystem::Kink& kink : system.kinks()) {
-      near_kink = near_kink || std::abs(system.KinkValue(kink, t, y.data())) < 100.0 * kStep;
-    }
-    if (near_kink) continue;
+    if (!AwayFromKinks(system, t, y, 100.0 * kStep)) continue;
     ++states;
 
-    std::vector<double> values(static_cast<std::size_t>(pattern.entries()));
-    system.Jacobian(t, y.data(), values.data());
-    const std::vector<double> fd = DifferenceJacobian(system, t, y, kStep);
-    for (int k = 0; k < pattern.entries(); ++k) {
-      const int i = pattern.rows[k], j = pattern.ColumnOf(k);
-      const double reference = fd[Dense(n, i, j)];
-      // rounding costs 1e-16 |f| / h with |f| up to ~1e3 (m/s^2, and 1/s for udot): 1e-6
-      // absolute, doubled. Truncation, h^2 f''' / 6: the curves bend over 1e-2 m and over
-      // eps = 1e-3 m/s, udot over 0.5 in u: below 1e-8 relative, so 1e-7 is margin
-      EXPECT_NEAR(values[k], reference, 2e-6 + 1e-7 * std::abs(reference))
-          << "entry (" << i << ", " << j << ") at t = " << t;
-    }
-    for (int i = 0; i < n; ++i) {
-      for (int j = 0; j < n; ++j) {
-        if (in_pattern[Dense(n, i, j)]) continue;
-        // f_i does not depend on y_j: both evaluations do the same operations on the same
-        // numbers, so the difference is exactly zero
-        EXPECT_EQ(fd[Dense(n, i, j)], 0.0) << "entry (" << i << ", " << j << ") outside";
-      }
-    }
+    ExpectJacobianMatchesDifferences(system, t, y, kStep);
   }
 }
 

@@ -11,25 +11,14 @@
 
 #include "musclesim/errors.h"
 #include "musclesim/studies/identify.h"
+#include "support/normal_noise.h"
 
 namespace musclesim {
 namespace {
 
 using ::testing::HasSubstr;
 
-// Standard normal draws (Box-Muller on mt19937_64): reproducible on every platform.
-class Noise {
- public:
-  explicit Noise(std::uint64_t seed) : rng_(seed) {}
-  double operator()() {
-    const double u1 = (static_cast<double>(rng_() >> 11) + 0.5) * 0x1.0p-53;
-    const double u2 = static_cast<double>(rng_() >> 11) * 0x1.0p-53;
-    return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
-  }
-
- private:
-  std::mt19937_64 rng_;
-};
+using testing::Noise;
 
 struct Truth {
   double v_max_e = 0.5;                // m/s

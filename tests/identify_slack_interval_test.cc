@@ -16,6 +16,7 @@
 #include "musclesim/studies/identify.h"
 #include "musclesim/studies/identify_report.h"
 #include "studies/student_t.h"
+#include "support/normal_noise.h"
 #include "support/numeric.h"
 
 namespace musclesim {
@@ -63,20 +64,7 @@ TEST(StudentT, QuantileInvertsTheClosedForms) {
 
 // --- data like data/synthetic_passive.csv ------------------------------------------------
 
-// Standard normal draws, Box-Muller on std::mt19937_64: the same numbers with every standard
-// library (std::normal_distribution's algorithm is the library's choice).
-class Noise {
- public:
-  explicit Noise(std::uint64_t seed) : rng_(seed) {}
-  double operator()() {
-    const double u1 = (static_cast<double>(rng_() >> 11) + 0.5) * 0x1.0p-53;
-    const double u2 = static_cast<double>(rng_() >> 11) * 0x1.0p-53;
-    return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
-  }
-
- private:
-  std::mt19937_64 rng_;
-};
+using testing::Noise;
 
 // scripts/make_synthetic_data.py: k_p 1 N, alpha 100 /m, slack 0.105 m at 29 lengths
 // 0.09..0.16 m, noise of standard deviation 2% of the largest tension

@@ -9,6 +9,7 @@
 
 #include "musclesim/errors.h"
 #include "musclesim/studies/identify_report.h"
+#include "support/normal_noise.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {
@@ -16,19 +17,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-// Standard normal draws (Box-Muller on mt19937_64): reproducible on every platform.
-class Noise {
- public:
-  explicit Noise(std::uint64_t seed) : rng_(seed) {}
-  double operator()() {
-    const double u1 = (static_cast<double>(rng_() >> 11) + 0.5) * 0x1.0p-53;
-    const double u2 = static_cast<double>(rng_() >> 11) * 0x1.0p-53;
-    return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
-  }
-
- private:
-  std::mt19937_64 rng_;
-};
+using testing::Noise;
 
 constexpr double kKp = 1.0, kAlpha = 100.0, kSlack = 0.1043;
 

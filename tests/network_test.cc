@@ -143,26 +143,17 @@ TEST(Network, RightHandSideIsSection72ByHandWithTendonTautAndSheathSlack) {
 // ---- the Jacobian against central differences -------------------------------------------
 
 using testing::Dense;
-using testing::DifferenceJacobian;
 
-// Whether (t, y) is more than `margin` (in the kink's unit) from every kink.
-bool AwayFromKinks(const NetworkSystem& system, double t, const std::vector<double>& y,
-                   double margin) {
-  for (const NetworkSystem::Kink& kink : system.kinks()) {
-    if (std::abs(system.KinkValue(kink, t, y.data())) < margin) return false;
-  }
-  return true;
-}
+using testing::AwayFromKinks;
+using testing::ExpectJacobianMatchesDifferences;
+using testing::PatternMask;
 
 TEST(Network, JacobianMatchesCentralDifferencesOnItsPatternAndNothingLiesOutside) {
   const NetworkSystem system = EveryKind();
   const JacobianPattern& pattern = system.jacobian_pattern();
   const int n = system.state_size();
   ASSERT_EQ(pattern.size, n);
-  std::vector<bool> in_pattern(Dense(n, n, 0), false);
-  for (int k = 0; k < pattern.entries(); ++k) {
-    in_pattern[Dense(n, pattern.rows[k], pattern.ColumnOf(k))] = true;
-  }
+  const std::vector<bool> in_pattern = PatternMask(system);
   for (int j = 0; j < n; ++j) {
     EXPECT_TRUE(in_pattern[Dense(n, j, j)]) << "diagonal " << j;
   }
@@ -183,27 +174,7 @@ TEST(Network, JacobianMatchesCentralDifferencesOnItsPatternAndNothingLiesOutside
     if (!AwayFromKinks(system, t, y, 100.0 * kStep)) continue;
     ++states;
 
-    std::vector<double> values(static_cast<std::size_t>(pattern.entries()));
-    system.Jacobian(t, y.data(), values.data());
-    const std::vector<double> fd = DifferenceJacobian(system, t, y, kStep);
-    for (int k = 0; k < pattern.entries(); ++k) {
-      const int i = pattern.rows[k], j = pattern.ColumnOf(k);
-      const double reference = fd[Dense(n, i, j)];
-      // rounding costs 1e-16 |f| / h, |f| up to ~1e3 m/s^2: 1e-6 absolute, doubled; the
-      // truncation h^2 f''' / 6 is below 1e-8 relative (the curves bend over 1e-2 m,
-      // and over eps = 1e-3 m/s in velocity: (1e-7 / 1e-3)^2), so 1e-7 relative is margin
-      EXPECT_NEAR(values[k], reference, 2e-6 + 1e-7 * std::abs(reference))
-          << "entry (" << i << ", " << j << ") at t = " << t;
-    }
-    for (int i = 0; i < n; ++i) {
-      for (int j = 0; j < n; ++j) {
-        if (in_pattern[Dense(n, i, j)]) continue;
-        // f_i does not depend on y_j: both evaluations do the same operations on the same
-        // numbers, so the difference is exactly zero
-        EXPECT_EQ(fd[Dense(n, i, j)], 0.0)
-            << "entry (" << i << ", " << j << ") outside the pattern";
-      }
-    }
+    ExpectJacobianMatchesDifferences(system, t, y, kStep);
   }
 }
 
