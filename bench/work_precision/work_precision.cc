@@ -8,7 +8,6 @@
 // Errors: the largest relative error of the length over the output grid, and of the total
 // tension relative to its largest value; `error` is the larger of the two.
 #include <algorithm>
-#include <boost/numeric/odeint.hpp>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -20,6 +19,7 @@
 
 #include "musclesim/io/run_scenario.h"
 #include "musclesim/io/scenario.h"
+#include "odeint_peer.h"
 
 namespace {
 
@@ -77,23 +77,20 @@ Grid Cvode(const ScenarioSpec& spec, const ActuatorSystem& system, Simulation& s
 // Boost.Odeint: rosenbrock4 with its error controller and dense output, given the analytic
 // Jacobian, integrated segment by segment between the inputs' breakpoints (restarting at
 // each, as a careful user would) and observed on the same output grid.
-using Vector = boost::numeric::ublas::vector<double>;
-using Matrix = boost::numeric::ublas::matrix<double>;
-
 Grid Odeint(const ScenarioSpec& spec, const ActuatorSystem& system, double rtol, double atol,
             long* rhs_evals) {
-  namespace odeint = boost::numeric::odeint;
   long evaluations = 0;
-  const auto rhs = [&](const Vector& y, Vector& dy, double t) {
-    ++evaluations;
-    dy[0] = y[1];
-    dy[1] = system.Acceleration(t, y[0], y[1]);
-  };
-  const auto jacobian = [&](const Vector& y, Matrix& j, double t, Vector& dfdt) {
-    const ActuatorSystem::JacobianRow row = system.Jacobian(t, y[0], y[1]);
-    j(0, 0) = 0.0; j(0, 1) = 1.0; j(1, 0) = row.by_length; j(1, 1) = row.by_rate;
-    dfdt[0] = 0.0; dfdt[1] = 0.0;  // the inputs are constant between breakpoints
-  };
+  const TwoStateProblem problem{
+      &system,
+      [](const void* s, double t, double x, double v) {
+        return static_cast<const ActuatorSystem*>(s)->Acceleration(t, x, v);
+      },
+      [](const void* s, double t, double x, double v, double* by_length, double* by_rate) {
+        const ActuatorSystem::JacobianRow row =
+            static_cast<const ActuatorSystem*>(s)->Jacobian(t, x, v);
+        *by_length = row.by_length;
+        *by_rate = row.by_rate;
+      }};
   std::vector<double> stops = system.Breakpoints(spec.t_start, spec.t_end);
   stops.push_back(spec.t_end);
   const RunRequest request = spec.Request();
@@ -102,16 +99,9 @@ Grid Odeint(const ScenarioSpec& spec, const ActuatorSystem& system, double rtol,
   for (long k = 0; k <= outputs; ++k) times.push_back(k == outputs ? spec.t_end : spec.t_start + k * request.output_interval);
 
   Grid g;
-  Vector y(2);
-  y[0] = spec.initial_length;
-  y[1] = spec.initial_lengthening_rate;
+  double y[2] = {spec.initial_length, spec.initial_lengthening_rate};
   double t0 = spec.t_start;
   std::size_t next = 0;
-  const auto observe = [&](const Vector& state, double t) {
-    g.t.push_back(t);
-    g.length.push_back(state[0]);
-    g.tension.push_back(system.Observe(t, state[0], state[1]).tension.total);
-  };
   for (double stop : stops) {
     // the output times in [t0, stop], and stop itself to carry the state across
     std::vector<double> segment;
@@ -120,14 +110,13 @@ Grid Odeint(const ScenarioSpec& spec, const ActuatorSystem& system, double rtol,
     if (segment.empty() || segment.front() != t0) segment.insert(segment.begin(), t0);
     if (!stop_is_output) segment.push_back(stop);
     const bool first_is_output = !g.t.empty() ? g.t.back() != t0 : true;
-    auto stepper = odeint::make_dense_output(atol, rtol, odeint::rosenbrock4<double>());
-    odeint::integrate_times(
-        stepper, std::make_pair(rhs, jacobian), y, segment.begin(), segment.end(),
-        std::min(1e-6, stop - t0), [&](const Vector& state, double t) {
-          if (t == t0 && !first_is_output) return;         // already recorded
-          if (t == stop && !stop_is_output) return;        // not an output time
-          observe(state, t);
-        });
+    evaluations += OdeintSegment(problem, rtol, atol, y, segment, [&](double t, const double* s) {
+      if (t == t0 && !first_is_output) return;   // already recorded
+      if (t == stop && !stop_is_output) return;  // not an output time
+      g.t.push_back(t);
+      g.length.push_back(s[0]);
+      g.tension.push_back(system.Observe(t, s[0], s[1]).tension.total);
+    });
     t0 = stop;
   }
   if (rhs_evals != nullptr) *rhs_evals = evaluations;

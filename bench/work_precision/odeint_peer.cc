@@ -1,0 +1,39 @@
+#include "odeint_peer.h"
+
+#include <algorithm>
+#include <boost/numeric/odeint.hpp>
+#include <utility>
+
+long OdeintSegment(const TwoStateProblem& problem, double rtol, double atol, double y[2],
+                   const std::vector<double>& times,
+                   const std::function<void(double t, const double* y)>& observe) {
+  namespace odeint = boost::numeric::odeint;
+  using Vector = boost::numeric::ublas::vector<double>;
+  using Matrix = boost::numeric::ublas::matrix<double>;
+  long evaluations = 0;
+  const auto rhs = [&](const Vector& state, Vector& rate, double t) {
+    ++evaluations;
+    rate[0] = state[1];
+    rate[1] = problem.acceleration(problem.system, t, state[0], state[1]);
+  };
+  const auto jacobian = [&](const Vector& state, Matrix& j, double t, Vector& dfdt) {
+    j(0, 0) = 0.0;
+    j(0, 1) = 1.0;
+    problem.jacobian(problem.system, t, state[0], state[1], &j(1, 0), &j(1, 1));
+    dfdt[0] = 0.0;  // the inputs are constant between breakpoints
+    dfdt[1] = 0.0;
+  };
+  Vector state(2);
+  state[0] = y[0];
+  state[1] = y[1];
+  auto stepper = odeint::make_dense_output(atol, rtol, odeint::rosenbrock4<double>());
+  const double span = times.back() - times.front();
+  odeint::integrate_times(stepper, std::make_pair(rhs, jacobian), state, times.begin(),
+                          times.end(), std::min(1e-6, span), [&](const Vector& s, double t) {
+                            const double values[2] = {s[0], s[1]};
+                            observe(t, values);
+                          });
+  y[0] = state[0];
+  y[1] = state[1];
+  return evaluations;
+}
