@@ -74,7 +74,7 @@ for s in isometric concentric eccentric; do
     echo "set logscale xy; set grid; set format x '%g'; set format y '%g'"
     echo "set xlabel 'achieved error (max relative error of length and tension)'"
     echo "set ylabel 'wall time per run [s] (median)'"
-    echo "set title 'work-precision: scenarios/$s.yaml, rtol 1e-3 to 1e-10 ($(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores)'"
+    echo "set title 'work-precision: scenarios/$s.yaml, rtol 1e-3 to 1e-11 ($(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores)'"
     echo "set key outside right top"
     printf 'plot '
     first=1

@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "small_linear_solver.h"
+
 namespace musclesim {
 
 LinearSystem::LinearSystem(LinearSolverKind kind, const JacobianPattern& pattern, N_Vector state,
@@ -30,6 +32,10 @@ LinearSystem::LinearSystem(LinearSolverKind kind, const JacobianPattern& pattern
     case LinearSolverKind::kSparse:
       matrix_ = SUNSparseMatrix(n, n, pattern.entries(), CSC_MAT, context);
       if (matrix_ != nullptr) solver_ = SUNLinSol_KLU(state, matrix_, context);
+      break;
+    case LinearSolverKind::kSmall:
+      matrix_ = SUNDenseMatrix(n, n, context);
+      if (matrix_ != nullptr) solver_ = NewSmallDenseSolver(state, matrix_, context);
       break;
   }
   if (matrix_ == nullptr || solver_ == nullptr) {
@@ -53,6 +59,7 @@ bool LinearSystem::Fits(LinearSolverKind kind, const JacobianPattern& pattern) c
 void LinearSystem::Fill(const double* values, SUNMatrix matrix) const {
   switch (kind_) {
     case LinearSolverKind::kDense:
+    case LinearSolverKind::kSmall:
     case LinearSolverKind::kAuto:
       for (int k = 0; k < pattern_.entries(); ++k) {
         SM_ELEMENT_D(matrix, pattern_.rows[k], columns_[k]) = values[k];

@@ -1,6 +1,7 @@
 #include "musclesim/solver/simulation.h"
 
 #include <cvode/cvode.h>
+#include <cvode/cvode_ls.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 #include <sunmatrix/sunmatrix_dense.h>
@@ -14,7 +15,10 @@
 
 #include "musclesim/errors.h"
 #include "musclesim/model/enum_names.h"
+#include "crossing.h"
 #include "linear_system.h"
+#include "run_roots.h"
+#include "small_vector.h"
 
 namespace musclesim {
 
@@ -45,6 +49,7 @@ constexpr EnumName<LinearSolverKind> kLinearSolverNames[] = {
     {LinearSolverKind::kBand, "band"},
     {LinearSolverKind::kSparse, "sparse"},
     {LinearSolverKind::kAuto, "auto"},
+    {LinearSolverKind::kSmall, "small"},
 };
 
 std::string_view ToString(LinearSolverKind kind) { return ToString(kLinearSolverNames, kind); }
@@ -54,11 +59,11 @@ LinearSolverKind ParseLinearSolverKind(std::string_view text) {
 }
 
 LinearSolverKind ChooseLinearSolver(const JacobianPattern& pattern, JacobianKind jacobian) {
-  // up to a few dozen states a dense LU costs less than band or sparse bookkeeping
-  constexpr int kDenseUpTo = 16;
+  // up to a few dozen states a dense LU costs less than band or sparse bookkeeping, and a
+  // fixed-size one with its own vector least (docs/solver.md)
   // a band this narrow (a chain has 3 + 2) factors in O(n) with less overhead than KLU
   constexpr int kNarrowBand = 8;
-  if (pattern.size <= kDenseUpTo) return LinearSolverKind::kDense;
+  if (pattern.size <= kSmallSystemMaxSize) return LinearSolverKind::kSmall;
   if (pattern.lower_bandwidth + pattern.upper_bandwidth <= kNarrowBand) {
     return LinearSolverKind::kBand;
   }
@@ -138,14 +143,8 @@ void Validate(const NetworkRunRequest& r) {
 
 namespace {
 
-// What a root function watches: a kink of the system (its KinkValue), or
-// g = length(element) - level.
-struct Root {
-  enum Kind { kKink, kMinLength, kMaxLength, kZeroLength };
-  Kind kind;
-  int element;   // kink: its index in system.kinks()
-  double level;  // [m]
-};
+constexpr double kNewtonConvergenceCoefficient = 0.03;
+constexpr long kJacobianEvaluationFrequency = 10;  // steps
 
 // What the C callbacks see through CVODE's user data.
 struct Callbacks {
@@ -186,7 +185,7 @@ int RightHandSide(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
 int AnalyticJacobian(sunrealtype t, N_Vector y, N_Vector, SUNMatrix jacobian, void* data,
                      N_Vector, N_Vector, N_Vector) {
   const auto* cb = static_cast<const Callbacks*>(data);
-  if (cb->actuator != nullptr && cb->linear->kind() == LinearSolverKind::kDense) {
+  if (cb->actuator != nullptr && cb->linear->dense()) {
     const double* state = N_VGetArrayPointer(y);
     const ActuatorSystem::JacobianRow row = cb->actuator->Jacobian(t, state[0], state[1]);
     SM_ELEMENT_D(jacobian, 0, 0) = 0.0;
@@ -198,18 +197,6 @@ int AnalyticJacobian(sunrealtype t, N_Vector y, N_Vector, SUNMatrix jacobian, vo
   std::vector<double>& values = cb->linear->values();
   cb->system->Jacobian(t, N_VGetArrayPointer(y), values.data());
   cb->linear->Fill(values.data(), jacobian);
-  return 0;
-}
-
-int RootFunctions(sunrealtype t, N_Vector y, sunrealtype* g, void* data) {
-  const auto* cb = static_cast<const Callbacks*>(data);
-  const double* state = N_VGetArrayPointer(y);
-  for (std::size_t i = 0; i < cb->roots.size(); ++i) {
-    const Root& root = cb->roots[i];
-    g[i] = root.kind == Root::kKink
-               ? cb->system->KinkValue(cb->system->kinks()[root.element], t, state)
-               : cb->system->Length(root.element, t, state) - root.level;
-  }
   return 0;
 }
 
@@ -225,57 +212,12 @@ std::string FlagName(int flag) {
   return text;
 }
 
-// The root functions of a run: kinks (restart), the user's limits, zero lengths (failure),
-// one zero-length root per pair of nodes joined.
-std::vector<Root> RootsOf(const NetworkSystem& system, const NetworkRunRequest& request,
-                          const double* y) {
-  std::vector<Root> roots;
-  for (std::size_t k = 0; k < system.kinks().size(); ++k) {
-    roots.push_back({Root::kKink, static_cast<int>(k), 0.0});
-  }
-  for (std::size_t i = 0; i < request.limits.size(); ++i) {
-    const LengthLimit& limit = request.limits[i];
-    const std::string path = "limits[" + std::to_string(i) + "].";
-    const int e = system.FindElement(limit.element);
-    if (e < 0) {
-      std::string known;
-      for (const Element& element : system.elements()) known += (known.empty() ? "" : ", ") + element.name;
-      throw ParameterError(path + "element", limit.element,
-                           "names no element; the elements are: " + known);
-    }
-    const double length = system.Length(e, request.t_start, y);
-    if (limit.min_length) {
-      Require(std::isfinite(*limit.min_length) && *limit.min_length >= 0.0 &&
-                  *limit.min_length < length,
-              path + "min_length", *limit.min_length,
-              "must be >= 0 and below " + limit.element + "'s initial length = " +
-                  FormatNumber(length) + " [m]");
-      roots.push_back({Root::kMinLength, e, *limit.min_length});
-    }
-    if (limit.max_length) {
-      Require(std::isfinite(*limit.max_length) && *limit.max_length > length,
-              path + "max_length", *limit.max_length,
-              "must be above " + limit.element + "'s initial length = " + FormatNumber(length) +
-                  " [m]");
-      roots.push_back({Root::kMaxLength, e, *limit.max_length});
-    }
-  }
-  std::vector<std::pair<std::string_view, std::string_view>> pairs;
-  for (std::size_t e = 0; e < system.elements().size(); ++e) {
-    const Element& element = system.elements()[e];
-    const std::pair<std::string_view, std::string_view> ends(element.from, element.to);
-    if (std::find(pairs.begin(), pairs.end(), ends) != pairs.end()) continue;
-    pairs.push_back(ends);
-    roots.push_back({Root::kZeroLength, static_cast<int>(e), 0.0});
-  }
-  return roots;
-}
-
 }  // namespace
 
 struct Simulation::Workspace {
   SUNContext context = nullptr;
   N_Vector state = nullptr;
+  N_Vector between = nullptr;  // a state interpolated within the last step
   std::unique_ptr<LinearSystem> linear;
   void* cvode = nullptr;
   IntegrationMethod method = IntegrationMethod::kBdf;
@@ -288,6 +230,7 @@ struct Simulation::Workspace {
   ~Workspace() {
     if (cvode != nullptr) CVodeFree(&cvode);
     linear.reset();
+    if (between != nullptr) N_VDestroy(between);
     if (state != nullptr) N_VDestroy(state);
     if (context != nullptr) SUNContext_Free(&context);
   }
@@ -296,17 +239,22 @@ struct Simulation::Workspace {
   // memory when they already do (a sweep's runs of one scenario).
   void Fit(const NetworkSystem& system, LinearSolverKind kind) {
     const JacobianPattern& pattern = system.jacobian_pattern();
-    const bool same_size = state != nullptr && N_VGetLength(state) == pattern.size;
+    const bool small = kind == LinearSolverKind::kSmall;
+    const bool same_size = state != nullptr && N_VGetLength(state) == pattern.size &&
+                           IsSmallVector(state) == small;
     if (same_size && linear != nullptr && linear->Fits(kind, pattern)) return;
     if (cvode != nullptr) CVodeFree(&cvode);
     cvode = nullptr;
     linear.reset();
     if (!same_size) {
+      if (between != nullptr) N_VDestroy(between);
       if (state != nullptr) N_VDestroy(state);
-      state = N_VNew_Serial(pattern.size, context);
-      if (state == nullptr) throw std::runtime_error("allocating the CVODE state failed");
+      between = nullptr;
+      state = small ? NewSmallVector(pattern.size, context) : N_VNew_Serial(pattern.size, context);
       // fused vector operations: fewer calls per step, which dominate on a small system
-      N_VEnableFusedOps_Serial(state, SUNTRUE);
+      if (state != nullptr && !small) N_VEnableFusedOps_Serial(state, SUNTRUE);
+      if (state != nullptr) between = N_VClone(state);
+      if (between == nullptr) throw std::runtime_error("allocating the CVODE state failed");
     }
     linear = std::make_unique<LinearSystem>(kind, pattern, state, context);
     callbacks.linear = linear.get();
@@ -326,7 +274,6 @@ struct Simulation::Workspace {
     Check(CVodeSetLinearSolver(cvode, linear->solver(), linear->matrix()), "CVodeSetLinearSolver");
     Check(CVodeSetUserData(cvode, &callbacks), "CVodeSetUserData");
     Check(CVodeSetErrHandlerFn(cvode, KeepError, &callbacks), "CVodeSetErrHandlerFn");
-    Check(CVodeSetNoInactiveRootWarn(cvode), "CVodeSetNoInactiveRootWarn");
   }
 
   void Check(int flag, const char* call) const {
@@ -490,11 +437,18 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
   const LinearSolverKind kind = options.linear_solver == LinearSolverKind::kAuto
                                     ? ChooseLinearSolver(system.jacobian_pattern(), options.jacobian)
                                     : options.linear_solver;
+  if (kind == LinearSolverKind::kSmall && n > kSmallSystemMaxSize) {
+    throw ParameterError("linear_solver", "small",
+                         "serves at most " + std::to_string(kSmallSystemMaxSize) +
+                             " states and this system has " + std::to_string(n) +
+                             ": use auto, dense, band or sparse");
+  }
   ws.Fit(system, kind);
   cb.system = &system;
   cb.last_error.clear();
 
   double* y = N_VGetArrayPointer(ws.state);
+  double* between = N_VGetArrayPointer(ws.between);
   std::copy(start.begin(), start.end(), y);
   const auto configure = [&](double t) {
     ws.Start(options.method, t);
@@ -503,16 +457,20 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
                                          ? AnalyticJacobian : nullptr),
              "CVodeSetJacFn");
     ws.Check(CVodeSetMaxStep(ws.cvode, options.max_step), "CVodeSetMaxStep");
-    ws.Check(CVodeSetMaxNumSteps(ws.cvode, options.max_steps), "CVodeSetMaxNumSteps");
-    ws.Check(CVodeRootInit(ws.cvode, static_cast<int>(cb.roots.size()), RootFunctions),
-             "CVodeRootInit");
+    // A tighter Newton test (CVODE's default 0.1) and a fresher Jacobian (default every 51
+    // steps): on this stiff, strongly nonlinear problem fewer steps fail, and each costs
+    // little next to a step (README "Work-precision")
+    ws.Check(CVodeSetNonlinConvCoef(ws.cvode, kNewtonConvergenceCoefficient),
+             "CVodeSetNonlinConvCoef");
+    ws.Check(CVodeSetJacEvalFrequency(ws.cvode, kJacobianEvaluationFrequency),
+             "CVodeSetJacEvalFrequency");
   };
 
   RunStats stats;
   stats.linear_solver = kind;
-  const auto record = [&](double t) {
-    if (sink.RecordState(t, y)) return;
-    system.Observe(t, y, ws.sample);
+  const auto record = [&](double t, const double* state) {
+    if (sink.RecordState(t, state)) return;
+    system.Observe(t, state, ws.sample);
     sink.Record(t, ws.sample);
   };
   const auto finish = [&](RunStatus status, double t, std::string message) {
@@ -523,6 +481,11 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
     stats.wall_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     return stats;
+  };
+  // the state at time `at` within the last step, from CVODE's interpolant
+  const auto interpolate = [&](double at) {
+    ws.Check(CVodeGetDky(ws.cvode, at, 0, ws.between), "CVodeGetDky");
+    return between;
   };
 
   // Times a rounding error apart (a pulse edge computed as start + k period + width and an
@@ -543,83 +506,128 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
   const auto output_time = [&](long k) {
     return k >= outputs ? request.t_end : request.t_start + k * request.output_interval;
   };
+  // Records the grid outputs up to `until` within the last step; the state at `until` is
+  // `at_until`. An output a rounding error past `until` is labelled with its grid time.
+  const auto record_outputs = [&](double until, const double* at_until) {
+    if (every_step) return;
+    while (next_output <= outputs) {
+      const double out = output_time(next_output);
+      if (out - until > merge) break;
+      record(out, out < until ? interpolate(out) : at_until);
+      ++next_output;
+    }
+  };
 
-  std::vector<int> found(cb.roots.size());
+  // The roots are watched by their sign at the end of every step; only a sign change asks
+  // for the crossing's time on the step's interpolant. A root exactly zero where the
+  // integration (re)starts is inactive until it leaves zero, as in CVODE.
+  const std::size_t root_count = cb.roots.size();
+  std::vector<double> g_before(root_count), g_after(root_count);
+  std::vector<char> active(root_count);
+  const auto evaluate_roots = [&](double t, const double* state, std::vector<double>& g) {
+    for (std::size_t i = 0; i < root_count; ++i) g[i] = RootValue(system, cb.roots[i], t, state);
+  };
+  const auto arm_roots = [&](double t) {
+    evaluate_roots(t, y, g_before);
+    for (std::size_t i = 0; i < root_count; ++i) active[i] = g_before[i] != 0.0;
+  };
+  // The earliest crossing over the last step (t_before, t_after], or -1.
+  double crossing_time = 0.0;
+  const auto find_crossing = [&](double t_before, double t_after, double step) -> int {
+    int first = -1;
+    for (std::size_t i = 0; i < root_count; ++i) {
+      if (!active[i]) {
+        if (g_after[i] != 0.0) active[i] = 1;  // left zero: watched from here on
+        continue;
+      }
+      if (g_after[i] != 0.0 && (g_after[i] < 0.0) == (g_before[i] < 0.0)) continue;
+      const Root& root = cb.roots[i];
+      // CVODE's own location tolerance: 100 ulps of the time and the step
+      const double tolerance =
+          100.0 * std::numeric_limits<double>::epsilon() * (std::abs(t_after) + std::abs(step));
+      const double at = LocateCrossing(
+          [&](double t) { return RootValue(system, root, t, interpolate(t)); }, t_before,
+          g_before[i], t_after, g_after[i], tolerance);
+      if (first < 0 || at < crossing_time) {
+        first = static_cast<int>(i);
+        crossing_time = at;
+      }
+    }
+    return first;
+  };
+
   double t = request.t_start;
   bool fresh = true;  // no step taken since the last (re)initialisation
+  long calls = 0;     // CVode calls, one internal step each: the max_steps guard
   configure(t);
-  record(t);
+  arm_roots(t);
+  record(t, y);
   for (double stop : stops) {
     ws.Check(CVodeSetStopTime(ws.cvode, stop), "CVodeSetStopTime");
     while (t < stop) {
-      const double target = every_step ? stop : std::min(output_time(next_output), stop);
-      if (fresh && target - t <= merge) {
+      if (fresh && stop - t <= merge) {
         // a rounding error past a restart, too close for CVODE's first step (CV_TOO_CLOSE):
-        // the state there is the state here (later in a run CVODE interpolates instead)
-        t = target;
-      } else {
-        fresh = false;
-        const int flag = CVode(ws.cvode, target, ws.state, &t, every_step ? CV_ONE_STEP : CV_NORMAL);
-        if (flag < 0) {
-          return finish(RunStatus::kFailed, t,
-                        "CVODE failed at t = " + FormatNumber(t) + " s with " + FlagName(flag) +
-                            (cb.last_error.empty() ? "" : " (" + cb.last_error + ")"));
-        }
-        long segment_steps = 0;
-        CVodeGetNumSteps(ws.cvode, &segment_steps);
-        if (stats.steps + segment_steps > options.max_steps) {
-          return finish(RunStatus::kFailed, t,
-                        "more than max_steps = " + std::to_string(options.max_steps) +
-                            " internal steps by t = " + FormatNumber(t) + " s");
-        }
-        if (flag == CV_ROOT_RETURN) {
-          CVodeGetRootInfo(ws.cvode, found.data());
-          for (std::size_t i = 0; i < cb.roots.size(); ++i) {
-            if (found[i] == 0) continue;
-            const Root& root = cb.roots[i];
-            if (root.kind == Root::kKink) continue;  // its `element` indexes kinks()
-            const std::string& name = system.elements()[root.element].name;
-            const std::string where = "length " + FormatNumber(system.Length(root.element, t, y)) +
-                                      " m at t = " + FormatNumber(t) + " s";
-            switch (root.kind) {
-              case Root::kMinLength:
-              case Root::kMaxLength:
-                record(t);
-                return finish(RunStatus::kLimit, t,
-                              std::string(root.kind == Root::kMinLength ? "min_length"
-                                                                        : "max_length") +
-                                  " = " + FormatNumber(root.level) + " reached by " + name + ": " +
-                                  where);
-              case Root::kZeroLength:
-                record(t);
-                return finish(RunStatus::kFailed, t,
-                              "the length of " + name + " reached zero at t = " + FormatNumber(t) +
-                                  " s: it collapsed");
-              case Root::kKink:
-                break;
-            }
-          }
-          // a kink: restart the integrator on its far side
-          ws.Accumulate(stats);
-          configure(t);
-          fresh = true;
-          ws.Check(CVodeSetStopTime(ws.cvode, stop), "CVodeSetStopTime");
-          if (every_step) record(t);
-          continue;
-        }
+        // the state there is the state here
+        t = stop;
+        record_outputs(t, y);
+        break;
       }
-      if (every_step) {
-        record(t);
-      } else if (output_time(next_output) - t <= merge) {
-        // labelled with the grid time, which t equals or misses by a rounding error
-        record(output_time(next_output));
-        ++next_output;
+      fresh = false;
+      const double t_before = t;
+      const int flag = CVode(ws.cvode, stop, ws.state, &t, CV_ONE_STEP);
+      if (flag < 0) {
+        return finish(RunStatus::kFailed, t,
+                      "CVODE failed at t = " + FormatNumber(t) + " s with " + FlagName(flag) +
+                          (cb.last_error.empty() ? "" : " (" + cb.last_error + ")"));
       }
+      if (++calls > options.max_steps) {
+        // CVODE's own name for the condition, which the driver checks itself: one step per call
+        return finish(RunStatus::kFailed, t,
+                      "CVODE failed at t = " + FormatNumber(t) +
+                          " s with CV_TOO_MUCH_WORK (more than max_steps = " +
+                          std::to_string(options.max_steps) + " internal steps)");
+      }
+      evaluate_roots(t, y, g_after);
+      const int hit = find_crossing(t_before, t, t - t_before);
+      if (hit < 0) {
+        record_outputs(t, y);
+        if (every_step) record(t, y);
+        g_before.swap(g_after);
+        continue;
+      }
+      // a crossing inside the step: the run goes on from there, on the interpolant's state
+      t = crossing_time;
+      const double* at_crossing = interpolate(t);
+      std::copy(at_crossing, at_crossing + n, y);
+      record_outputs(t, y);
+      const Root& root = cb.roots[static_cast<std::size_t>(hit)];
+      if (root.kind != Root::kKink) {
+        const std::string& name = system.elements()[root.element].name;
+        record(t, y);
+        if (root.kind == Root::kZeroLength) {
+          return finish(RunStatus::kFailed, t,
+                        "the length of " + name + " reached zero at t = " + FormatNumber(t) +
+                            " s: it collapsed");
+        }
+        return finish(RunStatus::kLimit, t,
+                      std::string(root.kind == Root::kMinLength ? "min_length" : "max_length") +
+                          " = " + FormatNumber(root.level) + " reached by " + name +
+                          ": length " + FormatNumber(system.Length(root.element, t, y)) +
+                          " m at t = " + FormatNumber(t) + " s");
+      }
+      // a kink: restart the integrator on its far side
+      ws.Accumulate(stats);
+      configure(t);
+      fresh = true;
+      ws.Check(CVodeSetStopTime(ws.cvode, stop), "CVodeSetStopTime");
+      arm_roots(t);
+      if (every_step) record(t, y);
     }
     if (stop < request.t_end) {
       // an input jumps at `stop`: restart with fresh history
       ws.Accumulate(stats);
       configure(t);
+      arm_roots(t);
       fresh = true;
     }
   }

@@ -31,13 +31,18 @@ enum class JacobianKind { kAnalytic, kDifferenceQuotient };
 std::string_view ToString(JacobianKind kind);
 JacobianKind ParseJacobianKind(std::string_view text);  // ParameterError("jacobian")
 
-// How the Newton iteration solves its linear systems: SUNDIALS dense, band (half-bandwidths
-// from the Jacobian's pattern) or KLU sparse; auto picks by size and structure.
-enum class LinearSolverKind { kDense, kBand, kSparse, kAuto };
+// How the Newton iteration solves its linear systems. `small` is musclesim's lean path for up
+// to kSmallSystemMaxSize states: its own fixed-size N_Vector and dense LU (closed form for two
+// states), docs/solver.md; dense, band (half-bandwidths from the Jacobian's pattern) and KLU
+// sparse are SUNDIALS' own solvers on its serial vector; auto picks by size and structure.
+enum class LinearSolverKind { kDense, kBand, kSparse, kAuto, kSmall };
 std::string_view ToString(LinearSolverKind kind);
 LinearSolverKind ParseLinearSolverKind(std::string_view text);  // ParameterError("linear_solver")
 
-// What `auto` picks for a system of `pattern` (dense for a few states, band for a narrow band,
+// The largest system the `small` linear solver serves.
+inline constexpr int kSmallSystemMaxSize = 16;
+
+// What `auto` picks for a system of `pattern` (small for a few states, band for a narrow band,
 // else sparse; never sparse with a difference-quotient Jacobian, which CVODE has only for dense
 // and band matrices).
 LinearSolverKind ChooseLinearSolver(const JacobianPattern& pattern, JacobianKind jacobian);
