@@ -1,5 +1,6 @@
 #include "musclesim/studies/sweep_mpi.h"
 #include "studies/sweep_workers.h"
+#include "studies/sweep_share.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -176,7 +177,29 @@ SweepOutcome RunSweepMpi(const SweepSpec& spec, const SweepRunOptions& options) 
   }
 }
 
+RankShare WorldShare() {
+  int initialised = 0, finalised = 0;
+  MPI_Initialized(&initialised);
+  MPI_Finalized(&finalised);
+  if (initialised == 0 || finalised != 0) return {};
+  RankShare share;
+  MPI_Comm_rank(MPI_COMM_WORLD, &share.rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &share.ranks);
+  return share;
+}
+
+long MinOverRanks(long value) {
+  if (WorldShare().ranks == 1) return value;
+  long least = value;
+  MPI_Allreduce(&value, &least, 1, MPI_LONG, MPI_MIN, MPI_COMM_WORLD);
+  return least;
+}
+
 #else  // built without MPI
+
+RankShare WorldShare() { return {}; }
+
+long MinOverRanks(long value) { return value; }
 
 SweepOutcome RunSweepMpi(const SweepSpec&, const SweepRunOptions&) {
   throw std::logic_error("RunSweepMpi: musclesim was built without MPI (-DMUSCLESIM_WITH_MPI=ON)");

@@ -31,9 +31,11 @@ std::string SummaryHeader(const SweepSpec& spec) {
 }
 
 struct PointRunner::State {
-  State(const SweepSpec& s, std::unique_ptr<SweepBase> b) : spec(s), base(std::move(b)) {}
+  State(const SweepSpec& s, std::unique_ptr<SweepBase> b)
+      : spec(s), base(std::move(b)), metrics(s.metrics, s.metric_options) {}
   const SweepSpec& spec;
   std::unique_ptr<SweepBase> base;                 // this thread's own copy
+  MetricAccumulator metrics;                       // of the running point
   std::unique_ptr<PointErrorExplainer> explainer;  // made at this thread's first invalid point
   std::string trajectory_folder;
   Simulation simulation;                           // re-used by every point of this thread
@@ -72,8 +74,9 @@ std::string PointRunner::Run(long index, RowStatus& status) {
   }
 
   RunStats stats;
+  s.metrics.Reset();
   try {
-    stats = s.base->Run(s.simulation);
+    stats = s.base->Run(s.simulation, s.metrics);
   } catch (const std::exception& e) {
     stats.status = RunStatus::kFailed;
     stats.message = e.what();
@@ -82,12 +85,9 @@ std::string PointRunner::Run(long index, RowStatus& status) {
   status = failed ? RowStatus::kFailed : RowStatus::kOk;
 
   row.append(",").append(ToString(status));
-  const std::vector<TrajectoryPoint>& trajectory = s.base->trajectory();
   for (Metric m : s.spec.metrics) {
     row += ',';
-    if (!trajectory.empty() && !failed) {
-      row += MetricField(ComputeMetric(m, trajectory, s.spec.metric_options));
-    }
+    if (s.metrics.points() > 0 && !failed) row += MetricField(s.metrics.Value(m));
   }
   row.append(",").append(std::to_string(stats.steps));
   row.append(",").append(std::to_string(stats.rhs_evals));
@@ -96,7 +96,7 @@ std::string PointRunner::Run(long index, RowStatus& status) {
 
   const bool keep = s.spec.trajectories == TrajectoryPolicy::kAll ||
                     (s.spec.trajectories == TrajectoryPolicy::kFailed && failed);
-  if (keep && !trajectory.empty()) {
+  if (keep && s.metrics.points() > 0) {
     std::filesystem::create_directories(s.trajectory_folder);
     WriteOutput(s.trajectory_folder + "/" + std::to_string(index) + ".csv",
                 s.base->TrajectoryCsv());
