@@ -136,40 +136,38 @@ void MetricAccumulator::Reset() {
   crossed_ = false;
 }
 
-void MetricAccumulator::Probe(LengthProbe& probe, const TrajectoryPoint& a,
-                              const TrajectoryPoint& b) const {
+void MetricAccumulator::Probe(LengthProbe& probe, const Mark& a, const Mark& b) const {
   // ComputeMetric's pair: b the first record later than `at`, a the one before it
   if (probe.found || !(a.t <= probe.at && probe.at < b.t)) return;
   probe.found = true;
-  probe.length = a.sample.length +
-                 (b.sample.length - a.sample.length) * (probe.at - a.t) / (b.t - a.t);
+  probe.length = a.length + (b.length - a.length) * (probe.at - a.t) / (b.t - a.t);
 }
 
 double MetricAccumulator::LengthAt(double t, const LengthProbe& probe) const {
-  if (t <= first_.t) return first_.sample.length;
-  if (t >= last_.t) return last_.sample.length;
+  if (t <= first_.t) return first_.length;
+  if (t >= last_.t) return last_.length;
   return probe.length;  // first_.t < t = probe.at < last_.t: some pair of records held it
 }
 
-void MetricAccumulator::Record(const TrajectoryPoint& p) {
-  const double length = p.sample.length;
+void MetricAccumulator::Record(const TrajectoryPoint& point) {
+  const Mark p{point.t, point.sample.length, point.sample.shortening_velocity,
+               point.sample.tension.total};
   if (points_ == 0) {
     first_ = p;
-    min_length_ = max_length_ = length;
-    if (crossing_ && options_.target_length && length == *options_.target_length) {
+    min_length_ = max_length_ = p.length;
+    if (crossing_ && options_.target_length && p.length == *options_.target_length) {
       crossed_ = true;
       crossing_time_ = p.t;
     }
   } else {
-    const TrajectoryPoint& a = last_;
+    const Mark& a = last_;
     if (extremes_) {
-      if (length < min_length_) min_length_ = length;
-      if (!(length < max_length_)) max_length_ = length;
+      if (p.length < min_length_) min_length_ = p.length;
+      if (!(p.length < max_length_)) max_length_ = p.length;
     }
     if (work_) {
       work_sum_ += 0.5 * (p.t - a.t) *
-                   (a.sample.tension.total * a.sample.shortening_velocity +
-                    p.sample.tension.total * p.sample.shortening_velocity);
+                   (a.tension * a.shortening_velocity + p.tension * p.shortening_velocity);
     }
     if (window_) {
       if (options_.window_start) Probe(window_start_, a, p);
@@ -177,8 +175,8 @@ void MetricAccumulator::Record(const TrajectoryPoint& p) {
     }
     if (crossing_ && !crossed_ && options_.target_length) {
       const double target = *options_.target_length;
-      const double da = a.sample.length - target;
-      const double db = length - target;
+      const double da = a.length - target;
+      const double db = p.length - target;
       if (db == 0.0) {
         crossed_ = true;
         crossing_time_ = p.t;
@@ -188,7 +186,7 @@ void MetricAccumulator::Record(const TrajectoryPoint& p) {
       }
     }
   }
-  if (peak_) peak_tension_ = std::max(peak_tension_, p.sample.tension.total);
+  if (peak_) peak_tension_ = std::max(peak_tension_, p.tension);
   last_ = p;
   ++points_;
 }
@@ -197,7 +195,7 @@ double MetricAccumulator::Value(Metric metric) const {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   switch (metric) {
     case Metric::kFinalLength:
-      return last_.sample.length;
+      return last_.length;
     case Metric::kMinLength:
       return min_length_;
     case Metric::kMaxLength:
@@ -212,7 +210,7 @@ double MetricAccumulator::Value(Metric metric) const {
       return (LengthAt(w0, window_start_) - LengthAt(w1, window_end_)) / (w1 - w0);
     }
     case Metric::kFinalShorteningVelocity:
-      return last_.sample.shortening_velocity;
+      return last_.shortening_velocity;
     case Metric::kWork:
       return work_sum_;
     case Metric::kTimeToLength:

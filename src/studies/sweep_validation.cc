@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <functional>
+#include <memory>
 #include <limits>
 #include <mutex>
 #include <thread>
@@ -24,7 +26,9 @@ std::optional<InvalidPoint> ValidatePoints(SweepSpec& spec, const SweepBase& bas
   std::optional<InvalidPoint> invalid;  // at position first_bad
   std::exception_ptr error;
 
-  const auto work = [&] {
+  // each thread validates on its own copy of the base: yaml-cpp promises nothing about
+  // reading one document from several threads
+  const auto work = [&](const SweepBase& own) {
     try {
       for (;;) {
         const std::size_t start = next.fetch_add(kChunk);
@@ -33,7 +37,7 @@ std::optional<InvalidPoint> ValidatePoints(SweepSpec& spec, const SweepBase& bas
           const long index = indices[i];
           const long slot = KeptSlot(spec, index);
           try {
-            base.Validate(PointOverrides(spec, index), spec.metric_options.element,
+            own.Validate(PointOverrides(spec, index), spec.metric_options.element,
                           slot >= 0 ? &spec : nullptr, slot);
           } catch (const InputError& e) {
             std::lock_guard<std::mutex> lock(mutex);
@@ -56,8 +60,10 @@ std::optional<InvalidPoint> ValidatePoints(SweepSpec& spec, const SweepBase& bas
   const int helpers = static_cast<int>(std::min<std::size_t>(
       static_cast<std::size_t>(std::max(1, threads)), std::max<std::size_t>(1, chunks))) - 1;
   std::vector<std::thread> pool;
-  for (int t = 0; t < helpers; ++t) pool.emplace_back(work);
-  work();
+  std::vector<std::unique_ptr<SweepBase>> copies;
+  for (int t = 0; t < helpers; ++t) copies.push_back(base.Copy());
+  for (int t = 0; t < helpers; ++t) pool.emplace_back(work, std::cref(*copies[static_cast<std::size_t>(t)]));
+  work(base);
   for (std::thread& t : pool) t.join();
   if (error) std::rethrow_exception(error);
   return invalid;

@@ -16,8 +16,8 @@ struct InvalidPoint {
   std::string message;  // the InputError's, as the scenario reader gave it [-]
 };
 
-// Validates the points `indices` (ascending) of `spec` with `base` on up to `threads`
-// threads; when spec.kept, moves each scenario into its slot (KeptSlot), which must exist.
+// Validates the points `indices` (ascending) of `spec` with `base` (and copies of it) on up
+// to `threads` threads; when spec.kept, moves each scenario into its slot (KeptSlot), which must exist.
 // Returns the first invalid point of `indices` (the lowest index), if any: the points after
 // it may be left unchecked. Rethrows any other exception.
 std::optional<InvalidPoint> ValidatePoints(SweepSpec& spec, const SweepBase& base,

@@ -84,13 +84,17 @@ class MetricAccumulator final : public TrajectorySink {
     bool found = false;      // a pair of records around `at` was seen
     double length = 0.0;     // [m], the interpolated value when found
   };
-  void Probe(LengthProbe& probe, const TrajectoryPoint& a, const TrajectoryPoint& b) const;
+  // What the metrics read of a recorded point.
+  struct Mark {
+    double t = 0.0, length = 0.0, shortening_velocity = 0.0, tension = 0.0;
+  };
+  void Probe(LengthProbe& probe, const Mark& a, const Mark& b) const;
   double LengthAt(double t, const LengthProbe& probe) const;
 
   MetricOptions options_;
   bool extremes_ = false, peak_ = false, work_ = false, window_ = false, crossing_ = false;
   long points_ = 0;
-  TrajectoryPoint first_{}, last_{};
+  Mark first_, last_;
   double min_length_ = 0.0, max_length_ = 0.0, peak_tension_ = 0.0, work_sum_ = 0.0;
   LengthProbe window_start_, window_end_;  // used when window_ and the window's ends are given
   bool crossed_ = false;
