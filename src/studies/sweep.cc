@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
+#include <optional>
+#include <stdexcept>
 #include <memory>
 
 #include "musclesim/errors.h"
@@ -12,7 +15,9 @@
 #include "studies/sweep_base.h"
 #include "studies/sweep_metric_element.h"
 #include "studies/sweep_point_error.h"
+#include "studies/sweep_share.h"
 #include "studies/sweep_signature.h"
+#include "studies/sweep_validation.h"
 
 namespace musclesim {
 
@@ -216,7 +221,7 @@ std::vector<std::string> PointOverrides(const SweepSpec& spec, long index) {
   return overrides;
 }
 
-SweepSpec LoadSweep(const std::string& path) {
+SweepSpec LoadSweep(const std::string& path, int threads) {
   const YAML::Node root = yaml::LoadFile(path);
   const yaml::Source src{path};
   yaml::RequireMap(src, root, "",
@@ -335,19 +340,52 @@ SweepSpec LoadSweep(const std::string& path) {
   spec.base_digest = Digest(yaml::ReadText(spec.base));
   spec.network = IsNetworkScenario(spec.base);
   const std::unique_ptr<SweepBase> base_scenario = OpenSweepBase(spec);
-  const bool all = PointCount(spec) <= kUpFrontPoints;
-  for (const long i : UpFrontPoints(spec)) {  // point 0 first
-    MetricElements elements;
-    try {
-      elements = base_scenario->Validate(PointOverrides(spec, i), spec.metric_options.element,
-                                         all ? &spec : nullptr);
-    } catch (const InputError& e) {
-      throw InputError(PointErrorExplainer(spec, *base_scenario).Explain(i, e.what()).message);
-    }
-    // the element the metrics read, from point 0; every later point must have it too
-    if (i == 0) spec.metric_options.element = ResolveMetricElement(src, root, spec, elements);
+  const RankShare share = WorldShare();
+  const long points = PointCount(spec);
+  spec.kept = points <= kUpFrontPoints;
+  spec.share_rank = share.rank;
+  spec.share_ranks = share.ranks;
+  spec.share_block = ShareBlock(points, share.ranks);
+  if (spec.kept) {
+    const auto slots = static_cast<std::size_t>(KeptCount(spec));
+    if (spec.network) spec.network_scenarios.resize(slots);
+    else spec.scenarios.resize(slots);
   }
-  return spec;
+  const auto invalid = [&](long index, const std::string& message) {
+    return InputError(PointErrorExplainer(spec, *base_scenario).Explain(index, message).message);
+  };
+  // point 0 first, alone: the element the metrics read is resolved from it, and every later
+  // point must have it too
+  MetricElements elements;
+  try {
+    const long slot = KeptSlot(spec, 0);
+    elements = base_scenario->Validate(PointOverrides(spec, 0), spec.metric_options.element,
+                                       slot >= 0 ? &spec : nullptr, slot);
+  } catch (const InputError& e) {
+    throw invalid(0, e.what());
+  }
+  spec.metric_options.element = ResolveMetricElement(src, root, spec, elements);
+  // the rest on every core, each rank its share; the first invalid point of them all is told
+  const std::vector<long> chosen = UpFrontPoints(spec);  // ascending, point 0 first
+  std::vector<long> mine;
+  for (std::size_t k = 1; k < chosen.size(); ++k) {
+    // a kept point where it is kept; the sample of a large sweep in blocks of its positions
+    const long owner = spec.kept ? PointOwner(spec, chosen[k])
+                                 : static_cast<long>(k) / spec.share_block % share.ranks;
+    if (owner == share.rank) mine.push_back(chosen[k]);
+  }
+  const std::optional<InvalidPoint> found =
+      ValidatePoints(spec, *base_scenario, mine, threads > 0 ? threads : ValidationThreads(share));
+  const long first = MinOverRanks(found ? found->index : std::numeric_limits<long>::max());
+  if (first == std::numeric_limits<long>::max()) return spec;
+  if (found && found->index == first) throw invalid(first, found->message);
+  // another rank found it: this one reads the same error from the point itself
+  try {
+    base_scenario->Validate(PointOverrides(spec, first), spec.metric_options.element, nullptr, 0);
+  } catch (const InputError& e) {
+    throw invalid(first, e.what());
+  }
+  throw std::logic_error("sweep point " + std::to_string(first) + " is invalid on one rank only");
 }
 
 }  // namespace musclesim

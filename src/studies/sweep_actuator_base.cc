@@ -6,10 +6,26 @@
 #include "musclesim/io/scenario.h"
 #include "musclesim/io/trajectory_csv.h"
 #include "studies/sweep_base.h"
+#include "studies/sweep_share.h"
 
 namespace musclesim {
 
 namespace {
+
+// Hands each point to the metrics and keeps a copy for the trajectory CSV.
+class KeepingSink final : public TrajectorySink {
+ public:
+  KeepingSink(TrajectorySink& metrics, std::vector<TrajectoryPoint>& kept)
+      : metrics_(metrics), kept_(kept) {}
+  void Record(const TrajectoryPoint& point) override {
+    metrics_.Record(point);
+    kept_.push_back(point);
+  }
+
+ private:
+  TrajectorySink& metrics_;
+  std::vector<TrajectoryPoint>& kept_;
+};
 
 class ActuatorSweepBase final : public SweepBase {
  public:
@@ -20,28 +36,31 @@ class ActuatorSweepBase final : public SweepBase {
   }
 
   MetricElements Validate(const std::vector<std::string>& overrides, const std::string&,
-                          SweepSpec* keep) const override {
+                          SweepSpec* keep, long slot) const override {
     // the element can only be `actuator`, which LoadSweep checks once: no axis renames it
     ScenarioSpec scenario = base_->Instantiate(overrides);
-    if (keep != nullptr) keep->scenarios.push_back(std::move(scenario));
+    if (keep != nullptr) keep->scenarios[static_cast<std::size_t>(slot)] = std::move(scenario);
     return {{"actuator"}, {"actuator"}};
   }
 
   void Prepare(const SweepSpec& spec, long index) override {
     built_.reset();
-    if (spec.scenarios.empty()) built_ = base_->Instantiate(PointOverrides(spec, index));
-    scenario_ = built_ ? &*built_ : &spec.scenarios[static_cast<std::size_t>(index)];
+    const long slot = KeptSlot(spec, index);
+    if (slot < 0) built_ = base_->Instantiate(PointOverrides(spec, index));
+    scenario_ = built_ ? &*built_ : &spec.scenarios[static_cast<std::size_t>(slot)];
+    keep_ = spec.trajectories != TrajectoryPolicy::kNone;
   }
 
-  RunStats Run(Simulation& simulation) override {
+  RunStats Run(Simulation& simulation, TrajectorySink& metrics) override {
     trajectory_.clear();
     const ScenarioSpec& s = *scenario_;
-    return simulation.Run(BuildSystem(s), s.solver, s.Request(), trajectory_);
+    if (!keep_) return simulation.Run(BuildSystem(s), s.solver, s.Request(), metrics);
+    KeepingSink sink(metrics, trajectory_);
+    return simulation.Run(BuildSystem(s), s.solver, s.Request(), sink);
   }
 
-  const std::vector<TrajectoryPoint>& trajectory() const override { return trajectory_; }
-
   std::string TrajectoryCsv() const override {
+    if (!keep_) return "";
     return FormatTrajectoryCsv(trajectory_, scenario_->PhaseTolerance(),
                                scenario_->excitation.has_value());
   }
@@ -50,7 +69,8 @@ class ActuatorSweepBase final : public SweepBase {
   std::unique_ptr<ScenarioTemplate> base_;
   std::optional<ScenarioSpec> built_;           // the point, when not kept in the spec
   const ScenarioSpec* scenario_ = nullptr;      // the prepared point
-  std::vector<TrajectoryPoint> trajectory_;     // re-used by every point
+  bool keep_ = false;                           // the spec keeps trajectories
+  std::vector<TrajectoryPoint> trajectory_;     // kept trajectory, re-used by every point
 };
 
 }  // namespace

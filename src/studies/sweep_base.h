@@ -32,22 +32,23 @@ class SweepBase {
 
   // Validates the scenario that `overrides` ("path=value") make of the base: InputError as
   // the scenario reader says, or naming metric_options.element when `element` (unless
-  // empty) is not one of its elements. Appends the scenario to keep's scenarios (of its
-  // form) unless `keep` is null. Returns its elements.
+  // empty) is not one of its elements. Moves the scenario into slot `slot` of keep's
+  // scenarios (of its form; the slot must exist) unless `keep` is null. Returns its elements.
+  // Threads may validate into distinct slots at once.
   virtual MetricElements Validate(const std::vector<std::string>& overrides,
-                                  const std::string& element, SweepSpec* keep) const = 0;
+                                  const std::string& element, SweepSpec* keep,
+                                  long slot) const = 0;
 
   // Makes point `index` of `spec` ready to run: its scenario as validated up front (kept in
   // `spec`, which must outlive the run), or made and validated now (InputError, as Validate).
   virtual void Prepare(const SweepSpec& spec, long index) = 0;
-  // Runs the prepared point on `simulation`, recording the metric element's trajectory and,
-  // when the spec keeps trajectories, what TrajectoryCsv needs. A solver failure is a
-  // status; anything thrown (a system that cannot be built) is the caller's to report.
-  virtual RunStats Run(Simulation& simulation) = 0;
-  // The metric element's trajectory of the last Run.
-  virtual const std::vector<TrajectoryPoint>& trajectory() const = 0;
+  // Runs the prepared point on `simulation`, handing the metric element's points to
+  // `metrics` as they are recorded and, when the spec keeps trajectories, keeping what
+  // TrajectoryCsv needs. A solver failure is a status; anything thrown (a system that cannot
+  // be built) is the caller's to report.
+  virtual RunStats Run(Simulation& simulation, TrajectorySink& metrics) = 0;
   // The last Run's trajectory CSV: io/trajectory_csv.h's for the single actuator,
-  // io/network_csv.h's for a network.
+  // io/network_csv.h's for a network; empty when the spec does not keep trajectories.
   virtual std::string TrajectoryCsv() const = 0;
 };
 

@@ -7,6 +7,7 @@
 #include "musclesim/io/network_scenario_template.h"
 #include "musclesim/studies/metrics.h"
 #include "studies/sweep_base.h"
+#include "studies/sweep_share.h"
 
 namespace musclesim {
 
@@ -28,13 +29,13 @@ int ElementIndex(const NetworkScenarioSpec& scenario, const std::string& element
 // a copy of every sample (the slots re-used from run to run, so that their memory is too).
 class Recorder final : public NetworkSink {
  public:
-  Recorder(int element, std::vector<TrajectoryPoint>& points, std::vector<double>* times,
+  Recorder(int element, TrajectorySink& metrics, std::vector<double>* times,
            std::vector<NetworkSample>* samples)
-      : element_(static_cast<std::size_t>(element)), points_(points), times_(times),
+      : element_(static_cast<std::size_t>(element)), metrics_(metrics), times_(times),
         samples_(samples) {}
 
   void Record(double t, const NetworkSample& sample) override {
-    points_.push_back(ElementPoint(t, sample.elements[element_]));
+    metrics_.Record(ElementPoint(t, sample.elements[element_]));
     if (times_ == nullptr) return;
     const std::size_t n = times_->size();
     times_->push_back(t);
@@ -44,7 +45,7 @@ class Recorder final : public NetworkSink {
 
  private:
   std::size_t element_;
-  std::vector<TrajectoryPoint>& points_;
+  TrajectorySink& metrics_;
   std::vector<double>* times_;            // null: the trajectory is not kept
   std::vector<NetworkSample>* samples_;   // slots of past runs, as many as their longest
 };
@@ -59,7 +60,7 @@ class NetworkSweepBase final : public SweepBase {
   }
 
   MetricElements Validate(const std::vector<std::string>& overrides, const std::string& element,
-                          SweepSpec* keep) const override {
+                          SweepSpec* keep, long slot) const override {
     NetworkScenarioSpec scenario = base_->Instantiate(overrides);
     if (!element.empty()) ElementIndex(scenario, element);
     MetricElements elements;
@@ -67,30 +68,30 @@ class NetworkSweepBase final : public SweepBase {
       elements.all.push_back(e.name);
       if (e.kind == ElementKind::kActuator) elements.actuators.push_back(e.name);
     }
-    if (keep != nullptr) keep->network_scenarios.push_back(std::move(scenario));
+    if (keep != nullptr) {
+      keep->network_scenarios[static_cast<std::size_t>(slot)] = std::move(scenario);
+    }
     return elements;
   }
 
   void Prepare(const SweepSpec& spec, long index) override {
     built_.reset();
-    if (spec.network_scenarios.empty()) built_ = base_->Instantiate(PointOverrides(spec, index));
-    scenario_ = built_ ? &*built_ : &spec.network_scenarios[static_cast<std::size_t>(index)];
+    const long slot = KeptSlot(spec, index);
+    if (slot < 0) built_ = base_->Instantiate(PointOverrides(spec, index));
+    scenario_ = built_ ? &*built_ : &spec.network_scenarios[static_cast<std::size_t>(slot)];
     element_ = ElementIndex(*scenario_, spec.metric_options.element);
     keep_ = spec.trajectories != TrajectoryPolicy::kNone;
   }
 
-  RunStats Run(Simulation& simulation) override {
-    trajectory_.clear();
+  RunStats Run(Simulation& simulation, TrajectorySink& metrics) override {
     times_.clear();
     const NetworkScenarioSpec& s = *scenario_;
     // built in place: a NetworkSystem holds pointers into its own parts
     system_.reset();
     system_.emplace(s.nodes, s.elements, s.loads);
-    Recorder recorder(element_, trajectory_, keep_ ? &times_ : nullptr, &samples_);
+    Recorder recorder(element_, metrics, keep_ ? &times_ : nullptr, &samples_);
     return simulation.Run(*system_, s.solver, s.Request(), recorder);
   }
-
-  const std::vector<TrajectoryPoint>& trajectory() const override { return trajectory_; }
 
   std::string TrajectoryCsv() const override {
     const NetworkCsvFormat format(*system_, scenario_->output.phase_tolerance);
@@ -106,7 +107,6 @@ class NetworkSweepBase final : public SweepBase {
   int element_ = 0;                               // the metric element's index
   bool keep_ = false;                             // the spec keeps trajectories
   std::optional<NetworkSystem> system_;           // of the last run
-  std::vector<TrajectoryPoint> trajectory_;       // the metric element's, re-used
   std::vector<double> times_;                     // kept trajectory: its times [s]
   std::vector<NetworkSample> samples_;            // and samples (slots beyond times_.size() unused)
 };

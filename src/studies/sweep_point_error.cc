@@ -74,7 +74,7 @@ PointErrorExplainer::PointErrorExplainer(const SweepSpec& spec, const SweepBase&
     : spec_(spec), base_(base), base_root_(yaml::LoadFile(spec.base)) {
   // the base alone is read from its own nodes, whose positions are exact
   try {
-    base_.Validate({}, spec_.metric_options.element, nullptr);
+    base_.Validate({}, spec_.metric_options.element, nullptr, 0);
   } catch (const InputError& e) {
     base_error_ = e.what();
   }
@@ -123,7 +123,7 @@ PointErrorExplainer::Explanation PointErrorExplainer::Explain(long index,
   const std::vector<std::string> overrides = PointOverrides(spec_, index);
   for (std::size_t k = 0; k < spec_.axes.size(); ++k) {
     try {
-      base_.Validate({overrides[k]}, spec_.metric_options.element, nullptr);
+      base_.Validate({overrides[k]}, spec_.metric_options.element, nullptr, 0);
     } catch (const InputError& e) {
       if (IsBaseError(e.what())) continue;  // that value leaves the base's own error as it is
       const SweepAxis& axis = spec_.axes[k];

@@ -31,9 +31,11 @@ std::string SummaryHeader(const SweepSpec& spec) {
 }
 
 struct PointRunner::State {
-  State(const SweepSpec& s, std::unique_ptr<SweepBase> b) : spec(s), base(std::move(b)) {}
+  State(const SweepSpec& s, std::unique_ptr<SweepBase> b)
+      : spec(s), base(std::move(b)), metrics(s.metrics, s.metric_options) {}
   const SweepSpec& spec;
   std::unique_ptr<SweepBase> base;                 // this thread's own copy
+  MetricAccumulator metrics;                       // of the running point
   std::unique_ptr<PointErrorExplainer> explainer;  // made at this thread's first invalid point
   std::string trajectory_folder;
   Simulation simulation;                           // re-used by every point of this thread
@@ -72,8 +74,9 @@ std::string PointRunner::Run(long index, RowStatus& status) {
   }
 
   RunStats stats;
+  s.metrics.Reset();
   try {
-    stats = s.base->Run(s.simulation);
+    stats = s.base->Run(s.simulation, s.metrics);
   } catch (const std::exception& e) {
     stats.status = RunStatus::kFailed;
     stats.message = e.what();
@@ -82,12 +85,9 @@ std::string PointRunner::Run(long index, RowStatus& status) {
   status = failed ? RowStatus::kFailed : RowStatus::kOk;
 
   row.append(",").append(ToString(status));
-  const std::vector<TrajectoryPoint>& trajectory = s.base->trajectory();
   for (Metric m : s.spec.metrics) {
     row += ',';
-    if (!trajectory.empty() && !failed) {
-      row += MetricField(ComputeMetric(m, trajectory, s.spec.metric_options));
-    }
+    if (s.metrics.points() > 0 && !failed) row += MetricField(s.metrics.Value(m));
   }
   row.append(",").append(std::to_string(stats.steps));
   row.append(",").append(std::to_string(stats.rhs_evals));
@@ -96,7 +96,7 @@ std::string PointRunner::Run(long index, RowStatus& status) {
 
   const bool keep = s.spec.trajectories == TrajectoryPolicy::kAll ||
                     (s.spec.trajectories == TrajectoryPolicy::kFailed && failed);
-  if (keep && !trajectory.empty()) {
+  if (keep && s.metrics.points() > 0) {
     std::filesystem::create_directories(s.trajectory_folder);
     WriteOutput(s.trajectory_folder + "/" + std::to_string(index) + ".csv",
                 s.base->TrajectoryCsv());
@@ -105,7 +105,8 @@ std::string PointRunner::Run(long index, RowStatus& status) {
 }
 
 WorkerPool::WorkerPool(const SweepSpec& spec, const SweepBase& base, std::string output,
-                       int jobs) {
+                       int jobs, std::size_t low_water)
+    : low_water_(low_water) {
   running_ = jobs;
   for (int j = 0; j < jobs; ++j) {
     threads_.emplace_back([this, &spec, &base, output] { Work(spec, base, output); });
@@ -140,7 +141,7 @@ void WorkerPool::Work(const SweepSpec& spec, const SweepBase& base,
       std::string row = runner.Run(index, status);
       std::lock_guard<std::mutex> lock(mutex_);
       done_.push_back({index, std::move(row), status});
-      row_ready_.notify_all();
+      if (queue_.size() < low_water_ || closed_) row_ready_.notify_all();
     }
   } catch (...) {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -189,8 +190,9 @@ bool WorkerPool::Finished() const {
 
 void WorkerPool::Wait(double seconds) {
   std::unique_lock<std::mutex> lock(mutex_);
-  row_ready_.wait_for(lock, std::chrono::duration<double>(seconds),
-                      [this] { return !done_.empty() || running_ == 0 || error_; });
+  row_ready_.wait_for(lock, std::chrono::duration<double>(seconds), [this] {
+    return (!done_.empty() && (queue_.size() < low_water_ || closed_)) || running_ == 0 || error_;
+  });
   if (error_) std::rethrow_exception(error_);
 }
 
@@ -210,7 +212,9 @@ SweepOutcome RunSweep(const SweepSpec& spec, const SweepRunOptions& options) {
   const std::unique_ptr<SweepBase> base = OpenSweepBase(spec);
   const int jobs = static_cast<int>(
       std::min<long>(WorkerThreads(options.jobs), std::max<long>(1, summary.Unhanded())));
-  WorkerPool pool(spec, *base, options.output, jobs);
+  // indices go out a few at a time, so that a sweep of any size starts at once
+  const auto low_water = static_cast<std::size_t>(4 * jobs);
+  WorkerPool pool(spec, *base, options.output, jobs, low_water);
   bool stopping = false, closed = false;
   while (!pool.Finished()) {
     // the observer is asked on this thread only, so it need not be thread-safe
@@ -218,8 +222,7 @@ SweepOutcome RunSweep(const SweepSpec& spec, const SweepRunOptions& options) {
       pool.Stop();
       stopping = closed = true;
     }
-    // indices go out a few at a time, so that a sweep of any size starts at once
-    if (!closed && pool.Queued() < static_cast<std::size_t>(4 * jobs)) {
+    if (!closed && pool.Queued() < low_water) {
       const std::vector<long> indices = summary.Hand(16L * jobs);
       if (indices.empty()) {
         pool.Close();
@@ -230,6 +233,7 @@ SweepOutcome RunSweep(const SweepSpec& spec, const SweepRunOptions& options) {
     }
     pool.Wait(closed ? 0.2 : 0.05);
     for (const WorkerPool::Row& row : pool.Take()) summary.Add(row.index, row.text, row.status);
+    summary.Flush();
     observer.OnProgress(summary.Count(), points);
   }
   return summary.Close();

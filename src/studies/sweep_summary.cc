@@ -6,11 +6,13 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
 
 #include "musclesim/errors.h"
+#include "studies/sweep_share.h"
 #include "studies/sweep_signature.h"
 #include "studies/sweep_sorted_summary.h"
 
@@ -85,10 +87,26 @@ SummaryFile::SummaryFile(const SweepSpec& spec, std::string path, bool resume)
   }
   resumed_ = count_;
   unhanded_ = points_ - count_;
+  if (spec.kept && spec.share_ranks > 1) {
+    share_block_ = spec.share_block;
+    share_ranks_ = spec.share_ranks;
+    share_next_.resize(static_cast<std::size_t>(share_ranks_));
+    share_left_.assign(static_cast<std::size_t>(share_ranks_), 0);
+    for (int r = 0; r < share_ranks_; ++r) share_next_[static_cast<std::size_t>(r)] = r * share_block_;
+    for (long i = 0; i < points_; ++i) {
+      if (!done_[static_cast<std::size_t>(i)]) ++share_left_[static_cast<std::size_t>(PointOwner(spec, i))];
+    }
+  }
 }
 
 SummaryFile::~SummaryFile() {
-  if (fd_ >= 0) ::close(fd_);
+  if (fd_ < 0) return;
+  try {
+    Flush();  // leaving early (an error): keep the rows that did finish
+  } catch (const std::exception&) {
+    // the error on its way out says what went wrong
+  }
+  ::close(fd_);
 }
 
 void SummaryFile::Resume(const SweepSpec& spec, const std::string& signature) {
@@ -171,25 +189,55 @@ void SummaryFile::Append(const std::string& text) {
   }
 }
 
-std::vector<long> SummaryFile::Hand(long max) {
+std::vector<long> SummaryFile::Hand(long max, int owner) {
   std::vector<long> indices;
-  for (; next_ < points_ && static_cast<long>(indices.size()) < max; ++next_) {
-    if (!done_[static_cast<std::size_t>(next_)]) indices.push_back(next_);
+  if (share_ranks_ == 1) {
+    for (; next_ < points_ && static_cast<long>(indices.size()) < max; ++next_) {
+      if (!done_[static_cast<std::size_t>(next_)]) indices.push_back(next_);
+    }
+    unhanded_ -= static_cast<long>(indices.size());
+    return indices;
   }
-  unhanded_ -= static_cast<long>(indices.size());
+  auto from = static_cast<std::size_t>(owner % share_ranks_);
+  while (static_cast<long>(indices.size()) < max && unhanded_ > 0) {
+    if (share_left_[from] == 0) {
+      from = static_cast<std::size_t>(
+          std::max_element(share_left_.begin(), share_left_.end()) - share_left_.begin());
+      if (share_left_[from] == 0) break;
+    }
+    // the next point of `from`'s blocks: block b holds [b * block, (b + 1) * block)
+    long& i = share_next_[from];
+    for (; i < points_ && share_left_[from] > 0 && static_cast<long>(indices.size()) < max;) {
+      if (!done_[static_cast<std::size_t>(i)]) {
+        indices.push_back(i);
+        --share_left_[from];
+        --unhanded_;
+      }
+      ++i;
+      if (i % share_block_ == 0) i += (share_ranks_ - 1) * share_block_;
+    }
+    if (i >= points_) share_left_[from] = 0;  // (never fewer than counted: a guard)
+  }
   return indices;
 }
 
 void SummaryFile::Add(long index, const std::string& row, RowStatus status) {
   if (index < 0 || index >= points_ || done_[static_cast<std::size_t>(index)]) return;
-  Append(row + "\n");
+  pending_.append(row).append("\n");
   done_[static_cast<std::size_t>(index)] = true;
   ++count_;
   failed_ += status == RowStatus::kFailed;
   invalid_ += status == RowStatus::kInvalid;
 }
 
+void SummaryFile::Flush() {
+  if (pending_.empty()) return;
+  Append(pending_);
+  pending_.clear();
+}
+
 SweepOutcome SummaryFile::Close() {
+  Flush();
   SweepOutcome outcome;
   outcome.points = points_;
   outcome.resumed = resumed_;

@@ -31,12 +31,16 @@ class SummaryFile {
   // What resuming dropped from PATH.partial and why, for the user; empty if nothing.
   const std::string& dropped() const { return dropped_; }
 
-  // Up to `max` indices neither in the summary nor handed out before, in order.
-  std::vector<long> Hand(long max);
+  // Up to `max` indices neither in the summary nor handed out before, in order: those that
+  // MPI rank `owner` keeps (SweepSpec::share_*) while it has any left, then those of the
+  // rank with the most left.
+  std::vector<long> Hand(long max, int owner = 0);
   long Unhanded() const { return unhanded_; }
 
-  // Appends one finished row and writes it through. Not thread-safe: callers serialise.
+  // Takes one finished row; Flush writes it. Not thread-safe: callers serialise.
   void Add(long index, const std::string& row, RowStatus status);
+  // Writes the rows taken since the last Flush through to PATH.partial, in one write.
+  void Flush();
   // The sweep's outcome; when every point is in, writes PATH (rows sorted by index) and
   // removes PATH.partial. Releases the lock.
   SweepOutcome Close();
@@ -51,6 +55,11 @@ class SummaryFile {
   std::vector<bool> done_;     // per point: its row is in
   long count_ = 0, resumed_ = 0, failed_ = 0, invalid_ = 0;
   long next_ = 0, unhanded_ = 0;  // Hand's cursor; points not in and not handed out
+  // with several ranks keeping shares: each rank's cursor and its points not yet handed out
+  long share_block_ = 1;
+  int share_ranks_ = 1;
+  std::vector<long> share_next_, share_left_;
+  std::string pending_;        // rows taken, not yet written
   std::string dropped_;
 };
 

@@ -44,7 +44,11 @@ class WorkerPool {
     RowStatus status;
   };
 
-  WorkerPool(const SweepSpec& spec, const SweepBase& base, std::string output, int jobs);
+  // `low_water`: Wait wakes for a finished row only when fewer points than this are queued
+  // (the owner should queue more), the pool is closing, or a thread stopped; otherwise rows
+  // wait for the owner's next call, so that the owner's thread does not wake for every row.
+  WorkerPool(const SweepSpec& spec, const SweepBase& base, std::string output, int jobs,
+             std::size_t low_water);
   ~WorkerPool();  // closes and joins
   WorkerPool(const WorkerPool&) = delete;
   WorkerPool& operator=(const WorkerPool&) = delete;
@@ -55,8 +59,8 @@ class WorkerPool {
   std::vector<Row> Take();                      // rows finished since the last call
   std::size_t Queued() const;                   // points not yet started
   bool Finished() const;                        // closed, and every thread has stopped
-  // Waits until a row finishes, a thread stops, or `seconds` pass. Rethrows a worker's
-  // exception (an I/O error, say).
+  // Waits until a row finishes with fewer than low_water points queued (or the pool closed),
+  // a thread stops, or `seconds` pass. Rethrows a worker's exception (an I/O error, say).
   void Wait(double seconds);
   int jobs() const { return static_cast<int>(threads_.size()); }
 
@@ -68,6 +72,7 @@ class WorkerPool {
   std::deque<long> queue_;
   std::vector<Row> done_;
   bool closed_ = false;
+  std::size_t low_water_ = 0;
   int running_ = 0;
   std::exception_ptr error_;
   std::vector<std::thread> threads_;

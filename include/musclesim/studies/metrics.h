@@ -62,4 +62,43 @@ TrajectoryPoint ElementPoint(double t, const ElementSample& element);
 double ComputeMetric(Metric metric, const std::vector<TrajectoryPoint>& trajectory,
                      const MetricOptions& options);
 
+// The same metrics computed as a run records its points, without keeping them: a sweep's
+// sink. Each value equals ComputeMetric's on the same points to the last bit (the same
+// operations in the same order); only what the chosen metrics need is tracked.
+class MetricAccumulator final : public TrajectorySink {
+ public:
+  MetricAccumulator(const std::vector<Metric>& metrics, const MetricOptions& options);
+
+  void Reset();  // forgets the points, for the next run
+  void Record(const TrajectoryPoint& point) override;
+  long points() const { return points_; }
+  // The value of `metric` (one of those given) on the points recorded since the last Reset;
+  // at least one point.
+  double Value(Metric metric) const;
+
+ private:
+  // x at `at` as ComputeMetric's linear interpolation between records finds it, tracked
+  // while the points come (the record pair around it) and completed at the end.
+  struct LengthProbe {
+    double at = 0.0;         // [s]
+    bool found = false;      // a pair of records around `at` was seen
+    double length = 0.0;     // [m], the interpolated value when found
+  };
+  // What the metrics read of a recorded point.
+  struct Mark {
+    double t = 0.0, length = 0.0, shortening_velocity = 0.0, tension = 0.0;
+  };
+  void Probe(LengthProbe& probe, const Mark& a, const Mark& b) const;
+  double LengthAt(double t, const LengthProbe& probe) const;
+
+  MetricOptions options_;
+  bool extremes_ = false, peak_ = false, work_ = false, window_ = false, crossing_ = false;
+  long points_ = 0;
+  Mark first_, last_;
+  double min_length_ = 0.0, max_length_ = 0.0, peak_tension_ = 0.0, work_sum_ = 0.0;
+  LengthProbe window_start_, window_end_;  // used when window_ and the window's ends are given
+  bool crossed_ = false;
+  double crossing_time_ = 0.0;             // [s], time_to_length once crossed_
+};
+
 }  // namespace musclesim

@@ -49,12 +49,18 @@ struct SweepSpec {
   MetricOptions metric_options;      // units as in MetricOptions
   TrajectoryPolicy trajectories = TrajectoryPolicy::kNone;
   std::string output;                // summary CSV, relative to the working directory [-]
-  // The validated scenario of every point when all of them were validated up front (at most
-  // kUpFrontPoints points); empty otherwise, and then each point is built and validated
-  // when it runs, an invalid one becoming an `invalid` row of the summary. `scenarios` holds
-  // them for a single-actuator base, `network_scenarios` for a network.
+  // The validated scenarios of the points when all of them were validated up front (at most
+  // kUpFrontPoints points: `kept`); otherwise each point is built and validated when it
+  // runs, an invalid one becoming an `invalid` row of the summary. `scenarios` holds them
+  // for a single-actuator base, `network_scenarios` for a network. Under MPI each rank
+  // validates and keeps only its share: the blocks of `share_block` consecutive points whose
+  // block number modulo `share_ranks` is `share_rank`, in index order (a rank that runs a
+  // point of another's share builds it again); in one process, every point.
+  bool kept = false;
   std::vector<ScenarioSpec> scenarios;
   std::vector<NetworkScenarioSpec> network_scenarios;
+  int share_rank = 0, share_ranks = 1;  // [-]
+  long share_block = 1;                 // [-]
 };
 
 // The most points a sweep may have. While it runs, a sweep keeps one bit per point in memory
@@ -63,7 +69,8 @@ struct SweepSpec {
 inline constexpr long kMaxSweepPoints = 1000000000L;
 
 // Sweeps of at most this many points are validated point by point before anything runs
-// (0.1 to 0.4 ms a point: a few seconds at most), so that a bad value fails at once. Larger
+// (0.1 to 0.4 ms a point, on every core, and under MPI shared among the ranks: a few seconds
+// at most), so that a bad value fails at once. Larger
 // sweeps validate point 0 and, for a grid, every value of every axis with the other axes at
 // their first value (points of the grid, at most this many), and the rest as they run.
 inline constexpr long kUpFrontPoints = 10000;
@@ -74,7 +81,11 @@ inline constexpr long kUpFrontPoints = 10000;
 // one actuator and no metric_options.element, an element that point 0 does not have); for a
 // point whose axis value is bad, naming the axis, the value, the point and the axis's line
 // and column; for an error in the base scenario, naming the base file's line and column.
-SweepSpec LoadSweep(const std::string& path);
+// Of several invalid points it names the first. Validates on `threads` threads (0: every
+// core, shared with the other MPI ranks of this host). Under MPI (initialised, more than
+// one rank) every rank of MPI_COMM_WORLD must call it for the same file: the ranks share
+// the validation and agree on the first invalid point.
+SweepSpec LoadSweep(const std::string& path, int threads = 0);
 
 // Number of points: the product of the axis lengths (grid), their common length (zip), or
 // `samples` (random).

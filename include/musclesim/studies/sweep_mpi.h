@@ -1,5 +1,6 @@
 // A sweep spread over the ranks of MPI_COMM_WORLD. Rank 0 hands out indices on request in
-// small chunks (dynamic load balancing) and runs points on its own threads too; every rank
+// small chunks (dynamic load balancing; to each rank the points it validated and kept, see
+// SweepSpec::share_*, while it has any) and runs points on its own threads too; every rank
 // runs its points on a WorkerPool and sends the finished rows back; rank 0 alone writes
 // PATH.partial and PATH. Declared in every build; it works only in one configured with
 // -DMUSCLESIM_WITH_MPI=ON. Initialising and finalising MPI is the program's business.

@@ -1,5 +1,6 @@
 // Running a sweep: points on worker threads with dynamic scheduling (each thread reuses one
-// Simulation), rows flushed to PATH.partial as they finish, the summary CSV written
+// Simulation), rows written to PATH.partial in batches as they finish (within 0.05 s), the
+// summary CSV written
 // atomically at the end with rows sorted by index. With MPI (sweep_mpi.h) the same rows are
 // spread over ranks. Progress and cancellation go through a SweepObserver (sweep_observer.h).
 #pragma once
