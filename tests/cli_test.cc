@@ -225,6 +225,23 @@ TEST(Cli, SolverFailureExitsThreeAndKeepsThePreviousResult) {
   EXPECT_THAT(ReadFile(csv + ".partial"), StartsWith("t,length,shortening_velocity"));
 }
 
+TEST(Cli, SmallLinearSolverRefusesANetworkOfMoreThanSixteenStates) {
+  // the chain has 10 free nodes, 20 states; the stats name the solver each run used
+  const Outcome refused =
+      RunCli("run " + Scenario("chain.yaml") + " -o - --set solver.linear_solver=small");
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_THAT(refused.err, HasSubstr("solver.linear_solver = small (--set): serves at most 16 "
+                                     "states and this network has 20"));
+  const std::string json = ::testing::TempDir() + "cli_small.json";
+  const Outcome chain = RunCli("run " + Scenario("chain.yaml") + " -o - --quiet --stats " + json);
+  EXPECT_EQ(chain.exit_code, 0) << chain.err;
+  EXPECT_THAT(ReadFile(json), HasSubstr("\"linear_solver\": \"band\""));
+  const Outcome single =
+      RunCli("run " + Scenario("concentric.yaml") + " -o - --quiet --stats " + json);
+  EXPECT_EQ(single.exit_code, 0) << single.err;
+  EXPECT_THAT(ReadFile(json), HasSubstr("\"linear_solver\": \"small\""));
+}
+
 TEST(Cli, RunRejectsInvalidInputWithExitTwo) {
   Outcome r = RunCli("run " + Scenario("concentric.yaml") + " -o - --set model.velocity.n=0");
   EXPECT_EQ(r.exit_code, 2);

@@ -226,8 +226,9 @@ TEST(NetworkSimulation, ChainSettlesWithEverySegmentAtTheStaticEquilibrium) {
   ASSERT_GT(std::abs(l_star - testing::kChainStart), 5e-3);  // the chain has to move
   for (int n : {1, 10, 50}) {
     std::vector<double> dense_transient;
-    for (LinearSolverKind solver :
-         {LinearSolverKind::kDense, LinearSolverKind::kBand, LinearSolverKind::kSparse}) {
+    for (LinearSolverKind solver : {LinearSolverKind::kDense, LinearSolverKind::kBand,
+                                    LinearSolverKind::kSparse, LinearSolverKind::kSmall}) {
+      if (solver == LinearSolverKind::kSmall && 2 * n > kSmallSystemMaxSize) continue;
       SCOPED_TRACE("n = " + std::to_string(n) + ", " + std::string(ToString(solver)));
       const NetworkExperiment experiment = testing::Chain(n, solver);
       const NetworkRunResult run = RunCompleted(experiment);

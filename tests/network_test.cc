@@ -193,6 +193,19 @@ TEST(Network, ChainGivenInOrderHasBandwidthsThreeBelowAndTwoAbove) {
   EXPECT_EQ(ChooseLinearSolver(pattern, JacobianKind::kAnalytic), LinearSolverKind::kBand);
 }
 
+TEST(Network, AutoTakesTheSmallPathUpToSixteenStates) {
+  for (int n : {1, 8, 9}) {
+    const testing::NetworkExperiment chain = testing::Chain(n);
+    const JacobianPattern& pattern = chain.system.jacobian_pattern();
+    EXPECT_EQ(pattern.size, 2 * n);
+    for (JacobianKind jacobian : {JacobianKind::kAnalytic, JacobianKind::kDifferenceQuotient}) {
+      EXPECT_EQ(ChooseLinearSolver(pattern, jacobian),
+                n <= 8 ? LinearSolverKind::kSmall : LinearSolverKind::kBand)
+          << n;
+    }
+  }
+}
+
 // ---- validation: how the parts fit ----------------------------------------------------
 
 // The path and message of the ParameterError that `build` throws; "accepted" if none.

@@ -104,7 +104,8 @@ int SweepCommand(int argc, char** argv) {
   options.observer = &observer;
 
   MpiSession mpi(argc, argv);  // MPI_Init only when launched by mpirun
-  const SweepSpec spec = LoadSweep(args.positional[0]);
+  // validation runs on the threads asked for (by default every core, shared by the ranks)
+  const SweepSpec spec = LoadSweep(args.positional[0], args.Has("--jobs") ? options.jobs : 0);
   options.output = args.Value("-o", spec.output);
   if (options.output.empty()) {
     throw InputError(spec.source + ": no output file: set output or pass -o PATH");

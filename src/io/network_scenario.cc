@@ -80,6 +80,13 @@ NetworkScenarioSpec ReadNetworkScenario(const yaml::Source& src, const YAML::Nod
 
   if (const YAML::Node node = root["solver"]) {
     s.solver = ReadSolver(src, node, "solver", s.t_start, s.t_end);
+    const int states = system->state_size();
+    if (s.solver.linear_solver == LinearSolverKind::kSmall && states > kSmallSystemMaxSize) {
+      yaml::Fail(src, node["linear_solver"], "solver.linear_solver", "small",
+                 "serves at most " + std::to_string(kSmallSystemMaxSize) +
+                     " states and this network has " + std::to_string(states) +
+                     ": use auto, dense, band or sparse");
+    }
   }
   if (const YAML::Node node = root["output"]) {
     s.output = ReadOutput(src, node, "output", s.t_start, s.t_end);
