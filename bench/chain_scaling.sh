@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
 # Cost of a chain of N actuators in series against N, per linear solver (bench/chain_benchmark.cc):
-# prints a table (N, solver, steps, RHS, Jacobian evaluations, linear setups, wall us per run and
-# per internal step, CPU us per step) with the fitted log-log slope of the cost per step against N
-# per solver, and writes it to bench/results/chain_scaling.txt and the figure of the time per
-# step, wall and CPU, docs/figures/chain_scaling.png (gnuplot). Times are the minimum over REPEATS repetitions
+# musclesim's CVODE with dense, band, sparse and small (where 2N <= 16 states), and, when the
+# benchmark was built with Boost, Boost.Odeint's rosenbrock4 with dense ublas matrices at the
+# same tolerances (N = 1, 10, 100). Prints a table (N, tool, solver, steps, RHS, Jacobian
+# evaluations, linear setups, wall us per run and per step, CPU us per step, the final state's
+# relative error against a tight reference, and Odeint's difference from CVODE) with the fitted
+# log-log slope of the cost per step against N per solver, and writes it to
+# bench/results/chain_scaling.txt and the figure of the time per step, wall and CPU,
+# docs/figures/chain_scaling.png (gnuplot). Times are the minimum over REPEATS repetitions
 # (the machine may be shared: the fastest run is the one least disturbed). Dense at N = 1000 runs
 # once: a run over 20 s is stopped and reported as skipped. Builds the benchmark first (Release)
 # if needed.
@@ -27,8 +31,8 @@ cpu=$(sed -n 's/^model name[[:space:]]*: *//p' /proc/cpuinfo | head -1)
 machine="$cpu, $(nproc) cores"
 load=$(cut -d' ' -f1-3 /proc/loadavg)  # other work on a shared machine inflates wall times
 
-# every case but dense at N = 1000 repeated; that one once (it is expected to hit the budget)
-"$build/bench/chain_benchmark" --benchmark_filter='BM_ChainRun/N:(1|10|100)/|/N:1000/solver:[12]' \
+# every case (Odeint's too) but dense at N = 1000 repeated; that one once (it is expected to hit the budget)
+"$build/bench/chain_benchmark" --benchmark_filter='BM_ChainRun/N:(1|10|100)/|/N:1000/solver:[12]|BM_ChainOdeint' \
   --benchmark_min_time=0.2 --benchmark_repetitions="$repeats" --benchmark_format=json \
   > "$work/repeated.json" 2>/dev/null
 "$build/bench/chain_benchmark" --benchmark_filter='BM_ChainRun/N:1000/solver:0' \
@@ -51,24 +55,36 @@ for name in ("repeated.json", "once.json"):
         us_run, cpu_us_run = b["real_time"] * to_us, b["cpu_time"] * to_us
         if key not in best or us_run < best[key]["us_run"]:
             cpu = best[key]["cpu_us_step"] if key in best else math.inf
-            best[key] = dict(b, us_run=us_run, us_step=us_run / b["steps"], cpu_us_step=cpu)
+            tool = "odeint" if b["name"].startswith("BM_ChainOdeint") else "musclesim"
+            best[key] = dict(b, us_run=us_run, us_step=us_run / b["steps"], cpu_us_step=cpu,
+                             tool=tool)
         best[key]["cpu_us_step"] = min(best[key]["cpu_us_step"], cpu_us_run / b["steps"])
 
-solvers = ["dense", "band", "sparse"]
+solvers = ["dense", "band", "sparse", "small", "rosenbrock4-dense"]
+tools = {"rosenbrock4-dense": "odeint"}
 print(f"# Chain of N actuators in series (bench/chain_benchmark.cc): scenarios/isometric.yaml's model,")
 print(f"# 1 g per node, 0.1 N s/m dampers, f_iso at the free end, activation 0 -> 1 at 0.05 s, 0.5 s,")
-print(f"# BDF, analytic Jacobian, rtol 1e-6. Wall time per run and per step: minimum over {repeats}")
-print(f"# repetitions; cpu us/step: the process's CPU time, less disturbed by other work on a shared")
-print(f"# machine. {machine}; load average before the runs: {load}.")
-print(f"{'N':>5} {'solver':>7} {'steps':>6} {'rhs':>6} {'jac':>4} {'setups':>6} {'us/run':>11} {'us/step':>9} {'cpu us/step':>12}")
+print(f"# rtol 1e-6, atol 1e-10, analytic Jacobian. musclesim: CVODE's BDF, per linear solver (small:")
+print(f"# up to 16 states). odeint: Boost.Odeint's rosenbrock4 (dense output, dense ublas LU), restarted")
+print(f"# at the breakpoint; steps: accepted steps, jac and setups: attempted steps. Wall time per run")
+print(f"# and per step: minimum over {repeats} repetitions; cpu us/step: the process's CPU time, less")
+print(f"# disturbed by other work on a shared machine. error: the final state's largest relative")
+print(f"# difference from CVODE at rtol 1e-10 (a state below atol/rtol against atol/rtol); vs cvode:")
+print(f"# the same between Odeint's and CVODE's final states at these tolerances.")
+print(f"# {machine}; load average before the runs: {load}.")
+print(f"{'N':>5} {'tool':>9} {'solver':>17} {'steps':>6} {'rhs':>6} {'jac':>4} {'setups':>6} {'us/run':>11} "
+      f"{'us/step':>9} {'cpu us/step':>12} {'error':>8} {'vs cvode':>8}")
 for n in sorted({k[0] for k in list(best) + list(skipped)}):
     for s in solvers:
+        tool = tools.get(s, "musclesim")
         if (n, s) in best:
             r = best[(n, s)]
-            print(f"{n:>5} {s:>7} {int(r['steps']):>6} {int(r['rhs']):>6} {int(r['jac']):>4} "
-                  f"{int(r['setups']):>6} {r['us_run']:>11.1f} {r['us_step']:>9.2f} {r['cpu_us_step']:>12.2f}")
+            versus = f"{r['vs_cvode']:>8.1e}" if "vs_cvode" in r else f"{'-':>8}"
+            print(f"{n:>5} {tool:>9} {s:>17} {int(r['steps']):>6} {int(r['rhs']):>6} {int(r['jac']):>4} "
+                  f"{int(r['setups']):>6} {r['us_run']:>11.1f} {r['us_step']:>9.2f} {r['cpu_us_step']:>12.2f} "
+                  f"{r['error']:>8.1e} {versus}")
         elif (n, s) in skipped:
-            print(f"{n:>5} {s:>7}  {skipped[(n, s)]}")
+            print(f"{n:>5} {tool:>9} {s:>17}  {skipped[(n, s)]}")
             with open(f"{work}/skipped.txt", "a") as f:
                 f.write(f"{s} at N = {n}: {skipped[(n, s)]}\n")
 
@@ -85,7 +101,7 @@ print("log-log slope of the cost per step against N (1: linear; at N = 1 the per
 print("dominates, so the fit from N = 10 shows the growth):")
 for s in solvers:
     points = sorted((n, r["us_step"]) for (n, sv), r in best.items() if sv == s)
-    line = f"  {s:>7}:"
+    line = f"  {s:>17}:"
     for column, label in (("us_step", "wall"), ("cpu_us_step", "cpu")):
         pts = sorted((n, r[column]) for (n, sv), r in best.items() if sv == s)
         tail = [p for p in pts if p[0] >= 10]
@@ -93,7 +109,10 @@ for s in solvers:
             line += f" {label} N = {pts[0][0]}..{pts[-1][0]}: {slope(pts):.2f}"
         if len(tail) >= 2:
             line += f", N = {tail[0][0]}..{tail[-1][0]}: {slope(tail):.2f};"
-    print(line.rstrip(";"))
+    if len(points) == 1:
+        line += f" one point (N = {points[0][0]})"
+    if points:
+        print(line.rstrip(";"))
     with open(f"{work}/{s}.dat", "w") as f:
         for n, _ in points:
             f.write(f"{n} {best[(n, s)]['us_step']} {best[(n, s)]['cpu_us_step']}\n")
@@ -107,10 +126,13 @@ cat "$out"
 # per solver that has points (a solver skipped at every N has none): wall time solid, CPU dashed
 plots=()
 color=1
-for s in dense band sparse; do
+for s in dense band sparse small rosenbrock4-dense; do
   if [ -s "$work/$s.dat" ]; then
-    plots+=("'$work/$s.dat' using 1:2 with linespoints lw 2 pt 7 lc $color title '$s (wall)'")
-    plots+=("'$work/$s.dat' using 1:3 with linespoints lw 1 dt 2 pt 6 lc $color title '$s (cpu)'")
+    title=$s
+    # odeint in red (gnuplot's colour 7): its default 5, yellow, is hard to see
+    [ "$s" = rosenbrock4-dense ] && { title="odeint $s"; color=7; }
+    plots+=("'$work/$s.dat' using 1:2 with linespoints lw 2 pt 7 lc $color title '$title (wall)'")
+    plots+=("'$work/$s.dat' using 1:3 with linespoints lw 1 dt 2 pt 6 lc $color title '$title (cpu)'")
   fi
   color=$((color + 1))
 done
@@ -121,7 +143,7 @@ done
   echo "set xrange [0.7:1500]"
   echo "set xlabel 'segments N (2N states)'"
   echo "set ylabel 'time per internal step [us] (minimum of $repeats runs)'"
-  echo "set title \"chain of N actuators (bench/chain_benchmark.cc): cost per step by linear solver\\n$machine\""
+  echo "set title \"chain of N actuators (bench/chain_benchmark.cc): cost per step by linear solver, and Odeint's rosenbrock4\\n$machine\""
   echo "set key top left"
   if [ -s "$work/skipped.txt" ]; then  # a case not drawn says why
     echo "set label \"$(paste -sd';' "$work/skipped.txt" | sed 's/"/\\"/g')\" at graph 0.98, 0.04 right"

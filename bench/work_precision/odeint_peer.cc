@@ -37,3 +37,30 @@ long OdeintSegment(const TwoStateProblem& problem, double rtol, double atol, dou
   y[1] = state[1];
   return evaluations;
 }
+
+void OdeintSegmentN(const NStateProblem& problem, double rtol, double atol, double* y,
+                    const std::vector<double>& times,
+                    const std::function<void(double t, const double* y)>& observe,
+                    OdeintCounts& counts) {
+  namespace odeint = boost::numeric::odeint;
+  using Vector = boost::numeric::ublas::vector<double>;
+  using Matrix = boost::numeric::ublas::matrix<double>;  // row-major, contiguous
+  const std::size_t n = static_cast<std::size_t>(problem.size);
+  const auto rhs = [&](const Vector& state, Vector& rate, double t) {
+    ++counts.rhs_evals;
+    problem.rhs(problem.context, t, &state.data()[0], &rate.data()[0]);
+  };
+  const auto jacobian = [&](const Vector& state, Matrix& j, double t, Vector& dfdt) {
+    ++counts.jac_evals;
+    problem.jacobian(problem.context, t, &state.data()[0], &j.data()[0]);
+    for (std::size_t i = 0; i < n; ++i) dfdt[i] = 0.0;  // the inputs are constant between breakpoints
+  };
+  Vector state(n);
+  std::copy(y, y + n, state.begin());
+  auto stepper = odeint::make_dense_output(atol, rtol, odeint::rosenbrock4<double>());
+  const double span = times.back() - times.front();
+  counts.steps += static_cast<long>(odeint::integrate_times(
+      stepper, std::make_pair(rhs, jacobian), state, times.begin(), times.end(),
+      std::min(1e-6, span), [&](const Vector& s, double t) { observe(t, &s.data()[0]); }));
+  std::copy(state.begin(), state.end(), y);
+}

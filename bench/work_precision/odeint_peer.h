@@ -1,5 +1,5 @@
-// Boost.Odeint's rosenbrock4 on the two-state actuator problem, in a translation unit of its
-// own: Boost 1.74's uBLAS needs C++17 (it uses std::allocator::construct, which C++20
+// Boost.Odeint's rosenbrock4 on the two-state actuator problem and on an N-state system, in a
+// translation unit of its own: Boost 1.74's uBLAS needs C++17 (it uses std::allocator::construct, which C++20
 // removed), while musclesim's headers need C++20. The problem comes in through function
 // pointers, as CVODE's right-hand side does.
 #pragma once
@@ -20,3 +20,25 @@ struct TwoStateProblem {
 long OdeintSegment(const TwoStateProblem& problem, double rtol, double atol, double y[2],
                    const std::vector<double>& times,
                    const std::function<void(double t, const double* y)>& observe);
+
+// An N-state system y' = f(t, y) with its dense Jacobian df/dy, written row-major into
+// `jacobian` (size * size values, every one of them: the matrix is not cleared first).
+struct NStateProblem {
+  int size;
+  void* context;  // the callbacks' own (they may keep scratch space in it)
+  void (*rhs)(void* context, double t, const double* y, double* dydt);
+  void (*jacobian)(void* context, double t, const double* y, double* jacobian);
+};
+
+struct OdeintCounts {
+  long steps = 0;      // accepted steps: the dense-output stepper's do_step calls
+  long rhs_evals = 0;  // right-hand-side evaluations
+  long jac_evals = 0;  // Jacobian evaluations: one per attempted step, each followed by an LU
+};
+
+// As OdeintSegment, for an N-state system, with dense ublas matrices: y holds problem.size
+// values. Adds what it did to `counts`.
+void OdeintSegmentN(const NStateProblem& problem, double rtol, double atol, double* y,
+                    const std::vector<double>& times,
+                    const std::function<void(double t, const double* y)>& observe,
+                    OdeintCounts& counts);
