@@ -572,9 +572,14 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
         record_outputs(t, y);
         break;
       }
-      fresh = false;
       const double t_before = t;
-      const int flag = CVode(ws.cvode, stop, ws.state, &t, CV_ONE_STEP);
+      // CVODE bounds its first step by the distance to the time asked for: the next output,
+      // as when it integrated output by output, so a restart starts as cautiously
+      const double toward =
+          fresh && !every_step && next_output <= outputs ? std::min(output_time(next_output), stop)
+                                                          : stop;
+      fresh = false;
+      const int flag = CVode(ws.cvode, toward, ws.state, &t, CV_ONE_STEP);
       if (flag < 0) {
         return finish(RunStatus::kFailed, t,
                       "CVODE failed at t = " + FormatNumber(t) + " s with " + FlagName(flag) +
