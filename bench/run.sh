@@ -10,6 +10,8 @@
 #   work_precision.md    wall time at equal error, as ratios to musclesim's default
 #   work_precision_<scenario>.png   the work-precision plots (gnuplot)
 #   sweep_throughput.md  runs per second of a 10,000-point sweep
+#   chain_scaling.txt    cost per step of a chain of N actuators against N, per linear solver and
+#                        against Boost.Odeint (and docs/figures/chain_scaling.png)
 #   machine.txt          what it ran on
 #   bench/run.sh [BUILD_DIR]
 set -euo pipefail
@@ -93,5 +95,8 @@ done
 
 echo "== sweep throughput"
 bash bench/sweep_throughput.sh "$build" > "$out/sweep_throughput.md"
+
+echo "== networks: a chain of N segments"
+bash bench/chain_scaling.sh "$build" 5 > /dev/null
 
 echo "results in $out/"

@@ -59,7 +59,8 @@ launch=$(for i in 1 2 3; do
 done | sort -g | head -1)
 mpi_line=$(echo "$results" | grep '^2 MPI')
 results="$results
-$(echo "$mpi_line" | awk -v launch="$launch" '{ $(NF-1) = sprintf("%.3f", $(NF-1) - launch); $1 = "2 MPI ranks x 1 thread, launch of"; $2 = sprintf("%.2f", launch) " s"; $3 = "excluded"; $4 = ""; print }')"
+$(echo "$mpi_line" | awk -v launch="$launch" '{
+    printf "2 MPI ranks x 1 thread, launch (%.2f s) excluded %d %.3f %s\n", launch, $(NF-2), $(NF-1) - launch, $NF }')"
 
 echo "| configuration | runs | wall [s] | runs/s | efficiency | mean integration per run [ms] | overhead per run [ms] |"
 echo "|---|---|---|---|---|---|---|"

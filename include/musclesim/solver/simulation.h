@@ -4,12 +4,14 @@
 // A Simulation owns its SUNContext, CVODE memory, vector, matrix and linear solver (RAII)
 // and shares nothing writable, so many may run on many threads. Running it again re-uses
 // the CVODE memory through CVodeReInit. Every breakpoint of the inputs is a CVODE stop
-// time, followed by a re-initialisation, so no step straddles a jump. Root functions stop
-// the run at the user's length limits and at zero length, and restart the integrator at
-// every kink of NetworkSystem::kinks(): where an element's length crosses a passive or tendon
-// slack length (dT/dl jumps), where an actuator with different tension-velocity slopes on
-// either side of v = 0 reverses (docs/model.md section 9), and where an activation state
-// meets its excitation (section 8).
+// time, followed by a re-initialisation, so no step straddles a jump. CVODE takes one step
+// at a time; the outputs inside a step come from its interpolant. Functions of the state,
+// watched by their sign at each step's end and located on the interpolant when it changes
+// (docs/solver.md), stop the run at the user's length limits and at zero length, and restart
+// the integrator at every kink of NetworkSystem::kinks(): where an element's length crosses a
+// passive or tendon slack length (dT/dl jumps), where an actuator with different
+// tension-velocity slopes on either side of v = 0 reverses (docs/model.md section 9), and
+// where an activation state meets its excitation (section 8).
 #pragma once
 
 #include <memory>
