@@ -156,6 +156,14 @@ struct Callbacks {
   LinearSystem* linear = nullptr;
   std::vector<Root> roots;
   std::string last_error;
+  // The inputs (activation, excitation, loads) jump only at the stop times, and a step's
+  // right-hand sides belong to the segment it is in: an implicit step ending on a stop
+  // must see the input before the jump, a restart the input after it, whichever side of
+  // the exact time the waveform puts its edge. The inputs are read at the time clamped into
+  // [input_from, input_to], a few ulps inside the segment.
+  double input_from = 0.0;
+  double input_to = 0.0;
+  double InputTime(double t) const { return std::clamp(t, input_from, input_to); }
 };
 
 int RightHandSide(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
@@ -164,10 +172,10 @@ int RightHandSide(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
   if (cb->actuator != nullptr) {
     const double* state = N_VGetArrayPointer(y);
     rate[0] = state[1];
-    rate[1] = cb->actuator->Acceleration(t, state[0], state[1]);
+    rate[1] = cb->actuator->Acceleration(cb->InputTime(t), state[0], state[1]);
     return std::isfinite(rate[1]) ? 0 : 1;
   }
-  cb->system->RightHandSide(t, N_VGetArrayPointer(y), rate);
+  cb->system->RightHandSide(cb->InputTime(t), N_VGetArrayPointer(y), rate);
   // a non-finite value is a recoverable error: CVODE retries with a smaller step. A
   // position's rate is a velocity of the state itself; the accelerations (odd entries) and
   // the activation rates after the nodes' states are computed
@@ -187,7 +195,8 @@ int AnalyticJacobian(sunrealtype t, N_Vector y, N_Vector, SUNMatrix jacobian, vo
   const auto* cb = static_cast<const Callbacks*>(data);
   if (cb->actuator != nullptr && cb->linear->dense()) {
     const double* state = N_VGetArrayPointer(y);
-    const ActuatorSystem::JacobianRow row = cb->actuator->Jacobian(t, state[0], state[1]);
+    const ActuatorSystem::JacobianRow row =
+        cb->actuator->Jacobian(cb->InputTime(t), state[0], state[1]);
     SM_ELEMENT_D(jacobian, 0, 0) = 0.0;
     SM_ELEMENT_D(jacobian, 0, 1) = 1.0;
     SM_ELEMENT_D(jacobian, 1, 0) = row.by_length;
@@ -195,7 +204,7 @@ int AnalyticJacobian(sunrealtype t, N_Vector y, N_Vector, SUNMatrix jacobian, vo
     return 0;
   }
   std::vector<double>& values = cb->linear->values();
-  cb->system->Jacobian(t, N_VGetArrayPointer(y), values.data());
+  cb->system->Jacobian(cb->InputTime(t), N_VGetArrayPointer(y), values.data());
   cb->linear->Fill(values.data(), jacobian);
   return 0;
 }
@@ -525,7 +534,9 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
   std::vector<double> g_before(root_count), g_after(root_count);
   std::vector<char> active(root_count);
   const auto evaluate_roots = [&](double t, const double* state, std::vector<double>& g) {
-    for (std::size_t i = 0; i < root_count; ++i) g[i] = RootValue(system, cb.roots[i], t, state);
+    for (std::size_t i = 0; i < root_count; ++i) {
+      g[i] = RootValue(system, cb.roots[i], cb.InputTime(t), state);
+    }
   };
   const auto arm_roots = [&](double t) {
     evaluate_roots(t, y, g_before);
@@ -546,7 +557,7 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
       const double tolerance =
           100.0 * std::numeric_limits<double>::epsilon() * (std::abs(t_after) + std::abs(step));
       const double at = LocateCrossing(
-          [&](double t) { return RootValue(system, root, t, interpolate(t)); }, t_before,
+          [&](double t) { return RootValue(system, root, cb.InputTime(t), interpolate(t)); }, t_before,
           g_before[i], t_after, g_after[i], tolerance);
       if (first < 0 || at < crossing_time) {
         first = static_cast<int>(i);
@@ -560,9 +571,13 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
   bool fresh = true;  // no step taken since the last (re)initialisation
   long calls = 0;     // CVode calls, one internal step each: the max_steps guard
   configure(t);
-  arm_roots(t);
   record(t, y);
   for (double stop : stops) {
+    // the segment [t, stop]: its inputs read a few ulps inside it (Callbacks::InputTime)
+    const double middle = 0.5 * (t + stop);
+    cb.input_from = std::min(t + merge, middle);
+    cb.input_to = std::max(stop - merge, middle);
+    arm_roots(t);
     ws.Check(CVodeSetStopTime(ws.cvode, stop), "CVodeSetStopTime");
     while (t < stop) {
       if (fresh && stop - t <= merge) {
@@ -632,7 +647,6 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
       // an input jumps at `stop`: restart with fresh history
       ws.Accumulate(stats);
       configure(t);
-      arm_roots(t);
       fresh = true;
     }
   }
