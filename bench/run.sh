@@ -58,10 +58,16 @@ bash bench/step_cost_table.sh "$build" > "$out/step_cost_table.md"
 echo "== work-precision"
 rows="$out/work_precision.csv"
 : > "$rows"
-for s in isometric concentric eccentric; do
+# SciPy's peer handles the constant and step inputs of the first three only; its rows leave
+# the last column (steps) empty
+for s in isometric concentric eccentric twitches sine_load activation_ramp hanging_mass; do
   reference=$(mktemp)
   "$build/bench/work_precision" "scenarios/$s.yaml" "$reference" > "$out/wp_$s.csv" 2>> "$out/machine.txt"
-  "$python" bench/work_precision/scipy_peer.py "scenarios/$s.yaml" "$reference" | tail -n +2 >> "$out/wp_$s.csv"
+  case $s in
+    isometric|concentric|eccentric)
+      "$python" bench/work_precision/scipy_peer.py "scenarios/$s.yaml" "$reference" |
+        tail -n +2 | sed 's/$/,/' >> "$out/wp_$s.csv" ;;
+  esac
   rm -f "$reference"
   if [ ! -s "$rows" ]; then head -1 "$out/wp_$s.csv" > "$rows"; fi
   tail -n +2 "$out/wp_$s.csv" >> "$rows"

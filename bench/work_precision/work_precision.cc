@@ -1,10 +1,12 @@
 // Work-precision of musclesim's CVODE configurations and of Boost.Odeint's rosenbrock4 on
-// a canonical scenario: for rtol from 1e-3 to 1e-11, the achieved error against a reference
+// a canonical scenario (two states (x, xdot), or three with activation dynamics): for rtol from 1e-3 to 1e-11, the achieved error against a reference
 // run at rtol 1e-13 (itself checked against a second method) and the median wall time.
 //   work_precision SCENARIO.yaml REFERENCE.csv > rows.csv
 // writes the reference trajectory (t, length, tension on the output grid) to REFERENCE.csv
 // for the Python peers, and CSV rows
-//   scenario,tool,method,rtol,error,error_length,error_tension,wall_seconds,rhs_evals
+//   scenario,tool,method,rtol,error,error_length,error_tension,wall_seconds,rhs_evals,steps
+// rhs_evals: right-hand-side evaluations (musclesim's include those of a difference-quotient
+// Jacobian); steps: accepted internal steps (CVODE's, rosenbrock4's).
 // Errors: the largest relative error of the length over the output grid, and of the total
 // tension relative to its largest value; `error` is the larger of the two.
 #include <algorithm>
@@ -59,27 +61,96 @@ double MedianSeconds(int repeats, const std::function<void()>& run) {
   return times[times.size() / 2];
 }
 
+// One CVODE run on the output grid; `stats` gets its counters. A run that stops early (a
+// limit, a failure) gives an empty grid, whose error is infinite.
 Grid Cvode(const ScenarioSpec& spec, const ActuatorSystem& system, Simulation& sim,
-           const SolverOptions& options, long* rhs_evals) {
+           const SolverOptions& options, RunStats* stats) {
   std::vector<TrajectoryPoint> trajectory;
-  const RunStats stats = sim.Run(system, options, spec.Request(), trajectory);
-  if (rhs_evals != nullptr) *rhs_evals = stats.rhs_evals;
+  const RunStats run = sim.Run(system, options, spec.Request(), trajectory);
+  if (stats != nullptr) *stats = run;
   Grid g;
   for (const TrajectoryPoint& p : trajectory) {
     g.t.push_back(p.t);
     g.length.push_back(p.sample.length);
     g.tension.push_back(p.sample.tension.total);
   }
-  if (stats.status != RunStatus::kCompleted) g.t.clear();
+  if (run.status != RunStatus::kCompleted) g.t.clear();
+  return g;
+}
+
+// The output grid (t_start + k * output_interval, then t_end, as Simulation::Run records it)
+// cut at the inputs' breakpoints: one list of times per segment, from its start to its stop,
+// with the grid index each time records (-1: a segment's end that is no grid time). A grid
+// time a rounding error from a stop is recorded there, as CVODE does; a segment shorter
+// than that is skipped.
+struct Segment {
+  std::vector<double> times;
+  std::vector<long> grid_index;
+};
+
+std::vector<Segment> Segments(const ScenarioSpec& spec, const ActuatorSystem& system,
+                              std::vector<double>& grid) {
+  const RunRequest request = spec.Request();
+  const double span = spec.t_end - spec.t_start;
+  const long outputs = static_cast<long>(std::ceil(span / request.output_interval - 1e-9));
+  grid.clear();
+  for (long k = 0; k <= outputs; ++k) {
+    grid.push_back(k == outputs ? spec.t_end : spec.t_start + k * request.output_interval);
+  }
+  const double same = 1e-12 * span;  // closer than this is one time
+  std::vector<double> stops;
+  for (double b : system.Breakpoints(spec.t_start, spec.t_end)) {
+    const double previous = stops.empty() ? spec.t_start : stops.back();
+    if (b - previous > same && spec.t_end - b > same) stops.push_back(b);
+  }
+  stops.push_back(spec.t_end);
+
+  std::vector<Segment> segments;
+  double t0 = spec.t_start;
+  long next = 0;  // the first grid time not yet given to a segment
+  for (double stop : stops) {
+    Segment s;
+    s.times.push_back(t0);
+    s.grid_index.push_back(next < static_cast<long>(grid.size()) && grid[next] - t0 <= same ? next++ : -1);
+    while (next < static_cast<long>(grid.size()) && grid[next] < stop - same) {
+      s.times.push_back(grid[next]);
+      s.grid_index.push_back(next++);
+    }
+    s.times.push_back(stop);
+    s.grid_index.push_back(next < static_cast<long>(grid.size()) && grid[next] - stop <= same ? next++ : -1);
+    segments.push_back(std::move(s));
+    t0 = stop;
+  }
+  return segments;
+}
+
+// Integrates segment by segment (restarting at each breakpoint, as a careful user would),
+// `segment` integrating one from the state `y` through its times and calling `observe` at each;
+// `tension` gives the total tension at (t, state). Returns the run on the output grid.
+Grid OnGrid(const ScenarioSpec& spec, const ActuatorSystem& system, std::vector<double> y,
+            const std::function<double(double t, const double* y)>& tension,
+            const std::function<void(std::vector<double>& y, const std::vector<double>& times,
+                                     const std::function<void(double, const double*)>& observe)>& segment) {
+  std::vector<double> grid;
+  const std::vector<Segment> segments = Segments(spec, system, grid);
+  Grid g;
+  for (const Segment& s : segments) {
+    std::size_t i = 0;  // integrate_times observes every time of the list once, in order
+    segment(y, s.times, [&](double, const double* state) {
+      const long k = s.grid_index[i++];
+      if (k < 0 || (!g.t.empty() && g.t.back() == grid[k])) return;  // not a grid time, or recorded
+      g.t.push_back(grid[k]);
+      g.length.push_back(state[0]);
+      g.tension.push_back(tension(grid[k], state));
+    });
+  }
   return g;
 }
 
 // Boost.Odeint: rosenbrock4 with its error controller and dense output, given the analytic
-// Jacobian, integrated segment by segment between the inputs' breakpoints (restarting at
-// each, as a careful user would) and observed on the same output grid.
-Grid Odeint(const ScenarioSpec& spec, const ActuatorSystem& system, double rtol, double atol,
-            long* rhs_evals) {
-  long evaluations = 0;
+// Jacobian (and df/dt), on the two states (x, xdot).
+Grid OdeintTwoState(const ScenarioSpec& spec, const ActuatorSystem& system, double rtol,
+                    double atol, OdeintCounts& counts) {
   const TwoStateProblem problem{
       &system,
       [](const void* s, double t, double x, double v) {
@@ -90,37 +161,78 @@ Grid Odeint(const ScenarioSpec& spec, const ActuatorSystem& system, double rtol,
             static_cast<const ActuatorSystem*>(s)->Jacobian(t, x, v);
         *by_length = row.by_length;
         *by_rate = row.by_rate;
+      },
+      [](const void* s, double t, double x, double v) {
+        // d/dt of (F_load(t, x) - T(x, -v, u(t)) - ...) / m: the force waveforms' slopes
+        // and the activation's through dT/du
+        const ActuatorSystem& system = *static_cast<const ActuatorSystem*>(s);
+        double load_slope = 0.0;
+        for (const Load& load : system.loads().loads()) {
+          if (load.kind == LoadKind::kForce) load_slope += load.force.Slope(t);
+        }
+        const Waveform& activation = system.activation();
+        const TensionSample tension = system.model().Evaluate(x, -v, activation.Evaluate(t));
+        return (load_slope - tension.d_activation * activation.Slope(t)) / system.effective_mass();
       }};
-  std::vector<double> stops = system.Breakpoints(spec.t_start, spec.t_end);
-  stops.push_back(spec.t_end);
-  const RunRequest request = spec.Request();
-  const long outputs = static_cast<long>(std::ceil((spec.t_end - spec.t_start) / request.output_interval - 1e-9));
-  std::vector<double> times;
-  for (long k = 0; k <= outputs; ++k) times.push_back(k == outputs ? spec.t_end : spec.t_start + k * request.output_interval);
+  return OnGrid(
+      spec, system, {spec.initial_length, spec.initial_lengthening_rate},
+      [&](double t, const double* y) { return system.Observe(t, y[0], y[1]).tension.total; },
+      [&](std::vector<double>& y, const std::vector<double>& times, const auto& observe) {
+        OdeintSegment(problem, rtol, atol, y.data(), times, observe, counts);
+      });
+}
 
-  Grid g;
-  double y[2] = {spec.initial_length, spec.initial_lengthening_rate};
-  double t0 = spec.t_start;
-  std::size_t next = 0;
-  for (double stop : stops) {
-    // the output times in [t0, stop], and stop itself to carry the state across
-    std::vector<double> segment;
-    while (next < times.size() && times[next] <= stop) segment.push_back(times[next++]);
-    const bool stop_is_output = !segment.empty() && segment.back() == stop;
-    if (segment.empty() || segment.front() != t0) segment.insert(segment.begin(), t0);
-    if (!stop_is_output) segment.push_back(stop);
-    const bool first_is_output = !g.t.empty() ? g.t.back() != t0 : true;
-    evaluations += OdeintSegment(problem, rtol, atol, y, segment, [&](double t, const double* s) {
-      if (t == t0 && !first_is_output) return;   // already recorded
-      if (t == stop && !stop_is_output) return;  // not an output time
-      g.t.push_back(t);
-      g.length.push_back(s[0]);
-      g.tension.push_back(system.Observe(t, s[0], s[1]).tension.total);
-    });
-    t0 = stop;
+// The network's analytic Jacobian, by pattern entry, scattered into Odeint's dense row-major
+// matrix.
+struct OdeintNetwork {
+  const NetworkSystem* system;
+  std::vector<double> values;  // one per entry of the Jacobian's pattern
+
+  static void Rhs(void* context, double t, const double* y, double* dydt) {
+    static_cast<OdeintNetwork*>(context)->system->RightHandSide(t, y, dydt);
   }
-  if (rhs_evals != nullptr) *rhs_evals = evaluations;
-  return g;
+  static void DenseJacobian(void* context, double t, const double* y, double* jacobian) {
+    OdeintNetwork& network = *static_cast<OdeintNetwork*>(context);
+    const JacobianPattern& pattern = network.system->jacobian_pattern();
+    network.system->Jacobian(t, y, network.values.data());
+    const int n = pattern.size;
+    std::fill(jacobian, jacobian + n * n, 0.0);
+    for (int column = 0; column < n; ++column) {
+      for (int k = pattern.column_starts[column]; k < pattern.column_starts[column + 1]; ++k) {
+        jacobian[pattern.rows[k] * n + column] = network.values[k];
+      }
+    }
+  }
+};
+
+bool PiecewiseConstant(const Waveform& w) {
+  return w.kind == WaveformKind::kConstant || w.kind == WaveformKind::kStep ||
+         w.kind == WaveformKind::kPulses;
+}
+
+// With activation dynamics the activation u is a third state: rosenbrock4 on the system's
+// network (x, xdot, u), starting where Simulation::Run starts it. The N-state peer takes
+// df/dt = 0, so the inputs must be constant between breakpoints.
+Grid OdeintNetworkRun(const ScenarioSpec& spec, const ActuatorSystem& system, double rtol,
+                      double atol, OdeintCounts& counts) {
+  const NetworkSystem& network = system.network();
+  OdeintNetwork context{&network, std::vector<double>(network.jacobian_pattern().entries())};
+  const NStateProblem problem{network.state_size(), &context, &OdeintNetwork::Rhs,
+                              &OdeintNetwork::DenseJacobian};
+  return OnGrid(
+      spec, system,
+      {spec.initial_length, spec.initial_lengthening_rate,
+       system.excitation()->InitialActivation(spec.t_start)},
+      [&](double t, const double* y) { return system.Observe(t, y[0], y[1], y[2]).tension.total; },
+      [&](std::vector<double>& y, const std::vector<double>& times, const auto& observe) {
+        OdeintSegmentN(problem, rtol, atol, y.data(), times, observe, counts);
+      });
+}
+
+Grid Odeint(const ScenarioSpec& spec, const ActuatorSystem& system, double rtol, double atol,
+            OdeintCounts& counts) {
+  return system.excitation() ? OdeintNetworkRun(spec, system, rtol, atol, counts)
+                             : OdeintTwoState(spec, system, rtol, atol, counts);
 }
 
 void WriteReference(const std::string& path, const Grid& g) {
@@ -143,6 +255,17 @@ int main(int argc, char** argv) {
   const ScenarioSpec spec = LoadScenario(argv[1]);
   const std::string name = std::filesystem::path(argv[1]).stem().string();
   const ActuatorSystem system = BuildSystem(spec);
+  if (system.excitation()) {
+    bool constant = PiecewiseConstant(system.excitation()->signal);
+    for (const Load& load : system.loads().loads()) {
+      if (load.kind == LoadKind::kForce) constant = constant && PiecewiseConstant(load.force);
+    }
+    if (!constant) {
+      std::fprintf(stderr, "%s: excitation and force loads must be constant, step or pulses "
+                           "(the N-state Odeint peer takes df/dt = 0 between breakpoints)\n", argv[1]);
+      return 2;
+    }
+  }
   Simulation sim;
 
   // the reference, and a second method to check it
@@ -151,7 +274,13 @@ int main(int argc, char** argv) {
   tight.atol = 1e-16;
   tight.jacobian = JacobianKind::kAnalytic;
   tight.method = IntegrationMethod::kBdf;
-  const Grid reference = Cvode(spec, system, sim, tight, nullptr);
+  RunStats reference_stats;
+  const Grid reference = Cvode(spec, system, sim, tight, &reference_stats);
+  if (reference.t.empty()) {
+    std::fprintf(stderr, "%s: the reference run stopped early: %s\n", argv[1],
+                 reference_stats.message.c_str());
+    return 1;
+  }
   tight.method = IntegrationMethod::kAdams;
   const Grid check = Cvode(spec, system, sim, tight, nullptr);
   const Errors agreement = Compare(check, reference);
@@ -159,12 +288,16 @@ int main(int argc, char** argv) {
                name.c_str(), agreement.length, agreement.tension);
   WriteReference(argv[2], reference);
 
-  std::printf("scenario,tool,method,rtol,error,error_length,error_tension,wall_seconds,rhs_evals\n");
+  std::fprintf(stderr, "%s: Odeint (%s) restarts at %zu breakpoints\n", name.c_str(),
+               system.excitation() ? "N-state, on the network (x, xdot, u)" : "two-state (x, xdot)",
+               system.Breakpoints(spec.t_start, spec.t_end).size());
+  const int repeats = 7;
+  std::printf("scenario,tool,method,rtol,error,error_length,error_tension,wall_seconds,rhs_evals,steps\n");
   const auto row = [&](const char* tool, const std::string& method, double rtol, const Grid& g,
-                       double seconds, long steps) {
+                       double seconds, long rhs_evals, long steps) {
     const Errors e = Compare(g, reference);
-    std::printf("%s,%s,%s,%.0e,%.6g,%.6g,%.6g,%.6g,%ld\n", name.c_str(), tool, method.c_str(), rtol,
-                e.worst(), e.length, e.tension, seconds, steps);
+    std::printf("%s,%s,%s,%.0e,%.6g,%.6g,%.6g,%.6g,%ld,%ld\n", name.c_str(), tool, method.c_str(),
+                rtol, e.worst(), e.length, e.tension, seconds, rhs_evals, steps);
   };
   for (int k = 3; k <= 11; ++k) {
     const double rtol = std::pow(10.0, -k), atol = rtol * 1e-3;
@@ -176,17 +309,20 @@ int main(int argc, char** argv) {
         o.rtol = rtol;
         o.atol = atol;
         Grid g;
-        long steps = 0;
-        const double seconds = MedianSeconds(7, [&] { g = Cvode(spec, system, sim, o, &steps); });
+        RunStats stats;
+        const double seconds = MedianSeconds(repeats, [&] { g = Cvode(spec, system, sim, o, &stats); });
         row("musclesim", std::string(ToString(method)) + "-" +
                              (jacobian == JacobianKind::kAnalytic ? "analytic" : "dq"),
-            rtol, g, seconds, steps);
+            rtol, g, seconds, stats.rhs_evals, stats.steps);
       }
     }
     Grid g;
-    long steps = 0;
-    const double seconds = MedianSeconds(7, [&] { g = Odeint(spec, system, rtol, atol, &steps); });
-    row("odeint", "rosenbrock4", rtol, g, seconds, steps);
+    OdeintCounts counts;
+    const double seconds = MedianSeconds(repeats, [&] {
+      counts = OdeintCounts();
+      g = Odeint(spec, system, rtol, atol, counts);
+    });
+    row("odeint", "rosenbrock4", rtol, g, seconds, counts.rhs_evals, counts.steps);
   }
   return 0;
 }
