@@ -19,6 +19,7 @@
 #include "linear_system.h"
 #include "run_roots.h"
 #include "small_vector.h"
+#include "step_polynomial.h"
 
 namespace musclesim {
 
@@ -144,6 +145,9 @@ void Validate(const NetworkRunRequest& r) {
 namespace {
 
 constexpr double kNewtonConvergenceCoefficient = 0.03;
+// Below this many outputs in one step, CVodeGetDky per output costs less than fetching the
+// derivatives for a polynomial (the order is at least 1: two derivatives)
+constexpr long kOutputsPerPolynomial = 2;
 constexpr long kJacobianEvaluationFrequency = 10;  // steps
 
 // What the C callbacks see through CVODE's user data.
@@ -517,12 +521,27 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
   };
   // Records the grid outputs up to `until` within the last step; the state at `until` is
   // `at_until`. An output a rounding error past `until` is labelled with its grid time.
+  StepPolynomial polynomial;
   const auto record_outputs = [&](double until, const double* at_until) {
     if (every_step) return;
+    // outputs strictly inside: more than the interpolant has terms, and one polynomial
+    // serves them all
+    long inside = 0;
+    while (next_output + inside <= outputs && output_time(next_output + inside) < until) ++inside;
+    const bool by_polynomial = inside > kOutputsPerPolynomial &&
+                               polynomial.Fetch(ws.cvode, ws.between, n) &&
+                               inside > polynomial.terms();
     while (next_output <= outputs) {
       const double out = output_time(next_output);
       if (out - until > merge) break;
-      record(out, out < until ? interpolate(out) : at_until);
+      if (out >= until) {
+        record(out, at_until);
+      } else if (by_polynomial) {
+        polynomial.Evaluate(out, between);
+        record(out, between);
+      } else {
+        record(out, interpolate(out));
+      }
       ++next_output;
     }
   };
