@@ -19,7 +19,9 @@ class StepPolynomial {
   // point by point instead).
   bool Fetch(void* cvode, N_Vector scratch, int size) {
     int order = 0;
-    if (CVodeGetLastOrder(cvode, &order) < 0 || CVodeGetCurrentTime(cvode, &t_n_) < 0) return false;
+    if (CVodeGetLastOrder(cvode, &order) < 0 || CVodeGetCurrentTime(cvode, &t_n_) < 0) {
+      return false;
+    }
     size_ = size;
     terms_ = order + 1;
     coefficients_.resize(static_cast<std::size_t>(terms_ * size));
@@ -28,7 +30,9 @@ class StepPolynomial {
     for (int k = 0; k < terms_; ++k) {
       if (k > 0) factorial *= k;
       if (CVodeGetDky(cvode, t_n_, k, scratch) < 0) return false;
-      for (int i = 0; i < size; ++i) coefficients_[static_cast<std::size_t>(k * size + i)] = values[i] / factorial;
+      for (int i = 0; i < size; ++i) {
+        coefficients_[static_cast<std::size_t>(k * size + i)] = values[i] / factorial;
+      }
     }
     return true;
   }
