@@ -34,6 +34,7 @@
 
 #include "musclesim/io/scenario.h"
 #ifdef MUSCLESIM_WITH_ODEINT
+#include "work_precision/odeint_network.h"
 #include "work_precision/odeint_peer.h"
 #endif
 
@@ -240,27 +241,6 @@ BENCHMARK(BM_ChainRun)
     ->Unit(benchmark::kMillisecond);
 
 #ifdef MUSCLESIM_WITH_ODEINT
-// The network's analytic Jacobian, by pattern entry, scattered into Odeint's dense matrix.
-struct OdeintChain {
-  const NetworkSystem* system;
-  std::vector<double> values;  // one per entry of the Jacobian's pattern
-
-  static void Rhs(void* context, double t, const double* y, double* dydt) {
-    static_cast<OdeintChain*>(context)->system->RightHandSide(t, y, dydt);
-  }
-  static void DenseJacobian(void* context, double t, const double* y, double* jacobian) {
-    OdeintChain& chain = *static_cast<OdeintChain*>(context);
-    const JacobianPattern& pattern = chain.system->jacobian_pattern();
-    chain.system->Jacobian(t, y, chain.values.data());
-    const int n = pattern.size;
-    std::fill(jacobian, jacobian + n * n, 0.0);
-    for (int column = 0; column < n; ++column) {
-      for (int k = pattern.column_starts[column]; k < pattern.column_starts[column + 1]; ++k) {
-        jacobian[pattern.rows[k] * n + column] = chain.values[k];  // row-major
-      }
-    }
-  }
-};
 
 // One Odeint run of the chain at the chain's rtol and atol, on the CVODE runs' output grid
 // (t_start + k * output_interval, then t_end), restarting at every breakpoint of the inputs.
@@ -269,9 +249,9 @@ std::vector<double> RunOdeint(const Chain& chain, OdeintCounts& counts) {
   const auto start = std::chrono::steady_clock::now();
   const NetworkSystem& system = chain.system;
   const NetworkRunRequest& request = chain.request;
-  OdeintChain context{&system, std::vector<double>(system.jacobian_pattern().entries())};
-  const NStateProblem problem{system.state_size(), &context, &OdeintChain::Rhs,
-                              &OdeintChain::DenseJacobian};
+  OdeintNetwork context{&system, std::vector<double>(system.jacobian_pattern().entries())};
+  const NStateProblem problem{system.state_size(), &context, &OdeintNetwork::Rhs,
+                              &OdeintNetwork::DenseJacobian};
   std::vector<double> y(system.state_size());
   system.InitialState(request.t_start, y.data());
 
