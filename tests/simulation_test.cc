@@ -221,6 +221,59 @@ TEST(Simulation, TooManyStepsIsAFailureNamingCvodesFlag) {
   EXPECT_FALSE(run.trajectory.empty());  // the rows before the failure are kept
 }
 
+TEST(Simulation, StepsStopAtMaxSteps) {
+  // the guard allows exactly max_steps steps, and the last row is where the last step ended
+  Experiment concentric = testing::Concentric();
+  concentric.request.output_interval = 0.0;  // every internal step a row
+  concentric.options.max_steps = 50;
+  const RunResult run = concentric.Run();
+  EXPECT_EQ(run.stats.status, RunStatus::kFailed);
+  EXPECT_EQ(run.stats.steps, 50);
+  EXPECT_EQ(run.trajectory.back().t, run.stats.final_time);
+}
+
+// Times strictly increasing, and the grid's last time the run's end.
+void ExpectIncreasingTimes(const RunResult& run) {
+  for (std::size_t i = 1; i < run.trajectory.size(); ++i) {
+    ASSERT_LT(run.trajectory[i - 1].t, run.trajectory[i].t) << "row " << i;
+  }
+}
+
+TEST(Simulation, ALimitReachedOnAnOutputTimeEndsWithOneRow) {
+  // the limit set to the length the free run records at t = 0.1 s (and at its end): the run
+  // stops there, a rounding error either side of the grid time, with one last row
+  Experiment concentric = testing::Concentric();
+  concentric.request.max_length.reset();
+  const RunResult free_run = concentric.Run();
+  ASSERT_EQ(free_run.stats.status, RunStatus::kCompleted);
+  for (const std::size_t row : {std::size_t{100}, free_run.trajectory.size() - 1}) {
+    const double level = free_run.trajectory[row].sample.length;
+    ASSERT_LT(level, concentric.request.length);  // shortening: a minimum length
+    Experiment limited = concentric;
+    limited.request.min_length = level;
+    const RunResult run = limited.Run();
+    SCOPED_TRACE("row " + std::to_string(row));
+    EXPECT_EQ(run.stats.status, RunStatus::kLimit);
+    ExpectIncreasingTimes(run);
+    EXPECT_NEAR(run.trajectory.back().t, free_run.trajectory[row].t, 1e-12);
+    EXPECT_NEAR(run.trajectory.back().sample.length, level, 1e-12);
+    EXPECT_LE(run.trajectory.size(), row + 1);
+  }
+}
+
+TEST(Simulation, AGridFarFromZeroHasOneRowPerIntervalAndEndsAtTheEnd) {
+  // 0.3 s from t = 1e6 s at 0.01 s: 30 intervals, though the span's rounding makes
+  // span / interval 30.000000005
+  Experiment concentric = testing::Concentric();
+  concentric.request.t_start = 1000000.1;
+  concentric.request.t_end = 1000000.4;
+  concentric.request.output_interval = 0.01;
+  const RunResult run = concentric.Run();
+  ASSERT_EQ(run.trajectory.size(), 31u);
+  ExpectIncreasingTimes(run);
+  EXPECT_EQ(run.trajectory.back().t, 1000000.4);
+}
+
 TEST(Simulation, EveryStepModeStopsExactlyAtBreakpoints) {
   Experiment concentric = testing::Concentric();
   concentric.request.output_interval = 0.0;  // every internal step

@@ -514,7 +514,13 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
   stops.push_back(request.t_end);
   const bool every_step = request.output_interval == 0.0;
   const double span = request.t_end - request.t_start;
-  const long outputs = every_step ? 0 : static_cast<long>(std::ceil(span / request.output_interval - 1e-9));
+  long outputs = every_step ? 0 : static_cast<long>(std::ceil(span / request.output_interval - 1e-9));
+  // far from t = 0 the span itself carries rounding errors: a grid time within `merge` of
+  // t_end is t_end, which the last output is anyway
+  while (outputs > 1 &&
+         request.t_start + (outputs - 1) * request.output_interval >= request.t_end - merge) {
+    --outputs;
+  }
   long next_output = 1;  // output k is at t_start + k * interval, the last one at t_end
   const auto output_time = [&](long k) {
     return k >= outputs ? request.t_end : request.t_start + k * request.output_interval;
@@ -522,7 +528,9 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
   // Records the grid outputs up to `until` within the last step; the state at `until` is
   // `at_until`. An output a rounding error past `until` is labelled with its grid time.
   StepPolynomial polynomial;
-  const auto record_outputs = [&](double until, const double* at_until) {
+  // `through_until`: also the outputs at `until` and a rounding error past it, labelled with
+  // their grid times; otherwise only those before it (the run ends there with its own row).
+  const auto record_outputs = [&](double until, const double* at_until, bool through_until) {
     if (every_step) return;
     // outputs strictly inside: more than the interpolant has terms, and one polynomial
     // serves them all
@@ -533,7 +541,7 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
                                inside > polynomial.terms();
     while (next_output <= outputs) {
       const double out = output_time(next_output);
-      if (out - until > merge) break;
+      if (through_until ? out - until > merge : out >= until - merge) break;
       if (out >= until) {
         record(out, at_until);
       } else if (by_polynomial) {
@@ -603,7 +611,7 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
         // a rounding error past a restart, too close for CVODE's first step (CV_TOO_CLOSE):
         // the state there is the state here
         t = stop;
-        record_outputs(t, y);
+        record_outputs(t, y, true);
         break;
       }
       const double t_before = t;
@@ -613,23 +621,24 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
           fresh && !every_step && next_output <= outputs ? std::min(output_time(next_output), stop)
                                                           : stop;
       fresh = false;
-      const int flag = CVode(ws.cvode, toward, ws.state, &t, CV_ONE_STEP);
-      if (flag < 0) {
-        return finish(RunStatus::kFailed, t,
-                      "CVODE failed at t = " + FormatNumber(t) + " s with " + FlagName(flag) +
-                          (cb.last_error.empty() ? "" : " (" + cb.last_error + ")"));
-      }
-      if (++calls > options.max_steps) {
+      if (calls == options.max_steps) {
         // CVODE's own name for the condition, which the driver checks itself: one step per call
         return finish(RunStatus::kFailed, t,
                       "CVODE failed at t = " + FormatNumber(t) +
                           " s with CV_TOO_MUCH_WORK (more than max_steps = " +
                           std::to_string(options.max_steps) + " internal steps)");
       }
+      ++calls;
+      const int flag = CVode(ws.cvode, toward, ws.state, &t, CV_ONE_STEP);
+      if (flag < 0) {
+        return finish(RunStatus::kFailed, t,
+                      "CVODE failed at t = " + FormatNumber(t) + " s with " + FlagName(flag) +
+                          (cb.last_error.empty() ? "" : " (" + cb.last_error + ")"));
+      }
       evaluate_roots(t, y, g_after);
       const int hit = find_crossing(t_before, t, t - t_before);
       if (hit < 0) {
-        record_outputs(t, y);
+        record_outputs(t, y, true);
         if (every_step) record(t, y);
         g_before.swap(g_after);
         continue;
@@ -638,8 +647,8 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
       t = crossing_time;
       const double* at_crossing = interpolate(t);
       std::copy(at_crossing, at_crossing + n, y);
-      record_outputs(t, y);
       const Root& root = cb.roots[static_cast<std::size_t>(hit)];
+      record_outputs(t, y, root.kind == Root::kKink);
       if (root.kind != Root::kKink) {
         const std::string& name = system.elements()[root.element].name;
         record(t, y);
