@@ -1,5 +1,6 @@
 // The Newton iteration's matrix and linear solver for one system size and pattern: SUNDIALS
-// dense, band or KLU sparse, musclesim's small dense one, and how a Jacobian in pattern order is written into each.
+// dense, band or KLU sparse, or musclesim's small dense one, and how a Jacobian in pattern
+// order is written into each.
 #pragma once
 
 #include <sundials/sundials_context.h>
@@ -30,7 +31,9 @@ class LinearSystem {
 
   LinearSolverKind kind() const { return kind_; }
   // Whether the matrix is a SUNDIALS dense one (dense and small).
-  bool dense() const { return kind_ == LinearSolverKind::kDense || kind_ == LinearSolverKind::kSmall; }
+  bool dense() const {
+    return kind_ == LinearSolverKind::kDense || kind_ == LinearSolverKind::kSmall;
+  }
   SUNMatrix matrix() const { return matrix_; }
   SUNLinearSolver solver() const { return solver_; }
   // A buffer for the Jacobian's values, one per pattern entry.

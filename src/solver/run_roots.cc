@@ -22,7 +22,9 @@ std::vector<Root> RootsOf(const NetworkSystem& system, const NetworkRunRequest& 
     const int e = system.FindElement(limit.element);
     if (e < 0) {
       std::string known;
-      for (const Element& element : system.elements()) known += (known.empty() ? "" : ", ") + element.name;
+      for (const Element& element : system.elements()) {
+        known.append(known.empty() ? "" : ", ").append(element.name);
+      }
       throw ParameterError(path + "element", limit.element,
                            "names no element; the elements are: " + known);
     }

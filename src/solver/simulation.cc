@@ -238,7 +238,9 @@ struct Simulation::Workspace {
   NetworkSample sample;  // re-used by every record
 
   Workspace() {
-    if (SUNContext_Create(nullptr, &context) != 0) throw std::runtime_error("SUNContext_Create failed");
+    if (SUNContext_Create(nullptr, &context) != 0) {
+      throw std::runtime_error("SUNContext_Create failed");
+    }
   }
   ~Workspace() {
     if (cvode != nullptr) CVodeFree(&cvode);
@@ -504,8 +506,8 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
   // Times a rounding error apart (a pulse edge computed as start + k period + width and an
   // output time k interval, say) are one time: CVODE refuses to step over less than a few
   // ulps (CV_TOO_CLOSE), so nothing closer than `merge` is integrated over.
-  const double merge =
-      16.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(request.t_start), std::abs(request.t_end));
+  const double merge = 16.0 * std::numeric_limits<double>::epsilon() *
+                       std::max(std::abs(request.t_start), std::abs(request.t_end));
   std::vector<double> stops;
   for (double b : system.Breakpoints(request.t_start, request.t_end)) {
     const double previous = stops.empty() ? request.t_start : stops.back();
@@ -514,7 +516,8 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
   stops.push_back(request.t_end);
   const bool every_step = request.output_interval == 0.0;
   const double span = request.t_end - request.t_start;
-  long outputs = every_step ? 0 : static_cast<long>(std::ceil(span / request.output_interval - 1e-9));
+  long outputs =
+      every_step ? 0 : static_cast<long>(std::ceil(span / request.output_interval - 1e-9));
   // far from t = 0 the span itself carries rounding errors: a grid time within `merge` of
   // t_end is t_end, which the last output is anyway
   while (outputs > 1 &&
@@ -526,10 +529,10 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
     return k >= outputs ? request.t_end : request.t_start + k * request.output_interval;
   };
   // Records the grid outputs up to `until` within the last step; the state at `until` is
-  // `at_until`. An output a rounding error past `until` is labelled with its grid time.
+  // `at_until`. `through_until`: also an output at `until` or a rounding error past it,
+  // labelled with its grid time; otherwise only those before it (the run ends there with a
+  // row of its own).
   StepPolynomial polynomial;
-  // `through_until`: also the outputs at `until` and a rounding error past it, labelled with
-  // their grid times; otherwise only those before it (the run ends there with its own row).
   const auto record_outputs = [&](double until, const double* at_until, bool through_until) {
     if (every_step) return;
     // outputs strictly inside: more than the interpolant has terms, and one polynomial
@@ -583,9 +586,10 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
       // CVODE's own location tolerance: 100 ulps of the time and the step
       const double tolerance =
           100.0 * std::numeric_limits<double>::epsilon() * (std::abs(t_after) + std::abs(step));
-      const double at = LocateCrossing(
-          [&](double t) { return RootValue(system, root, cb.InputTime(t), interpolate(t)); }, t_before,
-          g_before[i], t_after, g_after[i], tolerance);
+      const auto g = [&](double t) {
+        return RootValue(system, root, cb.InputTime(t), interpolate(t));
+      };
+      const double at = LocateCrossing(g, t_before, g_before[i], t_after, g_after[i], tolerance);
       if (first < 0 || at < crossing_time) {
         first = static_cast<int>(i);
         crossing_time = at;
