@@ -145,9 +145,6 @@ void Validate(const NetworkRunRequest& r) {
 namespace {
 
 constexpr double kNewtonConvergenceCoefficient = 0.03;
-// Below this many outputs in one step, CVodeGetDky per output costs less than fetching the
-// derivatives for a polynomial (the order is at least 1: two derivatives)
-constexpr long kOutputsPerPolynomial = 2;
 constexpr long kJacobianEvaluationFrequency = 10;  // steps
 
 // What the C callbacks see through CVODE's user data.
@@ -535,13 +532,13 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
   StepPolynomial polynomial;
   const auto record_outputs = [&](double until, const double* at_until, bool through_until) {
     if (every_step) return;
-    // outputs strictly inside: more than the interpolant has terms, and one polynomial
-    // serves them all
+    // outputs strictly inside: more than the interpolant has terms (order + 1 derivatives to
+    // fetch), and one polynomial serves them all; fewer, and CVodeGetDky per output costs less
     long inside = 0;
     while (next_output + inside <= outputs && output_time(next_output + inside) < until) ++inside;
-    const bool by_polynomial = inside > kOutputsPerPolynomial &&
-                               polynomial.Fetch(ws.cvode, ws.between, n) &&
-                               inside > polynomial.terms();
+    int order = 0;
+    const bool by_polynomial = CVodeGetLastOrder(ws.cvode, &order) >= 0 && inside > order + 1 &&
+                               polynomial.Fetch(ws.cvode, ws.between, n);
     while (next_output <= outputs) {
       const double out = output_time(next_output);
       if (through_until ? out - until > merge : out >= until - merge) break;
