@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
-  libsundials-dev       # CVODE: the stiff integrator
+  libsundials-dev       # CVODES: the stiff integrator and its forward sensitivities
   libsuitesparse-dev    # KLU, the sparse direct solver behind linear_solver: sparse
   libeigen3-dev         # linear algebra of the Gaussian fit
   libyaml-cpp-dev       # scenario files

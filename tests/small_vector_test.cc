@@ -1,7 +1,7 @@
 // The small vector against NVECTOR_SERIAL holding the same data (the operations CVODE calls
 // most, aliasing included), and the small dense solver against Eigen's FullPivLU. SUNDIALS'
 // own drivers (tests/sundials_drivers/) cover every operation against their expected values.
-#include <cvode/cvode.h>
+#include <cvodes/cvodes.h>
 #include <gtest/gtest.h>
 #include <nvector/nvector_serial.h>
 #include <sunmatrix/sunmatrix_dense.h>

@@ -3,7 +3,7 @@
 // CVodeGetDky at each time, so they agree to rounding at every order CVODE uses.
 #include "solver/step_polynomial.h"
 
-#include <cvode/cvode.h>
+#include <cvodes/cvodes.h>
 #include <gtest/gtest.h>
 #include <nvector/nvector_serial.h>
 #include <sunlinsol/sunlinsol_dense.h>

@@ -1,7 +1,7 @@
 #include "musclesim/solver/simulation.h"
 
-#include <cvode/cvode.h>
-#include <cvode/cvode_ls.h>
+#include <cvodes/cvodes.h>
+#include <cvodes/cvodes_ls.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 #include <sunmatrix/sunmatrix_dense.h>

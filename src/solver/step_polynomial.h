@@ -5,7 +5,7 @@
 // history is exactly these scaled derivatives) for the price of q + 1 calls.
 #pragma once
 
-#include <cvode/cvode.h>
+#include <cvodes/cvodes.h>
 #include <sundials/sundials_nvector.h>
 
 #include <vector>
