@@ -345,13 +345,13 @@ TEST(TensionParameter, OptimalRangeEndsMatterOnlyWhereThePeakIs) {
   const TensionModel upper(PeakAtUpperEnd());
   const State s{0.1, 0.1, 0.7};
   for (Kind k : {Kind::kOptimalMin, Kind::kOptimalMax}) {
-    EXPECT_EQ(ParameterDerivative(interior, {k, 0}, s.x, s.v, s.u).total, 0.0);
+    EXPECT_EQ(TensionPartialsAt(interior, {k, 0}, s.x, s.v, s.u).total, 0.0);
   }
-  EXPECT_EQ(ParameterDerivative(upper, {Kind::kOptimalMin, 0}, s.x, s.v, s.u).total, 0.0);
+  EXPECT_EQ(TensionPartialsAt(upper, {Kind::kOptimalMin, 0}, s.x, s.v, s.u).total, 0.0);
   const double active = upper.Evaluate(s.x, s.v, s.u).active;
   const CurvePoint end = upper.active_length().sum().ValueAndSlope(0.11);
   // a few ulps of T_a's size: the quotient is one rounding from each product
-  EXPECT_NEAR(ParameterDerivative(upper, {Kind::kOptimalMax, 0}, s.x, s.v, s.u).total,
+  EXPECT_NEAR(TensionPartialsAt(upper, {Kind::kOptimalMax, 0}, s.x, s.v, s.u).total,
               -active * end.slope / end.value, 1e-13 * std::abs(active * end.slope / end.value));
 }
 
@@ -362,7 +362,7 @@ TEST(TensionParameter, AtTheSlackLengthTakesTheZeroBranch) {
   const TensionModel model(params);
   const double x = params.passive.slack_length;
   for (Kind k : {Kind::kPassiveScale, Kind::kPassiveRate, Kind::kSlackLength}) {
-    const TensionPartials d = ParameterDerivative(model, {k, 0}, x, 0.1, 1.0);
+    const TensionPartials d = TensionPartialsAt(model, {k, 0}, x, 0.1, 1.0);
     EXPECT_EQ(d.passive, 0.0);
     EXPECT_EQ(d.active, 0.0);
   }
@@ -372,7 +372,7 @@ TEST(TensionParameter, AtTheSlackLengthTakesTheZeroBranch) {
             model.Evaluate(x, 0.1, 1.0).passive);
   // just above it the right branch: dT_p/dx0 = -k_p alpha exp(alpha (x - x0)) -> -k_p alpha
   const double above = std::nextafter(x, 1.0);
-  EXPECT_NEAR(ParameterDerivative(model, {Kind::kSlackLength, 0}, above, 0.1, 1.0).passive,
+  EXPECT_NEAR(TensionPartialsAt(model, {Kind::kSlackLength, 0}, above, 0.1, 1.0).passive,
               -params.passive.k_p * params.passive.alpha,
               1e-14 * params.passive.k_p * params.passive.alpha);  // exp of ~1e-16: 1 ulp
 }
@@ -383,8 +383,8 @@ TEST(TensionParameter, VelocityDerivativesVanishAtZeroVelocity) {
   const TensionModel model(params);
   for (Kind k : {Kind::kMaxVelocity, Kind::kEpsilon, Kind::kEccentricMaxVelocity,
                  Kind::kEccentricLimit}) {
-    EXPECT_EQ(ParameterDerivative(model, {k, 0}, 0.1, 0.0, 1.0).total, 0.0);
-    EXPECT_EQ(ParameterDerivative(model, {k, 0}, 0.1, -0.0, 1.0).total, 0.0);
+    EXPECT_EQ(TensionPartialsAt(model, {k, 0}, 0.1, 0.0, 1.0).total, 0.0);
+    EXPECT_EQ(TensionPartialsAt(model, {k, 0}, 0.1, -0.0, 1.0).total, 0.0);
   }
 }
 
@@ -404,7 +404,7 @@ TEST(TensionParameter, LimitDerivativeKeepsItsPrecisionForSmallPsi) {
   const double active_scale =
       model.Evaluate(0.1, v, 1.0).active / model.velocity().Evaluate(v).value;  // u f_iso f_L
   // the series' next term is ~z^7, z ~ 1e-7 here: 1e-12 relative is rounding only
-  EXPECT_NEAR(ParameterDerivative(model, {Kind::kEccentricLimit, 0}, 0.1, v, 1.0).active,
+  EXPECT_NEAR(TensionPartialsAt(model, {Kind::kEccentricLimit, 0}, 0.1, v, 1.0).active,
               active_scale * series, 1e-12 * std::abs(active_scale * series));
 }
 

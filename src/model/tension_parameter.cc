@@ -345,8 +345,8 @@ TensionPartials TensionParameterDerivative::operator()(double x, double v, doubl
   return out;
 }
 
-TensionPartials ParameterDerivative(const TensionModel& model, const TensionParameter& parameter,
-                                    double x, double v, double u) {
+TensionPartials TensionPartialsAt(const TensionModel& model, const TensionParameter& parameter,
+                                  double x, double v, double u) {
   return TensionParameterDerivative(model, parameter)(x, v, u);
 }
 

@@ -118,7 +118,7 @@ class TensionParameterDerivative {
 // Allocates nothing (except in the ParameterError it throws as the constructor does), but
 // recomputes d f_peak/dp and the velocity constants at each call: a loop should build the
 // TensionParameterDerivative once.
-TensionPartials ParameterDerivative(const TensionModel& model, const TensionParameter& parameter,
-                                    double x, double v, double u);
+TensionPartials TensionPartialsAt(const TensionModel& model, const TensionParameter& parameter,
+                                  double x, double v, double u);
 
 }  // namespace musclesim
