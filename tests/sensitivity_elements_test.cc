@@ -69,19 +69,11 @@ TEST(SensitivityElements, LinearTendonStiffness) {
   ExpectSensitivitiesMatchDifferences(Network(), {}, {At("elements[2].stiffness", 3000.0)});
 }
 
-// Fails (worst 2.0e-5, junction.velocity at 0.2 s; the reference good to 1e-7): the tendon's
-// slack length moves the kink the tendon goes slack at (0.1853 s), where df/dp jumps (by
-// k / m = 1.5e5 m/s^2 per m on the 0.02 kg junction). Its difference quotient, over the
-// scenario rebuilt at l_s +- 6e-6 relative, spreads that jump over a band of +-1.2e-6 m
-// around the kink (3e-5 s at the crossing speed, 0.074 m/s), whose edges are kinks of the
-// sensitivity's right-hand side that the integrator does not stop at. The sensitivities
-// leave the band off by 4e-4 m/s per m in junction.velocity (2.8e-4 of the column's scale,
-// decaying to 2e-5 of it by 0.2 s), the same at rtol 1e-10, 1e-11 and 1e-12 and different on
-// another output grid; before the crossing they agree with the reference to 1e-8. The closed
-// form of a tension model's passive slack length crosses its kink within 1e-6
-// (sensitivity_model_test). Reproduce: musclesim run NETWORK.yaml --sensitivity
-// 'elements[2].slack_length' with this file, against --set 'elements[2].slack_length=...'.
-TEST(SensitivityElements, DISABLED_LinearTendonSlackLengthAcrossTheSlackLength) {
+// The tendon goes slack during the run: df/dp jumps from -k/m to 0 there. Its closed form
+// is evaluated on the base system's side of the kink, where the integrator restarts (a
+// difference quotient of the scenario rebuilt at l_s +- h would spread the jump over +-h and
+// leave the sensitivities off by 2e-5 of their scale past it).
+TEST(SensitivityElements, LinearTendonSlackLengthAcrossTheSlackLength) {
   ExpectSensitivitiesMatchDifferences(Network(), {}, {At("elements[2].slack_length", 0.195)});
 }
 

@@ -167,27 +167,6 @@ TEST(SensitivityModel, EccentricVelocityAcrossZero) {
   ExpectSensitivitiesMatchDifferences(SingleActuator(), {}, Under("model.", kEccentric));
 }
 
-// Fails: at atol 1e-15 the run with the sensitivity to the passive slack length stalls where
-// the length first reaches the slack length (0.0402 s), CV_TOO_MUCH_WORK, while the plain
-// run completes in ~5e3 steps. Before the crossing that sensitivity is exactly 0 (T_p does
-// not depend on x0 below it), so its error weight is atol / |x0| alone, 1e-14; at the
-// crossing its df/dp jumps from 0 to k_p alpha / m = 1e3 m/s^2 per m. The kink is located and
-// the integrator restarted only after a step that crosses it succeeds, and every such step
-// fails the sensitivity's error test unless it is shorter than ~atol / (|x0| 1e3 m/s^2 per m),
-// below the time's resolution (1e-17 s at 0.04 s). At atol 1e-14 (every other test) it
-// passes the crossing. The same stall with a stiffer passive element at atol 1e-13.
-// Reproduce: musclesim run SINGLE.yaml --sensitivity model.passive.slack_length
-//   --set solver.atol=1e-15 (the scenario of SingleActuator() above).
-TEST(SensitivityModel, DISABLED_PassiveSlackLengthAtATightAbsoluteTolerance) {
-  // a run that completes takes ~5e3 steps: 1e5 fails fast
-  const std::vector<std::string> tight = {"solver.atol=1e-15", "solver.max_steps=100000"};
-  const std::string scenario = SingleActuator();
-  ASSERT_EQ(testing::FullRun(scenario, tight).rows(), 11u);  // the plain run completes
-  const SensitivityTable table =
-      RunWithSensitivities(scenario, tight, {"model.passive.slack_length"});
-  EXPECT_EQ(table.stats.status, RunStatus::kCompleted) << table.stats.message;
-}
-
 // the network: models.muscle.* moves both actuators at once
 constexpr const char* kShared = "models.muscle.";
 

@@ -138,43 +138,38 @@ TEST(SensitivityRefusals, AParameterThatMovesABreakpoint) {
   const std::string scenario = testing::WriteTempFile("breakpoint.yaml", text);
   for (const char* path : {"activation.time", "load[0].time"}) {
     const std::string message = Refusal(scenario, path);
-    EXPECT_THAT(message, HasSubstr(std::string("--sensitivity ") + path + ": " + path));
+    EXPECT_THAT(message, HasSubstr(std::string("--sensitivity ") + path + ": "));
     EXPECT_THAT(message, HasSubstr("moves when an input jumps"));
   }
 }
 
 TEST(SensitivityRefusals, AnInteger) {
   const std::string message = Refusal(Single(), "model.velocity.n");
-  EXPECT_THAT(message, HasSubstr("--sensitivity model.velocity.n: model.velocity.n = 3"));
+  EXPECT_THAT(message, HasSubstr("--sensitivity model.velocity.n = 3: "));
   EXPECT_THAT(message, HasSubstr("cannot change continuously"));
   EXPECT_THAT(message, HasSubstr("must be an integer"));
 }
 
 TEST(SensitivityRefusals, ASetting) {
   const std::string message = Refusal(Single(), "solver.rtol");
-  EXPECT_THAT(message, HasSubstr("--sensitivity solver.rtol: solver.rtol is a setting of the "
-                                 "run, not a parameter of its dynamics"));
+  EXPECT_THAT(message, HasSubstr("--sensitivity solver.rtol: a setting of the run, not a "
+                                 "parameter of its dynamics"));
 }
 
 TEST(SensitivityRefusals, APathAbsentFromTheFile) {
   const std::string message = Refusal(Single(), "initial.lengthening_rate");
-  EXPECT_THAT(message, HasSubstr("--sensitivity initial.lengthening_rate: "
-                                 "initial.lengthening_rate is no value in the scenario"));
+  EXPECT_THAT(message, HasSubstr("--sensitivity initial.lengthening_rate: no value in the "
+                                 "scenario"));
 }
 
 TEST(SensitivityRefusals, ANonNumber) {
   const std::string message = Refusal(Network(), "elements[0].model");
   EXPECT_THAT(message,
-              HasSubstr("--sensitivity elements[0].model: elements[0].model = muscle is not a "
-                        "number"));
+              HasSubstr("--sensitivity elements[0].model = muscle: not a number"));
 }
 
-// Fails: with no parameters (none given and no `sensitivities:` list) the run throws
-// std::runtime_error "CVodeGetSensDky failed: CV_BAD_DKY": src/solver/simulation.cc,
-// Integrate's `sensitivities_at` calls CVodeGetSensDky whenever a step has been taken
-// (`if (!fresh)`), also when sensitivity_count is 0 and CVODES has no sensitivities. The
-// documented contract (io/sensitivity_run.h) sets no lower bound on `parameters`.
-TEST(SensitivityTable, DISABLED_NoParametersGiveThePlainColumns) {
+// No parameters: the plain columns, through the sensitivity path.
+TEST(SensitivityTable, NoParametersGiveThePlainColumns) {
   const std::string scenario = Single();
   const SensitivityTable table = RunWithSensitivities(scenario, {}, {});
   const testing::FullTrajectory plain = testing::FullRun(scenario, {});

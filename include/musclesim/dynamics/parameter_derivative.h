@@ -69,4 +69,12 @@ std::unique_ptr<ParameterDerivative> ModelParameterDerivative(const NetworkSyste
                                                               const TensionModel* model,
                                                               const std::string& path);
 
+// A parameter of element `element` of `system` that is a spring's, a tendon's or a damper's
+// (`path` relative to the element: "stiffness", "rest_length", "slack_length",
+// "exponential.k", "exponential.alpha", "damping"), in closed form; null for any other.
+// `system` must outlive the result.
+std::unique_ptr<ParameterDerivative> ElementParameterDerivative(const NetworkSystem& system,
+                                                                int element,
+                                                                const std::string& path);
+
 }  // namespace musclesim
