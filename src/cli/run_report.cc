@@ -19,7 +19,9 @@ std::string RunOutputPath(const Arguments& args, const std::string& file,
 
 int FinishRun(const Arguments& args, StreamedOutput& csv, const RunStats& stats,
               const RunOutcome& outcome) {
-  if (args.Has("--stats")) WriteOutput(args.Value("--stats"), FormatStatsJson(stats));
+  if (args.Has("--stats")) {
+    WriteOutput(args.Value("--stats"), FormatStatsJson(stats, outcome.sensitivities));
+  }
   if (stats.status == RunStatus::kFailed) {
     const std::string& partial = csv.written_path();
     std::cerr << "musclesim run: " << outcome.label << ": solver failure: " << stats.message

@@ -7,6 +7,7 @@
 
 #include "cli/arguments.h"
 #include "musclesim/io/output_file.h"
+#include "musclesim/io/trajectory_csv.h"
 #include "musclesim/solver/simulation.h"
 
 namespace musclesim::cli {
@@ -22,6 +23,7 @@ struct RunOutcome {
   long rows = 0;                   // rows written so far
   std::string result;              // the summary's last item before " -> output"
   std::vector<std::string> notes;  // lines printed before the summary unless --quiet
+  std::vector<SensitivityNote> sensitivities;  // a run with sensitivities: for --stats
 };
 
 // Writes --stats. On a solver failure, says where the rows computed so far are and returns

@@ -455,4 +455,39 @@ void NetworkSystem::Observe(double t, const double* y, NetworkSample& sample) co
   }
 }
 
+NetworkSystem::ElementPartials NetworkSystem::Along(int e, double t, const double* y,
+                                                   const double* s) const {
+  const Link& link = links_[e];
+  const End& a = ends_[link.from];
+  const End& b = ends_[link.to];
+  // only free nodes' positions and velocities are states; the others do not move with y
+  const auto along = [&](const End& end, int offset) {
+    return end.state >= 0 ? s[end.state + offset] : 0.0;
+  };
+  const double dl = along(b, 0) - along(a, 0);
+  const double dldot = along(b, 1) - along(a, 1);
+  const double l = PositionOf(b, t, y) - PositionOf(a, t, y);
+  const double ldot = VelocityOf(b, t, y) - VelocityOf(a, t, y);
+  const Tension tension = TensionOf(e, t, l, ldot, y);
+  const double du = link.activation >= 0 ? s[link.activation] : 0.0;
+  ElementPartials out;
+  out.length = dl;
+  out.total = tension.by_length * dl + tension.by_rate * dldot + tension.by_activation * du;
+  if (elements_[e].kind == ElementKind::kActuator) {
+    out.passive = PassiveTension(elements_[e].model->params().passive, l).slope * dl;
+    out.active = out.total - out.passive;
+  }
+  return out;
+}
+
+void NetworkSystem::AddTension(int e, double tension, double* ydot) const {
+  const Link& link = links_[e];
+  const End& a = ends_[link.from];
+  const End& b = ends_[link.to];
+  // as RightHandSide: +T pulls `from`, -T pulls `to`, each over its node's mass (free node k
+  // holds the states 2k and 2k + 1)
+  if (a.state >= 0) ydot[a.state + 1] += tension * free_nodes_[a.state / 2].inverse_mass;
+  if (b.state >= 0) ydot[b.state + 1] -= tension * free_nodes_[b.state / 2].inverse_mass;
+}
+
 }  // namespace musclesim

@@ -12,7 +12,7 @@ namespace musclesim {
 // others, so a misspelt key is caught whichever verb reads the file.
 inline constexpr std::initializer_list<const char*> kScenarioKeys = {
     "name", "model", "actuator", "initial", "activation", "excitation", "activation_dynamics",
-    "load", "time", "solver", "output", "limits"};
+    "load", "time", "solver", "output", "limits", "sensitivities"};
 
 // `node` is the value of the `model` key, `path` its key path ("model").
 ModelSpec ReadModelSpec(const yaml::Source& source, const YAML::Node& node,

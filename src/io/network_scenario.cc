@@ -31,7 +31,8 @@ using yaml::Required;
 
 // The top-level keys of a network scenario file.
 constexpr std::initializer_list<const char*> kNetworkKeys = {
-    "name", "models", "nodes", "elements", "loads", "time", "solver", "output", "limits"};
+    "name", "models", "nodes", "elements", "loads", "time", "solver", "output", "limits",
+    "sensitivities"};
 
 NamedModels ReadModels(const yaml::Source& src, const YAML::Node& node,
                        NetworkScenarioSpec& s) {
@@ -45,6 +46,7 @@ NamedModels ReadModels(const yaml::Source& src, const YAML::Node& node,
     const std::string name = entry.first.Scalar();  // CheckDocument: keys are plain names
     const ModelSpec spec = ReadModelSpec(src, entry.second, "models." + name);
     models.by_name[name] = std::make_shared<const TensionModel>(spec.params);
+    s.tension_models[name] = models.by_name[name];
     models.names.push_back(name);
     s.models[name] = spec;
   }
@@ -95,6 +97,9 @@ NetworkScenarioSpec ReadNetworkScenario(const yaml::Source& src, const YAML::Nod
   }
   if (const YAML::Node node = root["limits"]) {
     s.limits = ReadLengthLimits(src, node, *system, s.t_start);
+  }
+  if (const YAML::Node node = root["sensitivities"]) {
+    ReadSensitivities(src, node, s.sensitivities, s.sensitivities_at);
   }
   return s;
 }

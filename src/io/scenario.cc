@@ -113,6 +113,9 @@ ScenarioSpec ReadScenario(const yaml::Source& src, const YAML::Node& root) {
     s.output.interval = (s.t_end - s.t_start) / 1000.0;
   }
   if (const YAML::Node limits = root["limits"]) ReadLimits(src, limits, s);
+  if (const YAML::Node list = root["sensitivities"]) {
+    ReadSensitivities(src, list, s.sensitivities, s.sensitivities_at);
+  }
   return s;
 }
 

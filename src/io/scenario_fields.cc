@@ -328,4 +328,17 @@ OutputSpec ReadOutput(const yaml::Source& src, const YAML::Node& node, const std
   return output;
 }
 
+void ReadSensitivities(const yaml::Source& src, const YAML::Node& node,
+                       std::vector<std::string>& paths, std::vector<std::string>& where) {
+  if (!node.IsSequence()) {
+    yaml::Fail(src, node, "sensitivities", yaml::Describe(node),
+               "must be a list of parameter paths, e.g. [model.f_iso, model.velocity.v_max]");
+  }
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string path = "sensitivities[" + std::to_string(i) + "]";
+    paths.push_back(yaml::ReadString(src, node[i], path));
+    where.push_back(yaml::Location(src, node[i]));
+  }
+}
+
 }  // namespace musclesim

@@ -73,4 +73,9 @@ SolverOptions ReadSolver(const yaml::Source& src, const YAML::Node& node, const 
 OutputSpec ReadOutput(const yaml::Source& src, const YAML::Node& node, const std::string& path,
                       double t_start, double t_end);
 
+// The `sensitivities` list of parameter paths (strings), and where each is (file:line:column).
+// Whether each names a parameter is checked when a run resolves it.
+void ReadSensitivities(const yaml::Source& src, const YAML::Node& node,
+                       std::vector<std::string>& paths, std::vector<std::string>& where);
+
 }  // namespace musclesim

@@ -88,7 +88,7 @@ std::string JsonString(const std::string& text) {
 
 }  // namespace
 
-std::string FormatStatsJson(const RunStats& s) {
+std::string FormatStatsJson(const RunStats& s, const std::vector<SensitivityNote>& sensitivities) {
   std::ostringstream out;
   out << "{\n"
       << "  \"steps\": " << s.steps << ",\n"
@@ -102,8 +102,21 @@ std::string FormatStatsJson(const RunStats& s) {
       << "  \"final_time\": " << FormatFull(s.final_time) << ",\n"
       << "  \"linear_solver\": " << JsonString(std::string(ToString(s.linear_solver))) << ",\n"
       << "  \"status\": " << JsonString(std::string(ToString(s.status))) << ",\n"
-      << "  \"message\": " << JsonString(s.message) << "\n"
-      << "}\n";
+      << "  \"message\": " << JsonString(s.message);
+  if (!sensitivities.empty()) {
+    out << ",\n"
+        << "  \"sensitivity_rhs_evals\": " << s.sensitivity_rhs_evals << ",\n"
+        << "  \"sensitivity_newton_iters\": " << s.sensitivity_newton_iters << ",\n"
+        << "  \"sensitivity_newton_conv_fails\": " << s.sensitivity_newton_conv_fails << ",\n"
+        << "  \"sensitivity_error_test_fails\": " << s.sensitivity_error_test_fails << ",\n"
+        << "  \"sensitivities\": [";
+    for (std::size_t i = 0; i < sensitivities.size(); ++i) {
+      out << (i == 0 ? "\n" : ",\n") << "    {\"path\": " << JsonString(sensitivities[i].path)
+          << ", \"derivative\": " << JsonString(sensitivities[i].derivative) << "}";
+    }
+    out << "\n  ]";
+  }
+  out << "\n}\n";
   return out.str();
 }
 

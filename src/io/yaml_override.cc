@@ -84,4 +84,34 @@ void ApplyOverride(YAML::Node root, const std::string& text, const std::string& 
   }
 }
 
+std::optional<std::string> ScalarAt(const YAML::Node& root, const std::string& path) {
+  const auto split = SplitKeyPath(path);
+  if (!split || split->empty()) return std::nullopt;
+  YAML::Node node;
+  node.reset(root);
+  std::string walked;
+  for (const KeyPathStep& step : *split) {
+    YAML::Node next;
+    if (step.key.empty()) {
+      if (node.IsMap() && walked == "load" && step.index == 0) {
+        next.reset(node);
+      } else if (node.IsSequence() && step.index < node.size()) {
+        const YAML::Node& list = node;
+        next.reset(list[step.index]);
+      } else {
+        return std::nullopt;
+      }
+      walked = "[]";  // only whether the parent is the top-level `load` matters
+    } else {
+      const YAML::Node& map = node;  // const: a missing key is not created
+      if (!map.IsMap() || !map[step.key]) return std::nullopt;
+      next.reset(map[step.key]);
+      walked = walked.empty() ? step.key : "." + step.key;
+    }
+    node.reset(next);
+  }
+  if (!node.IsScalar()) return std::nullopt;
+  return node.Scalar();
+}
+
 }  // namespace musclesim::yaml

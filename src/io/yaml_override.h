@@ -5,6 +5,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <optional>
 #include <string>
 
 namespace musclesim::yaml {
@@ -14,5 +15,9 @@ namespace musclesim::yaml {
 // (model.velocity.eccentric) is created when the file leaves it out. Throws InputError when
 // the text is not KEY=VALUE, the path is malformed, leads nowhere, or names a map or list.
 void ApplyOverride(YAML::Node root, const std::string& text, const std::string& file);
+
+// The scalar at `path` in `root` (as ApplyOverride walks it, a single load map being
+// load[0]), or nullopt when the path is malformed, leads nowhere or names a map or list.
+std::optional<std::string> ScalarAt(const YAML::Node& root, const std::string& path);
 
 }  // namespace musclesim::yaml

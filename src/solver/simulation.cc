@@ -140,6 +140,13 @@ void Validate(const NetworkRunRequest& r) {
   ValidateSpan(r.t_start, r.t_end);
   ValidateOutputInterval(r.t_start, r.t_end, r.output_interval);
   for (double v : r.initial_state) Require(std::isfinite(v), "initial_state", v, "must be finite");
+  for (std::size_t i = 0; i < r.output_times.size(); ++i) {
+    const double t = r.output_times[i];
+    const double previous = i == 0 ? -std::numeric_limits<double>::infinity() : r.output_times[i - 1];
+    Require(std::isfinite(t) && t >= r.t_start && t <= r.t_end && t > previous, "output_times", t,
+            "must be strictly increasing within [t_start, t_end] = [" + FormatNumber(r.t_start) +
+                ", " + FormatNumber(r.t_end) + "] [s]");
+  }
 }
 
 namespace {
@@ -165,6 +172,10 @@ struct Callbacks {
   double input_from = 0.0;
   double input_to = 0.0;
   double InputTime(double t) const { return std::clamp(t, input_from, input_to); }
+  // a run with sensitivities: its parameters, and room for df/dy and one df/dp
+  const std::vector<SensitivityParameter>* parameters = nullptr;
+  std::vector<double> jacobian_values;
+  std::vector<double> dfdp;
 };
 
 int RightHandSide(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
@@ -210,6 +221,34 @@ int AnalyticJacobian(sunrealtype t, N_Vector y, N_Vector, SUNMatrix jacobian, vo
   return 0;
 }
 
+// The sensitivities' right-hand sides s_i' = (df/dy) s_i + df/dp_i (docs/model.md 10), with
+// df/dy the analytic Jacobian on its compressed-column pattern.
+int SensitivityRightHandSide(int count, sunrealtype t, N_Vector y, N_Vector, N_Vector* s,
+                             N_Vector* sdot, void* data, N_Vector, N_Vector) {
+  auto* cb = static_cast<Callbacks*>(data);
+  const NetworkSystem& system = *cb->system;
+  const JacobianPattern& pattern = system.jacobian_pattern();
+  const double at = cb->InputTime(t);
+  const double* state = N_VGetArrayPointer(y);
+  system.Jacobian(at, state, cb->jacobian_values.data());
+  for (int i = 0; i < count; ++i) {
+    const double* direction = N_VGetArrayPointer(s[i]);
+    double* rate = N_VGetArrayPointer(sdot[i]);
+    (*cb->parameters)[static_cast<std::size_t>(i)].derivative->RightHandSide(at, state, rate);
+    for (int column = 0; column < pattern.size; ++column) {
+      const double along = direction[column];
+      if (along == 0.0) continue;
+      for (int k = pattern.column_starts[column]; k < pattern.column_starts[column + 1]; ++k) {
+        rate[pattern.rows[k]] += cb->jacobian_values[k] * along;
+      }
+    }
+    for (int k = 0; k < pattern.size; ++k) {
+      if (!std::isfinite(rate[k])) return 1;  // recoverable: CVODES retries a smaller step
+    }
+  }
+  return 0;
+}
+
 // Keeps CVODE's error text for the exception message instead of printing it.
 void KeepError(int, const char*, const char* function, char* message, void* data) {
   static_cast<Callbacks*>(data)->last_error = std::string(function) + ": " + message;
@@ -233,6 +272,13 @@ struct Simulation::Workspace {
   IntegrationMethod method = IntegrationMethod::kBdf;
   Callbacks callbacks;
   NetworkSample sample;  // re-used by every record
+  // forward sensitivities: at the last (re)start, and interpolated for a row
+  N_Vector* sensitivities = nullptr;
+  N_Vector* sensitivities_between = nullptr;
+  int sensitivity_count = 0;
+  int sensitivities_initialized = 0;  // the count CVodeSensInit1 was given; 0: none
+  bool sensitivities_on = false;
+  std::vector<double> sensitivity_scales;  // pbar: CVODES keeps the pointer
 
   Workspace() {
     if (SUNContext_Create(nullptr, &context) != 0) {
@@ -241,10 +287,35 @@ struct Simulation::Workspace {
   }
   ~Workspace() {
     if (cvode != nullptr) CVodeFree(&cvode);
+    FreeSensitivities();
     linear.reset();
     if (between != nullptr) N_VDestroy(between);
     if (state != nullptr) N_VDestroy(state);
     if (context != nullptr) SUNContext_Free(&context);
+  }
+
+  void FreeSensitivities() {
+    if (sensitivities != nullptr) N_VDestroyVectorArray(sensitivities, sensitivity_count);
+    if (sensitivities_between != nullptr) {
+      N_VDestroyVectorArray(sensitivities_between, sensitivity_count);
+    }
+    sensitivities = sensitivities_between = nullptr;
+    sensitivity_count = 0;
+  }
+
+  // Vectors for `count` sensitivities like `state` (after Fit).
+  void FitSensitivities(int count) {
+    if (sensitivities != nullptr && sensitivity_count == count &&
+        N_VGetLength(sensitivities[0]) == N_VGetLength(state)) {
+      return;
+    }
+    FreeSensitivities();
+    sensitivities = N_VCloneVectorArray(count, state);
+    sensitivities_between = N_VCloneVectorArray(count, state);
+    sensitivity_count = count;
+    if (sensitivities == nullptr || sensitivities_between == nullptr) {
+      throw std::runtime_error("allocating the sensitivity vectors failed");
+    }
   }
 
   // Makes the state vector and linear system fit `system` with `kind`, keeping the CVODE
@@ -259,6 +330,7 @@ struct Simulation::Workspace {
     cvode = nullptr;
     linear.reset();
     if (!same_size) {
+      FreeSensitivities();
       if (between != nullptr) N_VDestroy(between);
       if (state != nullptr) N_VDestroy(state);
       between = nullptr;
@@ -282,6 +354,8 @@ struct Simulation::Workspace {
     cvode = CVodeCreate(m == IntegrationMethod::kBdf ? CV_BDF : CV_ADAMS, context);
     if (cvode == nullptr) throw std::runtime_error("CVodeCreate failed");
     method = m;
+    sensitivities_initialized = 0;
+    sensitivities_on = false;
     Check(CVodeInit(cvode, RightHandSide, t, state), "CVodeInit");
     Check(CVodeSetLinearSolver(cvode, linear->solver(), linear->matrix()), "CVodeSetLinearSolver");
     Check(CVodeSetUserData(cvode, &callbacks), "CVodeSetUserData");
@@ -311,6 +385,40 @@ struct Simulation::Workspace {
     stats.newton_conv_fails += value;
     CVodeGetNumErrTestFails(cvode, &value);
     stats.error_test_fails += value;
+    if (!sensitivities_on) return;
+    CVodeGetSensNumRhsEvals(cvode, &value);
+    stats.sensitivity_rhs_evals += value;
+    CVodeGetSensNumNonlinSolvIters(cvode, &value);
+    stats.sensitivity_newton_iters += value;
+    CVodeGetSensNumNonlinSolvConvFails(cvode, &value);
+    stats.sensitivity_newton_conv_fails += value;
+    CVodeGetSensNumErrTestFails(cvode, &value);
+    stats.sensitivity_error_test_fails += value;
+  }
+
+  // After Start: switches the sensitivities on at the values in `sensitivities` (the first
+  // start of this CVODES memory: CVodeSensInit; later ones CVodeSensReInit), or off.
+  void ConfigureSensitivities(int count) {
+    if (count == 0) {
+      if (sensitivities_on) Check(CVodeSensToggleOff(cvode), "CVodeSensToggleOff");
+      sensitivities_on = false;
+      return;
+    }
+    if (sensitivities_initialized == count) {
+      Check(CVodeSensReInit(cvode, CV_STAGGERED, sensitivities), "CVodeSensReInit");
+    } else {
+      if (sensitivities_initialized != 0) CVodeSensFree(cvode);
+      Check(CVodeSensInit(cvode, count, CV_STAGGERED, SensitivityRightHandSide, sensitivities),
+            "CVodeSensInit");
+      sensitivities_initialized = count;
+    }
+    sensitivities_on = true;
+    // tolerances as the state's, the absolute one over |p| (pbar); the sensitivities in the
+    // error test, without which they are known to be inaccurate
+    Check(CVodeSetSensParams(cvode, nullptr, sensitivity_scales.data(), nullptr),
+          "CVodeSetSensParams");
+    Check(CVodeSensEEtolerances(cvode), "CVodeSensEEtolerances");
+    Check(CVodeSetSensErrCon(cvode, SUNTRUE), "CVodeSetSensErrCon");
   }
 };
 
@@ -373,6 +481,22 @@ class NetworkVectorSink final : public NetworkSink {
 
 }  // namespace
 
+NetworkRunRequest NetworkRequestOf(const ActuatorSystem& system, const RunRequest& request) {
+  NetworkRunRequest network_request;
+  network_request.t_start = request.t_start;
+  network_request.t_end = request.t_end;
+  network_request.output_interval = request.output_interval;
+  if (request.min_length || request.max_length) {
+    network_request.limits.push_back({"actuator", request.min_length, request.max_length});
+  }
+  network_request.initial_state = {request.length, request.lengthening_rate};
+  if (system.excitation()) {
+    const double u0 = system.excitation()->InitialActivation(request.t_start);
+    network_request.initial_state.push_back(u0);
+  }
+  return network_request;
+}
+
 RunResult Simulation::Run(const ActuatorSystem& system, const SolverOptions& options,
                           const RunRequest& request) {
   RunResult result;
@@ -389,18 +513,7 @@ RunStats Simulation::Run(const ActuatorSystem& system, const SolverOptions& opti
 RunStats Simulation::Run(const ActuatorSystem& system, const SolverOptions& options,
                          const RunRequest& request, TrajectorySink& sink) {
   Validate(request);
-  NetworkRunRequest network_request;
-  network_request.t_start = request.t_start;
-  network_request.t_end = request.t_end;
-  network_request.output_interval = request.output_interval;
-  if (request.min_length || request.max_length) {
-    network_request.limits.push_back({"actuator", request.min_length, request.max_length});
-  }
-  network_request.initial_state = {request.length, request.lengthening_rate};
-  if (system.excitation()) {
-    const double u0 = system.excitation()->InitialActivation(request.t_start);
-    network_request.initial_state.push_back(u0);
-  }
+  const NetworkRunRequest network_request = NetworkRequestOf(system, request);
   ActuatorView view(system, sink);
   // the actuator's own right-hand side knows no activation state
   workspace_->callbacks.actuator = system.excitation() ? nullptr : &system;
@@ -424,6 +537,20 @@ NetworkRunResult Simulation::Run(const NetworkSystem& system, const SolverOption
 
 RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& options,
                          const NetworkRunRequest& request, NetworkSink& sink) {
+  return Integrate(system, options, request, &sink, nullptr, nullptr);
+}
+
+RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& options,
+                         const NetworkRunRequest& request,
+                         const std::vector<SensitivityParameter>& parameters,
+                         SensitivitySink& sink) {
+  return Integrate(system, options, request, nullptr, &parameters, &sink);
+}
+
+RunStats Simulation::Integrate(const NetworkSystem& system, const SolverOptions& options,
+                               const NetworkRunRequest& request, NetworkSink* sink,
+                               const std::vector<SensitivityParameter>* parameters,
+                               SensitivitySink* sensitivity_sink) {
   Validate(options);
   Validate(request);
   const auto wall_start = std::chrono::steady_clock::now();
@@ -446,18 +573,43 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
   Callbacks& cb = ws.callbacks;
   cb.roots = RootsOf(system, request, start.data());
 
-  const LinearSolverKind kind = options.linear_solver == LinearSolverKind::kAuto
-                                    ? ChooseLinearSolver(system.jacobian_pattern(), options.jacobian)
-                                    : options.linear_solver;
+  LinearSolverKind kind = options.linear_solver == LinearSolverKind::kAuto
+                              ? ChooseLinearSolver(system.jacobian_pattern(), options.jacobian)
+                              : options.linear_solver;
   if (kind == LinearSolverKind::kSmall && n > kSmallSystemMaxSize) {
     throw ParameterError("linear_solver", "small",
                          "serves at most " + std::to_string(kSmallSystemMaxSize) +
                              " states and this system has " + std::to_string(n) +
                              ": use auto, dense, band or sparse");
   }
+  const int sensitivity_count = parameters == nullptr ? 0 : static_cast<int>(parameters->size());
+  if (sensitivity_count > 0) {
+    // the lean vector has no sensitivity operations; its solver is a dense LU as well
+    if (kind == LinearSolverKind::kSmall) kind = LinearSolverKind::kDense;
+    for (std::size_t i = 0; i < parameters->size(); ++i) {
+      const SensitivityParameter& p = (*parameters)[i];
+      if (p.derivative == nullptr || static_cast<int>(p.initial.size()) != n) {
+        throw std::invalid_argument("sensitivity parameter " + std::to_string(i) +
+                                    ": needs a derivative and " + std::to_string(n) +
+                                    " initial values");
+      }
+    }
+  }
   ws.Fit(system, kind);
   cb.system = &system;
   cb.last_error.clear();
+  cb.parameters = parameters;
+  std::vector<const double*> rows_sensitivities(static_cast<std::size_t>(sensitivity_count));
+  if (sensitivity_count > 0) {
+    ws.FitSensitivities(sensitivity_count);
+    cb.jacobian_values.resize(static_cast<std::size_t>(system.jacobian_pattern().entries()));
+    ws.sensitivity_scales.clear();
+    for (int i = 0; i < sensitivity_count; ++i) {
+      const SensitivityParameter& p = (*parameters)[static_cast<std::size_t>(i)];
+      std::copy(p.initial.begin(), p.initial.end(), N_VGetArrayPointer(ws.sensitivities[i]));
+      ws.sensitivity_scales.push_back(p.scale);
+    }
+  }
 
   double* y = N_VGetArrayPointer(ws.state);
   double* between = N_VGetArrayPointer(ws.between);
@@ -476,14 +628,40 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
              "CVodeSetNonlinConvCoef");
     ws.Check(CVodeSetJacEvalFrequency(ws.cvode, kJacobianEvaluationFrequency),
              "CVodeSetJacEvalFrequency");
+    ws.ConfigureSensitivities(sensitivity_count);
   };
 
   RunStats stats;
   stats.linear_solver = kind;
-  const auto record = [&](double t, const double* state) {
-    if (sink.RecordState(t, state)) return;
+  stats.sensitivities = sensitivity_count;
+  bool fresh = true;  // no step taken since the last (re)initialisation
+  // the sensitivities at `at`: those the run (re)started with until a step is taken, then
+  // the last step's interpolant's
+  const auto sensitivities_at = [&](double at) {
+    for (int i = 0; i < sensitivity_count; ++i) {
+      rows_sensitivities[static_cast<std::size_t>(i)] =
+          N_VGetArrayPointer(fresh ? ws.sensitivities[i] : ws.sensitivities_between[i]);
+    }
+    if (!fresh) {
+      ws.Check(CVodeGetSensDky(ws.cvode, at, 0, ws.sensitivities_between), "CVodeGetSensDky");
+    }
+    return rows_sensitivities.data();
+  };
+  // a row labelled `t` of the state `state` at time `state_time` (a rounding error from t)
+  const auto record_at = [&](double t, const double* state, double state_time) {
+    if (sensitivity_sink != nullptr) {
+      sensitivity_sink->Record(t, state, sensitivities_at(state_time));
+      return;
+    }
+    if (sink->RecordState(t, state)) return;
     system.Observe(t, state, ws.sample);
-    sink.Record(t, ws.sample);
+    sink->Record(t, ws.sample);
+  };
+  const auto record = [&](double t, const double* state) { record_at(t, state, t); };
+  // the sensitivities at `t` become those the integrator restarts with
+  const auto carry_sensitivities = [&](double t) {
+    if (sensitivity_count == 0 || fresh) return;
+    ws.Check(CVodeGetSensDky(ws.cvode, t, 0, ws.sensitivities), "CVodeGetSensDky");
   };
   const auto finish = [&](RunStatus status, double t, std::string message) {
     ws.Accumulate(stats);
@@ -511,18 +689,23 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
     if (b - previous > merge && request.t_end - b > merge) stops.push_back(b);
   }
   stops.push_back(request.t_end);
-  const bool every_step = request.output_interval == 0.0;
+  const std::vector<double>& listed = request.output_times;
+  const bool explicit_times = !listed.empty();
+  const bool every_step = !explicit_times && request.output_interval == 0.0;
+  const bool row_at_start = !explicit_times || listed.front() == request.t_start;
   const double span = request.t_end - request.t_start;
-  long outputs =
-      every_step ? 0 : static_cast<long>(std::ceil(span / request.output_interval - 1e-9));
+  long outputs = every_step ? 0 : static_cast<long>(std::ceil(span / request.output_interval - 1e-9));
   // far from t = 0 the span itself carries rounding errors: a grid time within `merge` of
   // t_end is t_end, which the last output is anyway
   while (outputs > 1 &&
          request.t_start + (outputs - 1) * request.output_interval >= request.t_end - merge) {
     --outputs;
   }
+  const long skipped = row_at_start && explicit_times ? 1 : 0;  // listed t_start: recorded first
+  if (explicit_times) outputs = static_cast<long>(listed.size()) - skipped;
   long next_output = 1;  // output k is at t_start + k * interval, the last one at t_end
   const auto output_time = [&](long k) {
+    if (explicit_times) return listed[static_cast<std::size_t>(k - 1 + skipped)];
     return k >= outputs ? request.t_end : request.t_start + k * request.output_interval;
   };
   // Records the grid outputs up to `until` within the last step; the state at `until` is
@@ -537,13 +720,14 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
     long inside = 0;
     while (next_output + inside <= outputs && output_time(next_output + inside) < until) ++inside;
     int order = 0;
-    const bool by_polynomial = CVodeGetLastOrder(ws.cvode, &order) >= 0 && inside > order + 1 &&
+    const bool by_polynomial = sensitivity_count == 0 &&
+                               CVodeGetLastOrder(ws.cvode, &order) >= 0 && inside > order + 1 &&
                                polynomial.Fetch(ws.cvode, ws.between, n);
     while (next_output <= outputs) {
       const double out = output_time(next_output);
       if (through_until ? out - until > merge : out >= until - merge) break;
       if (out >= until) {
-        record(out, at_until);
+        record_at(out, at_until, until);
       } else if (by_polynomial) {
         polynomial.Evaluate(out, between);
         record(out, between);
@@ -596,10 +780,9 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
   };
 
   double t = request.t_start;
-  bool fresh = true;  // no step taken since the last (re)initialisation
   long calls = 0;     // CVode calls, one internal step each: the max_steps guard
   configure(t);
-  record(t, y);
+  if (row_at_start) record(t, y);
   for (double stop : stops) {
     // the segment [t, stop]: its inputs read a few ulps inside it (Callbacks::InputTime)
     const double middle = 0.5 * (t + stop);
@@ -664,7 +847,9 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
                           ": length " + FormatNumber(system.Length(root.element, t, y)) +
                           " m at t = " + FormatNumber(t) + " s");
       }
-      // a kink: restart the integrator on its far side
+      // a kink: restart the integrator on its far side, the sensitivities carried over (the
+      // right-hand side is continuous there: no jump, docs/model.md 10)
+      carry_sensitivities(t);
       ws.Accumulate(stats);
       configure(t);
       fresh = true;
@@ -673,7 +858,9 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
       if (every_step) record(t, y);
     }
     if (stop < request.t_end) {
-      // an input jumps at `stop`: restart with fresh history
+      // an input jumps at `stop`: restart with fresh history (a time that depends on no
+      // parameter, so the sensitivities carry over unchanged)
+      carry_sensitivities(t);
       ws.Accumulate(stats);
       configure(t);
       fresh = true;

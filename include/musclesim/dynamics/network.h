@@ -100,6 +100,20 @@ class NetworkSystem {
   // dynamics.
   int ActivationStateIndex(int element) const { return links_[element].activation; }
 
+  // For forward sensitivities (docs/model.md section 10).
+  // Derivatives of an element's length and tension, the tension split as an actuator's is
+  // (other kinds: all of it in `total`).
+  struct ElementPartials {
+    double length = 0.0;                              // of l [m per unit]
+    double total = 0.0, passive = 0.0, active = 0.0;  // of T [N per unit]
+  };
+  // The derivatives of element e's length and tension along the state direction s at (t, y):
+  // dl/dy s and dT/dy s.
+  ElementPartials Along(int e, double t, const double* y, const double* s) const;
+  // Adds to `ydot` what a tension `tension` [N] of element e adds to the right-hand side (its
+  // nodes' accelerations), the way a change of that element's tension enters df/dp.
+  void AddTension(int e, double tension, double* ydot) const;
+
  private:
   // A node as the right-hand side sees it.
   struct End {

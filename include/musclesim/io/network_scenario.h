@@ -5,6 +5,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,8 @@ struct NetworkScenarioSpec {
                                            // in ModelParams. The actuators already hold the
                                            // tension models built from them (Element::model):
                                            // changing a block here changes no element
+  std::map<std::string, std::shared_ptr<const TensionModel>> tension_models;  // built from
+                                           // `models`, by name: what the actuators hold
   std::vector<Node> nodes;                 // in the file's order, the CSV's column order
   std::vector<Element> elements;           // in the file's order
   std::vector<NodeLoad> loads;             // in the file's order
@@ -29,6 +32,7 @@ struct NetworkScenarioSpec {
   SolverOptions solver;                    // units as in SolverOptions
   OutputSpec output;                       // units as in OutputSpec
   std::vector<LengthLimit> limits;         // stop when an element's length leaves them [m]
+  std::vector<std::string> sensitivities, sensitivities_at;  // as ScenarioSpec's
 
   // The system the scenario describes. Throws ParameterError if parts changed in code break
   // a rule (the reader has validated everything it read).

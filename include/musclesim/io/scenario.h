@@ -37,6 +37,9 @@ struct ScenarioSpec {
   SolverOptions solver;                   // units as in SolverOptions
   OutputSpec output;                      // units as in OutputSpec
   std::optional<double> min_length, max_length;  // stop when x leaves them [m]
+  // `sensitivities:` the dotted paths of the parameters whose forward sensitivities a run
+  // adds to its CSV (docs/model.md 10), and where each was given (file:line:column)
+  std::vector<std::string> sensitivities, sensitivities_at;
 
   RunRequest Request() const;
   double PhaseTolerance() const;

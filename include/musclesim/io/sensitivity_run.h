@@ -4,9 +4,12 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "musclesim/io/output_file.h"
 #include "musclesim/solver/simulation.h"
 
 namespace musclesim {
@@ -57,5 +60,36 @@ SensitivityTable RunWithSensitivities(const std::string& path,
                                       const std::vector<std::string>& overrides,
                                       const std::vector<std::string>& parameters,
                                       const std::vector<double>& output_times = {});
+
+// Whether the scenario `path` lists `sensitivities:` (a look at its top level; false for a
+// file that cannot be read, which the scenario's reader then reports).
+bool HasSensitivities(const std::string& path);
+
+struct SensitivitySetup;
+
+// `musclesim run --sensitivity`: the trajectory CSV of a scenario with, after its own columns,
+// d_<column>/d_<path> for every parameter (in order) and every differentiated column of
+// SensitivityTable. Prepared first (errors before any output is opened), then run.
+class SensitivityCsvRun {
+ public:
+  // As RunWithSensitivities; `parameters` come before the scenario's own `sensitivities:`.
+  SensitivityCsvRun(const std::string& path, const std::vector<std::string>& overrides,
+                    const std::vector<std::string>& parameters);
+  ~SensitivityCsvRun();
+  SensitivityCsvRun(const SensitivityCsvRun&) = delete;
+  SensitivityCsvRun& operator=(const SensitivityCsvRun&) = delete;
+
+  const std::string& output_file() const;  // the scenario's output.file
+  const std::string& name() const;         // the scenario's name
+  const std::vector<std::string>& parameters() const;
+  const std::vector<DerivativeSource>& sources() const;
+  // Integrates and streams the rows into `output` (flushed; not committed).
+  RunStats Run(StreamedOutput& output);
+  long rows() const { return rows_; }
+
+ private:
+  std::unique_ptr<SensitivitySetup> setup_;
+  long rows_ = 0;
+};
 
 }  // namespace musclesim

@@ -62,7 +62,16 @@ class TrajectoryCsvWriter final : public TrajectorySink {
   TrajectoryPoint last_{};
 };
 
-// A JSON object with the counters, wall_seconds, final_time, status and message.
-std::string FormatStatsJson(const RunStats& stats);
+// One parameter of a run with sensitivities, for the stats: its path and how its
+// right-hand-side derivative is computed ("analytic" or "difference_quotient").
+struct SensitivityNote {
+  std::string path;
+  std::string derivative;
+};
+
+// A JSON object with the counters, wall_seconds, final_time, status and message; with
+// sensitivities, also their counters and `sensitivities`, one {path, derivative} each.
+std::string FormatStatsJson(const RunStats& stats,
+                            const std::vector<SensitivityNote>& sensitivities = {});
 
 }  // namespace musclesim

@@ -22,6 +22,7 @@
 
 #include "musclesim/dynamics/actuator.h"
 #include "musclesim/dynamics/network.h"
+#include "musclesim/solver/sensitivity.h"
 
 namespace musclesim {
 
@@ -92,6 +93,12 @@ struct RunStats {
   long newton_iters = 0;       // nonlinear (Newton) iterations
   long newton_conv_fails = 0;  // nonlinear convergence failures
   long error_test_fails = 0;   // steps rejected by the local error test
+  // with forward sensitivities (staggered corrector): their counters, summed over them all
+  int sensitivities = 0;            // parameters
+  long sensitivity_rhs_evals = 0;   // calls of the sensitivity right-hand side
+  long sensitivity_newton_iters = 0;
+  long sensitivity_newton_conv_fails = 0;
+  long sensitivity_error_test_fails = 0;
   double wall_seconds = 0.0;   // [s] of wall-clock time for the whole run
   double final_time = 0.0;     // [s], where the run ended
   LinearSolverKind linear_solver = LinearSolverKind::kDense;  // the one used (never auto)
@@ -133,11 +140,18 @@ struct NetworkRunRequest {
   std::vector<double> initial_state;  // y(t_start) in NetworkSystem's state order; empty: the
                                       // nodes' own positions and velocities and the
                                       // activations' initial values (NetworkSystem::InitialState)
+  std::vector<double> output_times;   // [s] when not empty: the rows' times instead of the
+                                      // grid, strictly increasing within [t_start, t_end] (a
+                                      // row at t_start only if listed)
 };
 
 // Throws ParameterError ("t_end", "output_interval", ...); the limits are checked against
 // the system by Simulation::Run ("limits[0].element", "limits[0].min_length").
 void Validate(const NetworkRunRequest& request);
+
+// A single actuator's run request as its network's (docs/model.md 7.4): the limits on
+// element `actuator`, the initial state (x, xdot) and, with activation dynamics, u.
+NetworkRunRequest NetworkRequestOf(const ActuatorSystem& system, const RunRequest& request);
 
 // Receives a network's recorded points as they are produced; `sample` is valid only during
 // the call (the simulation re-uses it).
@@ -184,7 +198,20 @@ class Simulation {
   RunStats Run(const NetworkSystem& system, const SolverOptions& options,
                const NetworkRunRequest& request, NetworkSink& sink);
 
+  // With the forward sensitivities of `parameters` (CVODES, staggered corrector, their error
+  // controlled): each row goes to `sink` with its sensitivities. The sensitivities carry over
+  // every restart unchanged (the inputs' breakpoints must not depend on the parameters);
+  // `small` is served by `dense` (the lean vector has no sensitivity operations).
+  RunStats Run(const NetworkSystem& system, const SolverOptions& options,
+               const NetworkRunRequest& request,
+               const std::vector<SensitivityParameter>& parameters, SensitivitySink& sink);
+
  private:
+  // The network run behind both: rows to `sink`, or with `parameters` to `sensitivity_sink`.
+  RunStats Integrate(const NetworkSystem& system, const SolverOptions& options,
+                     const NetworkRunRequest& request, NetworkSink* sink,
+                     const std::vector<SensitivityParameter>* parameters,
+                     SensitivitySink* sensitivity_sink);
   struct Workspace;
   std::unique_ptr<Workspace> workspace_;
 };

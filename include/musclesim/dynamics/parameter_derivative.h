@@ -1,0 +1,58 @@
+// The partial derivatives in one parameter p that forward sensitivity analysis needs
+// (docs/model.md section 10): of a network's right-hand side, df/dp at fixed (t, y), and of
+// its elements' lengths and tensions, dl/dp and dT/dp at fixed (t, y). The solver integrates
+// s' = (df/dy) s + df/dp; the tensions' sensitivities are dT/dy s + dT/dp.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "musclesim/dynamics/network.h"
+
+namespace musclesim {
+
+class ParameterDerivative {
+ public:
+  virtual ~ParameterDerivative() = default;
+  // df/dp at (t, y) into `dfdp` (state_size values, overwritten).
+  virtual void RightHandSide(double t, const double* y, double* dfdp) const = 0;
+  // dl/dp and dT/dp at (t, y) of every element, into `elements` (one per element; overwritten,
+  // or left as they are for an element it does not know).
+  virtual void Elements(double t, const double* y,
+                        NetworkSystem::ElementPartials* elements) const = 0;
+  // Whether the derivatives are closed forms (else difference quotients).
+  virtual bool analytic() const = 0;
+};
+
+// A difference quotient over the same network built at several values of p: df/dp =
+// sum_i weight_i f_i(t, y), and the same for the tensions (a central quotient is
+// {(p - h, -1/2h), (p + h, 1/2h)}). The systems must have the same states; the tensions are
+// those of the elements all of them have (a single actuator's network gains a damper or a
+// spring when its coefficient leaves 0: the actuator stays element 0).
+class DifferenceQuotientDerivative final : public ParameterDerivative {
+ public:
+  using Stencil = std::vector<std::pair<std::shared_ptr<const NetworkSystem>, double>>;
+  explicit DifferenceQuotientDerivative(Stencil stencil);
+  void RightHandSide(double t, const double* y, double* dfdp) const override;
+  void Elements(double t, const double* y,
+                NetworkSystem::ElementPartials* elements) const override;
+  bool analytic() const override { return false; }
+
+ private:
+  Stencil stencil_;
+  mutable std::vector<double> scratch_;  // one right-hand side (a run is single-threaded)
+  std::size_t elements_ = 0;  // the fewest elements among the systems
+  mutable NetworkSample sample_;
+};
+
+// A parameter of the tension model `model` (`path` relative to its block, as
+// "velocity.v_max"), in closed form through every actuator of `system` that holds that
+// model; null when the path is no continuous parameter of a tension model. `system` and
+// `model` must outlive the result.
+std::unique_ptr<ParameterDerivative> ModelParameterDerivative(const NetworkSystem& system,
+                                                              const TensionModel* model,
+                                                              const std::string& path);
+
+}  // namespace musclesim
