@@ -72,7 +72,16 @@ bool NamesSeriesDataFile(int argc, char** argv) {
   try {
     return IsIdentifySeriesFile(*data);
   } catch (const InputError&) {
-    return false;  // the measured curves' reader says what is wrong with it
+    // a file that cannot be read or parsed: the reader of the kind the options ask for says
+    // what is wrong with it (the measured curves' when no option is the time series' own)
+    for (int i = 2; i < argc; ++i) {
+      const std::string arg = argv[i];
+      if (arg == "--design" || arg == "--residuals" || arg == "--set" ||
+          arg.rfind("--residuals=", 0) == 0 || arg.rfind("--set=", 0) == 0) {
+        return true;
+      }
+    }
+    return false;
   }
 }
 

@@ -22,6 +22,10 @@ std::string Short(double value, int digits = 4) {
   return text;
 }
 
+std::string Error(double standard_error) {
+  return std::isfinite(standard_error) ? Short(standard_error, 2) : "not determined";
+}
+
 std::string Percent(double fraction) {
   if (!std::isfinite(fraction)) return "not determined";
   return Short(100.0 * fraction, 2) + "%";
@@ -40,29 +44,34 @@ std::string VerdictWord(Identifiability verdict) {
   switch (verdict) {
     case Identifiability::kIdentifiable: return "identifiable";
     case Identifiability::kPoorlyDetermined: return "poorly determined";
-    case Identifiability::kNegligibleColumn: return "not identifiable (no effect)";
-    case Identifiability::kDependent: return "not identifiable (a combination)";
+    case Identifiability::kNegligibleColumn: return "not identifiable: no effect";
+    case Identifiability::kDependent: return "not identifiable: a combination";
     case Identifiability::kAtBound: return "at a bound";
   }
   return "";
 }
 
 // The parameters taking part in a weak direction, as a sentence's subject and its
-// combination: "+0.71 ln model.k_p - 0.70 ln model.passive.alpha".
+// combination of logarithms: "0.71 ln model.passive.k_p - 0.7 ln model.passive.alpha". A
+// component is a relative change d p / |p|, d ln|p| times the sign of p; a parameter at 0 is
+// scaled by 1, so its change is absolute.
 std::pair<std::vector<std::string>, std::string> Combination(const SeriesIdentification& r,
                                                              const WeakDirection& w) {
   std::vector<std::string> names;
   std::string combination;
   for (std::size_t j = 0; j < r.parameters.size(); ++j) {
-    const double c = w.components[j];
-    if (std::abs(c) < kComponentFloor ||
-        r.parameters[j].verdict == Identifiability::kNegligibleColumn) {
+    const SeriesParameterResult& p = r.parameters[j];
+    if (std::abs(w.components[j]) < kComponentFloor ||
+        p.verdict == Identifiability::kNegligibleColumn) {
       continue;
     }
-    names.push_back(r.parameters[j].path);
-    const bool at_zero = r.parameters[j].estimate == 0.0;  // scaled by 1, not by its value
+    names.push_back(p.path);
+    const double c = p.estimate < 0.0 ? -w.components[j] : w.components[j];
+    const std::string term = p.estimate > 0.0   ? "ln " + p.path
+                             : p.estimate < 0.0 ? "ln|" + p.path + "|"
+                                                : p.path;
     combination += std::string(combination.empty() ? (c < 0 ? "-" : "") : (c < 0 ? " - " : " + ")) +
-                   Short(std::abs(c), 2) + (at_zero ? " " : " ln ") + r.parameters[j].path;
+                   Short(std::abs(c), 2) + " " + term;
   }
   return {names, combination};
 }
@@ -166,9 +175,10 @@ std::string IdentifiabilityVerdict(const SeriesIdentification& r) {
   }
   for (const WeakDirection& w : r.weak_directions) {
     const auto [names, combination] = Combination(r, w);
-    reasons.push_back(List(names) + " are not, separately: " + combination +
-                      " changes the outputs by only " + Short(w.ratio, 1) +
-                      " of the best-determined combination");
+    reasons.push_back(List(names) + (names.size() == 1 ? " is not: " : " are not, separately: ") +
+                      "a step along " + combination + " changes the outputs " +
+                      Short(w.ratio, 1) + " times as much as one along the best-determined "
+                      "direction");
   }
   std::string text;
   if (good.empty()) {
@@ -188,7 +198,7 @@ std::string FormatSeriesReport(const SeriesIdentification& r, const std::string&
     << "|---|---|---|---|---|---|---|\n";
   for (const SeriesParameterResult& p : r.parameters) {
     s << "| " << p.path << " | " << Short(p.scenario_value, 6) << " | " << Short(p.start, 6)
-      << " | " << Short(p.estimate, 6) << " | " << Short(p.standard_error, 2) << " | "
+      << " | " << Short(p.estimate, 6) << " | " << Error(p.standard_error) << " | "
       << Percent(p.relative_standard_error) << " | " << VerdictWord(p.verdict) << " |\n";
   }
   s << "\n" << IdentifiabilityVerdict(r) << "\n\n## Correlations\n\n";
@@ -216,7 +226,7 @@ std::string FormatDesignReport(const SeriesIdentification& r, const std::string&
   for (std::size_t rank = 0; rank < order.size(); ++rank) {
     const SeriesParameterResult& p = r.parameters[order[rank]];
     s << "| " << rank + 1 << " | " << p.path << " | " << Short(p.estimate, 6) << " | "
-      << Short(p.standard_error, 2) << " | " << Percent(p.relative_standard_error) << " | "
+      << Error(p.standard_error) << " | " << Percent(p.relative_standard_error) << " | "
       << Short(p.column_ratio, 2) << " | " << VerdictWord(p.verdict) << " |\n";
   }
   s << "\n" << IdentifiabilityVerdict(r) << "\n\n## Correlations\n\n";
@@ -232,7 +242,7 @@ std::vector<std::string> EstimatedScenarioHeader(const SeriesIdentification& r,
       "estimated by musclesim identify from " + data_file + " (scenario " + r.scenario + ")"};
   for (const SeriesParameterResult& p : r.parameters) {
     lines.push_back("  " + p.path + " = " + FormatNumber(p.estimate) + " +- " +
-                    Short(p.standard_error, 2) + " (" + VerdictWord(p.verdict) + "; started at " +
+                    Error(p.standard_error) + " (" + VerdictWord(p.verdict) + "; started at " +
                     Short(p.start, 6) + ")");
   }
   std::istringstream wrapped(Wrap(StatisticsSentence(r, false), 92, ""));

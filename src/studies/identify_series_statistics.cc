@@ -10,10 +10,6 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// A singular value this small relative to the largest is zero to rounding: its direction
-// has no finite variance at all.
-constexpr double kRoundingRatio = 1e-14;
-
 }  // namespace
 
 JacobianAnalysis AnalyseJacobian(const Eigen::MatrixXd& weighted_jacobian,
@@ -58,7 +54,7 @@ JacobianAnalysis AnalyseJacobian(const Eigen::MatrixXd& weighted_jacobian,
   }
 
   // the singular values over every column not at a bound (a negligible column gives a
-  // near-zero one); the directions that are not a single negligible column
+  // near-zero one); the unresolved directions, but those of negligible columns alone
   if (!seen.empty()) {
     const Eigen::MatrixXd s_seen = s(Eigen::all, seen);
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(s_seen, Eigen::ComputeThinV);
@@ -77,7 +73,7 @@ JacobianAnalysis AnalyseJacobian(const Eigen::MatrixXd& weighted_jacobian,
           ++taking_part;
         }
       }
-      if (taking_part < 2) continue;  // one parameter alone: its column says it already
+      if (taking_part == 0) continue;  // negligible columns alone: their ratios say it
       for (std::size_t i = 0; i < seen.size(); ++i) {
         auto& verdict = a.verdicts[static_cast<std::size_t>(seen[i])];
         if (std::abs(direction.components[static_cast<std::size_t>(seen[i])]) >= kComponentFloor &&
@@ -90,6 +86,8 @@ JacobianAnalysis AnalyseJacobian(const Eigen::MatrixXd& weighted_jacobian,
   }
 
   // the covariance over the estimable parameters, in relative terms: V diag(1/sigma^2) V^T
+  // over the resolved directions (a truncated SVD); a parameter taking part in an unresolved
+  // one has no standard error
   a.relative_standard_errors = Eigen::VectorXd::Constant(p, kInfinity);
   Eigen::MatrixXd relative_covariance = Eigen::MatrixXd::Constant(p, p, kNaN);
   if (!estimable.empty()) {
@@ -101,12 +99,12 @@ JacobianAnalysis AnalyseJacobian(const Eigen::MatrixXd& weighted_jacobian,
     Eigen::MatrixXd inner = Eigen::MatrixXd::Zero(m, m);
     std::vector<bool> unbounded(static_cast<std::size_t>(m), false);
     for (Eigen::Index k = 0; k < sv.size(); ++k) {
-      if (sv[k] > kRoundingRatio * sv[0]) {
+      if (sv[k] > 0.0 && sv[k] >= kDependentSingularValueRatio * sv[0]) {
         inner += v.col(k) * v.col(k).transpose() / (sv[k] * sv[k]);
-      } else {
-        for (Eigen::Index i = 0; i < m; ++i) {
-          if (std::abs(v(i, k)) > kRoundingRatio) unbounded[static_cast<std::size_t>(i)] = true;
-        }
+        continue;
+      }
+      for (Eigen::Index i = 0; i < m; ++i) {
+        if (std::abs(v(i, k)) >= kComponentFloor) unbounded[static_cast<std::size_t>(i)] = true;
       }
     }
     for (Eigen::Index i = 0; i < m; ++i) {

@@ -14,7 +14,8 @@ namespace musclesim::identify_series_detail {
 
 struct JacobianAnalysis {
   // the statistics: covariance = variance_factor (J_w^T J_w)^-1 over the parameters not at a
-  // bound and not negligible; the others have infinite standard errors and NaN correlations
+  // bound and not negligible, from the resolved directions (a truncated SVD); the others, and
+  // those in an unresolved direction, have infinite standard errors and NaN correlations
   double variance_factor = 1.0;      // 1 with the noise given; s^2 = RSS / dof without
   int degrees_of_freedom = 0;        // values - parameters not at a bound
   Eigen::VectorXd standard_errors;   // P [the parameters' units]
@@ -28,8 +29,8 @@ struct JacobianAnalysis {
   Eigen::VectorXd singular_values;           // of S without the columns at a bound, descending
   Eigen::VectorXd relative_standard_errors;  // P: standard error / scale [-]
   std::vector<Identifiability> verdicts;     // P
-  std::vector<WeakDirection> weak_directions;  // ratio < kDependentSingularValueRatio,
-                                               // each with 2 or more parameters taking part
+  std::vector<WeakDirection> weak_directions;  // ratio < kDependentSingularValueRatio, but
+                                               // those of negligible columns alone
 };
 
 // Analyses the weighted Jacobian `weighted_jacobian` (N x P: row i is weight_i d prediction_i

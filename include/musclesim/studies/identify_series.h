@@ -58,7 +58,8 @@ enum class Identifiability {
   kIdentifiable,      // relative standard error <= kPoorRelativeError
   kPoorlyDetermined,  // determined in principle, but the noise hides it
   kNegligibleColumn,  // the outputs do not depend on it (to kNegligibleColumnRatio)
-  kDependent,         // part of a combination with a near-zero singular value
+  kDependent,         // in a direction with a near-zero singular value (with others, or
+                      // alone when its column is just above kNegligibleColumnRatio)
   kAtBound,           // the estimate sits on a bound: not estimated
 };
 
@@ -73,9 +74,11 @@ inline constexpr double kDependentSingularValueRatio = 1e-6;
 // A parameter whose relative standard error exceeds this is poorly determined: its 95%
 // interval (about +-2 standard errors) is wider than +-50% of its value.
 inline constexpr double kPoorRelativeError = 0.25;
-// A direction names the parameters whose component is at least this (the direction has
-// unit length): the ones that take part in the combination.
-inline constexpr double kComponentFloor = 0.1;
+// An unresolved direction (unit length) involves the parameters whose component is at least
+// this: they are named in its combination and have no standard error; the others' come from
+// the resolved directions. 0.01 lies above the direction's numerical noise (about the
+// sensitivities' error, 1e-6, over the gap to the next singular value).
+inline constexpr double kComponentFloor = 0.01;
 
 // A right singular vector of the scaled sensitivity matrix with a near-zero singular value:
 // relative changes of the parameters (d p_j / |p_j|, in proportion to `components`) that
