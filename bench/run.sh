@@ -5,6 +5,7 @@
 #   micro.txt            ns per tension, RHS and Jacobian evaluation; fit times
 #   step_cost.csv        every scenario x method x Jacobian x epsilon x n (bench/step_cost.cc)
 #   step_cost_table.md   the canonical scenarios at their own settings
+#   sensitivity_cost.md  a run with k forward sensitivities against the plain run
 #   stiffness.md         largest Jacobian eigenvalue against BDF and Adams steps, by eps and n
 #   work_precision.csv   error against wall time for musclesim, Boost.Odeint and SciPy
 #   work_precision.md    wall time at equal error, as ratios to musclesim's default
@@ -53,6 +54,7 @@ echo "== micro-benchmarks"
 echo "== step cost"
 "$build/bench/step_cost" scenarios > "$out/step_cost.csv"
 bash bench/step_cost_table.sh "$build" > "$out/step_cost_table.md"
+"$build/bench/sensitivity_cost" > "$out/sensitivity_cost.md"
 "$python" bench/stiffness_table.py "$out/step_cost.csv" > "$out/stiffness.md"
 
 echo "== work-precision"

@@ -584,8 +584,6 @@ RunStats Simulation::Integrate(const NetworkSystem& system, const SolverOptions&
   }
   const int sensitivity_count = parameters == nullptr ? 0 : static_cast<int>(parameters->size());
   if (sensitivity_count > 0) {
-    // the lean vector has no sensitivity operations; its solver is a dense LU as well
-    if (kind == LinearSolverKind::kSmall) kind = LinearSolverKind::kDense;
     for (std::size_t i = 0; i < parameters->size(); ++i) {
       const SensitivityParameter& p = (*parameters)[i];
       if (p.derivative == nullptr || static_cast<int>(p.initial.size()) != n) {

@@ -200,8 +200,7 @@ class Simulation {
 
   // With the forward sensitivities of `parameters` (CVODES, staggered corrector, their error
   // controlled): each row goes to `sink` with its sensitivities. The sensitivities carry over
-  // every restart unchanged (the inputs' breakpoints must not depend on the parameters);
-  // `small` is served by `dense` (the lean vector has no sensitivity operations).
+  // every restart unchanged (the inputs' breakpoints must not depend on the parameters).
   RunStats Run(const NetworkSystem& system, const SolverOptions& options,
                const NetworkRunRequest& request,
                const std::vector<SensitivityParameter>& parameters, SensitivitySink& sink);
