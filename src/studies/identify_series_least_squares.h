@@ -69,10 +69,14 @@ struct LeastSquaresResult {
 // Runs the iteration from problem.start. Each step solves the damped problem
 // min |J d + r|^2 + lambda |D d|^2 (D: the largest column norms of J seen so far, Moré's
 // scaling, so that parameters of very different sizes are treated alike) on the parameters
-// not held at a bound, projects the trial point onto the box and accepts it when the cost
-// falls (lambda by Nielsen's rule). A parameter whose column is zero stays at its start.
-// Throws whatever the model throws at the start; std::invalid_argument for inconsistent
-// sizes or a start outside the bounds.
+// not held at a bound (one the gradient pushes against); a parameter whose step would cross
+// its bound is put on it and the others solved again, and the trial point is accepted when
+// the cost falls (lambda by Nielsen's rule, from 1). It stops when the Gauss-Newton step is
+// below the step tolerance, the cost falls by less than the cost tolerance, the residual is
+// orthogonal to every free column, a step shrunk below the step tolerance still does not
+// lower the cost (the model's numerical precision), or the evaluations run out. A parameter
+// whose column is zero stays at its start. Throws whatever the model throws at the start;
+// std::invalid_argument for inconsistent sizes or a start outside the bounds.
 LeastSquaresResult SolveBoundedLeastSquares(const BoundedLeastSquaresProblem& problem,
                                             const LeastSquaresOptions& options = {});
 
