@@ -118,7 +118,8 @@ TEST(IdentifySeriesCli, SetChangesTheScenarioBeforeTheFit) {
   // halves too (only force ratios matter without passive tension), as the header shows
   const std::string scenario = testing::WriteTempFile("estimated.yaml", "");
   const Outcome r = RunCli("identify " + Data("quick_release.yaml") + " -o " + scenario +
-                           " --set load[0].after=30 --set load[1].after=-15 --set actuator.mass=0.05");
+                           " --set load[0].after=30 --set load[1].after=-15"
+                           " --set actuator.mass=0.05");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const ScenarioSpec spec = LoadScenario(scenario);
   EXPECT_NEAR(spec.model.params.f_iso, 50.0, 0.1);  // half of 100 +- 0.2 (as above)

@@ -158,7 +158,8 @@ TEST(IdentifySeriesExamples, ForcesAndMassScaledTogetherAreAnUnresolvedCombinati
                        "  - {path: model.velocity.v_max}\n");
   const IdentifySeriesSpec spec = LoadIdentifySeriesSpec(data);
   const SeriesIdentification design =
-      DesignSeries(spec, ReadMeasuredSeries(spec, true), ScenarioSensitivityRunner(spec.scenario, {}));
+      DesignSeries(spec, ReadMeasuredSeries(spec, true),
+                   ScenarioSensitivityRunner(spec.scenario, {}));
   ASSERT_EQ(design.weak_directions.size(), 1u);
   const WeakDirection& w = design.weak_directions[0];
   // the sensitivities are accurate to about 1e-8 here (rtol 1e-8): the direction's ratio

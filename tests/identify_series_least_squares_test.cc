@@ -26,7 +26,8 @@ ModelPoint Decay(const Eigen::VectorXd& p) {
   return m;
 }
 
-BoundedLeastSquaresProblem DecayProblem(const Eigen::Vector3d& truth, const Eigen::Vector3d& start) {
+BoundedLeastSquaresProblem DecayProblem(const Eigen::Vector3d& truth,
+                                        const Eigen::Vector3d& start) {
   BoundedLeastSquaresProblem problem;
   problem.model = Decay;
   problem.data = Decay(truth).predictions;

@@ -85,9 +85,11 @@ TEST(IdentifySeriesSpec, RejectsEachBrokenRuleNamingWhereAndWhy) {
   EXPECT_EQ(ErrorWith("path: model.velocity.v_max", "path: model.f_iso"),
             "parameters[1].path = model.f_iso (FILE:8:12): is listed twice: each parameter once");
   EXPECT_EQ(ErrorWith("bounds: [1, 1000]", "bounds: [1000, 1]"),
-            "parameters[0].bounds = [1000, 1] (FILE:7:44): must be [lower, upper] with lower < upper");
+            "parameters[0].bounds = [1000, 1] (FILE:7:44): must be [lower, upper] with "
+            "lower < upper");
   EXPECT_THAT(ErrorWith("bounds: [1, 1000]", "bounds: [1, .inf]"),
-              HasSubstr("parameters[0].bounds[1] = .inf (FILE:7:48): must be from -1e+12 to 1e+12"));
+              HasSubstr("parameters[0].bounds[1] = .inf (FILE:7:48): must be from -1e+12 to "
+                        "1e+12"));
   EXPECT_THAT(ErrorWith("bounds: [1, 1000]", "bounds: [1]"),
               HasSubstr("parameters[0].bounds = [1] (FILE:7:44): must be a list of exactly 2"));
   EXPECT_EQ(ErrorWith("start: 80", "start: 1001"),
@@ -117,8 +119,8 @@ std::string SeriesError(const std::string& csv, const std::string& noise, bool d
 }
 
 TEST(ReadMeasuredSeries, ReadsTimesColumnsAndNoise) {
-  const std::string csv_path = WriteTempFile("lengths.csv",
-                                             "# synthetic\nlength,t,tension_total\n0.1,0,5\n0.099,0.01,6\n");
+  const std::string csv_path = WriteTempFile(
+      "lengths.csv", "# synthetic\nlength,t,tension_total\n0.1,0,5\n0.099,0.01,6\n");
   const std::string data = WriteTempFile(
       "data.yaml", "scenario: r.yaml\nseries:\n  - {csv: " +
                        std::filesystem::path(csv_path).filename().string() +
@@ -153,7 +155,8 @@ TEST(ReadMeasuredSeries, RejectsDataTheFitCannotUse) {
 
 TEST(ReadMeasuredSeries, OnlyTheDesignDoesWithoutCsv) {
   const std::string data = WriteTempFile(
-      "data.yaml", "scenario: r.yaml\nseries:\n  - noise: {length: 1.0e-5}\nparameters: [{path: a}]\n");
+      "data.yaml",
+      "scenario: r.yaml\nseries:\n  - noise: {length: 1.0e-5}\nparameters: [{path: a}]\n");
   const IdentifySeriesSpec spec = LoadIdentifySeriesSpec(data);
   EXPECT_EQ(InputErrorOf(data, [&] { ReadMeasuredSeries(spec, false); }),
             "series[0] (FILE:3:5): needs csv, the measured values, to fit (only --design does "

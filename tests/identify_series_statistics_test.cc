@@ -128,7 +128,8 @@ TEST(AnalyseJacobian, AZeroColumnIsNegligibleAndLeavesTheOthersAsWithoutIt) {
   const Eigen::MatrixXd x = LineJacobian(8) * 100.0;  // noise 0.01: both well determined
   Eigen::MatrixXd with_zero(8, 3);
   with_zero << x, Eigen::VectorXd::Zero(8);
-  const JacobianAnalysis a = AnalyseJacobian(with_zero, Eigen::Vector3d(1.0, 2.0, 0.105), true, 0.0, {});
+  const JacobianAnalysis a =
+      AnalyseJacobian(with_zero, Eigen::Vector3d(1.0, 2.0, 0.105), true, 0.0, {});
   const JacobianAnalysis b = AnalyseJacobian(x, Eigen::Vector2d(1.0, 2.0), true, 0.0, {});
   EXPECT_EQ(a.verdicts[2], Identifiability::kNegligibleColumn);
   EXPECT_EQ(a.column_ratios[2], 0.0);

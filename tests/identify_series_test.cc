@@ -240,7 +240,8 @@ TEST(FitSeries, WithoutNoiseLevelsTheResidualsGiveTheVariance) {
   const double s = std::sqrt(fit.variance_factor);
   EXPECT_NEAR(fit.residuals[4].standardised,
               (fit.residuals[4].measured - fit.residuals[4].model) / s, 1e-12);
-  EXPECT_THAT(FormatSeriesReport(fit, "data.yaml"), HasSubstr("No noise levels: standard errors from s^2 (J^T J)^-1"));
+  EXPECT_THAT(FormatSeriesReport(fit, "data.yaml"),
+              HasSubstr("No noise levels: standard errors from s^2 (J^T J)^-1"));
 }
 
 TEST(FitSeries, AParameterTheOutputsIgnoreIsFlaggedAndKeptAtItsStart) {
@@ -291,8 +292,9 @@ TEST(FitSeries, RefusesDataTheRunCannotMatch) {
             "series[0] (data.yaml:3:5): column speed is not an output the scenario's run "
             "differentiates; these are: length, tension_total");
   // a column that is one in the stand-in's table, measured twice without noise levels
-  std::vector<MeasuredSeries> two = {Measured({"length"}, Times(0, 0.01, 5), truth, {kNaN}, 1),
-                                     Measured({"tension_total"}, Times(0, 0.01, 5), truth, {kNaN}, 1)};
+  std::vector<MeasuredSeries> two = {
+      Measured({"length"}, Times(0, 0.01, 5), truth, {kNaN}, 1),
+      Measured({"tension_total"}, Times(0, 0.01, 5), truth, {kNaN}, 1)};
   EXPECT_THAT(message(spec, two), HasSubstr("the series measure 2 different columns and give no "
                                             "noise levels"));
   two[0].noise = {1e-5};
@@ -307,8 +309,12 @@ TEST(FitSeries, RefusesDataTheRunCannotMatch) {
             "[0.1, 1]: give a start within them");
   EXPECT_EQ(message(Spec({Parameter("release.nothing", 1.0)}),
                     {Measured({"length"}, Times(0, 0.01, 5), truth, {1e-5}, 1)}),
-            "data.yaml: with scenario release.yaml (data.yaml:1:11), the parameters and the "
-            "measured times of this file: --sensitivity release.nothing: no such number");
+            "data.yaml: scenario release.yaml (data.yaml:1:11) with the parameters of this "
+            "file: --sensitivity release.nothing: no such number");
+  // the stand-in's run ends at 0.3 s; the third row of this series (line 4) is later
+  EXPECT_EQ(message(spec, {Measured({"length"}, Times(0.1, 0.1, 4), truth, {1e-5}, 1)}),
+            "series[0].csv = measured.csv:4: t = 0.30000000000000004 lies outside the "
+            "scenario's run, from 0 to 0.3 s");
 }
 
 TEST(FitSeries, TheEstimatesAsOverridesReadBackExactly) {

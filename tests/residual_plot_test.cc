@@ -53,7 +53,8 @@ TEST(ResidualPlot, OtherTablesAreNotResidualsAndBrokenOnesAreRefused) {
             "FILE: missing columns: output (a residual CSV of musclesim identify --residuals: "
             "series, output, t, measured, model, residual, standardised)");
   const std::string nan = testing::WriteTempFile(
-      "residuals.csv", "series,output,t,measured,model,residual,standardised\n0,length,0,nan,1,0,0\n");
+      "residuals.csv",
+      "series,output,t,measured,model,residual,standardised\n0,length,0,nan,1,0,0\n");
   EXPECT_THAT(testing::InputErrorOf(nan, [&] { ResidualPlotScript(ReadCsv(nan), options); }),
               HasSubstr("FILE:2: column measured = 'nan': must be a finite number"));
 }

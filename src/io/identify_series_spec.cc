@@ -126,7 +126,8 @@ IdentifySeriesSpec LoadIdentifySeriesSpec(const std::string& path) {
   const YAML::Node parameters = yaml::Required(src, root, "", "parameters");
   if (!parameters.IsSequence() || parameters.size() == 0) {
     yaml::Fail(src, parameters, "parameters", yaml::Describe(parameters),
-               "must be a list of one or more parameters, each {path: P, start: V, bounds: [L, U]}");
+               "must be a list of one or more parameters, each {path: P, start: V, "
+               "bounds: [L, U]}");
   }
   std::set<std::string> seen;
   for (std::size_t i = 0; i < parameters.size(); ++i) {

@@ -104,24 +104,35 @@ Setup Prepare(const IdentifySeriesSpec& spec, std::vector<MeasuredSeries> series
               const SensitivityRunner& run, bool design) {
   Setup setup;
   for (const SeriesParameterSpec& p : spec.parameters) setup.paths.push_back(p.path);
-  const bool needs_grid = std::any_of(series.begin(), series.end(),
-                                      [](const MeasuredSeries& s) { return s.times.empty(); });
-  // the scenario as given: its values of the parameters (and its grid, when a series needs it)
+  // the scenario as given, on its output grid: its values of the parameters, its columns,
+  // the span the measured times must lie in, and the grid for a series without times
   SensitivityTable baseline;
-  std::vector<double> csv_times = MergedTimes(series, {});
   try {
-    baseline = run({}, setup.paths, needs_grid ? std::vector<double>{} : csv_times);
+    baseline = run({}, setup.paths, {});
   } catch (const InputError& e) {
-    throw InputError(spec.source + ": with scenario " + spec.scenario + " (" + spec.scenario_at +
-                     "), the parameters and the measured times of this file: " + e.what());
+    throw InputError(spec.source + ": scenario " + spec.scenario + " (" + spec.scenario_at +
+                     ") with the parameters of this file: " + e.what());
   }
-  if (const std::string why = Unusable(baseline, needs_grid ? baseline.rows() : csv_times.size());
-      !why.empty()) {
+  if (baseline.stats.status == RunStatus::kFailed || baseline.times.empty()) {
     throw std::runtime_error(spec.source + ": scenario " + spec.scenario +
-                             " as given, at the measured times: " + why);
+                             " fails as given: " + baseline.stats.message);
+  }
+  const double first = baseline.times.front(), last = baseline.times.back();
+  for (std::size_t s = 0; s < series.size(); ++s) {
+    for (std::size_t r = 0; r < series[s].times.size(); ++r) {
+      const double t = series[s].times[r];
+      if (t >= first && t <= last) continue;
+      throw InputError(
+          "series[" + std::to_string(s) + "].csv = " + series[s].source + ":" +
+          std::to_string(series[s].lines[r]) + ": t = " + FormatNumber(t) +
+          " lies outside the scenario's run, from " + FormatNumber(first) + " to " +
+          FormatNumber(last) + " s" +
+          (baseline.stats.status == RunStatus::kLimit ? " (where " + baseline.stats.message + ")"
+                                                      : ""));
+    }
   }
   setup.scenario_values = baseline.parameter_values;
-  setup.times = needs_grid ? MergedTimes(series, baseline.times) : csv_times;
+  setup.times = MergedTimes(series, baseline.times);
 
   // the measured columns among the run's differentiated ones; the noise all or nothing
   std::size_t with_noise = 0, without_noise = 0;
@@ -132,7 +143,9 @@ Setup Prepare(const IdentifySeriesSpec& spec, std::vector<MeasuredSeries> series
       const auto found = std::find(baseline.columns.begin(), baseline.columns.end(), m.columns[c]);
       if (found == baseline.columns.end()) {
         std::string known;
-        for (const std::string& name : baseline.columns) known += (known.empty() ? "" : ", ") + name;
+        for (const std::string& name : baseline.columns) {
+          known += (known.empty() ? "" : ", ") + name;
+        }
         throw InputError("series[" + std::to_string(s) + "] (" + m.at + "): column " +
                          m.columns[c] + " is not an output the scenario's run differentiates; "
                          "these are: " + known);

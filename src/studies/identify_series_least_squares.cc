@@ -131,7 +131,9 @@ LeastSquaresResult SolveBoundedLeastSquares(const BoundedLeastSquaresProblem& pr
     const double r_norm = r.norm();
     for (Eigen::Index j : free) {
       const double column = jr.col(j).norm();
-      if (column > 0.0) worst_cosine = std::max(worst_cosine, std::abs(gradient[j]) / (column * r_norm));
+      if (column > 0.0) {
+        worst_cosine = std::max(worst_cosine, std::abs(gradient[j]) / (column * r_norm));
+      }
     }
     if (free.empty() || worst_cosine <= options.gradient_tolerance) {
       result.converged = true;
@@ -186,7 +188,8 @@ LeastSquaresResult SolveBoundedLeastSquares(const BoundedLeastSquaresProblem& pr
     if (accepted) {
       const double before = cost;
       cost = r.squaredNorm();
-      if (actual <= options.cost_tolerance * before && predicted <= options.cost_tolerance * before) {
+      const double negligible = options.cost_tolerance * before;
+      if (actual <= negligible && predicted <= negligible) {
         result.converged = true;
         result.stop_reason = "the cost fell by less than the cost tolerance";
         break;

@@ -117,8 +117,8 @@ void CorrelationTable(std::ostringstream& s, const SeriesIdentification& r) {
   for (std::size_t i = 0; i < r.parameters.size(); ++i) {
     s << "| " << r.parameters[i].path << " |";
     for (std::size_t k = 0; k < r.parameters.size(); ++k) {
-      s << " " << Short(r.correlation(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)), 3)
-        << " |";
+      const auto row = static_cast<Eigen::Index>(i), column = static_cast<Eigen::Index>(k);
+      s << " " << Short(r.correlation(row, column), 3) << " |";
     }
     s << "\n";
   }

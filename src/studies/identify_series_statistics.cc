@@ -67,8 +67,9 @@ JacobianAnalysis AnalyseJacobian(const Eigen::MatrixXd& weighted_jacobian,
       int taking_part = 0;
       for (std::size_t i = 0; i < seen.size(); ++i) {
         const Eigen::Index j = seen[i];
-        direction.components[static_cast<std::size_t>(j)] = svd.matrixV()(static_cast<Eigen::Index>(i), k);
-        if (std::abs(svd.matrixV()(static_cast<Eigen::Index>(i), k)) >= kComponentFloor &&
+        const double component = svd.matrixV()(static_cast<Eigen::Index>(i), k);
+        direction.components[static_cast<std::size_t>(j)] = component;
+        if (std::abs(component) >= kComponentFloor &&
             a.verdicts[static_cast<std::size_t>(j)] != Identifiability::kNegligibleColumn) {
           ++taking_part;
         }

@@ -75,7 +75,8 @@ std::string ResidualPlotScript(const CsvTable& table, const PlotOptions& options
   for (std::size_t k = 0; k < panels.size(); ++k) {
     const std::string label = "series " + panels[k].first + ": " + panels[k].second;
     s << "set ylabel " << GnuplotString(label, "a series or output name of " + table.source)
-      << "\nplot $d" << k << " using 1:2 with points pt 7 ps 0.5 lc rgb '#636363' title 'measured', "
+      << "\nplot $d" << k
+      << " using 1:2 with points pt 7 ps 0.5 lc rgb '#636363' title 'measured', "
       << "\\\n  $d" << k << " using 1:3 with lines lw 2 lc rgb '#de2d26' title 'model'\n";
   }
   s << "set format x '%g'\nset xlabel 'time [s]'\nset ylabel 'standardised residual [-]'\n"
