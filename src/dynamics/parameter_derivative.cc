@@ -6,25 +6,40 @@ namespace musclesim {
 
 DifferenceQuotientDerivative::DifferenceQuotientDerivative(Stencil stencil)
     : stencil_(std::move(stencil)) {
-  scratch_.resize(static_cast<std::size_t>(stencil_.front().first->state_size()));
-  elements_ = stencil_.front().first->elements().size();
-  for (const auto& entry : stencil_) elements_ = std::min(elements_, entry.first->elements().size());
+  scratch_.resize(static_cast<std::size_t>(stencil_.front().system->state_size()));
+  shifted_.resize(scratch_.size());
+  elements_ = stencil_.front().system->elements().size();
+  for (const Point& point : stencil_) {
+    elements_ = std::min(elements_, point.system->elements().size());
+  }
 }
 
 void DifferenceQuotientDerivative::RightHandSide(double t, const double* y, double* dfdp) const {
   std::fill(dfdp, dfdp + scratch_.size(), 0.0);
-  for (const auto& [system, weight] : stencil_) {
-    system->RightHandSide(t, y, scratch_.data());
-    for (std::size_t i = 0; i < scratch_.size(); ++i) dfdp[i] += weight * scratch_[i];
+  for (const Point& point : stencil_) {
+    point.system->RightHandSide(t, y, scratch_.data());
+    for (std::size_t i = 0; i < scratch_.size(); ++i) dfdp[i] += point.weight * scratch_[i];
   }
+}
+
+bool DifferenceQuotientDerivative::SensitivityRate(double t, const double* y, const double* s,
+                                                   double* rate) const {
+  std::fill(rate, rate + scratch_.size(), 0.0);
+  for (const Point& point : stencil_) {
+    for (std::size_t i = 0; i < shifted_.size(); ++i) shifted_[i] = y[i] + point.offset * s[i];
+    point.system->RightHandSide(t, shifted_.data(), scratch_.data());
+    for (std::size_t i = 0; i < scratch_.size(); ++i) rate[i] += point.weight * scratch_[i];
+  }
+  return true;
 }
 
 void DifferenceQuotientDerivative::Elements(double t, const double* y,
                                             NetworkSystem::ElementPartials* elements) const {
   const std::size_t count = elements_;
   std::fill(elements, elements + count, NetworkSystem::ElementPartials{});
-  for (const auto& [system, weight] : stencil_) {
-    system->Observe(t, y, sample_);
+  for (const Point& point : stencil_) {
+    const double weight = point.weight;
+    point.system->Observe(t, y, sample_);
     for (std::size_t e = 0; e < count; ++e) {
       const ElementSample& element = sample_.elements[e];
       elements[e].length += weight * element.length;

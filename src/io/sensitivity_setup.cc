@@ -132,15 +132,16 @@ void AddDifferenceQuotient(const Builder& builder, const Built& base, const std:
     Point near = above.built ? std::move(above) : std::move(below);
     Point far = build_at(value + 2.0 * direction * h);
     if (!far.built) {
-      throw InputError(where + ": " + path + " = " + FormatNumber(value) +
-                       " has no neighbourhood of valid values to differentiate in: " + far.error);
+      throw InputError(where + " = " + FormatNumber(value) +
+                       ": no neighbourhood of valid values to differentiate in: " + far.error);
     }
     points.push_back(Point{value, base, ""});
     points.push_back(std::move(near));
     points.push_back(std::move(far));
   } else {
-    throw InputError(where + ": " + path + " = " + FormatNumber(value) +
-                     " cannot change continuously, so it has no sensitivity: " + below.error);
+    throw InputError(where + " = " + FormatNumber(value) +
+                     ": cannot change continuously (an integer, or a value at the edge of its "
+                     "range on both sides), so it has no sensitivity; near it: " + below.error);
   }
   const NetworkRunRequest& request = setup.request;
   const std::vector<double> breakpoints =
@@ -151,8 +152,8 @@ void AddDifferenceQuotient(const Builder& builder, const Built& base, const std:
     const std::vector<double> moved =
         point.built->system->Breakpoints(request.t_start, request.t_end);
     if (moved != breakpoints || point.built->system->state_size() != base.system->state_size()) {
-      throw InputError(where + ": " + path +
-                       " moves when an input jumps (a breakpoint of an activation, excitation, "
+      throw InputError(where +
+                       ": moves when an input jumps (a breakpoint of an activation, excitation, "
                        "load or motion): the sensitivity jumps there (docs/model.md 10), which "
                        "musclesim does not compute; differentiate by a value the times do not "
                        "depend on");
@@ -162,7 +163,7 @@ void AddDifferenceQuotient(const Builder& builder, const Built& base, const std:
   const std::vector<double> weights = DerivativeWeights(values, value);
   std::vector<double> initial(base.initial.size(), 0.0);
   for (std::size_t i = 0; i < points.size(); ++i) {
-    stencil.emplace_back(points[i].built->system, weights[i]);
+    stencil.push_back({points[i].built->system, weights[i], points[i].value - value});
     for (std::size_t k = 0; k < initial.size(); ++k) {
       initial[k] += weights[i] * points[i].built->initial[k];
     }
@@ -172,24 +173,60 @@ void AddDifferenceQuotient(const Builder& builder, const Built& base, const std:
   setup.parameters.push_back({setup.derivatives.back().get(), std::move(initial), 1.0});
 }
 
-// The tension model a path's parameter belongs to, and the path within its block.
+// A model block as built: its tension model, and whether its Gaussians are fitted at load
+// (then a change of the active length's range or sigma refits them, which the closed form of
+// a fixed sum does not see).
+struct BuiltModel {
+  const TensionModel* model = nullptr;
+  bool fitted = false;
+};
+
+// The tension model a path's parameter belongs to, and the path within its block; no model
+// when the closed form does not hold for it.
 struct ModelPath {
   const TensionModel* model = nullptr;
   std::string relative;
 };
 
-ModelPath FindModelPath(const std::string& path, const Built& base,
-                        const std::map<std::string, std::shared_ptr<const TensionModel>>& models) {
-  if (base.actuator != nullptr) {
-    if (path.rfind("model.", 0) == 0) return {&base.actuator->model(), path.substr(6)};
-    return {};
+ModelPath FindModelPath(const std::string& path, const std::map<std::string, BuiltModel>& models,
+                        bool network) {
+  std::string name, relative;
+  if (!network) {
+    if (path.rfind("model.", 0) != 0) return {};
+    relative = path.substr(6);
+  } else {
+    if (path.rfind("models.", 0) != 0) return {};
+    const std::size_t dot = path.find('.', 7);
+    if (dot == std::string::npos) return {};
+    name = path.substr(7, dot - 7);
+    relative = path.substr(dot + 1);
   }
-  if (path.rfind("models.", 0) != 0) return {};
-  const std::size_t dot = path.find('.', 7);
-  if (dot == std::string::npos) return {};
-  const auto found = models.find(path.substr(7, dot - 7));
+  const auto found = models.find(name);
   if (found == models.end()) return {};
-  return {found->second.get(), path.substr(dot + 1)};
+  if (found->second.fitted && relative.rfind("active_length.", 0) == 0) return {};
+  return {found->second.model, relative};
+}
+
+// `steps` written back in one spelling ("load[0].after" for "load[00]after"), so that one
+// parameter has one column name.
+std::string Canonical(const std::vector<yaml::KeyPathStep>& steps) {
+  std::string path;
+  for (const yaml::KeyPathStep& step : steps) {
+    if (step.key.empty()) {
+      path += "[" + std::to_string(step.index) + "]";
+    } else {
+      path += (path.empty() ? "" : ".") + step.key;
+    }
+  }
+  return path;
+}
+
+// A column name must not break the CSV's header: no comma, quote or control character.
+bool FitsCsvHeader(const std::string& path) {
+  return std::none_of(path.begin(), path.end(), [](char c) {
+    const auto byte = static_cast<unsigned char>(c);
+    return c == ',' || c == '"' || byte < 0x20 || byte == 0x7f;
+  });
 }
 
 }  // namespace
@@ -203,9 +240,9 @@ SensitivitySetup PrepareSensitivities(const std::string& path,
   std::vector<std::string> paths, where;
   for (const std::string& p : parameters) {
     paths.push_back(p);
-    where.push_back("--sensitivity " + p);
+    where.push_back("--sensitivity");
   }
-  std::map<std::string, std::shared_ptr<const TensionModel>> models;
+  std::map<std::string, BuiltModel> models;
   Built base = builder.Build("");
   if (builder.network()) {
     const NetworkScenarioSpec spec = builder.NetworkSpec();
@@ -214,11 +251,15 @@ SensitivitySetup PrepareSensitivities(const std::string& path,
     setup.request = spec.Request();
     setup.output_file = spec.output.file;
     setup.phase_tolerance = spec.output.phase_tolerance;
-    models = spec.tension_models;
+    for (const auto& [name, model] : spec.tension_models) {
+      models[name] = {model.get(), spec.models.at(name).fit.has_value()};
+    }
     // the same models the base system's actuators hold, so a closed form finds them
     base.system = std::make_shared<const NetworkSystem>(spec.Build());
     paths.insert(paths.end(), spec.sensitivities.begin(), spec.sensitivities.end());
-    for (const std::string& at : spec.sensitivities_at) where.push_back(at + ": sensitivities");
+    for (std::size_t i = 0; i < spec.sensitivities_at.size(); ++i) {
+      where.push_back(spec.sensitivities_at[i] + ": sensitivities[" + std::to_string(i) + "]");
+    }
   } else {
     const ScenarioSpec spec = builder.SingleSpec();
     setup.name = spec.name;
@@ -226,8 +267,11 @@ SensitivitySetup PrepareSensitivities(const std::string& path,
     setup.request = NetworkRequestOf(*base.actuator, spec.Request());
     setup.output_file = spec.output.file;
     setup.phase_tolerance = spec.PhaseTolerance();
+    models[""] = {&base.actuator->model(), spec.model.fit.has_value()};
     paths.insert(paths.end(), spec.sensitivities.begin(), spec.sensitivities.end());
-    for (const std::string& at : spec.sensitivities_at) where.push_back(at + ": sensitivities");
+    for (std::size_t i = 0; i < spec.sensitivities_at.size(); ++i) {
+      where.push_back(spec.sensitivities_at[i] + ": sensitivities[" + std::to_string(i) + "]");
+    }
   }
   setup.actuator = base.actuator != nullptr
                        ? std::shared_ptr<const ActuatorSystem>(base.system, base.actuator)
@@ -239,34 +283,36 @@ SensitivitySetup PrepareSensitivities(const std::string& path,
   for (const std::string& text : overrides) yaml::ApplyOverride(root, text, path);
 
   for (std::size_t i = 0; i < paths.size(); ++i) {
-    const std::string& p = paths[i];
-    if (std::find(setup.paths.begin(), setup.paths.end(), p) != setup.paths.end()) continue;
-    const auto steps = yaml::SplitKeyPath(p);
-    if (!steps || steps->empty() || steps->front().key.empty()) {
-      throw InputError(where[i] + ": '" + p +
-                       "' is not a dotted key path such as model.f_iso or load[0].value");
+    const auto steps = yaml::SplitKeyPath(paths[i]);
+    if (!steps || steps->empty() || steps->front().key.empty() || !FitsCsvHeader(paths[i])) {
+      // the path as given, cut short: it may be anything
+      const std::string shown = paths[i].size() > 80 ? paths[i].substr(0, 80) + "..." : paths[i];
+      throw InputError(where[i] + " '" + shown +
+                       "': not a dotted key path such as model.f_iso or load[0].value (names "
+                       "without commas, quotes or control characters, indices in brackets)");
     }
+    const std::string p = Canonical(*steps);
+    where[i] += " " + p;
+    if (std::find(setup.paths.begin(), setup.paths.end(), p) != setup.paths.end()) continue;
     for (const char* setting : kSettings) {
       if (steps->front().key == setting) {
-        throw InputError(where[i] + ": " + p + " is a setting of the run, not a parameter of " +
-                         "its dynamics: it has no sensitivity");
+        throw InputError(where[i] + ": a setting of the run, not a parameter of its dynamics: it "
+                         "has no sensitivity");
       }
     }
     const std::optional<std::string> text = yaml::ScalarAt(root, p);
     if (!text) {
-      throw InputError(where[i] + ": " + p +
-                       " is no value in the scenario: a sensitivity needs a number written in "
-                       "the file (or given with --set)");
+      throw InputError(where[i] + ": no value in the scenario: a sensitivity needs a number "
+                       "written in the file (or given with --set)");
     }
     char* end = nullptr;
     const double value = std::strtod(text->c_str(), &end);
     if (text->empty() || *end != '\0' || !std::isfinite(value)) {
-      throw InputError(where[i] + ": " + p + " = " + *text +
-                       " is not a number: it has no sensitivity");
+      throw InputError(where[i] + " = " + *text + ": not a number: it has no sensitivity");
     }
     setup.paths.push_back(p);
     setup.values.push_back(value);
-    const ModelPath model = FindModelPath(p, base, models);
+    const ModelPath model = FindModelPath(p, models, base.actuator == nullptr);
     std::unique_ptr<ParameterDerivative> closed_form =
         model.model != nullptr
             ? ModelParameterDerivative(*base.system, model.model, model.relative)

@@ -230,11 +230,20 @@ int SensitivityRightHandSide(int count, sunrealtype t, N_Vector y, N_Vector, N_V
   const JacobianPattern& pattern = system.jacobian_pattern();
   const double at = cb->InputTime(t);
   const double* state = N_VGetArrayPointer(y);
-  system.Jacobian(at, state, cb->jacobian_values.data());
+  bool jacobian = false;  // evaluated for the first parameter that needs it
   for (int i = 0; i < count; ++i) {
     const double* direction = N_VGetArrayPointer(s[i]);
     double* rate = N_VGetArrayPointer(sdot[i]);
-    (*cb->parameters)[static_cast<std::size_t>(i)].derivative->RightHandSide(at, state, rate);
+    const ParameterDerivative& derivative = *(*cb->parameters)[static_cast<std::size_t>(i)].derivative;
+    if (derivative.SensitivityRate(at, state, direction, rate)) {
+      for (int k = 0; k < pattern.size; ++k) {
+        if (!std::isfinite(rate[k])) return 1;
+      }
+      continue;
+    }
+    if (!jacobian) system.Jacobian(at, state, cb->jacobian_values.data());
+    jacobian = true;
+    derivative.RightHandSide(at, state, rate);
     for (int column = 0; column < pattern.size; ++column) {
       const double along = direction[column];
       if (along == 0.0) continue;
@@ -640,7 +649,7 @@ RunStats Simulation::Integrate(const NetworkSystem& system, const SolverOptions&
       rows_sensitivities[static_cast<std::size_t>(i)] =
           N_VGetArrayPointer(fresh ? ws.sensitivities[i] : ws.sensitivities_between[i]);
     }
-    if (!fresh) {
+    if (!fresh && sensitivity_count > 0) {
       ws.Check(CVodeGetSensDky(ws.cvode, at, 0, ws.sensitivities_between), "CVodeGetSensDky");
     }
     return rows_sensitivities.data();

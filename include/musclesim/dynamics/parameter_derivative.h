@@ -6,7 +6,6 @@
 
 #include <memory>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "musclesim/dynamics/network.h"
@@ -24,25 +23,42 @@ class ParameterDerivative {
                         NetworkSystem::ElementPartials* elements) const = 0;
   // Whether the derivatives are closed forms (else difference quotients).
   virtual bool analytic() const = 0;
+  // The sensitivity's whole rate s' = (df/dy) s + df/dp at (t, y) along s, into `rate`, when
+  // this parameter computes it itself (returns true); false: the caller forms it from the
+  // analytic Jacobian and RightHandSide.
+  virtual bool SensitivityRate(double /*t*/, const double* /*y*/, const double* /*s*/,
+                               double* /*rate*/) const {
+    return false;
+  }
 };
 
-// A difference quotient over the same network built at several values of p: df/dp =
-// sum_i weight_i f_i(t, y), and the same for the tensions (a central quotient is
-// {(p - h, -1/2h), (p + h, 1/2h)}). The systems must have the same states; the tensions are
+// A difference quotient over the same network built at several values p + offset_i of p:
+// df/dp = sum_i weight_i f_i(t, y), and the same for the tensions (a central quotient is
+// {(p - h, -1/2h, -h), (p + h, 1/2h, h)}). The sensitivity's rate is the quotient along the
+// sensitivity itself, sum_i weight_i f_i(t, y + offset_i s): the derivative of f along the
+// direction (s, 1) in (y, p), which stays on a kink the state follows (an activation tracking
+// its excitation, e = u, where f has no derivative in p or y alone but has one along the path). The systems must have the same states; the tensions are
 // those of the elements all of them have (a single actuator's network gains a damper or a
 // spring when its coefficient leaves 0: the actuator stays element 0).
 class DifferenceQuotientDerivative final : public ParameterDerivative {
  public:
-  using Stencil = std::vector<std::pair<std::shared_ptr<const NetworkSystem>, double>>;
+  struct Point {
+    std::shared_ptr<const NetworkSystem> system;  // built at p + offset
+    double weight;                                // [1/unit of p]
+    double offset;                                // [unit of p]
+  };
+  using Stencil = std::vector<Point>;
   explicit DifferenceQuotientDerivative(Stencil stencil);
   void RightHandSide(double t, const double* y, double* dfdp) const override;
   void Elements(double t, const double* y,
                 NetworkSystem::ElementPartials* elements) const override;
   bool analytic() const override { return false; }
+  bool SensitivityRate(double t, const double* y, const double* s, double* rate) const override;
 
  private:
   Stencil stencil_;
   mutable std::vector<double> scratch_;  // one right-hand side (a run is single-threaded)
+  mutable std::vector<double> shifted_;  // y + offset s
   std::size_t elements_ = 0;  // the fewest elements among the systems
   mutable NetworkSample sample_;
 };
