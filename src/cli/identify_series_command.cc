@@ -32,6 +32,7 @@ series, by Levenberg-Marquardt on the exact Jacobian of forward sensitivities:
   parameters:                           dotted paths as --set takes them; start: optional
     - {path: model.f_iso, start: 80, bounds: [1, 1000]}    (the scenario's value), bounds:
     - {path: model.velocity.v_max, start: 0.5}               optional [lower, upper]
+    - {path: "load[0].after"}           (a path with [index] is quoted inside {...})
 (paths relative to DATA.yaml). Noise levels for every column, or for none (then every series
 must measure one and the same column, and the standard errors come from s^2 = RSS/(N-P)).
 It writes the scenario with the estimates applied, a complete file that runs, headed by each

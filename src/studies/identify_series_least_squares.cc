@@ -10,10 +10,11 @@ namespace musclesim::identify_series_detail {
 namespace {
 
 // The first lambda: the damping term lambda |D d|^2 with D the column norms makes lambda
-// a fraction of each diagonal entry of J^T J (Marquardt's scaling). 1 is cautious (half
-// way between Gauss-Newton and gradient steps): a start is a user's guess, and a full
-// Gauss-Newton step from a poor one can leap to another valley.
-constexpr double kInitialDamping = 1.0;
+// a fraction of each diagonal entry of J^T J (Marquardt's scaling). 1e-2 starts near
+// Gauss-Newton's step, which each run saved is worth, while damping the directions of
+// strongly correlated parameters; a start so poor that this overshoots costs a rejected run
+// or two (1e-3 leaps from a poor start of a decaying exponential to another valley).
+constexpr double kInitialDamping = 1e-2;
 
 Eigen::VectorXd WeightedResidual(const BoundedLeastSquaresProblem& problem, const ModelPoint& m) {
   return problem.weights.cwiseProduct(problem.data - m.predictions);
@@ -147,11 +148,18 @@ LeastSquaresResult SolveBoundedLeastSquares(const BoundedLeastSquaresProblem& pr
     }
 
     scaling = scaling.cwiseMax(jr.colwise().norm().transpose());
-    // converged when even the undamped (Gauss-Newton) step is negligible
-    if (StepIsSmall(ProjectedStep(jr, r, x, free, 0.0, scaling, problem), x,
-                    options.step_tolerance)) {
+    // converged when even the undamped (Gauss-Newton) step is negligible, in size or in
+    // what it would gain
+    const Eigen::VectorXd full_step = ProjectedStep(jr, r, x, free, 0.0, scaling, problem);
+    if (StepIsSmall(full_step, x, options.step_tolerance)) {
       result.converged = true;
       result.stop_reason = "the Gauss-Newton step fell below the step tolerance";
+      break;
+    }
+    if (cost - (r + jr * full_step).squaredNorm() <= options.improvement_tolerance * cost) {
+      result.converged = true;
+      result.stop_reason = "the Gauss-Newton step would lower the cost by less than the "
+                           "improvement tolerance";
       break;
     }
     const Eigen::VectorXd step = ProjectedStep(jr, r, x, free, lambda, scaling, problem);
@@ -194,9 +202,11 @@ LeastSquaresResult SolveBoundedLeastSquares(const BoundedLeastSquaresProblem& pr
         result.stop_reason = "the cost fell by less than the cost tolerance";
         break;
       }
-    } else if (StepIsSmall(step, x, options.step_tolerance)) {
-      // the damping has shrunk the step to nothing and still the cost does not fall: the
-      // minimum, to the model's numerical precision
+    } else if (StepIsSmall(step, x, options.step_tolerance) ||
+               predicted <= options.improvement_tolerance * cost) {
+      // the damping has shrunk the step to nothing (or to a gain the improvement tolerance
+      // calls none) and still the cost does not fall: the minimum, to the model's numerical
+      // precision
       result.converged = true;
       result.stop_reason = "no step lowers the cost further (the model's numerical precision)";
       break;

@@ -53,6 +53,12 @@ struct LeastSquaresOptions {
                                      // orthogonal to the residual (cosine) [-]
   double cost_tolerance = 1e-14;     // stop when a step lowers the cost by less than this
                                      // fraction, and the model predicted no more [-]
+  // stop when even the Gauss-Newton step would lower the cost by less than this fraction
+  // (or a rejected step was predicted to): with noisy data the cost is about the number of
+  // values N and a step of k standard errors lowers it by about k^2, so this is a step of
+  // about 1e-4 sqrt(N) (2e-3 for 250 values) standard errors, far below what matters, and
+  // above the numerical noise of the runs' cost, which would otherwise keep it going [-]
+  double improvement_tolerance = 1e-8;
 };
 
 struct LeastSquaresResult {
@@ -71,10 +77,11 @@ struct LeastSquaresResult {
 // scaling, so that parameters of very different sizes are treated alike) on the parameters
 // not held at a bound (one the gradient pushes against); a parameter whose step would cross
 // its bound is put on it and the others solved again, and the trial point is accepted when
-// the cost falls (lambda by Nielsen's rule, from 1). It stops when the Gauss-Newton step is
+// the cost falls (lambda by Nielsen's rule, from 1e-2). It stops when the Gauss-Newton step is
 // below the step tolerance, the cost falls by less than the cost tolerance, the residual is
-// orthogonal to every free column, a step shrunk below the step tolerance still does not
-// lower the cost (the model's numerical precision), or the evaluations run out. A parameter
+// orthogonal to every free column, a step shrunk below the step tolerance (or predicted to
+// gain less than the improvement tolerance) still does not lower the cost (the model's
+// numerical precision), or the evaluations run out. A parameter
 // whose column is zero stays at its start. Throws whatever the model throws at the start;
 // std::invalid_argument for inconsistent sizes or a start outside the bounds.
 LeastSquaresResult SolveBoundedLeastSquares(const BoundedLeastSquaresProblem& problem,
