@@ -22,15 +22,19 @@ void DifferenceQuotientDerivative::RightHandSide(double t, const double* y, doub
   }
 }
 
-bool DifferenceQuotientDerivative::SensitivityRate(double t, const double* y, const double* s,
-                                                   double* rate) const {
-  std::fill(rate, rate + scratch_.size(), 0.0);
+void DifferenceQuotientDerivative::RefineRate(double t, const double* y, const double* s,
+                                              double* rate) const {
+  const std::size_t n = scratch_.size();
+  const std::size_t first = n - static_cast<std::size_t>(stencil_.front().system->activation_count());
+  if (first == n) return;
+  for (std::size_t i = first; i < n; ++i) rate[i] = 0.0;
+  std::copy(y, y + n, shifted_.begin());
   for (const Point& point : stencil_) {
-    for (std::size_t i = 0; i < shifted_.size(); ++i) shifted_[i] = y[i] + point.offset * s[i];
+    // an activation's rate depends on its own state and the time only
+    for (std::size_t i = first; i < n; ++i) shifted_[i] = y[i] + point.offset * s[i];
     point.system->RightHandSide(t, shifted_.data(), scratch_.data());
-    for (std::size_t i = 0; i < scratch_.size(); ++i) rate[i] += point.weight * scratch_[i];
+    for (std::size_t i = first; i < n; ++i) rate[i] += point.weight * scratch_[i];
   }
-  return true;
 }
 
 void DifferenceQuotientDerivative::Elements(double t, const double* y,

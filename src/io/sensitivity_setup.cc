@@ -317,6 +317,14 @@ SensitivitySetup PrepareSensitivities(const std::string& path,
         model.model != nullptr
             ? ModelParameterDerivative(*base.system, model.model, model.relative)
             : nullptr;
+    // a network's spring, tendon or damper: elements[i].<key>
+    if (closed_form == nullptr && base.actuator == nullptr && steps->size() >= 3 &&
+        steps->front().key == "elements" && (*steps)[1].key.empty() &&
+        (*steps)[1].index < base.system->elements().size()) {
+      const std::string relative = p.substr(p.find(']') + 2);
+      closed_form = ElementParameterDerivative(
+          *base.system, static_cast<int>((*steps)[1].index), relative);
+    }
     if (closed_form != nullptr) {
       setup.derivatives.push_back(std::move(closed_form));
       setup.sources.push_back(DerivativeSource::kAnalytic);

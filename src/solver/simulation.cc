@@ -230,19 +230,12 @@ int SensitivityRightHandSide(int count, sunrealtype t, N_Vector y, N_Vector, N_V
   const JacobianPattern& pattern = system.jacobian_pattern();
   const double at = cb->InputTime(t);
   const double* state = N_VGetArrayPointer(y);
-  bool jacobian = false;  // evaluated for the first parameter that needs it
+  system.Jacobian(at, state, cb->jacobian_values.data());
   for (int i = 0; i < count; ++i) {
     const double* direction = N_VGetArrayPointer(s[i]);
     double* rate = N_VGetArrayPointer(sdot[i]);
-    const ParameterDerivative& derivative = *(*cb->parameters)[static_cast<std::size_t>(i)].derivative;
-    if (derivative.SensitivityRate(at, state, direction, rate)) {
-      for (int k = 0; k < pattern.size; ++k) {
-        if (!std::isfinite(rate[k])) return 1;
-      }
-      continue;
-    }
-    if (!jacobian) system.Jacobian(at, state, cb->jacobian_values.data());
-    jacobian = true;
+    const ParameterDerivative& derivative =
+        *(*cb->parameters)[static_cast<std::size_t>(i)].derivative;
     derivative.RightHandSide(at, state, rate);
     for (int column = 0; column < pattern.size; ++column) {
       const double along = direction[column];
@@ -251,6 +244,7 @@ int SensitivityRightHandSide(int count, sunrealtype t, N_Vector y, N_Vector, N_V
         rate[pattern.rows[k]] += cb->jacobian_values[k] * along;
       }
     }
+    derivative.RefineRate(at, state, direction, rate);
     for (int k = 0; k < pattern.size; ++k) {
       if (!std::isfinite(rate[k])) return 1;  // recoverable: CVODES retries a smaller step
     }

@@ -23,23 +23,21 @@ class ParameterDerivative {
                         NetworkSystem::ElementPartials* elements) const = 0;
   // Whether the derivatives are closed forms (else difference quotients).
   virtual bool analytic() const = 0;
-  // The sensitivity's whole rate s' = (df/dy) s + df/dp at (t, y) along s, into `rate`, when
-  // this parameter computes it itself (returns true); false: the caller forms it from the
-  // analytic Jacobian and RightHandSide.
-  virtual bool SensitivityRate(double /*t*/, const double* /*y*/, const double* /*s*/,
-                               double* /*rate*/) const {
-    return false;
-  }
+  // Replaces rows of the sensitivity's rate `rate` = (df/dy) s + df/dp at (t, y), s the
+  // sensitivity, by derivatives taken along s, where a parameter needs them (the default
+  // replaces none).
+  virtual void RefineRate(double /*t*/, const double* /*y*/, const double* /*s*/,
+                          double* /*rate*/) const {}
 };
 
 // A difference quotient over the same network built at several values p + offset_i of p:
 // df/dp = sum_i weight_i f_i(t, y), and the same for the tensions (a central quotient is
-// {(p - h, -1/2h, -h), (p + h, 1/2h, h)}). The sensitivity's rate is the quotient along the
-// sensitivity itself, sum_i weight_i f_i(t, y + offset_i s): the derivative of f along the
-// direction (s, 1) in (y, p), which stays on a kink the state follows (an activation tracking
-// its excitation, e = u, where f has no derivative in p or y alone but has one along the path). The systems must have the same states; the tensions are
-// those of the elements all of them have (a single actuator's network gains a damper or a
-// spring when its coefficient leaves 0: the actuator stays element 0).
+// {(p - h, -1/2h, -h), (p + h, 1/2h, h)}). The activation states' rows of the sensitivity's
+// rate are taken along the sensitivity itself, sum_i weight_i f_i(t, y + offset_i s): the
+// derivative of udot along the direction (s, 1) in (y, p), which stays on the kink e = u when
+// the activation tracks its excitation, where udot has no derivative in p or u alone. (The
+// mechanical rows stay at fixed y: along s a step offset_i s may be large next to the
+// velocity curve's epsilon, and the quotient then inaccurate.)
 class DifferenceQuotientDerivative final : public ParameterDerivative {
  public:
   struct Point {
@@ -53,7 +51,7 @@ class DifferenceQuotientDerivative final : public ParameterDerivative {
   void Elements(double t, const double* y,
                 NetworkSystem::ElementPartials* elements) const override;
   bool analytic() const override { return false; }
-  bool SensitivityRate(double t, const double* y, const double* s, double* rate) const override;
+  void RefineRate(double t, const double* y, const double* s, double* rate) const override;
 
  private:
   Stencil stencil_;
@@ -70,5 +68,13 @@ class DifferenceQuotientDerivative final : public ParameterDerivative {
 std::unique_ptr<ParameterDerivative> ModelParameterDerivative(const NetworkSystem& system,
                                                               const TensionModel* model,
                                                               const std::string& path);
+
+// A parameter of element `element` of `system` that is a spring's, a tendon's or a damper's
+// (`path` relative to the element: "stiffness", "rest_length", "slack_length",
+// "exponential.k", "exponential.alpha", "damping"), in closed form; null for any other.
+// `system` must outlive the result.
+std::unique_ptr<ParameterDerivative> ElementParameterDerivative(const NetworkSystem& system,
+                                                                int element,
+                                                                const std::string& path);
 
 }  // namespace musclesim
