@@ -155,9 +155,10 @@ auto InData(const std::string& key, const std::string& csv, const std::string& a
 }  // namespace
 
 int IdentifyCommand(int argc, char** argv) {
+  if (NamesSeriesDataFile(argc, argv)) return IdentifySeriesCommand(argc, argv);
   const Arguments args = Parse(argc, argv, 2, {"-o", "--report"}, {"--help", "-h"});
   if (args.Has("--help") || args.Has("-h")) {
-    std::cout << kHelp;
+    std::cout << kHelp << IdentifySeriesHelp();
     return kExitSuccess;
   }
   if (args.positional.size() != 1) throw UsageError("expected one data file (see --help)");

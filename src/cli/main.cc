@@ -20,7 +20,8 @@ verbs:
   run      integrate a scenario (actuator/load dynamics on CVODE); write the trajectory CSV
   sweep    run many scenarios made from one by overriding values; one summary CSV
   plot     draw a trajectory, the model's curves or a sweep with gnuplot (PNG or SVG)
-  identify fit the model's parameters to measured curves; compare with splines
+  identify fit the model's parameters to measured curves (compare with splines), or a
+           scenario's parameters to measured time series (with --design: plan the experiment)
   curves   tabulate f_L and passive tension over length, g over velocity, or a standard
            force-length curve (--preset NAME), as CSV
   fit      fit the sum of Gaussians that a model file asks for; print the components

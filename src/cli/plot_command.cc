@@ -15,6 +15,7 @@ namespace {
 
 constexpr const char* kHelp = R"(usage: musclesim plot RUN.csv -o run.png           a trajectory of musclesim run
   musclesim plot --curves SCENARIO.yaml -o curves.png     the model's curves
+  musclesim plot RESIDUALS.csv -o fit.png    musclesim identify --residuals: data beside model
   musclesim plot SWEEP.csv --x PATH [--y METRIC] [--color PATH] -o sweep.png
 common options:
   -o PATH          the figure: .png or .svg (required)
@@ -72,8 +73,9 @@ int PlotCommand(int argc, char** argv) {
       script = SweepPlotScript(table, args.Value("--x"), optional("--y"), optional("--color"), options);
     } else {
       if (args.Has("--y") || args.Has("--color")) throw UsageError("--y and --color go with --x");
-      script = IsNetworkTrajectory(table) ? NetworkPlotScript(table, options)
-                                          : TrajectoryPlotScript(table, options);
+      script = IsResidualTable(table)       ? ResidualPlotScript(table, options)
+               : IsNetworkTrajectory(table) ? NetworkPlotScript(table, options)
+                                            : TrajectoryPlotScript(table, options);
     }
   }
   if (args.Has("--script")) WriteOutput(args.Value("--script"), script);

@@ -52,6 +52,15 @@ std::string NetworkPlotScript(const CsvTable& trajectory, const PlotOptions& opt
 // Whether `table` is a network's trajectory (it has a <node>.position column).
 bool IsNetworkTrajectory(const CsvTable& table);
 
+// The residual CSV of `musclesim identify --residuals` (columns series, output, t, measured,
+// model, residual, standardised): a panel per measured series and output, the measured
+// values as points and the model as a line, over a last panel of the standardised residuals
+// against time. Throws InputError as TrajectoryPlotScript does.
+std::string ResidualPlotScript(const CsvTable& residuals, const PlotOptions& options);
+
+// Whether `table` is such a residual CSV (it has the columns measured, model, standardised).
+bool IsResidualTable(const CsvTable& table);
+
 // The model's curves (the paper's Figures 1, 3 and 5): passive, active (u = 1, v = 0) and
 // total tension against length with L_opt shaded and each Gaussian component drawn thin,
 // and g(v) against shortening velocity.

@@ -1,0 +1,51 @@
+// The data file of `musclesim identify` on time series (README "From time series"): a
+// scenario holding the experiment's known inputs, the measured series, and the parameters to
+// estimate, read and validated into plain structs. A data file with a top-level `scenario`
+// key is of this kind; one without is the measured curves' (io/identify_spec.h).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace musclesim {
+
+struct SeriesSpec {
+  std::optional<std::string> csv;  // path, relative to the working directory [-]; none: only
+                                   // --design, which then takes its columns from `noise`
+  std::string csv_at;              // where the data file names the csv ("d.yaml:4:10") [-]
+  // the standard deviation of each column's noise, by column name, in the file's order
+  // [the column's unit], > 0
+  std::vector<std::pair<std::string, double>> noise;
+  std::string at;                  // where the series starts in the data file [-]
+};
+
+struct SeriesParameterSpec {
+  std::string path;              // a dotted path as `--set` takes it (model.f_iso) [-]
+  std::optional<double> start;   // [the parameter's unit]; none: the scenario's value
+  std::optional<double> lower;   // [the parameter's unit], < upper; both or neither
+  std::optional<double> upper;   // [the parameter's unit]
+  std::string at;                // where the entry is in the data file [-]
+};
+
+struct IdentifySeriesSpec {
+  std::string source;     // the data file's path, for messages [-]
+  std::string scenario;   // path, relative to the working directory [-]
+  std::string scenario_at;
+  std::vector<SeriesSpec> series;               // at least one
+  std::vector<SeriesParameterSpec> parameters;  // at least one, paths distinct
+};
+
+// Whether the data file at `path` is of the time-series kind: a map with a top-level
+// `scenario` key. Throws InputError for a file that cannot be read or parsed.
+bool IsIdentifySeriesFile(const std::string& path);
+
+// Reads and validates a data file; paths in it are relative to it. Throws InputError naming
+// file:line:column, key, value and rule: an unknown key, a missing scenario, series or
+// parameters, an empty list, a series with neither csv nor noise, a noise level not > 0 or
+// not finite, a malformed or repeated parameter path, bounds that are not two finite numbers
+// lower < upper, a start outside them.
+IdentifySeriesSpec LoadIdentifySeriesSpec(const std::string& path);
+
+}  // namespace musclesim

@@ -1,0 +1,18 @@
+// A scenario file with some of its values replaced, as text: what `musclesim identify`
+// writes as the estimated scenario, a complete file that runs as the original does.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace musclesim {
+
+// The scenario at `path` (either form) with each "dotted.path=value" of `overrides` applied
+// as `--set` applies it, emitted as YAML headed by `header` (one comment line each, "# "
+// prepended). The original's comments are not kept; its maps and lists keep their block or
+// flow style. Throws InputError for a file that cannot be read or parsed, or an override
+// that does not apply (the messages of `--set`). The result is not validated here: load it.
+std::string RewriteScenario(const std::string& path, const std::vector<std::string>& overrides,
+                            const std::vector<std::string>& header);
+
+}  // namespace musclesim

@@ -1,0 +1,144 @@
+// Reads the data file of `musclesim identify` on time series.
+#include "musclesim/io/identify_series_spec.h"
+
+#include <filesystem>
+#include <set>
+
+#include "io/key_path.h"
+#include "io/yaml_fields.h"
+
+namespace musclesim {
+
+namespace {
+
+// A noise level: a standard deviation in the column's own unit.
+constexpr InputRange kNoiseRange{
+    0.0, 1e12, "the column's unit",
+    "a standard deviation is positive, and 1e12 is beyond any quantity a trajectory holds",
+    true};
+
+// A start value or bound: the scenario's own rules check the value itself; this range keeps
+// the fit's arithmetic (differences and squares of steps) finite.
+constexpr InputRange kParameterRange{
+    -1e12, 1e12, "the parameter's unit",
+    "beyond 1e12 no quantity of a scenario lies, and steps between such values stay finite"};
+
+std::string Relative(const std::string& data_file, const std::string& file) {
+  return (std::filesystem::path(data_file).parent_path() / file).lexically_normal().string();
+}
+
+SeriesSpec ReadSeries(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                      const std::string& data_file) {
+  yaml::RequireMap(src, node, path, {"csv", "noise"});
+  SeriesSpec series;
+  series.at = yaml::Location(src, node);
+  if (!node["csv"] && !node["noise"]) {
+    yaml::Fail(src, node, path, yaml::Describe(node),
+               "give csv (the measured values, to fit) or noise (the columns and their noise "
+               "levels, enough for --design)");
+  }
+  if (const YAML::Node csv = node["csv"]) {
+    const std::string file = yaml::ReadString(src, csv, path + ".csv");
+    if (file.empty()) yaml::Fail(src, csv, path + ".csv", "\"\"", "must name a CSV file");
+    series.csv = Relative(data_file, file);
+    series.csv_at = yaml::Location(src, csv);
+  }
+  if (const YAML::Node noise = node["noise"]) {
+    if (!noise.IsMap() || noise.size() == 0) {
+      yaml::Fail(src, noise, path + ".noise", yaml::Describe(noise),
+                 "must be a map from column names to standard deviations, e.g. {length: 2.0e-5}");
+    }
+    for (const auto& entry : noise) {
+      const std::string column = yaml::ReadString(src, entry.first, path + ".noise");
+      series.noise.emplace_back(
+          column, yaml::ReadNumberIn(src, entry.second, path + ".noise." + column, kNoiseRange));
+    }
+  }
+  return series;
+}
+
+SeriesParameterSpec ReadParameter(const yaml::Source& src, const YAML::Node& node,
+                                  const std::string& path) {
+  yaml::RequireMap(src, node, path, {"path", "start", "bounds"});
+  SeriesParameterSpec parameter;
+  parameter.at = yaml::Location(src, node);
+  const YAML::Node name = yaml::Required(src, node, path, "path");
+  parameter.path = yaml::ReadString(src, name, path + ".path");
+  const auto steps = yaml::SplitKeyPath(parameter.path);
+  if (!steps || steps->empty()) {
+    yaml::Fail(src, name, path + ".path", yaml::Describe(name),
+               "must be a dotted key path as --set takes it, e.g. model.f_iso or load[0].value");
+  }
+  if (const YAML::Node start = node["start"]) {
+    parameter.start = yaml::ReadNumberIn(src, start, path + ".start", kParameterRange);
+  }
+  if (const YAML::Node bounds = node["bounds"]) {
+    const std::vector<double> values = yaml::ReadNumbers(src, bounds, path + ".bounds", 2);
+    for (std::size_t i = 0; i < 2; ++i) {
+      if (!kParameterRange.Contains(values[i])) {
+        yaml::Fail(src, bounds[i], path + ".bounds[" + std::to_string(i) + "]",
+                   yaml::Describe(bounds[i]), kParameterRange.Rule());
+      }
+    }
+    if (!(values[0] < values[1])) {
+      yaml::Fail(src, bounds, path + ".bounds", yaml::Describe(bounds),
+                 "must be [lower, upper] with lower < upper");
+    }
+    parameter.lower = values[0];
+    parameter.upper = values[1];
+    if (parameter.start && (*parameter.start < values[0] || *parameter.start > values[1])) {
+      yaml::Fail(src, node["start"], path + ".start", yaml::Describe(node["start"]),
+                 "must lie within bounds " + yaml::Describe(bounds));
+    }
+  }
+  return parameter;
+}
+
+}  // namespace
+
+bool IsIdentifySeriesFile(const std::string& path) {
+  const YAML::Node root = yaml::LoadFile(path);
+  return root.IsMap() && root["scenario"];
+}
+
+IdentifySeriesSpec LoadIdentifySeriesSpec(const std::string& path) {
+  const YAML::Node root = yaml::LoadFile(path);
+  const yaml::Source src{path};
+  yaml::RequireMap(src, root, "", {"scenario", "series", "parameters"});
+  IdentifySeriesSpec spec;
+  spec.source = path;
+
+  const YAML::Node scenario = yaml::Required(src, root, "", "scenario");
+  const std::string file = yaml::ReadString(src, scenario, "scenario");
+  if (file.empty()) yaml::Fail(src, scenario, "scenario", "\"\"", "must name a scenario file");
+  spec.scenario = Relative(path, file);
+  spec.scenario_at = yaml::Location(src, scenario);
+
+  const YAML::Node series = yaml::Required(src, root, "", "series");
+  if (!series.IsSequence() || series.size() == 0) {
+    yaml::Fail(src, series, "series", yaml::Describe(series),
+               "must be a list of one or more series, each {csv: FILE, noise: {COLUMN: SD}}");
+  }
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    spec.series.push_back(ReadSeries(src, series[i], "series[" + std::to_string(i) + "]", path));
+  }
+
+  const YAML::Node parameters = yaml::Required(src, root, "", "parameters");
+  if (!parameters.IsSequence() || parameters.size() == 0) {
+    yaml::Fail(src, parameters, "parameters", yaml::Describe(parameters),
+               "must be a list of one or more parameters, each {path: P, start: V, "
+               "bounds: [L, U]}");
+  }
+  std::set<std::string> seen;
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    const std::string at = "parameters[" + std::to_string(i) + "]";
+    spec.parameters.push_back(ReadParameter(src, parameters[i], at));
+    if (!seen.insert(spec.parameters.back().path).second) {
+      yaml::Fail(src, parameters[i]["path"], at + ".path", spec.parameters.back().path,
+                 "is listed twice: each parameter once");
+    }
+  }
+  return spec;
+}
+
+}  // namespace musclesim

@@ -1,0 +1,21 @@
+#include "musclesim/io/scenario_rewrite.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include "io/yaml_fields.h"
+#include "io/yaml_override.h"
+
+namespace musclesim {
+
+std::string RewriteScenario(const std::string& path, const std::vector<std::string>& overrides,
+                            const std::vector<std::string>& header) {
+  YAML::Node root = yaml::Parse(path, yaml::ReadText(path));
+  for (const std::string& o : overrides) yaml::ApplyOverride(root, o, path);
+  YAML::Emitter out;
+  out << root;
+  std::string text;
+  for (const std::string& line : header) text += line.empty() ? "#\n" : "# " + line + "\n";
+  return text + out.c_str() + "\n";
+}
+
+}  // namespace musclesim
