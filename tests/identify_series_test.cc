@@ -258,7 +258,7 @@ TEST(FitSeries, AParameterTheOutputsIgnoreIsFlaggedAndKeptAtItsStart) {
   EXPECT_TRUE(std::isinf(fit.parameters[2].standard_error));
   EXPECT_EQ(IdentifiabilityVerdict(fit),
             "release.amp and release.tau are identifiable from this experiment; unused is not: "
-            "its column is 0 of the largest (the outputs do not depend on it).");
+            "its column is zero (the outputs do not depend on it).");
 }
 
 TEST(FitSeries, AFailedRunAtATrialPointShortensTheStep) {

@@ -163,8 +163,11 @@ std::string IdentifiabilityVerdict(const SeriesIdentification& r) {
                           Percent(kPoorRelativeError) + ")");
         break;
       case Identifiability::kNegligibleColumn:
-        reasons.push_back(p.path + " is not: its column is " + Short(p.column_ratio, 1) +
-                          " of the largest (the outputs do not depend on it)");
+        reasons.push_back(p.path + " is not: " +
+                          (p.column_ratio == 0.0
+                               ? std::string("its column is zero")
+                               : "its column is " + Short(p.column_ratio, 1) + " of the largest") +
+                          " (the outputs do not depend on it)");
         break;
       case Identifiability::kAtBound:
         reasons.push_back(p.path + " sits at its bound " + Short(p.estimate, 6) +
