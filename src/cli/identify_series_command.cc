@@ -1,6 +1,10 @@
 // musclesim identify DATA.yaml, for a data file of the time-series kind (a top-level
 // `scenario` key): the fit, or with --design the experiment's check.
+#include <filesystem>
 #include <iostream>
+#include <memory>
+#include <system_error>
+#include <utility>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +16,7 @@
 #include "musclesim/io/identify_series_spec.h"
 #include "musclesim/io/output_file.h"
 #include "musclesim/io/scenario_rewrite.h"
+#include "musclesim/model/number_format.h"
 #include "musclesim/studies/identify_series.h"
 
 namespace musclesim::cli {
@@ -63,6 +68,37 @@ std::optional<std::string> DataFile(int argc, char** argv) {
   return std::nullopt;
 }
 
+// Refuses (exit 2) an output that would overwrite an input of the fit, or another output.
+void CheckOutputs(const Arguments& args, const IdentifySeriesSpec& spec) {
+  std::vector<std::pair<std::string, std::string>> inputs = {{args.positional[0], "the data file"},
+                                                             {spec.scenario, "the scenario"}};
+  for (const SeriesSpec& series : spec.series) {
+    if (series.csv) inputs.emplace_back(*series.csv, "a measured series");
+  }
+  std::vector<std::pair<std::string, std::string>> seen;
+  for (const char* option : {"-o", "--report", "--residuals"}) {
+    if (!args.Has(option) || args.Value(option) == "-") continue;
+    const std::string path = args.Value(option);
+    std::error_code error;
+    const auto same = [&](const std::string& other) {
+      return std::filesystem::equivalent(path, other, error);
+    };
+    for (const auto& [input, what] : inputs) {
+      if (same(input)) {
+        throw InputError(std::string(option) + " " + path + ": is " + what + " (" + input +
+                         "), an input of the fit: write the output elsewhere");
+      }
+    }
+    for (const auto& [other, other_option] : seen) {
+      if (other == path || same(other)) {
+        throw InputError(std::string(option) + " " + path + ": " + other_option +
+                         " names the same file: give each output its own");
+      }
+    }
+    seen.emplace_back(path, option);
+  }
+}
+
 }  // namespace
 
 const char* IdentifySeriesHelp() { return kSeriesHelp; }
@@ -109,13 +145,31 @@ int IdentifySeriesCommand(int argc, char** argv) {
     return kExitSuccess;
   }
 
+  CheckOutputs(args, spec);
   const SeriesIdentification fit = FitSeries(spec, ReadMeasuredSeries(spec, false), run);
   std::vector<std::string> overrides = sets;
   for (const std::string& o : EstimateOverrides(fit)) overrides.push_back(o);
-  WriteOutput(args.Value("-o", "-"), RewriteScenario(spec.scenario, overrides,
-                                                     EstimatedScenarioHeader(fit, data_file)));
-  if (args.Has("--report")) WriteOutput(args.Value("--report"), FormatSeriesReport(fit, data_file));
-  if (args.Has("--residuals")) WriteOutput(args.Value("--residuals"), FormatResidualCsv(fit));
+  // every output staged first and committed together: a failure to write one leaves every
+  // earlier file as it was
+  std::vector<std::unique_ptr<StreamedOutput>> outputs;
+  const auto stage = [&](const std::string& path, const std::string& text) {
+    outputs.push_back(std::make_unique<StreamedOutput>(path));
+    outputs.back()->Write(text);
+  };
+  stage(args.Value("-o", "-"),
+        RewriteScenario(spec.scenario, overrides, EstimatedScenarioHeader(fit, data_file)));
+  if (args.Has("--report")) stage(args.Value("--report"), FormatSeriesReport(fit, data_file));
+  if (args.Has("--residuals")) stage(args.Value("--residuals"), FormatResidualCsv(fit));
+  for (const auto& output : outputs) output->Commit();
+  // far above 1 the model does not describe the data at this optimum: say so, not silently
+  constexpr double kPoorFit = 4.0;  // a mean square 4 noise variances: residuals 2 SD
+  if (fit.noise_given && fit.degrees_of_freedom > 0 &&
+      fit.weighted_rss / fit.degrees_of_freedom > kPoorFit) {
+    std::cerr << "musclesim identify: warning: the weighted residuals' mean square is "
+              << FormatNumber(fit.weighted_rss / fit.degrees_of_freedom)
+              << ", far above the 1 the stated noise predicts: a local minimum (try another "
+                 "start), a parameter stuck on a bound, or noise levels too small\n";
+  }
   if (!fit.converged) {
     std::cerr << "musclesim identify: the fit did not converge: " << fit.stop_reason
               << "; the results written are its last point, not an optimum\n";

@@ -110,6 +110,16 @@ Setup Prepare(const IdentifySeriesSpec& spec, std::vector<MeasuredSeries> series
   try {
     baseline = run({}, setup.paths, {});
   } catch (const InputError& e) {
+    // name the entry at fault: the first parameter the scenario refuses on its own
+    for (std::size_t i = 0; i < spec.parameters.size(); ++i) {
+      try {
+        run({}, {spec.parameters[i].path}, {});
+      } catch (const InputError& alone) {
+        throw InputError(spec.parameters[i].at + ": parameters[" + std::to_string(i) +
+                         "].path = " + spec.parameters[i].path + " in scenario " +
+                         spec.scenario + ": " + alone.what());
+      }
+    }
     throw InputError(spec.source + ": scenario " + spec.scenario + " (" + spec.scenario_at +
                      ") with the parameters of this file: " + e.what());
   }
