@@ -309,8 +309,8 @@ TEST(FitSeries, RefusesDataTheRunCannotMatch) {
             "[0.1, 1]: give a start within them");
   EXPECT_EQ(message(Spec({Parameter("release.nothing", 1.0)}),
                     {Measured({"length"}, Times(0, 0.01, 5), truth, {1e-5}, 1)}),
-            "data.yaml: scenario release.yaml (data.yaml:1:11) with the parameters of this "
-            "file: --sensitivity release.nothing: no such number");
+            "data.yaml:9:5: parameters[0].path = release.nothing in scenario release.yaml: "
+            "--sensitivity release.nothing: no such number");
   // the stand-in's run ends at 0.3 s; the third row of this series (line 4) is later
   EXPECT_EQ(message(spec, {Measured({"length"}, Times(0.1, 0.1, 4), truth, {1e-5}, 1)}),
             "series[0].csv = measured.csv:4: t = 0.30000000000000004 lies outside the "
