@@ -65,15 +65,21 @@ void SensitivityColumns::Evaluate(double t, const double* y, const double* const
     std::fill(partials_.begin(), partials_.end(), NetworkSystem::ElementPartials{});
     setup_.parameters[p].derivative->Elements(t, y, partials_.data());
     double* out = derivatives + p * count;
+    int along_element = -1;  // the element `along` belongs to
+    NetworkSystem::ElementPartials along;
     for (std::size_t c = 0; c < count; ++c) {
       const Column& column = columns_[c];
       if (column.kind < Kind::kLength) {
-        const double along = direction[column.index];
-        out[c] = column.kind == Kind::kShortening ? 0.0 - along : along;
+        const double state = direction[column.index];
+        out[c] = column.kind == Kind::kShortening ? 0.0 - state : state;
         continue;
       }
-      // the chain rule: along the state's sensitivity, plus the parameter's own share
-      const NetworkSystem::ElementPartials along = system.Along(column.index, t, y, direction);
+      // the chain rule: along the state's sensitivity, plus the parameter's own share; an
+      // element's columns are consecutive, so its derivatives along s are computed once
+      if (column.index != along_element) {
+        along = system.Along(column.index, t, y, direction);
+        along_element = column.index;
+      }
       const NetworkSystem::ElementPartials& own = partials_[static_cast<std::size_t>(column.index)];
       switch (column.kind) {
         case Kind::kLength: out[c] = along.length + own.length; break;
