@@ -8,6 +8,7 @@
 
 #include "musclesim/errors.h"
 #include "musclesim/model/number_format.h"
+#include "part_paths.h"
 
 namespace musclesim {
 
@@ -22,17 +23,6 @@ void ValidateEntry(const Part& part, const char* list, std::size_t i) {
     throw ParameterError(std::string(list) + "[" + std::to_string(i) + "]." + e.path(), e.value(),
                          e.rule());
   }
-}
-
-std::string Entry(const char* list, std::size_t i, const char* key) {
-  return std::string(list) + "[" + std::to_string(i) + "]." + key;
-}
-
-template <typename Part>
-std::string KnownNames(const std::vector<Part>& parts) {
-  std::string names;
-  for (const Part& p : parts) names += (names.empty() ? "" : ", ") + p.name;
-  return names;
 }
 
 template <typename Part>
@@ -66,12 +56,19 @@ class Components {
 }  // namespace
 
 NetworkSystem::NetworkSystem(std::vector<Node> nodes, std::vector<Element> elements,
-                             std::vector<NodeLoad> loads)
-    : nodes_(std::move(nodes)), elements_(std::move(elements)), loads_(std::move(loads)) {
+                             std::vector<NodeLoad> loads, std::vector<Controller> controllers)
+    : nodes_(std::move(nodes)),
+      elements_(std::move(elements)),
+      loads_(std::move(loads)),
+      controllers_(std::move(controllers)) {
   for (std::size_t i = 0; i < nodes_.size(); ++i) ValidateEntry(nodes_[i], "nodes", i);
   for (std::size_t i = 0; i < elements_.size(); ++i) ValidateEntry(elements_[i], "elements", i);
+  for (std::size_t i = 0; i < controllers_.size(); ++i) {
+    ValidateEntry(controllers_[i], "controllers", i);
+  }
   RequireUniqueNames(nodes_, "nodes");
   RequireUniqueNames(elements_, "elements");
+  RequireUniqueNames(controllers_, "controllers");
   Resolve();
   BuildPattern();
 }
@@ -86,6 +83,13 @@ int NetworkSystem::FindNode(std::string_view name) const {
 int NetworkSystem::FindElement(std::string_view name) const {
   for (std::size_t i = 0; i < elements_.size(); ++i) {
     if (elements_[i].name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+int NetworkSystem::FindController(std::string_view name) const {
+  for (std::size_t i = 0; i < controllers_.size(); ++i) {
+    if (controllers_[i].name == name) return static_cast<int>(i);
   }
   return -1;
 }
@@ -171,6 +175,7 @@ void NetworkSystem::Resolve() {
     throw ParameterError("nodes", std::to_string(nodes_.size()) + " nodes",
                          "need at least one free node (one with a mass): nothing would move");
   }
+  ResolveControllers(states);
 }
 
 void NetworkSystem::BuildPattern() {
@@ -197,8 +202,9 @@ void NetworkSystem::BuildPattern() {
       if (link.activation >= 0 && r >= 0) pairs.emplace_back(link.activation, r + 1);
     }
   }
-  // udot depends on u alone (and t)
+  // udot depends on u alone (and t), or on a controller's columns too
   for (const Activation& a : activations_) pairs.emplace_back(a.state, a.state);
+  AddControlPattern(pairs);
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
 
@@ -245,6 +251,7 @@ void NetworkSystem::BuildPattern() {
           link.activation >= 0 && row >= 0 ? slot(row + 1, link.activation) : -1;
     }
   }
+  FindControlSlots(pairs);
 }
 
 void NetworkSystem::InitialState(double t_start, double* y) const {
@@ -310,8 +317,11 @@ double NetworkSystem::KinkValue(const Kink& kink, double t, const double* y) con
     case Kink::kLength: return Length(kink.element, t, y) - kink.level;
     case Kink::kLengtheningRate: return LengtheningRate(kink.element, t, y) - kink.level;
     case Kink::kExcitation:
-      return elements_[kink.element].excitation->signal.Evaluate(t) -
-             y[links_[kink.element].activation];
+      return ExcitationOf(kink.element, t, y) - y[links_[kink.element].activation];
+    case Kink::kCommand: {
+      const int loop = links_[kink.element].loop;
+      return UnclampedOutput(kink.element, CommandOf(loop, t, y), t) - kink.level;
+    }
   }
   return 0.0;
 }
@@ -322,7 +332,9 @@ NetworkSystem::Tension NetworkSystem::TensionOf(int e, double t, double l, doubl
   switch (element.kind) {
     case ElementKind::kActuator: {
       const int state = links_[e].activation;
-      const double u = state < 0 ? element.activation.Evaluate(t) : y[state];
+      const double u = state >= 0                ? y[state]
+                       : links_[e].loop >= 0     ? ControlOutput(e, t, y)
+                                                 : element.activation.Evaluate(t);
       const TensionSample s = element.model->Evaluate(l, -ldot, u);
       return {s.total, s.d_length, -s.d_velocity, s.d_activation};  // v = -ldot
     }
@@ -363,8 +375,9 @@ void NetworkSystem::RightHandSide(double t, const double* y, double* ydot) const
   for (const Activation& a : activations_) {
     const ExcitationInput& input = *elements_[a.element].excitation;
     ydot[a.state] =
-        EvaluateActivationRate(input.dynamics, input.signal.Evaluate(t), y[a.state]).value;
+        EvaluateActivationRate(input.dynamics, ExcitationOf(a.element, t, y), y[a.state]).value;
   }
+  ControlRightHandSide(t, y, ydot);
 }
 
 void NetworkSystem::Jacobian(double t, const double* y, double* values) const {
@@ -394,9 +407,11 @@ void NetworkSystem::Jacobian(double t, const double* y, double* values) const {
   }
   for (const Activation& a : activations_) {
     const ExcitationInput& input = *elements_[a.element].excitation;
-    values[a.slot] = EvaluateActivationRate(input.dynamics, input.signal.Evaluate(t), y[a.state])
-                         .by_activation;
+    values[a.slot] +=
+        EvaluateActivationRate(input.dynamics, ExcitationOf(a.element, t, y), y[a.state])
+            .by_activation;
   }
+  ControlJacobian(t, y, values);
   for (int k = 0; k < pattern_.entries(); ++k) {
     if (row_scale_[k] >= 0) values[k] *= free_nodes_[row_scale_[k]].inverse_mass;
   }
@@ -408,9 +423,14 @@ std::vector<double> NetworkSystem::Breakpoints(double t0, double t1) const {
     times.insert(times.end(), more.begin(), more.end());
   };
   for (const Element& e : elements_) {
-    if (e.kind != ElementKind::kActuator) continue;
+    if (e.kind != ElementKind::kActuator || e.controlled) continue;
     add(e.excitation ? e.excitation->signal.Breakpoints(t0, t1)
                      : e.activation.Breakpoints(t0, t1));
+  }
+  for (const Controller& c : controllers_) {
+    add(c.reference.Breakpoints(t0, t1));
+    add(c.feedforward.Breakpoints(t0, t1));
+    if (c.co_contraction) add(c.co_contraction->level.Breakpoints(t0, t1));
   }
   for (const Node& n : nodes_) {
     if (n.kind == NodeKind::kPrescribed) add(n.motion.Breakpoints(t0, t1));
@@ -441,9 +461,11 @@ void NetworkSystem::Observe(double t, const double* y, NetworkSample& sample) co
     if (element.kind == ElementKind::kActuator) {
       if (element.excitation) {
         out.activation = y[link.activation];
-        out.excitation = element.excitation->signal.Evaluate(t);
+        out.excitation = ExcitationOf(static_cast<int>(e), t, y);
       } else {
-        out.activation = out.excitation = element.activation.Evaluate(t);
+        out.activation = out.excitation = link.loop >= 0
+                                              ? ControlOutput(static_cast<int>(e), t, y)
+                                              : element.activation.Evaluate(t);
       }
       out.parts = element.model->Evaluate(out.length, -out.lengthening_rate, out.activation);
       out.tension = out.parts.total;
@@ -453,6 +475,7 @@ void NetworkSystem::Observe(double t, const double* y, NetworkSample& sample) co
       out.tension = TensionOf(static_cast<int>(e), t, out.length, out.lengthening_rate, y).value;
     }
   }
+  ObserveControllers(t, y, sample);
 }
 
 NetworkSystem::ElementPartials NetworkSystem::Along(int e, double t, const double* y,

@@ -89,6 +89,7 @@ void Validate(const Element& e) {
         Validate(*e.excitation);  // paths already the element's keys
         break;
       }
+      if (e.controlled) break;  // its activation is a controller's output
       try {
         ValidateActivation(e.activation);
       } catch (const ParameterError& error) {
@@ -146,6 +147,25 @@ Element Element::Actuator(std::string name, std::string from, std::string to,
   Element e = Make(std::move(name), ElementKind::kActuator, std::move(from), std::move(to));
   e.model = std::move(model);
   e.excitation = std::move(excitation);
+  return Validated(std::move(e));
+}
+
+Element Element::ControlledActuator(std::string name, std::string from, std::string to,
+                                    std::shared_ptr<const TensionModel> model) {
+  Element e = Make(std::move(name), ElementKind::kActuator, std::move(from), std::move(to));
+  e.model = std::move(model);
+  e.controlled = true;
+  return Validated(std::move(e));
+}
+
+Element Element::ControlledActuator(std::string name, std::string from, std::string to,
+                                    std::shared_ptr<const TensionModel> model,
+                                    ActivationDynamics dynamics, double initial_activation) {
+  Element e = Make(std::move(name), ElementKind::kActuator, std::move(from), std::move(to));
+  e.model = std::move(model);
+  e.controlled = true;
+  // the signal is unused: the controller's output is the excitation
+  e.excitation = ExcitationInput{Waveform::Constant(0.0), dynamics, initial_activation};
   return Validated(std::move(e));
 }
 

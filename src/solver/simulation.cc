@@ -190,9 +190,9 @@ int RightHandSide(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
   cb->system->RightHandSide(cb->InputTime(t), N_VGetArrayPointer(y), rate);
   // a non-finite value is a recoverable error: CVODE retries with a smaller step. A
   // position's rate is a velocity of the state itself; the accelerations (odd entries) and
-  // the activation rates after the nodes' states are computed
+  // the activation and integral rates after the nodes' states are computed
   const sunindextype n = N_VGetLength(ydot);
-  const sunindextype node_states = n - cb->system->activation_count();
+  const sunindextype node_states = cb->system->node_state_count();
   for (sunindextype i = 1; i < node_states; i += 2) {
     if (!std::isfinite(rate[i])) return 1;
   }

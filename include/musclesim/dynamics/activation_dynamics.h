@@ -31,6 +31,7 @@ void Validate(const ActivationDynamics& dynamics);
 struct ActivationRate {
   double value = 0.0;          // du/dt [1/s]
   double by_activation = 0.0;  // d(du/dt)/du [1/s]; at e = u, the slope on the e <= u side
+  double by_excitation = 0.0;  // d(du/dt)/de [1/s]; at e = u, the slope on the e <= u side
 };
 
 // The rate of docs/model.md section 8 at excitation e and activation u.
@@ -39,10 +40,11 @@ inline ActivationRate EvaluateActivationRate(const ActivationDynamics& d, double
   if (e > u) {
     // (e - u) / (tau_act shape): its u-derivative is -(shape + 1.5 (e - u)) / (tau_act shape^2)
     const double tau = d.tau_activation * shape;
-    return {(e - u) / tau, -(0.5 + 1.5 * e) / (tau * shape)};
+    return {(e - u) / tau, -(0.5 + 1.5 * e) / (tau * shape), 1.0 / tau};
   }
   // (e - u) shape / tau_deact: its u-derivative is (1.5 (e - u) - shape) / tau_deact
-  return {(e - u) * shape / d.tau_deactivation, (1.5 * (e - u) - shape) / d.tau_deactivation};
+  return {(e - u) * shape / d.tau_deactivation, (1.5 * (e - u) - shape) / d.tau_deactivation,
+          shape / d.tau_deactivation};
 }
 
 // What drives an actuator whose activation is a state: its excitation, its time constants and

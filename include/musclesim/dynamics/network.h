@@ -1,9 +1,10 @@
 // A network on a line (docs/model.md section 7) as a first-order system. The state is
-//   y = (x_1, xdot_1, x_2, xdot_2, ..., u_1, u_2, ...):
+//   y = (x_1, xdot_1, x_2, xdot_2, ..., u_1, u_2, ..., z_1, z_2, ...):
 // (x_i, xdot_i) of every free node, in the order the nodes are given, interleaved, so a chain
 // given in order has a banded Jacobian; then the activation u_k of every actuator with
-// activation dynamics (docs/model.md section 8), in the order the elements are given, at the
-// end, so that a network without them has exactly the node states. (An activation column
+// activation dynamics (docs/model.md section 8), in the order the elements are given; then
+// the integral z_j of every controller with an integral gain (section 11), in the order the
+// controllers are given. A network without either has exactly the node states. (An activation column
 // couples its actuator's nodes to the end of the state: such a network's Jacobian is not
 // banded, and `auto` gives it the dense or the sparse solver.) Immutable once built;
 // evaluation allocates nothing, so one system may be integrated on many threads.
@@ -12,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "musclesim/dynamics/controller.h"
 #include "musclesim/dynamics/jacobian_pattern.h"
 #include "musclesim/dynamics/network_parts.h"
 
@@ -29,12 +31,22 @@ struct ElementSample {
   TensionSample parts;            // actuator: T split into parts, with derivatives
 };
 
+// What one controller computes at one instant.
+struct ControllerSample {
+  double reference = 0.0;  // r(t) [unit measured]
+  double measured = 0.0;   // y [unit measured]
+  double error = 0.0;      // r - y
+  double output = 0.0;     // driving one actuator: the activation or excitation it applies,
+                           // clamped to [0, 1]; a co-contracting pair: the command c
+};
+
 // Everything the state observes at one instant: what a network's CSV records.
 struct NetworkSample {
   std::vector<double> position;  // of every node [m]
   std::vector<double> velocity;  // of every node [m/s]
   std::vector<double> load;      // the sum of the loads on every node [N] (0 off free nodes)
   std::vector<ElementSample> elements;
+  std::vector<ControllerSample> controllers;
 };
 
 class NetworkSystem {
@@ -42,15 +54,19 @@ class NetworkSystem {
   // Validates every part and how they fit (ParameterError with paths such as
   // "nodes[1].mass", "elements[2].to", "loads[0].node"): names unique and non-empty, every
   // reference resolved, loads on free nodes, at least one free node, every free node joined
-  // by elements to a fixed or prescribed node.
+  // by elements to a fixed or prescribed node; every controller's measure and actuators
+  // resolved ("controllers[0].drives"), every controlled actuator driven by one controller,
+  // no algebraic loop (docs/model.md 11).
   NetworkSystem(std::vector<Node> nodes, std::vector<Element> elements,
-                std::vector<NodeLoad> loads = {});
+                std::vector<NodeLoad> loads = {}, std::vector<Controller> controllers = {});
 
-  int state_size() const {
-    return 2 * static_cast<int>(free_nodes_.size()) + static_cast<int>(activations_.size());
-  }
-  // How many actuators have activation dynamics: the last this many states are theirs.
+  int state_size() const { return node_state_count() + activation_count() + integral_count(); }
+  // The free nodes' positions and velocities: the first this many states.
+  int node_state_count() const { return 2 * static_cast<int>(free_nodes_.size()); }
+  // How many actuators have activation dynamics: the states after the nodes' are theirs.
   int activation_count() const { return static_cast<int>(activations_.size()); }
+  // How many controllers have an integral state: the last this many states are theirs.
+  int integral_count() const { return integral_count_; }
   // y at a run's start t_start [s]: every free node's position and velocity, every
   // activation state at its initial_activation (by default its excitation at t_start).
   void InitialState(double t_start, double* y) const;
@@ -73,9 +89,11 @@ class NetworkSystem {
   // integrator restarts there. kLength: the length at `level` (an actuator's passive slack
   // length, a tendon's slack length); kLengtheningRate: dl/dt at `level` (an actuator whose
   // tension-velocity slopes differ at v = 0); kExcitation: an actuator's activation state at
-  // its excitation, e(t) - u (`level` unused), where d(udot)/du jumps (docs/model.md 8).
+  // its excitation, e(t) - u (`level` unused), where d(udot)/du jumps (docs/model.md 8);
+  // kCommand: a controlled actuator's unclamped command at `level` (0 or 1), where its clamp
+  // starts or stops acting (section 11).
   struct Kink {
-    enum Kind { kLength, kLengtheningRate, kExcitation };
+    enum Kind { kLength, kLengtheningRate, kExcitation, kCommand };
     Kind kind;
     int element;
     double level;  // [m] or [m/s]
@@ -92,13 +110,23 @@ class NetworkSystem {
   const std::vector<Node>& nodes() const { return nodes_; }
   const std::vector<Element>& elements() const { return elements_; }
   const std::vector<NodeLoad>& loads() const { return loads_; }
+  const std::vector<Controller>& controllers() const { return controllers_; }
   int FindNode(std::string_view name) const;     // -1 if none
   int FindElement(std::string_view name) const;  // -1 if none
+  int FindController(std::string_view name) const;  // -1 if none
   // The state index of a node's position (its velocity follows), -1 unless free.
   int StateIndex(int node) const { return ends_[node].state; }
   // The state index of an element's activation, -1 unless it is an actuator with activation
   // dynamics.
   int ActivationStateIndex(int element) const { return links_[element].activation; }
+  // The state index of a controller's integral, -1 unless its integral gain is nonzero.
+  int IntegralStateIndex(int controller) const { return loops_[controller].integral; }
+
+  // Holds an actuator's activation (or, with activation dynamics, its excitation) at `value`
+  // from now on: an input set from outside, between the steps of a Stepper (solver/stepper.h).
+  // Throws ParameterError unless element `e` is an actuator that no controller drives and
+  // `value` is in [0, 1].
+  void HoldActivation(int e, double value);
 
   // For forward sensitivities (docs/model.md section 10).
   // Derivatives of an element's length and tension, the tension split as an actuator's is
@@ -108,7 +136,7 @@ class NetworkSystem {
     double total = 0.0, passive = 0.0, active = 0.0;  // of T [N per unit]
   };
   // The derivatives of element e's length and tension along the state direction s at (t, y):
-  // dl/dy s and dT/dy s.
+  // dl/dy s and dT/dy s. (Networks without controllers.)
   ElementPartials Along(int e, double t, const double* y, const double* s) const;
   // Adds to `ydot` what a tension `tension` [N] of element e adds to the right-hand side (its
   // nodes' accelerations), the way a change of that element's tension enters df/dp.
@@ -128,6 +156,31 @@ class NetworkSystem {
     int slot[2][4];            // entry of (row: accel from/to, column: x_from, v_from, x_to, v_to); -1 if none
     int activation;            // actuator with activation dynamics: index of u in y; else -1
     int slot_activation[2];    // entry of (row: accel from/to, column: u); -1 if none
+    int loop = -1;             // controlled actuator: index of its controller in loops_
+    int side = 0;              // controlled actuator: +1 takes level + c, -1 level - c
+  };
+  // A controller as the right-hand side sees it. The command c depends on at most the
+  // states in `columns`: the measured element's ends (x_from, v_from, x_to, v_to; a node
+  // measured as the `to` end), the measured actuator's activation state, the integral.
+  static constexpr int kLoopColumns = 6;
+  struct Loop {
+    int element = -1;                // measured element, or -1
+    int node = -1;                   // measured node, or -1
+    int integral = -1;               // index of z in y, or -1
+    int driven[2] = {-1, -1};        // the actuators driven (the second: co-contraction)
+    int columns[kLoopColumns];       // state indices, -1 where absent
+    int slot_integral[kLoopColumns]; // entries (z row, column)
+    // entries (row, column) of each driven actuator's rows: its ends' acceleration rows, or
+    // with activation dynamics its activation row (row 0)
+    int slot_driven[2][2][kLoopColumns];
+  };
+  // What a controller computes at (t, y), with derivatives along its columns.
+  struct Command {
+    double reference, measured, error;
+    double value;                      // c
+    double by_state[kLoopColumns];     // dc/dy at the columns
+    double error_by_state[kLoopColumns];
+    double high, low;                  // c beyond which no actuator can respond further
   };
   // An activation state (docs/model.md section 8).
   struct Activation {
@@ -152,11 +205,34 @@ class NetworkSystem {
   };
   Tension TensionOf(int e, double t, double l, double ldot, const double* y) const;
   void Resolve();
+  void ResolveControllers(int& states);
   void BuildPattern();
+  void AddControlPattern(std::vector<std::pair<int, int>>& pairs) const;
+  void FindControlSlots(const std::vector<std::pair<int, int>>& pairs);
+
+  // Feedback control (network_control.cc).
+  Command CommandOf(int controller, double t, const double* y) const;
+  // A controlled actuator's command before its clamp: level +- c, or c.
+  double UnclampedOutput(int e, const Command& command, double t) const;
+  // A controlled actuator's activation (no activation dynamics) or excitation, clamped.
+  double ControlOutput(int e, double t, const double* y) const;
+  // udot's excitation e of an actuator with activation dynamics: its signal's, or its
+  // controller's output.
+  double ExcitationOf(int e, double t, const double* y) const;
+  // zdot with its fade near the bounds, and its derivatives along the loop's columns.
+  double IntegralRate(const Command& command, double ki, double* by_state) const;
+  void ControlRightHandSide(double t, const double* y, double* ydot) const;
+  // Adds the feedback terms dT/du du/dy, d(udot)/de de/dy and d(zdot)/dy (before the rows'
+  // 1/m scaling).
+  void ControlJacobian(double t, const double* y, double* values) const;
+  void ObserveControllers(double t, const double* y, NetworkSample& sample) const;
 
   std::vector<Node> nodes_;
   std::vector<Element> elements_;
   std::vector<NodeLoad> loads_;
+  std::vector<Controller> controllers_;
+  std::vector<Loop> loops_;  // one per controller
+  int integral_count_ = 0;
   std::vector<End> ends_;
   std::vector<Link> links_;
   std::vector<FreeNode> free_nodes_;

@@ -46,7 +46,9 @@ ElementKind ParseElementKind(std::string_view text);  // ParameterError("type")
 // (+T on `from`, -T on `to`). Only the fields of its kind are used:
 //   actuator: T(l, v, u) of the model, v = -dl/dt, u = activation(t); or, with activation
 //             dynamics (`excitation` set, docs/model.md section 8), u a state of the ODE
-//             driven by excitation->signal, and `activation` unused
+//             driven by excitation->signal, and `activation` unused; or, `controlled`, u (or
+//             with activation dynamics its excitation) a controller's output (section 11),
+//             and `activation` and excitation->signal unused
 //   spring:   T = stiffness (l - rest_length), negative when compressed
 //   tendon:   T = stiffness (l - slack_length) above slack_length, else 0 (linear), or
 //             T = k (exp(alpha (l - slack_length)) - 1) above it (exponential: k > 0)
@@ -58,6 +60,7 @@ struct Element {
   std::shared_ptr<const TensionModel> model;  // actuator: its tension model
   Waveform activation;                        // actuator: u(t) in [0, 1]
   std::optional<ExcitationInput> excitation;  // actuator: set for activation dynamics
+  bool controlled = false;                    // actuator: driven by a controller
   double stiffness = 0.0;     // spring, linear tendon [N/m], >= 0
   double rest_length = 0.0;   // spring [m]
   double slack_length = 0.0;  // tendon [m]
@@ -70,6 +73,14 @@ struct Element {
   // An actuator with activation dynamics: its activation is a state driven by `excitation`.
   static Element Actuator(std::string name, std::string from, std::string to,
                           std::shared_ptr<const TensionModel> model, ExcitationInput excitation);
+  // An actuator driven by a controller (docs/model.md 11): its activation, or with
+  // `dynamics` its excitation (the activation then starting at `initial_activation`), is the
+  // output of the controller that names it.
+  static Element ControlledActuator(std::string name, std::string from, std::string to,
+                                    std::shared_ptr<const TensionModel> model);
+  static Element ControlledActuator(std::string name, std::string from, std::string to,
+                                    std::shared_ptr<const TensionModel> model,
+                                    ActivationDynamics dynamics, double initial_activation = 0.0);
   static Element Spring(std::string name, std::string from, std::string to, double stiffness,
                         double rest_length);
   static Element LinearTendon(std::string name, std::string from, std::string to,

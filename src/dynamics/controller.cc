@@ -1,0 +1,103 @@
+#include "musclesim/dynamics/controller.h"
+
+#include <cmath>
+#include <utility>
+
+#include "musclesim/errors.h"
+#include "musclesim/model/enum_names.h"
+
+namespace musclesim {
+
+constexpr EnumName<MeasuredQuantity> kMeasuredQuantityNames[] = {
+    {MeasuredQuantity::kLength, "length"},
+    {MeasuredQuantity::kTension, "tension"},
+    {MeasuredQuantity::kPosition, "position"},
+};
+
+std::string_view ToString(MeasuredQuantity quantity) {
+  return ToString(kMeasuredQuantityNames, quantity);
+}
+
+MeasuredQuantity ParseMeasuredQuantity(std::string_view text) {
+  return Parse(kMeasuredQuantityNames, "quantity", text);
+}
+
+namespace {
+
+// Validate(waveform) with its path put under `key`.
+template <typename Check>
+void ValidateUnder(const std::string& key, const Waveform& waveform, Check check) {
+  try {
+    check(waveform);
+  } catch (const ParameterError& e) {
+    throw ParameterError(key + "." + e.path(), e.value(), e.rule());
+  }
+}
+
+void ValidateMeasurement(const Measurement& m) {
+  if (m.element.empty() == m.node.empty()) {
+    throw ParameterError("measure", m.element.empty() ? "neither" : "both",
+                         "must name exactly one of `element` and `node`");
+  }
+  if (!m.node.empty() && m.quantity != MeasuredQuantity::kPosition) {
+    throw ParameterError("measure.quantity", std::string(ToString(m.quantity)),
+                         "a node's measured quantity is its position");
+  }
+  if (!m.element.empty() && m.quantity == MeasuredQuantity::kPosition) {
+    throw ParameterError("measure.quantity", "position",
+                         "an element's measured quantity is its length or its tension");
+  }
+}
+
+}  // namespace
+
+void Validate(const Controller& c) {
+  ValidateMeasurement(c.measure);
+  ValidateUnder("reference", c.reference, [](const Waveform& w) { Validate(w); });
+  ValidateUnder("feedforward", c.feedforward, [](const Waveform& w) { Validate(w); });
+  Require(std::isfinite(c.gains.kp), "gains.kp", c.gains.kp, "must be finite");
+  Require(std::isfinite(c.gains.ki), "gains.ki", c.gains.ki, "must be finite");
+  Require(std::isfinite(c.gains.kd), "gains.kd", c.gains.kd, "must be finite");
+  if (c.measure.quantity == MeasuredQuantity::kTension) {
+    // d(err)/dt would need dT/dt, which depends on the accelerations being computed
+    Require(c.gains.kd == 0.0, "gains.kd", c.gains.kd,
+            "must be 0 on a tension: its rate would be an algebraic loop (docs/model.md 11)");
+  }
+  if (c.drives.empty() == !c.co_contraction) {
+    throw ParameterError("drives", c.drives.empty() ? "none" : c.drives,
+                         "a controller needs exactly one of `drives` and `co_contraction`");
+  }
+  if (c.co_contraction) {
+    const CoContraction& pair = *c.co_contraction;
+    if (pair.first.empty() || pair.second.empty() || pair.first == pair.second) {
+      throw ParameterError("co_contraction.actuators", pair.first + ", " + pair.second,
+                           "must name two different actuators");
+    }
+    ValidateUnder("co_contraction.level", pair.level,
+                  [](const Waveform& w) { ValidateActivation(w); });
+  }
+}
+
+Controller Controller::Pid(std::string name, Measurement measure, Waveform reference,
+                           PidGains gains, std::string drives) {
+  Controller c;
+  c.name = std::move(name);
+  c.measure = std::move(measure);
+  c.reference = std::move(reference);
+  c.gains = gains;
+  c.drives = std::move(drives);
+  return Validated(std::move(c));
+}
+
+Controller Controller::CoContracting(std::string name, Measurement measure, Waveform reference,
+                                     PidGains gains, CoContraction pair) {
+  Controller c;
+  c.name = std::move(name);
+  c.measure = std::move(measure);
+  c.reference = std::move(reference);
+  c.gains = gains;
+  c.co_contraction = std::move(pair);
+  return Validated(std::move(c));
+}
+
+}  // namespace musclesim

@@ -1,0 +1,359 @@
+// Feedback control of a network (docs/model.md section 11): the controllers' commands, their
+// integral states, their terms in the Jacobian and their place in the pattern.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "musclesim/dynamics/network.h"
+#include "musclesim/errors.h"
+#include "part_paths.h"
+
+namespace musclesim {
+
+namespace {
+
+// Column positions in Loop::columns.
+constexpr int kFromPosition = 0, kFromVelocity = 1, kToPosition = 2, kToVelocity = 3;
+constexpr int kMeasuredActivation = 4, kIntegral = 5;
+
+}  // namespace
+
+void NetworkSystem::ResolveControllers(int& states) {
+  std::vector<int> driver(elements_.size(), -1);
+  for (std::size_t k = 0; k < controllers_.size(); ++k) {
+    const Controller& c = controllers_[k];
+    Loop loop;
+    std::fill(std::begin(loop.columns), std::end(loop.columns), -1);
+    if (!c.measure.element.empty()) {
+      loop.element = FindElement(c.measure.element);
+      if (loop.element < 0) {
+        throw ParameterError(Entry("controllers", k, "measure.element"), c.measure.element,
+                             "names no element; the elements are: " + KnownNames(elements_));
+      }
+    } else {
+      loop.node = FindNode(c.measure.node);
+      if (loop.node < 0) {
+        throw ParameterError(Entry("controllers", k, "measure.node"), c.measure.node,
+                             "names no node; the nodes are: " + KnownNames(nodes_));
+      }
+      if (nodes_[loop.node].kind != NodeKind::kFree) {
+        throw ParameterError(Entry("controllers", k, "measure.node"), c.measure.node,
+                             "must name a free node (one with a mass): it is " +
+                                 std::string(ToString(nodes_[loop.node].kind)));
+      }
+    }
+    const bool pair = c.co_contraction.has_value();
+    const std::string names[2] = {pair ? c.co_contraction->first : c.drives,
+                                  pair ? c.co_contraction->second : std::string()};
+    const char* key = pair ? "co_contraction.actuators" : "drives";
+    for (int i = 0; i < (pair ? 2 : 1); ++i) {
+      const int e = FindElement(names[i]);
+      if (e < 0) {
+        throw ParameterError(Entry("controllers", k, key), names[i],
+                             "names no element; the elements are: " + KnownNames(elements_));
+      }
+      if (elements_[e].kind != ElementKind::kActuator) {
+        throw ParameterError(Entry("controllers", k, key), names[i],
+                             "must name an actuator; it is a " +
+                                 std::string(ToString(elements_[e].kind)));
+      }
+      if (!elements_[e].controlled) {
+        throw ParameterError(Entry("controllers", k, key), names[i],
+                             "drives an actuator that has an activation of its own: a "
+                             "controlled actuator has none (no `activation:` or `excitation:`)");
+      }
+      if (driver[e] >= 0) {
+        throw ParameterError(Entry("controllers", k, key), names[i],
+                             "is driven by controllers[" + std::to_string(driver[e]) +
+                                 "] already: an actuator takes one controller");
+      }
+      driver[e] = static_cast<int>(k);
+      links_[e].loop = static_cast<int>(k);
+      links_[e].side = i == 0 ? 1 : -1;
+      loop.driven[i] = e;
+      kinks_.push_back({Kink::kCommand, e, 0.0});
+      kinks_.push_back({Kink::kCommand, e, 1.0});
+    }
+    if (c.gains.ki != 0.0) {
+      loop.integral = states++;
+      ++integral_count_;
+    }
+    loops_.push_back(loop);
+  }
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    if (elements_[e].controlled && driver[e] < 0) {
+      throw ParameterError(Entry("elements", e, "name"), elements_[e].name,
+                           "is a controlled actuator that no controller drives: give it a "
+                           "controller or an activation of its own");
+    }
+  }
+  for (std::size_t k = 0; k < loops_.size(); ++k) {
+    Loop& loop = loops_[k];
+    const int m = loop.element;
+    if (m >= 0 && controllers_[k].measure.quantity == MeasuredQuantity::kTension &&
+        elements_[m].controlled && !elements_[m].excitation) {
+      // its tension depends on a controller's output, computed from the state now: an
+      // algebraic loop when it is this controller's, a chain of them otherwise
+      throw ParameterError(
+          Entry("controllers", k, "measure.element"), elements_[m].name,
+          (driver[m] == static_cast<int>(k) ? std::string("is the actuator this controller drives")
+                                            : "is driven by controllers[" +
+                                                  std::to_string(driver[m]) + "]") +
+              ", without activation dynamics: its tension would be an algebraic function of "
+              "a controller's output; give it activation_dynamics (docs/model.md 11)");
+    }
+    const auto place = [&](int node, int column) {
+      const int state = ends_[node].state;
+      if (state < 0) return;
+      loop.columns[column] = state;
+      loop.columns[column + 1] = state + 1;
+    };
+    if (m >= 0) {
+      place(links_[m].from, kFromPosition);
+      place(links_[m].to, kToPosition);
+      if (controllers_[k].measure.quantity == MeasuredQuantity::kTension) {
+        loop.columns[kMeasuredActivation] = links_[m].activation;
+      }
+    } else {
+      place(loop.node, kToPosition);
+    }
+    loop.columns[kIntegral] = loop.integral;
+  }
+}
+
+void NetworkSystem::AddControlPattern(std::vector<std::pair<int, int>>& pairs) const {
+  for (const Loop& loop : loops_) {
+    const auto add_row = [&](int row) {
+      if (row < 0) return;
+      for (int column : loop.columns) {
+        if (column >= 0) pairs.emplace_back(column, row);
+      }
+    };
+    for (int e : loop.driven) {
+      if (e < 0) continue;
+      const Link& link = links_[e];
+      if (link.activation >= 0) {
+        add_row(link.activation);
+        continue;
+      }
+      for (int end : {link.from, link.to}) {
+        if (ends_[end].state >= 0) add_row(ends_[end].state + 1);
+      }
+    }
+    add_row(loop.integral);
+  }
+}
+
+void NetworkSystem::FindControlSlots(const std::vector<std::pair<int, int>>& pairs) {
+  const auto slot = [&](int row, int column) {
+    if (row < 0 || column < 0) return -1;
+    const auto it = std::lower_bound(pairs.begin(), pairs.end(), std::make_pair(column, row));
+    return static_cast<int>(it - pairs.begin());
+  };
+  for (Loop& loop : loops_) {
+    for (int i = 0; i < 2; ++i) {
+      const int e = loop.driven[i];
+      int rows[2] = {-1, -1};
+      if (e >= 0) {
+        const Link& link = links_[e];
+        if (link.activation >= 0) {
+          rows[0] = link.activation;
+        } else {
+          const int from = ends_[link.from].state, to = ends_[link.to].state;
+          rows[0] = from >= 0 ? from + 1 : -1;
+          rows[1] = to >= 0 ? to + 1 : -1;
+        }
+      }
+      for (int r = 0; r < 2; ++r) {
+        for (int c = 0; c < kLoopColumns; ++c) {
+          loop.slot_driven[i][r][c] = slot(rows[r], loop.columns[c]);
+        }
+      }
+    }
+    for (int c = 0; c < kLoopColumns; ++c) {
+      loop.slot_integral[c] = slot(loop.integral, loop.columns[c]);
+    }
+  }
+}
+
+NetworkSystem::Command NetworkSystem::CommandOf(int k, double t, const double* y) const {
+  const Controller& c = controllers_[k];
+  const Loop& loop = loops_[k];
+  Command out{};
+  // dy/dstate and d(ydot)/dstate along the columns, y the measured quantity
+  double measured_by[kLoopColumns] = {};
+  double rate_by[kLoopColumns] = {};
+  double rate = 0.0;  // ydot
+  if (loop.node >= 0) {
+    const int s = ends_[loop.node].state;
+    out.measured = y[s];
+    rate = y[s + 1];
+    measured_by[kToPosition] = 1.0;
+    rate_by[kToVelocity] = 1.0;
+  } else {
+    const Link& link = links_[loop.element];
+    const End& a = ends_[link.from];
+    const End& b = ends_[link.to];
+    const double l = PositionOf(b, t, y) - PositionOf(a, t, y);
+    const double ldot = VelocityOf(b, t, y) - VelocityOf(a, t, y);
+    if (c.measure.quantity == MeasuredQuantity::kLength) {
+      out.measured = l;
+      rate = ldot;
+      measured_by[kFromPosition] = -1.0;
+      measured_by[kToPosition] = 1.0;
+      rate_by[kFromVelocity] = -1.0;
+      rate_by[kToVelocity] = 1.0;
+    } else {
+      const Tension tension = TensionOf(loop.element, t, l, ldot, y);
+      out.measured = tension.value;
+      measured_by[kFromPosition] = -tension.by_length;
+      measured_by[kToPosition] = tension.by_length;
+      measured_by[kFromVelocity] = -tension.by_rate;
+      measured_by[kToVelocity] = tension.by_rate;
+      measured_by[kMeasuredActivation] = tension.by_activation;
+    }
+  }
+  out.reference = c.reference.Evaluate(t);
+  out.error = out.reference - out.measured;
+  const PidGains& g = c.gains;
+  out.value = c.feedforward.Evaluate(t) + g.kp * out.error;
+  if (g.kd != 0.0) out.value += g.kd * (c.reference.Slope(t) - rate);  // d(err)/dt
+  if (loop.integral >= 0) out.value += g.ki * y[loop.integral];
+  for (int i = 0; i < kLoopColumns; ++i) {
+    out.error_by_state[i] = -measured_by[i];
+    out.by_state[i] = -g.kp * measured_by[i] - g.kd * rate_by[i];
+  }
+  out.by_state[kIntegral] = g.ki;
+  if (c.co_contraction) {
+    // the pair has no authority left once both actuators sit at their bounds
+    const double level = c.co_contraction->level.Evaluate(t);
+    out.high = std::max(level, 1.0 - level);
+    out.low = -out.high;
+  } else {
+    out.high = 1.0;
+    out.low = 0.0;
+  }
+  return out;
+}
+
+double NetworkSystem::UnclampedOutput(int e, const Command& command, double t) const {
+  const Controller& c = controllers_[links_[e].loop];
+  if (!c.co_contraction) return command.value;
+  return c.co_contraction->level.Evaluate(t) + links_[e].side * command.value;
+}
+
+double NetworkSystem::ControlOutput(int e, double t, const double* y) const {
+  return std::clamp(UnclampedOutput(e, CommandOf(links_[e].loop, t, y), t), 0.0, 1.0);
+}
+
+double NetworkSystem::ExcitationOf(int e, double t, const double* y) const {
+  return links_[e].loop >= 0 ? ControlOutput(e, t, y)
+                             : elements_[e].excitation->signal.Evaluate(t);
+}
+
+double NetworkSystem::IntegralRate(const Command& command, double ki, double* by_state) const {
+  // the integral moves c toward `high` when ki err > 0, toward `low` when ki err < 0; within
+  // kIntegralFadeBand of that bound it fades out linearly, beyond it stops (no wind-up)
+  const double push = ki * command.error;
+  double weight = 1.0, weight_by_value = 0.0;
+  const double room = push > 0.0   ? command.high - command.value
+                      : push < 0.0 ? command.value - command.low
+                                   : std::numeric_limits<double>::infinity();
+  if (room <= 0.0) {
+    weight = 0.0;
+  } else if (room < kIntegralFadeBand) {
+    weight = room / kIntegralFadeBand;
+    weight_by_value = (push > 0.0 ? -1.0 : 1.0) / kIntegralFadeBand;
+  }
+  for (int i = 0; i < kLoopColumns; ++i) {
+    by_state[i] = weight * command.error_by_state[i] +
+                  command.error * weight_by_value * command.by_state[i];
+  }
+  return weight * command.error;
+}
+
+void NetworkSystem::ControlRightHandSide(double t, const double* y, double* ydot) const {
+  double unused[kLoopColumns];
+  for (std::size_t k = 0; k < loops_.size(); ++k) {
+    const int z = loops_[k].integral;
+    if (z < 0) continue;
+    ydot[z] = IntegralRate(CommandOf(static_cast<int>(k), t, y), controllers_[k].gains.ki, unused);
+  }
+}
+
+void NetworkSystem::ControlJacobian(double t, const double* y, double* values) const {
+  const auto add = [&](const int* slots, double factor, const double* by_state) {
+    for (int c = 0; c < kLoopColumns; ++c) {
+      if (slots[c] >= 0) values[slots[c]] += factor * by_state[c];
+    }
+  };
+  for (std::size_t k = 0; k < loops_.size(); ++k) {
+    const Loop& loop = loops_[k];
+    const Command command = CommandOf(static_cast<int>(k), t, y);
+    for (int i = 0; i < 2; ++i) {
+      const int e = loop.driven[i];
+      if (e < 0) continue;
+      const double unclamped = UnclampedOutput(e, command, t);
+      if (unclamped <= 0.0 || unclamped >= 1.0) continue;  // clamped: no feedback
+      const Link& link = links_[e];
+      if (link.activation >= 0) {
+        // the output is the excitation of udot
+        const ExcitationInput& input = *elements_[e].excitation;
+        const double rate_by_excitation =
+            EvaluateActivationRate(input.dynamics, unclamped, y[link.activation]).by_excitation;
+        add(loop.slot_driven[i][0], rate_by_excitation * link.side, command.by_state);
+        continue;
+      }
+      // the output is the activation: +T on `from`, -T on `to`
+      const End& a = ends_[link.from];
+      const End& b = ends_[link.to];
+      const double l = PositionOf(b, t, y) - PositionOf(a, t, y);
+      const double ldot = VelocityOf(b, t, y) - VelocityOf(a, t, y);
+      const double by_output = TensionOf(e, t, l, ldot, y).by_activation * link.side;
+      add(loop.slot_driven[i][0], by_output, command.by_state);
+      add(loop.slot_driven[i][1], -by_output, command.by_state);
+    }
+    if (loop.integral >= 0) {
+      double by_state[kLoopColumns];
+      IntegralRate(command, controllers_[k].gains.ki, by_state);
+      add(loop.slot_integral, 1.0, by_state);
+    }
+  }
+}
+
+void NetworkSystem::ObserveControllers(double t, const double* y, NetworkSample& sample) const {
+  sample.controllers.resize(controllers_.size());
+  for (std::size_t k = 0; k < controllers_.size(); ++k) {
+    const Command command = CommandOf(static_cast<int>(k), t, y);
+    ControllerSample& out = sample.controllers[k];
+    out.reference = command.reference;
+    out.measured = command.measured;
+    out.error = command.error;
+    out.output = controllers_[k].co_contraction ? command.value
+                                                : std::clamp(command.value, 0.0, 1.0);
+  }
+}
+
+void NetworkSystem::HoldActivation(int e, double value) {
+  const std::string path = "elements[" + std::to_string(e) + "]";
+  if (e < 0 || e >= static_cast<int>(elements_.size())) {
+    throw ParameterError("element", std::to_string(e), "names no element of this network");
+  }
+  Element& element = elements_[e];
+  if (element.kind != ElementKind::kActuator || element.controlled) {
+    throw ParameterError(path, element.name,
+                         "must be an actuator no controller drives: only such an actuator's "
+                         "activation can be set from outside");
+  }
+  Require(std::isfinite(value) && value >= 0.0 && value <= 1.0, path + ".activation", value,
+          "must be finite and in [0, 1]");
+  if (element.excitation) {
+    element.excitation->signal = Waveform::Constant(value);
+  } else {
+    element.activation = Waveform::Constant(value);
+  }
+}
+
+}  // namespace musclesim
