@@ -149,8 +149,8 @@ TEST(ForceRegulation, StepResponseIsThePredictionOfTheLinearisedLoop) {
     largest = std::max(largest, std::abs(simulated));
     // second-order terms: the step is 0.6 % of the operating point, and the activation
     // rate's slopes differ by 0.4 % either side of e = u at u near 1/3 (the two differ by
-    // 0.05 % of the step at most): 0.2 % of the step
-    EXPECT_NEAR(simulated, predicted(s), 2e-3 * kStep) << "s = " << s;
+    // 0.25 % of the step at most): 0.5 % of the step
+    EXPECT_NEAR(simulated, predicted(s), 5e-3 * kStep) << "s = " << s;
   }
   EXPECT_GT(largest, 0.9 * kStep);  // the response really is there
 }
