@@ -282,6 +282,13 @@ struct Simulation::Workspace {
   int sensitivities_initialized = 0;  // the count CVodeSensInit1 was given; 0: none
   bool sensitivities_on = false;
   std::vector<double> sensitivity_scales;  // pbar: CVODES keeps the pointer
+  // CVODE's counters since the last (re)initialisation already added to a run's stats: a
+  // resumed run counts only what comes after them
+  RunStats counted;
+  // set when the last run completed without sensitivities: the system it integrated and its
+  // end, where a resumed run may go on (Simulation::Integrate's `resume`)
+  const NetworkSystem* resumable_system = nullptr;
+  double resumable_time = 0.0;
 
   Workspace() {
     if (SUNContext_Create(nullptr, &context) != 0) {
@@ -349,6 +356,7 @@ struct Simulation::Workspace {
 
   // Creates the CVODE memory for `m`, or re-initialises the existing one at (t, state).
   void Start(IntegrationMethod m, double t) {
+    counted = RunStats{};
     if (cvode != nullptr && method == m) {
       Check(CVodeReInit(cvode, t, state), "CVodeReInit");
       return;
@@ -369,34 +377,32 @@ struct Simulation::Workspace {
     if (flag < 0) throw std::runtime_error(std::string(call) + " failed: " + FlagName(flag));
   }
 
-  // Adds CVODE's counters since the last (re)initialisation to `stats`.
-  void Accumulate(RunStats& stats) const {
-    long value = 0;
-    CVodeGetNumSteps(cvode, &value);
-    stats.steps += value;
-    CVodeGetNumRhsEvals(cvode, &value);
-    stats.rhs_evals += value;
-    CVodeGetNumLinRhsEvals(cvode, &value);
-    stats.rhs_evals += value;
-    CVodeGetNumJacEvals(cvode, &value);
-    stats.jac_evals += value;
-    CVodeGetNumLinSolvSetups(cvode, &value);
-    stats.linear_setups += value;
-    CVodeGetNumNonlinSolvIters(cvode, &value);
-    stats.newton_iters += value;
-    CVodeGetNumNonlinSolvConvFails(cvode, &value);
-    stats.newton_conv_fails += value;
-    CVodeGetNumErrTestFails(cvode, &value);
-    stats.error_test_fails += value;
+  // Adds CVODE's counters since the last (re)initialisation, less those already counted, to
+  // `stats`.
+  void Accumulate(RunStats& stats) {
+    const auto add = [&](auto get, long RunStats::*counter) {
+      long value = 0;
+      get(cvode, &value);
+      stats.*counter += value - counted.*counter;
+      counted.*counter = value;
+    };
+    add(CVodeGetNumSteps, &RunStats::steps);
+    // a difference-quotient Jacobian's right-hand sides count with the steps' own
+    long rhs = 0, linear_rhs = 0;
+    CVodeGetNumRhsEvals(cvode, &rhs);
+    CVodeGetNumLinRhsEvals(cvode, &linear_rhs);
+    stats.rhs_evals += rhs + linear_rhs - counted.rhs_evals;
+    counted.rhs_evals = rhs + linear_rhs;
+    add(CVodeGetNumJacEvals, &RunStats::jac_evals);
+    add(CVodeGetNumLinSolvSetups, &RunStats::linear_setups);
+    add(CVodeGetNumNonlinSolvIters, &RunStats::newton_iters);
+    add(CVodeGetNumNonlinSolvConvFails, &RunStats::newton_conv_fails);
+    add(CVodeGetNumErrTestFails, &RunStats::error_test_fails);
     if (!sensitivities_on) return;
-    CVodeGetSensNumRhsEvals(cvode, &value);
-    stats.sensitivity_rhs_evals += value;
-    CVodeGetSensNumNonlinSolvIters(cvode, &value);
-    stats.sensitivity_newton_iters += value;
-    CVodeGetSensNumNonlinSolvConvFails(cvode, &value);
-    stats.sensitivity_newton_conv_fails += value;
-    CVodeGetSensNumErrTestFails(cvode, &value);
-    stats.sensitivity_error_test_fails += value;
+    add(CVodeGetSensNumRhsEvals, &RunStats::sensitivity_rhs_evals);
+    add(CVodeGetSensNumNonlinSolvIters, &RunStats::sensitivity_newton_iters);
+    add(CVodeGetSensNumNonlinSolvConvFails, &RunStats::sensitivity_newton_conv_fails);
+    add(CVodeGetSensNumErrTestFails, &RunStats::sensitivity_error_test_fails);
   }
 
   // After Start: switches the sensitivities on at the values in `sensitivities` (the first
@@ -553,7 +559,7 @@ RunStats Simulation::Run(const NetworkSystem& system, const SolverOptions& optio
 RunStats Simulation::Integrate(const NetworkSystem& system, const SolverOptions& options,
                                const NetworkRunRequest& request, NetworkSink* sink,
                                const std::vector<SensitivityParameter>* parameters,
-                               SensitivitySink* sensitivity_sink) {
+                               SensitivitySink* sensitivity_sink, bool resume) {
   Validate(options);
   Validate(request);
   const auto wall_start = std::chrono::steady_clock::now();
@@ -597,6 +603,11 @@ RunStats Simulation::Integrate(const NetworkSystem& system, const SolverOptions&
     }
   }
   ws.Fit(system, kind);
+  // CVODE's history is the last run's only while its memory lives on (Fit keeps it for the
+  // same system) and that run ended where this one starts
+  const bool resuming = resume && sensitivity_count == 0 && ws.cvode != nullptr &&
+                        ws.resumable_system == &system && ws.resumable_time == request.t_start;
+  ws.resumable_system = nullptr;  // until this run completes
   cb.system = &system;
   cb.last_error.clear();
   cb.parameters = parameters;
@@ -635,7 +646,7 @@ RunStats Simulation::Integrate(const NetworkSystem& system, const SolverOptions&
   RunStats stats;
   stats.linear_solver = kind;
   stats.sensitivities = sensitivity_count;
-  bool fresh = true;  // no step taken since the last (re)initialisation
+  bool fresh = !resuming;  // no step taken since the last (re)initialisation
   // the sensitivities at `at`: those the run (re)started with until a step is taken, then
   // the last step's interpolant's
   const auto sensitivities_at = [&](double at) {
@@ -666,6 +677,10 @@ RunStats Simulation::Integrate(const NetworkSystem& system, const SolverOptions&
   };
   const auto finish = [&](RunStatus status, double t, std::string message) {
     ws.Accumulate(stats);
+    if (status == RunStatus::kCompleted && sensitivity_count == 0) {
+      ws.resumable_system = &system;
+      ws.resumable_time = t;
+    }
     stats.status = status;
     stats.final_time = t;
     stats.message = std::move(message);
@@ -782,7 +797,9 @@ RunStats Simulation::Integrate(const NetworkSystem& system, const SolverOptions&
 
   double t = request.t_start;
   long calls = 0;     // CVode calls, one internal step each: the max_steps guard
-  configure(t);
+  // resumed, CVODE goes on from its last step, with its order and step size, to the new stop
+  // time (set below); its tolerances and settings are the last run's, the same options
+  if (!resuming) configure(t);
   if (row_at_start) record(t, y);
   for (double stop : stops) {
     // the segment [t, stop]: its inputs read a few ulps inside it (Callbacks::InputTime)

@@ -206,11 +206,18 @@ class Simulation {
                const std::vector<SensitivityParameter>& parameters, SensitivitySink& sink);
 
  private:
+  friend class Stepper;  // drives Integrate piece by piece, resuming (solver/stepper.h)
+
   // The network run behind both: rows to `sink`, or with `parameters` to `sensitivity_sink`.
+  // `resume`: go on from where the last run completed, CVODE's history kept (no
+  // re-initialisation), when that run integrated this same `system` object, unchanged, with
+  // the same `options`, up to request.t_start, and request.initial_state is the state it
+  // ended with (the caller's promise); without sensitivities. Otherwise, as without it, the
+  // integrator starts afresh. The counters returned are those of this run alone either way.
   RunStats Integrate(const NetworkSystem& system, const SolverOptions& options,
                      const NetworkRunRequest& request, NetworkSink* sink,
                      const std::vector<SensitivityParameter>* parameters,
-                     SensitivitySink* sensitivity_sink);
+                     SensitivitySink* sensitivity_sink, bool resume = false);
   struct Workspace;
   std::unique_ptr<Workspace> workspace_;
 };

@@ -1,0 +1,108 @@
+#include "musclesim/solver/stepper.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+#include "musclesim/errors.h"
+#include "run_roots.h"
+
+namespace musclesim {
+
+// Takes the one row of an Advance (or the row where a limit ended it): its time and state,
+// then the sample observed there.
+class Stepper::Recorder final : public NetworkSink {
+ public:
+  explicit Recorder(Stepper& stepper) : stepper_(stepper) {}
+  bool RecordState(double t, const double* y) override {
+    stepper_.time_ = t;
+    stepper_.state_.assign(y, y + stepper_.state_.size());
+    return false;  // and Record with the sample
+  }
+  void Record(double, const NetworkSample& sample) override { stepper_.sample_ = sample; }
+
+ private:
+  Stepper& stepper_;
+};
+
+Stepper::Stepper(NetworkSystem system, SolverOptions options, StepperStart start)
+    : system_(std::move(system)),
+      options_(options),
+      limits_(std::move(start.limits)),
+      simulation_(std::make_unique<Simulation>()),
+      time_(start.t_start) {
+  Validate(options_);
+  Require(std::isfinite(time_), "t_start", time_, "must be finite [s]");
+  const int n = system_.state_size();
+  if (start.initial_state.empty()) {
+    state_.resize(static_cast<std::size_t>(n));
+    system_.InitialState(time_, state_.data());
+  } else {
+    if (static_cast<int>(start.initial_state.size()) != n) {
+      throw ParameterError("initial_state",
+                           std::to_string(start.initial_state.size()) + " values",
+                           "must hold the system's " + std::to_string(n) + " states");
+    }
+    for (double v : start.initial_state) {
+      Require(std::isfinite(v), "initial_state", v, "must be finite");
+    }
+    state_ = std::move(start.initial_state);
+  }
+  system_.CheckLengths(time_, state_.data());
+  // the limits as a run checks them: elements named, bracketing the initial lengths
+  NetworkRunRequest request;
+  request.t_start = time_;
+  request.limits = limits_;
+  RootsOf(system_, request, state_.data());
+  system_.Observe(time_, state_.data(), sample_);
+  stats_.final_time = time_;
+}
+
+Stepper::~Stepper() = default;
+
+RunStatus Stepper::Advance(double t_next) {
+  if (ended_) {
+    throw std::logic_error("Stepper::Advance after the stepping ended at t = " +
+                           FormatNumber(time_) + " s: " + stats_.message);
+  }
+  Require(std::isfinite(t_next) && t_next > time_, "t_next", t_next,
+          "must be finite and after time() = " + FormatNumber(time_) + " [s]");
+  NetworkRunRequest request;
+  request.t_start = time_;
+  request.t_end = t_next;
+  request.output_interval = t_next - time_;  // unused with output_times; any span is valid
+  request.output_times = {t_next};
+  request.limits = limits_;
+  request.initial_state = state_;
+  Recorder recorder(*this);
+  const RunStats run = simulation_->Integrate(system_, options_, request, &recorder, nullptr,
+                                              nullptr, /*resume=*/!restart_);
+  restart_ = false;
+  stats_.steps += run.steps;
+  stats_.rhs_evals += run.rhs_evals;
+  stats_.jac_evals += run.jac_evals;
+  stats_.linear_setups += run.linear_setups;
+  stats_.newton_iters += run.newton_iters;
+  stats_.newton_conv_fails += run.newton_conv_fails;
+  stats_.error_test_fails += run.error_test_fails;
+  stats_.wall_seconds += run.wall_seconds;
+  stats_.final_time = time_;
+  stats_.linear_solver = run.linear_solver;
+  stats_.status = run.status;
+  stats_.message = run.message;
+  ended_ = run.status != RunStatus::kCompleted;
+  return run.status;
+}
+
+void Stepper::SetActivation(std::string_view actuator, double value) {
+  const int e = system_.FindElement(actuator);
+  if (e < 0) {
+    throw ParameterError("actuator", std::string(actuator), "names no element of this network");
+  }
+  system_.HoldActivation(e, value);  // ParameterError: controlled, no actuator, out of range
+  // the input jumps here: the integrator's history belongs to the old one
+  restart_ = true;
+  system_.Observe(time_, state_.data(), sample_);
+}
+
+}  // namespace musclesim
