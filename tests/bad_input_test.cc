@@ -554,6 +554,11 @@ const std::vector<Case> kCases = {
     {"PlotUnknownOption", "plot {file} -o {dir}/x.png --quiet", "t,length\n0,0.1\n", 2, {"unknown option --quiet"}, "csv"},
     // --- the program --------------------------------------------------------------------------
     {"UnknownVerb", "dance", "", 2, {"unknown verb 'dance'"}},
+    // --- network controllers ----------------------------------------------------------------
+    {"NetworkDrivenActuatorWithActivation", "run {file} -o -", Edit(Network("time: {start: 0.0, end: 1.0}\n", "time: {start: 0.0, end: 1.0}\ncontrollers:\n  - {name: hold, type: pid, measure: {element: muscle, quantity: length}, reference: {type: constant, value: 0.1}, gains: {kp: -100}, drives: muscle}\n"), "activation: {type: step", "activation: @{type: step"), 2,
+     {"elements[0].activation = {type: step, time: 0.05, before: 0.0, after: 1.0} ({at}): actuator muscle is driven by controllers[0] (hold): it has no activation of its own"}},
+    {"NetworkControllerTypeUnknown", "run {file} -o -", Edit(Edit(Network("time: {start: 0.0, end: 1.0}\n", "time: {start: 0.0, end: 1.0}\ncontrollers:\n  - {name: hold, type: pid, measure: {element: muscle, quantity: length}, reference: {type: constant, value: 0.1}, gains: {kp: -100}, drives: muscle}\n"), "type: pid", "type: @lqr"), "     activation: {type: step, time: 0.05, before: 0.0, after: 1.0}}", "}"), 2,
+     {"controllers[0].type = lqr ({at}): must be one of pid"}},
 };
 // clang-format on
 

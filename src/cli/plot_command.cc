@@ -23,8 +23,10 @@ common options:
   --size WxH       pixels (default 1000x750)
   --script PATH    also write the gnuplot script, to restyle the figure by hand
 A trajectory: length, shortening velocity, activation and the tensions against time in
-stacked panels, concentric, eccentric and isometric intervals shaded. Curves: passive, active
-and total tension against length (L_opt shaded, each Gaussian thin) and g(v). A sweep: METRIC
+stacked panels, concentric, eccentric and isometric intervals shaded; a network's, its
+positions, lengths, tensions and activations, and per controller its measured value against
+its reference, over a panel of the controllers' errors. Curves: passive, active and total
+tension against length (L_opt shaded, each Gaussian thin) and g(v). A sweep: METRIC
 (default the first) against the swept path PATH, a line per value of --color; without
 --color and with two swept paths, a heat map. Failed rows are left out.
 Text is drawn as written (no gnuplot markup); titles, file names and the CSV's column names

@@ -15,6 +15,9 @@ constexpr std::size_t kBlockBytes = 1 << 16;
 constexpr const char* kActuatorColumns[] = {"shortening_velocity", "activation",
                                             "tension_passive", "tension_active", "phase"};
 
+// The columns of every controller, after the loads.
+constexpr const char* kControllerColumns[] = {"reference", "measured", "error", "output"};
+
 }  // namespace
 
 std::vector<std::string> NetworkCsvColumns(const NetworkSystem& system) {
@@ -36,6 +39,9 @@ std::vector<std::string> NetworkCsvColumns(const NetworkSystem& system) {
   }
   for (const Node& node : system.nodes()) {
     if (node.kind == NodeKind::kFree) columns.push_back(node.name + ".load");
+  }
+  for (const Controller& controller : system.controllers()) {
+    for (const char* column : kControllerColumns) columns.push_back(controller.name + "." + column);
   }
   return columns;
 }
@@ -84,6 +90,12 @@ void NetworkCsvFormat::AppendRow(std::string& csv, double t, const NetworkSample
     csv += ToString(ClassifyPhase(shortening_velocity, phase_tolerance_[e]));
   }
   for (const int node : free_nodes_) number(s.load[static_cast<std::size_t>(node)]);
+  for (const ControllerSample& controller : s.controllers) {
+    number(controller.reference);
+    number(controller.measured);
+    number(controller.error);
+    number(controller.output);
+  }
   csv += '\n';
 }
 

@@ -1,5 +1,6 @@
 #include "io/network_parts_yaml.h"
 
+#include "io/controller_yaml.h"
 #include "io/scenario_fields.h"
 #include "musclesim/io/input_ranges.h"
 
@@ -13,31 +14,6 @@ using yaml::ValidateAt;
 
 std::string Item(const char* list, std::size_t i) {
   return std::string(list) + "[" + std::to_string(i) + "]";
-}
-
-void RequireList(const yaml::Source& src, const YAML::Node& node, const char* list,
-                 const char* what) {
-  if (!node.IsSequence()) {
-    yaml::Fail(src, node, list, yaml::Describe(node), std::string("must be a list of ") + what);
-  }
-}
-
-// A node's or element's name heads CSV columns ("load.position"): a plain name keeps the
-// header one comma-separated line whose names split at their last dot.
-std::string ReadName(const yaml::Source& src, const YAML::Node& item, const std::string& path) {
-  const YAML::Node node = Required(src, item, path, "name");
-  const std::string name = yaml::ReadString(src, node, Join(path, "name"));
-  bool plain = !name.empty();
-  for (const char c : name) {
-    plain = plain && ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
-                      (c >= '0' && c <= '9') || c == '_' || c == '-');
-  }
-  if (!plain) {
-    yaml::Fail(src, node, Join(path, "name"), name.empty() ? "\"\"" : yaml::Describe(node),
-               "must be a plain name of letters, digits, _ and - (it heads CSV columns such "
-               "as name.position)");
-  }
-  return name;
 }
 
 Waveform ReadMotion(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
@@ -106,7 +82,8 @@ std::shared_ptr<const TensionModel> FindModel(const yaml::Source& src, const YAM
 }
 
 Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::string& path,
-                    const NamedModels& models, double t_start, double t_end) {
+                    const NamedModels& models, const DrivenActuators& driven, double t_start,
+                    double t_end) {
   const std::string type = ReadType(src, item, path);
   Element e;
   ValidateAt(src, item, path, [&] { e.kind = ParseElementKind(type); });
@@ -136,6 +113,11 @@ Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::
   switch (e.kind) {
     case ElementKind::kActuator: {
       e.model = FindModel(src, item, path, models);
+      if (const auto driver = driven.find(e.name); driver != driven.end()) {
+        e = ReadControlledActuator(src, item, path, e.name, e.from, e.to, e.model,
+                                   driver->second);
+        break;
+      }
       ActuatorDrive drive = ReadActuatorDrive(src, item, path, item["initial_activation"],
                                               Join(path, "initial_activation"), t_start, t_end);
       e.activation = std::move(drive.activation);
@@ -176,6 +158,29 @@ Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::
 
 }  // namespace
 
+void RequireList(const yaml::Source& src, const YAML::Node& node, const char* list,
+                 const char* what) {
+  if (!node.IsSequence()) {
+    yaml::Fail(src, node, list, yaml::Describe(node), std::string("must be a list of ") + what);
+  }
+}
+
+std::string ReadName(const yaml::Source& src, const YAML::Node& item, const std::string& path) {
+  const YAML::Node node = Required(src, item, path, "name");
+  const std::string name = yaml::ReadString(src, node, Join(path, "name"));
+  bool plain = !name.empty();
+  for (const char c : name) {
+    plain = plain && ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                      (c >= '0' && c <= '9') || c == '_' || c == '-');
+  }
+  if (!plain) {
+    yaml::Fail(src, node, Join(path, "name"), name.empty() ? "\"\"" : yaml::Describe(node),
+               "must be a plain name of letters, digits, _ and - (it heads CSV columns such "
+               "as name.position)");
+  }
+  return name;
+}
+
 std::vector<Node> ReadNodes(const yaml::Source& src, const YAML::Node& node) {
   RequireList(src, node, "nodes", "nodes, each a name and one of fixed, prescribed or mass");
   std::vector<Node> nodes;
@@ -186,11 +191,12 @@ std::vector<Node> ReadNodes(const yaml::Source& src, const YAML::Node& node) {
 }
 
 std::vector<Element> ReadElements(const yaml::Source& src, const YAML::Node& node,
-                                  const NamedModels& models, double t_start, double t_end) {
+                                  const NamedModels& models, const DrivenActuators& driven,
+                                  double t_start, double t_end) {
   RequireList(src, node, "elements", "elements, each {name, type, from, to, ...}");
   std::vector<Element> elements;
   for (std::size_t i = 0; i < node.size(); ++i) {
-    elements.push_back(ReadElement(src, node[i], Item("elements", i), models, t_start, t_end));
+    elements.push_back(ReadElement(src, node[i], Item("elements", i), models, driven, t_start, t_end));
   }
   return elements;
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "io/controller_yaml.h"
 #include "io/yaml_fields.h"
 #include "musclesim/dynamics/network.h"
 #include "musclesim/solver/simulation.h"
@@ -22,12 +23,23 @@ struct NamedModels {
   std::vector<std::string> names;
 };
 
+// Requires `node`, the value of the top-level key `list`, to be a list of `what`.
+void RequireList(const yaml::Source& src, const YAML::Node& node, const char* list,
+                 const char* what);
+
+// The `name` of the map `item` (key path `path`): a node's, element's or controller's name
+// heads CSV columns ("load.position"), so it must be a plain name, which keeps the header
+// one comma-separated line whose names split at their last dot.
+std::string ReadName(const yaml::Source& src, const YAML::Node& item, const std::string& path);
+
 // `node` is the value of `nodes` (a list). Prescribed motions must be continuous.
 std::vector<Node> ReadNodes(const yaml::Source& src, const YAML::Node& node);
 
 // `node` is the value of `elements` (a list); an actuator's `model` must name one of `models`.
+// An actuator `driven` names is a controlled one (ReadControlledActuator).
 std::vector<Element> ReadElements(const yaml::Source& src, const YAML::Node& node,
-                                  const NamedModels& models, double t_start, double t_end);
+                                  const NamedModels& models, const DrivenActuators& driven,
+                                  double t_start, double t_end);
 
 // `node` is the value of `loads` (a list of loads, each with the `node` it acts on).
 std::vector<NodeLoad> ReadNodeLoads(const yaml::Source& src, const YAML::Node& node,

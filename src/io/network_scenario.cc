@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 
+#include "io/controller_yaml.h"
 #include "io/model_yaml_node.h"
 #include "io/network_parts_yaml.h"
 #include "io/network_scenario_reader.h"
@@ -14,7 +15,9 @@
 
 namespace musclesim {
 
-NetworkSystem NetworkScenarioSpec::Build() const { return NetworkSystem(nodes, elements, loads); }
+NetworkSystem NetworkScenarioSpec::Build() const {
+  return NetworkSystem(nodes, elements, loads, controllers);
+}
 
 NetworkRunRequest NetworkScenarioSpec::Request() const {
   NetworkRunRequest r;
@@ -32,7 +35,7 @@ using yaml::Required;
 // The top-level keys of a network scenario file.
 constexpr std::initializer_list<const char*> kNetworkKeys = {
     "name", "models", "nodes", "elements", "loads", "time", "solver", "output", "limits",
-    "sensitivities"};
+    "sensitivities", "controllers"};
 
 NamedModels ReadModels(const yaml::Source& src, const YAML::Node& node,
                        NetworkScenarioSpec& s) {
@@ -68,10 +71,16 @@ NetworkScenarioSpec ReadNetworkScenario(const yaml::Source& src, const YAML::Nod
   NamedModels models;
   if (const YAML::Node node = root["models"]) models = ReadModels(src, node, s);
   s.nodes = ReadNodes(src, Required(src, root, "", "nodes"));
-  s.elements = ReadElements(src, Required(src, root, "", "elements"), models, s.t_start, s.t_end);
+  // before the elements: an actuator a controller drives has no activation of its own
+  if (const YAML::Node node = root["controllers"]) {
+    s.controllers = ReadControllers(src, node, s.t_start, s.t_end);
+  }
+  s.elements = ReadElements(src, Required(src, root, "", "elements"), models,
+                            DrivenActuatorsOf(s.controllers), s.t_start, s.t_end);
   if (const YAML::Node node = root["loads"]) s.loads = ReadNodeLoads(src, node, s.t_start, s.t_end);
 
-  // how the parts fit: the system's paths ("elements[2].to") are the file's key paths
+  // how the parts fit: the system's paths ("elements[2].to", "controllers[0].drives") are the
+  // file's key paths
   std::optional<NetworkSystem> system;
   yaml::ValidateAt(src, root, "", [&] {
     system.emplace(s.Build());

@@ -260,6 +260,12 @@ SensitivitySetup PrepareSensitivities(const std::string& path,
     for (std::size_t i = 0; i < spec.sensitivities_at.size(); ++i) {
       where.push_back(spec.sensitivities_at[i] + ": sensitivities[" + std::to_string(i) + "]");
     }
+    if (!spec.controllers.empty() && !paths.empty()) {
+      // the controllers' terms of the sensitivity equations (docs/model.md 10) are not derived
+      throw InputError(where.front() + " " + paths.front() + ": sensitivities of a network "
+                       "with controllers are not supported yet (" + path + " has controllers[0] " +
+                       spec.controllers.front().name + "); run it without sensitivities");
+    }
   } else {
     const ScenarioSpec spec = builder.SingleSpec();
     setup.name = spec.name;

@@ -22,13 +22,34 @@ std::vector<int> ColumnsEndingIn(const CsvTable& table, const std::string& suffi
   return columns;
 }
 
+// One line of a panel: an inline data column (gnuplot counts from 1), its legend and the CSV
+// column it came from (for messages).
+struct Line {
+  int column;
+  std::string label;
+  std::string source;
+  bool dashed;  // thin and dashed: the excitations, the references
+};
+
 struct Panel {
   std::string ylabel;
-  std::string suffix;
-  std::vector<int> columns;
-  std::string dashed_suffix;  // drawn dashed in the same panel ("" none): the excitations
-  std::vector<int> dashed;
+  std::vector<Line> lines;
+  std::string ylabel_source;  // the CSV column a ylabel made from a name came from ("": none)
 };
+
+// The controllers of the CSV: every prefix P with P.reference, P.measured and P.error columns
+// (io/network_csv.h), in the CSV's order.
+std::vector<std::string> ControllerNames(const CsvTable& table) {
+  std::vector<std::string> names;
+  for (int column : ColumnsEndingIn(table, ".reference")) {
+    const std::string& name = table.header[static_cast<std::size_t>(column)];
+    const std::string prefix = name.substr(0, name.size() - std::string(".reference").size());
+    if (table.Find(prefix + ".measured") >= 0 && table.Find(prefix + ".error") >= 0) {
+      names.push_back(prefix);
+    }
+  }
+  return names;
+}
 
 }  // namespace
 
@@ -38,28 +59,47 @@ bool IsNetworkTrajectory(const CsvTable& table) {
 
 std::string NetworkPlotScript(const CsvTable& table, const PlotOptions& options) {
   table.Require({"t"}, "a network trajectory CSV of musclesim run");
-  std::vector<Panel> panels = {{"position [m]", ".position", {}, "", {}},
-                               {"length [m]", ".length", {}, "", {}},
-                               {"tension [N]", ".tension", {}, "", {}},
-                               {"activation [-]", ".activation", {}, ".excitation", {}}};
   std::vector<int> data = {table.Find("t")};  // the inline data's columns, time first
-  for (Panel& panel : panels) {
-    for (int column : ColumnsEndingIn(table, panel.suffix)) {
-      data.push_back(column);
-      panel.columns.push_back(static_cast<int>(data.size()));  // gnuplot counts from 1
+  // adds a CSV column to the inline data as a line of `panel`
+  const auto add = [&](Panel& panel, int column, const std::string& label, bool dashed) {
+    data.push_back(column);
+    panel.lines.push_back({static_cast<int>(data.size()), label,
+                           table.header[static_cast<std::size_t>(column)], dashed});
+  };
+  // a line per column ending in `suffix`, labelled by its part's name and `label_end`
+  const auto add_kind = [&](Panel& panel, const std::string& suffix, const std::string& label_end,
+                            bool dashed) {
+    for (int column : ColumnsEndingIn(table, suffix)) {
+      const std::string& name = table.header[static_cast<std::size_t>(column)];
+      add(panel, column, name.substr(0, name.size() - suffix.size()) + label_end, dashed);
     }
-    if (panel.dashed_suffix.empty()) continue;
-    for (int column : ColumnsEndingIn(table, panel.dashed_suffix)) {
-      data.push_back(column);
-      panel.dashed.push_back(static_cast<int>(data.size()));
-    }
-  }
-  if (panels[0].columns.empty()) {
+  };
+  std::vector<Panel> panels = {
+      {"position [m]", {}, ""}, {"length [m]", {}, ""}, {"tension [N]", {}, ""},
+      {"activation [-]", {}, ""}};
+  add_kind(panels[0], ".position", "", false);
+  add_kind(panels[1], ".length", "", false);
+  add_kind(panels[2], ".tension", "", false);
+  add_kind(panels[3], ".activation", "", false);
+  add_kind(panels[3], ".excitation", " excitation", true);
+  if (panels[0].lines.empty()) {
     throw InputError(table.source + ": a network trajectory CSV of musclesim run needs "
                      "<node>.position columns; found none");
   }
+  // a controller's panel: what it measures against its reference (in the measured unit),
+  // then one panel of every controller's error
+  const std::vector<std::string> controllers = ControllerNames(table);
+  Panel errors{"control error", {}, ""};  // reference - measured
+  for (const std::string& name : controllers) {
+    Panel panel{name, {}, name + ".reference"};
+    add(panel, table.Find(name + ".measured"), name + " measured", false);
+    add(panel, table.Find(name + ".reference"), name + " reference", true);
+    panels.push_back(std::move(panel));
+    add(errors, table.Find(name + ".error"), name, false);
+  }
+  panels.push_back(std::move(errors));
   if (table.rows.empty()) throw InputError(table.source + ": no rows to plot");
-  std::erase_if(panels, [](const Panel& p) { return p.columns.empty(); });
+  std::erase_if(panels, [](const Panel& p) { return p.lines.empty(); });
 
   std::ostringstream s;
   s << kFrame << "$network << EOD\n";
@@ -76,19 +116,12 @@ std::string NetworkPlotScript(const CsvTable& table, const PlotOptions& options)
   for (std::size_t p = 0; p < panels.size(); ++p) {
     const Panel& panel = panels[p];
     if (p + 1 == panels.size()) s << "set format x '%g'\nset xlabel 'time [s]'\n";
-    s << "set ylabel '" << panel.ylabel << "'\nplot ";
-    for (std::size_t i = 0; i < panel.columns.size(); ++i) {
-      const int column = panel.columns[i];
-      const std::string& name = table.header[static_cast<std::size_t>(data[column - 1])];
-      const std::string label = name.substr(0, name.size() - panel.suffix.size());
-      s << (i ? ", \\\n  " : "") << "$network using 1:" << column << " with lines lw 2 title "
-        << GnuplotString(label, "column " + Printable(name));
-    }
-    for (const int column : panel.dashed) {
-      const std::string& name = table.header[static_cast<std::size_t>(data[column - 1])];
-      const std::string label = name.substr(0, name.size() - panel.dashed_suffix.size());
-      s << ", \\\n  $network using 1:" << column << " with lines lw 1 dt 2 title "
-        << GnuplotString(label + " excitation", "column " + Printable(name));
+    s << "set ylabel " << GnuplotString(panel.ylabel, "column " + Printable(panel.ylabel_source)) << "\nplot ";
+    for (std::size_t i = 0; i < panel.lines.size(); ++i) {
+      const Line& line = panel.lines[i];
+      s << (i ? ", \\\n  " : "") << "$network using 1:" << line.column
+        << (line.dashed ? " with lines lw 1 dt 2 title " : " with lines lw 2 title ")
+        << GnuplotString(line.label, "column " + Printable(line.source));
     }
     s << "\n";
   }

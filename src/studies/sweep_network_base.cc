@@ -88,7 +88,7 @@ class NetworkSweepBase final : public SweepBase {
     const NetworkScenarioSpec& s = *scenario_;
     // built in place: a NetworkSystem holds pointers into its own parts
     system_.reset();
-    system_.emplace(s.nodes, s.elements, s.loads);
+    system_.emplace(s.nodes, s.elements, s.loads, s.controllers);
     Recorder recorder(element_, metrics, keep_ ? &times_ : nullptr, &samples_);
     return simulation.Run(*system_, s.solver, s.Request(), recorder);
   }

@@ -8,6 +8,11 @@
 //                                         activation dynamics), <name>.tension_passive,
 //                                         <name>.tension_active, <name>.phase
 //   for every free node, in node order:   <node>.load (the sum of the loads on it)
+//   for every controller, in order:       <controller>.reference, <controller>.measured,
+//                                         <controller>.error (reference - measured),
+//                                         <controller>.output (NetworkSample's
+//                                         ControllerSample: units of the measured quantity,
+//                                         the output [-])
 // Numbers have 17 significant digits and `phase` is classified as the single actuator's CSV
 // does (io/trajectory_csv.h), each actuator with its own tolerance.
 #pragma once

@@ -1,7 +1,8 @@
 // A network scenario: the nodes, elements and loads of a network on a line (docs/model.md
-// section 7), their tension models, the solver, the output and the limits of one run, read
-// from YAML and validated before anything runs. A file with a top-level `nodes:` key is a
-// network; any other is the single-actuator form of io/scenario.h.
+// section 7), its feedback controllers (section 11), their tension models, the solver, the
+// output and the limits of one run, read from YAML and validated before anything runs. A
+// file with a top-level `nodes:` key is a network; any other is the single-actuator form of
+// io/scenario.h.
 #pragma once
 
 #include <map>
@@ -28,6 +29,8 @@ struct NetworkScenarioSpec {
   std::vector<Node> nodes;                 // in the file's order, the CSV's column order
   std::vector<Element> elements;           // in the file's order
   std::vector<NodeLoad> loads;             // in the file's order
+  std::vector<Controller> controllers;     // in the file's order, the CSV's column order;
+                                           // the actuators they drive are controlled ones
   double t_start = 0.0, t_end = 1.0;       // the simulated interval [s], t_end > t_start
   SolverOptions solver;                    // units as in SolverOptions
   OutputSpec output;                       // units as in OutputSpec
@@ -49,9 +52,9 @@ bool IsNetworkScenario(const std::string& path);
 // Reads and validates the network scenario `path`, applying each "dotted.path=value"
 // override first (as `--set` gives them, e.g. "elements[1].activation.after=0.5"). Checks
 // everything a run would: names unique, references resolved, every free node joined to a
-// fixed or prescribed node, every element longer than zero at the start, the limits against
-// the elements' initial lengths. Throws InputError naming file:line:column (or --set), key
-// path, value and rule.
+// fixed or prescribed node, every controller fitting the network (docs/model.md 11), every
+// element longer than zero at the start, the limits against the elements' initial lengths.
+// Throws InputError naming file:line:column (or --set), key path, value and rule.
 NetworkScenarioSpec LoadNetworkScenario(const std::string& path,
                                         const std::vector<std::string>& overrides = {});
 

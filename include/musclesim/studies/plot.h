@@ -46,7 +46,9 @@ std::string TrajectoryPlotScript(const CsvTable& trajectory, const PlotOptions& 
 // <element>.tension, <actuator>.activation): one panel per quantity kind (node positions,
 // element lengths, tensions, activations when there are actuators, with any
 // <actuator>.excitation dashed beside them), one line per node or element, sharing the time
-// axis. Throws InputError as TrajectoryPlotScript does.
+// axis; with controllers (<controller>.reference, .measured, .error), a panel per controller
+// of its measured value with its reference dashed, and a panel of every controller's error.
+// Throws InputError as TrajectoryPlotScript does.
 std::string NetworkPlotScript(const CsvTable& trajectory, const PlotOptions& options);
 
 // Whether `table` is a network's trajectory (it has a <node>.position column).

@@ -1,0 +1,202 @@
+#include "io/controller_yaml.h"
+
+#include <utility>
+
+#include "io/network_parts_yaml.h"
+#include "io/scenario_fields.h"
+#include "musclesim/io/input_ranges.h"
+
+namespace musclesim {
+
+namespace {
+
+using yaml::Join;
+using yaml::Required;
+using yaml::ValidateAt;
+
+// The controller types a file may name.
+constexpr const char* kControllerTypes = "pid";
+
+// A waveform of any kind at `node`, its values within `values` (nullptr: any finite value).
+Waveform ReadSignal(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                    const InputRange* values, double t_start, double t_end) {
+  const std::string type = ReadType(src, node, path);
+  WaveformKind kind{};
+  ValidateAt(src, node, path, [&] { kind = ParseWaveformKind(type); });
+  Waveform w = ReadWaveform(src, node, path, kind, values);
+  ValidateAt(src, node, path, [&] { Validate(w); });
+  CheckPulses(src, node, path, w, t_start, t_end);
+  return w;
+}
+
+Measurement ReadMeasurement(const yaml::Source& src, const YAML::Node& item,
+                            const std::string& path) {
+  const YAML::Node node = Required(src, item, path, "measure");
+  const std::string at = Join(path, "measure");
+  yaml::RequireMap(src, node, at, {"element", "node", "quantity"});
+  if (static_cast<bool>(node["element"]) == static_cast<bool>(node["node"])) {
+    yaml::Fail(src, node, at, yaml::Describe(node),
+               "give exactly one of element (its quantity length or tension) or node (its "
+               "quantity position)");
+  }
+  Measurement m;
+  if (node["element"]) {
+    m.element = yaml::ReadString(src, node["element"], Join(at, "element"));
+  } else {
+    m.node = yaml::ReadString(src, node["node"], Join(at, "node"));
+  }
+  const YAML::Node quantity = Required(src, node, at, "quantity");
+  const std::string text = yaml::ReadString(src, quantity, Join(at, "quantity"));
+  ValidateAt(src, node, at, [&] { m.quantity = ParseMeasuredQuantity(text); });
+  return m;
+}
+
+PidGains ReadGains(const yaml::Source& src, const YAML::Node& item, const std::string& path) {
+  const YAML::Node node = Required(src, item, path, "gains");
+  const std::string at = Join(path, "gains");
+  yaml::RequireMap(src, node, at, {"kp", "ki", "kd"});
+  PidGains gains;
+  gains.kp = yaml::ReadOptionalNumber(src, node, at, "kp", 0.0);
+  gains.ki = yaml::ReadOptionalNumber(src, node, at, "ki", 0.0);
+  gains.kd = yaml::ReadOptionalNumber(src, node, at, "kd", 0.0);
+  return gains;
+}
+
+CoContraction ReadCoContraction(const yaml::Source& src, const YAML::Node& node,
+                                const std::string& at, double t_start, double t_end) {
+  yaml::RequireMap(src, node, at, {"actuators", "level"});
+  const YAML::Node actuators = Required(src, node, at, "actuators");
+  const std::string list = Join(at, "actuators");
+  if (!actuators.IsSequence() || actuators.size() != 2) {
+    yaml::Fail(src, actuators, list, yaml::Describe(actuators),
+               "must be a list of two actuators, [FIRST, SECOND]: FIRST takes level + c, "
+               "SECOND level - c");
+  }
+  CoContraction pair;
+  pair.first = yaml::ReadString(src, actuators[0], list + "[0]");
+  pair.second = yaml::ReadString(src, actuators[1], list + "[1]");
+  const std::string level = Join(at, "level");
+  pair.level = ReadActivation(src, Required(src, node, at, "level"), level);
+  CheckPulses(src, node["level"], level, pair.level, t_start, t_end);
+  return pair;
+}
+
+Controller ReadController(const yaml::Source& src, const YAML::Node& item,
+                          const std::string& path, double t_start, double t_end) {
+  if (!item.IsMap()) {
+    yaml::Fail(src, item, path, yaml::Describe(item),
+               "must be a map: {name, type: pid, measure, reference, gains, drives or "
+               "co_contraction}");
+  }
+  yaml::RequireMap(src, item, path,
+                   {"name", "type", "measure", "reference", "gains", "feedforward", "drives",
+                    "co_contraction"});
+  Controller c;
+  c.name = ReadName(src, item, path);
+  const YAML::Node type = Required(src, item, path, "type");
+  const std::string kind = yaml::ReadString(src, type, Join(path, "type"));
+  if (kind != kControllerTypes) {
+    yaml::Fail(src, type, Join(path, "type"), kind,
+               std::string("must be one of ") + kControllerTypes);
+  }
+  c.measure = ReadMeasurement(src, item, path);
+  // a reference in the measured quantity's unit
+  const InputRange* unit =
+      c.measure.quantity == MeasuredQuantity::kTension ? &kForceRange : &kPositionRange;
+  c.reference = ReadSignal(src, Required(src, item, path, "reference"), Join(path, "reference"),
+                           unit, t_start, t_end);
+  c.gains = ReadGains(src, item, path);
+  if (const YAML::Node node = item["feedforward"]) {
+    c.feedforward = ReadSignal(src, node, Join(path, "feedforward"), nullptr, t_start, t_end);
+  }
+  const YAML::Node drives = item["drives"];
+  const YAML::Node pair = item["co_contraction"];
+  if (static_cast<bool>(drives) == static_cast<bool>(pair)) {
+    yaml::Fail(src, item, path, drives ? "drives and co_contraction" : "neither",
+               "give exactly one of drives (the actuator driven) or co_contraction "
+               "({actuators: [FIRST, SECOND], level}: an antagonist pair)");
+  }
+  if (drives) {
+    c.drives = yaml::ReadString(src, drives, Join(path, "drives"));
+  } else {
+    c.co_contraction = ReadCoContraction(src, pair, Join(path, "co_contraction"), t_start, t_end);
+  }
+  ValidateAt(src, item, path, [&] { Validate(c); });
+  return c;
+}
+
+}  // namespace
+
+std::vector<Controller> ReadControllers(const yaml::Source& src, const YAML::Node& node,
+                                        double t_start, double t_end) {
+  RequireList(src, node, "controllers",
+              "controllers, each {name, type: pid, measure, reference, gains, drives or "
+              "co_contraction}");
+  std::vector<Controller> controllers;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string path = "controllers[" + std::to_string(i) + "]";
+    controllers.push_back(ReadController(src, node[i], path, t_start, t_end));
+  }
+  return controllers;
+}
+
+DrivenActuators DrivenActuatorsOf(const std::vector<Controller>& controllers) {
+  DrivenActuators driven;
+  for (std::size_t k = 0; k < controllers.size(); ++k) {
+    const Controller& c = controllers[k];
+    const ControllerRef ref{k, c.name};
+    if (c.co_contraction) {
+      driven.emplace(c.co_contraction->first, ref);
+      driven.emplace(c.co_contraction->second, ref);
+    } else {
+      driven.emplace(c.drives, ref);
+    }
+  }
+  return driven;
+}
+
+Element ReadControlledActuator(const yaml::Source& src, const YAML::Node& item,
+                               const std::string& path, const std::string& name,
+                               const std::string& from, const std::string& to,
+                               std::shared_ptr<const TensionModel> model,
+                               const ControllerRef& driver) {
+  for (const char* key : {"activation", "excitation"}) {
+    if (const YAML::Node own = item[key]) {
+      yaml::Fail(src, own, Join(path, key), yaml::Describe(own),
+                 "actuator " + name + " is driven by controllers[" +
+                     std::to_string(driver.index) + "] (" + driver.name +
+                     "): it has no activation of its own");
+    }
+  }
+  const YAML::Node dynamics = item["activation_dynamics"];
+  const YAML::Node initial = item["initial_activation"];
+  const std::string initial_path = Join(path, "initial_activation");
+  Element e;
+  if (!dynamics) {
+    if (initial) {
+      yaml::Fail(src, initial, initial_path, yaml::Describe(initial),
+                 "only with activation_dynamics: without them controllers[" +
+                     std::to_string(driver.index) + "] (" + driver.name +
+                     ") sets the activation itself, its start included");
+    }
+    ValidateAt(src, item, path,
+               [&] { e = Element::ControlledActuator(name, from, to, std::move(model)); });
+    return e;
+  }
+  const std::string at = Join(path, "activation_dynamics");
+  yaml::RequireMap(src, dynamics, at, {"tau_activation", "tau_deactivation"});
+  const auto time_constant = [&](const char* key) {
+    return yaml::ReadNumberIn(src, Required(src, dynamics, at, key), Join(at, key),
+                              kActivationTimeConstantRange);
+  };
+  ActivationDynamics lag;
+  lag.tau_activation = time_constant("tau_activation");
+  lag.tau_deactivation = time_constant("tau_deactivation");
+  const double u0 = initial ? yaml::ReadNumberIn(src, initial, initial_path, kActivationRange) : 0.0;
+  ValidateAt(src, item, path, [&] {
+    e = Element::ControlledActuator(name, from, to, std::move(model), lag, u0);
+  });
+  return e;
+}
+
+}  // namespace musclesim
