@@ -401,7 +401,7 @@ const std::vector<Case> kCases = {
     {"NetworkExcitationAndActivation", "run {file} -o -", Network("before: 0.0, after: 1.0}}", "before: 0.0, after: 1.0},\n     excitation: @{type: constant, value: 1}}"), 2,
      {"elements[0].excitation = {type: constant, value: 1} ({at}): give either activation (u(t) itself) or excitation"}},
     {"NetworkNeitherActivationNorExcitation", "run {file} -o -", Edit(Network(",\n     activation: {type: step, time: 0.05, before: 0.0, after: 1.0}}", "}"), "  - {name: muscle,", "  - @{name: muscle,"), 2,
-     {"elements[0].activation ({at}): missing required key: give either activation (u(t) itself) or excitation"}},
+     {"elements[0].activation ({at}): missing required key: give activation (u(t) itself) or excitation"}},
     {"NetworkExcitationWithoutDynamics", "run {file} -o -", Network("     activation: {type: step", "     excitation: @{type: step"), 2,
      {"elements[0].excitation = {type: step, time: 0.05, before: 0.0, after: 1.0} ({at}): needs activation_dynamics"}},
     {"NetworkDynamicsWithActivation", "run {file} -o -", Network("before: 0.0, after: 1.0}}", "before: 0.0, after: 1.0},\n     activation_dynamics: @{tau_activation: 0.015, tau_deactivation: 0.05}}"), 2,

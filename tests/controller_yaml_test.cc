@@ -220,11 +220,15 @@ TEST(ControllerYaml, DrivenActuatorWithItsOwnActivationIsRefused) {
                                           At(initial, "initial_activation: ^0.2") + "): only with activation_dynamics"));
 }
 
-TEST(ControllerYaml, UndrivenActuatorWithoutActivationKeepsItsError) {
+TEST(ControllerYaml, UndrivenActuatorWithoutActivationNamesWhatTheControllersDrive) {
+  // a misspelt `drives` leaves the actuator with no input at all
   const std::string text = Edit(kHold, "drives: muscle", "drives: spring");
-  EXPECT_THAT(ErrorOf(text), HasSubstr("elements[0].activation (" +
-                                       At(text, "{name: muscle") +
-                                       "): missing required key: give either activation"));
+  EXPECT_THAT(ErrorOf(text),
+              HasSubstr("elements[0].activation (" + At(text, "{name: muscle") +
+                        "): missing required key: give activation (u(t) itself) or "
+                        "excitation (e(t), driving u through activation_dynamics), or name "
+                        "muscle in a controller's drives or co_contraction.actuators (the "
+                        "controllers drive: spring)"));
 }
 
 TEST(ControllerYaml, EntryRefusalsNameFileLineAndKey) {

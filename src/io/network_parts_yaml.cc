@@ -118,6 +118,16 @@ Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::
                                    driver->second);
         break;
       }
+      if (!item["activation"] && !item["excitation"] && !item["activation_dynamics"]) {
+        // neither an input of its own nor a controller's: perhaps a misspelt `drives`
+        std::string drivers;
+        for (const auto& [name, unused] : driven) drivers += (drivers.empty() ? "" : ", ") + name;
+        throw InputError(Join(path, "activation") + " (" + yaml::Location(src, item) +
+                         "): missing required key: give activation (u(t) itself) or "
+                         "excitation (e(t), driving u through activation_dynamics), or name " +
+                         e.name + " in a controller's drives or co_contraction.actuators" +
+                         (drivers.empty() ? "" : " (the controllers drive: " + drivers + ")"));
+      }
       ActuatorDrive drive = ReadActuatorDrive(src, item, path, item["initial_activation"],
                                               Join(path, "initial_activation"), t_start, t_end);
       e.activation = std::move(drive.activation);

@@ -593,6 +593,11 @@ RunStats Simulation::Integrate(const NetworkSystem& system, const SolverOptions&
   }
   const int sensitivity_count = parameters == nullptr ? 0 : static_cast<int>(parameters->size());
   if (sensitivity_count > 0) {
+    if (!system.controllers().empty()) {
+      // df/dp and the activation rows' refinement assume inputs that no state feeds back into
+      throw std::invalid_argument(
+          "sensitivities of a network with controllers are not supported yet");
+    }
     for (std::size_t i = 0; i < parameters->size(); ++i) {
       const SensitivityParameter& p = (*parameters)[i];
       if (p.derivative == nullptr || static_cast<int>(p.initial.size()) != n) {
