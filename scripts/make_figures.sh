@@ -21,4 +21,7 @@ mkdir -p "$out"
 "$musclesim" plot "$work/stiffness.csv" --x model.velocity.epsilon --y steps \
   --color model.velocity.n -o "$out/stiffness.png" --size 1000x500 \
   --title "CVODE steps of scenarios/isometric.yaml against eps, by n"
+"$musclesim" run scenarios/stiffness_modulation.yaml -o "$work/stiffness_modulation.csv" --quiet
+"$musclesim" plot "$work/stiffness_modulation.csv" -o "$out/stiffness_modulation.png" --size 1000x800 \
+  --title "scenarios/stiffness_modulation.yaml: 2 N pulses at co-contraction 0.1, 0.4, 0.7"
 echo "figures written to $out/"
