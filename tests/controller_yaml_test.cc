@@ -27,15 +27,7 @@ using ::testing::HasSubstr;
 using testing::InputErrorOf;
 using testing::WriteTempFile;
 
-constexpr const char* kModels = R"(models:
-  muscle:
-    f_iso: 100.0
-    passive: {k_p: 1.0, alpha: 100.0, slack_length: 0.105}
-    active_length:
-      optimal_range: [0.095, 0.105]
-      gaussians: [{amplitude: 2.0, width: 4000.0, center: 0.1}]
-    velocity: {v_max: 1.0, n: 3, epsilon: 1.0e-3}
-)";
+const std::string kModels = "models:\n  muscle:\n" + testing::TestModelKeys(4);
 
 // A muscle holding a mass against a spring, its length following a ramp: the controller
 // drives its activation directly (no activation dynamics).

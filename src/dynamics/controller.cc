@@ -78,24 +78,29 @@ void Validate(const Controller& c) {
   }
 }
 
-Controller Controller::Pid(std::string name, Measurement measure, Waveform reference,
-                           PidGains gains, std::string drives) {
+namespace {
+
+Controller Law(std::string name, Measurement measure, Waveform reference, PidGains gains) {
   Controller c;
   c.name = std::move(name);
   c.measure = std::move(measure);
   c.reference = std::move(reference);
   c.gains = gains;
+  return c;
+}
+
+}  // namespace
+
+Controller Controller::Pid(std::string name, Measurement measure, Waveform reference,
+                           PidGains gains, std::string drives) {
+  Controller c = Law(std::move(name), std::move(measure), std::move(reference), gains);
   c.drives = std::move(drives);
   return Validated(std::move(c));
 }
 
 Controller Controller::CoContracting(std::string name, Measurement measure, Waveform reference,
                                      PidGains gains, CoContraction pair) {
-  Controller c;
-  c.name = std::move(name);
-  c.measure = std::move(measure);
-  c.reference = std::move(reference);
-  c.gains = gains;
+  Controller c = Law(std::move(name), std::move(measure), std::move(reference), gains);
   c.co_contraction = std::move(pair);
   return Validated(std::move(c));
 }

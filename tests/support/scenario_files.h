@@ -41,6 +41,18 @@ std::string InputErrorOf(const std::string& path, Load load) {
   return "accepted";
 }
 
+// The small model the readers' tests share (f_iso 100 N, slack at 0.105 m, one Gaussian
+// at 0.1 m, the canonical tension-velocity curve) as the keys of a model block, each line
+// indented by `indent` spaces.
+inline std::string TestModelKeys(int indent) {
+  const std::string pad(static_cast<std::size_t>(indent), ' ');
+  return pad + "f_iso: 100.0\n" + pad +
+         "passive: {k_p: 1.0, alpha: 100.0, slack_length: 0.105}\n" + pad + "active_length:\n" +
+         pad + "  optimal_range: [0.095, 0.105]\n" + pad +
+         "  gaussians: [{amplitude: 2.0, width: 4000.0, center: 0.1}]\n" + pad +
+         "velocity: {v_max: 1.0, n: 3, epsilon: 1.0e-3}\n";
+}
+
 inline std::string ReadFile(const std::string& path) {
   std::ifstream in(path);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
