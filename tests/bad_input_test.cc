@@ -559,6 +559,12 @@ const std::vector<Case> kCases = {
      {"elements[0].activation = {type: step, time: 0.05, before: 0.0, after: 1.0} ({at}): actuator muscle is driven by controllers[0] (hold): it has no activation of its own"}},
     {"NetworkControllerTypeUnknown", "run {file} -o -", Edit(Edit(Network("time: {start: 0.0, end: 1.0}\n", "time: {start: 0.0, end: 1.0}\ncontrollers:\n  - {name: hold, type: pid, measure: {element: muscle, quantity: length}, reference: {type: constant, value: 0.1}, gains: {kp: -100}, drives: muscle}\n"), "type: pid", "type: @lqr"), "     activation: {type: step, time: 0.05, before: 0.0, after: 1.0}}", "}"), 2,
      {"controllers[0].type = lqr ({at}): must be one of pid"}},
+    {"NetworkControllerGainBeyondASwitch", "run {file} -o -", Edit(Edit(Network("time: {start: 0.0, end: 1.0}\n", "time: {start: 0.0, end: 1.0}\ncontrollers:\n  - {name: hold, type: pid, measure: {element: muscle, quantity: length}, reference: {type: constant, value: 0.1}, gains: {kp: -100}, drives: muscle}\n"), "kp: -100", "kp: @-1e306"), "     activation: {type: step, time: 0.05, before: 0.0, after: 1.0}}", "}"), 2,
+     {"controllers[0].gains.kp = -1e306 ({at}): must be from -1e+09 to 1e+09"}},
+    {"NetworkControllerFeedforwardBeyondTheOutput", "run {file} -o -", Edit(Edit(Network("time: {start: 0.0, end: 1.0}\n", "time: {start: 0.0, end: 1.0}\ncontrollers:\n  - {name: hold, type: pid, measure: {element: muscle, quantity: length}, reference: {type: constant, value: 0.1}, gains: {kp: -100}, feedforward: {type: constant, value: 1e300}, drives: muscle}\n"), "value: 1e300", "value: @1e300"), "     activation: {type: step, time: 0.05, before: 0.0, after: 1.0}}", "}"), 2,
+     {"controllers[0].feedforward.value = 1e300 ({at}): must be from -1 to 1"}},
+    {"RunOutputOverTheScenario", "run {file} -o {file}", Scenario("", ""), 2,
+     {"-o {file}: is the scenario file ({file}), the run's input: write the output elsewhere"}},
 };
 // clang-format on
 

@@ -55,9 +55,10 @@ void Validate(const Controller& c) {
   ValidateMeasurement(c.measure);
   ValidateUnder("reference", c.reference, [](const Waveform& w) { Validate(w); });
   ValidateUnder("feedforward", c.feedforward, [](const Waveform& w) { Validate(w); });
-  Require(std::isfinite(c.gains.kp), "gains.kp", c.gains.kp, "must be finite");
-  Require(std::isfinite(c.gains.ki), "gains.ki", c.gains.ki, "must be finite");
-  Require(std::isfinite(c.gains.kd), "gains.kd", c.gains.kd, "must be finite");
+  const char* rule = "must be finite and within +-1e9 (beyond it the loop is a switch)";
+  Require(std::abs(c.gains.kp) <= kMaxGain, "gains.kp", c.gains.kp, rule);
+  Require(std::abs(c.gains.ki) <= kMaxGain, "gains.ki", c.gains.ki, rule);
+  Require(std::abs(c.gains.kd) <= kMaxGain, "gains.kd", c.gains.kd, rule);
   if (c.measure.quantity == MeasuredQuantity::kTension) {
     // d(err)/dt would need dT/dt, which depends on the accelerations being computed
     Require(c.gains.kd == 0.0, "gains.kd", c.gains.kd,

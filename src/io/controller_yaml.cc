@@ -56,9 +56,9 @@ PidGains ReadGains(const yaml::Source& src, const YAML::Node& item, const std::s
   const std::string at = Join(path, "gains");
   yaml::RequireMap(src, node, at, {"kp", "ki", "kd"});
   PidGains gains;
-  gains.kp = yaml::ReadOptionalNumber(src, node, at, "kp", 0.0);
-  gains.ki = yaml::ReadOptionalNumber(src, node, at, "ki", 0.0);
-  gains.kd = yaml::ReadOptionalNumber(src, node, at, "kd", 0.0);
+  gains.kp = yaml::ReadOptionalNumberIn(src, node, at, "kp", kGainRange, 0.0);
+  gains.ki = yaml::ReadOptionalNumberIn(src, node, at, "ki", kGainRange, 0.0);
+  gains.kd = yaml::ReadOptionalNumberIn(src, node, at, "kd", kGainRange, 0.0);
   return gains;
 }
 
@@ -107,7 +107,8 @@ Controller ReadController(const yaml::Source& src, const YAML::Node& item,
                            unit, t_start, t_end);
   c.gains = ReadGains(src, item, path);
   if (const YAML::Node node = item["feedforward"]) {
-    c.feedforward = ReadSignal(src, node, Join(path, "feedforward"), nullptr, t_start, t_end);
+    c.feedforward =
+        ReadSignal(src, node, Join(path, "feedforward"), &kFeedforwardRange, t_start, t_end);
   }
   const YAML::Node drives = item["drives"];
   const YAML::Node pair = item["co_contraction"];

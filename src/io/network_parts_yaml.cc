@@ -118,7 +118,7 @@ Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::
                                    driver->second);
         break;
       }
-      if (!item["activation"] && !item["excitation"] && !item["activation_dynamics"]) {
+      if (!item["activation"] && !item["excitation"]) {
         // neither an input of its own nor a controller's: perhaps a misspelt `drives`
         std::string drivers;
         for (const auto& [name, unused] : driven) drivers += (drivers.empty() ? "" : ", ") + name;

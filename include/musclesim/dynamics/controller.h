@@ -55,6 +55,10 @@ struct Controller {
                                   PidGains gains, CoContraction pair);
 };
 
+// The largest gain magnitude accepted [per unit measured]: beyond it the loop is a switch
+// (io/input_ranges.h kGainRange says why), and gains times errors stay finite.
+inline constexpr double kMaxGain = 1e9;
+
 // Throws ParameterError with paths as the YAML keys of a controller ("gains.kd",
 // "measure.element", "co_contraction.level.value", "drives").
 void Validate(const Controller& controller);

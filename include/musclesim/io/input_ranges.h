@@ -91,6 +91,20 @@ inline constexpr InputRange kActivationTimeConstantRange{
 inline constexpr InputRange kActivationRange{
     0.0, 1.0, "-", "an activation is a fraction of the full activation"};
 
+// A controller's gains [per unit measured, times s for ki^-1 and kd]: beyond 1e9 an error of
+// a nanometre or a nanonewton already saturates the output (the loop is a switch), and the
+// products of gains and errors stay finite.
+inline constexpr InputRange kGainRange{
+    -1e9, 1e9, "per unit measured",
+    "a gain of 1e9 saturates the output on an error of 1e-9 of its unit: beyond it the loop is "
+    "a switch"};
+// A controller's feedforward [-]: its output is clamped to [0, 1] (a pair's command acts
+// within [-1, 1]), so a larger offset only holds the output at a bound.
+inline constexpr InputRange kFeedforwardRange{
+    -1.0, 1.0, "-",
+    "the output is clamped to [0, 1] and a pair's command acts within [-1, 1]: a larger offset "
+    "only holds it at a bound"};
+
 // Frequency of a sine [Hz].
 inline constexpr InputRange kFrequencyRange{
     0.0, 1e6, "Hz",
