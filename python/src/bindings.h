@@ -1,0 +1,19 @@
+// The parts of the Python module, one source each; module.cc calls them in this order.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+namespace musclesim::python {
+
+// musclesim.InputError (and ParameterError, SolverError): C++ exceptions translated.
+void BindErrors(pybind11::module_& m);
+// Tension curves on NumPy arrays with their derivatives; the closed-form Gaussian fit.
+void BindModel(pybind11::module_& m);
+// Scenarios from files or dicts, changed with set(), run to NumPy columns; sensitivities.
+void BindScenario(pybind11::module_& m);
+// Stepping a network from a Python loop.
+void BindStepper(pybind11::module_& m);
+// Many scenarios, or a sweep file, on every core with the GIL released.
+void BindSweep(pybind11::module_& m);
+
+}  // namespace musclesim::python

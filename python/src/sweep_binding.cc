@@ -1,0 +1,7 @@
+#include "bindings.h"
+
+namespace musclesim::python {
+
+void BindSweep(pybind11::module_& /*m*/) {}
+
+}  // namespace musclesim::python
