@@ -40,4 +40,13 @@ if grep -qiE 'sundials|yaml' <<< "$link"; then
   echo "check_install: the model-only consumer links more than the model layer: $link" >&2
   exit 1
 fi
-echo "check_install: installed package OK (whole library; model layer alone without SUNDIALS or yaml-cpp)"
+python_note=""
+package_dir=$(sed -n 's/^MUSCLESIM_PYTHON_INSTALL_DIR:[A-Z]*=//p' "$build/CMakeCache.txt")
+if grep -q '^MUSCLESIM_PYTHON:BOOL=ON' "$build/CMakeCache.txt"; then
+  # the installed Python package imports from the prefix, away from the build tree
+  python=$(sed -n 's/^PYTHON_EXECUTABLE:[A-Z]*=//p' "$build/CMakeCache.txt")
+  (cd "$work" && PYTHONPATH="$work/prefix/$package_dir" "$python" -c \
+    'import musclesim, sys; sys.exit(0 if "prefix" in musclesim.__file__ else 1)')
+  python_note="; the Python package imports from $package_dir"
+fi
+echo "check_install: installed package OK (whole library; model layer alone without SUNDIALS or yaml-cpp$python_note)"
