@@ -1,7 +1,397 @@
+// musclesim.Model (the tension curves on NumPy arrays, with their derivatives), load_model
+// and fit_gaussians (the closed-form least-squares fit of Gaussians to a force-length target).
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
 #include "bindings.h"
+#include "musclesim/errors.h"
+#include "musclesim/io/input_ranges.h"
+#include "musclesim/io/model_text.h"
+#include "musclesim/io/model_yaml.h"
+#include "musclesim/model/gaussian_fit.h"
+#include "musclesim/model/tension.h"
+
+namespace py = pybind11;
 
 namespace musclesim::python {
 
-void BindModel(pybind11::module_& /*m*/) {}
+namespace {
+
+using Array = py::array_t<double, py::array::forcecast>;
+
+// Below this many points the GIL is kept: releasing it costs more than the loop.
+constexpr py::ssize_t kReleaseGilFrom = 4096;
+
+// The inputs broadcast against each other, as contiguous float64 arrays of one shape.
+struct Broadcast {
+  std::vector<py::array_t<double, py::array::c_style>> inputs;
+  std::vector<py::ssize_t> shape;
+  py::ssize_t size = 1;
+};
+
+Broadcast BroadcastInputs(const std::vector<py::object>& args) {
+  const py::module_ np = py::module_::import("numpy");
+  py::list arrays;
+  for (const py::object& arg : args) {
+    Array array = Array::ensure(arg);
+    if (!array) throw py::type_error("expected numbers or arrays of numbers");
+    arrays.append(array);
+  }
+  Broadcast out;
+  const py::object common = np.attr("broadcast")(*arrays).attr("shape");
+  for (const py::handle dim : common) out.shape.push_back(dim.cast<py::ssize_t>());
+  for (const py::ssize_t dim : out.shape) out.size *= dim;
+  for (const py::handle array : arrays) {
+    out.inputs.push_back(py::array_t<double, py::array::c_style>::ensure(
+        np.attr("ascontiguousarray")(np.attr("broadcast_to")(array, common))));
+  }
+  return out;
+}
+
+// A result of shape () becomes a numpy.float64 (a subclass of float), as NumPy's own
+// functions return for scalar arguments; any other shape stays an array.
+py::object Finish(py::array_t<double> result) {
+  if (result.ndim() == 0) return result[py::tuple()];
+  return result;
+}
+
+// Evaluates `fill(i, inputs, outputs)` for every point, writing `count` outputs of the
+// broadcast shape; the GIL is released for large arrays.
+template <typename Fill>
+std::vector<py::array_t<double>> Evaluate(const std::vector<py::object>& args, int count,
+                                          const Fill& fill) {
+  const Broadcast b = BroadcastInputs(args);
+  std::vector<py::array_t<double>> outputs;
+  std::vector<double*> out_data;
+  for (int k = 0; k < count; ++k) {
+    outputs.emplace_back(b.shape);
+    out_data.push_back(outputs.back().mutable_data());
+  }
+  std::vector<const double*> in_data;
+  for (const auto& input : b.inputs) in_data.push_back(input.data());
+  const auto loop = [&] {
+    for (py::ssize_t i = 0; i < b.size; ++i) fill(i, in_data, out_data);
+  };
+  if (b.size >= kReleaseGilFrom) {
+    py::gil_scoped_release release;
+    loop();
+  } else {
+    loop();
+  }
+  return outputs;
+}
+
+// One curve of one argument: value or slope of a CurvePoint.
+template <typename Curve>
+py::object Curve1(const py::object& arg, const Curve& curve) {
+  return Finish(Evaluate({arg}, 1, [&](py::ssize_t i, const std::vector<const double*>& in,
+                                       const std::vector<double*>& out) {
+                  out[0][i] = curve(in[0][i]);
+                })[0]);
+}
+
+// The model and what built it.
+struct Model {
+  std::shared_ptr<const TensionModel> tension;
+  std::optional<FitResult> fit_result;  // when the block asked for a fit
+};
+
+Model FromSpec(const ModelSpec& spec) {
+  return {std::make_shared<const TensionModel>(spec.params), spec.fit_result};
+}
+
+// A plain Python value JSON can write: NumPy scalars and arrays through tolist().
+py::object Jsonable(const py::object& value) {
+  if (py::hasattr(value, "tolist")) return value.attr("tolist")();
+  throw py::type_error("a model dict holds numbers, lists and dicts; got " +
+                       py::repr(value).cast<std::string>());
+}
+
+Model FromDict(const py::dict& params) {
+  // JSON is YAML: the block goes through the file reader, with its rules and messages
+  const py::object dumps = py::module_::import("json").attr("dumps");
+  const std::string text =
+      dumps(params, py::arg("indent") = 1, py::arg("default") = py::cpp_function(Jsonable))
+          .cast<std::string>();
+  ModelSpec spec;
+  {
+    py::gil_scoped_release release;  // a block asking for a fit runs it here
+    spec = ParseModelSpec("<model dict>", text);
+  }
+  return FromSpec(spec);
+}
+
+py::dict GaussianDict(const Gaussian& g) {
+  return py::dict(py::arg("amplitude") = g.amplitude, py::arg("width") = g.precision,
+                  py::arg("center") = g.center);
+}
+
+// The `model:` block's keys and values; explicit gaussians (a fit's result in its place).
+py::dict ParamsDict(const ModelParams& p) {
+  py::list gaussians;
+  for (const Gaussian& g : p.active_length.gaussians) gaussians.append(GaussianDict(g));
+  py::dict velocity(py::arg("v_max") = p.velocity.v_max, py::arg("n") = p.velocity.n,
+                    py::arg("epsilon") = p.velocity.epsilon);
+  const EccentricParams& e = p.velocity.eccentric;
+  if (e.v_max || e.n || e.limit) {
+    py::dict eccentric;
+    if (e.v_max) eccentric["v_max"] = *e.v_max;
+    if (e.n) eccentric["n"] = *e.n;
+    if (e.limit) eccentric["limit"] = *e.limit;
+    velocity["eccentric"] = eccentric;
+  }
+  return py::dict(
+      py::arg("f_iso") = p.f_iso,
+      py::arg("passive") =
+          py::dict(py::arg("k_p") = p.passive.k_p, py::arg("alpha") = p.passive.alpha,
+                   py::arg("slack_length") = p.passive.slack_length),
+      py::arg("active_length") =
+          py::dict(py::arg("optimal_range") =
+                       py::make_tuple(p.active_length.optimal_min, p.active_length.optimal_max),
+                   py::arg("sigma") = p.active_length.sigma, py::arg("gaussians") = gaussians),
+      py::arg("velocity") = velocity);
+}
+
+py::dict FitDict(const FitResult& fit) {
+  const auto column = [&](auto field) {
+    py::array_t<double> out(static_cast<py::ssize_t>(fit.gaussians.size()));
+    for (std::size_t k = 0; k < fit.gaussians.size(); ++k) {
+      out.mutable_data()[k] = fit.gaussians[k].*field;
+    }
+    return out;
+  };
+  py::list gaussians;
+  for (const Gaussian& g : fit.gaussians) gaussians.append(GaussianDict(g));
+  return py::dict(py::arg("amplitudes") = column(&Gaussian::amplitude),
+                  py::arg("widths") = column(&Gaussian::precision),
+                  py::arg("centers") = column(&Gaussian::center),
+                  py::arg("gaussians") = gaussians, py::arg("cost") = fit.cost,
+                  py::arg("relative_residual") = fit.relative_residual,
+                  py::arg("iterations") = fit.iterations, py::arg("starts") = fit.starts);
+}
+
+std::vector<double> Vector(const py::object& values, const char* name) {
+  const Array array = Array::ensure(values);
+  if (!array || array.ndim() != 1) {
+    throw py::value_error(std::string(name) + " must be a 1-d sequence of numbers");
+  }
+  return {array.data(), array.data() + array.size()};
+}
+
+py::dict Fit(const py::object& x, const py::object& f, int n, std::optional<std::string> target,
+             std::optional<std::string> preset, double optimal_length,
+             std::optional<std::pair<double, double>> optimal_range, double sigma,
+             bool nonnegative, const py::object& widths, const py::object& centers) {
+  FitSpec spec;
+  spec.count = n;
+  spec.nonnegative = nonnegative;
+  const bool has_points = !x.is_none() || !f.is_none();
+  if (preset) {
+    if (has_points) throw py::value_error("give either points (x, f) or a preset, not both");
+    spec.target = FitTargetKind::kPreset;
+    spec.preset = ParseForceLengthPreset(*preset);
+    spec.optimal_length = optimal_length;
+  } else if (has_points) {
+    spec.target = ParseFitTargetKind(target.value_or("samples"));
+    const std::vector<double> xs = Vector(x, "x");
+    const std::vector<double> ys = Vector(f, "f");
+    if (xs.size() != ys.size()) {
+      throw py::value_error("x and f must have the same length (" + std::to_string(xs.size()) +
+                            " and " + std::to_string(ys.size()) + ")");
+    }
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      // the file reader's bounds on fit points, so that the fit's integrals stay finite
+      const std::string at = "points[" + std::to_string(i) + "]";
+      Require(kPositionRange.Contains(xs[i]), at + "[0]", xs[i], kPositionRange.Rule());
+      Require(kFitValueRange.Contains(ys[i]), at + "[1]", ys[i], kFitValueRange.Rule());
+      spec.points.push_back({xs[i], ys[i]});
+    }
+  } else {
+    spec.target = ParseFitTargetKind(target.value_or("indicator"));
+  }
+  double l1 = 0.0;
+  double l2 = 1.0;
+  if (spec.target == FitTargetKind::kIndicator) {
+    if (!optimal_range) throw py::value_error("target indicator needs optimal_range=(l1, l2)");
+    l1 = optimal_range->first;
+    l2 = optimal_range->second;
+  }
+  // range and sigma under the model's rules (a dummy component: the fit supplies them)
+  Validate(ActiveLengthParams{l1, l2, sigma, {Gaussian{1.0, 1.0, 0.0}}});
+  if (!widths.is_none()) spec.precisions = Vector(widths, "widths");
+  if (!centers.is_none()) spec.centers = Vector(centers, "centers");
+  FitResult result;
+  {
+    py::gil_scoped_release release;
+    result = FitGaussians(spec, l1, l2, sigma);
+  }
+  return FitDict(result);
+}
+
+}  // namespace
+
+void BindModel(py::module_& m) {
+  py::class_<Model>(m, "Model", R"(The tension model of one actuator (docs/model.md):
+T(x, v, u) = T_p(x) + u f_iso f_L(x) g(v), x the length [m], v the shortening velocity [m/s]
+(positive when the actuator shortens, v = -dx/dt), u the activation in [0, 1], T in [N].
+
+Every curve method takes numbers or NumPy arrays (converted to float64) and broadcasts its
+arguments against each other as NumPy does; it returns float64 arrays of the broadcast shape,
+or a numpy.float64 (a subclass of float) when every argument is a scalar or 0-d. Immutable.)")
+      .def(py::init(&FromDict), py::arg("params"),
+           R"(A model from a dict with the keys of a scenario's `model:` block (README "The model
+block", docs/model.md): f_iso [N]; passive {k_p [N], alpha [1/m], slack_length [m]};
+active_length {optimal_range [l1, l2] [m], sigma (optional), and gaussians [{amplitude,
+width, center}] or fit {count, target, ...}}; velocity {v_max [m/s], n, epsilon [m/s],
+eccentric {v_max, n, limit} (optional)}. The block is read by the same reader as a file
+(the dict is written as JSON, which is YAML): the same rules, and the same error, naming
+"<model dict>:line:column" and the key path, for a value that breaks one.)")
+      .def("tension",
+           [](const Model& self, const py::object& x, const py::object& v, const py::object& u) {
+             const TensionModel& model = *self.tension;
+             return Finish(Evaluate({x, v, u}, 1, [&](py::ssize_t i, const auto& in,
+                                                      const auto& out) {
+                             out[0][i] = model.Evaluate(in[0][i], in[1][i], in[2][i]).total;
+                           })[0]);
+           },
+           py::arg("x"), py::arg("v"), py::arg("u"),
+           "Total tension T [N] at length x [m], shortening velocity v [m/s] (> 0 shortening) "
+           "and activation u [-].")
+      .def("tension_parts",
+           [](const Model& self, const py::object& x, const py::object& v, const py::object& u) {
+             const TensionModel& model = *self.tension;
+             auto parts = Evaluate({x, v, u}, 6, [&](py::ssize_t i, const auto& in,
+                                                     const auto& out) {
+               const TensionSample s = model.Evaluate(in[0][i], in[1][i], in[2][i]);
+               out[0][i] = s.total;
+               out[1][i] = s.passive;
+               out[2][i] = s.active;
+               out[3][i] = s.d_length;
+               out[4][i] = s.d_velocity;
+               out[5][i] = s.d_activation;
+             });
+             py::dict result;
+             const char* names[] = {"total",    "passive",    "active",
+                                    "d_length", "d_velocity", "d_activation"};
+             for (int k = 0; k < 6; ++k) result[names[k]] = Finish(parts[k]);
+             return result;
+           },
+           py::arg("x"), py::arg("v"), py::arg("u"),
+           R"(The tension and its parts at (x [m], v [m/s], u [-]), as a dict of arrays:
+total T [N], passive T_p [N], active T_a = u f_iso f_L g [N], d_length dT/dx [N/m],
+d_velocity dT/dv [N s/m] (v the shortening velocity), d_activation dT/du [N]. The
+derivatives are the analytic ones the simulator's Jacobian uses; at x = slack_length the
+passive slope is the left one (0).)")
+      .def("passive",
+           [](const Model& self, const py::object& x) {
+             const PassiveParams& p = self.tension->params().passive;
+             return Curve1(x, [&](double xi) { return PassiveTension(p, xi).value; });
+           },
+           py::arg("x"),
+           "Passive tension T_p [N] at length x [m]: k_p (exp(alpha (x - slack_length)) - 1) "
+           "above the slack length, 0 at or below it.")
+      .def("f_L",
+           [](const Model& self, const py::object& x) {
+             const ActiveLengthCurve& c = self.tension->active_length();
+             return Curve1(x, [&](double xi) { return c.Evaluate(xi).value; });
+           },
+           py::arg("x"),
+           "Active tension-length factor f_L [-] at length x [m]: the sum of Gaussians divided "
+           "by its maximum over optimal_range, so its peak there is 1.")
+      .def("f_L_slope",
+           [](const Model& self, const py::object& x) {
+             const ActiveLengthCurve& c = self.tension->active_length();
+             return Curve1(x, [&](double xi) { return c.Evaluate(xi).slope; });
+           },
+           py::arg("x"), "df_L/dx [1/m] at length x [m].")
+      .def("g",
+           [](const Model& self, const py::object& v) {
+             const VelocityCurve& c = self.tension->velocity();
+             return Curve1(v, [&](double vi) { return c.Evaluate(vi).value; });
+           },
+           py::arg("v"),
+           "Tension-velocity factor g [-] at shortening velocity v [m/s] (> 0 shortening): 1 at "
+           "v = 0, 0 at v = v_max, epsilon-regularised so it is smooth at 0.")
+      .def("g_slope",
+           [](const Model& self, const py::object& v) {
+             const VelocityCurve& c = self.tension->velocity();
+             return Curve1(v, [&](double vi) { return c.Evaluate(vi).slope; });
+           },
+           py::arg("v"), "dg/dv [s/m] at shortening velocity v [m/s].")
+      .def_property_readonly(
+          "params", [](const Model& self) { return ParamsDict(self.tension->params()); },
+          "The parameters as a dict with the `model:` block's keys (units as there), the "
+          "Gaussians always explicit (a fit's result in its place): Model(model.params) is the "
+          "same model.")
+      .def_property_readonly(
+          "optimal_length", [](const Model& self) { return self.tension->active_length().optimal_length(); },
+          "Where f_L peaks on optimal_range [m] (f_L = 1 there).")
+      .def_property_readonly(
+          "fit_result",
+          [](const Model& self) -> py::object {
+            if (!self.fit_result) return py::none();
+            return FitDict(*self.fit_result);
+          },
+          "The fit the block asked for (a dict as fit_gaussians returns), or None when the "
+          "block gave its Gaussians.")
+      .def("__repr__", [](const Model& self) {
+        const ModelParams& p = self.tension->params();
+        return "<musclesim.Model f_iso=" + FormatNumber(p.f_iso) + " N, " +
+               std::to_string(p.active_length.gaussians.size()) + " Gaussians, v_max=" +
+               FormatNumber(p.velocity.v_max) + " m/s>";
+      });
+
+  m.def(
+      "load_model",
+      [](const std::string& path) {
+        ModelSpec spec;
+        {
+          py::gil_scoped_release release;  // a block asking for a fit runs it here
+          spec = LoadModelSpec(path);
+        }
+        return FromSpec(spec);
+      },
+      py::arg("path"),
+      R"(The model of a YAML file: a model file (`name` and `model` only, as the CLI writes) or a
+scenario, which is then checked whole (as `musclesim curves FILE` reads it). Raises the
+reader's error (file:line:column, key, value, rule) for bad input.)");
+
+  m.def("fit_gaussians", &Fit, py::arg("x") = py::none(), py::arg("f") = py::none(),
+        py::arg("n") = 3, py::kw_only(), py::arg("target") = py::none(),
+        py::arg("preset") = py::none(), py::arg("optimal_length") = 1.0,
+        py::arg("optimal_range") = py::none(), py::arg("sigma") = 1.0,
+        py::arg("nonnegative") = false, py::arg("widths") = py::none(),
+        py::arg("centers") = py::none(),
+        R"(Least-squares fit of n Gaussians (1..12) to a force-length target (docs/model.md
+section 3.2; the `fit:` block of a model). Each component is
+psi_k(x) = a_k / sqrt(2 pi sigma) exp(-b_k (x - d_k)^2 / (2 sigma)), the sum unnormalised.
+
+Targets:
+  fit_gaussians(x, f, n)                       samples (default with points): the cost is
+      the sum over i of (sum_k psi_k(x_i) - f_i)^2 [-]; x in m, f on the f_L scale [-].
+  fit_gaussians(x, f, n, target="polygon")     the piecewise-linear curve through (x, f),
+      x strictly increasing, zero outside: the cost is the integral over the real line of
+      the squared difference [m].
+  fit_gaussians(n=..., target="indicator", optimal_range=(l1, l2))   1 on [l1, l2] [m],
+      0 elsewhere; cost as for a polygon.
+  fit_gaussians(n=..., preset=NAME, optimal_length=L)   a standard curve (degroote2016,
+      thelen2003, gordon1966, mujoco) scaled to peak at L [m]; cost as for a polygon.
+Amplitudes come from the linear solve (>= 0 with nonnegative=True); widths b_k (the YAML
+key `width`, an inverse variance [1/m^2 when sigma = 1]) and centers d_k [m] from a
+deterministic multi-start minimisation, unless both widths and centers are given (n values
+each): then the shapes are fixed and only the amplitudes are solved.
+
+Returns a dict: amplitudes, widths, centers (float64 arrays of n), gaussians (the list of
+{amplitude, width, center} for a model block), cost (see above), relative_residual (cost
+over the integral of target^2, or the sum of f_i^2 for samples), iterations (cost evaluations
+of the best start; 0 with shapes fixed), starts (starting points tried). A bad argument
+raises the library's ParameterError (a ValueError) naming it.)");
+}
 
 }  // namespace musclesim::python

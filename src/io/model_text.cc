@@ -1,0 +1,12 @@
+#include "musclesim/io/model_text.h"
+
+#include "io/model_yaml_node.h"
+
+namespace musclesim {
+
+ModelSpec ParseModelSpec(const std::string& source, const std::string& text) {
+  // yaml::Parse makes the whole-document checks a file gets (duplicate keys, one document)
+  return ReadModelSpec(yaml::Source{source}, yaml::Parse(source, text), "model");
+}
+
+}  // namespace musclesim
