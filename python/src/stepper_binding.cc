@@ -1,7 +1,166 @@
+// musclesim.Stepper: a network scenario stepped piece by piece from a Python loop
+// (solver/stepper.h). advance() converts nothing but a float and returns one of three
+// prebuilt status strings, so that a 1 kHz loop spends its time integrating.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
 #include "bindings.h"
+#include "musclesim/io/network_scenario.h"
+#include "musclesim/solver/stepper.h"
+#include "network_values.h"
+#include "overrides.h"
 
 namespace musclesim::python {
 
-void BindStepper(pybind11::module_& /*m*/) {}
+namespace py = pybind11;
+
+namespace {
+
+class PyStepper {
+ public:
+  PyStepper(const std::string& path, const py::object& overrides, std::optional<double> rtol,
+            std::optional<double> atol) {
+    const std::vector<std::string> sets = OverridesFrom(overrides);
+    NetworkScenarioSpec spec;
+    {
+      py::gil_scoped_release release;
+      spec = LoadNetworkScenario(path, sets);
+    }
+    if (rtol) spec.solver.rtol = *rtol;
+    if (atol) spec.solver.atol = *atol;
+    StepperStart start;
+    start.t_start = spec.t_start;
+    start.limits = spec.limits;
+    stepper_ = std::make_unique<Stepper>(spec.Build(), spec.solver, std::move(start));
+    for (const std::string& column : NumericNetworkColumns(stepper_->system())) {
+      columns_.append(py::str(column));
+    }
+    statuses_[static_cast<int>(RunStatus::kCompleted)] = py::str("completed");
+    statuses_[static_cast<int>(RunStatus::kLimit)] = py::str("limit");
+    statuses_[static_cast<int>(RunStatus::kFailed)] = py::str("failed");
+  }
+
+  py::str Advance(double t_next) {
+    RunStatus status;
+    {
+      py::gil_scoped_release release;
+      status = stepper_->Advance(t_next);
+    }
+    return statuses_[static_cast<int>(status)];
+  }
+
+  // The reference for the overhead of advance(): the same calls, looped in C++.
+  py::str AdvanceEach(const py::array_t<double, py::array::c_style | py::array::forcecast>& times) {
+    const auto view = times.unchecked<1>();
+    RunStatus status = RunStatus::kCompleted;
+    {
+      py::gil_scoped_release release;
+      for (py::ssize_t k = 0; k < view.shape(0) && status == RunStatus::kCompleted; ++k) {
+        status = stepper_->Advance(view(k));
+      }
+    }
+    return statuses_[static_cast<int>(status)];
+  }
+
+  void SetActivation(const std::string& actuator, double value) {
+    stepper_->SetActivation(actuator, value);
+  }
+
+  double time() const { return stepper_->time(); }
+
+  py::array_t<double> state() const {
+    const std::vector<double>& y = stepper_->state();
+    return py::array_t<double>(static_cast<py::ssize_t>(y.size()), y.data());
+  }
+
+  py::dict Sample() const {
+    values_.clear();
+    AppendNumericNetworkValues(stepper_->system(), stepper_->sample(), values_);
+    py::dict sample;
+    sample["t"] = stepper_->time();
+    for (std::size_t k = 0; k < values_.size(); ++k) sample[columns_[k]] = values_[k];
+    return sample;
+  }
+
+  py::dict Stats() const {
+    const RunStats& s = stepper_->stats();
+    py::dict stats;
+    stats["status"] = std::string(ToString(s.status));
+    stats["steps"] = s.steps;
+    stats["rhs_evals"] = s.rhs_evals;
+    stats["jac_evals"] = s.jac_evals;
+    stats["linear_setups"] = s.linear_setups;
+    stats["newton_iters"] = s.newton_iters;
+    stats["newton_conv_fails"] = s.newton_conv_fails;
+    stats["error_test_fails"] = s.error_test_fails;
+    stats["wall_seconds"] = s.wall_seconds;
+    stats["final_time"] = s.final_time;
+    stats["linear_solver"] = std::string(ToString(s.linear_solver));
+    stats["message"] = s.message;
+    return stats;
+  }
+
+  const std::string& message() const { return stepper_->message(); }
+  py::list columns() const { return columns_; }
+
+ private:
+  std::unique_ptr<Stepper> stepper_;
+  py::list columns_;          // names of sample()'s values after t, in the CSV's order
+  py::str statuses_[3];       // by RunStatus
+  mutable std::vector<double> values_;  // sample()'s scratch
+};
+
+}  // namespace
+
+void BindStepper(py::module_& m) {
+  py::class_<PyStepper>(m, "Stepper",
+                        "A network scenario integrated piece by piece from Python (the C++ "
+                        "Stepper): advance to the next sample time, read the state, set the "
+                        "activation of actuators no controller drives, advance again. Times in "
+                        "s, lengths in m, tensions in N, activations in [0, 1].")
+      .def(py::init<const std::string&, const py::object&, std::optional<double>,
+                    std::optional<double>>(),
+           py::arg("path"), py::arg("set") = py::none(), py::arg("rtol") = py::none(),
+           py::arg("atol") = py::none(),
+           "Reads the network scenario `path` (YAML with `nodes:`), applying `set` first: a "
+           "list of \"key=value\" strings as --set takes them, or a dict {key: value}. `rtol` "
+           "and `atol` (m, m/s) replace the scenario's solver tolerances. Starts at the "
+           "scenario's time.start with its limits; its time.end and output are not used.")
+      .def("advance", &PyStepper::Advance, py::arg("t"),
+           "Integrates from `time` to `t` [s] (GIL released) and returns \"completed\" (time "
+           "is then t), \"limit\" (a length limit was reached; no further advance) or "
+           "\"failed\" (see `message`). Raises ValueError unless t is finite and after time.")
+      .def("advance_each", &PyStepper::AdvanceEach, py::arg("times"),
+           "advance(t) for every t of the 1-D array `times` [s], looped in C++ with the GIL "
+           "released; stops at the first that does not complete and returns its status.")
+      .def("set_activation", &PyStepper::SetActivation, py::arg("actuator"), py::arg("u"),
+           "Holds the activation of `actuator` (with activation dynamics, its excitation) at "
+           "`u` in [0, 1] from `time` on (zero-order hold); the next advance restarts the "
+           "integrator. Raises ValueError for an unknown name, a non-actuator, an actuator a "
+           "controller drives, or u outside [0, 1].")
+      .def_property_readonly("time", &PyStepper::time, "Where the integration stands [s].")
+      .def_property_readonly("state", &PyStepper::state,
+                             "A copy of the state y(time) as a 1-D float64 array, in the "
+                             "network's state order (positions [m] and velocities [m/s] of "
+                             "the free nodes, then activations of actuators with dynamics).")
+      .def("sample", &PyStepper::Sample,
+           "What the network CSV would record at `time`: a dict {column: float} with the "
+           "CSV's column names (t, <node>.position, <node>.velocity, <element>.length, "
+           "<element>.tension, <actuator>.shortening_velocity, .activation, .excitation, "
+           ".tension_passive, .tension_active, <node>.load, <controller>.reference, "
+           ".measured, .error, .output), without the text column <actuator>.phase.")
+      .def_property_readonly("columns", &PyStepper::columns,
+                             "The keys of sample() after \"t\", in the CSV's order.")
+      .def_property_readonly("stats", &PyStepper::Stats,
+                             "Solver counters summed over every advance (steps, rhs_evals, "
+                             "...), wall_seconds [s], final_time [s], status and message.")
+      .def_property_readonly("message", &PyStepper::message,
+                             "Why the last advance ended early (empty if it completed).");
+}
 
 }  // namespace musclesim::python
