@@ -5,3 +5,4 @@ velocity is positive when the actuator shortens. See help() on each function and
 """
 from ._musclesim import *  # noqa: F401,F403
 from ._musclesim import __doc__ as _extension_doc  # noqa: F401
+from .scenario import scenario_from_dict  # noqa: F401,E402
