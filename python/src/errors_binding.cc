@@ -102,6 +102,15 @@ void BindErrors(py::module_& m) {
   m.add_object("InputError", py::reinterpret_borrow<py::object>(input_error_type));
   m.add_object("ParameterError", py::reinterpret_borrow<py::object>(parameter_error_type));
 
+  // the library's own check, for tests of the translation: a ParameterError built by it
+  m.def(
+      "_require",
+      [](bool condition, const std::string& path, double value, const std::string& rule) {
+        Require(condition, path, value, rule);
+      },
+      py::arg("condition"), py::arg("path"), py::arg("value"), py::arg("rule"),
+      "The library's Require: raises ParameterError(path, value, rule) unless `condition`.");
+
   // tried before pybind11's own translators, which map std::invalid_argument to ValueError
   // and std::runtime_error to RuntimeError with the message (InputError and ParameterError
   // derive from them)
