@@ -224,8 +224,9 @@ std::string OverrideText(const std::string& key, const py::handle& value) {
   } else if (py::isinstance<py::float_>(value)) {
     text = py::repr(value).cast<std::string>();
   } else {
-    throw py::type_error("set(" + key + ", ...): the value must be a number, a bool or a str, not " +
-                         py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+    const std::string type = py::str(py::type::of(value).attr("__name__"));
+    throw py::type_error("set(" + key + ", ...): the value must be a number, a bool or a str, " +
+                         "not " + type);
   }
   return key + "=" + text;
 }

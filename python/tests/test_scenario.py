@@ -239,3 +239,20 @@ def test_to_dataframe_with_pandas():
     frame = result.to_dataframe()
     assert list(frame.columns) == list(result.columns)
     np.testing.assert_array_equal(frame["t"].to_numpy(), result.times)
+
+
+@needs_cli
+def test_solver_failure_is_a_result_with_the_rows_so_far(tmp_path):
+    path = scenario_path("concentric.yaml")
+    result = musclesim.load_scenario(path, set={"solver.max_steps": 5}).run()
+    assert result.status == "failed" and "max_steps" in result.stats["message"]
+    # the CLI exits 3 and leaves the rows computed so far in PATH.partial
+    out = tmp_path / "failed.csv"
+    cli = subprocess.run(
+        [CLI, "run", path, "-o", str(out), "--quiet", "--set", "solver.max_steps=5"],
+        capture_output=True, text=True)
+    assert cli.returncode == 3
+    partial = np.loadtxt(str(out) + ".partial", delimiter=",", skiprows=1, dtype=str, ndmin=2)
+    assert 0 < len(result) == partial.shape[0]
+    # exact, as in assert_same_as_cli
+    np.testing.assert_array_equal(result["length"], partial[:, 1].astype(np.float64))
