@@ -5,4 +5,5 @@ velocity is positive when the actuator shortens. See help() on each function and
 """
 from ._musclesim import *  # noqa: F401,F403
 from ._musclesim import __doc__ as _extension_doc  # noqa: F401
-from .stepping import sweep
+from .scenario import scenario_from_dict  # noqa: F401,E402
+from .stepping import sweep  # noqa: F401,E402

@@ -1,7 +1,128 @@
+// musclesim.InputError and musclesim.ParameterError: the library's exceptions raised in
+// Python with their message, plus the parts a program wants without parsing it.
+#include <regex>
+#include <optional>
+#include <string>
+
 #include "bindings.h"
+#include "musclesim/errors.h"
+
+namespace py = pybind11;
 
 namespace musclesim::python {
 
-void BindErrors(pybind11::module_& /*m*/) {}
+namespace {
+
+// The Python types, made once by BindErrors and kept for the interpreter's life.
+PyObject* input_error_type = nullptr;
+PyObject* parameter_error_type = nullptr;
+
+struct MessageParts {
+  std::optional<std::string> key;       // the dotted key path
+  std::optional<std::string> location;  // "file:line:column"
+};
+
+// The key and the place an InputError's message names. The readers write them as
+//   KEY = VALUE (FILE:LINE:COLUMN): RULE      (yaml_fields.cc Fail)
+//   KEY (FILE:LINE:COLUMN): RULE              (a missing or unknown key)
+//   FILE:LINE:COLUMN: YAML syntax error: ...
+//   --set KEY=VALUE: ...                      (an override that names no value)
+// and a value given by an override is placed at "--set" (no file position: location None).
+MessageParts ParseInputMessage(const std::string& message) {
+  MessageParts parts;
+  static const std::regex located(R"(^(\(top level\)|\S+)(?: = .*?)? \(([^()]*)\): )");
+  static const std::regex syntax(R"(^(.*:\d+:\d+): )");
+  static const std::regex override_text(R"(^--set ([^=:\s]+)=)");
+  static const std::regex position(R"(.*:\d+:\d+$)");
+  std::smatch match;
+  if (std::regex_search(message, match, override_text)) {
+    parts.key = match[1].str();
+  } else if (std::regex_search(message, match, located)) {
+    if (match[1].str() != "(top level)") parts.key = match[1].str();
+    const std::string where = match[2].str();
+    if (std::regex_match(where, position)) parts.location = where;
+  } else if (std::regex_search(message, match, syntax)) {
+    parts.location = match[1].str();
+  }
+  return parts;
+}
+
+py::object OptionalText(const std::optional<std::string>& text) {
+  return text ? py::object(py::str(*text)) : py::object(py::none());
+}
+
+void RaiseInputError(const std::string& message) {
+  const MessageParts parts = ParseInputMessage(message);
+  py::object error = py::reinterpret_borrow<py::object>(input_error_type)(message);
+  error.attr("key") = OptionalText(parts.key);
+  error.attr("location") = OptionalText(parts.location);
+  PyErr_SetObject(input_error_type, error.ptr());
+}
+
+void RaiseParameterError(const ParameterError& e) {
+  py::object error = py::reinterpret_borrow<py::object>(parameter_error_type)(e.what());
+  error.attr("path") = e.path();
+  error.attr("value") = e.value();
+  error.attr("rule") = e.rule();
+  PyErr_SetObject(parameter_error_type, error.ptr());
+}
+
+}  // namespace
+
+void BindErrors(py::module_& m) {
+  input_error_type = PyErr_NewExceptionWithDoc(
+      "musclesim.InputError",
+      "Invalid input (a scenario file, a dict, an override), with a complete message naming "
+      "the key path, the value, where it was given and the rule broken.\n\n"
+      "Attributes:\n"
+      "  key: the dotted key path, e.g. 'elements[0].activation' or 'load[0].value', or None "
+      "when the message names none (a file that cannot be read).\n"
+      "  location: 'file:line:column' (1-based) where the value was written, or None (a "
+      "value given by set() or an override, or no position known). A scenario made by "
+      "scenario_from_dict names its file '<dict>'.",
+      PyExc_Exception, nullptr);
+  parameter_error_type = PyErr_NewExceptionWithDoc(
+      "musclesim.ParameterError",
+      "A parameter value that breaks a rule (a ValueError).\n\n"
+      "Attributes:\n"
+      "  path: the parameter's dotted path inside the block validated, e.g. 'velocity.n'.\n"
+      "  value: the value as text.\n"
+      "  rule: the rule it breaks, e.g. 'must be an integer >= 1'.",
+      PyExc_ValueError, nullptr);
+  if (input_error_type == nullptr || parameter_error_type == nullptr) {
+    throw py::error_already_set();
+  }
+  // instances made in Python (raise InputError("...")) have the attributes too
+  for (const char* name : {"key", "location"}) {
+    PyObject_SetAttrString(input_error_type, name, Py_None);
+  }
+  for (const char* name : {"path", "value", "rule"}) {
+    PyObject_SetAttrString(parameter_error_type, name, Py_None);
+  }
+  m.add_object("InputError", py::reinterpret_borrow<py::object>(input_error_type));
+  m.add_object("ParameterError", py::reinterpret_borrow<py::object>(parameter_error_type));
+
+  // the library's own check, for tests of the translation: a ParameterError built by it
+  m.def(
+      "_require",
+      [](bool condition, const std::string& path, double value, const std::string& rule) {
+        Require(condition, path, value, rule);
+      },
+      py::arg("condition"), py::arg("path"), py::arg("value"), py::arg("rule"),
+      "The library's Require: raises ParameterError(path, value, rule) unless `condition`.");
+
+  // tried before pybind11's own translators, which map std::invalid_argument to ValueError
+  // and std::runtime_error to RuntimeError with the message (InputError and ParameterError
+  // derive from them)
+  py::register_exception_translator([](std::exception_ptr thrown) {
+    try {
+      if (thrown) std::rethrow_exception(thrown);
+    } catch (const InputError& e) {
+      RaiseInputError(e.what());
+    } catch (const ParameterError& e) {
+      RaiseParameterError(e);
+    }
+  });
+}
 
 }  // namespace musclesim::python

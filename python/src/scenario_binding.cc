@@ -1,7 +1,412 @@
+// Scenarios from files or dicts, changed with set(), run to NumPy columns. A run drives the
+// very writers `musclesim run` uses (TrajectoryCsvWriter, NetworkCsvWriter,
+// SensitivityCsvRun) into a temporary file and parses it back, so that its columns are the
+// CLI CSV's, named and ordered as it names them, to the last digit it prints (17 significant
+// digits read back give the same double).
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
 #include "bindings.h"
+#include "musclesim/errors.h"
+#include "musclesim/io/network_csv.h"
+#include "musclesim/io/network_scenario.h"
+#include "musclesim/io/output_file.h"
+#include "musclesim/io/run_scenario.h"
+#include "musclesim/io/scenario.h"
+#include "musclesim/io/sensitivity_run.h"
+#include "musclesim/io/trajectory_csv.h"
+
+namespace py = pybind11;
 
 namespace musclesim::python {
 
-void BindScenario(pybind11::module_& /*m*/) {}
+namespace {
+
+// A file in the system's temporary directory, removed (with a leftover PATH.partial) when
+// the last owner lets go.
+class TempFile {
+ public:
+  explicit TempFile(const std::string& suffix) {
+    std::string pattern =
+        (std::filesystem::temp_directory_path() / ("musclesim-XXXXXX" + suffix)).string();
+    const int fd = mkstemps(pattern.data(), static_cast<int>(suffix.size()));
+    if (fd < 0) throw std::runtime_error("cannot create a temporary file in " + pattern);
+    close(fd);
+    path_ = pattern;
+  }
+  ~TempFile() {
+    std::error_code ignored;
+    std::filesystem::remove(path_, ignored);
+    std::filesystem::remove(path_ + ".partial", ignored);
+  }
+  TempFile(const TempFile&) = delete;
+  TempFile& operator=(const TempFile&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+std::string ReadWhole(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// A scenario: the file it is read from, the overrides set() gave, and what it is.
+struct Scenario {
+  std::string path;                 // the file read (a temporary one for a dict)
+  std::string display;              // the file's name in messages ("<dict>" for a dict)
+  std::shared_ptr<TempFile> text;   // owns `path` when it is temporary
+  std::vector<std::string> overrides;
+  bool network = false;
+  std::string name;
+
+  // Runs `read` and re-throws its InputError with the temporary file's path shown as
+  // `display`.
+  template <typename Read>
+  auto Located(Read read) const {
+    try {
+      return read();
+    } catch (const InputError& e) {
+      if (display == path) throw;
+      std::string message = e.what();
+      for (std::size_t at = message.find(path); at != std::string::npos;
+           at = message.find(path, at + display.size())) {
+        message.replace(at, path.size(), display);
+      }
+      throw InputError(message);
+    }
+  }
+
+  // Reads and validates the file with the overrides, as `musclesim run` does before it runs.
+  void Validate() {
+    Located([&] {
+      network = IsNetworkScenario(path);
+      name = network ? LoadNetworkScenario(path, overrides).name
+                     : LoadScenario(path, overrides).name;
+      return 0;
+    });
+  }
+};
+
+// What one run wrote: the CSV text and the stats JSON of `musclesim run --stats`.
+struct RunText {
+  std::string csv;
+  std::string stats_json;
+};
+
+// `musclesim run` without the files: the same branch, writer and stats (run_command.cc).
+RunText RunLikeCli(const Scenario& scenario, const std::vector<std::string>& parameters) {
+  return scenario.Located([&] {
+    TempFile file(".csv");
+    RunText text;
+    if (!parameters.empty() || HasSensitivities(scenario.path)) {
+      SensitivityCsvRun run(scenario.path, scenario.overrides, parameters);
+      StreamedOutput csv(file.path());
+      const RunStats stats = run.Run(csv);
+      csv.Commit();
+      std::vector<SensitivityNote> notes;
+      for (std::size_t i = 0; i < run.parameters().size(); ++i) {
+        notes.push_back({run.parameters()[i], std::string(ToString(run.sources()[i]))});
+      }
+      text.stats_json = FormatStatsJson(stats, notes);
+    } else if (scenario.network) {
+      const NetworkScenarioSpec spec = LoadNetworkScenario(scenario.path, scenario.overrides);
+      const NetworkSystem system = spec.Build();
+      StreamedOutput csv(file.path());
+      NetworkCsvWriter writer(csv, system, spec.output.phase_tolerance);
+      Simulation simulation;
+      const RunStats stats = simulation.Run(system, spec.solver, spec.Request(), writer);
+      writer.Flush();
+      csv.Commit();
+      text.stats_json = FormatStatsJson(stats);
+    } else {
+      const ScenarioSpec spec = LoadScenario(scenario.path, scenario.overrides);
+      StreamedOutput csv(file.path());
+      TrajectoryCsvWriter writer(csv, spec.PhaseTolerance(), spec.excitation.has_value());
+      Simulation simulation;
+      const RunStats stats = simulation.Run(BuildSystem(spec), spec.solver, spec.Request(), writer);
+      writer.Flush();
+      csv.Commit();
+      text.stats_json = FormatStatsJson(stats);
+    }
+    text.csv = ReadWhole(file.path());
+    return text;
+  });
+}
+
+bool IsTextColumn(const std::string& name) {
+  const std::string suffix = ".phase";
+  return name == "phase" ||
+         (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(),
+                                                      suffix) == 0);
+}
+
+std::vector<std::string> SplitCommas(const std::string& line) {
+  std::vector<std::string> fields;
+  std::size_t start = 0;
+  for (std::size_t comma; (comma = line.find(',', start)) != std::string::npos; start = comma + 1) {
+    fields.push_back(line.substr(start, comma - start));
+  }
+  fields.push_back(line.substr(start));
+  return fields;
+}
+
+// The CSV as {name: 1-D array}: float64 for numbers, str for the phase columns.
+py::dict ParseColumns(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> names = SplitCommas(line);
+  std::vector<std::vector<double>> numbers(names.size());
+  std::vector<std::vector<std::string>> texts(names.size());
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    const std::vector<std::string> fields = SplitCommas(line);
+    if (fields.size() != names.size()) {
+      throw std::runtime_error("a CSV row has " + std::to_string(fields.size()) +
+                               " fields where the header names " +
+                               std::to_string(names.size()));
+    }
+    for (std::size_t c = 0; c < names.size(); ++c) {
+      if (IsTextColumn(names[c])) {
+        texts[c].push_back(fields[c]);
+      } else {
+        numbers[c].push_back(std::strtod(fields[c].c_str(), nullptr));
+      }
+    }
+  }
+  py::module_ numpy = py::module_::import("numpy");
+  py::dict columns;
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    if (IsTextColumn(names[c])) {
+      columns[py::str(names[c])] = numpy.attr("array")(texts[c], py::arg("dtype") = "str");
+    } else {
+      py::array_t<double> values(static_cast<py::ssize_t>(numbers[c].size()));
+      if (!numbers[c].empty()) {
+        std::memcpy(values.mutable_data(), numbers[c].data(), numbers[c].size() * sizeof(double));
+      }
+      columns[py::str(names[c])] = values;
+    }
+  }
+  return columns;
+}
+
+// One run's columns and stats.
+struct Result {
+  py::dict columns;
+  py::dict stats;
+  py::ssize_t rows = 0;
+};
+
+// "key=value" for an override: Python's bool as true/false, a float by its shortest exact
+// text (repr), an int or a str as written.
+std::string OverrideText(const std::string& key, const py::handle& value) {
+  std::string text;
+  if (py::isinstance<py::bool_>(value)) {
+    text = value.cast<bool>() ? "true" : "false";
+  } else if (py::isinstance<py::int_>(value) || py::isinstance<py::str>(value)) {
+    text = py::str(value).cast<std::string>();
+  } else if (py::isinstance<py::float_>(value)) {
+    text = py::repr(value).cast<std::string>();
+  } else {
+    const std::string type = py::str(py::type::of(value).attr("__name__"));
+    throw py::type_error("set(" + key + ", ...): the value must be a number, a bool or a str, " +
+                         "not " + type);
+  }
+  return key + "=" + text;
+}
+
+// The overrides given to load_scenario: a list of "key=value" texts or a dict.
+std::vector<std::string> OverrideTexts(const py::object& set) {
+  std::vector<std::string> texts;
+  if (set.is_none()) return texts;
+  if (py::isinstance<py::dict>(set)) {
+    for (const auto& item : set.cast<py::dict>()) {
+      texts.push_back(OverrideText(py::str(item.first).cast<std::string>(), item.second));
+    }
+    return texts;
+  }
+  if (py::isinstance<py::str>(set)) {
+    throw py::type_error("set must be a list of 'key=value' texts or a dict, not one str");
+  }
+  for (const auto& item : set) texts.push_back(py::str(item).cast<std::string>());
+  return texts;
+}
+
+Scenario Load(const std::string& path, const py::object& set) {
+  Scenario scenario;
+  scenario.path = path;
+  scenario.display = path;
+  scenario.overrides = OverrideTexts(set);
+  py::gil_scoped_release release;
+  scenario.Validate();
+  return scenario;
+}
+
+Scenario FromText(const std::string& text, const std::string& display) {
+  Scenario scenario;
+  scenario.text = std::make_shared<TempFile>(".yaml");
+  {
+    std::ofstream out(scenario.text->path(), std::ios::binary);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write " + scenario.text->path());
+  }
+  scenario.path = scenario.text->path();
+  scenario.display = display;
+  py::gil_scoped_release release;
+  scenario.Validate();
+  return scenario;
+}
+
+Result Run(const Scenario& scenario, const py::object& sensitivities) {
+  std::vector<std::string> parameters;
+  if (!sensitivities.is_none()) {
+    if (py::isinstance<py::str>(sensitivities)) {
+      throw py::type_error("sensitivities must be a list of dotted paths, not one str");
+    }
+    for (const auto& item : sensitivities) parameters.push_back(py::str(item).cast<std::string>());
+  }
+  RunText text;
+  {
+    py::gil_scoped_release release;
+    text = RunLikeCli(scenario, parameters);
+  }
+  Result result;
+  result.columns = ParseColumns(text.csv);
+  result.stats = py::module_::import("json").attr("loads")(text.stats_json);
+  result.rows = result.columns.empty()
+                    ? 0
+                    : py::len(result.columns[py::str("t")]);
+  return result;
+}
+
+py::object ToDataFrame(const Result& result) {
+  py::module_ pandas;
+  try {
+    pandas = py::module_::import("pandas");
+  } catch (py::error_already_set& e) {
+    if (!e.matches(PyExc_ImportError)) throw;
+    throw py::import_error(
+        "Result.to_dataframe() needs pandas, which is not installed (Debian: apt install "
+        "python3-pandas; elsewhere: pip install pandas); Result.columns holds the same "
+        "columns as NumPy arrays");
+  }
+  return pandas.attr("DataFrame")(result.columns);
+}
+
+}  // namespace
+
+void BindScenario(py::module_& m) {
+  py::class_<Result>(
+      m, "Result",
+      "One run's trajectory and solver counters, as `musclesim run` writes them (its CSV and "
+      "its --stats JSON). Rows are the output grid's times (output.interval) or every internal "
+      "step (interval: steps). SI units: t in s, lengths and positions in m, velocities in m/s "
+      "(shortening_velocity positive when the actuator shortens), tensions and loads in N, "
+      "activations and excitations in [0, 1].")
+      .def_property_readonly(
+          "columns", [](const Result& r) { return r.columns; },
+          "dict {name: 1-D NumPy array of len(result)}, exactly the CLI CSV's columns in its "
+          "order: float64, except the text columns `phase` and `<actuator>.phase` "
+          "('concentric', 'eccentric', 'isometric'), which are NumPy str arrays. With "
+          "sensitivities, d_<column>/d_<path> after them.")
+      .def_property_readonly(
+          "times", [](const Result& r) { return r.columns[py::str("t")]; },
+          "columns['t']: the rows' times [s], float64, shape (len(result),).")
+      .def_property_readonly(
+          "stats", [](const Result& r) { return r.stats; },
+          "dict of the run's counters, as `musclesim run --stats` writes them: steps, "
+          "rhs_evals, jac_evals, linear_setups, newton_iters, newton_conv_fails, "
+          "error_test_fails, wall_seconds [s], final_time [s], linear_solver, status, message "
+          "(and with sensitivities their counters and `sensitivities`, one {path, derivative} "
+          "each).")
+      .def_property_readonly(
+          "status", [](const Result& r) { return r.stats["status"]; },
+          "'completed', 'limit' (stopped at a length limit) or 'failed' (the solver failed; "
+          "the rows up to the failure are kept).")
+      .def("to_dataframe", &ToDataFrame,
+           "The columns as a pandas.DataFrame (pandas imported only here; ImportError naming "
+           "python3-pandas if it is missing).")
+      .def("__len__", [](const Result& r) { return r.rows; }, "The number of rows.")
+      .def(
+          "__getitem__",
+          [](const Result& r, const std::string& name) -> py::object {
+            if (!r.columns.contains(name)) throw py::key_error("no column '" + name + "'");
+            return r.columns[py::str(name)];
+          },
+          py::arg("column"), "result['column'] is result.columns['column'].")
+      .def("__repr__", [](const Result& r) {
+        return "<musclesim.Result " + std::to_string(r.rows) + " rows, " +
+               std::to_string(py::len(r.columns)) + " columns, " +
+               py::str(r.stats["status"]).cast<std::string>() + ">";
+      });
+
+  py::class_<Scenario>(
+      m, "Scenario",
+      "A validated scenario (a single actuator or a network on a line, README \"Scenario "
+      "files\"): a file or a dict with the overrides given since. SI units as in the files.")
+      .def_property_readonly(
+          "is_network", [](const Scenario& s) { return s.network; },
+          "True for a network (a top-level `nodes:` key), False for a single actuator.")
+      .def_property_readonly(
+          "name", [](const Scenario& s) { return s.name; }, "The scenario's `name:` ('' if none).")
+      .def_property_readonly(
+          "overrides", [](const Scenario& s) { return s.overrides; },
+          "The 'key=value' overrides applied to the file, in order.")
+      .def(
+          "set",
+          [](Scenario& s, const std::string& key, const py::object& value) -> Scenario& {
+            s.overrides.push_back(OverrideText(key, value));
+            try {
+              py::gil_scoped_release release;
+              s.Validate();
+            } catch (...) {
+              s.overrides.pop_back();  // a rejected value leaves the scenario as it was
+              throw;
+            }
+            return s;
+          },
+          py::arg("key"), py::arg("value"), py::return_value_policy::reference_internal,
+          "Overrides one value by its dotted key path as `musclesim run --set KEY=VALUE` does "
+          "(e.g. 'load[0].after', 'model.velocity.n', 'elements[1].activation.after', in the "
+          "file's units) and validates the scenario at once: InputError (with .key) for a key "
+          "that is not there or a value that breaks a rule, leaving the scenario unchanged. "
+          "Returns the scenario.")
+      .def("run", &Run, py::arg("sensitivities") = py::none(),
+           "Integrates the scenario (GIL released) as `musclesim run` does and returns a "
+           "Result. `sensitivities`: dotted paths of numeric parameters ('model.f_iso', "
+           "'load[0].value', 'models.muscle.f_iso', ...) whose forward sensitivities add the "
+           "columns d_<column>/d_<path>, as `musclesim run --sensitivity PATH` writes them; a "
+           "scenario's own `sensitivities:` list adds its own. A solver failure is a result "
+           "(status 'failed'), not an exception.")
+      .def("__repr__", [](const Scenario& s) {
+        return "<musclesim.Scenario '" + s.name + "' from " + s.display +
+               (s.network ? " (network)" : " (single actuator)") + ">";
+      });
+
+  m.def("load_scenario", &Load, py::arg("path"), py::arg("set") = py::none(),
+        "Reads and validates the scenario file `path` (single actuator or network), applying "
+        "`set` first: a list of 'key=value' texts as `musclesim run --set` takes them, or a "
+        "dict {key: value}. InputError (with .key and .location 'file:line:column') for bad "
+        "input.");
+  m.def("_scenario_from_text", &FromText, py::arg("text"), py::arg("name"),
+        "A scenario from YAML (or JSON) text; messages name the file `name`. "
+        "scenario_from_dict is the public way.");
+}
 
 }  // namespace musclesim::python

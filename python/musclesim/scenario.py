@@ -1,0 +1,19 @@
+"""Scenarios from Python dicts (the YAML file's keys and values)."""
+import json as _json
+
+from . import _musclesim
+
+
+def scenario_from_dict(d, name="<dict>"):
+    """A validated Scenario from a dict with a scenario file's keys (README "Scenario files").
+
+    The dict is read by the same reader as a file (its JSON text is YAML), so the same rules
+    apply; an InputError names the key path (e.g. "load[0].after") and `name` in place of the
+    file, with the line and column of the dict's JSON text written one key per line. SI units
+    as in the files (m, m/s, N, s; activations in [0, 1]).
+    """
+    if not isinstance(d, dict):
+        raise TypeError("scenario_from_dict expects a dict, not %s" % type(d).__name__)
+    # allow_nan=False: NaN and infinity have no JSON text (and no valid scenario value)
+    text = _json.dumps(d, indent=1, allow_nan=False)
+    return _musclesim._scenario_from_text(text, name)

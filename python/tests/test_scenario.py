@@ -1,0 +1,258 @@
+"""Scenarios from files and dicts against `musclesim run`'s CSV (run here as a separate
+program, its CSV parsed with NumPy): the same columns in the same order, the same numbers."""
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import musclesim
+
+SOURCE = os.environ.get("MUSCLESIM_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+CLI = os.environ.get("MUSCLESIM_CLI")
+needs_cli = pytest.mark.skipif(not CLI, reason="MUSCLESIM_CLI (the musclesim program) not set")
+
+
+def scenario_path(name):
+    return os.path.join(SOURCE, "scenarios", name)
+
+
+def cli_run(tmp_path, scenario, sets=(), sensitivities=()):
+    """The CLI's CSV as (header, {numeric column: float64}, {text column: str})."""
+    out = tmp_path / "cli.csv"
+    command = [CLI, "run", scenario, "-o", str(out), "--quiet"]
+    for s in sets:
+        command += ["--set", s]
+    for p in sensitivities:
+        command += ["--sensitivity", p]
+    subprocess.run(command, check=True, capture_output=True, text=True)
+    with open(out) as f:
+        header = f.readline().strip().split(",")
+    table = np.loadtxt(out, delimiter=",", skiprows=1, dtype=str, ndmin=2)
+    numbers, texts = {}, {}
+    for i, name in enumerate(header):
+        if name == "phase" or name.endswith(".phase"):
+            texts[name] = table[:, i]
+        else:
+            numbers[name] = table[:, i].astype(np.float64)
+    return header, numbers, texts
+
+
+def assert_same_as_cli(result, cli):
+    header, numbers, texts = cli
+    assert list(result.columns) == header
+    assert len(result) == len(numbers["t"])
+    for name, expected in numbers.items():
+        # exact: both are the same 17-significant-digit text read back, which round-trips
+        # a double exactly, of the same deterministic computation
+        np.testing.assert_array_equal(result.columns[name], expected, err_msg=name)
+    for name, expected in texts.items():
+        assert list(result.columns[name]) == list(expected), name
+
+
+@needs_cli
+def test_concentric_file_matches_cli(tmp_path):
+    result = musclesim.load_scenario(scenario_path("concentric.yaml")).run()
+    assert result.status == "completed"
+    assert_same_as_cli(result, cli_run(tmp_path, scenario_path("concentric.yaml")))
+
+
+@needs_cli
+def test_network_matches_cli_with_overrides_as_list_or_dict(tmp_path):
+    path = scenario_path("antagonist_pair.yaml")
+    cli = cli_run(tmp_path, path, sets=["time.end=0.2"])
+    listed = musclesim.load_scenario(path, set=["time.end=0.2"])
+    assert listed.is_network
+    assert_same_as_cli(listed.run(), cli)
+    assert_same_as_cli(musclesim.load_scenario(path, set={"time.end": 0.2}).run(), cli)
+
+
+@needs_cli
+def test_controllers_match_cli(tmp_path):
+    path = scenario_path("force_regulation.yaml")
+    scenario = musclesim.load_scenario(path).set("time.end", 0.2)
+    assert scenario.is_network and scenario.name == "force_regulation"
+    assert_same_as_cli(scenario.run(), cli_run(tmp_path, path, sets=["time.end=0.2"]))
+
+
+# scenarios/concentric.yaml written out by hand as a dict (its `time.end` 0.2 s)
+CONCENTRIC = {
+    "name": "concentric_isotonic",
+    "model": {
+        "f_iso": 100.0,
+        "passive": {"k_p": 1.0, "alpha": 100.0, "slack_length": 0.105},
+        "active_length": {
+            "optimal_range": [0.095, 0.105],
+            "gaussians": [
+                {"amplitude": 0.35188944617853268, "width": 20635.199147929347,
+                 "center": 0.073556703926583866},
+                {"amplitude": 2.2575025981825489, "width": 4125.1402656159307,
+                 "center": 0.097194271247335401},
+                {"amplitude": 1.3136662819543681, "width": 3009.3607405177986,
+                 "center": 0.1301541244400391},
+            ],
+        },
+        "velocity": {"v_max": 1.0, "n": 3, "epsilon": 1.0e-3},
+    },
+    "actuator": {"mass": 0.1, "damping": 0.0, "stiffness": 0.0, "rest_length": 0.1},
+    "initial": {"length": 0.1, "lengthening_rate": 0.0},
+    "activation": {"type": "step", "time": 0.05, "before": 0.0, "after": 1.0},
+    "load": [{"type": "step", "time": 0.05, "before": 0.0, "after": 40.0}],
+    "time": {"start": 0.0, "end": 0.2},
+    "solver": {"method": "bdf", "rtol": 1.0e-6, "atol": 1.0e-9, "jacobian": "analytic",
+               "max_step": 0.0},
+    "output": {"file": "concentric.csv", "interval": 0.001},
+    "limits": {"min_length": 0.06, "max_length": 0.2},
+}
+
+
+@needs_cli
+def test_dict_gives_the_file_result(tmp_path):
+    scenario = musclesim.scenario_from_dict(CONCENTRIC)
+    assert not scenario.is_network and scenario.name == "concentric_isotonic"
+    cli = cli_run(tmp_path, scenario_path("concentric.yaml"), sets=["time.end=0.2"])
+    assert_same_as_cli(scenario.run(), cli)
+    # and the dict's own JSON text as a file (JSON is YAML) through the CLI
+    text_file = tmp_path / "dict.yaml"
+    text_file.write_text(json.dumps(CONCENTRIC))
+    assert_same_as_cli(scenario.run(), cli_run(tmp_path, str(text_file)))
+
+
+@needs_cli
+def test_set_changes_the_run(tmp_path):
+    path = scenario_path("concentric.yaml")
+    light = musclesim.load_scenario(path, set=["time.end=0.2"]).run()
+    scenario = musclesim.load_scenario(path, set=["time.end=0.2"])
+    assert scenario.set("load[0].after", 60.0) is scenario
+    heavy = scenario.run()
+    # a larger load (still below f_iso = 100 N) shortens the actuator less
+    assert heavy["length"].min() > light["length"].min()
+    assert_same_as_cli(heavy, cli_run(tmp_path, path, sets=["time.end=0.2", "load[0].after=60"]))
+
+
+def test_bad_set_raises_and_leaves_the_scenario():
+    scenario = musclesim.load_scenario(scenario_path("concentric.yaml"))
+    with pytest.raises(musclesim.InputError) as bad_key:
+        scenario.set("load[0].aftr", 60.0)
+    assert bad_key.value.key == "load[0].aftr"
+    assert bad_key.value.location is None  # a value given by set() has no place in a file
+    assert "unknown key" in str(bad_key.value)
+    with pytest.raises(musclesim.InputError) as bad_value:
+        scenario.set("model.velocity.n", 0)
+    assert bad_value.value.key == "model.velocity.n"
+    assert bad_value.value.location is None
+    assert scenario.overrides == []
+
+
+@needs_cli
+def test_broken_file_names_file_line_column(tmp_path):
+    broken = tmp_path / "broken.yaml"
+    text = open(scenario_path("concentric.yaml")).read()
+    assert "  f_iso: 100.0" in text
+    lines = text.splitlines()
+    line = next(i for i, s in enumerate(lines) if s.startswith("  f_iso: 100.0")) + 1
+    broken.write_text(text.replace("  f_iso: 100.0", "  f_iso: -100.0"))
+    with pytest.raises(musclesim.InputError) as error:
+        musclesim.load_scenario(str(broken))
+    assert error.value.key == "model.f_iso"
+    assert error.value.location == "%s:%d:10" % (broken, line)  # the value after "  f_iso: "
+    # the CLI's message is the same text
+    cli = subprocess.run([CLI, "run", str(broken), "-o", str(tmp_path / "x.csv")],
+                         capture_output=True, text=True)
+    assert cli.returncode == 2
+    assert str(error.value) in cli.stderr
+
+
+def test_dict_error_names_key_path_and_dict():
+    bad = json.loads(json.dumps(CONCENTRIC))
+    bad["load"][0]["type"] = "stepp"
+    with pytest.raises(musclesim.InputError) as error:
+        musclesim.scenario_from_dict(bad)
+    assert error.value.key == "load[0].type"
+    assert error.value.location.startswith("<dict>:")
+    assert "tmp" not in str(error.value) and "<dict>" in str(error.value)
+
+
+@needs_cli
+def test_sensitivity_columns_match_cli(tmp_path):
+    path = scenario_path("concentric.yaml")
+    scenario = musclesim.load_scenario(path, set=["time.end=0.2"])
+    result = scenario.run(sensitivities=["model.f_iso", "load[0].after"])
+    assert "d_length/d_model.f_iso" in result.columns
+    assert "d_tension_total/d_load[0].after" in result.columns
+    assert [s["path"] for s in result.stats["sensitivities"]] == ["model.f_iso", "load[0].after"]
+    assert_same_as_cli(result, cli_run(tmp_path, path, sets=["time.end=0.2"],
+                                       sensitivities=["model.f_iso", "load[0].after"]))
+
+
+@needs_cli
+def test_network_sensitivity_columns_match_cli(tmp_path):
+    path = scenario_path("antagonist_pair.yaml")
+    result = musclesim.load_scenario(path, set=["time.end=0.1"]).run(
+        sensitivities=["models.muscle.f_iso"])
+    assert "d_flexor.tension/d_models.muscle.f_iso" in result.columns
+    assert_same_as_cli(result, cli_run(tmp_path, path, sets=["time.end=0.1"],
+                                       sensitivities=["models.muscle.f_iso"]))
+
+
+def test_shapes_dtypes_and_stats():
+    result = musclesim.load_scenario(scenario_path("concentric.yaml")).run()
+    n = len(result)
+    # output.interval 0.001 s over [0, 0.5] s: 501 rows
+    assert n == 501
+    np.testing.assert_array_equal(result.times, result.columns["t"])
+    for name, column in result.columns.items():
+        assert column.shape == (n,), name
+        if name == "phase":
+            assert column.dtype.kind == "U"
+            assert set(column) <= {"concentric", "eccentric", "isometric"}
+        else:
+            assert column.dtype == np.float64, name
+    assert result.times[0] == 0.0 and result.times[-1] == pytest.approx(0.5, abs=1e-12)
+    for key in ("steps", "rhs_evals", "jac_evals", "status", "message", "final_time",
+                "wall_seconds", "linear_solver"):
+        assert key in result.stats
+    assert result.stats["steps"] > 0 and result.status == "completed"
+    with pytest.raises(KeyError):
+        result["no_such_column"]
+
+
+def test_network_phase_columns_are_text():
+    result = musclesim.load_scenario(scenario_path("antagonist_pair.yaml"),
+                                     set={"time.end": 0.05}).run()
+    assert result.columns["flexor.phase"].dtype.kind == "U"
+    assert result.columns["flexor.length"].dtype == np.float64
+
+
+def test_to_dataframe_without_pandas(monkeypatch):
+    result = musclesim.load_scenario(scenario_path("isometric.yaml"), set=["time.end=0.01"]).run()
+    monkeypatch.setitem(sys.modules, "pandas", None)  # import pandas now raises ImportError
+    with pytest.raises(ImportError, match="python3-pandas"):
+        result.to_dataframe()
+
+
+def test_to_dataframe_with_pandas():
+    pytest.importorskip("pandas")
+    result = musclesim.load_scenario(scenario_path("isometric.yaml"), set=["time.end=0.01"]).run()
+    frame = result.to_dataframe()
+    assert list(frame.columns) == list(result.columns)
+    np.testing.assert_array_equal(frame["t"].to_numpy(), result.times)
+
+
+@needs_cli
+def test_solver_failure_is_a_result_with_the_rows_so_far(tmp_path):
+    path = scenario_path("concentric.yaml")
+    result = musclesim.load_scenario(path, set={"solver.max_steps": 5}).run()
+    assert result.status == "failed" and "max_steps" in result.stats["message"]
+    # the CLI exits 3 and leaves the rows computed so far in PATH.partial
+    out = tmp_path / "failed.csv"
+    cli = subprocess.run(
+        [CLI, "run", path, "-o", str(out), "--quiet", "--set", "solver.max_steps=5"],
+        capture_output=True, text=True)
+    assert cli.returncode == 3
+    partial = np.loadtxt(str(out) + ".partial", delimiter=",", skiprows=1, dtype=str, ndmin=2)
+    assert 0 < len(result) == partial.shape[0]
+    # exact, as in assert_same_as_cli
+    np.testing.assert_array_equal(result["length"], partial[:, 1].astype(np.float64))
