@@ -368,6 +368,9 @@ void BindScenario(py::module_& m) {
       .def_property_readonly(
           "overrides", [](const Scenario& s) { return s.overrides; },
           "The 'key=value' overrides applied to the file, in order.")
+      .def_property_readonly(
+          "_path", [](const Scenario& s) { return s.path; },
+          "The file read (for a dict, a temporary file the scenario owns): run_many's job.")
       .def(
           "set",
           [](Scenario& s, const std::string& key, const py::object& value) -> Scenario& {

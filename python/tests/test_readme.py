@@ -1,0 +1,27 @@
+"""The README's Python examples run as written: every ```python block of README.md is executed
+in a fresh directory holding a link to scenarios/, with matplotlib drawing off-screen."""
+import os
+import pathlib
+import re
+import subprocess
+import sys
+
+import pytest
+
+ROOT = pathlib.Path(os.environ.get("MUSCLESIM_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
+BLOCKS = re.findall(r"```python\n(.*?)```", (ROOT / "README.md").read_text(), re.S)
+
+
+def test_the_readme_has_python_examples():
+    assert BLOCKS, "README.md has no ```python block"
+
+
+@pytest.mark.parametrize("code", BLOCKS, ids=[f"block{i}" for i in range(len(BLOCKS))])
+def test_a_readme_python_block_runs(code, tmp_path):
+    (tmp_path / "scenarios").symlink_to(ROOT / "scenarios")
+    # the package as this test imports it, whatever the directory
+    paths = [os.path.abspath(p) for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
+    env = dict(os.environ, MPLBACKEND="Agg", PYTHONPATH=os.pathsep.join(paths))
+    done = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, env=env,
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
