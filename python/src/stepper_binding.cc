@@ -131,6 +131,25 @@ void BindStepper(py::module_& m) {
            "list of \"key=value\" strings as --set takes them, or a dict {key: value}. `rtol` "
            "and `atol` (m, m/s) replace the scenario's solver tolerances. Starts at the "
            "scenario's time.start with its limits; its time.end and output are not used.")
+      .def(py::init([](const py::object& scenario, const py::object& overrides,
+                       std::optional<double> rtol, std::optional<double> atol) {
+             // a Scenario (load_scenario, scenario_from_dict): its file and its set() values,
+             // then `set`
+             if (!py::hasattr(scenario, "_path") || !py::hasattr(scenario, "overrides")) {
+               throw py::type_error("Stepper takes a scenario file's path or a Scenario");
+             }
+             py::list sets;
+             for (const std::string& text : OverridesFrom(scenario.attr("overrides"))) {
+               sets.append(text);
+             }
+             for (const std::string& text : OverridesFrom(overrides)) sets.append(text);
+             return std::make_unique<PyStepper>(scenario.attr("_path").cast<std::string>(), sets,
+                                                rtol, atol);
+           }),
+           py::arg("scenario"), py::arg("set") = py::none(), py::arg("rtol") = py::none(),
+           py::arg("atol") = py::none(),
+           "The same from a network Scenario (load_scenario or scenario_from_dict, with the "
+           "values set() on it), `set` applied after them.")
       .def("advance", &PyStepper::Advance, py::arg("t"),
            "Integrates from `time` to `t` [s] (GIL released) and returns \"completed\" (time "
            "is then t), \"limit\" (a length limit was reached; no further advance) or "

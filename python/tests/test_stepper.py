@@ -148,3 +148,27 @@ def test_bad_calls_raise_clear_errors(tmp_path):
         musclesim.Stepper(FORCE_REGULATION, set={"solver.rtol": -1.0})
     with pytest.raises(TypeError, match="key=value"):
         musclesim.Stepper(FORCE_REGULATION, set="solver.rtol=1e-8")
+
+
+def test_a_stepper_from_a_dict_scenario_runs_as_from_its_file():
+    # a network given as a dict (no YAML file) steps as the file it was written from does
+    path = os.path.join(SOURCE, "scenarios", "mass_spring_damper.yaml")
+    d = {
+        "name": "msd",
+        "nodes": [{"name": "wall", "fixed": 0.0},
+                  {"name": "load", "mass": 0.5, "position": 0.1, "velocity": 0.0}],
+        "elements": [
+            {"name": "spring", "type": "spring", "from": "wall", "to": "load",
+             "stiffness": 50.0, "rest_length": 0.1},
+            {"name": "damper", "type": "damper", "from": "wall", "to": "load", "damping": 0.5}],
+        "loads": [{"node": "load", "type": "constant", "value": 1.0}],
+        "time": {"start": 0.0, "end": 2.0},
+        "solver": {"method": "bdf", "rtol": 1e-12, "atol": 1e-14},
+    }
+    from_dict = musclesim.Stepper(musclesim.scenario_from_dict(d).set("loads[0].value", 2.0))
+    from_file = musclesim.Stepper(path, set={"loads[0].value": 2.0})
+    for k in range(1, 51):
+        assert from_dict.advance(k * 1e-2) == "completed"
+        assert from_file.advance(k * 1e-2) == "completed"
+    # the same system and settings: the same steps, to rounding
+    assert abs(from_dict.sample()["load.position"] - from_file.sample()["load.position"]) < 1e-12
