@@ -20,3 +20,5 @@ def run_many(jobs, threads=0):
     from . import _musclesim as _extension
     converted = [(job._path, job.overrides) if isinstance(job, Scenario) else job for job in jobs]
     return _extension.run_many(converted, threads)
+from .curves_identification import *  # noqa: F401,F403,E402
+from .series_identification import *  # noqa: F401,F403,E402

@@ -13,4 +13,6 @@ PYBIND11_MODULE(_musclesim, m) {
   musclesim::python::BindScenario(m);
   musclesim::python::BindStepper(m);
   musclesim::python::BindSweep(m);
+  musclesim::python::BindIdentifyCurves(m);
+  musclesim::python::BindIdentifySeries(m);
 }

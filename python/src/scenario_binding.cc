@@ -371,6 +371,21 @@ void BindScenario(py::module_& m) {
       .def_property_readonly(
           "_path", [](const Scenario& s) { return s.path; },
           "The file read (for a dict, a temporary file the scenario owns): run_many's job.")
+      .def_property_readonly(
+          "_display", [](const Scenario& s) { return s.display; },
+          "The file's name in messages: the path, or the name given to scenario_from_dict.")
+      .def(
+          "_with_overrides",
+          [](const Scenario& s, const std::vector<std::string>& more) {
+            Scenario copy = s;  // shares a dict's temporary file, which lives while either does
+            copy.overrides.insert(copy.overrides.end(), more.begin(), more.end());
+            py::gil_scoped_release release;
+            copy.Validate();
+            return copy;
+          },
+          py::arg("overrides"),
+          "A validated copy with the 'key=value' texts `overrides` applied after its own "
+          "(identification's estimated scenario).")
       .def(
           "set",
           [](Scenario& s, const std::string& key, const py::object& value) -> Scenario& {

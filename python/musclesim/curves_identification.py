@@ -1,0 +1,1 @@
+"""Identification from measured curves (to be written)."""

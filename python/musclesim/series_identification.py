@@ -1,0 +1,1 @@
+"""Identification from measured series (to be written)."""
