@@ -7,6 +7,7 @@ from ._musclesim import *  # noqa: F401,F403
 from ._musclesim import __doc__ as _extension_doc  # noqa: F401
 from .scenario import scenario_from_dict  # noqa: F401,E402
 from .stepping import sweep  # noqa: F401,E402
+from .tables import table  # noqa: F401,E402
 
 
 def run_many(jobs, threads=0):
@@ -14,11 +15,14 @@ def run_many(jobs, threads=0):
 
     Each job is a Scenario (from load_scenario or scenario_from_dict, with its set() values)
     or a (path, overrides) pair, overrides a list of 'key=value' strings or a dict. Returns
-    one dict per job, in order: {status, steps, final_time, message, columns}, columns a dict
-    of float64 NumPy arrays named as the CSV's number columns (SI units: s, m, m/s, N).
+    one Result per job, in order, as Scenario.run() gives it: .columns (the CSV's columns as
+    NumPy arrays, SI units: s, m, m/s, N), .stats, .status. musclesim.table(results) stacks
+    them into one structured array (a DataFrame with pandas.DataFrame(...)).
     """
     from . import _musclesim as _extension
     converted = [(job._path, job.overrides) if isinstance(job, Scenario) else job for job in jobs]
     return _extension.run_many(converted, threads)
+
+
 from .curves_identification import *  # noqa: F401,F403,E402
 from .series_identification import *  # noqa: F401,F403,E402

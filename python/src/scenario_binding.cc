@@ -1,70 +1,24 @@
-// Scenarios from files or dicts, changed with set(), run to NumPy columns. A run drives the
-// very writers `musclesim run` uses (TrajectoryCsvWriter, NetworkCsvWriter,
-// SensitivityCsvRun) into a temporary file and parses it back, so that its columns are the
-// CLI CSV's, named and ordered as it names them, to the last digit it prints (17 significant
-// digits read back give the same double).
-#include <pybind11/numpy.h>
+// Scenarios from files or dicts, changed with set(), run to NumPy columns (cli_run.h: the
+// very writers `musclesim run` uses, so the columns are its CSV's).
 #include <pybind11/stl.h>
-#include <stdlib.h>
-#include <unistd.h>
 
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "bindings.h"
+#include "cli_run.h"
+#include "temp_file.h"
 #include "musclesim/errors.h"
-#include "musclesim/io/network_csv.h"
 #include "musclesim/io/network_scenario.h"
-#include "musclesim/io/output_file.h"
-#include "musclesim/io/run_scenario.h"
 #include "musclesim/io/scenario.h"
-#include "musclesim/io/sensitivity_run.h"
-#include "musclesim/io/trajectory_csv.h"
 
 namespace py = pybind11;
 
 namespace musclesim::python {
 
 namespace {
-
-// A file in the system's temporary directory, removed (with a leftover PATH.partial) when
-// the last owner lets go.
-class TempFile {
- public:
-  explicit TempFile(const std::string& suffix) {
-    std::string pattern =
-        (std::filesystem::temp_directory_path() / ("musclesim-XXXXXX" + suffix)).string();
-    const int fd = mkstemps(pattern.data(), static_cast<int>(suffix.size()));
-    if (fd < 0) throw std::runtime_error("cannot create a temporary file in " + pattern);
-    close(fd);
-    path_ = pattern;
-  }
-  ~TempFile() {
-    std::error_code ignored;
-    std::filesystem::remove(path_, ignored);
-    std::filesystem::remove(path_ + ".partial", ignored);
-  }
-  TempFile(const TempFile&) = delete;
-  TempFile& operator=(const TempFile&) = delete;
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-};
-
-std::string ReadWhole(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // A scenario: the file it is read from, the overrides set() gave, and what it is.
 struct Scenario {
@@ -101,116 +55,6 @@ struct Scenario {
       return 0;
     });
   }
-};
-
-// What one run wrote: the CSV text and the stats JSON of `musclesim run --stats`.
-struct RunText {
-  std::string csv;
-  std::string stats_json;
-};
-
-// `musclesim run` without the files: the same branch, writer and stats (run_command.cc).
-RunText RunLikeCli(const Scenario& scenario, const std::vector<std::string>& parameters) {
-  return scenario.Located([&] {
-    TempFile file(".csv");
-    RunText text;
-    if (!parameters.empty() || HasSensitivities(scenario.path)) {
-      SensitivityCsvRun run(scenario.path, scenario.overrides, parameters);
-      StreamedOutput csv(file.path());
-      const RunStats stats = run.Run(csv);
-      csv.Commit();
-      std::vector<SensitivityNote> notes;
-      for (std::size_t i = 0; i < run.parameters().size(); ++i) {
-        notes.push_back({run.parameters()[i], std::string(ToString(run.sources()[i]))});
-      }
-      text.stats_json = FormatStatsJson(stats, notes);
-    } else if (scenario.network) {
-      const NetworkScenarioSpec spec = LoadNetworkScenario(scenario.path, scenario.overrides);
-      const NetworkSystem system = spec.Build();
-      StreamedOutput csv(file.path());
-      NetworkCsvWriter writer(csv, system, spec.output.phase_tolerance);
-      Simulation simulation;
-      const RunStats stats = simulation.Run(system, spec.solver, spec.Request(), writer);
-      writer.Flush();
-      csv.Commit();
-      text.stats_json = FormatStatsJson(stats);
-    } else {
-      const ScenarioSpec spec = LoadScenario(scenario.path, scenario.overrides);
-      StreamedOutput csv(file.path());
-      TrajectoryCsvWriter writer(csv, spec.PhaseTolerance(), spec.excitation.has_value());
-      Simulation simulation;
-      const RunStats stats = simulation.Run(BuildSystem(spec), spec.solver, spec.Request(), writer);
-      writer.Flush();
-      csv.Commit();
-      text.stats_json = FormatStatsJson(stats);
-    }
-    text.csv = ReadWhole(file.path());
-    return text;
-  });
-}
-
-bool IsTextColumn(const std::string& name) {
-  const std::string suffix = ".phase";
-  return name == "phase" ||
-         (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(),
-                                                      suffix) == 0);
-}
-
-std::vector<std::string> SplitCommas(const std::string& line) {
-  std::vector<std::string> fields;
-  std::size_t start = 0;
-  for (std::size_t comma; (comma = line.find(',', start)) != std::string::npos; start = comma + 1) {
-    fields.push_back(line.substr(start, comma - start));
-  }
-  fields.push_back(line.substr(start));
-  return fields;
-}
-
-// The CSV as {name: 1-D array}: float64 for numbers, str for the phase columns.
-py::dict ParseColumns(const std::string& csv) {
-  std::istringstream in(csv);
-  std::string line;
-  std::getline(in, line);
-  const std::vector<std::string> names = SplitCommas(line);
-  std::vector<std::vector<double>> numbers(names.size());
-  std::vector<std::vector<std::string>> texts(names.size());
-  while (std::getline(in, line)) {
-    if (line.empty()) continue;
-    const std::vector<std::string> fields = SplitCommas(line);
-    if (fields.size() != names.size()) {
-      throw std::runtime_error("a CSV row has " + std::to_string(fields.size()) +
-                               " fields where the header names " +
-                               std::to_string(names.size()));
-    }
-    for (std::size_t c = 0; c < names.size(); ++c) {
-      if (IsTextColumn(names[c])) {
-        texts[c].push_back(fields[c]);
-      } else {
-        numbers[c].push_back(std::strtod(fields[c].c_str(), nullptr));
-      }
-    }
-  }
-  py::module_ numpy = py::module_::import("numpy");
-  py::dict columns;
-  for (std::size_t c = 0; c < names.size(); ++c) {
-    if (IsTextColumn(names[c])) {
-      columns[py::str(names[c])] = numpy.attr("array")(texts[c], py::arg("dtype") = "str");
-    } else {
-      py::array_t<double> values(static_cast<py::ssize_t>(numbers[c].size()));
-      if (!numbers[c].empty()) {
-        std::memcpy(values.mutable_data(), numbers[c].data(), numbers[c].size() * sizeof(double));
-      }
-      columns[py::str(names[c])] = values;
-    }
-  }
-  return columns;
-}
-
-// One run's columns and stats.
-struct Result {
-  py::dict columns;
-  py::dict stats;
-  py::ssize_t rows = 0;
 };
 
 // "key=value" for an override: Python's bool as true/false, a float by its shortest exact
@@ -281,18 +125,16 @@ Result Run(const Scenario& scenario, const py::object& sensitivities) {
     }
     for (const auto& item : sensitivities) parameters.push_back(py::str(item).cast<std::string>());
   }
-  RunText text;
+  CsvColumns columns;
+  std::string stats_json;
   {
     py::gil_scoped_release release;
-    text = RunLikeCli(scenario, parameters);
+    const RunText text = scenario.Located(
+        [&] { return RunLikeCli(scenario.path, scenario.overrides, parameters); });
+    columns = SplitCsv(text.csv);
+    stats_json = text.stats_json;
   }
-  Result result;
-  result.columns = ParseColumns(text.csv);
-  result.stats = py::module_::import("json").attr("loads")(text.stats_json);
-  result.rows = result.columns.empty()
-                    ? 0
-                    : py::len(result.columns[py::str("t")]);
-  return result;
+  return MakeResult(columns, stats_json);
 }
 
 py::object ToDataFrame(const Result& result) {

@@ -24,14 +24,15 @@ def test_sweep_equals_the_clis_summary(tmp_path):
         rows = list(csv.reader(file))
     header, body = rows[0], rows[1:]
     summary = musclesim.sweep(sweep_file, threads=2)
-    assert list(summary) == header
+    assert summary.dtype.names == tuple(header) and summary.shape == (len(body),)
+    assert summary["steps"].dtype == np.int64 and summary["status"].dtype.kind == "U"
     for c, name in enumerate(header):
         cli = [row[c] for row in body]
         ours = summary[name]
         assert len(ours) == len(cli)
         if name == "wall_seconds":  # timing: only its sign is reproducible
             assert np.all(ours >= 0)
-        elif ours.dtype == object:
+        elif ours.dtype.kind == "U":
             assert list(ours) == cli
         else:
             # the same computation, each point on one thread, printed by the CLI with 17
@@ -39,28 +40,57 @@ def test_sweep_equals_the_clis_summary(tmp_path):
             np.testing.assert_array_equal(ours, np.array(cli, dtype=float), err_msg=name)
 
 
+def cli_columns(tmp_path, path, overrides, name):
+    """`musclesim run`'s CSV as {column: array} (numbers float64, phase columns str)."""
+    sets = [f"{k}={v}" for k, v in overrides.items()] if isinstance(overrides, dict) else overrides
+    command = [CLI, "run", path, "-o", str(tmp_path / name)]
+    for s in sets:
+        command += ["--set", s]
+    subprocess.run(command, check=True, capture_output=True)
+    with open(tmp_path / name, newline="") as file:
+        rows = list(csv.reader(file))
+    header, body = rows[0], rows[1:]
+    return {n: np.array([row[c] for row in body], dtype=str if n.endswith("phase") else float)
+            for c, n in enumerate(header)}
+
+
 def test_run_many_returns_what_the_cli_writes(tmp_path):
     network = os.path.join(SCENARIOS, "force_regulation.yaml")
     single = os.path.join(SCENARIOS, "isometric.yaml")
     jobs = [(network, {"time.end": 0.3}), (single, ["time.end=0.2"])]
     results = musclesim.run_many(jobs, threads=2)
-    assert [r["status"] for r in results] == ["completed", "completed"]
-    assert results[0]["final_time"] == 0.3 and results[1]["final_time"] == 0.2
+    assert [r.status for r in results] == ["completed", "completed"]
+    assert results[0].stats["final_time"] == 0.3 and results[1].stats["final_time"] == 0.2
     for (path, overrides), result, name in zip(jobs, results, ["net.csv", "single.csv"]):
-        sets = [f"{k}={v}" for k, v in overrides.items()] if isinstance(overrides, dict) else overrides
-        command = [CLI, "run", path, "-o", str(tmp_path / name)]
-        for s in sets:
-            command += ["--set", s]
-        subprocess.run(command, check=True, capture_output=True)
-        with open(tmp_path / name) as file:
-            header = file.readline().strip().split(",")
-        numeric = [n for n in header if n != "phase" and not n.endswith(".phase")]
-        data = np.loadtxt(tmp_path / name, delimiter=",", skiprows=1,
-                          usecols=[header.index(n) for n in numeric], ndmin=2)
-        for k, column in enumerate(numeric):
+        cli = cli_columns(tmp_path, path, overrides, name)
+        # the same columns in the same order, phase columns included
+        assert list(result.columns) == list(cli)
+        for column, values in cli.items():
             # the same run on the same code: equal to the CSV's 17 significant digits
-            np.testing.assert_array_equal(result["columns"][column], data[:, k], err_msg=column)
-        assert result["steps"] > 0
+            np.testing.assert_array_equal(result[column], values, err_msg=column)
+        assert result.stats["steps"] > 0
+
+
+def test_table_stacks_the_runs_in_job_order(tmp_path):
+    single = os.path.join(SCENARIOS, "isometric.yaml")
+    network = os.path.join(SCENARIOS, "force_regulation.yaml")
+    results = musclesim.run_many([(single, {"time.end": 0.1}), (network, {"time.end": 0.2}),
+                                  (single, {"time.end": 0.3})])
+    stacked = musclesim.table(results)
+    assert stacked.shape == (sum(len(r) for r in results),)
+    assert stacked.dtype.names[:2] == ("job", "t") and stacked["job"].dtype == np.int64
+    names = set(stacked.dtype.names)
+    for k, result in enumerate(results):
+        rows = stacked[stacked["job"] == k]
+        for column in names - {"job"}:
+            if column in result.columns:
+                np.testing.assert_array_equal(rows[column], result[column], err_msg=column)
+            elif stacked[column].dtype.kind == "U":  # the other kind's column: empty there
+                assert (rows[column] == "").all(), column
+            else:
+                assert np.isnan(rows[column]).all(), column
+    # a single actuator's and a network's columns together
+    assert {"length", "phase", "tip.position", "muscle.phase"} <= names
 
 
 def test_a_bad_job_raises_naming_the_key():
