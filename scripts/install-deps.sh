@@ -18,6 +18,7 @@ packages=(
   python3-dev pybind11-dev python3-numpy   # the Python module (python/, MUSCLESIM_PYTHON)
   python3-pytest        # its tests
   python3-matplotlib    # the README's Python example plots with it
+  python3-pandas        # its tests turn results into DataFrames (the module does not need it)
 )
 
 missing=()

@@ -9,6 +9,7 @@
 
 #include "bindings.h"
 #include "cli_run.h"
+#include "file_alias.h"
 #include "temp_file.h"
 #include "musclesim/errors.h"
 #include "musclesim/io/network_scenario.h"
@@ -29,21 +30,10 @@ struct Scenario {
   bool network = false;
   std::string name;
 
-  // Runs `read` and re-throws its InputError with the temporary file's path shown as
-  // `display`.
+  // Runs `read`, its InputError naming the file as `display` (file_alias.h).
   template <typename Read>
   auto Located(Read read) const {
-    try {
-      return read();
-    } catch (const InputError& e) {
-      if (display == path) throw;
-      std::string message = e.what();
-      for (std::size_t at = message.find(path); at != std::string::npos;
-           at = message.find(path, at + display.size())) {
-        message.replace(at, path.size(), display);
-      }
-      throw InputError(message);
-    }
+    return WithFileAlias(path, display, read);
   }
 
   // Reads and validates the file with the overrides, as `musclesim run` does before it runs.

@@ -12,6 +12,8 @@
 
 #include "bindings.h"
 #include "cli_run.h"
+#include "file_alias.h"
+#include "musclesim/io/scenario_rewrite.h"
 #include "musclesim/studies/sweep.h"
 #include "musclesim/studies/sweep_runner.h"
 #include "overrides.h"
@@ -80,22 +82,30 @@ py::list RunMany(const py::list& jobs_in, int threads) {
   return results;
 }
 
-py::dict RunSweepFile(const std::string& path, const std::string& output, int threads) {
+py::dict RunSweepFile(const std::string& path, const std::string& output, int threads,
+                      const std::string& display) {
   if (threads < 0) throw py::value_error("threads = " + std::to_string(threads) + ": must be >= 0");
   SweepOutcome outcome;
   {
     py::gil_scoped_release release;
-    const SweepSpec spec = LoadSweep(path, threads);
-    SweepRunOptions options;
-    options.output = output;
-    options.jobs = threads;
-    outcome = RunSweep(spec, options);
+    outcome = WithFileAlias(path, display, [&] {
+      const SweepSpec spec = LoadSweep(path, threads);
+      SweepRunOptions options;
+      options.output = output;
+      options.jobs = threads;
+      return RunSweep(spec, options);
+    });
   }
   py::dict result;
   result["points"] = outcome.points;
   result["failed"] = outcome.failed;
   result["invalid"] = outcome.invalid;
   return result;
+}
+
+std::string Rewrite(const std::string& path, const std::vector<std::string>& overrides,
+                    const std::string& display) {
+  return WithFileAlias(path, display, [&] { return RewriteScenario(path, overrides, {}); });
 }
 
 }  // namespace
@@ -111,9 +121,15 @@ void BindSweep(py::module_& m) {
         "first in the list's order) after every job has run; musclesim.table() stacks the "
         "results into one structured array.");
   m.def("_run_sweep", &RunSweepFile, py::arg("path"), py::arg("output"), py::arg("threads") = 0,
+        py::arg("display") = "",
         "Runs the sweep file `path` as `musclesim sweep PATH -o output --jobs threads` does "
-        "(threads 0: every core), GIL released; returns {points, failed, invalid}. "
-        "musclesim.sweep() reads the summary back.");
+        "(threads 0: every core), GIL released; returns {points, failed, invalid}; input "
+        "errors name the file `display` (when given) in place of `path`. musclesim.sweep() "
+        "reads the summary back.");
+  m.def("_rewrite_scenario", &Rewrite, py::arg("path"), py::arg("overrides"),
+        py::arg("display") = "",
+        "The scenario file `path` with the 'key=value' overrides applied, as YAML text (a "
+        "Scenario's set() values, for a sweep's base).");
 }
 
 }  // namespace musclesim::python

@@ -91,6 +91,11 @@ def test_table_stacks_the_runs_in_job_order(tmp_path):
                 assert np.isnan(rows[column]).all(), column
     # a single actuator's and a network's columns together
     assert {"length", "phase", "tip.position", "muscle.phase"} <= names
+    # one call to a DataFrame (pandas: a test dependency, not the module's)
+    import pandas
+    frame = pandas.DataFrame(stacked)
+    assert list(frame.columns) == list(stacked.dtype.names) and len(frame) == len(stacked)
+    np.testing.assert_array_equal(frame["length"].to_numpy(), stacked["length"])
 
 
 def test_a_bad_job_raises_naming_the_key():
@@ -127,3 +132,46 @@ def test_python_runs_while_run_many_integrates():
     middle = [s for s in stamps if start + 0.25 * (end - start) < s < end - 0.25 * (end - start)]
     # a 1 ms sleep takes up to tens of ms on a busy machine: 3 ticks in the middle half
     assert len(middle) >= 3, (len(middle), end - start)
+
+
+def test_a_dict_sweep_equals_the_file_sweep():
+    sweep_file = os.path.join(SCENARIOS, "force_velocity_sweep.yaml")
+    from_file = musclesim.sweep(sweep_file)
+    as_dict = {"base": os.path.join(SCENARIOS, "concentric.yaml"), "mode": "grid",
+               "parameters": {"load[0].after": {"from": 5.0, "to": 95.0, "count": 19}},
+               "metrics": ["mean_shortening_velocity", "final_shortening_velocity",
+                           "final_length", "peak_tension", "work"],
+               "metric_options": {"window": [0.06, 0.07]}, "trajectories": "none"}
+    from_dict = musclesim.sweep(as_dict)
+    assert from_dict.dtype.names == from_file.dtype.names
+    for column in from_file.dtype.names:
+        if column != "wall_seconds":  # timing: not reproducible
+            np.testing.assert_array_equal(from_dict[column], from_file[column], err_msg=column)
+
+
+def test_a_scenario_base_keeps_its_set_values_and_matches_single_runs(tmp_path):
+    # each point's final length against the same scenario run alone: two routes through
+    # the code (the sweep's workers and metrics, Scenario.run's CSV) that must agree
+    base = musclesim.load_scenario(os.path.join(SCENARIOS, "concentric.yaml")).set("time.end", 0.08)
+    loads = [10.0, 30.0, 50.0]
+    output = tmp_path / "summary.csv"
+    summary = musclesim.sweep({"base": base, "parameters": {"load[0].after": loads},
+                               "metrics": ["final_length"]}, threads=2, output=output)
+    assert output.exists()  # written where asked, as -o does
+    for load, final_length in zip(loads, summary["final_length"]):
+        run = musclesim.load_scenario(os.path.join(SCENARIOS, "concentric.yaml"),
+                                      set={"time.end": 0.08, "load[0].after": load}).run()
+        assert run.stats["final_time"] == 0.08
+        # the last row's length; the summary prints 17 significant digits: a round trip
+        assert final_length == run["length"][-1]
+
+
+def test_a_bad_dict_sweep_names_the_key_and_the_name():
+    base = os.path.join(SCENARIOS, "concentric.yaml")
+    with pytest.raises(musclesim.InputError) as error:
+        musclesim.sweep({"base": base, "parameters": {"load[0].after": [1.0]},
+                         "metrics": ["final_length"], "mode": "spiral"}, name="my sweep")
+    assert error.value.key == "mode" and "my sweep" in str(error.value)
+    assert "spiral" in str(error.value) and "/tmp" not in str(error.value)
+    with pytest.raises(TypeError):
+        musclesim.sweep(["not", "a", "sweep"])

@@ -1,0 +1,82 @@
+"""Sweeps from Python: musclesim.sweep runs a sweep file or dict, its summary as a table."""
+import csv
+import json
+import os
+import tempfile
+
+import numpy as np
+
+from ._musclesim import Scenario, _rewrite_scenario, _run_sweep
+from .tables import structured
+
+# summary columns that are counts rather than measurements
+_INTEGER_COLUMNS = ("index", "steps", "rhs_evals")
+# summary columns that are text
+_TEXT_COLUMNS = ("status", "message")
+
+
+def _column_array(name, texts):
+    if name in _TEXT_COLUMNS:
+        return np.array(texts, dtype=object)
+    if name in _INTEGER_COLUMNS:
+        return np.array([int(t) for t in texts], dtype=np.int64)
+    try:
+        # an empty field (a metric of a failed or invalid point) is NaN
+        return np.array([float(t) if t != "" else np.nan for t in texts], dtype=np.float64)
+    except ValueError:  # an axis whose values are not numbers
+        return np.array(texts, dtype=object)
+
+
+def _write_dict_sweep(spec, directory):
+    """The sweep dict as a file in `directory`: its base made absolute (a path, relative to
+    the working directory) or written there (a Scenario, with its set() values)."""
+    if not isinstance(spec, dict):
+        raise TypeError("sweep expects a path or a dict, not %s" % type(spec).__name__)
+    spec = dict(spec)
+    base = spec.get("base")
+    if isinstance(base, Scenario):
+        if base.overrides:
+            text = _rewrite_scenario(base._path, base.overrides, base._display)
+            spec["base"] = os.path.join(directory, "base.yaml")
+            with open(spec["base"], "w") as file:
+                file.write(text)
+        else:
+            spec["base"] = base._path
+    elif isinstance(base, (str, os.PathLike)):
+        spec["base"] = os.path.abspath(os.fspath(base))
+    path = os.path.join(directory, "sweep.yaml")
+    with open(path, "w") as file:
+        # JSON is YAML: the sweep file's reader and rules; NaN has no JSON (nor sweep) value
+        json.dump(spec, file, indent=1, allow_nan=False)
+    return path
+
+
+def sweep(spec, threads=0, output=None, name="<dict>"):
+    """Runs a sweep (README "Sweeps") with the GIL released and returns its summary.
+
+    `spec` is a sweep file's path, or a dict with a sweep file's keys (base, mode, parameters,
+    metrics, metric_options, trajectories, ...) read by the same reader, so the same rules and
+    messages apply (InputError naming `name` for the file); its `base` is a scenario file's
+    path (relative to the working directory) or a Scenario, its set() values kept. `threads`:
+    as `--jobs` (0: every core). `output`: where the summary CSV (and any per-run trajectories
+    beside it) is written, as `-o`; None: a temporary file, removed (the sweep file's own
+    `output` is not used).
+
+    Returns one NumPy structured array, a record per point, with the summary CSV's columns as
+    fields in its order: index, one per swept path, status, the metrics (SI units as in the
+    CSV; NaN where a point has none), steps, rhs_evals, wall_seconds [s], message. Counts are
+    int64, status and message str, the rest float64 (an axis of non-numeric values: str).
+    `summary["status"]` is a column, `summary.dtype.names` the columns,
+    `pandas.DataFrame(summary)` a DataFrame."""
+    with tempfile.TemporaryDirectory(prefix="musclesim_sweep_") as directory:
+        if isinstance(spec, (str, os.PathLike)):
+            path, display = os.fspath(spec), ""
+        else:
+            path, display = _write_dict_sweep(spec, directory), name
+        summary = os.fspath(output) if output is not None else os.path.join(directory, "summary.csv")
+        _run_sweep(path, summary, threads, display)
+        with open(summary, newline="") as file:
+            rows = list(csv.reader(file))
+    header, body = rows[0], rows[1:]
+    return structured(header, [_column_array(column, [row[c] for row in body])
+                               for c, column in enumerate(header)])
