@@ -1,5 +1,5 @@
-// musclesim.Stepper: a network scenario stepped piece by piece from a Python loop
-// (solver/stepper.h). advance() converts nothing but a float and returns one of three
+// musclesim.Stepper: a scenario (a network, or a single actuator as one) stepped piece by
+// piece from a Python loop (solver/stepper.h). advance() converts nothing but a float and returns one of three
 // prebuilt status strings, so that a 1 kHz loop spends its time integrating.
 #include <memory>
 #include <string>
@@ -11,6 +11,8 @@
 
 #include "bindings.h"
 #include "musclesim/io/network_scenario.h"
+#include "musclesim/io/run_scenario.h"
+#include "musclesim/io/scenario.h"
 #include "musclesim/solver/stepper.h"
 #include "network_values.h"
 #include "overrides.h"
@@ -21,22 +23,37 @@ namespace py = pybind11;
 
 namespace {
 
+// The scenario `path` (either form) with `sets`, ready to step from its time.start.
+std::unique_ptr<Stepper> MakeStepper(const std::string& path, const std::vector<std::string>& sets,
+                                     std::optional<double> rtol, std::optional<double> atol) {
+  if (IsNetworkScenario(path)) {
+    NetworkScenarioSpec spec = LoadNetworkScenario(path, sets);
+    if (rtol) spec.solver.rtol = *rtol;
+    if (atol) spec.solver.atol = *atol;
+    return std::make_unique<Stepper>(spec.Build(), spec.solver,
+                                     StepperStart{spec.t_start, {}, spec.limits});
+  }
+  // a single actuator steps as its network (docs/model.md 7.4: node `tip`, element
+  // `actuator`) from the initial state and with the length limits its run has
+  ScenarioSpec spec = LoadScenario(path, sets);
+  if (rtol) spec.solver.rtol = *rtol;
+  if (atol) spec.solver.atol = *atol;
+  const ActuatorSystem system = BuildSystem(spec);
+  NetworkRunRequest request = NetworkRequestOf(system, spec.Request());
+  return std::make_unique<Stepper>(
+      system.network(), spec.solver,
+      StepperStart{request.t_start, std::move(request.initial_state), std::move(request.limits)});
+}
+
 class PyStepper {
  public:
   PyStepper(const std::string& path, const py::object& overrides, std::optional<double> rtol,
             std::optional<double> atol) {
     const std::vector<std::string> sets = OverridesFrom(overrides);
-    NetworkScenarioSpec spec;
     {
       py::gil_scoped_release release;
-      spec = LoadNetworkScenario(path, sets);
+      stepper_ = MakeStepper(path, sets, rtol, atol);
     }
-    if (rtol) spec.solver.rtol = *rtol;
-    if (atol) spec.solver.atol = *atol;
-    StepperStart start;
-    start.t_start = spec.t_start;
-    start.limits = spec.limits;
-    stepper_ = std::make_unique<Stepper>(spec.Build(), spec.solver, std::move(start));
     for (const std::string& column : NumericNetworkColumns(stepper_->system())) {
       columns_.append(py::str(column));
     }
@@ -119,15 +136,18 @@ class PyStepper {
 
 void BindStepper(py::module_& m) {
   py::class_<PyStepper>(m, "Stepper",
-                        "A network scenario integrated piece by piece from Python (the C++ "
-                        "Stepper): advance to the next sample time, read the state, set the "
-                        "activation of actuators no controller drives, advance again. Times in "
-                        "s, lengths in m, tensions in N, activations in [0, 1].")
+                        "A scenario integrated piece by piece from Python (the C++ Stepper): "
+                        "advance to the next sample time, read the state, set the activation "
+                        "of actuators no controller drives, advance again. A single-actuator "
+                        "scenario steps as its network (docs/model.md 7.4): node `ground` "
+                        "fixed at 0, node `tip` (its position is the length), element "
+                        "`actuator` (and `damper`, `spring` when nonzero). Times in s, lengths "
+                        "in m, tensions in N, activations in [0, 1].")
       .def(py::init<const std::string&, const py::object&, std::optional<double>,
                     std::optional<double>>(),
            py::arg("path"), py::arg("set") = py::none(), py::arg("rtol") = py::none(),
            py::arg("atol") = py::none(),
-           "Reads the network scenario `path` (YAML with `nodes:`), applying `set` first: a "
+           "Reads the scenario `path` (a network, or a single actuator), applying `set` first: a "
            "list of \"key=value\" strings as --set takes them, or a dict {key: value}. `rtol` "
            "and `atol` (m, m/s) replace the scenario's solver tolerances. Starts at the "
            "scenario's time.start with its limits; its time.end and output are not used.")
@@ -148,7 +168,7 @@ void BindStepper(py::module_& m) {
            }),
            py::arg("scenario"), py::arg("set") = py::none(), py::arg("rtol") = py::none(),
            py::arg("atol") = py::none(),
-           "The same from a network Scenario (load_scenario or scenario_from_dict, with the "
+           "The same from a Scenario (load_scenario or scenario_from_dict, with the "
            "values set() on it), `set` applied after them.")
       .def("advance", &PyStepper::Advance, py::arg("t"),
            "Integrates from `time` to `t` [s] (GIL released) and returns \"completed\" (time "
