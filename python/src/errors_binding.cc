@@ -27,6 +27,7 @@ struct MessageParts {
 //   KEY (FILE:LINE:COLUMN): RULE              (a missing or unknown key)
 //   FILE:LINE:COLUMN: YAML syntax error: ...
 //   --set KEY=VALUE: ...                      (an override that names no value)
+//   ARGUMENT: row N: ...                      (data given as arrays: the argument's name)
 // and a value given by an override is placed at "--set" (no file position: location None).
 MessageParts ParseInputMessage(const std::string& message) {
   MessageParts parts;
@@ -34,8 +35,10 @@ MessageParts ParseInputMessage(const std::string& message) {
   static const std::regex syntax(R"(^(.*:\d+:\d+): )");
   static const std::regex override_text(R"(^--set ([^=:\s]+)=)");
   static const std::regex position(R"(.*:\d+:\d+$)");
+  static const std::regex array_row(R"(^([A-Za-z_][\w.\[\]]*): row \d+: )");
   std::smatch match;
-  if (std::regex_search(message, match, override_text)) {
+  if (std::regex_search(message, match, override_text) ||
+      std::regex_search(message, match, array_row)) {
     parts.key = match[1].str();
   } else if (std::regex_search(message, match, located)) {
     if (match[1].str() != "(top level)") parts.key = match[1].str();

@@ -265,8 +265,10 @@ def rising(n):
 def test_unsorted_duplicate_and_non_finite_rows_are_named():
     with pytest.raises(ms.InputError, match=re.escape(
             "passive: row 4: length = 0.12 is not greater than the row before (0.14): rows "
-            "must be sorted by length, without duplicates")):
+            "must be sorted by length, without duplicates")) as error:
         ms.identify_curves(passive=([0.1, 0.13, 0.14, 0.12, 0.15], [1.0, 2.0, 3.0, 4.0, 5.0]))
+    # the argument is the key path; arrays have no file position
+    assert error.value.key == "passive" and error.value.location is None
     with pytest.raises(ms.InputError, match=re.escape(
             "velocity: row 2: shortening_velocity = 0 is not greater than the row before (0)")):
         ms.identify_curves(velocity=([0.0, 0.0, 0.5], [100.0, 100.0, 40.0]))
