@@ -16,8 +16,8 @@
 #include "musclesim/io/identify_series_spec.h"
 #include "musclesim/io/output_file.h"
 #include "musclesim/io/scenario_rewrite.h"
-#include "musclesim/model/number_format.h"
 #include "musclesim/studies/identify_series.h"
+#include "musclesim/studies/identify_series_warnings.h"
 
 namespace musclesim::cli {
 
@@ -162,13 +162,8 @@ int IdentifySeriesCommand(int argc, char** argv) {
   if (args.Has("--residuals")) stage(args.Value("--residuals"), FormatResidualCsv(fit));
   for (const auto& output : outputs) output->Commit();
   // far above 1 the model does not describe the data at this optimum: say so, not silently
-  constexpr double kPoorFit = 4.0;  // a mean square 4 noise variances: residuals 2 SD
-  if (fit.noise_given && fit.degrees_of_freedom > 0 &&
-      fit.weighted_rss / fit.degrees_of_freedom > kPoorFit) {
-    std::cerr << "musclesim identify: warning: the weighted residuals' mean square is "
-              << FormatNumber(fit.weighted_rss / fit.degrees_of_freedom)
-              << ", far above the 1 the stated noise predicts: a local minimum (try another "
-                 "start), a parameter stuck on a bound, or noise levels too small\n";
+  if (const std::string warning = PoorFitWarning(fit); !warning.empty()) {
+    std::cerr << "musclesim identify: warning: " << warning << "\n";
   }
   if (!fit.converged) {
     std::cerr << "musclesim identify: the fit did not converge: " << fit.stop_reason

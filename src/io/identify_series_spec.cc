@@ -23,16 +23,21 @@ constexpr InputRange kParameterRange{
     -1e12, 1e12, "the parameter's unit",
     "beyond 1e12 no quantity of a scenario lies, and steps between such values stay finite"};
 
-std::string Relative(const std::string& data_file, const std::string& file) {
-  return (std::filesystem::path(data_file).parent_path() / file).lexically_normal().string();
+std::string Relative(const std::string& base_dir, const std::string& file) {
+  return (std::filesystem::path(base_dir) / file).lexically_normal().string();
 }
 
 SeriesSpec ReadSeries(const yaml::Source& src, const YAML::Node& node, const std::string& path,
-                      const std::string& data_file) {
-  yaml::RequireMap(src, node, path, {"csv", "noise"});
+                      const std::string& base_dir, SeriesValues values) {
+  if (values == SeriesValues::kInMemory) {
+    // the caller holds the values: an entry gives at most their noise levels
+    yaml::RequireMap(src, node, path, {"noise"});
+  } else {
+    yaml::RequireMap(src, node, path, {"csv", "noise"});
+  }
   SeriesSpec series;
   series.at = yaml::Location(src, node);
-  if (!node["csv"] && !node["noise"]) {
+  if (values == SeriesValues::kCsvFiles && !node["csv"] && !node["noise"]) {
     yaml::Fail(src, node, path, yaml::Describe(node),
                "give csv (the measured values, to fit) or noise (the columns and their noise "
                "levels, enough for --design)");
@@ -40,7 +45,7 @@ SeriesSpec ReadSeries(const yaml::Source& src, const YAML::Node& node, const std
   if (const YAML::Node csv = node["csv"]) {
     const std::string file = yaml::ReadString(src, csv, path + ".csv");
     if (file.empty()) yaml::Fail(src, csv, path + ".csv", "\"\"", "must name a CSV file");
-    series.csv = Relative(data_file, file);
+    series.csv = Relative(base_dir, file);
     series.csv_at = yaml::Location(src, csv);
   }
   if (const YAML::Node noise = node["noise"]) {
@@ -102,25 +107,34 @@ bool IsIdentifySeriesFile(const std::string& path) {
 }
 
 IdentifySeriesSpec LoadIdentifySeriesSpec(const std::string& path) {
-  const YAML::Node root = yaml::LoadFile(path);
-  const yaml::Source src{path};
+  return ParseIdentifySeriesSpec(path, yaml::ReadText(path),
+                                 std::filesystem::path(path).parent_path().string());
+}
+
+IdentifySeriesSpec ParseIdentifySeriesSpec(const std::string& source, const std::string& text,
+                                           const std::string& base_dir, SeriesValues values) {
+  const YAML::Node root = yaml::Parse(source, text);
+  const yaml::Source src{source};
   yaml::RequireMap(src, root, "", {"scenario", "series", "parameters"});
   IdentifySeriesSpec spec;
-  spec.source = path;
+  spec.source = source;
 
   const YAML::Node scenario = yaml::Required(src, root, "", "scenario");
   const std::string file = yaml::ReadString(src, scenario, "scenario");
   if (file.empty()) yaml::Fail(src, scenario, "scenario", "\"\"", "must name a scenario file");
-  spec.scenario = Relative(path, file);
+  spec.scenario = Relative(base_dir, file);
   spec.scenario_at = yaml::Location(src, scenario);
 
   const YAML::Node series = yaml::Required(src, root, "", "series");
   if (!series.IsSequence() || series.size() == 0) {
     yaml::Fail(src, series, "series", yaml::Describe(series),
-               "must be a list of one or more series, each {csv: FILE, noise: {COLUMN: SD}}");
+               values == SeriesValues::kCsvFiles
+                   ? "must be a list of one or more series, each {csv: FILE, noise: {COLUMN: SD}}"
+                   : "must be a list of one or more series");
   }
   for (std::size_t i = 0; i < series.size(); ++i) {
-    spec.series.push_back(ReadSeries(src, series[i], "series[" + std::to_string(i) + "]", path));
+    spec.series.push_back(
+        ReadSeries(src, series[i], "series[" + std::to_string(i) + "]", base_dir, values));
   }
 
   const YAML::Node parameters = yaml::Required(src, root, "", "parameters");

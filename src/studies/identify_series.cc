@@ -132,9 +132,12 @@ Setup Prepare(const IdentifySeriesSpec& spec, std::vector<MeasuredSeries> series
     for (std::size_t r = 0; r < series[s].times.size(); ++r) {
       const double t = series[s].times[r];
       if (t >= first && t <= last) continue;
+      const std::string label = "series[" + std::to_string(s) + "]";
+      const std::string row = std::to_string(series[s].lines[r]);
       throw InputError(
-          "series[" + std::to_string(s) + "].csv = " + series[s].source + ":" +
-          std::to_string(series[s].lines[r]) + ": t = " + FormatNumber(t) +
+          (series[s].source.empty() ? label + " (row " + row + ")"  // values given in memory
+                                    : label + ".csv = " + series[s].source + ":" + row) +
+          ": t = " + FormatNumber(t) +
           " lies outside the scenario's run, from " + FormatNumber(first) + " to " +
           FormatNumber(last) + " s" +
           (baseline.stats.status == RunStatus::kLimit ? " (where " + baseline.stats.message + ")"

@@ -41,11 +41,26 @@ struct IdentifySeriesSpec {
 // `scenario` key. Throws InputError for a file that cannot be read or parsed.
 bool IsIdentifySeriesFile(const std::string& path);
 
+// Where the measured values of the series come from.
+enum class SeriesValues {
+  kCsvFiles,  // each series names its csv (or, for --design only, gives its noise alone)
+  kInMemory,  // the caller holds them (MeasuredSeriesFromColumns, studies/
+              // identify_series_columns.h): an entry has no csv key, and may be {} (no noise)
+};
+
 // Reads and validates a data file; paths in it are relative to it. Throws InputError naming
 // file:line:column, key, value and rule: an unknown key, a missing scenario, series or
 // parameters, an empty list, a series with neither csv nor noise, a noise level not > 0 or
 // not finite, a malformed or repeated parameter path, bounds that are not two finite numbers
 // lower < upper, a start outside them.
 IdentifySeriesSpec LoadIdentifySeriesSpec(const std::string& path);
+
+// LoadIdentifySeriesSpec on `text` held in memory (the Python module writes a dict as JSON,
+// which is YAML): the same reader and rules, `source` naming the text in messages in place of
+// a file ("identify_series:7:5"), and the scenario's and the csv files' paths taken
+// relative to `base_dir` ("": as they are).
+IdentifySeriesSpec ParseIdentifySeriesSpec(const std::string& source, const std::string& text,
+                                           const std::string& base_dir,
+                                           SeriesValues values = SeriesValues::kCsvFiles);
 
 }  // namespace musclesim

@@ -23,7 +23,8 @@ namespace musclesim {
 
 // One series of the data file, read.
 struct MeasuredSeries {
-  std::string source;                // the CSV's path; "" for a --design series without one
+  std::string source;                // the CSV's path; "" without one (a --design series, or
+                                     // values given in memory)
   std::string at;                    // where the data file names it ("data.yaml:4:5") [-]
   std::vector<std::string> columns;  // outputs, named as the trajectory CSV names them [-]
   std::vector<double> noise;         // per column: standard deviation [the column's unit];
@@ -31,7 +32,7 @@ struct MeasuredSeries {
   std::vector<double> times;         // [s], strictly increasing; empty (design only): the
                                      // scenario's output grid
   std::vector<double> values;        // times x columns, row-major [the columns' units]
-  std::vector<std::size_t> lines;    // the CSV's line of each row [-]
+  std::vector<std::size_t> lines;    // the CSV's line of each row, or its 1-based index [-]
 };
 
 // Reads the series of `spec`. Each CSV has a column `t` and one or more output columns;
