@@ -8,20 +8,25 @@
 
 namespace musclesim::python {
 
+// `text` with every occurrence of `path` shown as `display`.
+inline std::string Aliased(std::string text, const std::string& path, const std::string& display) {
+  if (path.empty() || path == display) return text;
+  for (std::size_t at = text.find(path); at != std::string::npos;
+       at = text.find(path, at + display.size())) {
+    text.replace(at, path.size(), display);
+  }
+  return text;
+}
+
 // Runs `call`; an InputError it throws is re-thrown with every `path` in its message
-// replaced by `display` (unchanged when the two are the same).
+// replaced by `display`.
 template <typename Call>
 auto WithFileAlias(const std::string& path, const std::string& display, Call call) {
   try {
     return call();
   } catch (const InputError& e) {
     if (display == path || path.empty()) throw;
-    std::string message = e.what();
-    for (std::size_t at = message.find(path); at != std::string::npos;
-         at = message.find(path, at + display.size())) {
-      message.replace(at, path.size(), display);
-    }
-    throw InputError(message);
+    throw InputError(Aliased(e.what(), path, display));
   }
 }
 

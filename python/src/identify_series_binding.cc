@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "bindings.h"
+#include "file_alias.h"
 #include "musclesim/errors.h"
 #include "musclesim/io/identify_series_spec.h"
 #include "musclesim/studies/identify_series.h"
@@ -61,16 +62,6 @@ py::array_t<double> ToArray(const Eigen::MatrixXd& matrix) {
     for (Eigen::Index j = 0; j < matrix.cols(); ++j) out(i, j) = matrix(i, j);
   }
   return array;
-}
-
-// `text` with every occurrence of `path` shown as `display`.
-std::string Displayed(std::string text, const std::string& path, const std::string& display) {
-  if (path.empty() || path == display) return text;
-  for (std::size_t at = text.find(path); at != std::string::npos;
-       at = text.find(path, at + display.size())) {
-    text.replace(at, path.size(), display);
-  }
-  return text;
 }
 
 // The scenario as identification needs it: the file the runs read, its overrides (the CLI's
@@ -160,11 +151,11 @@ Identification Identify(const py::object& scenario, const std::string& spec_text
       out.report = FormatSeriesReport(out.result, spec_name);
     }
   } catch (const InputError& e) {  // a dict's temporary file named as the dict
-    throw InputError(Displayed(e.what(), file.path, file.display));
+    throw InputError(Aliased(e.what(), file.path, file.display));
   } catch (const std::runtime_error& e) {
-    throw std::runtime_error(Displayed(e.what(), file.path, file.display));
+    throw std::runtime_error(Aliased(e.what(), file.path, file.display));
   }
-  out.report = Displayed(out.report, file.path, file.display);
+  out.report = Aliased(out.report, file.path, file.display);
   if (!design) {
     if (const std::string poor = PoorFitWarning(out.result); !poor.empty()) {
       out.warnings.push_back(poor);
