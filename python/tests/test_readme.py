@@ -1,5 +1,5 @@
 """The README's Python examples run as written: every ```python block of README.md is executed
-in a fresh directory holding a link to scenarios/, with matplotlib drawing off-screen."""
+in a fresh directory holding links to scenarios/ and data/, with matplotlib drawing off-screen."""
 import os
 import pathlib
 import re
@@ -19,6 +19,7 @@ def test_the_readme_has_python_examples():
 @pytest.mark.parametrize("code", BLOCKS, ids=[f"block{i}" for i in range(len(BLOCKS))])
 def test_a_readme_python_block_runs(code, tmp_path):
     (tmp_path / "scenarios").symlink_to(ROOT / "scenarios")
+    (tmp_path / "data").symlink_to(ROOT / "data")
     # the package as this test imports it, whatever the directory
     paths = [os.path.abspath(p) for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
     env = dict(os.environ, MPLBACKEND="Agg", PYTHONPATH=os.pathsep.join(paths))
