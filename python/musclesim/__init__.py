@@ -26,3 +26,4 @@ def run_many(jobs, threads=0):
 
 from .curves_identification import *  # noqa: F401,F403,E402
 from .series_identification import *  # noqa: F401,F403,E402
+from .plotting import *  # noqa: F401,F403,E402

@@ -19,5 +19,7 @@ void BindSweep(pybind11::module_& m);
 void BindIdentifyCurves(pybind11::module_& m);
 // Scenario parameters identified from measured time series (`musclesim identify` on series).
 void BindIdentifySeries(pybind11::module_& m);
+// Figures drawn by gnuplot, as `musclesim plot` draws them.
+void BindPlot(pybind11::module_& m);
 
 }  // namespace musclesim::python

@@ -15,4 +15,5 @@ PYBIND11_MODULE(_musclesim, m) {
   musclesim::python::BindSweep(m);
   musclesim::python::BindIdentifyCurves(m);
   musclesim::python::BindIdentifySeries(m);
+  musclesim::python::BindPlot(m);
 }
