@@ -20,6 +20,7 @@ def run_many(jobs, threads=0):
     them into one structured array (a DataFrame with pandas.DataFrame(...)).
     """
     from . import _musclesim as _extension
+    jobs = list(jobs)  # the Scenarios (and a dict's temporary file) live until the runs end
     converted = [(job._path, job.overrides) if isinstance(job, Scenario) else job for job in jobs]
     return _extension.run_many(converted, threads)
 

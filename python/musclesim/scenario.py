@@ -1,7 +1,6 @@
 """Scenarios from Python dicts (the YAML file's keys and values)."""
-import json as _json
-
 from . import _musclesim
+from .yaml_text import yaml_text
 
 
 def scenario_from_dict(d, name="<dict>"):
@@ -10,10 +9,9 @@ def scenario_from_dict(d, name="<dict>"):
     The dict is read by the same reader as a file (its JSON text is YAML), so the same rules
     apply; an InputError names the key path (e.g. "load[0].after") and `name` in place of the
     file, with the line and column of the dict's JSON text written one key per line. SI units
-    as in the files (m, m/s, N, s; activations in [0, 1]).
+    as in the files (m, m/s, N, s; activations in [0, 1]). NumPy numbers and arrays are taken
+    as Python numbers and lists.
     """
     if not isinstance(d, dict):
         raise TypeError("scenario_from_dict expects a dict, not %s" % type(d).__name__)
-    # allow_nan=False: NaN and infinity have no JSON text (and no valid scenario value)
-    text = _json.dumps(d, indent=1, allow_nan=False)
-    return _musclesim._scenario_from_text(text, name)
+    return _musclesim._scenario_from_text(yaml_text(d), name)

@@ -6,32 +6,15 @@ as the data file's JSON text and read by its own reader, so the same rules and m
 apply (key paths such as "parameters[0].bounds", places "identify_series:LINE:COLUMN" in
 that text, one key per line).
 """
-import json as _json
-import math as _math
 import warnings as _warnings
-from collections.abc import Mapping as _Mapping
 
 from . import _musclesim
+from .yaml_text import yaml_text
 
 __all__ = ["identify_series"]
 
 # What messages call the data file the arguments are written as.
 _SPEC_NAME = "identify_series"
-
-
-def _yaml_ready(value):
-    """`value` as JSON can write it and the YAML reader reads it: NumPy scalars and arrays as
-    Python numbers and lists, non-finite floats as YAML's .nan/.inf (JSON has none), so that
-    the reader, not json, names such a value and the rule it breaks."""
-    if isinstance(value, _Mapping):
-        return {key: _yaml_ready(item) for key, item in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [_yaml_ready(item) for item in value]
-    if hasattr(value, "tolist") and not isinstance(value, (str, bytes)):
-        return _yaml_ready(value.tolist())  # NumPy scalar or array
-    if isinstance(value, float) and not _math.isfinite(value):
-        return ".nan" if _math.isnan(value) else (".inf" if value > 0 else "-.inf")
-    return value
 
 
 def _series_entry(index, given):
@@ -104,7 +87,7 @@ def identify_series(scenario, series, parameters, design=False, max_evaluations=
         "series": entries,
         "parameters": [{"path": p} if isinstance(p, str) else p for p in parameters],
     }
-    text = _json.dumps(_yaml_ready(spec), indent=1)
+    text = yaml_text(spec)
     result = _musclesim._identify_series(scenario, text, _SPEC_NAME, columns, bool(design),
                                          int(max_evaluations))
     for message in result.warnings:

@@ -1,13 +1,13 @@
 """Sweeps from Python: musclesim.sweep runs a sweep file or dict, its summary as a table."""
 import csv
-import json
 import os
 import tempfile
 
 import numpy as np
 
-from ._musclesim import Scenario, _rewrite_scenario, _run_sweep
+from ._musclesim import Scenario, _run_sweep
 from .tables import structured
+from .yaml_text import yaml_text
 
 # summary columns that are counts rather than measurements
 _INTEGER_COLUMNS = ("index", "steps", "rhs_evals")
@@ -36,22 +36,20 @@ def _write_dict_sweep(spec, directory):
     base = spec.get("base")
     if isinstance(base, Scenario):
         if base.overrides:
-            text = _rewrite_scenario(base._path, base.overrides, base._display)
             spec["base"] = os.path.join(directory, "base.yaml")
             with open(spec["base"], "w") as file:
-                file.write(text)
+                file.write(base.to_yaml())
         else:
             spec["base"] = base._path
     elif isinstance(base, (str, os.PathLike)):
         spec["base"] = os.path.abspath(os.fspath(base))
     path = os.path.join(directory, "sweep.yaml")
     with open(path, "w") as file:
-        # JSON is YAML: the sweep file's reader and rules; NaN has no JSON (nor sweep) value
-        json.dump(spec, file, indent=1, allow_nan=False)
+        file.write(yaml_text(spec))
     return path
 
 
-def sweep(spec, threads=0, output=None, name="<dict>"):
+def sweep(spec, threads=0, output=None, resume=False, name="<dict>"):
     """Runs a sweep (README "Sweeps") with the GIL released and returns its summary.
 
     `spec` is a sweep file's path, or a dict with a sweep file's keys (base, mode, parameters,
@@ -60,7 +58,10 @@ def sweep(spec, threads=0, output=None, name="<dict>"):
     path (relative to the working directory) or a Scenario, its set() values kept. `threads`:
     as `--jobs` (0: every core). `output`: where the summary CSV (and any per-run trajectories
     beside it) is written, as `-o`; None: a temporary file, removed (the sweep file's own
-    `output` is not used).
+    `output` is not used). `resume`: as `--resume`, keep the rows of an interrupted sweep's
+    output.partial and run the rest. Ctrl-C stops the sweep (KeyboardInterrupt) after the
+    running points, their rows kept in output.partial. A sweep keeping trajectories
+    (`trajectories: all` or `failed`) needs `output`: they are written beside it.
 
     Returns one NumPy structured array, a record per point, with the summary CSV's columns as
     fields in its order: index, one per swept path, status, the metrics (SI units as in the
@@ -70,11 +71,12 @@ def sweep(spec, threads=0, output=None, name="<dict>"):
     `pandas.DataFrame(summary)` a DataFrame."""
     with tempfile.TemporaryDirectory(prefix="musclesim_sweep_") as directory:
         if isinstance(spec, (str, os.PathLike)):
-            path, display = os.fspath(spec), ""
+            path = os.fspath(spec)
+            display = path
         else:
             path, display = _write_dict_sweep(spec, directory), name
         summary = os.fspath(output) if output is not None else os.path.join(directory, "summary.csv")
-        _run_sweep(path, summary, threads, display)
+        _run_sweep(path, summary, output is not None, bool(resume), threads, display)
         with open(summary, newline="") as file:
             rows = list(csv.reader(file))
     header, body = rows[0], rows[1:]

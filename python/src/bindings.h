@@ -5,7 +5,7 @@
 
 namespace musclesim::python {
 
-// musclesim.InputError (and ParameterError, SolverError): C++ exceptions translated.
+// musclesim.InputError and ParameterError: C++ exceptions translated.
 void BindErrors(pybind11::module_& m);
 // Tension curves on NumPy arrays with their derivatives; the closed-form Gaussian fit.
 void BindModel(pybind11::module_& m);

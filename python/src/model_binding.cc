@@ -11,6 +11,7 @@
 
 #include "bindings.h"
 #include "model_values.h"
+#include "overrides.h"
 #include "musclesim/errors.h"
 #include "musclesim/io/input_ranges.h"
 #include "musclesim/io/model_text.h"
@@ -319,7 +320,8 @@ passive slope is the left one (0).)")
 
   m.def(
       "load_model",
-      [](const std::string& path) {
+      [](const py::object& given) {
+        const std::string path = PathText(given, "load_model(path)");
         ModelSpec spec;
         {
           py::gil_scoped_release release;  // a block asking for a fit runs it here

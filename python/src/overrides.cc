@@ -4,34 +4,57 @@ namespace musclesim::python {
 
 namespace py = pybind11;
 
+std::string OverrideText(const std::string& key, const pybind11::handle& given) {
+  py::object value = py::reinterpret_borrow<py::object>(given);
+  if (py::isinstance(value, py::module_::import("numpy").attr("generic"))) {
+    value = value.attr("item")();  // np.float32(0.5) -> 0.5, np.int64(3) -> 3
+  }
+  std::string text;
+  if (py::isinstance<py::bool_>(value)) {
+    text = value.cast<bool>() ? "true" : "false";
+  } else if (py::isinstance<py::int_>(value) || py::isinstance<py::str>(value)) {
+    text = py::str(value).cast<std::string>();
+  } else if (py::isinstance<py::float_>(value)) {
+    text = py::repr(value).cast<std::string>();
+  } else {
+    const std::string type = py::str(py::type::of(value).attr("__name__"));
+    throw py::type_error(key + ": the value must be a number, a bool or a str, not " + type);
+  }
+  return key + "=" + text;
+}
+
 std::vector<std::string> OverridesFrom(const py::handle& overrides) {
   std::vector<std::string> result;
   if (overrides.is_none()) return result;
   if (py::isinstance<py::dict>(overrides)) {
     for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(overrides)) {
-      std::string text;
-      if (py::isinstance<py::bool_>(value)) {
-        text = value.cast<bool>() ? "true" : "false";
-      } else if (py::isinstance<py::str>(value)) {
-        text = value.cast<std::string>();
-      } else {
-        text = py::repr(value).cast<std::string>();  // round-trip digits for floats
-      }
-      result.push_back(py::str(key).cast<std::string>() + "=" + text);
+      result.push_back(OverrideText(py::str(key).cast<std::string>(), value));
     }
     return result;
   }
   if (py::isinstance<py::str>(overrides)) {
-    throw py::type_error("overrides: expected a list of \"key=value\" strings or a dict, got a str");
+    throw py::type_error("set: expected a list of \"key=value\" strings or a dict, got one str");
   }
   for (const auto& item : overrides) {
     if (!py::isinstance<py::str>(item)) {
-      throw py::type_error("overrides: every item must be a \"key=value\" string, got " +
+      throw py::type_error("set: every item must be a \"key=value\" string, got " +
                            py::repr(item).cast<std::string>());
     }
     result.push_back(item.cast<std::string>());
   }
   return result;
+}
+
+std::string PathText(const py::handle& path, const char* what) {
+  if (!py::isinstance<py::str>(path) && !py::hasattr(path, "__fspath__")) {
+    throw py::type_error(std::string(what) + ": expected a path (str or pathlib.Path), not " +
+                         py::str(py::type::of(path).attr("__name__")).cast<std::string>());
+  }
+  const py::object text = py::module_::import("os").attr("fspath")(path);
+  if (!py::isinstance<py::str>(text)) {
+    throw py::type_error(std::string(what) + ": expected a str path, not bytes");
+  }
+  return text.cast<std::string>();
 }
 
 }  // namespace musclesim::python

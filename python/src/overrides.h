@@ -8,8 +8,16 @@
 
 namespace musclesim::python {
 
-// None: none. A dict's values are written as --set reads them (True/False as true/false,
-// numbers with repr's round-trip digits, strings as they are).
+// "key=value" as --set takes it: a bool as true/false, a float by its shortest exact text
+// (repr), an int or a str as written; a NumPy scalar as the Python number it holds. Any
+// other type is a TypeError naming the key.
+std::string OverrideText(const std::string& key, const pybind11::handle& value);
+
+// None: none. A dict's values as OverrideText writes them; a list's items must be
+// "key=value" strings.
 std::vector<std::string> OverridesFrom(const pybind11::handle& overrides);
+
+// A path given as str or os.PathLike (pathlib.Path), as text; TypeError otherwise.
+std::string PathText(const pybind11::handle& path, const char* what);
 
 }  // namespace musclesim::python

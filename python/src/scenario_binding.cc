@@ -2,6 +2,7 @@
 // very writers `musclesim run` uses, so the columns are its CSV's).
 #include <pybind11/stl.h>
 
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
@@ -10,10 +11,12 @@
 #include "bindings.h"
 #include "cli_run.h"
 #include "file_alias.h"
+#include "overrides.h"
 #include "temp_file.h"
 #include "musclesim/errors.h"
 #include "musclesim/io/network_scenario.h"
 #include "musclesim/io/scenario.h"
+#include "musclesim/io/scenario_rewrite.h"
 
 namespace py = pybind11;
 
@@ -47,46 +50,14 @@ struct Scenario {
   }
 };
 
-// "key=value" for an override: Python's bool as true/false, a float by its shortest exact
-// text (repr), an int or a str as written.
-std::string OverrideText(const std::string& key, const py::handle& value) {
-  std::string text;
-  if (py::isinstance<py::bool_>(value)) {
-    text = value.cast<bool>() ? "true" : "false";
-  } else if (py::isinstance<py::int_>(value) || py::isinstance<py::str>(value)) {
-    text = py::str(value).cast<std::string>();
-  } else if (py::isinstance<py::float_>(value)) {
-    text = py::repr(value).cast<std::string>();
-  } else {
-    const std::string type = py::str(py::type::of(value).attr("__name__"));
-    throw py::type_error("set(" + key + ", ...): the value must be a number, a bool or a str, " +
-                         "not " + type);
-  }
-  return key + "=" + text;
-}
-
-// The overrides given to load_scenario: a list of "key=value" texts or a dict.
-std::vector<std::string> OverrideTexts(const py::object& set) {
-  std::vector<std::string> texts;
-  if (set.is_none()) return texts;
-  if (py::isinstance<py::dict>(set)) {
-    for (const auto& item : set.cast<py::dict>()) {
-      texts.push_back(OverrideText(py::str(item.first).cast<std::string>(), item.second));
-    }
-    return texts;
-  }
-  if (py::isinstance<py::str>(set)) {
-    throw py::type_error("set must be a list of 'key=value' texts or a dict, not one str");
-  }
-  for (const auto& item : set) texts.push_back(py::str(item).cast<std::string>());
-  return texts;
-}
-
-Scenario Load(const std::string& path, const py::object& set) {
+Scenario Load(const py::object& given, const py::object& set) {
+  const std::string path = PathText(given, "load_scenario(path)");
   Scenario scenario;
-  scenario.path = path;
+  // absolute: the scenario stays valid across os.chdir and in a sweep's temporary directory;
+  // messages keep the name the user gave
+  scenario.path = std::filesystem::absolute(path).lexically_normal().string();
   scenario.display = path;
-  scenario.overrides = OverrideTexts(set);
+  scenario.overrides = OverridesFrom(set);
   py::gil_scoped_release release;
   scenario.Validate();
   return scenario;
@@ -206,6 +177,21 @@ void BindScenario(py::module_& m) {
       .def_property_readonly(
           "_display", [](const Scenario& s) { return s.display; },
           "The file's name in messages: the path, or the name given to scenario_from_dict.")
+      .def(
+          "copy", [](const Scenario& s) { return s; },
+          "An independent copy: set() on one leaves the other as it is (copy.copy and "
+          "copy.deepcopy give the same).")
+      .def("__copy__", [](const Scenario& s) { return s; })
+      .def("__deepcopy__", [](const Scenario& s, const py::object&) { return s; },
+           py::arg("memo"))
+      .def(
+          "to_yaml",
+          [](const Scenario& s) {
+            py::gil_scoped_release release;
+            return s.Located([&] { return RewriteScenario(s.path, s.overrides, {}); });
+          },
+          "The scenario as a YAML file's text, its set() values written in: what `musclesim "
+          "run` runs alike (the original's comments are not kept).")
       .def(
           "_with_overrides",
           [](const Scenario& s, const std::vector<std::string>& more) {

@@ -156,7 +156,10 @@ void BindStepper(py::module_& m) {
              // a Scenario (load_scenario, scenario_from_dict): its file and its set() values,
              // then `set`
              if (!py::hasattr(scenario, "_path") || !py::hasattr(scenario, "overrides")) {
-               throw py::type_error("Stepper takes a scenario file's path or a Scenario");
+               // a pathlib.Path (a str takes the constructor above)
+               return std::make_unique<PyStepper>(
+                   PathText(scenario, "Stepper: a scenario file's path or a Scenario"),
+                   overrides, rtol, atol);
              }
              py::list sets;
              for (const std::string& text : OverridesFrom(scenario.attr("overrides"))) {
@@ -169,7 +172,7 @@ void BindStepper(py::module_& m) {
            py::arg("scenario"), py::arg("set") = py::none(), py::arg("rtol") = py::none(),
            py::arg("atol") = py::none(),
            "The same from a Scenario (load_scenario or scenario_from_dict, with the "
-           "values set() on it), `set` applied after them.")
+           "values set() on it), `set` applied after them, or from a pathlib.Path.")
       .def("advance", &PyStepper::Advance, py::arg("t"),
            "Integrates from `time` to `t` [s] (GIL released) and returns \"completed\" (time "
            "is then t), \"limit\" (a length limit was reached; no further advance) or "

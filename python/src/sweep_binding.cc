@@ -2,7 +2,10 @@
 // whose summary musclesim.sweep reads back); the GIL is released while anything runs.
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <exception>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -12,9 +15,10 @@
 
 #include "bindings.h"
 #include "cli_run.h"
+#include "musclesim/errors.h"
 #include "file_alias.h"
-#include "musclesim/io/scenario_rewrite.h"
 #include "musclesim/studies/sweep.h"
+#include "musclesim/studies/sweep_observer.h"
 #include "musclesim/studies/sweep_runner.h"
 #include "overrides.h"
 
@@ -48,15 +52,19 @@ py::list RunMany(const py::list& jobs_in, int threads) {
   for (const py::handle item : jobs_in) {
     const py::tuple pair = py::reinterpret_borrow<py::object>(item).cast<py::tuple>();
     if (pair.size() != 2) throw py::value_error("jobs: every job must be a (path, overrides) pair");
-    jobs.push_back({pair[0].cast<std::string>(), OverridesFrom(pair[1])});
+    jobs.push_back({PathText(pair[0], "run_many: a job's path"), OverridesFrom(pair[1])});
   }
   std::vector<Outcome> outcomes(jobs.size());
   const int workers = ThreadCount(threads, jobs.size());
+  std::atomic<bool> stop{false};  // Ctrl-C: start no further job
   {
     py::gil_scoped_release release;
     std::atomic<std::size_t> next{0};
+    std::mutex mutex;
+    std::condition_variable finished;
+    int running = workers;
     const auto work = [&] {
-      for (std::size_t k = next++; k < jobs.size(); k = next++) {
+      for (std::size_t k = next++; k < jobs.size() && !stop; k = next++) {
         try {
           const RunText text = RunLikeCli(jobs[k].path, jobs[k].overrides, {});
           outcomes[k].columns = SplitCsv(text.csv);
@@ -65,12 +73,28 @@ py::list RunMany(const py::list& jobs_in, int threads) {
           outcomes[k].error = std::current_exception();
         }
       }
+      const std::lock_guard<std::mutex> lock(mutex);
+      --running;
+      finished.notify_all();
     };
     std::vector<std::thread> pool;
-    for (int w = 1; w < workers; ++w) pool.emplace_back(work);
-    work();
+    for (int w = 0; w < workers; ++w) pool.emplace_back(work);
+    // this thread watches for Ctrl-C (Python's signal handlers run only on it, with the GIL)
+    std::unique_lock<std::mutex> lock(mutex);
+    while (running > 0) {
+      finished.wait_for(lock, std::chrono::milliseconds(100));
+      if (running == 0 || stop) continue;
+      lock.unlock();
+      {
+        py::gil_scoped_acquire gil;
+        if (PyErr_CheckSignals() != 0) stop = true;  // the KeyboardInterrupt stays pending
+      }
+      lock.lock();
+    }
+    lock.unlock();
     for (std::thread& thread : pool) thread.join();
   }
+  if (stop) throw py::error_already_set();
   // the first bad job (in the list's order) raises: its error names file, key and value
   for (const Outcome& outcome : outcomes) {
     if (outcome.error) std::rethrow_exception(outcome.error);
@@ -82,30 +106,48 @@ py::list RunMany(const py::list& jobs_in, int threads) {
   return results;
 }
 
-py::dict RunSweepFile(const std::string& path, const std::string& output, int threads,
-                      const std::string& display) {
+// Stops a sweep at Ctrl-C: polled between rows on the thread that called sweep().
+class InterruptObserver : public SweepObserver {
+ public:
+  bool StopRequested() override {
+    if (interrupted_) return true;
+    py::gil_scoped_acquire gil;
+    interrupted_ = PyErr_CheckSignals() != 0;  // the KeyboardInterrupt stays pending
+    return interrupted_;
+  }
+
+ private:
+  bool interrupted_ = false;
+};
+
+py::dict RunSweepFile(const std::string& path, const std::string& output, bool output_given,
+                      bool resume, int threads, const std::string& display) {
   if (threads < 0) throw py::value_error("threads = " + std::to_string(threads) + ": must be >= 0");
   SweepOutcome outcome;
+  InterruptObserver observer;
   {
     py::gil_scoped_release release;
     outcome = WithFileAlias(path, display, [&] {
       const SweepSpec spec = LoadSweep(path, threads);
+      if (spec.trajectories != TrajectoryPolicy::kNone && !output_given) {
+        throw InputError("trajectories = " + std::string(ToString(spec.trajectories)) + " (" +
+                         display + "): the runs' CSVs are written beside the summary: give "
+                         "sweep(..., output=PATH)");
+      }
       SweepRunOptions options;
       options.output = output;
       options.jobs = threads;
+      options.resume = resume;
+      options.observer = &observer;
       return RunSweep(spec, options);
     });
   }
+  if (outcome.interrupted) throw py::error_already_set();
   py::dict result;
   result["points"] = outcome.points;
   result["failed"] = outcome.failed;
   result["invalid"] = outcome.invalid;
   return result;
-}
-
-std::string Rewrite(const std::string& path, const std::vector<std::string>& overrides,
-                    const std::string& display) {
-  return WithFileAlias(path, display, [&] { return RewriteScenario(path, overrides, {}); });
 }
 
 }  // namespace
@@ -120,16 +162,12 @@ void BindSweep(py::module_& m) {
         "dict, .status 'completed', 'limit' or 'failed'. SI units. A bad job raises (the "
         "first in the list's order) after every job has run; musclesim.table() stacks the "
         "results into one structured array.");
-  m.def("_run_sweep", &RunSweepFile, py::arg("path"), py::arg("output"), py::arg("threads") = 0,
-        py::arg("display") = "",
-        "Runs the sweep file `path` as `musclesim sweep PATH -o output --jobs threads` does "
-        "(threads 0: every core), GIL released; returns {points, failed, invalid}; input "
-        "errors name the file `display` (when given) in place of `path`. musclesim.sweep() "
-        "reads the summary back.");
-  m.def("_rewrite_scenario", &Rewrite, py::arg("path"), py::arg("overrides"),
-        py::arg("display") = "",
-        "The scenario file `path` with the 'key=value' overrides applied, as YAML text (a "
-        "Scenario's set() values, for a sweep's base).");
+  m.def("_run_sweep", &RunSweepFile, py::arg("path"), py::arg("output"), py::arg("output_given"),
+        py::arg("resume"), py::arg("threads"), py::arg("display"),
+        "Runs the sweep file `path` as `musclesim sweep PATH -o output --jobs threads "
+        "[--resume]` does (threads 0: every core), GIL released, Ctrl-C stopping it (the rows "
+        "done stay in output.partial); returns {points, failed, invalid}; input errors name "
+        "the file `display` in place of `path`. musclesim.sweep() reads the summary back.");
 }
 
 }  // namespace musclesim::python
