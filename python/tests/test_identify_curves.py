@@ -364,7 +364,7 @@ def test_pairs_dicts_and_frames_give_the_same_fit():
 
 
 def test_a_pandas_data_frame_is_read_by_its_columns():
-    pd = pytest.importorskip("pandas")
+    import pandas as pd  # a test dependency (scripts/install-deps.sh), not the module's
     x, t = X_PASSIVE, passive_closed_form(X_PASSIVE, K_P, ALPHA, SLACK)
     frame = pd.DataFrame({"length": x, "tension": t})
     assert (ms.identify_curves(passive=frame).model_yaml

@@ -181,7 +181,7 @@ def test_scalars_give_numpy_float64():
     assert type(model.g(0.2)) is np.float64
 
 
-def test_large_arrays_release_the_gil_and_agree():
+def test_large_arrays_agree_with_small_ones():
     model = ms.Model(MODEL)
     x = np.linspace(0.05, 0.15, 100000)
     big = model.tension(x, 0.05, 0.7)

@@ -113,7 +113,7 @@ def test_sweep_heat_map_and_lines_are_the_clis(tmp_path, sweeps):
                                 "--color", "model.f_iso")
     assert "title 'model.f_iso = 80'" in lines and "title 'model.f_iso = 100'" in lines
     # a pandas DataFrame of the summary, and a dict of its columns, draw the same
-    pandas = pytest.importorskip("pandas")
+    import pandas  # a test dependency (scripts/install-deps.sh), not the module's
     assert our_script(tmp_path, pandas.DataFrame(summary), **options) == lines
     assert our_script(tmp_path, {n: summary[n] for n in summary.dtype.names}, **options) == lines
 

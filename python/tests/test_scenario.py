@@ -11,8 +11,7 @@ import pytest
 import musclesim
 
 SOURCE = os.environ.get("MUSCLESIM_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
-CLI = os.environ.get("MUSCLESIM_CLI")
-needs_cli = pytest.mark.skipif(not CLI, reason="MUSCLESIM_CLI (the musclesim program) not set")
+CLI = os.environ["MUSCLESIM_CLI"]  # the musclesim program: ctest sets it
 
 
 def scenario_path(name):
@@ -52,14 +51,12 @@ def assert_same_as_cli(result, cli):
         assert list(result.columns[name]) == list(expected), name
 
 
-@needs_cli
 def test_concentric_file_matches_cli(tmp_path):
     result = musclesim.load_scenario(scenario_path("concentric.yaml")).run()
     assert result.status == "completed"
     assert_same_as_cli(result, cli_run(tmp_path, scenario_path("concentric.yaml")))
 
 
-@needs_cli
 def test_network_matches_cli_with_overrides_as_list_or_dict(tmp_path):
     path = scenario_path("antagonist_pair.yaml")
     cli = cli_run(tmp_path, path, sets=["time.end=0.2"])
@@ -69,7 +66,6 @@ def test_network_matches_cli_with_overrides_as_list_or_dict(tmp_path):
     assert_same_as_cli(musclesim.load_scenario(path, set={"time.end": 0.2}).run(), cli)
 
 
-@needs_cli
 def test_controllers_match_cli(tmp_path):
     path = scenario_path("force_regulation.yaml")
     scenario = musclesim.load_scenario(path).set("time.end", 0.2)
@@ -108,7 +104,6 @@ CONCENTRIC = {
 }
 
 
-@needs_cli
 def test_dict_gives_the_file_result(tmp_path):
     scenario = musclesim.scenario_from_dict(CONCENTRIC)
     assert not scenario.is_network and scenario.name == "concentric_isotonic"
@@ -120,7 +115,6 @@ def test_dict_gives_the_file_result(tmp_path):
     assert_same_as_cli(scenario.run(), cli_run(tmp_path, str(text_file)))
 
 
-@needs_cli
 def test_set_changes_the_run(tmp_path):
     path = scenario_path("concentric.yaml")
     light = musclesim.load_scenario(path, set=["time.end=0.2"]).run()
@@ -146,7 +140,6 @@ def test_bad_set_raises_and_leaves_the_scenario():
     assert scenario.overrides == []
 
 
-@needs_cli
 def test_broken_file_names_file_line_column(tmp_path):
     broken = tmp_path / "broken.yaml"
     text = open(scenario_path("concentric.yaml")).read()
@@ -175,7 +168,6 @@ def test_dict_error_names_key_path_and_dict():
     assert "tmp" not in str(error.value) and "<dict>" in str(error.value)
 
 
-@needs_cli
 def test_sensitivity_columns_match_cli(tmp_path):
     path = scenario_path("concentric.yaml")
     scenario = musclesim.load_scenario(path, set=["time.end=0.2"])
@@ -187,7 +179,6 @@ def test_sensitivity_columns_match_cli(tmp_path):
                                        sensitivities=["model.f_iso", "load[0].after"]))
 
 
-@needs_cli
 def test_network_sensitivity_columns_match_cli(tmp_path):
     path = scenario_path("antagonist_pair.yaml")
     result = musclesim.load_scenario(path, set=["time.end=0.1"]).run(
@@ -234,15 +225,14 @@ def test_to_dataframe_without_pandas(monkeypatch):
 
 
 def test_to_dataframe_with_pandas():
-    # pandas is a test dependency (scripts/install-deps.sh), not the module's
-    import pandas  # noqa: F401
+    import pandas  # a test dependency (scripts/install-deps.sh), not the module's
     result = musclesim.load_scenario(scenario_path("isometric.yaml"), set=["time.end=0.01"]).run()
     frame = result.to_dataframe()
+    assert isinstance(frame, pandas.DataFrame)
     assert list(frame.columns) == list(result.columns)
     np.testing.assert_array_equal(frame["t"].to_numpy(), result.times)
 
 
-@needs_cli
 def test_solver_failure_is_a_result_with_the_rows_so_far(tmp_path):
     path = scenario_path("concentric.yaml")
     result = musclesim.load_scenario(path, set={"solver.max_steps": 5}).run()
