@@ -565,6 +565,10 @@ const std::vector<Case> kCases = {
      {"controllers[0].feedforward.value = 1e300 ({at}): must be from -1 to 1"}},
     {"RunOutputOverTheScenario", "run {file} -o {file}", Scenario("", ""), 2,
      {"-o {file}: is the scenario file ({file}), the run's input: write the output elsewhere"}},
+    {"SweepSummaryOverTheSweepFile", "sweep {file} -o {file} --quiet", Sweep("mode: grid", "mode: grid"), 2,
+     {"{file}: is the sweep file ({file}), an input of the sweep: write the summary elsewhere"}},
+    {"SweepSummaryInAMissingDirectory", "sweep {file} -o no/such/dir/summary.csv --quiet", Sweep("mode: grid", "mode: grid"), 2,
+     {"no/such/dir/summary.csv: the directory no/such/dir does not exist"}},
 };
 // clang-format on
 

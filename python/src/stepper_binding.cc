@@ -2,6 +2,7 @@
 // piece from a Python loop (solver/stepper.h). advance() converts nothing but a float and returns one of three
 // prebuilt status strings, so that a 1 kHz loop spends its time integrating.
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,7 @@ class PyStepper {
     RunStatus status;
     {
       py::gil_scoped_release release;
+      const std::lock_guard<std::mutex> lock(mutex_);
       status = stepper_->Advance(t_next);
     }
     return statuses_[static_cast<int>(status)];
@@ -77,6 +79,7 @@ class PyStepper {
     RunStatus status = RunStatus::kCompleted;
     {
       py::gil_scoped_release release;
+      const std::lock_guard<std::mutex> lock(mutex_);
       for (py::ssize_t k = 0; k < view.shape(0) && status == RunStatus::kCompleted; ++k) {
         status = stepper_->Advance(view(k));
       }
@@ -85,17 +88,23 @@ class PyStepper {
   }
 
   void SetActivation(const std::string& actuator, double value) {
+    const auto lock = Exclusive();
     stepper_->SetActivation(actuator, value);
   }
 
-  double time() const { return stepper_->time(); }
+  double time() const {
+    const auto lock = Exclusive();
+    return stepper_->time();
+  }
 
   py::array_t<double> state() const {
+    const auto lock = Exclusive();
     const std::vector<double>& y = stepper_->state();
     return py::array_t<double>(static_cast<py::ssize_t>(y.size()), y.data());
   }
 
   py::dict Sample() const {
+    const auto lock = Exclusive();
     values_.clear();
     AppendNumericNetworkValues(stepper_->system(), stepper_->sample(), values_);
     py::dict sample;
@@ -105,6 +114,7 @@ class PyStepper {
   }
 
   py::dict Stats() const {
+    const auto lock = Exclusive();
     const RunStats& s = stepper_->stats();
     py::dict stats;
     stats["status"] = std::string(ToString(s.status));
@@ -122,10 +132,22 @@ class PyStepper {
     return stats;
   }
 
-  const std::string& message() const { return stepper_->message(); }
+  std::string message() const {
+    const auto lock = Exclusive();
+    return stepper_->message();
+  }
   py::list columns() const { return columns_; }
 
  private:
+  // The stepper to this thread alone: advance() runs without the GIL, so two Python threads
+  // could otherwise step one integrator at once. The GIL is let go while waiting, so that
+  // the thread holding the stepper never waits for a thread that waits for it.
+  std::unique_lock<std::mutex> Exclusive() const {
+    py::gil_scoped_release release;
+    return std::unique_lock<std::mutex>(mutex_);
+  }
+
+  mutable std::mutex mutex_;
   std::unique_ptr<Stepper> stepper_;
   py::list columns_;          // names of sample()'s values after t, in the CSV's order
   py::str statuses_[3];       // by RunStatus

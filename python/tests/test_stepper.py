@@ -205,3 +205,30 @@ def test_a_single_actuator_steps_as_its_network_and_python_can_drive_it(tmp_path
     np.testing.assert_allclose(length, reference["length"][1:], rtol=0, atol=1e-9)
     np.testing.assert_allclose(speed, reference["shortening_velocity"][1:], rtol=0, atol=1e-7)
     np.testing.assert_allclose(tension, reference["tension_total"][1:], rtol=0, atol=1e-6)
+
+
+def test_threads_sharing_a_stepper_take_turns():
+    # advance() lets the GIL go: without a lock of its own two threads would step one
+    # integrator at once (a double free in CVODE's error path). Each call either advances or
+    # is refused for a time not after `time`; the stepper ends consistent.
+    import threading
+    stepper = musclesim.Stepper(FORCE_REGULATION)
+    refused, errors = [], []
+
+    def work():
+        for _ in range(200):
+            try:
+                stepper.advance(stepper.time + 1e-4)
+                stepper.sample()
+            except musclesim.ParameterError as error:
+                refused.append(error)  # another thread got there first
+            except Exception as error:  # noqa: BLE001 - any other is the failure
+                errors.append(error)
+
+    threads = [threading.Thread(target=work) for _ in range(8)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    assert errors == [] and all(e.path == "t_next" for e in refused)
+    assert stepper.sample()["t"] == stepper.time > 0

@@ -110,6 +110,7 @@ int SweepCommand(int argc, char** argv) {
   if (options.output.empty()) {
     throw InputError(spec.source + ": no output file: set output or pass -o PATH");
   }
+  CheckSummaryPath(spec, options.output);
   std::signal(SIGINT, OnStopSignal);
   std::signal(SIGTERM, OnStopSignal);
   const SweepOutcome outcome = mpi.active() ? RunSweepMpi(spec, options) : RunSweep(spec, options);

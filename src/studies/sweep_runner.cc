@@ -204,6 +204,7 @@ int WorkerThreads(int jobs) {
 SweepOutcome RunSweep(const SweepSpec& spec, const SweepRunOptions& options) {
   SweepObserver silent;
   SweepObserver& observer = options.observer != nullptr ? *options.observer : silent;
+  CheckSummaryPath(spec, options.output);
   SummaryFile summary(spec, options.output, options.resume);
   if (!summary.dropped().empty()) observer.OnNotice(summary.dropped());
   const long points = summary.Points();

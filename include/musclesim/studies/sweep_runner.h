@@ -46,4 +46,11 @@ struct SweepOutcome {
 // worker's I/O error.
 SweepOutcome RunSweep(const SweepSpec& spec, const SweepRunOptions& options);
 
+// Where the summary goes, checked before any point runs (RunSweep does; a caller running the
+// sweep another way, over MPI, calls it first): a path that cannot take the summary would
+// otherwise fail only after the whole sweep. Throws InputError for an empty path, a
+// directory, a path whose directory does not exist, and the sweep file or its base scenario
+// (an input the summary would replace).
+void CheckSummaryPath(const SweepSpec& spec, const std::string& path);
+
 }  // namespace musclesim
