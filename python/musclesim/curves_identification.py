@@ -4,12 +4,17 @@ The same checks, fits, `model:` block and report as the command (README "Identif
 `musclesim identify`"), with the curves given as arrays rather than as CSV files. SI units:
 lengths in m, shortening velocities in m/s (> 0 when the actuator shortens), tensions in N.
 """
+import numbers as _numbers
+
 import numpy as _np
 
 from ._musclesim import InputError, Model
 from ._musclesim import _identify_curves
 
 __all__ = ["identify_curves", "CurvesIdentification"]
+
+# The arguments an error on them is keyed by.
+_ARGUMENTS = ("passive", "active", "velocity", "active_count", "f_iso")
 
 # The columns a curve's CSV holds, which a dict or DataFrame names alike.
 _COLUMNS = {
@@ -129,7 +134,22 @@ def identify_curves(passive=None, active=None, velocity=None, active_count=3, no
     musclesim.Model of it), passive / active / velocity (estimates with standard errors,
     keys as the YAML's) and report.
     """
-    found = _identify_curves(_columns("passive", passive), _columns("active", active),
-                             _columns("velocity", velocity), active_count, nonnegative, f_iso,
-                             report, source)
+    if isinstance(active_count, bool) or not isinstance(active_count, _numbers.Integral):
+        raise TypeError("active_count must be an int (Gaussians to fit, 1 to 12), not %r"
+                        % (active_count,))
+    if f_iso is not None and (isinstance(f_iso, bool) or not isinstance(f_iso, _numbers.Real)):
+        raise TypeError("f_iso must be a number [N] or None, not %r" % (f_iso,))
+    try:
+        found = _identify_curves(_columns("passive", passive), _columns("active", active),
+                                 _columns("velocity", velocity), int(active_count),
+                                 bool(nonnegative), None if f_iso is None else float(f_iso),
+                                 bool(report), str(source))
+    except InputError as error:
+        # messages on the data start with the argument ("active: too few points ..."), on
+        # the settings with it as "active_count = 13: ...": the argument is the key
+        if getattr(error, "key", None) is None:
+            head = str(error).split(":", 1)[0].split(" = ", 1)[0]
+            if head in _ARGUMENTS:
+                error.key = head
+        raise
     return CurvesIdentification(found)

@@ -28,6 +28,9 @@ struct MessageParts {
 //   FILE:LINE:COLUMN: YAML syntax error: ...
 //   --set KEY=VALUE: ...                      (an override that names no value)
 //   ARGUMENT: row N: ...                      (data given as arrays: the argument's name)
+//   --sensitivity PATH: ...                   (a sensitivity's parameter)
+//   FILE:LINE:COLUMN: KEY = VALUE ...         (an entry whose value the reader refers on)
+//   FILE:LINE:COLUMN: axis PATH = VALUE ...   (a sweep's axis: key parameters.PATH)
 // and a value given by an override is placed at "--set" (no file position: location None).
 MessageParts ParseInputMessage(const std::string& message) {
   MessageParts parts;
@@ -36,10 +39,16 @@ MessageParts ParseInputMessage(const std::string& message) {
   static const std::regex override_text(R"(^--set ([^=:\s]+)=)");
   static const std::regex position(R"(.*:\d+:\d+$)");
   static const std::regex array_row(R"(^([A-Za-z_][\w.\[\]]*): row \d+: )");
+  static const std::regex sensitivity(R"(^--sensitivity ([^:\s]+): )");
+  static const std::regex placed_entry(R"(^(.*:\d+:\d+): (axis )?([^\s=()]+) = )");
   std::smatch match;
   if (std::regex_search(message, match, override_text) ||
-      std::regex_search(message, match, array_row)) {
+      std::regex_search(message, match, array_row) ||
+      std::regex_search(message, match, sensitivity)) {
     parts.key = match[1].str();
+  } else if (std::regex_search(message, match, placed_entry)) {
+    parts.location = match[1].str();
+    parts.key = (match[2].matched ? "parameters." : "") + match[3].str();
   } else if (std::regex_search(message, match, located)) {
     if (match[1].str() != "(top level)") parts.key = match[1].str();
     const std::string where = match[2].str();

@@ -1,8 +1,22 @@
 #include "overrides.h"
 
+#include <cmath>
+
 namespace musclesim::python {
 
 namespace py = pybind11;
+
+namespace {
+
+// A C++ message ends at a NUL byte: text holding one would lose the rest of its error.
+std::string WithoutNul(std::string text, const std::string& what) {
+  if (text.find('\0') != std::string::npos) {
+    throw py::value_error(what + ": holds a NUL character, which no key or value may hold");
+  }
+  return text;
+}
+
+}  // namespace
 
 std::string OverrideText(const std::string& key, const pybind11::handle& given) {
   py::object value = py::reinterpret_borrow<py::object>(given);
@@ -13,14 +27,18 @@ std::string OverrideText(const std::string& key, const pybind11::handle& given) 
   if (py::isinstance<py::bool_>(value)) {
     text = value.cast<bool>() ? "true" : "false";
   } else if (py::isinstance<py::int_>(value) || py::isinstance<py::str>(value)) {
-    text = py::str(value).cast<std::string>();
+    text = WithoutNul(py::str(value).cast<std::string>(), key);
   } else if (py::isinstance<py::float_>(value)) {
-    text = py::repr(value).cast<std::string>();
+    const double number = value.cast<double>();
+    // YAML's spellings of the non-finite numbers, so that the reader names the rule broken
+    text = std::isnan(number)   ? ".nan"
+           : std::isinf(number) ? (number > 0 ? ".inf" : "-.inf")
+                                : py::repr(value).cast<std::string>();
   } else {
     const std::string type = py::str(py::type::of(value).attr("__name__"));
     throw py::type_error(key + ": the value must be a number, a bool or a str, not " + type);
   }
-  return key + "=" + text;
+  return WithoutNul(key, "a key") + "=" + text;
 }
 
 std::vector<std::string> OverridesFrom(const py::handle& overrides) {
@@ -40,7 +58,7 @@ std::vector<std::string> OverridesFrom(const py::handle& overrides) {
       throw py::type_error("set: every item must be a \"key=value\" string, got " +
                            py::repr(item).cast<std::string>());
     }
-    result.push_back(item.cast<std::string>());
+    result.push_back(WithoutNul(item.cast<std::string>(), "set"));
   }
   return result;
 }

@@ -84,3 +84,39 @@ def test_override_value_type_is_checked():
     scenario = musclesim.load_scenario(CONCENTRIC)
     with pytest.raises(TypeError):
         scenario.set("model.f_iso", [1.0])
+
+
+def keyed_failures():
+    """(call, expected key, expected location) for the forms of message each reader writes."""
+    scenario = musclesim.load_scenario(CONCENTRIC, set={"time.end": 0.01})
+    sweep = {"base": CONCENTRIC, "parameters": {"load[0].aftr": [1.0]}, "metrics": ["final_length"]}
+    return [
+        (lambda: scenario.run(sensitivities=["model.nonsense"]), "model.nonsense", None),
+        (lambda: musclesim.sweep(sweep), "parameters.load[0].aftr", "<dict>:4:3"),
+        (lambda: musclesim.identify_series(scenario, [{"t": [0.005], "length": [0.1]}],
+                                           [{"path": "model.nope"}]),
+         "parameters[0].path", "identify_series:7:3"),
+        (lambda: musclesim.identify_curves(passive=([0.1, 0.2], [1.0, 2.0])), "passive", None),
+        (lambda: musclesim.identify_curves(active=([0.1, 0.2, 0.3, 0.4], [0, 0, 0, 1.0]),
+                                           active_count=13), "active_count", None),
+        (lambda: musclesim.load_scenario(CONCENTRIC, set={"model.f_iso": float("nan")}),
+         "model.f_iso", None),
+    ]
+
+
+@pytest.mark.parametrize("case", range(6))
+def test_every_kind_of_message_gives_its_key(case):
+    call, key, location = keyed_failures()[case]
+    with pytest.raises(musclesim.InputError) as error:
+        call()
+    assert (error.value.key, error.value.location) == (key, location), str(error.value)
+    # the key parsed is the one the message names (an axis by its path)
+    assert key.replace("parameters.load", "load") in str(error.value)
+
+
+def test_a_nul_character_is_refused_before_it_cuts_a_message():
+    scenario = musclesim.load_scenario(CONCENTRIC)
+    with pytest.raises(ValueError, match="NUL"):
+        scenario.set("model.f_iso", "120\x00junk")
+    with pytest.raises(ValueError, match="NUL"):
+        musclesim.load_scenario(CONCENTRIC, set=["model.f_iso=1\x00"])
