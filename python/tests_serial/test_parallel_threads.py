@@ -36,10 +36,12 @@ def test_two_threads_take_less_time_than_one_after_the_other():
     assert (os.cpu_count() or 1) >= 2, "two threads in parallel need two cores"
     work()  # warm caches and the allocator before timing
     # held, the GIL would make two threads take as long as the serial calls (ratio >= 1);
-    # released, about 0.5 on two idle cores. Below 0.8 in the best of 3 tries tells the two
-    # apart with room for a busy moment of the machine.
+    # released, about 0.5 on two idle cores. Below 0.8 in the best of 5 tries tells the two
+    # apart with room for a busy moment; a machine busy throughout with other work (another
+    # build) leaves no core free and fails it: ctest runs it alone (RUN_SERIAL) for that
+    # reason, and test_sweep's ticker shows the GIL released whatever the load.
     ratios = []
-    for _ in range(3):
+    for _ in range(5):
         serial, parallel = serial_and_parallel_seconds()
         ratios.append(parallel / serial)
         if ratios[-1] < 0.8:
