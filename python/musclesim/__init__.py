@@ -20,8 +20,18 @@ def run_many(jobs, threads=0):
     them into one structured array (a DataFrame with pandas.DataFrame(...)).
     """
     from . import _musclesim as _extension
+    if isinstance(threads, bool) or not isinstance(threads, int):
+        raise TypeError("threads must be an int (0: every core), not %r" % (threads,))
     jobs = list(jobs)  # the Scenarios (and a dict's temporary file) live until the runs end
-    converted = [(job._path, job.overrides) if isinstance(job, Scenario) else job for job in jobs]
+    converted = []
+    for k, job in enumerate(jobs):
+        if isinstance(job, Scenario):
+            converted.append((job._path, job.overrides))
+        elif isinstance(job, (tuple, list)) and len(job) == 2:
+            converted.append(tuple(job))
+        else:
+            raise TypeError("jobs[%d] must be a Scenario or a (path, overrides) pair, not %r"
+                            % (k, job))
     return _extension.run_many(converted, threads)
 
 

@@ -43,6 +43,8 @@ def _write_dict_sweep(spec, directory):
             spec["base"] = base._path
     elif isinstance(base, (str, os.PathLike)):
         spec["base"] = os.path.abspath(os.fspath(base))
+    elif base is not None:  # none: the reader says base is missing
+        raise TypeError("base must be a scenario file's path or a Scenario, not %r" % (base,))
     path = os.path.join(directory, "sweep.yaml")
     with open(path, "w") as file:
         file.write(yaml_text(spec))
@@ -69,6 +71,8 @@ def sweep(spec, threads=0, output=None, resume=False, name="<dict>"):
     int64, status and message str, the rest float64 (an axis of non-numeric values: str).
     `summary["status"]` is a column, `summary.dtype.names` the columns,
     `pandas.DataFrame(summary)` a DataFrame."""
+    if isinstance(threads, bool) or not isinstance(threads, int):
+        raise TypeError("threads must be an int (0: every core), not %r" % (threads,))
     with tempfile.TemporaryDirectory(prefix="musclesim_sweep_") as directory:
         if isinstance(spec, (str, os.PathLike)):
             path = os.fspath(spec)

@@ -98,6 +98,12 @@ py::object Curve1(const py::object& arg, const Curve& curve) {
                 })[0]);
 }
 
+// An activation as the model takes it: the tension is not defined outside [0, 1].
+double Activation(double u) {
+  Require(u >= 0.0 && u <= 1.0, "u", u, "must be in [0, 1] (an activation)");
+  return u;
+}
+
 // The model and what built it.
 struct Model {
   std::shared_ptr<const TensionModel> tension;
@@ -228,18 +234,18 @@ eccentric {v_max, n, limit} (optional)}. The block is read by the same reader as
              const TensionModel& model = *self.tension;
              return Finish(Evaluate({x, v, u}, 1, [&](py::ssize_t i, const auto& in,
                                                       const auto& out) {
-                             out[0][i] = model.Evaluate(in[0][i], in[1][i], in[2][i]).total;
+                             out[0][i] = model.Evaluate(in[0][i], in[1][i], Activation(in[2][i])).total;
                            })[0]);
            },
            py::arg("x"), py::arg("v"), py::arg("u"),
            "Total tension T [N] at length x [m], shortening velocity v [m/s] (> 0 shortening) "
-           "and activation u [-].")
+           "and activation u [-] in [0, 1] (ParameterError outside, NaN included).")
       .def("tension_parts",
            [](const Model& self, const py::object& x, const py::object& v, const py::object& u) {
              const TensionModel& model = *self.tension;
              auto parts = Evaluate({x, v, u}, 6, [&](py::ssize_t i, const auto& in,
                                                      const auto& out) {
-               const TensionSample s = model.Evaluate(in[0][i], in[1][i], in[2][i]);
+               const TensionSample s = model.Evaluate(in[0][i], in[1][i], Activation(in[2][i]));
                out[0][i] = s.total;
                out[1][i] = s.passive;
                out[2][i] = s.active;

@@ -328,3 +328,13 @@ def test_bad_fit_arguments_raise():
         ms.fit_gaussians(n=2, target="indicator")
     with pytest.raises(ValueError, match="same length"):
         ms.fit_gaussians(x, x[:3], n=1)
+
+
+def test_an_activation_outside_0_1_is_refused():
+    model = ms.Model(MODEL)
+    for u in (1.5, -0.1, float("nan")):
+        with pytest.raises(ms.ParameterError) as error:
+            model.tension(0.1, 0.0, np.array([0.5, u]))
+        assert error.value.path == "u" and "[0, 1]" in error.value.rule
+    # the ends are activations: u = 0 leaves the passive tension alone
+    assert model.tension(0.12, 0.0, 0.0) == model.passive(0.12)

@@ -101,12 +101,20 @@ def test_table_stacks_the_runs_in_job_order(tmp_path):
 def test_a_bad_job_raises_naming_the_key():
     good = (os.path.join(SCENARIOS, "isometric.yaml"), None)
     bad = (os.path.join(SCENARIOS, "isometric.yaml"), ["solver.rtol=-1"])
-    with pytest.raises(Exception, match="rtol"):
+    with pytest.raises(musclesim.InputError, match="rtol"):
         musclesim.run_many([good, bad])
-    with pytest.raises(ValueError, match="pair"):
-        musclesim.run_many([(good[0],)])
+    for job in [(good[0],), "ab", None]:
+        with pytest.raises(TypeError, match="pair"):
+            musclesim.run_many([good, job])
+    with pytest.raises(TypeError, match="path"):
+        musclesim.run_many([(5, None)])
     with pytest.raises(ValueError, match="threads"):
         musclesim.run_many([good], threads=-1)
+    with pytest.raises(TypeError, match="threads"):
+        musclesim.run_many([good], threads=1.5)
+    with pytest.raises(TypeError, match="base"):
+        musclesim.sweep({"base": 5, "parameters": {"load[0].after": [1.0]},
+                         "metrics": ["final_length"]})
 
 
 def test_python_runs_while_run_many_integrates():

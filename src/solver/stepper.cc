@@ -62,8 +62,9 @@ Stepper::~Stepper() = default;
 
 RunStatus Stepper::Advance(double t_next) {
   if (ended_) {
-    throw std::logic_error("Stepper::Advance after the stepping ended at t = " +
-                           FormatNumber(time_) + " s: " + stats_.message);
+    throw std::logic_error("advance after the stepping ended at t = " + FormatNumber(time_) +
+                           " s (" + std::string(ToString(stats_.status)) + ": " +
+                           stats_.message + "): a new stepper starts again");
   }
   Require(std::isfinite(t_next) && t_next > time_, "t_next", t_next,
           "must be finite and after time() = " + FormatNumber(time_) + " [s]");

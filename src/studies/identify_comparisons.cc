@@ -30,11 +30,12 @@ CurveComparison ComparePassiveFit(const std::vector<DataPoint>& data,
               WithModel("exponential (eq. 1)",
                         [](const std::vector<DataPoint>& d) { return IdentifyPassive(d); }));
   // the report's tables print 4 significant digits; its notes alike
-  c.notes = PassiveUncertaintyNotes(fit, [](double x) {
+  const std::vector<std::string> notes = PassiveUncertaintyNotes(fit, [](double x) {
     char text[32];
     std::snprintf(text, sizeof text, "%.4g", x);
     return std::string(text);
   });
+  c.notes.insert(c.notes.end(), notes.begin(), notes.end());
   return c;
 }
 
@@ -53,7 +54,10 @@ CurveComparison CompareVelocityFit(const std::vector<DataPoint>& data, std::opti
               WithModel("power law (eq. 12)", [f_iso](const std::vector<DataPoint>& d) {
                 return IdentifyVelocity(d, f_iso);
               }));
-  if (fit.eccentric) c.notes = DescribeEccentric(*fit.eccentric);
+  if (fit.eccentric) {
+    const std::vector<std::string> notes = DescribeEccentric(*fit.eccentric);
+    c.notes.insert(c.notes.end(), notes.begin(), notes.end());
+  }
   return c;
 }
 

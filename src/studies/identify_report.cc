@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "musclesim/errors.h"
 
@@ -168,7 +169,14 @@ CurveComparison Compare(const std::string& curve, const std::string& x_unit,
   out.curve = curve;
   out.x_unit = x_unit;
   out.points = data.size();
-  for (const auto& [name, fit] : models) out.models.push_back(Score(name, fit, data));
+  for (const auto& [name, fit] : models) {
+    try {
+      out.models.push_back(Score(name, fit, data));
+    } catch (const std::invalid_argument& e) {
+      // a reference model with more parameters than the data have points: said, not fitted
+      out.notes.push_back(name + ": not fitted (" + e.what() + ")");
+    }
+  }
   return out;
 }
 

@@ -36,6 +36,8 @@ struct CurveComparison {
   std::vector<std::string> notes;  // sentences printed under the table, one bullet each
 };
 
+// Scores every model on `data`. A model whose fitter throws std::invalid_argument (more
+// parameters than the data have points) gets no row; a note says so.
 CurveComparison Compare(const std::string& curve, const std::string& x_unit,
                         const std::vector<DataPoint>& data,
                         const std::vector<std::pair<std::string, Fitter>>& models);
