@@ -256,7 +256,9 @@ void BindIdentifySeries(py::module_& m) {
       "measured time series (or, with design=True, the experiment's check at the start "
       "values), with what the Jacobian of forward sensitivities says about the parameters: "
       "standard errors, correlations, the singular values of the scaled sensitivity matrix "
-      "and a verdict. As `musclesim identify DATA.yaml` (README \"From time series\").")
+      "and a verdict. As `musclesim identify DATA.yaml` (README \"From time series\"). "
+      "Values in the units of the scenario's parameters and of the measured columns (SI: m, "
+      "m/s, N, s).")
       .def_property_readonly(
           "design", [](const Identification& r) { return r.design; },
           "True for the design check (no fit: the start values, Cramer-Rao standard errors).")
