@@ -1,5 +1,6 @@
 // musclesim.Model (the tension curves on NumPy arrays, with their derivatives), load_model
 // and fit_gaussians (the closed-form least-squares fit of Gaussians to a force-length target).
+#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -16,6 +17,7 @@
 #include "musclesim/io/input_ranges.h"
 #include "musclesim/io/model_text.h"
 #include "musclesim/io/model_yaml.h"
+#include "musclesim/model/force_length_presets.h"
 #include "musclesim/model/gaussian_fit.h"
 #include "musclesim/model/tension.h"
 
@@ -339,6 +341,27 @@ passive slope is the left one (0).)")
       R"(The model of a YAML file: a model file (`name` and `model` only, as the CLI writes) or a
 scenario, which is then checked whole (as `musclesim curves FILE` reads it). Raises the
 reader's error (file:line:column, key, value, rule) for bad input.)");
+
+  m.def(
+      "force_length_preset",
+      [](const std::string& name, const py::object& x, double optimal_length) {
+        ForceLengthPreset preset;
+        try {
+          preset = ParseForceLengthPreset(name);
+        } catch (const ParameterError& e) {
+          throw ParameterError("preset", e.value(), e.rule());  // the argument's name
+        }
+        Require(std::isfinite(optimal_length) && optimal_length > 0.0, "optimal_length",
+                optimal_length, "must be finite and > 0 [m]");
+        return Curve1(x, [&](double length) {
+          return EvaluatePreset(preset, length / optimal_length);
+        });
+      },
+      py::arg("preset"), py::arg("x"), py::arg("optimal_length") = 1.0,
+      R"(A standard active force-length curve f_L [-] at lengths x [m], scaled so that its peak
+is 1 at `optimal_length` [m] (default 1: x is then the normalised length l / L), as `musclesim
+curves --preset NAME` tabulates it: preset degroote2016, thelen2003, gordon1966 or mujoco
+(README "The closed-form fit"). fit_gaussians(preset=...) fits Gaussians to it.)");
 
   m.def("fit_gaussians", &Fit, py::arg("x") = py::none(), py::arg("f") = py::none(),
         py::arg("n") = 3, py::kw_only(), py::arg("target") = py::none(),

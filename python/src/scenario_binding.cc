@@ -146,6 +146,13 @@ void BindScenario(py::module_& m) {
            "The columns as a pandas.DataFrame (pandas imported only here; ImportError naming "
            "python3-pandas if it is missing).")
       .def("__len__", [](const Result& r) { return r.rows; }, "The number of rows.")
+      .def(py::pickle(  // for multiprocessing and joblib: the columns and stats as they are
+          [](const Result& r) { return py::make_tuple(r.columns, r.stats, r.rows); },
+          [](const py::tuple& state) {
+            if (state.size() != 3) throw std::runtime_error("not a pickled musclesim.Result");
+            return Result{state[0].cast<py::dict>(), state[1].cast<py::dict>(),
+                          state[2].cast<py::ssize_t>()};
+          }))
       .def(
           "__getitem__",
           [](const Result& r, const std::string& name) -> py::object {
@@ -177,6 +184,32 @@ void BindScenario(py::module_& m) {
       .def_property_readonly(
           "_display", [](const Scenario& s) { return s.display; },
           "The file's name in messages: the path, or the name given to scenario_from_dict.")
+      .def(py::pickle(
+          // a file's scenario as its path and overrides; a dict's as its text (its temporary
+          // file is this process's)
+          [](const Scenario& s) {
+            if (s.text) {
+              std::string text;
+              {
+                py::gil_scoped_release release;
+                text = s.Located([&] { return RewriteScenario(s.path, s.overrides, {}); });
+              }
+              return py::make_tuple(py::none(), s.display, std::vector<std::string>{}, text);
+            }
+            return py::make_tuple(s.path, s.display, s.overrides, py::none());
+          },
+          [](const py::tuple& state) {
+            if (state.size() != 4) throw std::runtime_error("not a pickled musclesim.Scenario");
+            const std::string display = state[1].cast<std::string>();
+            if (!state[3].is_none()) return FromText(state[3].cast<std::string>(), display);
+            Scenario scenario;
+            scenario.path = state[0].cast<std::string>();
+            scenario.display = display;
+            scenario.overrides = state[2].cast<std::vector<std::string>>();
+            py::gil_scoped_release release;
+            scenario.Validate();
+            return scenario;
+          }))
       .def(
           "copy", [](const Scenario& s) { return s; },
           "An independent copy: set() on one leaves the other as it is (copy.copy and "

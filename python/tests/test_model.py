@@ -338,3 +338,15 @@ def test_an_activation_outside_0_1_is_refused():
         assert error.value.path == "u" and "[0, 1]" in error.value.rule
     # the ends are activations: u = 0 leaves the passive tension alone
     assert model.tension(0.12, 0.0, 0.0) == model.passive(0.12)
+
+
+@pytest.mark.parametrize("preset", ["degroote2016", "thelen2003", "gordon1966", "mujoco"])
+def test_force_length_presets_equal_the_programs_table(preset, tmp_path):
+    csv = tmp_path / "preset.csv"
+    subprocess.run([os.environ["MUSCLESIM_CLI"], "curves", "--preset", preset, "--optimal-length",
+                    "0.1", "--length", "0:0.2:41", "-o", str(csv)], check=True)
+    table = np.loadtxt(csv, delimiter=",", skiprows=1)
+    # the same evaluation, printed with 17 significant digits: equal to the last bit
+    np.testing.assert_array_equal(ms.force_length_preset(preset, table[:, 0], 0.1), table[:, 2])
+    with pytest.raises(ms.ParameterError, match="preset = nope"):
+        ms.force_length_preset("nope", 0.1)

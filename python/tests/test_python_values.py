@@ -92,3 +92,30 @@ def test_copies_are_independent_and_to_yaml_runs_as_the_scenario(tmp_path):
                                      "--set", "load[0].after=20.0"])):
         subprocess.run(command + ["-o", str(tmp_path / name)], check=True, capture_output=True)
     assert (tmp_path / "a.csv").read_text() == (tmp_path / "b.csv").read_text()
+
+
+def test_scenarios_and_results_pickle_for_other_processes():
+    import pickle
+    from concurrent.futures import ProcessPoolExecutor
+    d_scenario = musclesim.scenario_from_dict(
+        {"nodes": [{"name": "wall", "fixed": 0.0},
+                   {"name": "mass", "position": 0.1, "mass": 1.0}],
+         "elements": [{"name": "spring", "type": "spring", "from": "wall", "to": "mass",
+                       "stiffness": 100.0, "rest_length": 0.1}],
+         "loads": [{"node": "mass", "type": "constant", "value": 1.0}],
+         "time": {"start": 0.0, "end": 0.1}}).set("loads[0].value", 2.0)
+    f_scenario = musclesim.load_scenario(CONCENTRIC, set={"time.end": 0.05})
+    for scenario in (d_scenario, f_scenario):
+        here = scenario.run()
+        copied = pickle.loads(pickle.dumps(scenario))
+        assert copied.is_network == scenario.is_network
+        # another process runs the unpickled scenario and sends its Result back pickled
+        with ProcessPoolExecutor(max_workers=1) as pool:
+            there = pool.submit(_run, scenario).result()
+        assert list(there.columns) == list(here.columns) and there.stats["steps"] == here.stats["steps"]
+        for column in here.columns:
+            np.testing.assert_array_equal(there[column], here[column])
+
+
+def _run(scenario):
+    return scenario.run()
