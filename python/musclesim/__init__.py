@@ -10,7 +10,7 @@ from .sweeps import sweep  # noqa: F401,E402
 from .tables import table  # noqa: F401,E402
 
 
-def run_many(jobs, threads=0):
+def run_many(jobs, threads=0, sensitivities=None):
     """Runs many scenarios on `threads` C++ threads (0: every core) with the GIL released.
 
     Each job is a Scenario (from load_scenario or scenario_from_dict, with its set() values)
@@ -18,6 +18,8 @@ def run_many(jobs, threads=0):
     one Result per job, in order, as Scenario.run() gives it: .columns (the CSV's columns as
     NumPy arrays, SI units: s, m, m/s, N), .stats, .status. musclesim.table(results) stacks
     them into one structured array (a DataFrame with pandas.DataFrame(...)).
+    `sensitivities`: dotted paths of numeric parameters whose forward sensitivities every run
+    adds as the columns d_<column>/d_<path>, as Scenario.run(sensitivities=...) does.
     """
     from . import _musclesim as _extension
     if isinstance(threads, bool) or not isinstance(threads, int):
@@ -32,7 +34,9 @@ def run_many(jobs, threads=0):
         else:
             raise TypeError("jobs[%d] must be a Scenario or a (path, overrides) pair, not %r"
                             % (k, job))
-    return _extension.run_many(converted, threads)
+    if isinstance(sensitivities, str):
+        raise TypeError("sensitivities must be a list of dotted paths, not one str")
+    return _extension.run_many(converted, threads, list(sensitivities or []))
 
 
 from .curves_identification import *  # noqa: F401,F403,E402

@@ -47,7 +47,8 @@ int ThreadCount(int threads, std::size_t jobs) {
   return std::max(1, std::min(wanted, static_cast<int>(jobs)));
 }
 
-py::list RunMany(const py::list& jobs_in, int threads) {
+py::list RunMany(const py::list& jobs_in, int threads,
+                 const std::vector<std::string>& sensitivities) {
   std::vector<Job> jobs;
   for (const py::handle item : jobs_in) {
     const py::tuple pair = py::reinterpret_borrow<py::object>(item).cast<py::tuple>();
@@ -66,7 +67,7 @@ py::list RunMany(const py::list& jobs_in, int threads) {
     const auto work = [&] {
       for (std::size_t k = next++; k < jobs.size() && !stop; k = next++) {
         try {
-          const RunText text = RunLikeCli(jobs[k].path, jobs[k].overrides, {});
+          const RunText text = RunLikeCli(jobs[k].path, jobs[k].overrides, sensitivities);
           outcomes[k].columns = SplitCsv(text.csv);
           outcomes[k].stats_json = text.stats_json;
         } catch (...) {
@@ -154,12 +155,14 @@ py::dict RunSweepFile(const std::string& path, const std::string& output, bool o
 
 void BindSweep(py::module_& m) {
   m.def("run_many", &RunMany, py::arg("jobs"), py::arg("threads") = 0,
+        py::arg("sensitivities") = std::vector<std::string>{},
         "Runs every job, a (path, overrides) pair (overrides: None, a list of \"key=value\" "
         "strings as --set takes them, or a dict), on `threads` C++ threads (0: every core) "
         "with the GIL released. The scenario may be single-actuator or a network. Returns, "
         "in the jobs' order, one Result each, as Scenario.run() gives: .columns exactly "
         "`musclesim run`'s CSV columns (float64; the phase columns str), .stats its --stats "
-        "dict, .status 'completed', 'limit' or 'failed'. SI units. A bad job raises (the "
+        "dict, .status 'completed', 'limit' or 'failed'; `sensitivities` (dotted paths) adds "
+        "the d_<column>/d_<path> columns to every run, as Scenario.run does. SI units. A bad job raises (the "
         "first in the list's order) after every job has run; musclesim.table() stacks the "
         "results into one structured array.");
   m.def("_run_sweep", &RunSweepFile, py::arg("path"), py::arg("output"), py::arg("output_given"),

@@ -183,3 +183,17 @@ def test_a_bad_dict_sweep_names_the_key_and_the_name():
     assert "spiral" in str(error.value) and "/tmp" not in str(error.value)
     with pytest.raises(TypeError):
         musclesim.sweep(["not", "a", "sweep"])
+
+
+def test_run_many_adds_sensitivities_as_run_does():
+    path = os.path.join(SCENARIOS, "concentric.yaml")
+    jobs = [(path, {"time.end": 0.1, "load[0].after": f}) for f in (20.0, 40.0)]
+    results = musclesim.run_many(jobs, sensitivities=["model.f_iso"])
+    for (job_path, overrides), result in zip(jobs, results):
+        alone = musclesim.load_scenario(job_path, set=overrides).run(sensitivities=["model.f_iso"])
+        assert list(result.columns) == list(alone.columns)
+        assert "d_length/d_model.f_iso" in result.columns
+        np.testing.assert_array_equal(result["d_length/d_model.f_iso"],
+                                      alone["d_length/d_model.f_iso"])
+    with pytest.raises(TypeError, match="sensitivities"):
+        musclesim.run_many(jobs, sensitivities="model.f_iso")
