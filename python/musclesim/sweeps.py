@@ -61,9 +61,10 @@ def sweep(spec, threads=0, output=None, resume=False, name="<dict>"):
     as `--jobs` (0: every core). `output`: where the summary CSV (and any per-run trajectories
     beside it) is written, as `-o`; None: a temporary file, removed (the sweep file's own
     `output` is not used). `resume`: as `--resume`, keep the rows of an interrupted sweep's
-    output.partial and run the rest. Ctrl-C stops the sweep (KeyboardInterrupt) after the
-    running points, their rows kept in output.partial. A sweep keeping trajectories
-    (`trajectories: all` or `failed`) needs `output`: they are written beside it.
+    output.partial and run the rest (it needs `output`). Ctrl-C stops the sweep
+    (KeyboardInterrupt) after the running points, their rows kept in output.partial when
+    `output` is given. A sweep keeping trajectories (`trajectories: all` or `failed`) needs
+    `output`: they are written beside it.
 
     Returns one NumPy structured array, a record per point, with the summary CSV's columns as
     fields in its order: index, one per swept path, status, the metrics (SI units as in the
@@ -73,6 +74,9 @@ def sweep(spec, threads=0, output=None, resume=False, name="<dict>"):
     `pandas.DataFrame(summary)` a DataFrame."""
     if isinstance(threads, bool) or not isinstance(threads, int):
         raise TypeError("threads must be an int (0: every core), not %r" % (threads,))
+    if resume and output is None:
+        raise ValueError("resume=True continues the summary at output: give output=PATH, "
+                         "the one the interrupted sweep wrote to")
     with tempfile.TemporaryDirectory(prefix="musclesim_sweep_") as directory:
         if isinstance(spec, (str, os.PathLike)):
             path = os.fspath(spec)

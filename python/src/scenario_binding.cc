@@ -88,10 +88,11 @@ Result Run(const Scenario& scenario, const py::object& sensitivities) {
   }
   CsvColumns columns;
   std::string stats_json;
+  const Scenario fixed = scenario;  // taken with the GIL: another thread may set() meanwhile
   {
     py::gil_scoped_release release;
-    const RunText text = scenario.Located(
-        [&] { return RunLikeCli(scenario.path, scenario.overrides, parameters); });
+    const RunText text =
+        fixed.Located([&] { return RunLikeCli(fixed.path, fixed.overrides, parameters); });
     columns = SplitCsv(text.csv);
     stats_json = text.stats_json;
   }
@@ -189,10 +190,12 @@ void BindScenario(py::module_& m) {
           // file is this process's)
           [](const Scenario& s) {
             if (s.text) {
+              const Scenario fixed = s;  // taken with the GIL
               std::string text;
               {
                 py::gil_scoped_release release;
-                text = s.Located([&] { return RewriteScenario(s.path, s.overrides, {}); });
+                text = fixed.Located(
+                    [&] { return RewriteScenario(fixed.path, fixed.overrides, {}); });
               }
               return py::make_tuple(py::none(), s.display, std::vector<std::string>{}, text);
             }
@@ -220,8 +223,9 @@ void BindScenario(py::module_& m) {
       .def(
           "to_yaml",
           [](const Scenario& s) {
+            const Scenario fixed = s;  // taken with the GIL
             py::gil_scoped_release release;
-            return s.Located([&] { return RewriteScenario(s.path, s.overrides, {}); });
+            return fixed.Located([&] { return RewriteScenario(fixed.path, fixed.overrides, {}); });
           },
           "The scenario as a YAML file's text, its set() values written in: what `musclesim "
           "run` runs alike (the original's comments are not kept).")
@@ -240,14 +244,15 @@ void BindScenario(py::module_& m) {
       .def(
           "set",
           [](Scenario& s, const std::string& key, const py::object& value) -> Scenario& {
-            s.overrides.push_back(OverrideText(key, value));
-            try {
+            // validated as a copy without the GIL, taken on only if valid: a rejected value
+            // leaves the scenario as it was, and no other thread sees it half changed
+            Scenario changed = s;
+            changed.overrides.push_back(OverrideText(key, value));
+            {
               py::gil_scoped_release release;
-              s.Validate();
-            } catch (...) {
-              s.overrides.pop_back();  // a rejected value leaves the scenario as it was
-              throw;
+              changed.Validate();
             }
+            s = std::move(changed);
             return s;
           },
           py::arg("key"), py::arg("value"), py::return_value_policy::reference_internal,

@@ -116,6 +116,9 @@ class InterruptObserver : public SweepObserver {
     interrupted_ = PyErr_CheckSignals() != 0;  // the KeyboardInterrupt stays pending
     return interrupted_;
   }
+  // Ctrl-C was seen: its KeyboardInterrupt is pending, even when the last points finished
+  // anyway and the summary is whole.
+  bool interrupted() const { return interrupted_; }
 
  private:
   bool interrupted_ = false;
@@ -143,7 +146,7 @@ py::dict RunSweepFile(const std::string& path, const std::string& output, bool o
       return RunSweep(spec, options);
     });
   }
-  if (outcome.interrupted) throw py::error_already_set();
+  if (observer.interrupted()) throw py::error_already_set();
   py::dict result;
   result["points"] = outcome.points;
   result["failed"] = outcome.failed;

@@ -376,3 +376,14 @@ def test_a_column_of_a_two_dimensional_array_is_read_in_order():
     table = np.column_stack([X_PASSIVE, passive_closed_form(X_PASSIVE, K_P, ALPHA, SLACK)])
     assert (ms.identify_curves(passive=(table[:, 0], table[:, 1])).model_yaml
             == ms.identify_curves(passive=(table[:, 0].copy(), table[:, 1].copy())).model_yaml)
+
+
+def test_the_report_at_the_fewest_points_notes_the_reference_it_cannot_fit():
+    # 4 passive points: the exponential (3 parameters) fits, a quartic (5 coefficients)
+    # cannot; the report leaves that row out and says so, where it used to fail
+    x = np.array([0.11, 0.12, 0.13, 0.14])
+    found = ms.identify_curves(passive=(x, np.expm1(100.0 * (x - 0.105))), report=True)
+    assert "| exponential (eq. 1) |" in found.report
+    assert "| polynomial, degree 4 |" not in found.report
+    assert "polynomial, degree 4: not fitted (a polynomial of degree 4 needs more than 4 points)" \
+        in found.report

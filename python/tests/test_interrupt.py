@@ -1,4 +1,5 @@
 """Ctrl-C stops run_many and sweep: a notebook's interrupt reaches a long C++ call."""
+import contextlib
 import os
 import pathlib
 import signal
@@ -18,6 +19,18 @@ SWEEP = {"parameters": {"load[0].after": {"from": 5.0, "to": 95.0, "count": 400}
          "metrics": ["final_length"]}
 
 
+@contextlib.contextmanager
+def interrupt_after(seconds):
+    """Ctrl-C `seconds` into the block; never after it (a stray one would end the session)."""
+    timer = threading.Timer(seconds, os.kill, (os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        yield
+    finally:
+        timer.cancel()
+        timer.join()
+
+
 def rows_in(partial):
     if not partial.exists():
         return 0
@@ -29,15 +42,22 @@ def test_ctrl_c_stops_a_sweep_keeping_its_rows(tmp_path):
     partial = pathlib.Path(str(output) + ".partial")
     sweep = dict(SWEEP, base=musclesim.load_scenario(CONCENTRIC).set("time.end", 0.3))
 
+    stop = threading.Event()
+
     def interrupt_once_rows_are_in():
-        deadline = time.monotonic() + 60
-        while rows_in(partial) == 0 and time.monotonic() < deadline:
-            time.sleep(0.01)
+        while rows_in(partial) == 0:
+            if stop.wait(0.01):
+                return  # the sweep ended first: no signal after it
         os.kill(os.getpid(), signal.SIGINT)
 
-    threading.Thread(target=interrupt_once_rows_are_in).start()
-    with pytest.raises(KeyboardInterrupt):
-        musclesim.sweep(sweep, threads=2, output=output)
+    sender = threading.Thread(target=interrupt_once_rows_are_in)
+    sender.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            musclesim.sweep(sweep, threads=2, output=output)
+    finally:
+        stop.set()
+        sender.join()
     # stopped early: the rows done stay in output.partial, far fewer than the points, and no
     # summary was written
     assert 0 < rows_in(partial) < 200000 and not output.exists()
@@ -52,9 +72,18 @@ def test_ctrl_c_stops_run_many_between_jobs():
     start = time.perf_counter()
     musclesim.run_many(jobs[:40], threads=2)
     all_jobs = (time.perf_counter() - start) * len(jobs) / 40  # what the whole list takes
-    threading.Timer(0.3, os.kill, (os.getpid(), signal.SIGINT)).start()
     start = time.perf_counter()
-    with pytest.raises(KeyboardInterrupt):
+    with interrupt_after(0.3), pytest.raises(KeyboardInterrupt):
         musclesim.run_many(jobs, threads=2)
     # the running jobs finish (milliseconds each), no new one starts: far less than the list
     assert time.perf_counter() - start < 0.5 * all_jobs
+
+
+def test_ctrl_c_during_the_last_points_is_still_a_keyboard_interrupt():
+    # one long point (seconds): Ctrl-C lands while it runs, the point finishes, the summary is
+    # whole, and the interrupt is still raised (not lost, not a SystemError)
+    sweep = {"base": SOURCE / "scenarios" / "antagonist_pair.yaml",
+             "parameters": {"time.end": [2500.0]}, "metrics": ["peak_tension"],
+             "metric_options": {"element": "flexor"}}
+    with interrupt_after(0.3), pytest.raises(KeyboardInterrupt):
+        musclesim.sweep(sweep, threads=1)

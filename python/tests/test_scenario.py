@@ -247,3 +247,31 @@ def test_solver_failure_is_a_result_with_the_rows_so_far(tmp_path):
     assert 0 < len(result) == partial.shape[0]
     # exact, as in assert_same_as_cli
     np.testing.assert_array_equal(result["length"], partial[:, 1].astype(np.float64))
+
+
+def test_a_scenario_shared_by_threads_runs_while_another_sets():
+    # run() and set() take the scenario's state with the GIL; a set() seen half done (an
+    # override list growing under a run) would crash or run a mixture
+    import threading
+    scenario = musclesim.load_scenario(scenario_path("concentric.yaml"), set={"time.end": 0.02})
+    finals, errors = [], []
+
+    def runner():
+        for _ in range(30):
+            result = scenario.run()
+            finals.append(result.stats["final_time"])
+
+    def setter():
+        try:
+            for k in range(300):
+                scenario.set("load[0].after", 20.0 + k % 5)
+        except Exception as error:  # noqa: BLE001 - any is the failure
+            errors.append(error)
+
+    threads = [threading.Thread(target=runner), threading.Thread(target=setter)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    assert errors == [] and finals == [0.02] * 30
+    assert scenario.overrides[-1] == "load[0].after=24.0" and len(scenario.overrides) == 301

@@ -197,3 +197,19 @@ def test_run_many_adds_sensitivities_as_run_does():
                                       alone["d_length/d_model.f_iso"])
     with pytest.raises(TypeError, match="sensitivities"):
         musclesim.run_many(jobs, sensitivities="model.f_iso")
+
+
+def test_a_summary_path_that_cannot_take_it_is_refused_before_any_point(tmp_path):
+    base = tmp_path / "base.yaml"
+    base.write_text(open(os.path.join(SCENARIOS, "concentric.yaml")).read())
+    before = base.read_text()
+    sweep = {"base": base, "parameters": {"load[0].after": [10.0, 30.0]}, "metrics": ["final_length"]}
+    cases = [(base, "is the base scenario"), (tmp_path, "is a directory"),
+             (tmp_path / "no" / "summary.csv", "does not exist")]
+    for output, rule in cases:
+        with pytest.raises(musclesim.InputError, match=rule):
+            musclesim.sweep(sweep, output=output)
+    assert base.read_text() == before  # the input the summary would have replaced
+    assert not list(tmp_path.glob("*.partial"))  # refused before anything was written
+    with pytest.raises(ValueError, match="output"):
+        musclesim.sweep(sweep, resume=True)
