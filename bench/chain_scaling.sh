@@ -14,12 +14,13 @@
 #   bench/chain_scaling.sh [BUILD_DIR] [REPEATS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/toolchain.sh
 build=${1:-build}
 repeats=${2:-7}
 if [ ! -f "$build/CMakeCache.txt" ] || ! grep -q '^MUSCLESIM_BUILD_BENCHMARKS:BOOL=ON' "$build/CMakeCache.txt"; then
-  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMUSCLESIM_BUILD_BENCHMARKS=ON >/dev/null
+  "$cmake" -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMUSCLESIM_BUILD_BENCHMARKS=ON >/dev/null
 fi
-cmake --build "$build" -j"$(nproc)" --target chain_benchmark >/dev/null
+"$cmake" --build "$build" -j"$(nproc)" --target chain_benchmark >/dev/null
 command -v gnuplot >/dev/null || { echo "gnuplot is not installed: apt-get install gnuplot-nox" >&2; exit 1; }
 
 out=bench/results/chain_scaling.txt
@@ -38,7 +39,7 @@ load=$(cut -d' ' -f1-3 /proc/loadavg)  # other work on a shared machine inflates
 "$build/bench/chain_benchmark" --benchmark_filter='BM_ChainRun/N:1000/solver:0' \
   --benchmark_format=json > "$work/once.json" 2>/dev/null
 
-python3 - "$work" "$machine" "$repeats" "$load" > "$out" <<'PY'
+"$python" - "$work" "$machine" "$repeats" "$load" > "$out" <<'PY'
 import json, math, sys
 work, machine, repeats, load = sys.argv[1:5]
 best, skipped = {}, {}

@@ -17,6 +17,7 @@
 #   bench/run.sh [BUILD_DIR]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/toolchain.sh
 build=${1:-build-bench}
 out=bench/results
 mkdir -p "$out"
@@ -31,11 +32,10 @@ if [ ${#need[@]} -gt 0 ]; then
   "${sudo_cmd[@]}" apt-get update -qq
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${need[@]}"
 fi
-python=/usr/bin/python3   # Debian's, with Debian's SciPy
 
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMUSCLESIM_BUILD_BENCHMARKS=ON \
+"$cmake" -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMUSCLESIM_BUILD_BENCHMARKS=ON \
   -DMUSCLESIM_BUILD_TESTS=OFF -DMUSCLESIM_WITH_MPI=ON >/dev/null
-cmake --build "$build" -j"$(nproc)" >/dev/null
+"$cmake" --build "$build" -j"$(nproc)" >/dev/null
 
 {
   echo "date: $(date -u +%Y-%m-%d)"

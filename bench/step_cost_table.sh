@@ -5,12 +5,13 @@
 #   bench/step_cost_table.sh [BUILD_DIR]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/toolchain.sh
 build=${1:-build}
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMUSCLESIM_BUILD_BENCHMARKS=ON >/dev/null
-cmake --build "$build" -j"$(nproc)" --target simulation_benchmark >/dev/null
+"$cmake" -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMUSCLESIM_BUILD_BENCHMARKS=ON >/dev/null
+"$cmake" --build "$build" -j"$(nproc)" --target simulation_benchmark >/dev/null
 "$build/bench/simulation_benchmark" --benchmark_min_time=0.1 --benchmark_repetitions=5 \
   --benchmark_report_aggregates_only=true --benchmark_format=csv 2>/dev/null |
-python3 -c '
+"$python" -c '
 import csv, sys
 runs = {}
 for r in csv.DictReader(sys.stdin):

@@ -6,9 +6,10 @@
 #   bench/sweep_throughput.sh [BUILD_DIR]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/toolchain.sh
 build=${1:-build}
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMUSCLESIM_WITH_MPI=ON >/dev/null
-cmake --build "$build" -j"$(nproc)" --target musclesim_cli >/dev/null
+"$cmake" -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMUSCLESIM_WITH_MPI=ON >/dev/null
+"$cmake" --build "$build" -j"$(nproc)" --target musclesim_cli >/dev/null
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

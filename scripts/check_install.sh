@@ -7,11 +7,12 @@
 #   scripts/check_install.sh BUILD_DIR
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/toolchain.sh
 build=${1:?usage: scripts/check_install.sh BUILD_DIR}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-cmake --install "$build" --prefix "$work/prefix" > /dev/null
+"$cmake" --install "$build" --prefix "$work/prefix" > /dev/null
 # only public headers are installed: none of the private ones in src/
 for private in $(cd src && find . -name '*.h' -printf '%f\n'); do
   if find "$work/prefix/include" -name "$private" | grep -q .; then
@@ -26,14 +27,14 @@ if grep -q 'LINK_ONLY:>' "$work"/prefix/lib*/cmake/musclesim/*.cmake; then
   exit 1
 fi
 
-cmake -S examples -B "$work/examples" -DCMAKE_PREFIX_PATH="$work/prefix" > /dev/null
-cmake --build "$work/examples" -j"$(nproc)" > /dev/null
+"$cmake" -S examples -B "$work/examples" -DCMAKE_PREFIX_PATH="$work/prefix" > /dev/null
+"$cmake" --build "$work/examples" -j"$(nproc)" > /dev/null
 "$work/examples/isotonic_in_code" > /dev/null
 "$work/examples/scenario_in_code" scenarios/concentric.yaml > /dev/null
 
-cmake -S examples/model_curves -B "$work/model" -DCMAKE_PREFIX_PATH="$work/prefix" \
+"$cmake" -S examples/model_curves -B "$work/model" -DCMAKE_PREFIX_PATH="$work/prefix" \
   -DCMAKE_DISABLE_FIND_PACKAGE_SUNDIALS=ON -DCMAKE_DISABLE_FIND_PACKAGE_yaml-cpp=ON --no-warn-unused-cli > /dev/null
-cmake --build "$work/model" > /dev/null
+"$cmake" --build "$work/model" > /dev/null
 "$work/model/model_curves" > /dev/null
 link=$(cat "$work/model/CMakeFiles/model_curves.dir/link.txt")
 if grep -qiE 'sundials|yaml' <<< "$link"; then

@@ -20,12 +20,13 @@ fi
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${MUSCLESIM_FUZZ_BUILD:-$root/build-fuzz}
+source "$root/scripts/toolchain.sh"
 
-cmake -S "$root" -B "$build" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+"$cmake" -S "$root" -B "$build" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMUSCLESIM_FUZZ=ON -DMUSCLESIM_BUILD_TESTS=OFF \
   -DMUSCLESIM_BUILD_BENCHMARKS=OFF -DMUSCLESIM_BUILD_EXAMPLES=OFF -DMUSCLESIM_BUILD_CLI=OFF \
   >/dev/null
-cmake --build "$build" -j2 --target "${readers[@]/#/fuzz_}"
+"$cmake" --build "$build" -j2 --target "${readers[@]/#/fuzz_}"
 
 # the fuzzers' own files (inputs written for the readers) stay in the build directory
 export TMPDIR="$build/tmp"

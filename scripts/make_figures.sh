@@ -3,9 +3,10 @@
 #   scripts/make_figures.sh [BUILD_DIR]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/toolchain.sh
 build=${1:-build}
-cmake -S . -B "$build" >/dev/null
-cmake --build "$build" -j"$(nproc)" --target musclesim_cli >/dev/null
+"$cmake" -S . -B "$build" >/dev/null
+"$cmake" --build "$build" -j"$(nproc)" --target musclesim_cli >/dev/null
 musclesim="$build/musclesim"
 out=docs/figures
 work=$(mktemp -d)

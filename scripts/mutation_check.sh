@@ -17,6 +17,7 @@
 # and checked with `git diff --quiet` at the end. Build and test logs: build-mutation/logs/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/toolchain.sh
 
 build_dir=build-mutation
 jobs=${JOBS:-2}
@@ -284,7 +285,7 @@ mutation simulation-first-output-repeated src/solver/simulation.cc \
 
 # Literal single-occurrence replace: apply (default) or only check (--check).
 replace() {  # FILE ORIGINAL REPLACEMENT [--check]
-  python3 - "$@" <<'PY'
+  "$python" - "$@" <<'PY'
 import sys
 path, old, new = sys.argv[1:4]
 check = len(sys.argv) > 4
@@ -372,7 +373,7 @@ trap 'echo "interrupted: tree restored" >&2; exit 130' INT TERM
 logs="$build_dir/logs"
 mkdir -p "$logs"
 # warnings are not errors here: a mutant must break a test, or the compiler, to count as killed
-cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DMUSCLESIM_BUILD_TESTS=ON \
+"$cmake" -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DMUSCLESIM_BUILD_TESTS=ON \
   -DMUSCLESIM_BUILD_BENCHMARKS=OFF -DMUSCLESIM_BUILD_EXAMPLES=OFF -DMUSCLESIM_WITH_MPI=OFF \
   -DMUSCLESIM_WARNINGS_AS_ERRORS=OFF >"$logs/configure.log" 2>&1 ||
   { echo "configuring $build_dir failed: $logs/configure.log" >&2; exit 1; }
@@ -380,10 +381,10 @@ cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DMUSCLESIM_BUILD_TESTS=ON
 build() {  # LOG TARGETS...
   local log=$1
   shift
-  cmake --build "$build_dir" -j"$jobs" --target "$@" >"$log" 2>&1
+  "$cmake" --build "$build_dir" -j"$jobs" --target "$@" >"$log" 2>&1
 }
 run_tests() {  # LOG REGEX
-  ctest --test-dir "$build_dir" -R "$2" -j"$jobs" --timeout "$test_timeout" \
+  "$ctest" --test-dir "$build_dir" -R "$2" -j"$jobs" --timeout "$test_timeout" \
     --no-tests=error --output-on-failure >"$1" 2>&1
 }
 # "Suite.Test" names of the failed tests in a ctest log, with how they failed unless plainly

@@ -8,6 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 bash scripts/install-deps.sh
+source scripts/toolchain.sh
 
 case "${1:-}" in
   "") dir=build; options=(-DMUSCLESIM_WITH_MPI=ON) ;;
@@ -21,8 +22,9 @@ case "${1:-}" in
 esac
 
 jobs=$(nproc)
-cmake -S . -B "$dir" -DMUSCLESIM_WARNINGS_AS_ERRORS=ON -DMUSCLESIM_BUILD_TESTS=ON "${options[@]}"
-cmake --build "$dir" -j"$jobs"
-ctest --test-dir "$dir" --output-on-failure -j"$jobs"
+"$cmake" -S . -B "$dir" -DMUSCLESIM_WARNINGS_AS_ERRORS=ON -DMUSCLESIM_BUILD_TESTS=ON \
+  -DPYTHON_EXECUTABLE="$python" "${options[@]}"
+"$cmake" --build "$dir" -j"$jobs"
+"$ctest" --test-dir "$dir" --output-on-failure -j"$jobs"
 # the installed package, used from outside as find_package(musclesim) (Release build only)
 if [ "$dir" = build ]; then bash scripts/check_install.sh "$dir"; fi
