@@ -6,7 +6,7 @@ include(CMakePackageConfigHelpers)
 
 set(musclesim_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/musclesim)
 install(DIRECTORY include/musclesim DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-foreach(layer model dynamics solver io studies)
+foreach(layer ${MUSCLESIM_LAYERS})
   install(TARGETS musclesim_${layer} EXPORT musclesim_${layer}
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}

@@ -18,15 +18,15 @@
 #include <utility>
 #include <vector>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/io/csv_table.h"
 #include "musclesim/io/network_csv.h"
 #include "musclesim/io/network_scenario.h"
 #include "musclesim/io/run_scenario.h"
 #include "musclesim/io/trajectory_csv.h"
 #include "musclesim/solver/simulation.h"
-#include "musclesim/studies/plot.h"
-#include "musclesim/studies/sweep.h"
+#include "musclesim/plot/plot.h"
+#include "musclesim/sweep/sweep.h"
 #include "support/canonical_actuator.h"
 #include "support/difference_jacobian.h"
 #include "support/scenario_files.h"

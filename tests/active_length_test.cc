@@ -7,7 +7,7 @@
 #include <numbers>
 #include <random>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "support/numeric.h"
 #include "support/rejection.h"
 

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "support/control_networks.h"
 #include "support/difference_jacobian.h"
 

@@ -5,7 +5,7 @@
 
 #include <fstream>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim {
 namespace {

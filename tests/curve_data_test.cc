@@ -1,4 +1,4 @@
-#include "musclesim/studies/curve_data.h"
+#include "musclesim/identify/curve_data.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -7,8 +7,8 @@
 #include <cmath>
 #include <limits>
 
-#include "musclesim/errors.h"
-#include "musclesim/studies/identify.h"
+#include "musclesim/core/errors.h"
+#include "musclesim/identify/identify.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <vector>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim {
 namespace {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/model/velocity.h"
 #include "support/numeric.h"
 #include "support/rejection.h"

@@ -11,7 +11,7 @@
 #include "musclesim/io/model_yaml.h"
 #include "musclesim/io/model_yaml_writer.h"
 #include "musclesim/io/run_scenario.h"
-#include "musclesim/studies/identify.h"
+#include "musclesim/identify/identify.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {

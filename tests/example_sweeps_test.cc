@@ -8,8 +8,8 @@
 #include <string>
 
 #include "musclesim/io/csv_table.h"
-#include "musclesim/studies/sweep.h"
-#include "musclesim/studies/sweep_runner.h"
+#include "musclesim/sweep/sweep.h"
+#include "musclesim/sweep/sweep_runner.h"
 
 namespace musclesim {
 namespace {

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <random>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "support/numeric.h"
 
 namespace musclesim {

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/io/curves_csv.h"
 
 namespace musclesim {

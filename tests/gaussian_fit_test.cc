@@ -11,7 +11,7 @@
 #include <random>
 #include <sstream>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/io/model_yaml.h"
 #include "support/numeric.h"
 #include "support/rejection.h"

@@ -9,8 +9,8 @@
 #include <optional>
 #include <random>
 
-#include "musclesim/errors.h"
-#include "musclesim/studies/identify.h"
+#include "musclesim/core/errors.h"
+#include "musclesim/identify/identify.h"
 #include "support/normal_noise.h"
 
 namespace musclesim {

@@ -1,7 +1,7 @@
 // Measured series and data-file specs held in memory (the Python module's path): the same
 // series as the CSV files give, the same rules, messages naming the series and its row; and
 // a spec read from text as the file reader reads it.
-#include "musclesim/studies/identify_series_columns.h"
+#include "musclesim/identify/identify_series_columns.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {

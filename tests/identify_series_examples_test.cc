@@ -2,7 +2,7 @@
 // identified on the simulator's own sensitivities: recovery from 20 seeded noisy data sets
 // made here over a noise-free run of the truth (independent of scripts/make_series_data.py),
 // recovery from noise-free data, and parameters the experiment cannot determine flagged.
-#include "musclesim/studies/identify_series.h"
+#include "musclesim/identify/identify_series.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

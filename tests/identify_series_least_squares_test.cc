@@ -1,13 +1,13 @@
 // The bounded Levenberg-Marquardt fit of time-series identification, on closed-form models
 // whose optimum is known independently.
-#include "studies/identify_series_least_squares.h"
+#include "musclesim/core/bounded_least_squares.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim::identify_series_detail {
 namespace {

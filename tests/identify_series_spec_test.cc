@@ -7,7 +7,7 @@
 
 #include <filesystem>
 
-#include "musclesim/studies/identify_series.h"
+#include "musclesim/identify/identify_series.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {

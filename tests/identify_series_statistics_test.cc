@@ -1,14 +1,14 @@
 // Standard errors, correlations and identifiability verdicts of time-series identification
 // against closed forms (linear models) and against the spread of estimates over many seeded
 // noisy data sets.
-#include "studies/identify_series_statistics.h"
+#include "identify/identify_series_statistics.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "studies/identify_series_least_squares.h"
+#include "musclesim/core/bounded_least_squares.h"
 #include "support/normal_noise.h"
 
 namespace musclesim::identify_series_detail {

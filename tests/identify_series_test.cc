@@ -1,7 +1,7 @@
 // Time-series identification end to end on a closed-form stand-in for the scenario's run:
 // the fit, its standard errors, the verdict, the design ranking and the checks of the data
 // against the run, each compared with an independent computation.
-#include "musclesim/studies/identify_series.h"
+#include "musclesim/identify/identify_series.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include <cmath>
 #include <map>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "support/normal_noise.h"
 
 namespace musclesim {

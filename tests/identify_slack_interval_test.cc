@@ -12,10 +12,10 @@
 #include <utility>
 #include <vector>
 
-#include "musclesim/errors.h"
-#include "musclesim/studies/identify.h"
-#include "musclesim/studies/identify_report.h"
-#include "studies/student_t.h"
+#include "musclesim/core/errors.h"
+#include "musclesim/identify/identify.h"
+#include "musclesim/identify/identify_report.h"
+#include "musclesim/core/student_t.h"
 #include "support/normal_noise.h"
 #include "support/numeric.h"
 
@@ -42,7 +42,7 @@ TEST(StudentT, CentralProbabilityMatchesQuadratureOfTheDensity) {
   for (int dof : {1, 2, 3, 4, 7, 26, 27}) {
     for (double t : {0.3, 1.0, 2.0555, 6.0}) {
       // adaptive Simpson to 1e-14 of a smooth density, and a finite sum: both ~1e-14
-      EXPECT_NEAR(identify_detail::StudentTCentralProbability(t, dof),
+      EXPECT_NEAR(StudentTCentralProbability(t, dof),
                   CentralProbabilityByQuadrature(t, dof), 1e-11)
           << "dof " << dof << ", t " << t;
     }
@@ -53,13 +53,13 @@ TEST(StudentT, QuantileInvertsTheClosedForms) {
   for (double p : {0.5, 0.9, 0.95, 0.99}) {
     // dof 1 (Cauchy): P = 2 atan(t) / pi; dof 2: P = t / sqrt(2 + t^2). Bisection to
     // rounding: 1e-12 relative is the quantile's condition at p = 0.99 times eps, with room
-    EXPECT_NEAR(identify_detail::StudentTCentralQuantile(p, 1), std::tan(0.5 * std::numbers::pi * p),
+    EXPECT_NEAR(StudentTCentralQuantile(p, 1), std::tan(0.5 * std::numbers::pi * p),
                 1e-12 * std::tan(0.5 * std::numbers::pi * p));
     const double two = std::sqrt(2 * p * p / (1 - p * p));
-    EXPECT_NEAR(identify_detail::StudentTCentralQuantile(p, 2), two, 1e-12 * two);
+    EXPECT_NEAR(StudentTCentralQuantile(p, 2), two, 1e-12 * two);
   }
   // the 97.5% point of t(26), as printed in tables to 10 digits: 2.055529439
-  EXPECT_NEAR(identify_detail::StudentTCentralQuantile(0.95, 26), 2.055529439, 1e-9);
+  EXPECT_NEAR(StudentTCentralQuantile(0.95, 26), 2.055529439, 1e-9);
 }
 
 // --- data like data/synthetic_passive.csv ------------------------------------------------

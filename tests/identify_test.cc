@@ -1,4 +1,4 @@
-#include "musclesim/studies/identify.h"
+#include "musclesim/identify/identify.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -7,8 +7,8 @@
 #include <numbers>
 #include <random>
 
-#include "musclesim/errors.h"
-#include "musclesim/studies/identify_report.h"
+#include "musclesim/core/errors.h"
+#include "musclesim/identify/identify_report.h"
 #include "support/normal_noise.h"
 #include "support/scenario_files.h"
 

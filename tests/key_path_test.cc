@@ -1,5 +1,5 @@
 // The dotted key paths of `--set` and of ParameterError: "model.velocity.n", "load[0].value".
-#include "io/key_path.h"
+#include "musclesim/core/key_path.h"
 
 #include <gtest/gtest.h>
 

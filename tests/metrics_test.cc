@@ -1,4 +1,4 @@
-#include "musclesim/studies/metrics.h"
+#include "musclesim/sweep/metrics.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim {
 namespace {

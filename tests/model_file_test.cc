@@ -5,7 +5,7 @@
 
 #include <fstream>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {

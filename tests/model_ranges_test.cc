@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/model/tension.h"
 
 namespace musclesim {

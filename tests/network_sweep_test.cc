@@ -14,10 +14,10 @@
 #include <tuple>
 #include <vector>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/io/csv_table.h"
-#include "musclesim/studies/sweep.h"
-#include "musclesim/studies/sweep_runner.h"
+#include "musclesim/sweep/sweep.h"
+#include "musclesim/sweep/sweep_runner.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {

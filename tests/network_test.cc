@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "musclesim/dynamics/actuator.h"
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "support/canonical_actuator.h"
 #include "support/canonical_networks.h"
 #include "support/difference_jacobian.h"

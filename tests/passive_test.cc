@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "support/numeric.h"
 #include "support/rejection.h"
 

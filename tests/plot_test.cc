@@ -1,4 +1,4 @@
-#include "musclesim/studies/plot.h"
+#include "musclesim/plot/plot.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 #include <fstream>
 #include <set>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/io/model_yaml.h"
 #include "support/scenario_files.h"
 

@@ -6,10 +6,10 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/io/csv_table.h"
-#include "musclesim/studies/identify_series.h"
-#include "musclesim/studies/plot.h"
+#include "musclesim/identify/identify_series.h"
+#include "musclesim/plot/plot.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {

@@ -3,7 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {

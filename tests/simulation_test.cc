@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <thread>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/io/network_scenario.h"
 #include "support/canonical_actuator.h"
 #include "support/scenario_files.h"

@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "support/canonical_networks.h"
 
 namespace musclesim {

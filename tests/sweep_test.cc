@@ -1,4 +1,4 @@
-#include "musclesim/studies/sweep.h"
+#include "musclesim/sweep/sweep.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -15,10 +15,10 @@
 #include <thread>
 #include <utility>
 
-#include "musclesim/errors.h"
-#include "musclesim/studies/sweep_mpi.h"
-#include "musclesim/studies/sweep_runner.h"
-#include "studies/sweep_sorted_summary.h"
+#include "musclesim/core/errors.h"
+#include "musclesim/sweep/sweep_mpi.h"
+#include "musclesim/sweep/sweep_runner.h"
+#include "sweep/sweep_sorted_summary.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {

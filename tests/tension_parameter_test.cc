@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "support/numeric.h"
 #include "support/rejection.h"
 

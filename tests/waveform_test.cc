@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim {
 namespace {

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <string>
 
-#include "musclesim/io/input_ranges.h"
+#include "musclesim/core/input_ranges.h"
 
 namespace musclesim {
 namespace {

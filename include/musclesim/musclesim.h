@@ -1,10 +1,11 @@
-// musclesim in one include: the tension model, the actuator and network dynamics, the
-// CVODE simulation and the scenario files. Studies (sweeps, identification, plots) have their
-// own headers under musclesim/studies/. A program that needs only the curves includes
+// musclesim in one include: the tension model, the network dynamics, the CVODE simulation, the
+// in-memory scenario with its parameter handles, runs and sensitivities, and the scenario
+// files. Sweeps, identification and plots have their own headers (musclesim/sweep/,
+// musclesim/identify/, musclesim/plot/). A program that needs only the curves includes
 // musclesim/model/tension.h and links musclesim::model alone.
 #pragma once
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/model/gaussian_fit.h"
 #include "musclesim/model/tension.h"
 #include "musclesim/dynamics/actuator.h"
@@ -14,8 +15,10 @@
 #include "musclesim/dynamics/waveform.h"
 #include "musclesim/solver/simulation.h"
 #include "musclesim/solver/stepper.h"
-#include "musclesim/io/network_csv.h"
-#include "musclesim/io/network_scenario.h"
-#include "musclesim/io/run_scenario.h"
-#include "musclesim/io/scenario.h"
-#include "musclesim/io/trajectory_csv.h"
+#include "musclesim/scenario/actuator_scenario.h"
+#include "musclesim/scenario/parameter.h"
+#include "musclesim/scenario/run.h"
+#include "musclesim/scenario/scenario.h"
+#include "musclesim/scenario/sensitivity_run.h"
+#include "musclesim/io/run_csv.h"
+#include "musclesim/io/scenario_yaml.h"

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "bindings.h"
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace py = pybind11;
 

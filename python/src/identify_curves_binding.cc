@@ -12,15 +12,15 @@
 
 #include "bindings.h"
 #include "model_values.h"
-#include "musclesim/errors.h"
-#include "musclesim/io/input_ranges.h"
+#include "musclesim/core/errors.h"
+#include "musclesim/core/input_ranges.h"
 #include "musclesim/io/model_text.h"
 #include "musclesim/io/model_yaml_writer.h"
-#include "musclesim/studies/curve_data.h"
-#include "musclesim/studies/identified_model.h"
-#include "musclesim/studies/identify.h"
-#include "musclesim/studies/identify_comparisons.h"
-#include "musclesim/studies/identify_report.h"
+#include "musclesim/identify/curve_data.h"
+#include "musclesim/identify/identified_model.h"
+#include "musclesim/identify/identify.h"
+#include "musclesim/identify/identify_comparisons.h"
+#include "musclesim/identify/identify_report.h"
 
 namespace py = pybind11;
 

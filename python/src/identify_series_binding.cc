@@ -17,11 +17,11 @@
 
 #include "bindings.h"
 #include "file_alias.h"
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/io/identify_series_spec.h"
-#include "musclesim/studies/identify_series.h"
-#include "musclesim/studies/identify_series_columns.h"
-#include "musclesim/studies/identify_series_warnings.h"
+#include "musclesim/identify/identify_series.h"
+#include "musclesim/identify/identify_series_columns.h"
+#include "musclesim/identify/identify_series_warnings.h"
 
 namespace py = pybind11;
 

@@ -14,13 +14,13 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/io/csv_table.h"
 #include "musclesim/io/model_text.h"
 #include "musclesim/io/output_file.h"
-#include "musclesim/model/number_format.h"
+#include "musclesim/core/number_format.h"
 #include "musclesim/model/tension.h"
-#include "musclesim/studies/plot.h"
+#include "musclesim/plot/plot.h"
 
 namespace py = pybind11;
 

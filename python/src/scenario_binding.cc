@@ -13,7 +13,7 @@
 #include "file_alias.h"
 #include "overrides.h"
 #include "temp_file.h"
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/io/network_scenario.h"
 #include "musclesim/io/scenario.h"
 #include "musclesim/io/scenario_rewrite.h"

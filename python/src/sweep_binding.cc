@@ -15,11 +15,11 @@
 
 #include "bindings.h"
 #include "cli_run.h"
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "file_alias.h"
-#include "musclesim/studies/sweep.h"
-#include "musclesim/studies/sweep_observer.h"
-#include "musclesim/studies/sweep_runner.h"
+#include "musclesim/sweep/sweep.h"
+#include "musclesim/sweep/sweep_observer.h"
+#include "musclesim/sweep/sweep_runner.h"
 #include "overrides.h"
 
 namespace musclesim::python {

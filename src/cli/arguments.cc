@@ -3,7 +3,7 @@
 #include <charconv>
 #include <cmath>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim::cli {
 
@@ -100,6 +100,11 @@ ForceLengthPreset ParsePreset(const std::string& option, const std::string& text
   } catch (const ParameterError& e) {
     throw UsageError(option + " " + text + ": " + e.rule());
   }
+}
+
+std::vector<std::string> Arguments::List(const std::string& option) const {
+  const auto found = values.find(option);
+  return found == values.end() ? std::vector<std::string>{} : found->second;
 }
 
 }  // namespace musclesim::cli

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "musclesim/io/curves_csv.h"
-#include "musclesim/io/input_ranges.h"
+#include "musclesim/core/input_ranges.h"
 #include "musclesim/model/force_length_presets.h"
 
 namespace musclesim::cli {
@@ -29,6 +29,8 @@ struct Arguments {
   }
   // The option's last value, or `fallback` when absent.
   std::string Value(const std::string& option, const std::string& fallback = "") const;
+  // Every value given to `option`, in order (none: empty).
+  std::vector<std::string> List(const std::string& option) const;
 };
 
 // Parses argv[first..]. `with_value` lists options that take a value (both "--opt V" and

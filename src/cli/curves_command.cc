@@ -4,9 +4,9 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/io/curves_csv.h"
-#include "musclesim/io/input_ranges.h"
+#include "musclesim/core/input_ranges.h"
 #include "musclesim/io/model_yaml.h"
 #include "musclesim/io/output_file.h"
 

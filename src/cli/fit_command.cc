@@ -4,7 +4,7 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/io/model_yaml.h"
 #include "musclesim/io/model_yaml_writer.h"
 #include "musclesim/io/output_file.h"

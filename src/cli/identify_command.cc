@@ -4,15 +4,15 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/io/identify_spec.h"
 #include "musclesim/io/model_yaml_writer.h"
 #include "musclesim/io/output_file.h"
-#include "musclesim/studies/curve_data.h"
-#include "musclesim/studies/identified_model.h"
-#include "musclesim/studies/identify.h"
-#include "musclesim/studies/identify_comparisons.h"
-#include "musclesim/studies/identify_report.h"
+#include "musclesim/identify/curve_data.h"
+#include "musclesim/identify/identified_model.h"
+#include "musclesim/identify/identify.h"
+#include "musclesim/identify/identify_comparisons.h"
+#include "musclesim/identify/identify_report.h"
 
 namespace musclesim::cli {
 

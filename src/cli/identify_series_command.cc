@@ -12,12 +12,13 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/io/identify_series_spec.h"
 #include "musclesim/io/output_file.h"
 #include "musclesim/io/scenario_rewrite.h"
-#include "musclesim/studies/identify_series.h"
-#include "musclesim/studies/identify_series_warnings.h"
+#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/identify/identify_series.h"
+#include "musclesim/identify/identify_series_warnings.h"
 
 namespace musclesim::cli {
 
@@ -122,6 +123,16 @@ bool NamesSeriesDataFile(int argc, char** argv) {
   }
 }
 
+// The data file's scenario with --set applied, its errors naming the data file's entry.
+Scenario LoadSeriesScenario(const IdentifySeriesSpec& spec, const std::vector<std::string>& sets) {
+  try {
+    return LoadScenario(spec.scenario, sets);
+  } catch (const InputError& e) {
+    throw InputError(spec.source + ": scenario " + spec.scenario + " (" + spec.scenario_at +
+                     "): " + e.what());
+  }
+}
+
 int IdentifySeriesCommand(int argc, char** argv) {
   const Arguments args = Parse(argc, argv, 2, {"-o", "--report", "--residuals", "--set"},
                                {"--design", "--help", "-h"});
@@ -132,9 +143,8 @@ int IdentifySeriesCommand(int argc, char** argv) {
   if (args.positional.size() != 1) throw UsageError("expected one data file (see --help)");
   const std::string& data_file = args.positional[0];
   const IdentifySeriesSpec spec = LoadIdentifySeriesSpec(data_file);
-  std::vector<std::string> sets;
-  if (const auto it = args.values.find("--set"); it != args.values.end()) sets = it->second;
-  const SensitivityRunner run = ScenarioSensitivityRunner(spec.scenario, sets);
+  const std::vector<std::string> sets = args.List("--set");
+  const SensitivityRunner run = ScenarioSensitivityRunner(LoadSeriesScenario(spec, sets));
 
   if (args.Has("--design")) {
     if (args.Has("--report") || args.Has("--residuals")) {

@@ -7,7 +7,7 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace {
 

@@ -4,10 +4,10 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/io/model_yaml.h"
 #include "musclesim/io/output_file.h"
-#include "musclesim/studies/plot.h"
+#include "musclesim/plot/plot.h"
 
 namespace musclesim::cli {
 

@@ -1,20 +1,20 @@
 // musclesim run SCENARIO.yaml [-o PATH] [--set KEY=VALUE ...] [--sensitivity PATH ...]
 //               [--stats PATH] [--quiet]
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
-#include "cli/run_network.h"
 #include "cli/run_report.h"
-#include "musclesim/errors.h"
-#include "musclesim/io/network_scenario.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/io/output_file.h"
-#include "musclesim/io/peak_speed.h"
-#include "musclesim/io/trajectory_csv.h"
-#include "musclesim/io/run_scenario.h"
-#include "musclesim/io/scenario.h"
-#include "musclesim/io/sensitivity_run.h"
+#include "musclesim/io/run_csv.h"
+#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/scenario/actuator_scenario.h"
+#include "musclesim/scenario/run.h"
+#include "musclesim/scenario/sensitivity_run.h"
 
 namespace musclesim::cli {
 
@@ -51,62 +51,95 @@ Exit codes: 0 completed (or stopped at a length limit), 2 invalid input, 3 solve
 (or a length reached zero), 1 anything else.
 )";
 
-int RunActuator(const Arguments& args, const std::vector<std::string>& sets) {
-  const ScenarioSpec spec = LoadScenario(args.positional[0], sets);
-  const std::string output = RunOutputPath(args, spec.output.file, spec.source);
+// Passes every row on to the CSV, keeping each actuator's fastest shortening or
+// lengthening: beyond its model's v_max, g(v) is the paper's power law extrapolated.
+class PeakSpeeds final : public NetworkSink {
+ public:
+  PeakSpeeds(NetworkSink& next, const Scenario& scenario, const NetworkSystem& system)
+      : next_(next), scenario_(scenario), system_(system), speed_(system.elements().size(), 0.0) {}
 
+  void Record(double t, const NetworkSample& sample) override {
+    for (std::size_t e = 0; e < speed_.size(); ++e) {
+      speed_[e] = std::max(speed_[e], std::abs(sample.elements[e].lengthening_rate));
+    }
+    next_.Record(t, sample);
+  }
+
+  std::vector<std::string> Notes() const {
+    std::vector<std::string> notes;
+    for (std::size_t e = 0; e < speed_.size(); ++e) {
+      const Element& element = system_.elements()[e];
+      if (element.kind != ElementKind::kActuator) continue;
+      const double v_max = element.model->params().velocity.v_max;
+      if (!(speed_[e] > v_max)) continue;
+      // the single actuator is the scenario's only one: its note names none
+      const std::string who =
+          scenario_.form == ScenarioForm::kActuator ? "" : " of " + element.name;
+      notes.push_back("note: |shortening velocity|" + who + " reached " +
+                      FormatNumber(speed_[e]) + " m/s, beyond v_max = " + FormatNumber(v_max) +
+                      " m/s, where g(v) is the paper's power law extrapolated");
+    }
+    return notes;
+  }
+
+ private:
+  NetworkSink& next_;
+  const Scenario& scenario_;
+  const NetworkSystem& system_;
+  std::vector<double> speed_;  // per element [m/s]
+};
+
+std::string Label(const Scenario& scenario) {
+  return scenario.name.empty() ? scenario.source : scenario.name;
+}
+
+int RunPlain(const Arguments& args, const Scenario& scenario) {
+  const std::string output = RunOutputPath(args, scenario.output.file, scenario.source);
+  const NetworkSystem system = scenario.Build();
   // rows stream to PATH.partial as they are recorded; PATH is replaced only on success
   StreamedOutput csv(output);
-  TrajectoryCsvWriter writer(csv, spec.PhaseTolerance(), spec.excitation.has_value());
-  struct Watch final : TrajectorySink {
-    TrajectorySink* next;
-    PeakSpeed peak;
-    void Record(const TrajectoryPoint& point) override {
-      peak.Observe(point);
-      next->Record(point);
-    }
-  } watch;
-  watch.next = &writer;
-  watch.peak.v_max = spec.model.params.velocity.v_max;
+  RunCsvWriter writer(csv, scenario, system);
+  PeakSpeeds watch(writer, scenario, system);
   Simulation simulation;
-  const RunStats stats = simulation.Run(BuildSystem(spec), spec.solver, spec.Request(), watch);
+  const RunStats stats = simulation.Run(system, scenario.solver, scenario.Request(), watch);
   writer.Flush();
 
   RunOutcome outcome;
-  outcome.label = spec.name.empty() ? spec.source : spec.name;
+  outcome.label = Label(scenario);
   outcome.output = output;
   outcome.rows = writer.rows();
-  if (writer.rows() > 0) {
-    outcome.result = "final length " + FormatNumber(writer.last().sample.length) + " m";
+  if (scenario.form == ScenarioForm::kNetwork) {
+    outcome.result = std::to_string(writer.rows()) + " rows";
+  } else if (writer.rows() > 0) {
+    outcome.result = "final length " + FormatNumber(writer.last()[1]) + " m";  // column length
   }
-  const PeakSpeed& peak = watch.peak;
-  if (peak.beyond_v_max()) {
-    outcome.notes.push_back("note: |shortening velocity| reached " + FormatNumber(peak.speed) +
-                            " m/s, beyond v_max = " + FormatNumber(peak.v_max) +
-                            " m/s, where g(v) is the paper's power law extrapolated");
-  }
+  outcome.notes = watch.Notes();
   return FinishRun(args, csv, stats, outcome);
 }
 
 // A run with sensitivities: the same CSV with the derivative columns after it.
-int RunSensitivities(const Arguments& args, const std::vector<std::string>& sets,
+int RunSensitivities(const Arguments& args, const Scenario& scenario,
                      const std::vector<std::string>& parameters) {
-  SensitivityCsvRun run(args.positional[0], sets, parameters);
-  const std::string output = RunOutputPath(args, run.output_file(), args.positional[0]);
+  std::vector<SensitivityRequest> requests;
+  for (const std::string& path : parameters) requests.push_back({path, "--sensitivity"});
+  const SensitivityRun run(scenario, requests);
+  const std::string output = RunOutputPath(args, scenario.output.file, args.positional[0]);
   StreamedOutput csv(output);
-  const RunStats stats = run.Run(csv);
+  SensitivityCsvWriter writer(csv, run);
+  Simulation simulation;
+  const RunStats stats = run.Run(simulation, writer);
+  writer.Flush();
   RunOutcome outcome;
-  outcome.label = run.name().empty() ? args.positional[0] : run.name();
+  outcome.label = scenario.name.empty() ? args.positional[0] : scenario.name;
   outcome.output = output;
-  outcome.rows = run.rows();
+  outcome.rows = writer.rows();
   int quotients = 0;
-  for (std::size_t i = 0; i < run.parameters().size(); ++i) {
-    const std::string derivative(ToString(run.sources()[i]));
-    outcome.sensitivities.push_back({run.parameters()[i], derivative});
+  for (std::size_t i = 0; i < run.paths().size(); ++i) {
+    outcome.sensitivities.push_back({run.paths()[i], std::string(ToString(run.sources()[i]))});
     if (run.sources()[i] == DerivativeSource::kDifferenceQuotient) ++quotients;
   }
-  outcome.result = std::to_string(run.parameters().size()) + " sensitivities (" +
-                   std::to_string(run.parameters().size() - static_cast<std::size_t>(quotients)) +
+  outcome.result = std::to_string(run.paths().size()) + " sensitivities (" +
+                   std::to_string(run.paths().size() - static_cast<std::size_t>(quotients)) +
                    " analytic, " + std::to_string(quotients) + " by difference quotient)";
   return FinishRun(args, csv, stats, outcome);
 }
@@ -121,18 +154,13 @@ int RunCommand(int argc, char** argv) {
     return kExitSuccess;
   }
   if (args.positional.size() != 1) throw UsageError("expected one scenario file (see --help)");
-  const auto sets = args.values.find("--set");
-  const std::vector<std::string> overrides =
-      sets == args.values.end() ? std::vector<std::string>{} : sets->second;
-  const auto listed = args.values.find("--sensitivity");
-  const std::vector<std::string> parameters =
-      listed == args.values.end() ? std::vector<std::string>{} : listed->second;
+  const Scenario scenario = LoadScenario(args.positional[0], args.List("--set"));
   // a scenario's own `sensitivities:` asks for them too
-  if (!parameters.empty() || HasSensitivities(args.positional[0])) {
-    return RunSensitivities(args, overrides, parameters);
+  const std::vector<std::string> parameters = args.List("--sensitivity");
+  if (!parameters.empty() || !scenario.sensitivities.empty()) {
+    return RunSensitivities(args, scenario, parameters);
   }
-  if (IsNetworkScenario(args.positional[0])) return RunNetwork(args, overrides);
-  return RunActuator(args, overrides);
+  return RunPlain(args, scenario);
 }
 
 }  // namespace musclesim::cli

@@ -4,8 +4,8 @@
 #include <iostream>
 
 #include "cli/exit_codes.h"
-#include "musclesim/errors.h"
-#include "musclesim/io/trajectory_csv.h"
+#include "musclesim/core/errors.h"
+#include "musclesim/io/stats_json.h"
 
 namespace musclesim::cli {
 

@@ -7,7 +7,7 @@
 
 #include "cli/arguments.h"
 #include "musclesim/io/output_file.h"
-#include "musclesim/io/trajectory_csv.h"
+#include "musclesim/io/stats_json.h"
 #include "musclesim/solver/simulation.h"
 
 namespace musclesim::cli {

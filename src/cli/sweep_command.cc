@@ -10,9 +10,10 @@
 #include "cli/exit_codes.h"
 #include "cli/progress_report.h"
 #include "cli/sweep_mpi_session.h"
-#include "musclesim/errors.h"
-#include "musclesim/studies/sweep_mpi.h"
-#include "musclesim/studies/sweep_runner.h"
+#include "musclesim/core/errors.h"
+#include "musclesim/sweep/sweep_file.h"
+#include "musclesim/sweep/sweep_mpi.h"
+#include "musclesim/sweep/sweep_runner.h"
 
 namespace musclesim::cli {
 
@@ -105,7 +106,8 @@ int SweepCommand(int argc, char** argv) {
 
   MpiSession mpi(argc, argv);  // MPI_Init only when launched by mpirun
   // validation runs on the threads asked for (by default every core, shared by the ranks)
-  const SweepSpec spec = LoadSweep(args.positional[0], args.Has("--jobs") ? options.jobs : 0);
+  const SweepPlan plan = LoadSweep(args.positional[0], args.Has("--jobs") ? options.jobs : 0);
+  const SweepSpec& spec = plan.spec;
   options.output = args.Value("-o", spec.output);
   if (options.output.empty()) {
     throw InputError(spec.source + ": no output file: set output or pass -o PATH");
@@ -113,7 +115,7 @@ int SweepCommand(int argc, char** argv) {
   CheckSummaryPath(spec, options.output);
   std::signal(SIGINT, OnStopSignal);
   std::signal(SIGTERM, OnStopSignal);
-  const SweepOutcome outcome = mpi.active() ? RunSweepMpi(spec, options) : RunSweep(spec, options);
+  const SweepOutcome outcome = mpi.active() ? RunSweepMpi(plan, options) : RunSweep(plan, options);
   if (!mpi.is_root()) return kExitSuccess;
   observer.Finish();
 

@@ -1,6 +1,6 @@
 // MPI_Init_thread / MPI_Finalize around `musclesim sweep`, only when the process was launched
 // by mpirun, so that a plain `musclesim sweep` never starts MPI. Initialising MPI is the
-// program's business; the sweep itself (musclesim/studies/sweep_mpi.h) only uses it.
+// program's business; the sweep itself (musclesim/sweep/sweep_mpi.h) only uses it.
 // Without -DMUSCLESIM_WITH_MPI=ON this compiles to an always-inactive session.
 #pragma once
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <utility>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim {
 

@@ -4,7 +4,7 @@
 #include <cassert>
 #include <cmath>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim {
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <utility>
 
-#include "musclesim/errors.h"
-#include "musclesim/model/enum_names.h"
+#include "musclesim/core/errors.h"
+#include "musclesim/core/enum_names.h"
 
 namespace musclesim {
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <utility>
 
-#include "musclesim/errors.h"
-#include "musclesim/model/number_format.h"
+#include "musclesim/core/errors.h"
+#include "musclesim/core/number_format.h"
 #include "part_paths.h"
 
 namespace musclesim {

@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "musclesim/dynamics/network.h"
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "part_paths.h"
 
 namespace musclesim {

@@ -5,8 +5,9 @@
 #include <numbers>
 #include <string>
 
-#include "musclesim/errors.h"
-#include "musclesim/model/enum_names.h"
+#include "musclesim/core/errors.h"
+#include "musclesim/core/enum_names.h"
+#include "musclesim/core/input_ranges.h"
 
 namespace musclesim {
 
@@ -222,6 +223,21 @@ void ValidateUnitInterval(const Waveform& w, const std::string& what) {
 void ValidateActivation(const Waveform& w) { ValidateUnitInterval(w, "activation"); }
 
 void ValidateExcitation(const Waveform& w) { ValidateUnitInterval(w, "excitation"); }
+
+void CheckPulseTrain(const Waveform& w, double t_start, double t_end) {
+  if (w.kind != WaveformKind::kPulses) return;
+  const double resolution = kMinIntervalRelative * TimeScale(t_start, t_end);
+  for (const char* key : {"period", "width"}) {
+    const double value = std::string_view(key) == "period" ? w.period : w.width;
+    Require(value >= resolution, key, value,
+            "must be at least " + FormatNumber(resolution) +
+                " s, 1e-12 of the run's time scale max(1 s, |time.start|, |time.end|): "
+                "shorter times are not resolved in double precision");
+  }
+  Require(!((t_end - std::max(w.start, t_start)) / w.period > kMaxBreakpoints), "period", w.period,
+          "gives more than 5 million pulses between the start and time.end: each edge is a "
+          "stop time where the integrator restarts");
+}
 
 Waveform Waveform::Constant(double value) {
   Waveform w;

@@ -4,7 +4,7 @@
 
 #include "io/network_parts_yaml.h"
 #include "io/scenario_fields.h"
-#include "musclesim/io/input_ranges.h"
+#include "musclesim/core/input_ranges.h"
 
 namespace musclesim {
 

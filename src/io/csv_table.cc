@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim {
 

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <set>
 
-#include "io/key_path.h"
+#include "musclesim/core/key_path.h"
 #include "io/yaml_fields.h"
 
 namespace musclesim {
@@ -69,7 +69,7 @@ SeriesParameterSpec ReadParameter(const yaml::Source& src, const YAML::Node& nod
   parameter.at = yaml::Location(src, node);
   const YAML::Node name = yaml::Required(src, node, path, "path");
   parameter.path = yaml::ReadString(src, name, path + ".path");
-  const auto steps = yaml::SplitKeyPath(parameter.path);
+  const auto steps = SplitKeyPath(parameter.path);
   if (!steps || steps->empty()) {
     yaml::Fail(src, name, path + ".path", yaml::Describe(name),
                "must be a dotted key path as --set takes it, e.g. model.f_iso or load[0].value");

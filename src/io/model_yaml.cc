@@ -1,7 +1,7 @@
 #include "io/model_yaml_node.h"
 
-#include "musclesim/io/input_ranges.h"
-#include "io/scenario_node.h"
+#include "musclesim/core/input_ranges.h"
+#include "io/scenario_readers.h"
 
 namespace musclesim {
 
@@ -227,7 +227,7 @@ ModelSpec ReadModelFile(const yaml::Source& src, const YAML::Node& root) {
   yaml::RequireMap(src, root, "", kScenarioKeys);
   for (const auto& entry : root) {
     const std::string& key = entry.first.Scalar();
-    if (key != "model" && key != "name") return ReadScenario(src, root).model;
+    if (key != "model" && key != "name") return ReadActuatorScenario(src, root).models.at("model").spec;
   }
   return ReadModelSpec(src, Required(src, root, "", "model"), "model");
 }

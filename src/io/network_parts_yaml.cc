@@ -2,7 +2,7 @@
 
 #include "io/controller_yaml.h"
 #include "io/scenario_fields.h"
-#include "musclesim/io/input_ranges.h"
+#include "musclesim/core/input_ranges.h"
 
 namespace musclesim {
 

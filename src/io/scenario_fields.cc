@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "musclesim/io/input_ranges.h"
+#include "musclesim/core/input_ranges.h"
 
 namespace musclesim {
 
@@ -11,10 +11,6 @@ using yaml::Join;
 using yaml::ReadOptionalNumber;
 using yaml::Required;
 using yaml::ValidateAt;
-
-double TimeScale(double t_start, double t_end) {
-  return std::max({1.0, std::abs(t_start), std::abs(t_end)});
-}
 
 Waveform ReadWaveform(const yaml::Source& src, const YAML::Node& node, const std::string& path,
                       WaveformKind kind, const InputRange* values, const char* extra) {
@@ -210,21 +206,15 @@ Load ReadLoad(const yaml::Source& src, const YAML::Node& node, const std::string
 
 void CheckPulses(const yaml::Source& src, const YAML::Node& node, const std::string& path,
                  const Waveform& w, double t_start, double t_end) {
-  if (w.kind != WaveformKind::kPulses) return;
-  const double resolution = kMinIntervalRelative * TimeScale(t_start, t_end);
-  for (const char* key : {"period", "width"}) {
-    const double value = std::string(key) == "period" ? w.period : w.width;
-    if (!(value >= resolution)) {
-      yaml::Fail(src, node[key], Join(path, key), yaml::Describe(node[key]),
-                 "must be at least " + FormatNumber(resolution) +
-                     " s, 1e-12 of the run's time scale max(1 s, |time.start|, |time.end|): "
-                     "shorter times are not resolved in double precision");
-    }
-  }
-  if ((t_end - std::max(w.start, t_start)) / w.period > kMaxBreakpoints) {
-    yaml::Fail(src, node["period"], Join(path, "period"), FormatNumber(w.period),
-               "gives more than 5 million pulses between the start and time.end: each edge is "
-               "a stop time where the integrator restarts");
+  try {
+    CheckPulseTrain(w, t_start, t_end);
+  } catch (const ParameterError& error) {
+    // too many pulses is the period's consequence, told by its value; a time too short for
+    // double precision, as written
+    const YAML::Node at = node[error.path()];
+    const bool count = error.rule().rfind("gives", 0) == 0;
+    yaml::Fail(src, at, Join(path, error.path()), count ? error.value() : yaml::Describe(at),
+               error.rule());
   }
 }
 
@@ -291,9 +281,9 @@ SolverOptions ReadSolver(const yaml::Source& src, const YAML::Node& node, const 
   return o;
 }
 
-OutputSpec ReadOutput(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+OutputRequest ReadOutput(const yaml::Source& src, const YAML::Node& node, const std::string& path,
                       double t_start, double t_end) {
-  OutputSpec output;
+  OutputRequest output;
   yaml::RequireMap(src, node, path, {"file", "interval", "phase_tolerance"});
   if (node["file"]) {
     output.file = yaml::ReadString(src, node["file"], Join(path, "file"));

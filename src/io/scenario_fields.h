@@ -1,5 +1,5 @@
 // Private: the blocks both forms of a scenario file share (the single actuator of
-// io/scenario.h and the network of io/network_scenario.h): waveforms, loads, the time span,
+// scenario/actuator_scenario.h and the network): waveforms, loads, the time span,
 // the solver and the output. Each reader validates what it reads and throws InputError
 // naming file:line:column, key path, value and rule.
 #pragma once
@@ -11,14 +11,10 @@
 #include "musclesim/dynamics/activation_dynamics.h"
 #include "musclesim/dynamics/loads.h"
 #include "musclesim/dynamics/waveform.h"
-#include "musclesim/io/scenario.h"
+#include "musclesim/scenario/scenario.h"
 #include "musclesim/solver/simulation.h"
 
 namespace musclesim {
-
-// The time scale of a run [s]: max(1 s, |start|, |end|). The shortest span, interval and
-// step are fractions of it (io/input_ranges.h), so that they stay many roundoffs wide.
-double TimeScale(double t_start, double t_end);
 
 // The `type` of a map that must have one (a waveform, a load, an element).
 std::string ReadType(const yaml::Source& src, const YAML::Node& node, const std::string& path);
@@ -70,7 +66,7 @@ SolverOptions ReadSolver(const yaml::Source& src, const YAML::Node& node, const 
 
 // The `output` block (`path` its key path) of a run over [t_start, t_end]; the interval
 // defaults to a thousandth of the span.
-OutputSpec ReadOutput(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+OutputRequest ReadOutput(const yaml::Source& src, const YAML::Node& node, const std::string& path,
                       double t_start, double t_end);
 
 // The `sensitivities` list of parameter paths (strings), and where each is (file:line:column).

@@ -7,7 +7,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim::yaml {
 

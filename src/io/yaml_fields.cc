@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/key_path.h"
+#include "musclesim/core/key_path.h"
 #include "io/yaml_document_check.h"
 
 namespace musclesim::yaml {

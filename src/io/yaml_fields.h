@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/errors.h"
-#include "musclesim/io/input_ranges.h"
+#include "musclesim/core/errors.h"
+#include "musclesim/core/input_ranges.h"
 
 namespace musclesim::yaml {
 

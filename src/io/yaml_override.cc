@@ -1,7 +1,7 @@
 #include "io/yaml_override.h"
 
-#include "io/key_path.h"
-#include "musclesim/errors.h"
+#include "musclesim/core/key_path.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim::yaml {
 

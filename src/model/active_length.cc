@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim {
 

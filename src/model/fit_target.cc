@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "musclesim/model/active_length.h"
-#include "musclesim/model/enum_names.h"
+#include "musclesim/core/enum_names.h"
 #include "musclesim/model/force_length_presets.h"
 
 namespace musclesim {

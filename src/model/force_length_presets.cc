@@ -3,7 +3,7 @@
 #include <array>
 #include <cmath>
 
-#include "musclesim/model/enum_names.h"
+#include "musclesim/core/enum_names.h"
 
 namespace musclesim {
 

@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim {
 

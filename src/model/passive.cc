@@ -1,6 +1,6 @@
 #include "musclesim/model/passive.h"
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim {
 

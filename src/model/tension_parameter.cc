@@ -5,7 +5,7 @@
 #include <numbers>
 #include <vector>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim {
 

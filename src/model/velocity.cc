@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim {
 

@@ -6,7 +6,7 @@
 #include <string_view>
 #include <utility>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim {
 

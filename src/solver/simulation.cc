@@ -13,8 +13,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "musclesim/errors.h"
-#include "musclesim/model/enum_names.h"
+#include "musclesim/core/errors.h"
+#include "musclesim/core/enum_names.h"
 #include "crossing.h"
 #include "linear_system.h"
 #include "run_roots.h"

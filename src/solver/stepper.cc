@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "run_roots.h"
 
 namespace musclesim {

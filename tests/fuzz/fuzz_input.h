@@ -12,7 +12,7 @@
 #include <fstream>
 #include <string>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 
 namespace musclesim::fuzz {
 

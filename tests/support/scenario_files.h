@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "musclesim/io/run_scenario.h"
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/io/scenario.h"
 #include "musclesim/solver/simulation.h"
 

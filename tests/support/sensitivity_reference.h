@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/errors.h"
+#include "musclesim/core/errors.h"
 #include "musclesim/io/network_scenario.h"
 #include "musclesim/io/run_scenario.h"
 #include "musclesim/io/scenario.h"

@@ -9,15 +9,10 @@
 
 #include <optional>
 
+#include "musclesim/core/input_ranges.h"  // the time constants' bounds
 #include "musclesim/dynamics/waveform.h"
 
 namespace musclesim {
-
-// The time constants accepted [s]: muscles take 5 to 60 ms; below 0.1 ms the lag is in effect
-// instantaneous (give the activation itself) and only makes the system stiff, and 10 s is
-// slower than any muscle-like actuator.
-inline constexpr double kMinActivationTimeConstant = 1e-4;
-inline constexpr double kMaxActivationTimeConstant = 10.0;
 
 struct ActivationDynamics {
   double tau_activation = 0.015;   // tau_act [s], in [1e-4, 10]

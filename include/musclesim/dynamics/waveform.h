@@ -77,6 +77,12 @@ void SortUnique(std::vector<double>& times);
 // An activation must stay within [0, 1] at every point of its waveform (sine: offset -+
 // |amplitude|). Throws ParameterError naming the offending key.
 void ValidateActivation(const Waveform& waveform);
+
+// A pulse train's edges become stop times of a run over [t_start, t_end]: its period and
+// width must be resolved at the run's times (at least 1e-12 of its time scale), and the run
+// may hold at most kMaxBreakpoints pulses. Throws ParameterError ("period", "width");
+// nothing for other kinds.
+void CheckPulseTrain(const Waveform& waveform, double t_start, double t_end);
 // The same for an excitation (docs/model.md section 8), its rule naming the excitation.
 void ValidateExcitation(const Waveform& waveform);
 

@@ -5,17 +5,9 @@
 #include <optional>
 #include <string>
 
-#include "musclesim/model/gaussian_fit.h"
-#include "musclesim/model/tension.h"
+#include "musclesim/model/model_spec.h"
 
 namespace musclesim {
-
-struct ModelSpec {
-  ModelParams params;                   // valid: TensionModel(params) does not throw; units as
-                                        // in ModelParams
-  std::optional<FitSpec> fit;           // the fit the file asked for, if any; units as in FitSpec
-  std::optional<FitResult> fit_result;  // that fit's result; units as in FitResult
-};
 
 // Reads the `model` block of `path`. A file of `name` and `model` only is a model file; a
 // file with any other key of a scenario is read whole as a scenario (LoadScenario), so that

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "musclesim/model/number_format.h"  // FormatFull, which the writers of files use
+#include "musclesim/core/number_format.h"  // FormatFull, which the writers of files use
 
 namespace musclesim {
 

@@ -1,0 +1,53 @@
+// Reading scenario files (README "Scenario files") into a Scenario (scenario/scenario.h),
+// validated before anything runs. A file with a top-level `nodes:` key is a network
+// (docs/model.md 7); any other is the single actuator, read as the network of section 7.4.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "musclesim/scenario/scenario.h"
+
+namespace musclesim {
+
+// Reads and validates `path`, applying each "dotted.path=value" override first (as `--set`
+// gives them: a scalar at an existing path, or a new key in an existing map). Checks
+// everything a run would: for a network, names unique, references resolved, every free node
+// joined to a fixed or prescribed node, every controller fitting the network, every element
+// longer than zero at the start, the limits against the elements' initial lengths. Throws
+// InputError naming file:line:column (or --set), key path, value and rule.
+Scenario LoadScenario(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// A scenario file read and parsed once, from which many scenarios are made by overrides (a
+// sweep's points whose axes are not numbers). Not shared between threads: each thread makes
+// its own Copy().
+class ScenarioTemplate {
+ public:
+  // Throws InputError if the file cannot be read or is not YAML.
+  explicit ScenarioTemplate(const std::string& path);
+  ~ScenarioTemplate();
+  ScenarioTemplate(const ScenarioTemplate&) = delete;
+  ScenarioTemplate& operator=(const ScenarioTemplate&) = delete;
+
+  // An independent template parsed from the same text.
+  std::unique_ptr<ScenarioTemplate> Copy() const;
+
+  // The scenario with `overrides` applied, validated as LoadScenario does.
+  Scenario Instantiate(const std::vector<std::string>& overrides) const;
+  const std::string& path() const { return path_; }
+  // How the file is written (a network: a top-level `nodes:` key).
+  ScenarioForm form() const { return form_; }
+  // Whether the file lists `sensitivities:`.
+  bool has_sensitivities() const;
+
+ private:
+  ScenarioTemplate(std::string path, std::string text);
+  struct Parsed;  // the document, kept out of this header (yaml-cpp is private to io)
+  std::string path_;
+  std::string text_;
+  std::unique_ptr<Parsed> parsed_;
+  ScenarioForm form_ = ScenarioForm::kActuator;
+};
+
+}  // namespace musclesim

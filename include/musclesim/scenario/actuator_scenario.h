@@ -1,0 +1,66 @@
+// The single actuator (docs/model.md section 6) as the network of section 7.4: node `ground`
+// fixed at 0 and node `tip` free, carrying the actuator's mass and the loads; elements
+// `actuator` (its tension model), `damper` and `spring` from ground to tip. Its scenario's
+// form is ScenarioForm::kActuator, so its runs record the single actuator's columns.
+//
+// The file's single-actuator keys name values of that network; ActuatorKeyPath and
+// NetworkKeyPath translate between the two, so that a parameter, a message or a sensitivity
+// column says `actuator.mass` where the network holds nodes[1].mass.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "musclesim/dynamics/activation_dynamics.h"
+#include "musclesim/dynamics/actuator.h"
+#include "musclesim/dynamics/loads.h"
+#include "musclesim/dynamics/waveform.h"
+#include "musclesim/scenario/scenario.h"
+
+namespace musclesim {
+
+// The single actuator as a file's single-actuator form gives it (README "Scenario files").
+struct ActuatorScenarioSpec {
+  std::string name;                       // the scenario's name, for messages [-]
+  std::string source;                     // the file it came from [-]
+  ModelSpec model;                        // units as in ModelParams
+  ActuatorParams actuator;                // units as in ActuatorParams
+  double initial_length = 0.0;            // x(t_start) [m], > 0
+  double initial_lengthening_rate = 0.0;  // dx/dt at t_start [m/s]
+  Waveform activation;                    // u(t) [-], within [0, 1]; unused with excitation
+  std::optional<ExcitationInput> excitation;  // activation dynamics (docs/model.md 8)
+  std::vector<Load> loads;                // units as in Load
+  double t_start = 0.0, t_end = 1.0;      // the simulated interval [s], t_end > t_start
+  SolverOptions solver;                   // units as in SolverOptions
+  OutputRequest output;                   // units as in OutputRequest
+  std::optional<double> min_length, max_length;  // stop when x leaves them [m]
+  std::vector<std::string> sensitivities, sensitivities_at;  // as Scenario's
+};
+
+// The network of docs/model.md 7.4 for `spec`: the damper and the spring are there even when
+// their coefficient is 0 (a zero term changes no sum), so that every key of the form has its
+// value in the network. Throws ParameterError (as BuildModel, and Validate of the actuator)
+// with the form's key paths.
+Scenario MakeActuatorScenario(ActuatorScenarioSpec spec);
+
+// The network's key path of a single-actuator key ("actuator.mass" -> "nodes[1].mass",
+// "model.f_iso" -> "models.model.f_iso", "load[0].value" -> "loads[0].value"), or nullopt
+// for a key outside the form's vocabulary.
+std::optional<std::string> NetworkKeyPath(const std::string& actuator_path);
+// The other way: the single-actuator key of a path into its network ("nodes[1].velocity" ->
+// "initial.lengthening_rate"), or the path unchanged where the form has no key for it.
+std::string ActuatorKeyPath(const std::string& network_path);
+
+// The single actuator's sample (dynamics/actuator.h) as its network observes it: the
+// actuator element's length, shortening velocity (+0 rather than -0 at rest), activation,
+// excitation and tension, and the load on the tip.
+ActuatorSample ActuatorSampleOf(const NetworkSample& sample);
+
+// The indices of the network's parts.
+inline constexpr int kActuatorTipNode = 1;      // `tip`
+inline constexpr int kActuatorElement = 0;      // `actuator`
+inline constexpr int kActuatorDamperElement = 1;  // `damper`
+inline constexpr int kActuatorSpringElement = 2;  // `spring`
+
+}  // namespace musclesim

@@ -1,0 +1,73 @@
+// The columns a scenario's run records, in the order of its CSV (README "Output"), as the
+// scenario's form chooses them: one list, which the CSV writer (io/run_csv.h) turns into text
+// and the Python module into NumPy arrays, so both hold the same numbers.
+//
+// A single actuator (ScenarioForm::kActuator):
+//   t, length, shortening_velocity, activation, [excitation], tension_passive, tension_active,
+//   tension_total, load, phase
+// (`excitation` only with activation dynamics). A network:
+//   t; NODE.position, NODE.velocity of every node; ELEMENT.length, ELEMENT.tension of every
+//   element, an actuator adding .shortening_velocity, .activation, [.excitation],
+//   .tension_passive, .tension_active, .phase; NODE.load of every free node;
+//   CONTROLLER.reference, .measured, .error, .output of every controller.
+// A phase column holds text: concentric if the shortening velocity v > v_tol, eccentric if
+// v < -v_tol, isometric otherwise (docs/model.md section 6); every other column a number.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "musclesim/dynamics/network.h"
+#include "musclesim/scenario/scenario.h"
+
+namespace musclesim {
+
+enum class Phase { kConcentric, kEccentric, kIsometric };
+std::string_view ToString(Phase phase);
+
+// docs/model.md section 6: concentric if v > tolerance, eccentric if v < -tolerance.
+inline Phase ClassifyPhase(double shortening_velocity, double tolerance) {
+  if (shortening_velocity > tolerance) return Phase::kConcentric;
+  if (shortening_velocity < -tolerance) return Phase::kEccentric;
+  return Phase::kIsometric;
+}
+
+class RunColumns {
+ public:
+  // The columns of `scenario`'s runs; `system` must be scenario.Build()'s (or one with the
+  // same parts). Keeps no reference to either.
+  RunColumns(const Scenario& scenario, const NetworkSystem& system);
+
+  std::size_t size() const { return names_.size(); }
+  const std::vector<std::string>& names() const { return names_; }
+  // Whether column c holds a phase (text) rather than a number.
+  bool is_phase(std::size_t c) const { return columns_[c].kind == Kind::kPhase; }
+  // The row at time t [s] of `sample` into `row` (size() values): each column's number, and
+  // for a phase column the shortening velocity [m/s] its phase is classified from.
+  void Fill(double t, const NetworkSample& sample, double* row) const;
+  // The phase of phase column c whose Fill value is `shortening_velocity` [m/s].
+  Phase PhaseOf(std::size_t c, double shortening_velocity) const {
+    return ClassifyPhase(shortening_velocity, columns_[c].tolerance);
+  }
+
+ private:
+  enum class Kind {
+    kTime, kPosition, kVelocity, kLength, kTension, kShortening, kActivation, kExcitation,
+    kPassive, kActive, kTotal, kPhase, kLoad, kReference, kMeasured, kError, kOutput,
+  };
+  struct Column {
+    Kind kind;
+    int index = 0;           // the node, element or controller
+    double tolerance = 0.0;  // a phase column's v_tol [m/s]
+  };
+  void Add(std::string name, Kind kind, int index = 0, double tolerance = 0.0);
+  void AddActuatorView(const Scenario& scenario, const NetworkSystem& system);
+  void AddNetworkView(const Scenario& scenario, const NetworkSystem& system);
+
+  std::vector<std::string> names_;
+  std::vector<Column> columns_;
+};
+
+}  // namespace musclesim

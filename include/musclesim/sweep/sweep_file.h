@@ -1,0 +1,25 @@
+// Reading sweep files (README "Sweeps"): the axes, the metrics and the base scenario file,
+// into a SweepPlan whose points are the base read once and changed through parameter
+// handles (sweep_points.h). An axis whose values are not all numbers (a solver's method, an
+// element's name), or whose path names no number of the base, is applied to the base file's
+// document instead, as `--set` applies a value, and read again for each point.
+#pragma once
+
+#include <string>
+
+#include "musclesim/sweep/sweep_points.h"
+
+namespace musclesim {
+
+// Reads and validates a sweep file and its points (PlanSweep), and resolves the element the
+// metrics read (metric_options.element; by default the only actuator). Throws InputError:
+// for the sweep file, naming its file, line, column and key (a network without one actuator
+// and no metric_options.element, an element that point 0 does not have); for a point whose
+// axis value is bad, naming the axis, the value, the point and the axis's line and column;
+// for an error in the base scenario, naming the base file's line and column. Of several
+// invalid points it names the first. Validates on `threads` threads (0: every core, shared
+// with the other MPI ranks of this host). Under MPI (initialised, more than one rank) every
+// rank of MPI_COMM_WORLD must call it for the same file.
+SweepPlan LoadSweep(const std::string& path, int threads = 0);
+
+}  // namespace musclesim

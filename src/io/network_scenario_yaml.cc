@@ -1,0 +1,98 @@
+// Reads network scenario files: the top-level blocks in order, the parts checked one by one,
+// then as a whole by building the system, whose ParameterErrors are put back at their keys.
+#include <initializer_list>
+#include <memory>
+#include <optional>
+
+#include "io/controller_yaml.h"
+#include "io/model_yaml_node.h"
+#include "io/network_parts_yaml.h"
+#include "io/scenario_fields.h"
+#include "io/scenario_readers.h"
+
+namespace musclesim {
+
+namespace {
+
+using yaml::Required;
+
+// The top-level keys of a network scenario file.
+constexpr std::initializer_list<const char*> kNetworkKeys = {
+    "name", "models", "nodes", "elements", "loads", "time", "solver", "output", "limits",
+    "sensitivities", "controllers"};
+
+NamedModels ReadModels(const yaml::Source& src, const YAML::Node& node, Scenario& s) {
+  if (!node.IsMap()) {
+    yaml::Fail(src, node, "models", yaml::Describe(node),
+               "must be a map of named model blocks (name: {f_iso, passive, active_length, "
+               "velocity})");
+  }
+  NamedModels models;
+  for (const auto& entry : node) {
+    const std::string name = entry.first.Scalar();  // CheckDocument: keys are plain names
+    // the reader has validated the block and run its fit: AddModel builds it once more
+    ModelSpec spec = ReadModelSpec(src, entry.second, "models." + name);
+    models.by_name[name] = s.AddModel(name, std::move(spec));
+    models.names.push_back(name);
+  }
+  return models;
+}
+
+}  // namespace
+
+Scenario ReadNetworkScenario(const yaml::Source& src, const YAML::Node& root) {
+  yaml::RequireMap(src, root, "", kNetworkKeys);
+  Scenario s;
+  s.source = src.file;
+  if (root["name"]) s.name = yaml::ReadString(src, root["name"], "name");
+  // before what needs it: the shortest interval, step and pulse are measured against it
+  const TimeSpan time = ReadTime(src, Required(src, root, "", "time"));
+  s.t_start = time.start;
+  s.t_end = time.end;
+
+  NamedModels models;
+  if (const YAML::Node node = root["models"]) models = ReadModels(src, node, s);
+  s.nodes = ReadNodes(src, Required(src, root, "", "nodes"));
+  // before the elements: an actuator a controller drives has no activation of its own
+  if (const YAML::Node node = root["controllers"]) {
+    s.controllers = ReadControllers(src, node, s.t_start, s.t_end);
+  }
+  s.elements = ReadElements(src, Required(src, root, "", "elements"), models,
+                            DrivenActuatorsOf(s.controllers), s.t_start, s.t_end);
+  if (const YAML::Node node = root["loads"]) s.loads = ReadNodeLoads(src, node, s.t_start, s.t_end);
+
+  // how the parts fit: the system's paths ("elements[2].to", "controllers[0].drives") are the
+  // file's key paths
+  std::optional<NetworkSystem> system;
+  yaml::ValidateAt(src, root, "", [&] {
+    system.emplace(s.Build());
+    std::vector<double> y(static_cast<std::size_t>(system->state_size()));
+    system->InitialState(s.t_start, y.data());
+    system->CheckLengths(s.t_start, y.data());
+  });
+
+  if (const YAML::Node node = root["solver"]) {
+    s.solver = ReadSolver(src, node, "solver", s.t_start, s.t_end);
+    const int states = system->state_size();
+    if (s.solver.linear_solver == LinearSolverKind::kSmall && states > kSmallSystemMaxSize) {
+      yaml::Fail(src, node["linear_solver"], "solver.linear_solver", "small",
+                 "serves at most " + std::to_string(kSmallSystemMaxSize) +
+                     " states and this network has " + std::to_string(states) +
+                     ": use auto, dense, band or sparse");
+    }
+  }
+  if (const YAML::Node node = root["output"]) {
+    s.output = ReadOutput(src, node, "output", s.t_start, s.t_end);
+  } else {
+    s.output.interval = (s.t_end - s.t_start) / 1000.0;
+  }
+  if (const YAML::Node node = root["limits"]) {
+    s.limits = ReadLengthLimits(src, node, *system, s.t_start);
+  }
+  if (const YAML::Node node = root["sensitivities"]) {
+    ReadSensitivities(src, node, s.sensitivities, s.sensitivities_at);
+  }
+  return s;
+}
+
+}  // namespace musclesim

@@ -1,0 +1,45 @@
+#include "musclesim/scenario/run.h"
+
+#include <cmath>
+
+namespace musclesim {
+
+RunStats RunScenario(const Scenario& scenario, Simulation& simulation, NetworkSink& sink) {
+  const NetworkSystem system = scenario.Build();
+  return simulation.Run(system, scenario.solver, scenario.Request(), sink);
+}
+
+ColumnRecorder::ColumnRecorder(const Scenario& scenario, const NetworkSystem& system)
+    : layout_(scenario, system), columns_(layout_.size()), row_(layout_.size()) {}
+
+void ColumnRecorder::Reserve(std::size_t rows) {
+  for (std::vector<double>& column : columns_) column.reserve(rows);
+}
+
+void ColumnRecorder::Record(double t, const NetworkSample& sample) {
+  layout_.Fill(t, sample, row_.data());
+  for (std::size_t c = 0; c < row_.size(); ++c) columns_[c].push_back(row_[c]);
+  ++rows_;
+}
+
+std::size_t ExpectedRows(const Scenario& scenario) {
+  if (scenario.output.every_step || !(scenario.output.interval > 0.0)) return 0;
+  const double rows = std::ceil((scenario.t_end - scenario.t_start) / scenario.output.interval);
+  return rows < 1e8 ? static_cast<std::size_t>(rows) + 1 : 0;
+}
+
+RecordedRun RunScenario(const Scenario& scenario) {
+  const NetworkSystem system = scenario.Build();
+  ColumnRecorder recorder(scenario, system);
+  recorder.Reserve(ExpectedRows(scenario));
+  Simulation simulation;
+  RecordedRun run{recorder.layout(), {}, {}};
+  run.stats = simulation.Run(system, scenario.solver, scenario.Request(), recorder);
+  run.values.reserve(recorder.layout().size());
+  for (std::size_t c = 0; c < recorder.layout().size(); ++c) {
+    run.values.push_back(std::move(recorder.column(c)));
+  }
+  return run;
+}
+
+}  // namespace musclesim

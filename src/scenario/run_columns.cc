@@ -1,0 +1,103 @@
+#include "musclesim/scenario/run_columns.h"
+
+#include "musclesim/core/enum_names.h"
+#include "musclesim/scenario/actuator_scenario.h"
+
+namespace musclesim {
+
+constexpr EnumName<Phase> kPhaseNames[] = {
+    {Phase::kConcentric, "concentric"},
+    {Phase::kEccentric, "eccentric"},
+    {Phase::kIsometric, "isometric"},
+};
+
+std::string_view ToString(Phase phase) { return ToString(kPhaseNames, phase); }
+
+RunColumns::RunColumns(const Scenario& scenario, const NetworkSystem& system) {
+  if (scenario.form == ScenarioForm::kActuator) {
+    AddActuatorView(scenario, system);
+  } else {
+    AddNetworkView(scenario, system);
+  }
+}
+
+void RunColumns::Add(std::string name, Kind kind, int index, double tolerance) {
+  names_.push_back(std::move(name));
+  columns_.push_back({kind, index, tolerance});
+}
+
+void RunColumns::AddActuatorView(const Scenario& scenario, const NetworkSystem& system) {
+  const int e = kActuatorElement;
+  Add("t", Kind::kTime);
+  Add("length", Kind::kLength, e);
+  Add("shortening_velocity", Kind::kShortening, e);
+  Add("activation", Kind::kActivation, e);
+  if (system.elements()[e].excitation) Add("excitation", Kind::kExcitation, e);
+  Add("tension_passive", Kind::kPassive, e);
+  Add("tension_active", Kind::kActive, e);
+  Add("tension_total", Kind::kTotal, e);
+  Add("load", Kind::kLoad, kActuatorTipNode);
+  Add("phase", Kind::kPhase, e, scenario.PhaseTolerance(e));
+}
+
+void RunColumns::AddNetworkView(const Scenario& scenario, const NetworkSystem& system) {
+  Add("t", Kind::kTime);
+  const std::vector<Node>& nodes = system.nodes();
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    Add(nodes[i].name + ".position", Kind::kPosition, static_cast<int>(i));
+    Add(nodes[i].name + ".velocity", Kind::kVelocity, static_cast<int>(i));
+  }
+  for (std::size_t k = 0; k < system.elements().size(); ++k) {
+    const Element& element = system.elements()[k];
+    const int e = static_cast<int>(k);
+    Add(element.name + ".length", Kind::kLength, e);
+    Add(element.name + ".tension", Kind::kTension, e);
+    if (element.kind != ElementKind::kActuator) continue;
+    Add(element.name + ".shortening_velocity", Kind::kShortening, e);
+    Add(element.name + ".activation", Kind::kActivation, e);
+    if (element.excitation) Add(element.name + ".excitation", Kind::kExcitation, e);
+    Add(element.name + ".tension_passive", Kind::kPassive, e);
+    Add(element.name + ".tension_active", Kind::kActive, e);
+    Add(element.name + ".phase", Kind::kPhase, e, scenario.PhaseTolerance(e));
+  }
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (nodes[i].kind == NodeKind::kFree) Add(nodes[i].name + ".load", Kind::kLoad, static_cast<int>(i));
+  }
+  for (std::size_t k = 0; k < system.controllers().size(); ++k) {
+    const std::string& name = system.controllers()[k].name;
+    const int c = static_cast<int>(k);
+    Add(name + ".reference", Kind::kReference, c);
+    Add(name + ".measured", Kind::kMeasured, c);
+    Add(name + ".error", Kind::kError, c);
+    Add(name + ".output", Kind::kOutput, c);
+  }
+}
+
+void RunColumns::Fill(double t, const NetworkSample& s, double* row) const {
+  for (std::size_t c = 0; c < columns_.size(); ++c) {
+    const Column& column = columns_[c];
+    const auto i = static_cast<std::size_t>(column.index);
+    switch (column.kind) {
+      case Kind::kTime: row[c] = t; break;
+      case Kind::kPosition: row[c] = s.position[i]; break;
+      case Kind::kVelocity: row[c] = s.velocity[i]; break;
+      case Kind::kLength: row[c] = s.elements[i].length; break;
+      case Kind::kTension: row[c] = s.elements[i].tension; break;
+      // +0 rather than -0 at rest
+      case Kind::kShortening:
+      case Kind::kPhase: row[c] = 0.0 - s.elements[i].lengthening_rate; break;
+      case Kind::kActivation: row[c] = s.elements[i].activation; break;
+      case Kind::kExcitation: row[c] = s.elements[i].excitation; break;
+      case Kind::kPassive: row[c] = s.elements[i].parts.passive; break;
+      case Kind::kActive: row[c] = s.elements[i].parts.active; break;
+      case Kind::kTotal: row[c] = s.elements[i].parts.total; break;
+      case Kind::kLoad: row[c] = s.load[i]; break;
+      case Kind::kReference: row[c] = s.controllers[i].reference; break;
+      case Kind::kMeasured: row[c] = s.controllers[i].measured; break;
+      case Kind::kError: row[c] = s.controllers[i].error; break;
+      case Kind::kOutput: row[c] = s.controllers[i].output; break;
+    }
+  }
+}
+
+}  // namespace musclesim

@@ -1,0 +1,95 @@
+#include "sweep/sweep_base.h"
+
+#include "musclesim/core/errors.h"
+#include "musclesim/io/run_csv.h"
+#include "musclesim/scenario/actuator_scenario.h"
+#include "sweep/sweep_share.h"
+
+namespace musclesim {
+
+namespace {
+
+// Passes on the metric element's samples as metric points and, when the trajectory is kept,
+// every row to the recorder.
+class Recorder final : public NetworkSink {
+ public:
+  Recorder(const Scenario& scenario, int element, TrajectorySink& metrics,
+           ColumnRecorder* trajectory)
+      : actuator_form_(scenario.form == ScenarioForm::kActuator),
+        element_(static_cast<std::size_t>(element)), metrics_(metrics), trajectory_(trajectory) {}
+
+  void Record(double t, const NetworkSample& sample) override {
+    // the single actuator's points are its own view of the network (actuator_scenario.h)
+    metrics_.Record(actuator_form_ ? TrajectoryPoint{t, ActuatorSampleOf(sample)}
+                                   : ElementPoint(t, sample.elements[element_]));
+    if (trajectory_ != nullptr) trajectory_->Record(t, sample);
+  }
+
+ private:
+  bool actuator_form_;
+  std::size_t element_;
+  TrajectorySink& metrics_;
+  ColumnRecorder* trajectory_;  // null: the trajectory is not kept
+};
+
+}  // namespace
+
+int MetricElementIndex(const Scenario& scenario, const std::string& element) {
+  std::string names;
+  for (std::size_t e = 0; e < scenario.elements.size(); ++e) {
+    if (scenario.elements[e].name == element) return static_cast<int>(e);
+    names += (e ? ", " : "") + scenario.elements[e].name;
+  }
+  throw InputError("metric_options.element = " + element + ": the network of " +
+                   scenario.source + " has no such element (its elements: " + names + ")");
+}
+
+MetricElements SweepBase::Validate(const SweepSpec& spec, long index, const std::string& element,
+                                   SweepSpec* keep, long slot) const {
+  Scenario scenario = points_->Make(spec, index);
+  MetricElements elements;
+  if (scenario.form == ScenarioForm::kActuator) {
+    elements = {{"actuator"}, {"actuator"}};
+  } else {
+    if (!element.empty()) MetricElementIndex(scenario, element);
+    for (const Element& e : scenario.elements) {
+      elements.all.push_back(e.name);
+      if (e.kind == ElementKind::kActuator) elements.actuators.push_back(e.name);
+    }
+  }
+  if (keep != nullptr) keep->scenarios[static_cast<std::size_t>(slot)] = std::move(scenario);
+  return elements;
+}
+
+void SweepBase::Prepare(const SweepSpec& spec, long index) {
+  built_.reset();
+  const long slot = KeptSlot(spec, index);
+  if (slot < 0) built_ = points_->Make(spec, index);
+  scenario_ = built_ ? &*built_ : &spec.scenarios[static_cast<std::size_t>(slot)];
+  element_ = scenario_->form == ScenarioForm::kActuator
+                 ? kActuatorElement
+                 : MetricElementIndex(*scenario_, spec.metric_options.element);
+  keep_ = spec.trajectories != TrajectoryPolicy::kNone;
+}
+
+RunStats SweepBase::Run(Simulation& simulation, TrajectorySink& metrics) {
+  const Scenario& s = *scenario_;
+  trajectory_.reset();
+  // built in place: a NetworkSystem holds pointers into its own parts
+  system_.reset();
+  system_.emplace(s.Build());
+  if (keep_) trajectory_.emplace(s, *system_);
+  Recorder recorder(s, element_, metrics, keep_ ? &*trajectory_ : nullptr);
+  return simulation.Run(*system_, s.solver, s.Request(), recorder);
+}
+
+std::string SweepBase::TrajectoryCsv() const {
+  if (!trajectory_) return "";
+  RecordedRun run{trajectory_->layout(), {}, {}};
+  for (std::size_t c = 0; c < trajectory_->layout().size(); ++c) {
+    run.values.push_back(trajectory_->column(c));
+  }
+  return FormatRunCsv(run);
+}
+
+}  // namespace musclesim

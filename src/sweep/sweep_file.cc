@@ -1,0 +1,223 @@
+// LoadSweep: the sweep file read with io's YAML helpers; its points made from the base file by
+// FilePoints (sweep_file_points.cc).
+#include "musclesim/sweep/sweep_file.h"
+
+#include <cmath>
+#include <filesystem>
+#include <memory>
+
+#include "io/yaml_fields.h"
+#include "musclesim/core/errors.h"
+#include "musclesim/io/scenario_yaml.h"
+#include "sweep/sweep_file_points.h"
+#include "sweep/sweep_metric_element.h"
+#include "sweep/sweep_signature.h"
+
+namespace musclesim {
+
+namespace {
+
+SweepAxis ReadAxis(const yaml::Source& src, const YAML::Node& key, const YAML::Node& node,
+                   SweepMode mode) {
+  SweepAxis axis;
+  axis.path = key.as<std::string>();
+  axis.location = yaml::Location(src, key);
+  const std::string where = "parameters." + axis.path;
+  if (node.IsSequence()) {
+    if (node.size() == 0) yaml::Fail(src, node, where, "[]", "needs at least one value");
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      if (!node[i].IsScalar()) {
+        yaml::Fail(src, node[i], where + "[" + std::to_string(i) + "]", yaml::Describe(node[i]),
+                   "must be a single value");
+      }
+      axis.values.push_back(node[i].Scalar());
+      double number = 0.0;
+      if (YAML::convert<double>::decode(node[i], number)) axis.numbers.push_back(number);
+    }
+    return axis;
+  }
+  if (!node.IsMap()) {
+    yaml::Fail(src, node, where, yaml::Describe(node),
+               "must be a list of values or {from, to, count, scale}");
+  }
+  yaml::RequireMap(src, node, where, {"from", "to", "count", "scale"});
+  axis.from = yaml::ReadNumber(src, yaml::Required(src, node, where, "from"), where + ".from");
+  axis.to = yaml::ReadNumber(src, yaml::Required(src, node, where, "to"), where + ".to");
+  if (node["scale"]) {
+    const std::string scale = yaml::ReadString(src, node["scale"], where + ".scale");
+    if (scale != "linear" && scale != "log") {
+      yaml::Fail(src, node["scale"], where + ".scale", scale, "must be linear or log");
+    }
+    axis.log_scale = scale == "log";
+  }
+  if (!std::isfinite(axis.from)) yaml::Fail(src, node["from"], where + ".from", yaml::Describe(node["from"]), "must be finite");
+  if (!std::isfinite(axis.to)) yaml::Fail(src, node["to"], where + ".to", yaml::Describe(node["to"]), "must be finite");
+  if (axis.log_scale && !(axis.from > 0.0 && axis.to > 0.0)) {
+    yaml::Fail(src, node, where, "from " + FormatNumber(axis.from) + " to " + FormatNumber(axis.to),
+               "a log scale needs from > 0 and to > 0");
+  }
+  if (mode == SweepMode::kRandom) {
+    if (node["count"]) {
+      yaml::Fail(src, node["count"], where + ".count", yaml::Describe(node["count"]),
+                 "random mode draws `samples` points; count is for grid and zip");
+    }
+    return axis;
+  }
+  const YAML::Node count_node = yaml::Required(src, node, where, "count");
+  axis.count = yaml::ReadInteger(src, count_node, where + ".count");
+  if (axis.count < 1) yaml::Fail(src, count_node, where + ".count", yaml::Describe(count_node), "must be >= 1");
+  return axis;
+}
+
+// Requires the product of the axis lengths within kMaxSweepPoints, without overflowing.
+void CheckGridSize(const yaml::Source& src, const YAML::Node& parameters, const SweepSpec& spec) {
+  long count = 1;
+  bool overflow = false;
+  std::string lengths;
+  for (const SweepAxis& axis : spec.axes) {
+    overflow = overflow || __builtin_mul_overflow(count, AxisLength(axis), &count);
+    lengths += (lengths.empty() ? "" : " x ") + std::to_string(AxisLength(axis));
+  }
+  if (overflow || count > kMaxSweepPoints) {
+    yaml::Fail(src, parameters, "parameters",
+               lengths + " = " + (overflow ? "more than 9e18" : std::to_string(count)) + " points",
+               "a sweep may have at most 1e9 points: a running sweep keeps a bit per point in "
+               "memory and about 150 bytes per point on disk (150 GB at 1e9)");
+  }
+}
+
+}  // namespace
+
+SweepPlan LoadSweep(const std::string& path, int threads) {
+  const YAML::Node root = yaml::LoadFile(path);
+  const yaml::Source src{path};
+  yaml::RequireMap(src, root, "",
+                   {"base", "mode", "samples", "seed", "parameters", "metrics", "metric_options",
+                    "trajectories", "output"});
+  SweepSpec spec;
+  spec.source = path;
+  const std::string base = yaml::ReadString(src, yaml::Required(src, root, "", "base"), "base");
+  spec.base = (std::filesystem::path(path).parent_path() / base).lexically_normal().string();
+
+  if (root["mode"]) {
+    const std::string mode = yaml::ReadString(src, root["mode"], "mode");
+    if (mode == "grid") spec.mode = SweepMode::kGrid;
+    else if (mode == "zip") spec.mode = SweepMode::kZip;
+    else if (mode == "random") spec.mode = SweepMode::kRandom;
+    else yaml::Fail(src, root["mode"], "mode", mode, "must be grid, zip or random");
+  }
+  if (spec.mode == SweepMode::kRandom) {
+    const YAML::Node samples = yaml::Required(src, root, "", "samples");
+    const double n = yaml::ReadNumber(src, samples, "samples");
+    if (!(n >= 1 && n <= 1e9) || n != std::floor(n)) {
+      yaml::Fail(src, samples, "samples", yaml::Describe(samples), "must be an integer from 1 to 1e9");
+    }
+    spec.samples = static_cast<long>(n);
+    // no default seed: a documented, reproducible sweep names the seed it draws from
+    const YAML::Node seed = root["seed"];
+    if (!seed) {
+      throw InputError("seed (" + yaml::Location(src, root) +
+                       "): missing required key: mode random draws every value from a hash "
+                       "of (seed, index, axis); give an integer >= 0");
+    }
+    const double value = yaml::ReadNumber(src, seed, "seed");
+    if (!(value >= 0 && value <= 9.007199254740992e15) || value != std::floor(value)) {
+      yaml::Fail(src, seed, "seed", yaml::Describe(seed), "must be an integer from 0 to 2^53");
+    }
+    spec.seed = static_cast<std::uint64_t>(value);
+  } else {
+    for (const char* key : {"samples", "seed"}) {
+      if (root[key]) {
+        yaml::Fail(src, root[key], key, yaml::Describe(root[key]),
+                   "is for mode random only (this sweep is " + std::string(ToString(spec.mode)) +
+                       ")");
+      }
+    }
+  }
+
+  const YAML::Node parameters = yaml::Required(src, root, "", "parameters");
+  if (!parameters.IsMap() || parameters.size() == 0) {
+    yaml::Fail(src, parameters, "parameters", yaml::Describe(parameters),
+               "must map at least one dotted path to its values");
+  }
+  for (const auto& entry : parameters) {
+    spec.axes.push_back(ReadAxis(src, entry.first, entry.second, spec.mode));
+    if (spec.mode == SweepMode::kZip &&
+        AxisLength(spec.axes.back()) != AxisLength(spec.axes.front())) {
+      yaml::Fail(src, entry.second, "parameters." + spec.axes.back().path,
+                 std::to_string(AxisLength(spec.axes.back())) + " values",
+                 "zip needs every axis as long as the first (" +
+                     std::to_string(AxisLength(spec.axes.front())) + " values)");
+    }
+  }
+  if (spec.mode == SweepMode::kGrid) CheckGridSize(src, parameters, spec);
+
+  const YAML::Node metrics = yaml::Required(src, root, "", "metrics");
+  if (!metrics.IsSequence() || metrics.size() == 0) {
+    yaml::Fail(src, metrics, "metrics", yaml::Describe(metrics), "must be a non-empty list of metric names");
+  }
+  for (std::size_t i = 0; i < metrics.size(); ++i) {
+    const std::string name = yaml::ReadString(src, metrics[i], "metrics[" + std::to_string(i) + "]");
+    try {
+      spec.metrics.push_back(ParseMetric(name));
+    } catch (const ParameterError& e) {
+      yaml::Fail(src, metrics[i], "metrics[" + std::to_string(i) + "]", name, e.rule());
+    }
+  }
+  if (const YAML::Node options = root["metric_options"]) {
+    // `element` is read once the base's elements are known, below
+    yaml::RequireMap(src, options, "metric_options", {"window", "target_length", "element"});
+    if (options["window"]) {
+      const std::vector<double> w = yaml::ReadNumbers(src, options["window"], "metric_options.window", 2);
+      if (!(std::isfinite(w[0]) && std::isfinite(w[1]) && w[1] > w[0])) {
+        yaml::Fail(src, options["window"], "metric_options.window", yaml::Describe(options["window"]),
+                   "must be [start, end] with end > start [s]");
+      }
+      spec.metric_options.window_start = w[0];
+      spec.metric_options.window_end = w[1];
+    }
+    if (options["target_length"]) {
+      const double target = yaml::ReadNumber(src, options["target_length"], "metric_options.target_length");
+      if (!(std::isfinite(target) && target > 0.0)) {
+        yaml::Fail(src, options["target_length"], "metric_options.target_length",
+                   yaml::Describe(options["target_length"]), "must be finite and > 0 [m]");
+      }
+      spec.metric_options.target_length = target;
+    }
+  }
+  for (std::size_t i = 0; i < spec.metrics.size(); ++i) {
+    if (spec.metrics[i] == Metric::kTimeToLength && !spec.metric_options.target_length) {
+      yaml::Fail(src, metrics[i], "metrics[" + std::to_string(i) + "]", "time_to_length",
+                 "needs metric_options.target_length");
+    }
+  }
+  if (root["trajectories"]) {
+    const std::string policy = yaml::ReadString(src, root["trajectories"], "trajectories");
+    if (policy == "none") spec.trajectories = TrajectoryPolicy::kNone;
+    else if (policy == "all") spec.trajectories = TrajectoryPolicy::kAll;
+    else if (policy == "failed") spec.trajectories = TrajectoryPolicy::kFailed;
+    else yaml::Fail(src, root["trajectories"], "trajectories", policy, "must be none, all or failed");
+  }
+  if (root["output"]) {
+    spec.output = yaml::ReadString(src, root["output"], "output");
+  }
+
+  // every point is a full scenario: validate them (or, for a large sweep, a sample of them)
+  // before anything runs; a point's error is told in terms of the file at fault
+  spec.base_digest = Digest(yaml::ReadText(spec.base));
+  auto base_file = std::make_unique<ScenarioTemplate>(spec.base);
+  spec.form = base_file->form();
+  if (base_file->has_sensitivities()) {
+    // a sweep's points are plain runs reduced to metrics: a list that would be ignored is refused
+    throw InputError(spec.base + ": sensitivities: a sweep runs its points without "
+                     "sensitivities; remove the key from the base scenario (musclesim run "
+                     "computes them)");
+  }
+  std::unique_ptr<PointFactory> points = FilePoints(std::move(base_file), spec);
+  const auto resolve = [&](const SweepSpec& s, const MetricElements& elements) {
+    return ResolveMetricElement(src, root, s, elements);
+  };
+  return PlanSweep(std::move(spec), std::move(points), threads, resolve);
+}
+
+}  // namespace musclesim

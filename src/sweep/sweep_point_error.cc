@@ -1,0 +1,153 @@
+#include "sweep/sweep_point_error.h"
+
+#include <vector>
+
+#include "musclesim/core/errors.h"
+#include "sweep/sweep_base.h"
+#include "io/yaml_fields.h"
+
+namespace musclesim {
+
+namespace {
+
+// "line:column" (1-based) of a node.
+std::string Position(const YAML::Mark& mark) {
+  return std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
+}
+
+// The position of the deepest node of `root` that the key path `path` (model.velocity.n,
+// load[0].after) reaches; the key itself rather than its value when `want_key` and the path
+// ends in a key that exists. Messages name such paths first; "(top level)" reaches the root.
+YAML::Mark Reach(const YAML::Node& root, const std::string& path, bool want_key) {
+  YAML::Node node = root;
+  YAML::Mark mark = root.Mark();
+  std::size_t i = 0;
+  while (i < path.size()) {
+    if (path[i] == '.') ++i;
+    if (i < path.size() && path[i] == '[') {
+      const std::size_t close = path.find(']', i);
+      if (close == std::string::npos) break;
+      const std::string digits = path.substr(i + 1, close - i - 1);
+      if (digits.empty() || digits.size() > 9 ||
+          digits.find_first_not_of("0123456789") != std::string::npos) {
+        break;
+      }
+      const std::size_t index = std::stoul(digits);
+      if (node.IsSequence() && index < node.size()) {
+        node.reset(node[index]);
+      } else if (!(node.IsMap() && index == 0)) {  // a single load written as a map is load[0]
+        break;
+      }
+      mark = node.Mark();
+      i = close + 1;
+      continue;
+    }
+    const std::size_t end = path.find_first_of(".[", i);
+    const std::string key = path.substr(i, end == std::string::npos ? std::string::npos : end - i);
+    if (key.empty() || !node.IsMap()) break;
+    bool found = false;
+    for (const auto& entry : node) {
+      if (entry.first.IsScalar() && entry.first.Scalar() == key) {
+        const bool last = end == std::string::npos;
+        mark = last && want_key ? entry.first.Mark() : entry.second.Mark();
+        node.reset(entry.second);
+        found = true;
+        break;
+      }
+    }
+    if (!found) break;
+    i = end == std::string::npos ? path.size() : end;
+  }
+  return mark;
+}
+
+std::string Describe(const SweepSpec& spec, const std::vector<std::string>& values) {
+  std::string point;
+  for (std::size_t k = 0; k < spec.axes.size(); ++k) {
+    point += (k ? ", " : "") + spec.axes[k].path + "=" + values[k];
+  }
+  return point;
+}
+
+}  // namespace
+
+PointErrorExplainer::PointErrorExplainer(const SweepSpec& spec, const ScenarioTemplate& base)
+    : spec_(spec), base_(base), base_root_(yaml::LoadFile(spec.base)) {
+  // the base alone is read from its own nodes, whose positions are exact
+  try {
+    Check({});
+  } catch (const InputError& e) {
+    base_error_ = e.what();
+  }
+}
+
+void PointErrorExplainer::Check(const std::vector<std::string>& overrides) const {
+  const Scenario scenario = base_.Instantiate(overrides);
+  if (scenario.form == ScenarioForm::kNetwork && !spec_.metric_options.element.empty()) {
+    MetricElementIndex(scenario, spec_.metric_options.element);
+  }
+}
+
+std::string PointErrorExplainer::Restore(const std::string& message) const {
+  // an overridden copy of the base places every node at 1:1; find the node its path names
+  const std::string lost = "(" + spec_.base + ":1:1)";
+  const std::size_t at = message.find(lost);
+  if (at == std::string::npos) return message;
+  const std::string path = message.substr(0, message.find(' '));
+  const bool about_key = message.compare(at + lost.size(), 13, ": unknown key") == 0;
+  const YAML::Mark mark = Reach(base_root_, path, about_key);
+  std::string restored = message;
+  restored.replace(at, lost.size(), "(" + spec_.base + ":" + Position(mark) + ")");
+  return restored;
+}
+
+std::string PointErrorExplainer::WithoutBasePosition(const std::string& message) const {
+  // "(BASE:12:7)" -> "(BASE)", wherever it occurs
+  const std::string open = "(" + spec_.base + ":";
+  std::string out = message;
+  for (std::size_t at = out.find(open); at != std::string::npos; at = out.find(open, at + 1)) {
+    const std::size_t close = out.find(')', at);
+    if (close == std::string::npos) break;
+    const std::string inside = out.substr(at + open.size(), close - at - open.size());
+    if (inside.find_first_not_of("0123456789:") == std::string::npos) {
+      out.erase(at + open.size() - 1, close - (at + open.size() - 1));
+    }
+  }
+  return out;
+}
+
+bool PointErrorExplainer::IsBaseError(const std::string& message) const {
+  return base_error_ && WithoutBasePosition(message) == WithoutBasePosition(*base_error_);
+}
+
+PointErrorExplainer::Explanation PointErrorExplainer::Explain(long index,
+                                                              const std::string& error) const {
+  const std::string base_fault = spec_.base + " (the base scenario of the sweep " +
+                                 spec_.source + ") is not a valid scenario: ";
+  if (IsBaseError(error)) return {base_fault + *base_error_, true};
+
+  // the first axis whose value alone breaks the base is the culprit
+  const std::vector<std::string> values = PointValues(spec_, index);
+  const std::vector<std::string> overrides = PointOverrides(spec_, index);
+  for (std::size_t k = 0; k < spec_.axes.size(); ++k) {
+    try {
+      Check({overrides[k]});
+    } catch (const InputError& e) {
+      if (IsBaseError(e.what())) continue;  // that value leaves the base's own error as it is
+      const SweepAxis& axis = spec_.axes[k];
+      return {axis.location + ": axis " + axis.path + " = " + values[k] + " makes point " +
+                  std::to_string(index) + " (" + Describe(spec_, values) +
+                  ") an invalid scenario: " + Restore(e.what()),
+              false};
+    }
+  }
+  if (base_error_) return {base_fault + *base_error_, true};
+  // no single value is wrong: their combination is
+  const std::string where = spec_.axes.empty() ? spec_.source : spec_.axes.front().location;
+  return {where + ": point " + std::to_string(index) + " (" + Describe(spec_, values) +
+              ") is not a valid scenario, though each of its values is valid alone: " +
+              Restore(error),
+          false};
+}
+
+}  // namespace musclesim

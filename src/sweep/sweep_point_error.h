@@ -1,0 +1,51 @@
+// Private: why a point of a sweep is not a valid scenario, told in the files the user
+// wrote. A point's scenario is the base scenario with the axis values applied, and its
+// validation error may come from the base file itself, from one axis value, or from a
+// combination of values; the message names the base file's line:column in the first case,
+// the axis (path, value, point, and its line:column in the sweep file) in the second.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <optional>
+#include <string>
+
+#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/sweep/sweep.h"
+
+namespace musclesim {
+
+class PointErrorExplainer {
+ public:
+  // `base` must be the spec's base scenario file, read; both must outlive the explainer,
+  // which reads the base file once more (for the positions of its keys) and validates it
+  // alone.
+  PointErrorExplainer(const SweepSpec& spec, const ScenarioTemplate& base);
+
+  struct Explanation {
+    std::string message;         // complete and printable, as an InputError's [-]
+    bool base_at_fault = false;  // the base scenario is invalid whatever the axes [-]
+  };
+
+  // `error` is the message of the InputError that instantiating point `index` threw.
+  // Validates the base with single axis values to find the culprit (only on failure,
+  // so its cost does not matter).
+  Explanation Explain(long index, const std::string& error) const;
+
+ private:
+  // The message with the base file's positions restored where the scenario reader could
+  // not know them (an overridden copy of the base has none: yaml-cpp's Clone drops them).
+  std::string Restore(const std::string& message) const;
+  // The message without any position in the base file, for comparing errors.
+  std::string WithoutBasePosition(const std::string& message) const;
+  bool IsBaseError(const std::string& message) const;
+  // Reads the base with `overrides` and checks it has the metrics' element (InputError).
+  void Check(const std::vector<std::string>& overrides) const;
+
+  const SweepSpec& spec_;
+  const ScenarioTemplate& base_;
+  YAML::Node base_root_;                   // the base file as written, with positions
+  std::optional<std::string> base_error_;  // the base scenario's own error, if any
+};
+
+}  // namespace musclesim
