@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/solver/integration_session.h"
 #include "run_roots.h"
 
 namespace musclesim {
@@ -30,6 +31,7 @@ Stepper::Stepper(NetworkSystem system, SolverOptions options, StepperStart start
       options_(options),
       limits_(std::move(start.limits)),
       simulation_(std::make_unique<Simulation>()),
+      recorder_(std::make_unique<Recorder>(*this)),
       time_(start.t_start) {
   Validate(options_);
   Require(std::isfinite(time_), "t_start", time_, "must be finite [s]");
@@ -68,17 +70,18 @@ RunStatus Stepper::Advance(double t_next) {
   }
   Require(std::isfinite(t_next) && t_next > time_, "t_next", t_next,
           "must be finite and after time() = " + FormatNumber(time_) + " [s]");
-  NetworkRunRequest request;
-  request.t_start = time_;
-  request.t_end = t_next;
-  request.output_interval = t_next - time_;  // unused with output_times; any span is valid
-  request.output_times = {t_next};
-  request.limits = limits_;
-  request.initial_state = state_;
-  Recorder recorder(*this);
-  const RunStats run = simulation_->Integrate(system_, options_, request, &recorder, nullptr,
-                                              nullptr, /*resume=*/!restart_);
-  restart_ = false;
+  if (restart_) {
+    // a new integration from here: the inputs changed, or this is the first piece
+    NetworkRunRequest start;
+    start.t_start = time_;
+    start.limits = limits_;
+    start.initial_state = state_;
+    session_.reset();
+    session_ = std::make_unique<IntegrationSession>(*simulation_, system_, options_, start,
+                                                    recorder_.get());
+    restart_ = false;
+  }
+  const RunStats run = session_->AdvanceTo(t_next, OutputGrid{0.0, {t_next}});
   stats_.steps += run.steps;
   stats_.rhs_evals += run.rhs_evals;
   stats_.jac_evals += run.jac_evals;

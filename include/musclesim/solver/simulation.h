@@ -26,6 +26,8 @@
 
 namespace musclesim {
 
+class CvodeWorkspace;  // src/solver/cvode_workspace.h
+
 enum class IntegrationMethod { kBdf, kAdams };
 std::string_view ToString(IntegrationMethod method);
 IntegrationMethod ParseIntegrationMethod(std::string_view text);  // ParameterError("method")
@@ -205,21 +207,12 @@ class Simulation {
                const NetworkRunRequest& request,
                const std::vector<SensitivityParameter>& parameters, SensitivitySink& sink);
 
- private:
-  friend class Stepper;  // drives Integrate piece by piece, resuming (solver/stepper.h)
+  // The CVODE memory runs re-use (an IntegrationSession integrates on it); opaque outside
+  // the solver's sources.
+  CvodeWorkspace& workspace() { return *workspace_; }
 
-  // The network run behind both: rows to `sink`, or with `parameters` to `sensitivity_sink`.
-  // `resume`: go on from where the last run completed, CVODE's history kept (no
-  // re-initialisation), when that run integrated this same `system` object, unchanged, with
-  // the same `options`, up to request.t_start, and request.initial_state is the state it
-  // ended with (the caller's promise); without sensitivities. Otherwise, as without it, the
-  // integrator starts afresh. The counters returned are those of this run alone either way.
-  RunStats Integrate(const NetworkSystem& system, const SolverOptions& options,
-                     const NetworkRunRequest& request, NetworkSink* sink,
-                     const std::vector<SensitivityParameter>* parameters,
-                     SensitivitySink* sensitivity_sink, bool resume = false);
-  struct Workspace;
-  std::unique_ptr<Workspace> workspace_;
+ private:
+  std::unique_ptr<CvodeWorkspace> workspace_;
 };
 
 }  // namespace musclesim

@@ -2,12 +2,13 @@
 // C++ at 1 kHz, say) integrates to the next sample time, reads the state, sets the inputs of
 // actuators no controller in the network drives, and integrates on.
 //
-// Each Advance is one run of Simulation's network loop from time() to t_next (breakpoints,
-// kinks and limits as there, docs/solver.md). While nothing changes between two calls the
-// integrator goes on with its history (order and step size): a piece costs the steps it
-// needs plus the one its end cuts short, not a restart (about twice a one-shot run's steps
-// at 1 ms pieces, tests/stepper_test.cc). SetActivation changes the system, and the next
-// Advance restarts the integrator at time(), as a run restarts where an input jumps.
+// Each Advance is one piece of an IntegrationSession (solver/integration_session.h) from
+// time() to t_next (breakpoints, kinks and limits as in a run, docs/solver.md). While nothing
+// changes between two calls the integrator goes on with its history (order and step size): a
+// piece costs the steps it needs plus the one its end cuts short, not a restart (about twice
+// a one-shot run's steps at 1 ms pieces, tests/solver/stepper_test.cc). SetActivation changes
+// the system, and the next Advance starts a new session at time(), as a run restarts where an
+// input jumps.
 #pragma once
 
 #include <memory>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "musclesim/dynamics/network.h"
+#include "musclesim/solver/integration_session.h"
 #include "musclesim/solver/simulation.h"
 
 namespace musclesim {
@@ -63,11 +65,13 @@ class Stepper {
   SolverOptions options_;
   std::vector<LengthLimit> limits_;
   std::unique_ptr<Simulation> simulation_;
+  std::unique_ptr<Recorder> recorder_;             // takes each piece's row
+  std::unique_ptr<IntegrationSession> session_;    // the integration under way
   double time_;
   std::vector<double> state_;
   NetworkSample sample_;
   RunStats stats_;
-  bool restart_ = true;  // the next Advance re-initialises the integrator at time()
+  bool restart_ = true;  // the next Advance starts a new session at time()
   bool ended_ = false;   // a limit or a failure: no further Advance
 };
 
