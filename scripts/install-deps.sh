@@ -15,6 +15,7 @@ packages=(
   libopenmpi-dev openmpi-bin   # sweeps across machines (-DMUSCLESIM_WITH_MPI=ON)
   gnuplot-nox           # musclesim plot draws its figures with gnuplot
   clang libclang-rt-14-dev   # scripts/fuzz.sh: libFuzzer, ASan and UBSan runtimes
+  libomp-14-dev         # clang's OpenMP, which SUNDIALS' CMake package asks for (the fuzz build)
   python3-dev pybind11-dev python3-numpy   # the Python module (python/, MUSCLESIM_PYTHON)
   python3-pytest        # its tests
   python3-matplotlib    # the README's Python example plots with it
