@@ -5,6 +5,7 @@
 #include <set>
 
 #include "musclesim/core/key_path.h"
+#include "io/document_yaml.h"
 #include "io/yaml_fields.h"
 
 namespace musclesim {
@@ -111,10 +112,11 @@ IdentifySeriesSpec LoadIdentifySeriesSpec(const std::string& path) {
                                  std::filesystem::path(path).parent_path().string());
 }
 
-IdentifySeriesSpec ParseIdentifySeriesSpec(const std::string& source, const std::string& text,
-                                           const std::string& base_dir, SeriesValues values) {
-  const YAML::Node root = yaml::Parse(source, text);
-  const yaml::Source src{source};
+namespace {
+
+IdentifySeriesSpec ReadSpec(const yaml::Source& src, const YAML::Node& root,
+                            const std::string& base_dir, SeriesValues values) {
+  const std::string& source = src.file;
   yaml::RequireMap(src, root, "", {"scenario", "series", "parameters"});
   IdentifySeriesSpec spec;
   spec.source = source;
@@ -153,6 +155,18 @@ IdentifySeriesSpec ParseIdentifySeriesSpec(const std::string& source, const std:
     }
   }
   return spec;
+}
+
+}  // namespace
+
+IdentifySeriesSpec ParseIdentifySeriesSpec(const std::string& source, const std::string& text,
+                                           const std::string& base_dir, SeriesValues values) {
+  return ReadSpec(yaml::Source{source}, yaml::Parse(source, text), base_dir, values);
+}
+
+IdentifySeriesSpec ReadIdentifySeriesSpec(const Document& document, const std::string& name,
+                                          const std::string& base_dir, SeriesValues values) {
+  return ReadSpec(yaml::Source{name, name}, ToYaml(document), base_dir, values);
 }
 
 }  // namespace musclesim

@@ -2,20 +2,37 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "io/document_yaml.h"
 #include "io/yaml_fields.h"
 #include "io/yaml_override.h"
 
 namespace musclesim {
 
-std::string RewriteScenario(const std::string& path, const std::vector<std::string>& overrides,
-                            const std::vector<std::string>& header) {
-  YAML::Node root = yaml::Parse(path, yaml::ReadText(path));
-  for (const std::string& o : overrides) yaml::ApplyOverride(root, o, path);
+namespace {
+
+std::string Emit(const YAML::Node& root, const std::vector<std::string>& header) {
   YAML::Emitter out;
   out << root;
   std::string text;
   for (const std::string& line : header) text += line.empty() ? "#\n" : "# " + line + "\n";
   return text + out.c_str() + "\n";
+}
+
+}  // namespace
+
+std::string RewriteScenario(const std::string& path, const std::vector<std::string>& overrides,
+                            const std::vector<std::string>& header) {
+  YAML::Node root = yaml::Parse(path, yaml::ReadText(path));
+  for (const std::string& o : overrides) yaml::ApplyOverride(root, o, path);
+  return Emit(root, header);
+}
+
+std::string RewriteScenario(const Document& document, const std::string& name,
+                            const std::vector<std::string>& overrides,
+                            const std::vector<std::string>& header) {
+  YAML::Node root = ToYaml(document);
+  for (const std::string& o : overrides) yaml::ApplyOverride(root, o, name);
+  return Emit(root, header);
 }
 
 }  // namespace musclesim

@@ -3,6 +3,7 @@
 // is validated exactly as the file's own value would be.
 #include "musclesim/io/scenario_yaml.h"
 
+#include "io/document_yaml.h"
 #include "io/scenario_readers.h"
 #include "io/yaml_override.h"
 
@@ -59,6 +60,14 @@ Scenario ScenarioTemplate::Instantiate(const std::vector<std::string>& overrides
     for (const std::string& text : overrides) yaml::ApplyOverride(root, text, path_);
     return Read(src, root);
   }
+}
+
+Scenario ReadScenario(const Document& document, const std::string& name,
+                      const std::vector<std::string>& overrides) {
+  YAML::Node root = ToYaml(document);
+  if (document.kind() == Document::Kind::kNull) throw InputError(name + ": the document is empty");
+  for (const std::string& text : overrides) yaml::ApplyOverride(root, text, name);
+  return Read(yaml::Source{name, name}, root);
 }
 
 Scenario LoadScenario(const std::string& path, const std::vector<std::string>& overrides) {

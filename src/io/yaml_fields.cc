@@ -12,7 +12,7 @@ namespace musclesim::yaml {
 
 std::string Location(const Source& source, const YAML::Node& node) {
   const YAML::Mark mark = node.Mark();
-  if (mark.is_null()) return "--set";  // a node made from a command-line override
+  if (mark.is_null()) return source.unplaced;  // an override's, or a document built in code
   return source.file + ":" + std::to_string(mark.line + 1) + ":" +
          std::to_string(mark.column + 1);
 }

@@ -15,9 +15,11 @@
 
 namespace musclesim::yaml {
 
-// Where values come from: the file name printed in messages.
+// Where values come from: the file name printed in messages, and what a message says where
+// a node has no file position (one given by an override, or a document built in code).
 struct Source {
   std::string file;
+  std::string unplaced = "--set";
 };
 
 // Throws InputError for `path` at `node`'s position.

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "io/document_yaml.h"
 #include "io/yaml_fields.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/io/scenario_yaml.h"
@@ -86,18 +87,17 @@ void CheckGridSize(const yaml::Source& src, const YAML::Node& parameters, const 
   }
 }
 
-}  // namespace
-
-SweepPlan LoadSweep(const std::string& path, int threads) {
-  const YAML::Node root = yaml::LoadFile(path);
-  const yaml::Source src{path};
+// Everything a sweep file says but its base: the axes, the mode, the metrics and where the
+// summary goes. `base_dir` is where a base path is relative to.
+SweepSpec ReadSweepSpec(const yaml::Source& src, const YAML::Node& root,
+                        const std::string& base_dir) {
   yaml::RequireMap(src, root, "",
                    {"base", "mode", "samples", "seed", "parameters", "metrics", "metric_options",
                     "trajectories", "output"});
   SweepSpec spec;
-  spec.source = path;
+  spec.source = src.file;
   const std::string base = yaml::ReadString(src, yaml::Required(src, root, "", "base"), "base");
-  spec.base = (std::filesystem::path(path).parent_path() / base).lexically_normal().string();
+  spec.base = (std::filesystem::path(base_dir) / base).lexically_normal().string();
 
   if (root["mode"]) {
     const std::string mode = yaml::ReadString(src, root["mode"], "mode");
@@ -202,6 +202,12 @@ SweepPlan LoadSweep(const std::string& path, int threads) {
     spec.output = yaml::ReadString(src, root["output"], "output");
   }
 
+  return spec;
+}
+
+// The spec's points made from the base file spec.base, validated.
+SweepPlan PlanFromFile(const yaml::Source& src, const YAML::Node& root, SweepSpec spec,
+                       int threads) {
   // every point is a full scenario: validate them (or, for a large sweep, a sample of them)
   // before anything runs; a point's error is told in terms of the file at fault
   spec.base_digest = Digest(yaml::ReadText(spec.base));
@@ -214,6 +220,34 @@ SweepPlan LoadSweep(const std::string& path, int threads) {
                      "computes them)");
   }
   std::unique_ptr<PointFactory> points = FilePoints(std::move(base_file), spec);
+  const auto resolve = [&](const SweepSpec& s, const MetricElements& elements) {
+    return ResolveMetricElement(src, root, s, elements);
+  };
+  return PlanSweep(std::move(spec), std::move(points), threads, resolve);
+}
+
+}  // namespace
+
+SweepPlan LoadSweep(const std::string& path, int threads) {
+  const YAML::Node root = yaml::LoadFile(path);
+  const yaml::Source src{path};
+  SweepSpec spec = ReadSweepSpec(src, root, std::filesystem::path(path).parent_path().string());
+  return PlanFromFile(src, root, std::move(spec), threads);
+}
+
+SweepPlan ReadSweep(const Document& document, const std::string& name, const Scenario* base,
+                    const std::string& base_text, int threads) {
+  const YAML::Node root = ToYaml(document);
+  const yaml::Source src{name, name};
+  SweepSpec spec = ReadSweepSpec(src, root, "");
+  if (base == nullptr) return PlanFromFile(src, root, std::move(spec), threads);
+  if (!base->sensitivities.empty()) {
+    throw InputError(spec.base + ": sensitivities: a sweep runs its points without "
+                     "sensitivities; remove them from the base scenario");
+  }
+  spec.base_digest = Digest(base_text);
+  spec.form = base->form;
+  std::unique_ptr<PointFactory> points = ParameterPoints(*base, spec);
   const auto resolve = [&](const SweepSpec& s, const MetricElements& elements) {
     return ResolveMetricElement(src, root, s, elements);
   };

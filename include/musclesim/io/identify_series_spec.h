@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "musclesim/io/document.h"
+
 namespace musclesim {
 
 struct SeriesSpec {
@@ -62,5 +64,11 @@ IdentifySeriesSpec LoadIdentifySeriesSpec(const std::string& path);
 IdentifySeriesSpec ParseIdentifySeriesSpec(const std::string& source, const std::string& text,
                                            const std::string& base_dir,
                                            SeriesValues values = SeriesValues::kCsvFiles);
+
+// The same for a document built in code (io/document.h: the Python module's dict), `name`
+// naming it in messages.
+IdentifySeriesSpec ReadIdentifySeriesSpec(const Document& document, const std::string& name,
+                                          const std::string& base_dir,
+                                          SeriesValues values = SeriesValues::kCsvFiles);
 
 }  // namespace musclesim

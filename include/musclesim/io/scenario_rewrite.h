@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "musclesim/io/document.h"
+
 namespace musclesim {
 
 // The scenario at `path` (either form) with each "dotted.path=value" of `overrides` applied
@@ -13,6 +15,12 @@ namespace musclesim {
 // flow style. Throws InputError for a file that cannot be read or parsed, or an override
 // that does not apply (the messages of `--set`). The result is not validated here: load it.
 std::string RewriteScenario(const std::string& path, const std::vector<std::string>& overrides,
+                            const std::vector<std::string>& header);
+
+// The same for a scenario `document` built in code (io/document.h), `name` naming it in the
+// messages of an override that does not apply.
+std::string RewriteScenario(const Document& document, const std::string& name,
+                            const std::vector<std::string>& overrides,
                             const std::vector<std::string>& header);
 
 }  // namespace musclesim

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "musclesim/io/document.h"
 #include "musclesim/scenario/scenario.h"
 
 namespace musclesim {
@@ -18,6 +19,11 @@ namespace musclesim {
 // longer than zero at the start, the limits against the elements' initial lengths. Throws
 // InputError naming file:line:column (or --set), key path, value and rule.
 Scenario LoadScenario(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// Reads the scenario `document` (io/document.h), built in code, with `overrides` applied, as
+// LoadScenario reads a file; `name` names it in messages ("<dict>"), which cannot give lines.
+Scenario ReadScenario(const Document& document, const std::string& name,
+                      const std::vector<std::string>& overrides = {});
 
 // A scenario file read and parsed once, from which many scenarios are made by overrides (a
 // sweep's points whose axes are not numbers). Not shared between threads: each thread makes

@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "musclesim/io/document.h"
 #include "musclesim/sweep/sweep_points.h"
 
 namespace musclesim {
@@ -21,5 +22,12 @@ namespace musclesim {
 // with the other MPI ranks of this host). Under MPI (initialised, more than one rank) every
 // rank of MPI_COMM_WORLD must call it for the same file.
 SweepPlan LoadSweep(const std::string& path, int threads = 0);
+
+// The same for a sweep `document` built in code (io/document.h), `name` naming it in
+// messages. Its `base` is a scenario file's path, relative to the working directory, unless
+// `base` is given: then that Scenario is the base, the document's `base` only its name in
+// messages, and `base_text` (its YAML, say) what resume's signature hashes for it.
+SweepPlan ReadSweep(const Document& document, const std::string& name, const Scenario* base,
+                    const std::string& base_text, int threads = 0);
 
 }  // namespace musclesim
