@@ -24,19 +24,15 @@ def run_many(jobs, threads=0, sensitivities=None):
     from . import _musclesim as _extension
     if isinstance(threads, bool) or not isinstance(threads, int):
         raise TypeError("threads must be an int (0: every core), not %r" % (threads,))
-    jobs = list(jobs)  # the Scenarios (and a dict's temporary file) live until the runs end
-    converted = []
+    jobs = list(jobs)
     for k, job in enumerate(jobs):
-        if isinstance(job, Scenario):
-            converted.append((job._path, job.overrides))
-        elif isinstance(job, (tuple, list)) and len(job) == 2:
-            converted.append(tuple(job))
-        else:
+        if not isinstance(job, (Scenario, tuple, list)) or (
+                not isinstance(job, Scenario) and len(job) != 2):
             raise TypeError("jobs[%d] must be a Scenario or a (path, overrides) pair, not %r"
                             % (k, job))
     if isinstance(sensitivities, str):
         raise TypeError("sensitivities must be a list of dotted paths, not one str")
-    return _extension.run_many(converted, threads, list(sensitivities or []))
+    return _extension.run_many(jobs, threads, list(sensitivities or []))
 
 
 from .curves_identification import *  # noqa: F401,F403,E402

@@ -4,7 +4,6 @@ plot() picks the figure from the data's type and hands its columns to the librar
 builders as the table the CLI would read from their CSV: numbers as float64 (the CLI's CSV
 prints 17 significant digits, which read back to the same double), text columns as text.
 """
-import json as _json
 import operator as _operator
 import os as _os
 
@@ -130,7 +129,7 @@ def plot(data, output, title=None, size=(1000, 750), x=None, y=None, color=None,
         if x is not None or y is not None or color is not None:
             raise _InputError("x, y and color go with a sweep summary, not with a Model's "
                               "curves")
-        _musclesim._plot_model(_json.dumps(data.params), output, title, width, height, script)
+        _musclesim._plot_model(data.params, output, title, width, height, script)
         return output
     table = _columns(data)
     if table is None:

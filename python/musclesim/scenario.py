@@ -1,17 +1,16 @@
 """Scenarios from Python dicts (the YAML file's keys and values)."""
 from . import _musclesim
-from .yaml_text import yaml_text
 
 
 def scenario_from_dict(d, name="<dict>"):
     """A validated Scenario from a dict with a scenario file's keys (README "Scenario files").
 
-    The dict is read by the same reader as a file (its JSON text is YAML), so the same rules
-    apply; an InputError names the key path (e.g. "load[0].after") and `name` in place of the
-    file, with the line and column of the dict's JSON text written one key per line. SI units
-    as in the files (m, m/s, N, s; activations in [0, 1]). NumPy numbers and arrays are taken
-    as Python numbers and lists.
+    The dict is read by the same reader as a file, as a document in memory (no text in
+    between), so the same rules apply; an InputError names the key path (e.g.
+    "load[0].after") and `name` in place of the file (a dict has no lines). SI units as in
+    the files (m, m/s, N, s; activations in [0, 1]). NumPy numbers and arrays are taken as
+    Python numbers and lists.
     """
     if not isinstance(d, dict):
         raise TypeError("scenario_from_dict expects a dict, not %s" % type(d).__name__)
-    return _musclesim._scenario_from_text(yaml_text(d), name)
+    return _musclesim._scenario_from_dict(d, name)

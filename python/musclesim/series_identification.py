@@ -1,15 +1,13 @@
 """Identification of a scenario's parameters from measured time series, in memory.
 
 What `musclesim identify DATA.yaml` does for a data file with a `scenario:` key (README "From
-time series"), with the data file's parts given as Python values: the arguments are written
-as the data file's JSON text and read by its own reader, so the same rules and messages
-apply (key paths such as "parameters[0].bounds", places "identify_series:LINE:COLUMN" in
-that text, one key per line).
+time series"), with the data file's parts given as Python values: the arguments are read by
+the data file's own reader as a document in memory, so the same rules and messages apply
+(key paths such as "parameters[0].bounds", the place "identify_series").
 """
 import warnings as _warnings
 
 from . import _musclesim
-from .yaml_text import yaml_text
 
 __all__ = ["identify_series"]
 
@@ -87,8 +85,7 @@ def identify_series(scenario, series, parameters, design=False, max_evaluations=
         "series": entries,
         "parameters": [{"path": p} if isinstance(p, str) else p for p in parameters],
     }
-    text = yaml_text(spec)
-    result = _musclesim._identify_series(scenario, text, _SPEC_NAME, columns, bool(design),
+    result = _musclesim._identify_series(scenario, spec, _SPEC_NAME, columns, bool(design),
                                          int(max_evaluations))
     for message in result.warnings:
         _warnings.warn("identify_series: " + message, RuntimeWarning, stacklevel=2)

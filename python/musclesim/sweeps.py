@@ -1,13 +1,11 @@
 """Sweeps from Python: musclesim.sweep runs a sweep file or dict, its summary as a table."""
 import csv
 import os
-import tempfile
 
 import numpy as np
 
-from ._musclesim import Scenario, _run_sweep
+from ._musclesim import _sweep
 from .tables import structured
-from .yaml_text import yaml_text
 
 # summary columns that are counts rather than measurements
 _INTEGER_COLUMNS = ("index", "steps", "rhs_evals")
@@ -27,42 +25,28 @@ def _column_array(name, texts):
         return np.array(texts, dtype=object)
 
 
-def _write_dict_sweep(spec, directory):
-    """The sweep dict as a file in `directory`: its base made absolute (a path, relative to
-    the working directory) or written there (a Scenario, with its set() values)."""
-    if not isinstance(spec, dict):
-        raise TypeError("sweep expects a path or a dict, not %s" % type(spec).__name__)
-    spec = dict(spec)
-    base = spec.get("base")
-    if isinstance(base, Scenario):
-        if base.overrides:
-            spec["base"] = os.path.join(directory, "base.yaml")
-            with open(spec["base"], "w") as file:
-                file.write(base.to_yaml())
-        else:
-            spec["base"] = base._path
-    elif isinstance(base, (str, os.PathLike)):
-        spec["base"] = os.path.abspath(os.fspath(base))
-    elif base is not None:  # none: the reader says base is missing
-        raise TypeError("base must be a scenario file's path or a Scenario, not %r" % (base,))
-    path = os.path.join(directory, "sweep.yaml")
-    with open(path, "w") as file:
-        file.write(yaml_text(spec))
-    return path
+def _read_summary(path):
+    """The summary CSV the sweep wrote where it was asked to, as columns."""
+    with open(path, newline="") as file:
+        rows = list(csv.reader(file))
+    header, body = rows[0], rows[1:]
+    return header, [_column_array(column, [row[c] for row in body])
+                    for c, column in enumerate(header)]
 
 
 def sweep(spec, threads=0, output=None, resume=False, name="<dict>"):
     """Runs a sweep (README "Sweeps") with the GIL released and returns its summary.
 
     `spec` is a sweep file's path, or a dict with a sweep file's keys (base, mode, parameters,
-    metrics, metric_options, trajectories, ...) read by the same reader, so the same rules and
-    messages apply (InputError naming `name` for the file); its `base` is a scenario file's
-    path (relative to the working directory) or a Scenario, its set() values kept. `threads`:
-    as `--jobs` (0: every core). `output`: where the summary CSV (and any per-run trajectories
-    beside it) is written, as `-o`; None: a temporary file, removed (the sweep file's own
-    `output` is not used). `resume`: as `--resume`, keep the rows of an interrupted sweep's
-    output.partial and run the rest (it needs `output`). Ctrl-C stops the sweep
-    (KeyboardInterrupt) after the running points, their rows kept in output.partial when
+    metrics, metric_options, trajectories, ...) read by the same reader as a document in
+    memory, so the same rules and messages apply (InputError naming `name` for the file); its
+    `base` is a scenario file's path (relative to the working directory) or a Scenario, whose
+    numbers the axes set through parameter handles (no file is written). `threads`: as
+    `--jobs` (0: every core). `output`: where the summary CSV (and any per-run trajectories
+    beside it) is written, as `-o`; None: the summary is kept in memory, no file written (the
+    sweep file's own `output` is not used). `resume`: as `--resume`, keep the rows of an
+    interrupted sweep's output.partial and run the rest (it needs `output`). Ctrl-C stops the
+    sweep (KeyboardInterrupt) after the running points, their rows kept in output.partial when
     `output` is given. A sweep keeping trajectories (`trajectories: all` or `failed`) needs
     `output`: they are written beside it.
 
@@ -77,16 +61,9 @@ def sweep(spec, threads=0, output=None, resume=False, name="<dict>"):
     if resume and output is None:
         raise ValueError("resume=True continues the summary at output: give output=PATH, "
                          "the one the interrupted sweep wrote to")
-    with tempfile.TemporaryDirectory(prefix="musclesim_sweep_") as directory:
-        if isinstance(spec, (str, os.PathLike)):
-            path = os.fspath(spec)
-            display = path
-        else:
-            path, display = _write_dict_sweep(spec, directory), name
-        summary = os.fspath(output) if output is not None else os.path.join(directory, "summary.csv")
-        _run_sweep(path, summary, output is not None, bool(resume), threads, display)
-        with open(summary, newline="") as file:
-            rows = list(csv.reader(file))
-    header, body = rows[0], rows[1:]
-    return structured(header, [_column_array(column, [row[c] for row in body])
-                               for c, column in enumerate(header)])
+    if not isinstance(spec, (str, os.PathLike, dict)):
+        raise TypeError("sweep expects a path or a dict, not %s" % type(spec).__name__)
+    display = os.fspath(spec) if isinstance(spec, (str, os.PathLike)) else name
+    in_memory = _sweep(spec, threads, output, bool(resume), display)
+    header, columns = in_memory if output is None else _read_summary(os.fspath(output))
+    return structured(list(header), list(columns))

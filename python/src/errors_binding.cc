@@ -28,10 +28,12 @@ struct MessageParts {
 //   FILE:LINE:COLUMN: YAML syntax error: ...
 //   --set KEY=VALUE: ...                      (an override that names no value)
 //   ARGUMENT: row N: ...                      (data given as arrays: the argument's name)
-//   --sensitivity PATH: ...                   (a sensitivity's parameter)
+//   --sensitivity PATH: ...                   (a sensitivity's parameter; from Python,
+//   sensitivities PATH: ...                    Scenario.run's `sensitivities`)
 //   FILE:LINE:COLUMN: KEY = VALUE ...         (an entry whose value the reader refers on)
 //   FILE:LINE:COLUMN: axis PATH = VALUE ...   (a sweep's axis: key parameters.PATH)
-// and a value given by an override is placed at "--set" (no file position: location None).
+// and a value given by an override is placed at "--set" (no file position: location None);
+// a dict's entries are placed at the dict's name ("<dict>", "identify_series"): location None.
 MessageParts ParseInputMessage(const std::string& message) {
   MessageParts parts;
   static const std::regex located(R"(^(\(top level\)|\S+)(?: = .*?)? \(([^()]*)\): )");
@@ -39,15 +41,15 @@ MessageParts ParseInputMessage(const std::string& message) {
   static const std::regex override_text(R"(^--set ([^=:\s]+)=)");
   static const std::regex position(R"(.*:\d+:\d+$)");
   static const std::regex array_row(R"(^([A-Za-z_][\w.\[\]]*): row \d+: )");
-  static const std::regex sensitivity(R"(^--sensitivity ([^:\s]+): )");
-  static const std::regex placed_entry(R"(^(.*:\d+:\d+): (axis )?([^\s=()]+) = )");
+  static const std::regex sensitivity(R"(^(?:--sensitivity|sensitivities) ([^:\s]+): )");
+  static const std::regex placed_entry(R"(^([^\s:]+(?::\d+:\d+)?): (axis )?([^\s=()]+) = )");
   std::smatch match;
   if (std::regex_search(message, match, override_text) ||
       std::regex_search(message, match, array_row) ||
       std::regex_search(message, match, sensitivity)) {
     parts.key = match[1].str();
   } else if (std::regex_search(message, match, placed_entry)) {
-    parts.location = match[1].str();
+    if (std::regex_match(match[1].str(), position)) parts.location = match[1].str();
     parts.key = (match[2].matched ? "parameters." : "") + match[3].str();
   } else if (std::regex_search(message, match, located)) {
     if (match[1].str() != "(top level)") parts.key = match[1].str();

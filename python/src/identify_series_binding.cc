@@ -1,9 +1,9 @@
 // Identification of a scenario's parameters from measured time series, as `musclesim
 // identify DATA.yaml` does for a data file with a `scenario:` key, without the data file or
-// the CSV files: the spec arrives as JSON text (series_identification.py writes it from the
-// arguments) and is read by the data file's own reader; the series arrive as NumPy columns
-// and pass the CSV's rules (MeasuredSeriesFromColumns). The fit and the design are the
-// library's FitSeries and DesignSeries, run with the GIL released.
+// the CSV files: the spec arrives as a dict read by the data file's own reader as a document
+// (io/document.h), the scenario as the Scenario in memory, the series as NumPy columns that
+// pass the CSV's rules (MeasuredSeriesFromColumns). The fit and the design are the library's
+// FitSeries and DesignSeries on copies of the scenario, run with the GIL released.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -16,12 +16,13 @@
 #include <vector>
 
 #include "bindings.h"
-#include "file_alias.h"
+#include "document.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/io/identify_series_spec.h"
 #include "musclesim/identify/identify_series.h"
 #include "musclesim/identify/identify_series_columns.h"
 #include "musclesim/identify/identify_series_warnings.h"
+#include "py_scenario.h"
 
 namespace py = pybind11;
 
@@ -64,24 +65,6 @@ py::array_t<double> ToArray(const Eigen::MatrixXd& matrix) {
   return array;
 }
 
-// The scenario as identification needs it: the file the runs read, its overrides (the CLI's
-// --set) and its name in messages.
-struct ScenarioFile {
-  std::string path, display;
-  std::vector<std::string> overrides;
-};
-
-ScenarioFile ScenarioOf(const py::object& scenario) {
-  const py::object type = py::module_::import("musclesim._musclesim").attr("Scenario");
-  if (!py::isinstance(scenario, type)) {
-    throw py::type_error("scenario must be a musclesim.Scenario (load_scenario or "
-                         "scenario_from_dict), not " +
-                         py::str(py::type::of(scenario).attr("__name__")).cast<std::string>());
-  }
-  return {scenario.attr("_path").cast<std::string>(), scenario.attr("_display").cast<std::string>(),
-          scenario.attr("overrides").cast<std::vector<std::string>>()};
-}
-
 // The columns of every series as float64 vectors; a column that is not a 1-D array of
 // numbers is an InputError at the series' entry.
 std::vector<SeriesColumns> ColumnsOf(const py::list& series, const IdentifySeriesSpec& spec) {
@@ -119,16 +102,16 @@ struct Identification {
   py::object scenario = py::none();  // the estimated scenario (a fit only)
 };
 
-Identification Identify(const py::object& scenario, const std::string& spec_text,
+Identification Identify(const py::object& scenario, const py::object& spec_dict,
                         const std::string& spec_name, const py::list& series, bool design,
                         int max_evaluations) {
   if (max_evaluations < 1) {
     throw py::value_error("max_evaluations must be at least 1 (runs with sensitivities the fit "
                           "may take), not " + std::to_string(max_evaluations));
   }
-  const ScenarioFile file = ScenarioOf(scenario);
-  const IdentifySeriesSpec spec =
-      ParseIdentifySeriesSpec(spec_name, spec_text, "", SeriesValues::kInMemory);
+  const PyScenario& given = ScenarioArgument(scenario, "scenario");
+  const IdentifySeriesSpec spec = ReadIdentifySeriesSpec(DocumentFrom(spec_dict, ""), spec_name,
+                                                         "", SeriesValues::kInMemory);
   if (py::len(series) != spec.series.size()) {
     throw std::invalid_argument("_identify_series: the spec names " +
                                 std::to_string(spec.series.size()) + " series, the values " +
@@ -137,10 +120,11 @@ Identification Identify(const py::object& scenario, const std::string& spec_text
   const std::vector<SeriesColumns> columns = ColumnsOf(series, spec);
   Identification out;
   out.design = design;
-  try {
+  const PyScenario base = given;  // taken with the GIL
+  {
     py::gil_scoped_release release;
     const std::vector<MeasuredSeries> measured = MeasuredSeriesFromColumns(spec, columns, design);
-    const SensitivityRunner run = ScenarioSensitivityRunner(file.path, file.overrides);
+    const SensitivityRunner run = ScenarioSensitivityRunner(base.scenario);
     if (design) {
       out.result = DesignSeries(spec, measured, run);
       out.report = FormatDesignReport(out.result, spec_name);
@@ -150,12 +134,7 @@ Identification Identify(const py::object& scenario, const std::string& spec_text
       out.result = FitSeries(spec, measured, run, options);
       out.report = FormatSeriesReport(out.result, spec_name);
     }
-  } catch (const InputError& e) {  // a dict's temporary file named as the dict
-    throw InputError(Aliased(e.what(), file.path, file.display));
-  } catch (const std::runtime_error& e) {
-    throw std::runtime_error(Aliased(e.what(), file.path, file.display));
   }
-  out.report = Aliased(out.report, file.path, file.display);
   if (!design) {
     if (const std::string poor = PoorFitWarning(out.result); !poor.empty()) {
       out.warnings.push_back(poor);
@@ -164,7 +143,12 @@ Identification Identify(const py::object& scenario, const std::string& spec_text
       out.warnings.push_back("the fit did not converge: " + out.result.stop_reason +
                              "; the result is its last point, not an optimum");
     }
-    out.scenario = scenario.attr("_with_overrides")(EstimateOverrides(out.result));
+    // the estimated scenario: the estimates set in place, and written as values set for
+    // to_yaml()
+    PyScenario estimated = base;
+    estimated.scenario = EstimatedScenario(base.scenario, out.result);
+    for (const std::string& o : EstimateOverrides(out.result)) estimated.overrides.push_back(o);
+    out.scenario = py::cast(std::move(estimated));
   }
   return out;
 }
@@ -364,9 +348,9 @@ void BindIdentifySeries(py::module_& m) {
         return text + ">";
       });
 
-  m.def("_identify_series", &Identify, py::arg("scenario"), py::arg("spec_text"),
+  m.def("_identify_series", &Identify, py::arg("scenario"), py::arg("spec"),
         py::arg("spec_name"), py::arg("series"), py::arg("design"), py::arg("max_evaluations"),
-        "identify_series's C++ half: `spec_text` a data file's YAML/JSON text without csv keys "
+        "identify_series's C++ half: `spec` a data file's keys as a dict without csv keys "
         "(messages name it `spec_name`), `series` one list of (column, array) pairs per entry "
         "of its series. identify_series is the public way.");
 }

@@ -11,6 +11,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
+#include "document.h"
 #include "model_values.h"
 #include "overrides.h"
 #include "musclesim/core/errors.h"
@@ -116,23 +117,13 @@ Model FromSpec(const ModelSpec& spec) {
   return {std::make_shared<const TensionModel>(spec.params), spec.fit_result};
 }
 
-// A plain Python value JSON can write: NumPy scalars and arrays through tolist().
-py::object Jsonable(const py::object& value) {
-  if (py::hasattr(value, "tolist")) return value.attr("tolist")();
-  throw py::type_error("a model dict holds numbers, lists and dicts; got " +
-                       py::repr(value).cast<std::string>());
-}
-
 Model FromDict(const py::dict& params) {
-  // JSON is YAML: the block goes through the file reader, with its rules and messages
-  const py::object dumps = py::module_::import("json").attr("dumps");
-  const std::string text =
-      dumps(params, py::arg("indent") = 1, py::arg("default") = py::cpp_function(Jsonable))
-          .cast<std::string>();
+  // the block goes through the file reader as a document, with its rules and messages
+  const Document block = DocumentFrom(params, "model");
   ModelSpec spec;
   {
     py::gil_scoped_release release;  // a block asking for a fit runs it here
-    spec = ParseModelSpec("<model dict>", text);
+    spec = ReadModelSpec(block, "<model dict>");
   }
   return FromSpec(spec);
 }

@@ -14,6 +14,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
+#include "document.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/io/csv_table.h"
 #include "musclesim/io/model_text.h"
@@ -163,11 +164,12 @@ void PlotColumns(const std::vector<std::string>& names, const py::list& columns,
   });
 }
 
-void PlotModel(const std::string& model_json, const std::string& output, const std::string& title,
+void PlotModel(const py::dict& params, const std::string& output, const std::string& title,
                int width, int height, const std::optional<std::string>& script_path) {
   const PlotOptions options = Options(output, title, width, height);
+  const Document block = DocumentFrom(params, "model");
   py::gil_scoped_release release;
-  const TensionModel model(ParseModelSpec("<model>", model_json).params);
+  const TensionModel model(ReadModelSpec(block, "<model>").params);
   Renamed([&] { Draw(CurvesPlotScript(model, options), options, script_path); });
 }
 
@@ -181,9 +183,9 @@ void BindPlot(py::module_& m) {
         "array or a list of str), with the GIL released: with x a sweep summary's, else a "
         "residual table's, a network trajectory's or a trajectory's. musclesim.plot is the "
         "public way.");
-  m.def("_plot_model", &PlotModel, py::arg("model_json"), py::arg("output"), py::arg("title"),
+  m.def("_plot_model", &PlotModel, py::arg("params"), py::arg("output"), py::arg("title"),
         py::arg("width"), py::arg("height"), py::arg("script"),
-        "The curves figure (`musclesim plot --curves`) of the model block given as JSON text, "
+        "The curves figure (`musclesim plot --curves`) of the model block given as a dict, "
         "with the GIL released. musclesim.plot is the public way.");
 }
 

@@ -1,22 +1,18 @@
-// Scenarios from files or dicts, changed with set(), run to NumPy columns (cli_run.h: the
-// very writers `musclesim run` uses, so the columns are its CSV's).
+// Scenarios from files or dicts, their parameter handles, set(), run() to NumPy columns filled
+// from the run's recorder (run_data.h: no file, no text), and the solver's options and
+// counters as types.
 #include <pybind11/stl.h>
 
-#include <filesystem>
-#include <fstream>
-#include <memory>
 #include <string>
 #include <vector>
 
 #include "bindings.h"
-#include "cli_run.h"
-#include "file_alias.h"
-#include "overrides.h"
-#include "temp_file.h"
+#include "document.h"
 #include "musclesim/core/errors.h"
-#include "musclesim/io/network_scenario.h"
-#include "musclesim/io/scenario.h"
-#include "musclesim/io/scenario_rewrite.h"
+#include "musclesim/io/document.h"
+#include "musclesim/io/scenario_yaml.h"
+#include "py_scenario.h"
+#include "run_data.h"
 
 namespace py = pybind11;
 
@@ -24,79 +20,25 @@ namespace musclesim::python {
 
 namespace {
 
-// A scenario: the file it is read from, the overrides set() gave, and what it is.
-struct Scenario {
-  std::string path;                 // the file read (a temporary one for a dict)
-  std::string display;              // the file's name in messages ("<dict>" for a dict)
-  std::shared_ptr<TempFile> text;   // owns `path` when it is temporary
-  std::vector<std::string> overrides;
-  bool network = false;
-  std::string name;
-
-  // Runs `read`, its InputError naming the file as `display` (file_alias.h).
-  template <typename Read>
-  auto Located(Read read) const {
-    return WithFileAlias(path, display, read);
+std::vector<std::string> Paths(const py::object& sensitivities) {
+  std::vector<std::string> paths;
+  if (sensitivities.is_none()) return paths;
+  if (py::isinstance<py::str>(sensitivities)) {
+    throw py::type_error("sensitivities must be a list of dotted paths, not one str");
   }
-
-  // Reads and validates the file with the overrides, as `musclesim run` does before it runs.
-  void Validate() {
-    Located([&] {
-      network = IsNetworkScenario(path);
-      name = network ? LoadNetworkScenario(path, overrides).name
-                     : LoadScenario(path, overrides).name;
-      return 0;
-    });
-  }
-};
-
-Scenario Load(const py::object& given, const py::object& set) {
-  const std::string path = PathText(given, "load_scenario(path)");
-  Scenario scenario;
-  // absolute: the scenario stays valid across os.chdir and in a sweep's temporary directory;
-  // messages keep the name the user gave
-  scenario.path = std::filesystem::absolute(path).lexically_normal().string();
-  scenario.display = path;
-  scenario.overrides = OverridesFrom(set);
-  py::gil_scoped_release release;
-  scenario.Validate();
-  return scenario;
+  for (const auto& item : sensitivities) paths.push_back(py::str(item).cast<std::string>());
+  return paths;
 }
 
-Scenario FromText(const std::string& text, const std::string& display) {
-  Scenario scenario;
-  scenario.text = std::make_shared<TempFile>(".yaml");
-  {
-    std::ofstream out(scenario.text->path(), std::ios::binary);
-    out << text;
-    if (!out) throw std::runtime_error("cannot write " + scenario.text->path());
-  }
-  scenario.path = scenario.text->path();
-  scenario.display = display;
-  py::gil_scoped_release release;
-  scenario.Validate();
-  return scenario;
-}
-
-Result Run(const Scenario& scenario, const py::object& sensitivities) {
-  std::vector<std::string> parameters;
-  if (!sensitivities.is_none()) {
-    if (py::isinstance<py::str>(sensitivities)) {
-      throw py::type_error("sensitivities must be a list of dotted paths, not one str");
-    }
-    for (const auto& item : sensitivities) parameters.push_back(py::str(item).cast<std::string>());
-  }
-  CsvColumns columns;
-  std::string stats_json;
-  const Scenario fixed = scenario;  // taken with the GIL: another thread may set() meanwhile
+Result Run(const PyScenario& s, const py::object& sensitivities) {
+  const std::vector<std::string> paths = Paths(sensitivities);
+  const Scenario scenario = s.scenario;  // taken with the GIL: another thread may set() meanwhile
+  RunData data;
   {
     py::gil_scoped_release release;
-    const RunText text =
-        fixed.Located([&] { return RunLikeCli(fixed.path, fixed.overrides, parameters); });
-    columns = SplitCsv(text.csv);
-    stats_json = text.stats_json;
+    data = RunData::Of(scenario, paths);
   }
-  return MakeResult(columns, stats_json);
+  return MakeResult(std::move(data));
 }
 
 py::object ToDataFrame(const Result& result) {
@@ -113,16 +55,20 @@ py::object ToDataFrame(const Result& result) {
   return pandas.attr("DataFrame")(result.columns);
 }
 
-}  // namespace
+// A parameter handle bound to its Scenario: reading and writing its value in place.
+struct BoundParameter {
+  py::object scenario;  // the musclesim.Scenario
+  std::string path;
+};
 
-void BindScenario(py::module_& m) {
+void BindResult(py::module_& m) {
   py::class_<Result>(
       m, "Result",
       "One run's trajectory and solver counters, as `musclesim run` writes them (its CSV and "
-      "its --stats JSON). Rows are the output grid's times (output.interval) or every internal "
-      "step (interval: steps). SI units: t in s, lengths and positions in m, velocities in m/s "
-      "(shortening_velocity positive when the actuator shortens), tensions and loads in N, "
-      "activations and excitations in [0, 1].")
+      "its --stats JSON), recorded straight into NumPy arrays. Rows are the output grid's "
+      "times (output.interval) or every internal step (interval: steps). SI units: t in s, "
+      "lengths and positions in m, velocities in m/s (shortening_velocity positive when the "
+      "actuator shortens), tensions and loads in N, activations and excitations in [0, 1].")
       .def_property_readonly(
           "columns", [](const Result& r) { return r.columns; },
           "dict {name: 1-D NumPy array of len(result)}, exactly the CLI CSV's columns in its "
@@ -139,6 +85,7 @@ void BindScenario(py::module_& m) {
           "error_test_fails, wall_seconds [s], final_time [s], linear_solver, status, message "
           "(and with sensitivities their counters and `sensitivities`, one {path, derivative} "
           "each).")
+      .def_readonly("run_stats", &Result::run_stats, "The counters as a RunStats.")
       .def_property_readonly(
           "status", [](const Result& r) { return r.stats["status"]; },
           "'completed', 'limit' (stopped at a length limit) or 'failed' (the solver failed; "
@@ -148,11 +95,11 @@ void BindScenario(py::module_& m) {
            "python3-pandas if it is missing).")
       .def("__len__", [](const Result& r) { return r.rows; }, "The number of rows.")
       .def(py::pickle(  // for multiprocessing and joblib: the columns and stats as they are
-          [](const Result& r) { return py::make_tuple(r.columns, r.stats, r.rows); },
+          [](const Result& r) { return py::make_tuple(r.columns, r.stats, r.rows, r.run_stats); },
           [](const py::tuple& state) {
-            if (state.size() != 3) throw std::runtime_error("not a pickled musclesim.Result");
+            if (state.size() != 4) throw std::runtime_error("not a pickled musclesim.Result");
             return Result{state[0].cast<py::dict>(), state[1].cast<py::dict>(),
-                          state[2].cast<py::ssize_t>()};
+                          state[2].cast<py::ssize_t>(), state[3].cast<RunStats>()};
           }))
       .def(
           "__getitem__",
@@ -166,36 +113,160 @@ void BindScenario(py::module_& m) {
                std::to_string(py::len(r.columns)) + " columns, " +
                py::str(r.stats["status"]).cast<std::string>() + ">";
       });
+}
 
-  py::class_<Scenario>(
-      m, "Scenario",
-      "A validated scenario (a single actuator or a network on a line, README \"Scenario "
-      "files\"): a file or a dict with the overrides given since. SI units as in the files.")
+void BindSolverTypes(py::module_& m) {
+  py::class_<SolverOptions>(
+      m, "SolverOptions",
+      "How CVODES integrates a scenario (its `solver:` block): method 'bdf' or 'adams', rtol "
+      "[-], atol [m and m/s], jacobian 'analytic' or 'difference_quotient', max_step [s] (0: "
+      "no limit), max_steps, linear_solver 'auto', 'small', 'dense', 'band' or 'sparse'. "
+      "Scenario.solver gives a copy; Scenario.set('solver.rtol', ...) changes a scenario's.")
+      .def(py::init<>(), "The defaults: bdf, rtol 1e-6, atol 1e-9, analytic Jacobian, auto.")
       .def_property_readonly(
-          "is_network", [](const Scenario& s) { return s.network; },
+          "method", [](const SolverOptions& o) { return std::string(ToString(o.method)); },
+          "'bdf' (stiff problems) or 'adams'.")
+      .def_readonly("rtol", &SolverOptions::rtol, "The relative tolerance [-], in [1e-14, 1).")
+      .def_readonly("atol", &SolverOptions::atol,
+                    "The absolute tolerance on positions [m] and velocities [m/s].")
+      .def_property_readonly(
+          "jacobian", [](const SolverOptions& o) { return std::string(ToString(o.jacobian)); },
+          "The Newton iteration's Jacobian: 'analytic' or 'difference_quotient'.")
+      .def_readonly("max_step", &SolverOptions::max_step,
+                    "The largest internal step [s]; 0: no limit.")
+      .def_readonly("max_steps", &SolverOptions::max_steps,
+                    "The internal steps one run may take (a guard) [-].")
+      .def_property_readonly(
+          "linear_solver",
+          [](const SolverOptions& o) { return std::string(ToString(o.linear_solver)); },
+          "'auto', 'small', 'dense', 'band' or 'sparse': how the Newton systems are solved.")
+      .def("__repr__", [](const SolverOptions& o) {
+        return "<musclesim.SolverOptions " + std::string(ToString(o.method)) + " rtol " +
+               FormatNumber(o.rtol) + " atol " + FormatNumber(o.atol) + ">";
+      });
+  py::class_<RunStats>(
+      m, "RunStats",
+      "A run's solver counters (Result.run_stats; the same as the dict Result.stats): steps, "
+      "rhs_evals, jac_evals, linear_setups, newton_iters, newton_conv_fails, error_test_fails, "
+      "wall_seconds [s], final_time [s], linear_solver, status, message.")
+      .def_readonly("steps", &RunStats::steps, "Internal steps taken [-].")
+      .def_readonly("rhs_evals", &RunStats::rhs_evals,
+                    "Right-hand side evaluations, a difference-quotient Jacobian's included [-].")
+      .def_readonly("jac_evals", &RunStats::jac_evals, "Jacobian evaluations [-].")
+      .def_readonly("linear_setups", &RunStats::linear_setups,
+                    "Newton matrix factorisations [-].")
+      .def_readonly("newton_iters", &RunStats::newton_iters, "Newton iterations [-].")
+      .def_readonly("newton_conv_fails", &RunStats::newton_conv_fails,
+                    "Newton convergence failures [-].")
+      .def_readonly("error_test_fails", &RunStats::error_test_fails,
+                    "Steps the local error test rejected [-].")
+      .def_readonly("wall_seconds", &RunStats::wall_seconds, "Wall-clock time of the run [s].")
+      .def_readonly("final_time", &RunStats::final_time, "Where the run ended [s].")
+      .def_property_readonly(
+          "linear_solver", [](const RunStats& s) { return std::string(ToString(s.linear_solver)); },
+          "The linear solver used (never 'auto').")
+      .def_property_readonly(
+          "status", [](const RunStats& s) { return std::string(ToString(s.status)); },
+          "'completed', 'limit' (a length limit reached) or 'failed'.")
+      .def_readonly("message", &RunStats::message,
+                    "Why the run ended early (a limit or a failure); '' when it completed.")
+      .def(py::pickle(
+          [](const RunStats& s) {
+            return py::make_tuple(s.steps, s.rhs_evals, s.jac_evals, s.linear_setups,
+                                  s.newton_iters, s.newton_conv_fails, s.error_test_fails,
+                                  s.wall_seconds, s.final_time, static_cast<int>(s.linear_solver),
+                                  static_cast<int>(s.status), s.message);
+          },
+          [](const py::tuple& t) {
+            if (t.size() != 12) throw std::runtime_error("not a pickled musclesim.RunStats");
+            RunStats s;
+            s.steps = t[0].cast<long>();
+            s.rhs_evals = t[1].cast<long>();
+            s.jac_evals = t[2].cast<long>();
+            s.linear_setups = t[3].cast<long>();
+            s.newton_iters = t[4].cast<long>();
+            s.newton_conv_fails = t[5].cast<long>();
+            s.error_test_fails = t[6].cast<long>();
+            s.wall_seconds = t[7].cast<double>();
+            s.final_time = t[8].cast<double>();
+            s.linear_solver = static_cast<LinearSolverKind>(t[9].cast<int>());
+            s.status = static_cast<RunStatus>(t[10].cast<int>());
+            s.message = t[11].cast<std::string>();
+            return s;
+          }));
+}
+
+void BindParameter(py::module_& m) {
+  py::class_<BoundParameter>(
+      m, "Parameter",
+      "A handle on one number of a Scenario (Scenario.parameter(path)), named by its key path "
+      "in the scenario's file form ('model.f_iso', 'load[0].value', 'nodes[1].mass', ...): "
+      "`value` reads it and, assigned, sets it as Scenario.set does (checked at once; a "
+      "refused value leaves the scenario unchanged). In the key's unit.")
+      .def_readonly("path", &BoundParameter::path, "The key path, written one way.")
+      .def_property(
+          "value",
+          [](const BoundParameter& p) {
+            const PyScenario& s = ScenarioArgument(p.scenario, "parameter");
+            return s.scenario.parameter(p.path).Get(s.scenario);
+          },
+          [](BoundParameter& p, const py::object& value) { p.scenario.attr("set")(p.path, value); },
+          "The value in the scenario [the key's unit]; assigning sets it.")
+      .def("__repr__", [](const BoundParameter& p) {
+        const PyScenario& s = ScenarioArgument(p.scenario, "parameter");
+        return "<musclesim.Parameter " + p.path + " = " +
+               FormatNumber(s.scenario.parameter(p.path).Get(s.scenario)) + ">";
+      });
+}
+
+}  // namespace
+
+void BindScenario(py::module_& m) {
+  BindResult(m);
+  BindSolverTypes(m);
+  BindParameter(m);
+  py::class_<PyScenario>(
+      m, "Scenario",
+      "A validated scenario in memory (a single actuator, or a network on a line, README "
+      "\"Scenario files\"), read from a file or a dict, with the values set() since. SI units "
+      "as in the files.")
+      .def_property_readonly(
+          "is_network", [](const PyScenario& s) { return s.scenario.form == ScenarioForm::kNetwork; },
           "True for a network (a top-level `nodes:` key), False for a single actuator.")
       .def_property_readonly(
-          "name", [](const Scenario& s) { return s.name; }, "The scenario's `name:` ('' if none).")
+          "name", [](const PyScenario& s) { return s.scenario.name; },
+          "The scenario's `name:` ('' if none).")
       .def_property_readonly(
-          "overrides", [](const Scenario& s) { return s.overrides; },
-          "The 'key=value' overrides applied to the file, in order.")
+          "overrides", [](const PyScenario& s) { return s.overrides; },
+          "The 'key=value' values set since the file or dict was read, in order.")
       .def_property_readonly(
-          "_path", [](const Scenario& s) { return s.path; },
-          "The file read (for a dict, a temporary file the scenario owns): run_many's job.")
+          "solver", [](const PyScenario& s) { return s.scenario.solver; },
+          "A copy of the solver's options (SolverOptions).")
       .def_property_readonly(
-          "_display", [](const Scenario& s) { return s.display; },
-          "The file's name in messages: the path, or the name given to scenario_from_dict.")
+          "_path", [](const PyScenario& s) { return s.path; },
+          "The file read (absolute), or '' for a dict.")
+      .def_property_readonly(
+          "_display", [](const PyScenario& s) { return s.display; },
+          "The scenario's name in messages: the path as given, or the dict's name.")
+      .def(
+          "parameter",
+          [](const py::object& self, const std::string& path) {
+            const PyScenario& s = ScenarioArgument(self, "parameter");
+            const Parameter handle = s.scenario.parameter(path);  // ParameterError if none
+            return BoundParameter{self, handle.path()};
+          },
+          py::arg("path"),
+          "The handle on the number at key path `path` (ParameterError when it names no "
+          "number of this scenario): handle.value reads it, handle.value = v sets it.")
       .def(py::pickle(
-          // a file's scenario as its path and overrides; a dict's as its text (its temporary
-          // file is this process's)
-          [](const Scenario& s) {
-            if (s.text) {
-              const Scenario fixed = s;  // taken with the GIL
+          // a file's scenario as its path and values; a dict's as its YAML text
+          [](const PyScenario& s) {
+            if (s.document) {
+              const PyScenario fixed = s;  // taken with the GIL
               std::string text;
               {
                 py::gil_scoped_release release;
-                text = fixed.Located(
-                    [&] { return RewriteScenario(fixed.path, fixed.overrides, {}); });
+                text = fixed.ToYaml();
               }
               return py::make_tuple(py::none(), s.display, std::vector<std::string>{}, text);
             }
@@ -204,83 +275,76 @@ void BindScenario(py::module_& m) {
           [](const py::tuple& state) {
             if (state.size() != 4) throw std::runtime_error("not a pickled musclesim.Scenario");
             const std::string display = state[1].cast<std::string>();
-            if (!state[3].is_none()) return FromText(state[3].cast<std::string>(), display);
-            Scenario scenario;
-            scenario.path = state[0].cast<std::string>();
-            scenario.display = display;
-            scenario.overrides = state[2].cast<std::vector<std::string>>();
+            if (!state[3].is_none()) {
+              return DocumentPyScenario(ParseDocument(display, state[3].cast<std::string>()),
+                                        display);
+            }
+            PyScenario s;
+            s.path = state[0].cast<std::string>();
+            s.display = display;
+            s.overrides = state[2].cast<std::vector<std::string>>();
             py::gil_scoped_release release;
-            scenario.Validate();
-            return scenario;
+            s.scenario = s.Read({});
+            return s;
           }))
-      .def(
-          "copy", [](const Scenario& s) { return s; },
-          "An independent copy: set() on one leaves the other as it is (copy.copy and "
-          "copy.deepcopy give the same).")
-      .def("__copy__", [](const Scenario& s) { return s; })
-      .def("__deepcopy__", [](const Scenario& s, const py::object&) { return s; },
+      .def("copy", [](const PyScenario& s) { return s; },
+           "An independent copy: set() on one leaves the other as it is (copy.copy and "
+           "copy.deepcopy give the same).")
+      .def("__copy__", [](const PyScenario& s) { return s; })
+      .def("__deepcopy__", [](const PyScenario& s, const py::object&) { return s; },
            py::arg("memo"))
       .def(
           "to_yaml",
-          [](const Scenario& s) {
-            const Scenario fixed = s;  // taken with the GIL
+          [](const PyScenario& s) {
+            const PyScenario fixed = s;  // taken with the GIL
             py::gil_scoped_release release;
-            return fixed.Located([&] { return RewriteScenario(fixed.path, fixed.overrides, {}); });
+            return fixed.ToYaml();
           },
           "The scenario as a YAML file's text, its set() values written in: what `musclesim "
           "run` runs alike (the original's comments are not kept).")
       .def(
-          "_with_overrides",
-          [](const Scenario& s, const std::vector<std::string>& more) {
-            Scenario copy = s;  // shares a dict's temporary file, which lives while either does
-            copy.overrides.insert(copy.overrides.end(), more.begin(), more.end());
-            py::gil_scoped_release release;
-            copy.Validate();
-            return copy;
-          },
-          py::arg("overrides"),
-          "A validated copy with the 'key=value' texts `overrides` applied after its own "
-          "(identification's estimated scenario).")
-      .def(
           "set",
-          [](Scenario& s, const std::string& key, const py::object& value) -> Scenario& {
-            // validated as a copy without the GIL, taken on only if valid: a rejected value
-            // leaves the scenario as it was, and no other thread sees it half changed
-            Scenario changed = s;
-            changed.overrides.push_back(OverrideText(key, value));
-            {
-              py::gil_scoped_release release;
-              changed.Validate();
-            }
+          [](PyScenario& s, const std::string& key, const py::object& value) -> PyScenario& {
+            // changed on a copy, taken on only if valid: a rejected value leaves the scenario
+            // as it was, and no other thread sees it half changed
+            PyScenario changed = s;
+            changed.Set(key, value);
             s = std::move(changed);
             return s;
           },
           py::arg("key"), py::arg("value"), py::return_value_policy::reference_internal,
-          "Overrides one value by its dotted key path as `musclesim run --set KEY=VALUE` does "
-          "(e.g. 'load[0].after', 'model.velocity.n', 'elements[1].activation.after', in the "
-          "file's units) and validates the scenario at once: InputError (with .key) for a key "
-          "that is not there or a value that breaks a rule, leaving the scenario unchanged. "
-          "Returns the scenario.")
+          "Sets one value by its dotted key path as `musclesim run --set KEY=VALUE` does (e.g. "
+          "'load[0].after', 'model.velocity.n', 'elements[1].activation.after', in the file's "
+          "units) and validates the scenario at once: a number goes in place through the key's "
+          "parameter handle, a word (a method, a waveform's type) reads the scenario again. "
+          "InputError (with .key) for a key that is not there or a value that breaks a rule, "
+          "leaving the scenario unchanged. Returns the scenario.")
       .def("run", &Run, py::arg("sensitivities") = py::none(),
            "Integrates the scenario (GIL released) as `musclesim run` does and returns a "
-           "Result. `sensitivities`: dotted paths of numeric parameters ('model.f_iso', "
-           "'load[0].value', 'models.muscle.f_iso', ...) whose forward sensitivities add the "
-           "columns d_<column>/d_<path>, as `musclesim run --sensitivity PATH` writes them; a "
-           "scenario's own `sensitivities:` list adds its own. A solver failure is a result "
-           "(status 'failed'), not an exception.")
-      .def("__repr__", [](const Scenario& s) {
-        return "<musclesim.Scenario '" + s.name + "' from " + s.display +
-               (s.network ? " (network)" : " (single actuator)") + ">";
+           "Result, its columns filled in memory. `sensitivities`: dotted paths of numeric "
+           "parameters ('model.f_iso', 'load[0].value', 'models.muscle.f_iso', ...) whose "
+           "forward sensitivities add the columns d_<column>/d_<path>, as `musclesim run "
+           "--sensitivity PATH` writes them; a scenario's own `sensitivities:` list adds its "
+           "own. A solver failure is a result (status 'failed'), not an exception.")
+      .def("__repr__", [](const PyScenario& s) {
+        return "<musclesim.Scenario '" + s.scenario.name + "' from " + s.display +
+               (s.scenario.form == ScenarioForm::kNetwork ? " (network)" : " (single actuator)") +
+               ">";
       });
 
-  m.def("load_scenario", &Load, py::arg("path"), py::arg("set") = py::none(),
+  m.def("load_scenario", &LoadPyScenario, py::arg("path"), py::arg("set") = py::none(),
         "Reads and validates the scenario file `path` (single actuator or network), applying "
         "`set` first: a list of 'key=value' texts as `musclesim run --set` takes them, or a "
         "dict {key: value}. InputError (with .key and .location 'file:line:column') for bad "
         "input.");
-  m.def("_scenario_from_text", &FromText, py::arg("text"), py::arg("name"),
-        "A scenario from YAML (or JSON) text; messages name the file `name`. "
-        "scenario_from_dict is the public way.");
+  m.def(
+      "_scenario_from_dict",
+      [](const py::object& dict, const std::string& name) {
+        return DocumentPyScenario(DocumentFrom(dict, ""), name);
+      },
+      py::arg("dict"), py::arg("name"),
+      "A scenario from a dict read as a file's document (no text in between); messages name "
+      "it `name`. scenario_from_dict is the public way.");
 }
 
 }  // namespace musclesim::python

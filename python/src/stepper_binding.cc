@@ -3,6 +3,7 @@
 // prebuilt status strings, so that a 1 kHz loop spends its time integrating.
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,12 +12,10 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
-#include "musclesim/io/network_scenario.h"
-#include "musclesim/io/run_scenario.h"
-#include "musclesim/io/scenario.h"
+#include "musclesim/scenario/run_columns.h"
 #include "musclesim/solver/stepper.h"
-#include "network_values.h"
 #include "overrides.h"
+#include "py_scenario.h"
 
 namespace musclesim::python {
 
@@ -24,40 +23,34 @@ namespace py = pybind11;
 
 namespace {
 
-// The scenario `path` (either form) with `sets`, ready to step from its time.start.
-std::unique_ptr<Stepper> MakeStepper(const std::string& path, const std::vector<std::string>& sets,
-                                     std::optional<double> rtol, std::optional<double> atol) {
-  if (IsNetworkScenario(path)) {
-    NetworkScenarioSpec spec = LoadNetworkScenario(path, sets);
-    if (rtol) spec.solver.rtol = *rtol;
-    if (atol) spec.solver.atol = *atol;
-    return std::make_unique<Stepper>(spec.Build(), spec.solver,
-                                     StepperStart{spec.t_start, {}, spec.limits});
-  }
+// `scenario` (either form), ready to step from its time.start with its limits; `rtol` and
+// `atol` replace its tolerances.
+std::unique_ptr<Stepper> MakeStepper(Scenario scenario, std::optional<double> rtol,
+                                     std::optional<double> atol) {
+  if (rtol) scenario.solver.rtol = *rtol;
+  if (atol) scenario.solver.atol = *atol;
   // a single actuator steps as its network (docs/model.md 7.4: node `tip`, element
-  // `actuator`) from the initial state and with the length limits its run has
-  ScenarioSpec spec = LoadScenario(path, sets);
-  if (rtol) spec.solver.rtol = *rtol;
-  if (atol) spec.solver.atol = *atol;
-  const ActuatorSystem system = BuildSystem(spec);
-  NetworkRunRequest request = NetworkRequestOf(system, spec.Request());
-  return std::make_unique<Stepper>(
-      system.network(), spec.solver,
-      StepperStart{request.t_start, std::move(request.initial_state), std::move(request.limits)});
+  // `actuator`), from its initial state
+  return std::make_unique<Stepper>(scenario.Build(), scenario.solver,
+                                   StepperStart{scenario.t_start, {}, scenario.limits});
 }
 
 class PyStepper {
  public:
-  PyStepper(const std::string& path, const py::object& overrides, std::optional<double> rtol,
-            std::optional<double> atol) {
-    const std::vector<std::string> sets = OverridesFrom(overrides);
+  PyStepper(const Scenario& scenario, std::optional<double> rtol, std::optional<double> atol) {
     {
       py::gil_scoped_release release;
-      stepper_ = MakeStepper(path, sets, rtol, atol);
+      stepper_ = MakeStepper(scenario, rtol, atol);
     }
-    for (const std::string& column : NumericNetworkColumns(stepper_->system())) {
-      columns_.append(py::str(column));
+    const RunColumns layout(scenario, stepper_->system(), ScenarioForm::kNetwork);
+    for (std::size_t c = 1; c < layout.size(); ++c) {
+      if (!layout.is_phase(c)) {
+        columns_.append(py::str(layout.names()[c]));
+        numeric_.push_back(c);
+      }
     }
+    layout_.emplace(layout);
+    row_.resize(layout.size());
     statuses_[static_cast<int>(RunStatus::kCompleted)] = py::str("completed");
     statuses_[static_cast<int>(RunStatus::kLimit)] = py::str("limit");
     statuses_[static_cast<int>(RunStatus::kFailed)] = py::str("failed");
@@ -105,11 +98,10 @@ class PyStepper {
 
   py::dict Sample() const {
     const auto lock = Exclusive();
-    values_.clear();
-    AppendNumericNetworkValues(stepper_->system(), stepper_->sample(), values_);
+    layout_->Fill(stepper_->time(), stepper_->sample(), row_.data());
     py::dict sample;
     sample["t"] = stepper_->time();
-    for (std::size_t k = 0; k < values_.size(); ++k) sample[columns_[k]] = values_[k];
+    for (std::size_t k = 0; k < numeric_.size(); ++k) sample[columns_[k]] = row_[numeric_[k]];
     return sample;
   }
 
@@ -150,8 +142,10 @@ class PyStepper {
   mutable std::mutex mutex_;
   std::unique_ptr<Stepper> stepper_;
   py::list columns_;          // names of sample()'s values after t, in the CSV's order
+  std::vector<std::size_t> numeric_;   // their columns in layout_
+  std::optional<RunColumns> layout_;   // the network's columns
   py::str statuses_[3];       // by RunStatus
-  mutable std::vector<double> values_;  // sample()'s scratch
+  mutable std::vector<double> row_;    // sample()'s scratch
 };
 
 }  // namespace
@@ -163,38 +157,35 @@ void BindStepper(py::module_& m) {
                         "of actuators no controller drives, advance again. A single-actuator "
                         "scenario steps as its network (docs/model.md 7.4): node `ground` "
                         "fixed at 0, node `tip` (its position is the length), element "
-                        "`actuator` (and `damper`, `spring` when nonzero). Times in s, lengths "
+                        "`actuator`, `damper` and `spring` (the last two of coefficient 0 when the scenario gives none). Times in s, lengths "
                         "in m, tensions in N, activations in [0, 1].")
-      .def(py::init<const std::string&, const py::object&, std::optional<double>,
-                    std::optional<double>>(),
-           py::arg("path"), py::arg("set") = py::none(), py::arg("rtol") = py::none(),
-           py::arg("atol") = py::none(),
-           "Reads the scenario `path` (a network, or a single actuator), applying `set` first: a "
-           "list of \"key=value\" strings as --set takes them, or a dict {key: value}. `rtol` "
-           "and `atol` (m, m/s) replace the scenario's solver tolerances. Starts at the "
-           "scenario's time.start with its limits; its time.end and output are not used.")
       .def(py::init([](const py::object& scenario, const py::object& overrides,
                        std::optional<double> rtol, std::optional<double> atol) {
-             // a Scenario (load_scenario, scenario_from_dict): its file and its set() values,
-             // then `set`
-             if (!py::hasattr(scenario, "_path") || !py::hasattr(scenario, "overrides")) {
-               // a pathlib.Path (a str takes the constructor above)
-               return std::make_unique<PyStepper>(
-                   PathText(scenario, "Stepper: a scenario file's path or a Scenario"),
-                   overrides, rtol, atol);
+             // a Scenario (load_scenario, scenario_from_dict) with its set() values, then
+             // `set`; or a file's path
+             PyScenario s = py::isinstance<PyScenario>(scenario)
+                                ? scenario.cast<PyScenario>()
+                                : LoadPyScenario(scenario, py::none());
+             if (!overrides.is_none()) {
+               if (py::isinstance<py::dict>(overrides)) {
+                 for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(overrides)) {
+                   s.Set(py::str(key).cast<std::string>(), py::reinterpret_borrow<py::object>(value));
+                 }
+               } else {
+                 const std::vector<std::string> more = OverridesFrom(overrides);
+                 py::gil_scoped_release release;
+                 s.scenario = s.Read(more);
+               }
              }
-             py::list sets;
-             for (const std::string& text : OverridesFrom(scenario.attr("overrides"))) {
-               sets.append(text);
-             }
-             for (const std::string& text : OverridesFrom(overrides)) sets.append(text);
-             return std::make_unique<PyStepper>(scenario.attr("_path").cast<std::string>(), sets,
-                                                rtol, atol);
+             return std::make_unique<PyStepper>(s.scenario, rtol, atol);
            }),
            py::arg("scenario"), py::arg("set") = py::none(), py::arg("rtol") = py::none(),
            py::arg("atol") = py::none(),
-           "The same from a Scenario (load_scenario or scenario_from_dict, with the "
-           "values set() on it), `set` applied after them, or from a pathlib.Path.")
+           "A stepper of `scenario`: a Scenario (load_scenario or scenario_from_dict, with the "
+           "values set() on it) or a scenario file's path (str or pathlib.Path), `set` applied "
+           "after them: a list of \"key=value\" strings as --set takes them, or a dict {key: "
+           "value}. `rtol` and `atol` (m, m/s) replace the scenario's solver tolerances. Starts "
+           "at the scenario's time.start with its limits; its time.end and output are not used.")
       .def("advance", &PyStepper::Advance, py::arg("t"),
            "Integrates from `time` to `t` [s] (GIL released) and returns \"completed\" (time "
            "is then t), \"limit\" (a length limit was reached; no further advance) or "

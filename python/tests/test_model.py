@@ -238,7 +238,7 @@ def test_bad_model_dicts_raise_the_readers_errors(change, error, message):
     change(params)
     with pytest.raises(error, match=message) as info:
         ms.Model(params)
-    assert "<model dict>:" in str(info.value)  # located like a file's error
+    assert "(<model dict>)" in str(info.value)  # named like a file, without lines
 
 
 def test_bad_model_files_name_the_file(tmp_path):

@@ -13,8 +13,11 @@ constexpr EnumName<Phase> kPhaseNames[] = {
 
 std::string_view ToString(Phase phase) { return ToString(kPhaseNames, phase); }
 
-RunColumns::RunColumns(const Scenario& scenario, const NetworkSystem& system) {
-  if (scenario.form == ScenarioForm::kActuator) {
+RunColumns::RunColumns(const Scenario& scenario, const NetworkSystem& system)
+    : RunColumns(scenario, system, scenario.form) {}
+
+RunColumns::RunColumns(const Scenario& scenario, const NetworkSystem& system, ScenarioForm form) {
+  if (form == ScenarioForm::kActuator) {
     AddActuatorView(scenario, system);
   } else {
     AddNetworkView(scenario, system);

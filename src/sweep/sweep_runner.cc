@@ -54,6 +54,7 @@ SweepRow PointRunner::Run(long index) {
   SweepRow row;
   row.index = index;
   row.values = PointValues(s.spec, index);
+  row.numbers = PointNumbers(s.spec, index);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   row.metrics.assign(s.spec.metrics.size(), nan);
 

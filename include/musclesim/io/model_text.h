@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "musclesim/io/document.h"
 #include "musclesim/io/model_yaml.h"
 
 namespace musclesim {
@@ -14,5 +15,9 @@ namespace musclesim {
 // InputError naming `source` (in place of a file name):line:column, the key path
 // ("model.velocity.n"), the value and the rule broken.
 ModelSpec ParseModelSpec(const std::string& source, const std::string& text);
+
+// A model block built in code as a document (io/document.h: the Python module's dict), read
+// as a file's `model:` block; `source` names it in messages.
+ModelSpec ReadModelSpec(const Document& block, const std::string& source);
 
 }  // namespace musclesim

@@ -39,6 +39,9 @@ class RunColumns {
   // The columns of `scenario`'s runs; `system` must be scenario.Build()'s (or one with the
   // same parts). Keeps no reference to either.
   RunColumns(const Scenario& scenario, const NetworkSystem& system);
+  // The same in the view of `form` rather than the scenario's own (a single actuator seen as
+  // its network, say).
+  RunColumns(const Scenario& scenario, const NetworkSystem& system, ScenarioForm form);
 
   std::size_t size() const { return names_.size(); }
   const std::vector<std::string>& names() const { return names_; }

@@ -29,6 +29,7 @@ std::string_view ToString(RowStatus status);
 struct SweepRow {
   long index = 0;                   // the point [-]
   std::vector<std::string> values;  // its axis values, as the summary writes them [-]
+  std::vector<double> numbers;      // the same as numbers (NaN for a word) [their units]
   RowStatus status = RowStatus::kOk;
   std::vector<double> metrics;      // spec.metrics' values, NaN where there is none (a failed
                                     // or invalid point, a length never reached) [their units]

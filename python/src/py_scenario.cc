@@ -1,0 +1,115 @@
+#include "py_scenario.h"
+
+#include <filesystem>
+
+#include "musclesim/core/errors.h"
+#include "musclesim/io/scenario_rewrite.h"
+#include "musclesim/io/scenario_yaml.h"
+#include "overrides.h"
+
+namespace py = pybind11;
+
+namespace musclesim::python {
+
+namespace {
+
+// A number set() sets through its key's parameter handle; anything else goes to the document.
+bool IsNumber(const py::handle& value) {
+  if (py::isinstance<py::bool_>(value)) return false;
+  if (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value)) return true;
+  const py::object numpy = py::module_::import("numpy");
+  return py::isinstance(value, numpy.attr("number")) && !py::isinstance(value, numpy.attr("bool_"));
+}
+
+}  // namespace
+
+Scenario PyScenario::Read(const std::vector<std::string>& more) const {
+  std::vector<std::string> all = overrides;
+  all.insert(all.end(), more.begin(), more.end());
+  if (document) return ReadScenario(*document, display, all);
+  try {
+    return LoadScenario(path, all);
+  } catch (const InputError& e) {
+    // messages name the file as the user gave it
+    std::string message = e.what();
+    for (std::size_t at = message.find(path); at != std::string::npos;
+         at = message.find(path, at + display.size())) {
+      message.replace(at, path.size(), display);
+    }
+    throw InputError(message);
+  }
+}
+
+std::string PyScenario::ToYaml() const {
+  return document ? RewriteScenario(*document, display, overrides, {})
+                  : RewriteScenario(path, overrides, {});
+}
+
+void PyScenario::Set(const std::string& key, const py::object& value) {
+  const std::string text = OverrideText(key, value);  // TypeError for a list, say
+  // a number at a key that holds one: in place, through its handle, without reading again
+  if (IsNumber(value)) {
+    std::optional<Parameter> handle;
+    try {
+      handle = scenario.parameter(key);
+    } catch (const ParameterError&) {
+      // no number there: the document's reader says what is wrong, as for --set
+    }
+    if (handle) {
+      const double number = value.attr("__float__")().cast<double>();
+      Scenario changed = scenario;
+      {
+        py::gil_scoped_release release;
+        try {
+          handle->Set(changed, number);
+        } catch (const ParameterError& error) {
+          throw InputError(error.path() + " = " + error.value() + " (set): " + error.rule());
+        }
+      }
+      scenario = std::move(changed);
+      overrides.push_back(text);
+      return;
+    }
+  }
+  // a word (a method, a waveform's type), or a key with no number: read again with it
+  Scenario changed;
+  {
+    py::gil_scoped_release release;
+    changed = Read({text});
+  }
+  scenario = std::move(changed);
+  overrides.push_back(text);
+}
+
+PyScenario LoadPyScenario(const py::object& given, const py::object& set) {
+  const std::string path = PathText(given, "load_scenario(path)");
+  PyScenario s;
+  // absolute: the scenario stays valid across os.chdir; messages keep the user's name
+  s.path = std::filesystem::absolute(path).lexically_normal().string();
+  s.display = path;
+  s.overrides = OverridesFrom(set);
+  py::gil_scoped_release release;
+  s.scenario = LoadScenario(path, s.overrides);
+  return s;
+}
+
+PyScenario DocumentPyScenario(Document document, const std::string& name) {
+  PyScenario s;
+  s.document = std::make_shared<const Document>(std::move(document));
+  s.display = name;
+  py::gil_scoped_release release;
+  s.scenario = ReadScenario(*s.document, name);
+  return s;
+}
+
+const PyScenario& ScenarioArgument(const py::handle& object, const std::string& what) {
+  try {
+    return object.cast<const PyScenario&>();
+  } catch (const py::cast_error&) {
+    throw py::type_error(what + " must be a musclesim.Scenario (load_scenario or "
+                         "scenario_from_dict), not " +
+                         py::str(py::type::of(object).attr("__name__")).cast<std::string>());
+  }
+}
+
+}  // namespace musclesim::python
