@@ -1,6 +1,6 @@
-// A scenario file loaded, changed in code and run: the force-velocity relation measured
-// by re-running scenarios/concentric.yaml with a range of loads, each through the same
-// validated ScenarioSpec with one field changed.
+// A scenario file loaded, changed in code and run: the force-velocity relation measured by
+// re-running scenarios/concentric.yaml with a range of loads, each set through the load's
+// parameter handle (the value itself, checked as the file's would be: no text).
 //   build/examples/scenario_in_code scenarios/concentric.yaml
 #include <cstdio>
 #include <exception>
@@ -12,19 +12,22 @@ int main(int argc, char** argv) {
   using namespace musclesim;
   const std::string path = argc > 1 ? argv[1] : "scenarios/concentric.yaml";
   try {
-    ScenarioSpec spec = LoadScenario(path);
+    Scenario scenario = LoadScenario(path);
+    const Parameter load = scenario.parameter("load[0].after");  // the step load, in N
     std::printf("%8s %22s\n", "load_N", "shortening_m/s_at_0.1s");
-    for (double load = 10.0; load <= 90.0; load += 20.0) {
-      spec.loads.at(0).force.after = load;  // the step load of the file, now `load` newtons
-      const RunResult result = RunScenario(spec);
-      if (result.stats.status == RunStatus::kFailed) {
-        std::fprintf(stderr, "%s\n", result.stats.message.c_str());
+    for (double force = 10.0; force <= 90.0; force += 20.0) {
+      load.Set(scenario, force);
+      const RecordedRun run = RunScenario(scenario);
+      if (run.stats.status == RunStatus::kFailed) {
+        std::fprintf(stderr, "%s\n", run.stats.message.c_str());
         return 3;
       }
-      // velocity 50 ms after the switch-on, when the isotonic phase has settled
-      for (const TrajectoryPoint& p : result.trajectory) {
-        if (p.t >= 0.1) {
-          std::printf("%8.1f %22.6f\n", load, p.sample.shortening_velocity);
+      // the single actuator's columns: t, length, shortening_velocity, ...; its velocity
+      // 50 ms after the switch-on, when the isotonic phase has settled
+      const std::vector<double>& t = run.values[0];
+      for (std::size_t row = 0; row < t.size(); ++row) {
+        if (t[row] >= 0.1) {
+          std::printf("%8.1f %22.6f\n", force, run.values[2][row]);
           break;
         }
       }

@@ -3,6 +3,7 @@
 // counters as types.
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -332,6 +333,23 @@ void BindScenario(py::module_& m) {
                ">";
       });
 
+  m.def(
+      "_cpp_run_seconds",
+      [](const PyScenario& s, int repeats) {
+        const Scenario scenario = s.scenario;
+        std::vector<double> seconds;
+        py::gil_scoped_release release;
+        for (int k = 0; k < repeats; ++k) {
+          const auto start = std::chrono::steady_clock::now();
+          const RecordedRun run = RunScenario(scenario);
+          seconds.push_back(
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        }
+        return seconds;
+      },
+      py::arg("scenario"), py::arg("repeats"),
+      "The reference for Scenario.run()'s overhead (bench/python_run_overhead.py): the same "
+      "run, recorded in memory by C++ alone `repeats` times; each one's wall time [s].");
   m.def("load_scenario", &LoadPyScenario, py::arg("path"), py::arg("set") = py::none(),
         "Reads and validates the scenario file `path` (single actuator or network), applying "
         "`set` first: a list of 'key=value' texts as `musclesim run --set` takes them, or a "

@@ -51,42 +51,66 @@ Exit codes: 0 completed (or stopped at a length limit), 2 invalid input, 3 solve
 (or a length reached zero), 1 anything else.
 )";
 
-// Passes every row on to the CSV, keeping each actuator's fastest shortening or
-// lengthening: beyond its model's v_max, g(v) is the paper's power law extrapolated.
+// Passes every row on to the CSV writer, keeping each actuator's fastest shortening or
+// lengthening, read from the row's shortening-velocity columns: beyond its model's v_max,
+// g(v) is the paper's power law extrapolated.
 class PeakSpeeds final : public NetworkSink {
  public:
-  PeakSpeeds(NetworkSink& next, const Scenario& scenario, const NetworkSystem& system)
-      : next_(next), scenario_(scenario), system_(system), speed_(system.elements().size(), 0.0) {}
+  PeakSpeeds(RunCsvWriter& next, const Scenario& scenario, const NetworkSystem& system)
+      : next_(next), scenario_(scenario), system_(system) {
+    const std::vector<std::string>& names = next.columns().names();
+    for (std::size_t e = 0; e < system.elements().size(); ++e) {
+      const Element& element = system.elements()[e];
+      if (element.kind != ElementKind::kActuator) continue;
+      const std::string column = scenario.form == ScenarioForm::kActuator
+                                     ? "shortening_velocity"
+                                     : element.name + ".shortening_velocity";
+      const auto at = std::find(names.begin(), names.end(), column);
+      watched_.push_back({static_cast<int>(e), static_cast<std::size_t>(at - names.begin()), 0.0});
+    }
+  }
+
+  bool RecordState(double t, const double* y) override {
+    if (!next_.RecordState(t, y)) return false;
+    Update();
+    return true;
+  }
 
   void Record(double t, const NetworkSample& sample) override {
-    for (std::size_t e = 0; e < speed_.size(); ++e) {
-      speed_[e] = std::max(speed_[e], std::abs(sample.elements[e].lengthening_rate));
-    }
     next_.Record(t, sample);
+    Update();
   }
 
   std::vector<std::string> Notes() const {
     std::vector<std::string> notes;
-    for (std::size_t e = 0; e < speed_.size(); ++e) {
-      const Element& element = system_.elements()[e];
-      if (element.kind != ElementKind::kActuator) continue;
+    for (const Watched& w : watched_) {
+      const Element& element = system_.elements()[static_cast<std::size_t>(w.element)];
       const double v_max = element.model->params().velocity.v_max;
-      if (!(speed_[e] > v_max)) continue;
+      if (!(w.speed > v_max)) continue;
       // the single actuator is the scenario's only one: its note names none
       const std::string who =
           scenario_.form == ScenarioForm::kActuator ? "" : " of " + element.name;
       notes.push_back("note: |shortening velocity|" + who + " reached " +
-                      FormatNumber(speed_[e]) + " m/s, beyond v_max = " + FormatNumber(v_max) +
+                      FormatNumber(w.speed) + " m/s, beyond v_max = " + FormatNumber(v_max) +
                       " m/s, where g(v) is the paper's power law extrapolated");
     }
     return notes;
   }
 
  private:
-  NetworkSink& next_;
+  struct Watched {
+    int element;
+    std::size_t column;  // its shortening velocity in the writer's rows
+    double speed;        // the fastest so far [m/s]
+  };
+  void Update() {
+    for (Watched& w : watched_) w.speed = std::max(w.speed, std::abs(next_.last()[w.column]));
+  }
+
+  RunCsvWriter& next_;
   const Scenario& scenario_;
   const NetworkSystem& system_;
-  std::vector<double> speed_;  // per element [m/s]
+  std::vector<Watched> watched_;
 };
 
 std::string Label(const Scenario& scenario) {

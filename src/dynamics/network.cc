@@ -1,5 +1,7 @@
 #include "musclesim/dynamics/network.h"
 
+#include "dynamics/element_tension.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -129,6 +131,9 @@ void NetworkSystem::Resolve() {
       kinks_.push_back({Kink::kExcitation, static_cast<int>(e), 0.0});
     }
     links_.push_back(link);
+    const bool inert = (element.kind == ElementKind::kDamper && element.damping == 0.0) ||
+                       (element.kind == ElementKind::kSpring && element.stiffness == 0.0);
+    if (!inert) active_links_.push_back(static_cast<int>(e));
     if (element.kind == ElementKind::kTendon) {
       kinks_.push_back({Kink::kLength, static_cast<int>(e), element.slack_length});
     } else if (element.kind == ElementKind::kActuator && element.model->params().passive.k_p > 0.0) {
@@ -176,6 +181,19 @@ void NetworkSystem::Resolve() {
                          "need at least one free node (one with a mass): nothing would move");
   }
   ResolveControllers(states);
+  FindSingleNode();
+}
+
+void NetworkSystem::FindSingleNode() {
+  if (free_nodes_.size() != 1 || !activations_.empty() || !controllers_.empty()) return;
+  const int free = free_nodes_.front().node;
+  for (const int e : active_links_) {
+    const Link& link = links_[e];
+    const int other = link.to == free ? link.from : link.to;
+    if (ends_[other].kind != NodeKind::kFixed) return;
+    anchored_.push_back({e, ends_[other].position, link.to == free ? 1 : -1});
+  }
+  single_node_ = true;
 }
 
 void NetworkSystem::BuildPattern() {
@@ -326,47 +344,36 @@ double NetworkSystem::KinkValue(const Kink& kink, double t, const double* y) con
   return 0.0;
 }
 
-NetworkSystem::Tension NetworkSystem::TensionOf(int e, double t, double l, double ldot,
-                                                const double* y) const {
-  const Element& element = elements_[e];
-  switch (element.kind) {
-    case ElementKind::kActuator: {
-      const int state = links_[e].activation;
-      const double u = state >= 0                ? y[state]
-                       : links_[e].loop >= 0     ? ControlOutput(e, t, y)
-                                                 : element.activation.Evaluate(t);
-      const TensionSample s = element.model->Evaluate(l, -ldot, u);
-      return {s.total, s.d_length, -s.d_velocity, s.d_activation};  // v = -ldot
+void NetworkSystem::SingleNodeRightHandSide(double t, const double* y, double* ydot) const {
+  const FreeNode& f = free_nodes_.front();
+  const int s = ends_[f.node].state;
+  const double x = y[s], v = y[s + 1];
+  ydot[s] = v;
+  double force = f.loads.Force(t, x);
+  for (const Anchored& a : anchored_) {
+    // as RightHandSide: l = x_to - x_from, ldot = v_to - v_from (a fixed end's velocity 0)
+    if (a.sign > 0) {
+      force -= TensionOf(a.element, t, x - a.position, v - 0.0, y).value;
+    } else {
+      force += TensionOf(a.element, t, a.position - x, 0.0 - v, y).value;
     }
-    case ElementKind::kSpring:
-      return {element.stiffness * (l - element.rest_length), element.stiffness, 0.0, 0.0};
-    case ElementKind::kTendon: {
-      const double stretch = l - element.slack_length;
-      if (stretch <= 0.0) return {0.0, 0.0, 0.0, 0.0};
-      if (!element.exponential()) {
-        return {element.stiffness * stretch, element.stiffness, 0.0, 0.0};
-      }
-      const double grow = std::exp(element.alpha * stretch);
-      return {element.k * (grow - 1.0), element.k * element.alpha * grow, 0.0, 0.0};
-    }
-    case ElementKind::kDamper:
-      return {element.damping * ldot, 0.0, element.damping, 0.0};
   }
-  return {0.0, 0.0, 0.0, 0.0};
+  ydot[s + 1] = force * f.inverse_mass;
 }
 
 void NetworkSystem::RightHandSide(double t, const double* y, double* ydot) const {
+  if (single_node_) return SingleNodeRightHandSide(t, y, ydot);
   for (const FreeNode& f : free_nodes_) {
     const int s = ends_[f.node].state;
     ydot[s] = y[s + 1];
     ydot[s + 1] = f.loads.Force(t, y[s]);
   }
-  for (std::size_t e = 0; e < links_.size(); ++e) {
+  for (const int e : active_links_) {
     const End& a = ends_[links_[e].from];
     const End& b = ends_[links_[e].to];
     const double l = PositionOf(b, t, y) - PositionOf(a, t, y);
     const double ldot = VelocityOf(b, t, y) - VelocityOf(a, t, y);
-    const double tension = TensionOf(static_cast<int>(e), t, l, ldot, y).value;
+    const double tension = TensionOf(e, t, l, ldot, y).value;
     // +T pulls `from` towards `to`, -T pulls `to` back
     if (a.state >= 0) ydot[a.state + 1] += tension;
     if (b.state >= 0) ydot[b.state + 1] -= tension;
@@ -386,13 +393,13 @@ void NetworkSystem::Jacobian(double t, const double* y, double* values) const {
     values[f.slot_rate] = 1.0;
     values[f.slot_position] = f.loads.ForceSlope();
   }
-  for (std::size_t e = 0; e < links_.size(); ++e) {
+  for (const int e : active_links_) {
     const Link& link = links_[e];
     const End& a = ends_[link.from];
     const End& b = ends_[link.to];
     const double l = PositionOf(b, t, y) - PositionOf(a, t, y);
     const double ldot = VelocityOf(b, t, y) - VelocityOf(a, t, y);
-    const Tension tension = TensionOf(static_cast<int>(e), t, l, ldot, y);
+    const Tension tension = TensionOf(e, t, l, ldot, y);
     // d(force on from)/d(x_from, v_from, x_to, v_to) = (-dT/dl, -dT/dldot, dT/dl, dT/dldot);
     // the force on `to` is the opposite
     const double by_state[4] = {-tension.by_length, -tension.by_rate, tension.by_length,
@@ -440,6 +447,35 @@ std::vector<double> NetworkSystem::Breakpoints(double t0, double t1) const {
   return times;
 }
 
+void NetworkSystem::ObserveElement(int e, double t, const double* y, ElementSample& out) const {
+  const Link& link = links_[e];
+  out.length = PositionOf(ends_[link.to], t, y) - PositionOf(ends_[link.from], t, y);
+  out.lengthening_rate = VelocityOf(ends_[link.to], t, y) - VelocityOf(ends_[link.from], t, y);
+  const Element& element = elements_[e];
+  if (element.kind == ElementKind::kActuator) {
+    if (element.excitation) {
+      out.activation = y[link.activation];
+      out.excitation = ExcitationOf(e, t, y);
+    } else {
+      out.activation = out.excitation =
+          link.loop >= 0 ? ControlOutput(e, t, y) : element.activation.Evaluate(t);
+    }
+    out.parts = element.model->Evaluate(out.length, -out.lengthening_rate, out.activation);
+    out.tension = out.parts.total;
+  } else {
+    out.activation = out.excitation = 0.0;
+    out.parts = TensionSample{};
+    out.tension = TensionOf(e, t, out.length, out.lengthening_rate, y).value;
+  }
+}
+
+double NetworkSystem::LoadOn(int i, double t, const double* y) const {
+  for (const FreeNode& f : free_nodes_) {
+    if (f.node == i) return f.loads.Force(t, PositionOf(ends_[i], t, y));
+  }
+  return 0.0;
+}
+
 void NetworkSystem::Observe(double t, const double* y, NetworkSample& sample) const {
   sample.position.resize(nodes_.size());
   sample.velocity.resize(nodes_.size());
@@ -453,27 +489,7 @@ void NetworkSystem::Observe(double t, const double* y, NetworkSample& sample) co
     sample.load[f.node] = f.loads.Force(t, sample.position[f.node]);
   }
   for (std::size_t e = 0; e < elements_.size(); ++e) {
-    const Link& link = links_[e];
-    ElementSample& out = sample.elements[e];
-    out.length = sample.position[link.to] - sample.position[link.from];
-    out.lengthening_rate = sample.velocity[link.to] - sample.velocity[link.from];
-    const Element& element = elements_[e];
-    if (element.kind == ElementKind::kActuator) {
-      if (element.excitation) {
-        out.activation = y[link.activation];
-        out.excitation = ExcitationOf(static_cast<int>(e), t, y);
-      } else {
-        out.activation = out.excitation = link.loop >= 0
-                                              ? ControlOutput(static_cast<int>(e), t, y)
-                                              : element.activation.Evaluate(t);
-      }
-      out.parts = element.model->Evaluate(out.length, -out.lengthening_rate, out.activation);
-      out.tension = out.parts.total;
-    } else {
-      out.activation = out.excitation = 0.0;
-      out.parts = TensionSample{};
-      out.tension = TensionOf(static_cast<int>(e), t, out.length, out.lengthening_rate, y).value;
-    }
+    ObserveElement(static_cast<int>(e), t, y, sample.elements[e]);
   }
   ObserveControllers(t, y, sample);
 }

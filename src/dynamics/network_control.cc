@@ -7,6 +7,8 @@
 #include <utility>
 
 #include "musclesim/dynamics/network.h"
+
+#include "dynamics/element_tension.h"
 #include "musclesim/core/errors.h"
 #include "part_paths.h"
 

@@ -17,9 +17,10 @@ std::string CsvHeader(const RunColumns& columns) {
 }
 
 void AppendCsvRow(std::string& csv, const RunColumns& columns, const double* row) {
-  for (std::size_t c = 0; c < columns.size(); ++c) {
+  const std::vector<char>& phase = columns.phase_flags();
+  for (std::size_t c = 0; c < phase.size(); ++c) {
     if (c > 0) csv += ',';
-    if (columns.is_phase(c)) {
+    if (phase[c]) {
       csv += ToString(columns.PhaseOf(c, row[c]));
     } else {
       csv += FormatFull(row[c]);
@@ -42,14 +43,24 @@ std::string FormatRunCsv(const RecordedRun& run) {
 
 RunCsvWriter::RunCsvWriter(StreamedOutput& output, const Scenario& scenario,
                            const NetworkSystem& system)
-    : output_(output), columns_(scenario, system), row_(columns_.size()) {
+    : output_(output), system_(system), columns_(scenario, system), row_(columns_.size()) {
   buffer_.reserve(kBlockBytes + 4096);
   buffer_ += CsvHeader(columns_);
   buffer_ += '\n';
 }
 
+bool RunCsvWriter::RecordState(double t, const double* y) {
+  if (!columns_.FillFromState(system_, t, y, row_.data(), scratch_)) return false;
+  Append();
+  return true;
+}
+
 void RunCsvWriter::Record(double t, const NetworkSample& sample) {
   columns_.Fill(t, sample, row_.data());
+  Append();
+}
+
+void RunCsvWriter::Append() {
   AppendCsvRow(buffer_, columns_, row_.data());
   buffer_ += '\n';
   ++rows_;

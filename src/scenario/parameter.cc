@@ -21,10 +21,12 @@ namespace {
 std::string Canonical(const std::vector<KeyPathStep>& steps) {
   std::string path;
   for (const KeyPathStep& step : steps) {
+    // appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "[" + std::string
     if (step.key.empty()) {
-      path += "[" + std::to_string(step.index) + "]";
+      path.append("[").append(std::to_string(step.index)).append("]");
     } else {
-      path += (path.empty() ? "" : ".") + step.key;
+      if (!path.empty()) path += '.';
+      path += step.key;
     }
   }
   return path;

@@ -10,14 +10,24 @@ RunStats RunScenario(const Scenario& scenario, Simulation& simulation, NetworkSi
 }
 
 ColumnRecorder::ColumnRecorder(const Scenario& scenario, const NetworkSystem& system)
-    : layout_(scenario, system), columns_(layout_.size()), row_(layout_.size()) {}
+    : system_(system), layout_(scenario, system), columns_(layout_.size()), row_(layout_.size()) {}
 
 void ColumnRecorder::Reserve(std::size_t rows) {
   for (std::vector<double>& column : columns_) column.reserve(rows);
 }
 
+bool ColumnRecorder::RecordState(double t, const double* y) {
+  if (!layout_.FillFromState(system_, t, y, row_.data(), scratch_)) return false;
+  Keep();
+  return true;
+}
+
 void ColumnRecorder::Record(double t, const NetworkSample& sample) {
   layout_.Fill(t, sample, row_.data());
+  Keep();
+}
+
+void ColumnRecorder::Keep() {
   for (std::size_t c = 0; c < row_.size(); ++c) columns_[c].push_back(row_[c]);
   ++rows_;
 }

@@ -27,6 +27,11 @@ RunColumns::RunColumns(const Scenario& scenario, const NetworkSystem& system, Sc
 void RunColumns::Add(std::string name, Kind kind, int index, double tolerance) {
   names_.push_back(std::move(name));
   columns_.push_back({kind, index, tolerance});
+  phase_flags_.push_back(kind == Kind::kPhase ? 1 : 0);
+  if (kind >= Kind::kReference) whole_sample_ = true;  // a controller's
+  if (OfElement(kind) && (elements_read_.empty() || elements_read_.back() != index)) {
+    elements_read_.push_back(index);  // an element's columns are consecutive
+  }
 }
 
 void RunColumns::AddActuatorView(const Scenario& scenario, const NetworkSystem& system) {
@@ -41,6 +46,8 @@ void RunColumns::AddActuatorView(const Scenario& scenario, const NetworkSystem& 
   Add("tension_total", Kind::kTotal, e);
   Add("load", Kind::kLoad, kActuatorTipNode);
   Add("phase", Kind::kPhase, e, scenario.PhaseTolerance(e));
+  actuator_view_ = true;
+  excitation_ = system.elements()[e].excitation.has_value();
 }
 
 void RunColumns::AddNetworkView(const Scenario& scenario, const NetworkSystem& system) {
@@ -101,6 +108,54 @@ void RunColumns::Fill(double t, const NetworkSample& s, double* row) const {
       case Kind::kOutput: row[c] = s.controllers[i].output; break;
     }
   }
+}
+
+bool RunColumns::FillFromState(const NetworkSystem& system, double t, const double* y,
+                               double* row, std::vector<ElementSample>& scratch) const {
+  if (whole_sample_) return false;
+  scratch.resize(system.elements().size());
+  if (actuator_view_) {
+    // t, length, shortening_velocity, activation, [excitation], the tensions, load, phase
+    ElementSample& s = scratch[kActuatorElement];
+    system.ObserveElement(kActuatorElement, t, y, s);
+    const double shortening = 0.0 - s.lengthening_rate;  // +0 rather than -0 at rest
+    double* out = row;
+    *out++ = t;
+    *out++ = s.length;
+    *out++ = shortening;
+    *out++ = s.activation;
+    if (excitation_) *out++ = s.excitation;
+    *out++ = s.parts.passive;
+    *out++ = s.parts.active;
+    *out++ = s.parts.total;
+    *out++ = system.LoadOn(kActuatorTipNode, t, y);
+    *out = shortening;
+    return true;
+  }
+  for (const int e : elements_read_) system.ObserveElement(e, t, y, scratch[static_cast<std::size_t>(e)]);
+  const ElementSample* samples = scratch.data();
+  for (std::size_t c = 0; c < columns_.size(); ++c) {
+    const Column& column = columns_[c];
+    const ElementSample& s = samples[OfElement(column.kind) ? column.index : 0];
+    switch (column.kind) {
+      case Kind::kTime: row[c] = t; break;
+      case Kind::kPosition: row[c] = system.NodePosition(column.index, t, y); break;
+      case Kind::kVelocity: row[c] = system.NodeVelocity(column.index, t, y); break;
+      case Kind::kLoad: row[c] = system.LoadOn(column.index, t, y); break;
+      case Kind::kLength: row[c] = s.length; break;
+      case Kind::kTension: row[c] = s.tension; break;
+      // +0 rather than -0 at rest
+      case Kind::kShortening:
+      case Kind::kPhase: row[c] = 0.0 - s.lengthening_rate; break;
+      case Kind::kActivation: row[c] = s.activation; break;
+      case Kind::kExcitation: row[c] = s.excitation; break;
+      case Kind::kPassive: row[c] = s.parts.passive; break;
+      case Kind::kActive: row[c] = s.parts.active; break;
+      case Kind::kTotal: row[c] = s.parts.total; break;
+      default: break;  // a controller's: not reached (whole_sample_)
+    }
+  }
+  return true;
 }
 
 }  // namespace musclesim

@@ -13,10 +13,30 @@ namespace {
 // every row to the recorder.
 class Recorder final : public NetworkSink {
  public:
-  Recorder(const Scenario& scenario, int element, TrajectorySink& metrics,
-           ColumnRecorder* trajectory)
-      : actuator_form_(scenario.form == ScenarioForm::kActuator),
+  Recorder(const Scenario& scenario, const NetworkSystem& system, int element,
+           TrajectorySink& metrics, ColumnRecorder* trajectory)
+      : actuator_form_(scenario.form == ScenarioForm::kActuator), system_(system),
         element_(static_cast<std::size_t>(element)), metrics_(metrics), trajectory_(trajectory) {}
+
+  // the metrics' one element straight from the state, unless the whole row is kept
+  bool RecordState(double t, const double* y) override {
+    if (trajectory_ != nullptr) return false;
+    const int e = static_cast<int>(element_);
+    system_.ObserveElement(e, t, y, element_sample_);
+    if (!actuator_form_) {
+      metrics_.Record(ElementPoint(t, element_sample_));
+      return true;
+    }
+    ActuatorSample sample;
+    sample.length = element_sample_.length;
+    sample.shortening_velocity = 0.0 - element_sample_.lengthening_rate;  // as ActuatorSampleOf
+    sample.activation = element_sample_.activation;
+    sample.excitation = element_sample_.excitation;
+    sample.tension = element_sample_.parts;
+    sample.load = system_.LoadOn(kActuatorTipNode, t, y);
+    metrics_.Record({t, sample});
+    return true;
+  }
 
   void Record(double t, const NetworkSample& sample) override {
     // the single actuator's points are its own view of the network (actuator_scenario.h)
@@ -27,7 +47,9 @@ class Recorder final : public NetworkSink {
 
  private:
   bool actuator_form_;
+  const NetworkSystem& system_;
   std::size_t element_;
+  ElementSample element_sample_;
   TrajectorySink& metrics_;
   ColumnRecorder* trajectory_;  // null: the trajectory is not kept
 };
@@ -79,7 +101,7 @@ RunStats SweepBase::Run(Simulation& simulation, TrajectorySink& metrics) {
   system_.reset();
   system_.emplace(s.Build());
   if (keep_) trajectory_.emplace(s, *system_);
-  Recorder recorder(s, element_, metrics, keep_ ? &*trajectory_ : nullptr);
+  Recorder recorder(s, *system_, element_, metrics, keep_ ? &*trajectory_ : nullptr);
   return simulation.Run(*system_, s.solver, s.Request(), recorder);
 }
 

@@ -106,6 +106,13 @@ class NetworkSystem {
   std::vector<double> Breakpoints(double t0, double t1) const;
 
   void Observe(double t, const double* y, NetworkSample& sample) const;
+  // Parts of Observe, for a record that needs only a few columns (RunColumns): element e's
+  // sample, node i's position [m] and velocity [m/s], and the sum of the loads on node i [N]
+  // (0 unless it is free). Each equals Observe's to the last bit.
+  void ObserveElement(int e, double t, const double* y, ElementSample& out) const;
+  double NodePosition(int i, double t, const double* y) const { return PositionOf(ends_[i], t, y); }
+  double NodeVelocity(int i, double t, const double* y) const { return VelocityOf(ends_[i], t, y); }
+  double LoadOn(int i, double t, const double* y) const;
 
   const std::vector<Node>& nodes() const { return nodes_; }
   const std::vector<Element>& elements() const { return elements_; }
@@ -203,8 +210,11 @@ class NetworkSystem {
   struct Tension {
     double value, by_length, by_rate, by_activation;
   };
+  // (Defined inline in src/dynamics/element_tension.h, so that the right-hand side, which
+  // needs only the value, computes no derivative for nothing.)
   Tension TensionOf(int e, double t, double l, double ldot, const double* y) const;
   void Resolve();
+  void FindSingleNode();
   void ResolveControllers(int& states);
   void BuildPattern();
   void AddControlPattern(std::vector<std::pair<int, int>>& pairs) const;
@@ -235,6 +245,22 @@ class NetworkSystem {
   int integral_count_ = 0;
   std::vector<End> ends_;
   std::vector<Link> links_;
+  // the links that can exert a force: not a damper of damping 0 or a spring of stiffness 0,
+  // whose tension is a signed zero that changes no sum (a single actuator's network has
+  // both, docs/model.md 7.4)
+  std::vector<int> active_links_;
+  // One free node whose active elements all end at fixed nodes, and no activation or
+  // integral state (a single actuator on its rig): its right-hand side without the general
+  // bookkeeping, the same operations in the same order. The link's sign is +1 when the free
+  // node is its `to` end (l = x - p), -1 when it is its `from` end (l = p - x).
+  struct Anchored {
+    int element;
+    double position;  // of the fixed end [m]
+    int sign;
+  };
+  bool single_node_ = false;
+  std::vector<Anchored> anchored_;
+  void SingleNodeRightHandSide(double t, const double* y, double* ydot) const;
   std::vector<FreeNode> free_nodes_;
   std::vector<Activation> activations_;  // in element order, their states after the nodes'
   std::vector<int> row_scale_;  // per Jacobian entry: the free node whose 1/m scales it, or -1

@@ -27,8 +27,10 @@ std::string FormatRunCsv(const RecordedRun& run);
 // Keeps the count of rows and the last one. Flush() before committing the output.
 class RunCsvWriter final : public NetworkSink {
  public:
-  // The columns of `scenario` built as `system`; keeps no reference to either.
+  // The columns of `scenario` built as `system`, which must outlive the writer.
   RunCsvWriter(StreamedOutput& output, const Scenario& scenario, const NetworkSystem& system);
+  // A row straight from the state when the columns allow (RunColumns::FillFromState).
+  bool RecordState(double t, const double* y) override;
   void Record(double t, const NetworkSample& sample) override;
   void Flush();
 
@@ -38,9 +40,13 @@ class RunCsvWriter final : public NetworkSink {
   const std::vector<double>& last() const { return row_; }
 
  private:
+  void Append();
+
   StreamedOutput& output_;
+  const NetworkSystem& system_;
   RunColumns columns_;
   std::vector<double> row_;
+  std::vector<ElementSample> scratch_;
   std::string buffer_;
   long rows_ = 0;
 };

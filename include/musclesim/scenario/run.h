@@ -23,9 +23,11 @@ RunStats RunScenario(const Scenario& scenario, Simulation& simulation, NetworkSi
 // Keeps a run's rows column by column, as RunColumns lays them out.
 class ColumnRecorder final : public NetworkSink {
  public:
-  // The columns of `scenario` built as `system`.
+  // The columns of `scenario` built as `system`, which must outlive the recorder.
   ColumnRecorder(const Scenario& scenario, const NetworkSystem& system);
 
+  // A row straight from the state when the columns allow (RunColumns::FillFromState).
+  bool RecordState(double t, const double* y) override;
   void Record(double t, const NetworkSample& sample) override;
   // Room for `rows` rows in every column, so that recording allocates no more.
   void Reserve(std::size_t rows);
@@ -38,9 +40,13 @@ class ColumnRecorder final : public NetworkSink {
   std::vector<double>& column(std::size_t c) { return columns_[c]; }
 
  private:
+  void Keep();
+
+  const NetworkSystem& system_;
   RunColumns layout_;
   std::vector<std::vector<double>> columns_;
   std::vector<double> row_;
+  std::vector<ElementSample> scratch_;
   std::size_t rows_ = 0;
 };
 

@@ -50,16 +50,27 @@ class RunColumns {
   // The row at time t [s] of `sample` into `row` (size() values): each column's number, and
   // for a phase column the shortening velocity [m/s] its phase is classified from.
   void Fill(double t, const NetworkSample& sample, double* row) const;
+  // The same row straight from the state y at t of `system` (the one the columns were made
+  // for), observing only the elements and nodes the columns read, each once into `scratch`
+  // (one sample per element): what a single actuator's few columns need. Returns false,
+  // writing nothing, when a column needs the whole sample (a controller's); otherwise equals
+  // Fill of system.Observe's sample to the last bit.
+  bool FillFromState(const NetworkSystem& system, double t, const double* y, double* row,
+                     std::vector<ElementSample>& scratch) const;
+  // The phase-column flags, one per column, for a writer's loop.
+  const std::vector<char>& phase_flags() const { return phase_flags_; }
   // The phase of phase column c whose Fill value is `shortening_velocity` [m/s].
   Phase PhaseOf(std::size_t c, double shortening_velocity) const {
     return ClassifyPhase(shortening_velocity, columns_[c].tolerance);
   }
 
  private:
+  // a node's or the time, an element's (kLength to kPhase), a controller's
   enum class Kind {
-    kTime, kPosition, kVelocity, kLength, kTension, kShortening, kActivation, kExcitation,
-    kPassive, kActive, kTotal, kPhase, kLoad, kReference, kMeasured, kError, kOutput,
+    kTime, kPosition, kVelocity, kLoad, kLength, kTension, kShortening, kActivation, kExcitation,
+    kPassive, kActive, kTotal, kPhase, kReference, kMeasured, kError, kOutput,
   };
+  static bool OfElement(Kind kind) { return kind >= Kind::kLength && kind <= Kind::kPhase; }
   struct Column {
     Kind kind;
     int index = 0;           // the node, element or controller
@@ -71,6 +82,11 @@ class RunColumns {
 
   std::vector<std::string> names_;
   std::vector<Column> columns_;
+  std::vector<char> phase_flags_;   // per column: a phase
+  std::vector<int> elements_read_;  // the elements some column reads, ascending
+  bool whole_sample_ = false;       // a column reads a controller's sample
+  bool actuator_view_ = false;      // the single actuator's columns, in their fixed order
+  bool excitation_ = false;         // ... with the excitation column
 };
 
 }  // namespace musclesim
