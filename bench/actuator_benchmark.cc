@@ -2,15 +2,15 @@
 // dynamics: what CVODE calls in its innermost loop.
 #include <benchmark/benchmark.h>
 
-#include "musclesim/io/run_scenario.h"
-#include "musclesim/io/scenario.h"
+#include "musclesim/scenario/actuator_scenario.h"
+#include "musclesim/io/scenario_yaml.h"
 
 namespace musclesim {
 namespace {
 
 ActuatorSystem Concentric() {
-  const ScenarioSpec s = LoadScenario(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/concentric.yaml");
-  return BuildSystem(s);
+  const ActuatorScenarioSpec s = LoadActuatorScenarioSpec(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/concentric.yaml");
+  return MakeActuatorSystem(s);
 }
 
 void BM_ActuatorAcceleration(benchmark::State& state) {

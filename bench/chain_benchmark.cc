@@ -32,7 +32,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/scenario.h"
+#include "musclesim/io/scenario_yaml.h"
 #ifdef MUSCLESIM_WITH_ODEINT
 #include "work_precision/odeint_network.h"
 #include "work_precision/odeint_peer.h"
@@ -72,8 +72,8 @@ std::string Numbered(const char* prefix, int i) {
 }
 
 Chain MakeChain(int segments) {
-  const ScenarioSpec spec =
-      LoadScenario(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/isometric.yaml");
+  const ActuatorScenarioSpec spec =
+      LoadActuatorScenarioSpec(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/isometric.yaml");
   const auto model = std::make_shared<const TensionModel>(spec.model.params);
   const PassiveParams& passive = spec.model.params.passive;
   const double load = spec.model.params.f_iso;  // [N]

@@ -12,27 +12,27 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/run_scenario.h"
-#include "musclesim/io/scenario.h"
+#include "musclesim/scenario/actuator_scenario.h"
+#include "musclesim/io/scenario_yaml.h"
 
 namespace musclesim {
 namespace {
 
 const char* const kScenarios[] = {"isometric", "concentric", "eccentric"};
 
-ScenarioSpec Spec(const benchmark::State& state) {
-  return LoadScenario(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/" +
+ActuatorScenarioSpec Spec(const benchmark::State& state) {
+  return LoadActuatorScenarioSpec(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/" +
                       kScenarios[state.range(0)] + ".yaml");
 }
 
 ActuatorSystem Canonical(const benchmark::State& state) {
-  const ScenarioSpec s = Spec(state);
-  return BuildSystem(s);
+  const ActuatorScenarioSpec s = Spec(state);
+  return MakeActuatorSystem(s);
 }
 
 // The single actuator's network without its damper and spring (zero in the canonical
 // scenarios), as ActuatorSystem::network() lays it out otherwise.
-NetworkSystem Bare(const ScenarioSpec& s) {
+NetworkSystem Bare(const ActuatorScenarioSpec& s) {
   std::vector<NodeLoad> loads;
   for (const Load& load : s.loads) loads.push_back({"tip", load});
   return NetworkSystem({Node::Fixed("ground", 0.0), Node::Free("tip", s.actuator.mass, 0.0)},
@@ -213,14 +213,14 @@ NetworkRunRequest AsNetworkRequest(const RunRequest& r) {
 // args: scenario, path (0 Simulation::Run of the ActuatorSystem; 1 its network run directly;
 // 2 the bare network run directly)
 void BM_SingleActuatorRun(benchmark::State& state) {
-  const ScenarioSpec spec = Spec(state);
-  const ActuatorSystem system = BuildSystem(spec);
+  const ActuatorScenarioSpec spec = Spec(state);
+  const ActuatorSystem system = MakeActuatorSystem(spec);
   const NetworkSystem bare = Bare(spec);
-  const NetworkRunRequest request = AsNetworkRequest(spec.Request());
+  const NetworkRunRequest request = AsNetworkRequest(MakeActuatorRunRequest(spec));
   Simulation simulation;
   std::vector<TrajectoryPoint> trajectory;
   const auto run = [&] {
-    if (state.range(1) == 0) return simulation.Run(system, spec.solver, spec.Request(), trajectory);
+    if (state.range(1) == 0) return simulation.Run(system, spec.solver, MakeActuatorRunRequest(spec), trajectory);
     ViewSink sink(trajectory);
     return simulation.Run(state.range(1) == 1 ? system.network() : bare, spec.solver, request, sink);
   };

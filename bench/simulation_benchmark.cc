@@ -1,13 +1,14 @@
 // Step cost of whole runs of the canonical scenarios, per integration method and Jacobian:
-// wall time per run, and counters for steps, RHS and Jacobian evaluations and the time per
-// step. Loading, model construction and CVODE allocation stay outside the timed loop.
+// wall time per run (RunScenario, the rows recorded in memory), and counters for steps, RHS
+// and Jacobian evaluations and the time per step. Loading, building the system and CVODE
+// allocation stay outside the timed loop.
 #include <benchmark/benchmark.h>
 
 #include <string>
 #include <vector>
 
-#include "musclesim/io/run_scenario.h"
-#include "musclesim/io/scenario.h"
+#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/scenario/run.h"
 
 namespace musclesim {
 namespace {
@@ -18,19 +19,21 @@ const char* const kScenarios[] = {"isometric", "concentric", "eccentric", "twitc
 // args: scenario index, method (0 bdf, 1 adams), jacobian (0 analytic, 1 difference quotient)
 void BM_SimulationRun(benchmark::State& state) {
   const std::string name = kScenarios[state.range(0)];
-  ScenarioSpec spec =
+  Scenario scenario =
       LoadScenario(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/" + name + ".yaml");
-  spec.solver.method = state.range(1) == 0 ? IntegrationMethod::kBdf : IntegrationMethod::kAdams;
-  spec.solver.jacobian =
+  scenario.solver.method =
+      state.range(1) == 0 ? IntegrationMethod::kBdf : IntegrationMethod::kAdams;
+  scenario.solver.jacobian =
       state.range(2) == 0 ? JacobianKind::kAnalytic : JacobianKind::kDifferenceQuotient;
-  const ActuatorSystem system = BuildSystem(spec);
+  const NetworkSystem system = scenario.Build();
   Simulation simulation;
-  std::vector<TrajectoryPoint> trajectory;
-  // one untimed run allocates the CVODE memory and the trajectory's storage
-  RunStats stats = simulation.Run(system, spec.solver, spec.Request(), trajectory);
+  ColumnRecorder recorder(scenario, system);
+  // one untimed run allocates the CVODE memory and the rows' storage
+  RunStats stats = simulation.Run(system, scenario.solver, scenario.Request(), recorder);
   for (auto _ : state) {
-    stats = simulation.Run(system, spec.solver, spec.Request(), trajectory);
-    benchmark::DoNotOptimize(trajectory.data());
+    recorder.Clear();
+    stats = simulation.Run(system, scenario.solver, scenario.Request(), recorder);
+    benchmark::DoNotOptimize(recorder.column(0).data());
   }
   state.SetLabel(name + (state.range(1) == 0 ? " bdf" : " adams") +
                  (state.range(2) == 0 ? " analytic" : " dq"));

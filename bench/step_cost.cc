@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/run_scenario.h"
-#include "musclesim/io/scenario.h"
+#include "musclesim/scenario/actuator_scenario.h"
+#include "musclesim/io/scenario_yaml.h"
 
 namespace {
 
@@ -77,10 +77,10 @@ int main(int argc, char** argv) {
   for (const char* name : {"isometric", "concentric", "eccentric"}) {
     for (double eps : {1e-2, 1e-3, 1e-4, 1e-5, 1e-6}) {
       for (int n : {1, 2, 3, 5}) {
-        const ScenarioSpec spec = LoadScenario(std::string(argv[1]) + "/" + name + ".yaml",
+        const ActuatorScenarioSpec spec = LoadActuatorScenarioSpec(std::string(argv[1]) + "/" + name + ".yaml",
                                                {"model.velocity.epsilon=" + std::to_string(eps),
                                                 "model.velocity.n=" + std::to_string(n)});
-        const ActuatorSystem system = BuildSystem(spec);
+        const ActuatorSystem system = MakeActuatorSystem(spec);
         for (IntegrationMethod method : {IntegrationMethod::kBdf, IntegrationMethod::kAdams}) {
           for (JacobianKind jacobian : {JacobianKind::kAnalytic, JacobianKind::kDifferenceQuotient}) {
             SolverOptions options = spec.solver;
@@ -90,7 +90,7 @@ int main(int argc, char** argv) {
             RunStats stats;
             for (int r = 0; r < 5; ++r) {
               const auto start = Clock::now();
-              stats = sim.Run(system, options, spec.Request(), trajectory);
+              stats = sim.Run(system, options, MakeActuatorRunRequest(spec), trajectory);
               walls.push_back(Seconds(start));
             }
             std::sort(walls.begin(), walls.end());

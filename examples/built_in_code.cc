@@ -17,7 +17,8 @@ namespace {
 
 using namespace musclesim;
 
-// The concentric scenario's actuator: a 100 N muscle lifting 40 N from rest at 0.1 m.
+// The concentric scenario's actuator, one Gaussian for its three: a 100 N muscle switched on
+// with a 40 N load at 0.01 s, which it lifts.
 Scenario Concentric() {
   ActuatorScenarioSpec spec;
   spec.name = "built in code";
@@ -33,7 +34,7 @@ Scenario Concentric() {
   spec.actuator.mass = 0.1;                         // kg
   spec.initial_length = 0.1;                        // m
   spec.activation = Waveform::Step(0.01, 0.0, 1.0);
-  spec.loads = {Load::Constant(40.0)};              // N
+  spec.loads = {Load::Force(Waveform::Step(0.01, 0.0, 40.0))};  // N
   spec.t_end = 0.1;                                 // s
   spec.output.interval = 0.001;                     // s
   return MakeActuatorScenario(spec);
@@ -48,7 +49,7 @@ int main() {
     const double final_length = run.values[1].back();  // the `length` column
     std::printf("run: %zu rows, final length %.6f m\n", run.values[0].size(), final_length);
 
-    const SensitivityTable table = RunWithSensitivities(scenario, {"model.f_iso", "load[0].value"});
+    const SensitivityTable table = RunWithSensitivities(scenario, {"model.f_iso", "load[0].after"});
     const int length = table.FindColumn("length");
     std::printf("sensitivities at the end: dx/df_iso %.3e m/N, dx/dload %.3e m/N\n",
                 table.derivative(table.rows() - 1, 0, static_cast<std::size_t>(length)),
@@ -56,7 +57,7 @@ int main() {
 
     SweepSpec spec;
     spec.source = spec.base = "built in code";
-    spec.axes.push_back({"load[0].value", {}, {}, 10.0, 70.0, 4, false, ""});  // N
+    spec.axes.push_back({"load[0].after", {}, {}, 10.0, 70.0, 4, false, ""});  // N
     spec.metrics = {Metric::kFinalLength, Metric::kPeakTension};
     const SweepPlan plan = PlanSweep(spec, ParameterPoints(scenario, spec), 2);
     const SweepOutcome outcome = RunSweep(plan, SweepRunOptions{"", 2, false, nullptr});

@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/run_scenario.h"
-#include "musclesim/io/scenario.h"
+#include "musclesim/scenario/actuator_scenario.h"
+#include "musclesim/io/scenario_yaml.h"
 #include "odeint_network.h"
 #include "odeint_peer.h"
 
@@ -78,11 +78,11 @@ class GridSink final : public TrajectorySink {
   Grid& grid_;
 };
 
-Grid Cvode(const ScenarioSpec& spec, const ActuatorSystem& system, Simulation& sim,
+Grid Cvode(const ActuatorScenarioSpec& spec, const ActuatorSystem& system, Simulation& sim,
            const SolverOptions& options, RunStats* stats) {
   Grid g;
   GridSink sink(g);
-  const RunStats run = sim.Run(system, options, spec.Request(), sink);
+  const RunStats run = sim.Run(system, options, MakeActuatorRunRequest(spec), sink);
   if (stats != nullptr) *stats = run;
   if (run.status != RunStatus::kCompleted) g.t.clear();
   return g;
@@ -98,9 +98,9 @@ struct Segment {
   std::vector<long> grid_index;
 };
 
-std::vector<Segment> Segments(const ScenarioSpec& spec, const ActuatorSystem& system,
+std::vector<Segment> Segments(const ActuatorScenarioSpec& spec, const ActuatorSystem& system,
                               std::vector<double>& grid) {
-  const RunRequest request = spec.Request();
+  const RunRequest request = MakeActuatorRunRequest(spec);
   const double span = spec.t_end - spec.t_start;
   const long outputs = static_cast<long>(std::ceil(span / request.output_interval - 1e-9));
   grid.clear();
@@ -137,7 +137,7 @@ std::vector<Segment> Segments(const ScenarioSpec& spec, const ActuatorSystem& sy
 // Integrates segment by segment (restarting at each breakpoint, as a careful user would),
 // `segment` integrating one from the state `y` through its times and calling `observe` at each;
 // `tension` gives the total tension at (t, state). Returns the run on the output grid.
-Grid OnGrid(const ScenarioSpec& spec, const ActuatorSystem& system, std::vector<double> y,
+Grid OnGrid(const ActuatorScenarioSpec& spec, const ActuatorSystem& system, std::vector<double> y,
             const std::function<double(double t, const double* y)>& tension,
             const std::function<void(std::vector<double>& y, const std::vector<double>& times,
                                      const std::function<void(double, const double*)>& observe)>& segment) {
@@ -159,7 +159,7 @@ Grid OnGrid(const ScenarioSpec& spec, const ActuatorSystem& system, std::vector<
 
 // Boost.Odeint: rosenbrock4 with its error controller and dense output, given the analytic
 // Jacobian (and df/dt), on the two states (x, xdot).
-Grid OdeintTwoState(const ScenarioSpec& spec, const ActuatorSystem& system, double rtol,
+Grid OdeintTwoState(const ActuatorScenarioSpec& spec, const ActuatorSystem& system, double rtol,
                     double atol, OdeintCounts& counts) {
   const TwoStateProblem problem{
       &system,
@@ -201,7 +201,7 @@ bool PiecewiseConstant(const Waveform& w) {
 // With activation dynamics the activation u is a third state: rosenbrock4 on the system's
 // network (x, xdot, u), starting where Simulation::Run starts it. The N-state peer takes
 // df/dt = 0, so the inputs must be constant between breakpoints.
-Grid OdeintNetworkRun(const ScenarioSpec& spec, const ActuatorSystem& system, double rtol,
+Grid OdeintNetworkRun(const ActuatorScenarioSpec& spec, const ActuatorSystem& system, double rtol,
                       double atol, OdeintCounts& counts) {
   const NetworkSystem& network = system.network();
   OdeintNetwork context{&network, std::vector<double>(network.jacobian_pattern().entries())};
@@ -217,7 +217,7 @@ Grid OdeintNetworkRun(const ScenarioSpec& spec, const ActuatorSystem& system, do
       });
 }
 
-Grid Odeint(const ScenarioSpec& spec, const ActuatorSystem& system, double rtol, double atol,
+Grid Odeint(const ActuatorScenarioSpec& spec, const ActuatorSystem& system, double rtol, double atol,
             OdeintCounts& counts) {
   return system.excitation() ? OdeintNetworkRun(spec, system, rtol, atol, counts)
                              : OdeintTwoState(spec, system, rtol, atol, counts);
@@ -240,9 +240,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: work_precision SCENARIO.yaml REFERENCE.csv\n");
     return 2;
   }
-  const ScenarioSpec spec = LoadScenario(argv[1]);
+  const ActuatorScenarioSpec spec = LoadActuatorScenarioSpec(argv[1]);
   const std::string name = std::filesystem::path(argv[1]).stem().string();
-  const ActuatorSystem system = BuildSystem(spec);
+  const ActuatorSystem system = MakeActuatorSystem(spec);
   if (system.excitation()) {
     bool constant = PiecewiseConstant(system.excitation()->signal);
     for (const Load& load : system.loads().loads()) {

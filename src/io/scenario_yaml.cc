@@ -70,6 +70,19 @@ Scenario ReadScenario(const Document& document, const std::string& name,
   return Read(yaml::Source{name, name}, root);
 }
 
+ActuatorScenarioSpec LoadActuatorScenarioSpec(const std::string& path,
+                                              const std::vector<std::string>& overrides) {
+  YAML::Node root = yaml::LoadFile(path);
+  for (const std::string& text : overrides) yaml::ApplyOverride(root, text, path);
+  if (FormOf(root) == ScenarioForm::kNetwork) {
+    throw InputError(path + ": a network (it has nodes:), not the single-actuator form");
+  }
+  const yaml::Source src{path};
+  ActuatorScenarioSpec spec = ReadActuatorScenarioSpec(src, root);
+  yaml::ValidateAt(src, root, "", [&] { MakeActuatorScenario(spec); });
+  return spec;
+}
+
 Scenario LoadScenario(const std::string& path, const std::vector<std::string>& overrides) {
   // read once, so no clone is needed: the nodes not overridden keep their file positions
   YAML::Node root = yaml::LoadFile(path);

@@ -98,6 +98,25 @@ ActuatorSample ActuatorSampleOf(const NetworkSample& s) {
   return sample;
 }
 
+ActuatorSystem MakeActuatorSystem(const ActuatorScenarioSpec& spec) {
+  auto model = std::make_shared<const TensionModel>(spec.model.params);
+  return spec.excitation
+             ? ActuatorSystem(std::move(model), spec.actuator, *spec.excitation, spec.loads)
+             : ActuatorSystem(std::move(model), spec.actuator, spec.activation, spec.loads);
+}
+
+RunRequest MakeActuatorRunRequest(const ActuatorScenarioSpec& spec) {
+  RunRequest r;
+  r.t_start = spec.t_start;
+  r.t_end = spec.t_end;
+  r.length = spec.initial_length;
+  r.lengthening_rate = spec.initial_lengthening_rate;
+  r.output_interval = spec.output.every_step ? 0.0 : spec.output.interval;
+  r.min_length = spec.min_length;
+  r.max_length = spec.max_length;
+  return r;
+}
+
 Scenario MakeActuatorScenario(ActuatorScenarioSpec spec) {
   Scenario s;
   s.name = std::move(spec.name);

@@ -12,6 +12,11 @@ RunStats RunScenario(const Scenario& scenario, Simulation& simulation, NetworkSi
 ColumnRecorder::ColumnRecorder(const Scenario& scenario, const NetworkSystem& system)
     : system_(system), layout_(scenario, system), columns_(layout_.size()), row_(layout_.size()) {}
 
+void ColumnRecorder::Clear() {
+  for (std::vector<double>& column : columns_) column.clear();
+  rows_ = 0;
+}
+
 void ColumnRecorder::Reserve(std::size_t rows) {
   for (std::vector<double>& column : columns_) column.reserve(rows);
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "musclesim/io/document.h"
+#include "musclesim/scenario/actuator_scenario.h"
 #include "musclesim/scenario/scenario.h"
 
 namespace musclesim {
@@ -19,6 +20,11 @@ namespace musclesim {
 // longer than zero at the start, the limits against the elements' initial lengths. Throws
 // InputError naming file:line:column (or --set), key path, value and rule.
 Scenario LoadScenario(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// The single-actuator file `path` as written (MakeActuatorScenario's input: the old form's
+// own fields), read and validated as LoadScenario does; InputError for a network file.
+ActuatorScenarioSpec LoadActuatorScenarioSpec(const std::string& path,
+                                              const std::vector<std::string>& overrides = {});
 
 // Reads the scenario `document` (io/document.h), built in code, with `overrides` applied, as
 // LoadScenario reads a file; `name` names it in messages ("<dict>"), which cannot give lines.

@@ -44,6 +44,13 @@ struct ActuatorScenarioSpec {
 // with the form's key paths.
 Scenario MakeActuatorScenario(ActuatorScenarioSpec spec);
 
+// The single actuator of `spec` as dynamics/actuator.h's closed-form system, and its run's
+// request: the reference its network is checked against bit for bit, and what peers written
+// for the two-state system (the benchmarks') integrate. Throws ParameterError as
+// MakeActuatorScenario does.
+ActuatorSystem MakeActuatorSystem(const ActuatorScenarioSpec& spec);
+RunRequest MakeActuatorRunRequest(const ActuatorScenarioSpec& spec);
+
 // The network's key path of a single-actuator key ("actuator.mass" -> "nodes[1].mass",
 // "model.f_iso" -> "models.model.f_iso", "load[0].value" -> "loads[0].value"), or nullopt
 // for a key outside the form's vocabulary.

@@ -31,6 +31,8 @@ class ColumnRecorder final : public NetworkSink {
   void Record(double t, const NetworkSample& sample) override;
   // Room for `rows` rows in every column, so that recording allocates no more.
   void Reserve(std::size_t rows);
+  // Forgets the rows, keeping their memory: for the next run of the same scenario.
+  void Clear();
 
   const RunColumns& layout() const { return layout_; }
   std::size_t rows() const { return rows_; }
