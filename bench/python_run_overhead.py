@@ -1,6 +1,6 @@
 """What a run costs from Python beyond the run itself: Scenario.run() on
 scenarios/concentric.yaml (its 1 ms grid, 501 rows; and a 10 us grid, 50,001 rows) against
-the same run recorded in memory by C++ alone (musclesim._cpp_run_seconds), and run_many on 2
+the same run recorded in memory by C++ alone (musclesim._musclesim._cpp_run_seconds), and run_many on 2
 threads against `musclesim sweep --jobs 2` over the same 200 points. Prints a table; the
 README quotes it. Run with the build tree on the path:
   PYTHONPATH=build/python /usr/bin/python3 bench/python_run_overhead.py [MUSCLESIM]
@@ -31,7 +31,7 @@ def run_times(scenario):
         start = time.perf_counter()
         scenario.run()
         python.append(time.perf_counter() - start)
-        cpp += musclesim._cpp_run_seconds(scenario, 1)
+        cpp += musclesim._musclesim._cpp_run_seconds(scenario, 1)
     return np.array(python), np.array(cpp)
 
 
@@ -40,7 +40,7 @@ def sweep_times():
     with tempfile.TemporaryDirectory() as directory:
         sweep = os.path.join(directory, "sweep.yaml")
         with open(sweep, "w") as file:
-            file.write("base: %s\nparameters:\n  load[0].value: [%s]\nmetrics: [final_length]\n"
+            file.write("base: %s\nparameters:\n  load[0].after: [%s]\nmetrics: [final_length]\n"
                        "output: %s\n" % (SCENARIO, ", ".join(repr(f) for f in LOADS),
                                          os.path.join(directory, "summary.csv")))
         cli, python = [], []
@@ -49,7 +49,7 @@ def sweep_times():
             start = time.perf_counter()
             subprocess.run([CLI, "sweep", sweep, "--jobs", "2", "--quiet"], check=True)
             cli.append((time.perf_counter() - start) / len(LOADS))
-            jobs = [base.copy().set("load[0].value", float(f)) for f in LOADS]
+            jobs = [base.copy().set("load[0].after", float(f)) for f in LOADS]
             start = time.perf_counter()
             musclesim.run_many(jobs, threads=2)
             python.append((time.perf_counter() - start) / len(LOADS))
@@ -58,13 +58,13 @@ def sweep_times():
 
 def row(label, python, reference):
     ratio = np.min(python) / np.min(reference)
-    print(f"{label:<34}{np.min(python) * 1e3:>10.3f}{np.min(reference) * 1e3:>12.3f}{ratio:>8.3f}"
+    print(f"{label:<34}{np.min(python) * 1e3:>10.3f}{np.min(reference) * 1e3:>14.3f}{ratio:>8.3f}"
           f"{np.median(python) / np.median(reference):>15.3f}")
 
 
 def main():
     print(f"machine: {platform.platform()}, {os.cpu_count()} cores, Python {platform.python_version()}")
-    print(f"{'case':<34}{'Python ms':>10}{'reference ms':>12}{'ratio':>8}{'median ratio':>15}")
+    print(f"{'case':<34}{'Python ms':>10}{'reference ms':>14}{'ratio':>8}{'median ratio':>15}")
     scenario = musclesim.load_scenario(SCENARIO)
     row("run(), 1 ms grid (501 rows)", *run_times(scenario))
     fine = musclesim.load_scenario(SCENARIO).set("output.interval", 1e-5)

@@ -4,8 +4,8 @@ import os
 import pytest
 
 import musclesim
+from conftest import SOURCE
 
-SOURCE = os.environ.get("MUSCLESIM_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 CONCENTRIC = os.path.join(SOURCE, "scenarios", "concentric.yaml")
 
 

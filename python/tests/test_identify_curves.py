@@ -12,12 +12,9 @@ import numpy as np
 import pytest
 
 import musclesim as ms
+from conftest import CLI, SOURCE
 
-SOURCE_DIR = pathlib.Path(os.environ.get("MUSCLESIM_SOURCE_DIR",
-                                         pathlib.Path(__file__).resolve().parents[2]))
-# the ctest sets MUSCLESIM_CLI; run by hand from build/python, the program is beside it
-CLI = os.environ.get("MUSCLESIM_CLI",
-                     str(pathlib.Path(ms.__file__).resolve().parents[2] / "musclesim"))
+SOURCE_DIR = SOURCE
 
 X_COLUMN = {"passive": "length", "active": "length", "velocity": "shortening_velocity"}
 

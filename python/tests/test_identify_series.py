@@ -14,12 +14,8 @@ import numpy as np
 import pytest
 
 import musclesim
+from conftest import CLI, SOURCE
 
-SOURCE = pathlib.Path(os.environ.get("MUSCLESIM_SOURCE_DIR",
-                                     pathlib.Path(__file__).resolve().parents[2]))
-# the ctest sets MUSCLESIM_CLI; run by hand from build/python, the program is beside it
-CLI = os.environ.get("MUSCLESIM_CLI",
-                     str(pathlib.Path(musclesim.__file__).resolve().parents[2] / "musclesim"))
 DATA = SOURCE / "data" / "quick_release.yaml"
 
 # A quick release as scenarios/quick_release.yaml, on a coarser grid (51 rows) and at a tight

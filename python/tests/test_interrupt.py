@@ -9,8 +9,8 @@ import time
 import pytest
 
 import musclesim
+from conftest import CLI, SOURCE
 
-SOURCE = pathlib.Path(os.environ.get("MUSCLESIM_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
 CONCENTRIC = SOURCE / "scenarios" / "concentric.yaml"
 # 200000 points of 0.3 s of the concentric scenario: tens of seconds on two cores, so that the
 # interrupt, sent once the first rows are in, lands while the sweep runs

@@ -10,12 +10,9 @@ import numpy as np
 import pytest
 
 import musclesim as ms
+from conftest import CLI, SOURCE
 
-SOURCE_DIR = pathlib.Path(os.environ.get("MUSCLESIM_SOURCE_DIR",
-                                         pathlib.Path(__file__).resolve().parents[2]))
-# the ctest sets MUSCLESIM_CLI; run by hand from build/python, the program is beside it
-CLI = os.environ.get("MUSCLESIM_CLI",
-                     str(pathlib.Path(ms.__file__).resolve().parents[2] / "musclesim"))
+SOURCE_DIR = SOURCE
 
 # Without the errors binding, InputError is a RuntimeError and ParameterError a ValueError.
 INPUT_ERROR = getattr(ms, "InputError", RuntimeError)
@@ -343,7 +340,7 @@ def test_an_activation_outside_0_1_is_refused():
 @pytest.mark.parametrize("preset", ["degroote2016", "thelen2003", "gordon1966", "mujoco"])
 def test_force_length_presets_equal_the_programs_table(preset, tmp_path):
     csv = tmp_path / "preset.csv"
-    subprocess.run([os.environ["MUSCLESIM_CLI"], "curves", "--preset", preset, "--optimal-length",
+    subprocess.run([CLI, "curves", "--preset", preset, "--optimal-length",
                     "0.1", "--length", "0:0.2:41", "-o", str(csv)], check=True)
     table = np.loadtxt(csv, delimiter=",", skiprows=1)
     # the same evaluation, printed with 17 significant digits: equal to the last bit

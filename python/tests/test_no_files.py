@@ -9,9 +9,6 @@ import pytest
 
 import musclesim
 
-SOURCE = os.environ.get("MUSCLESIM_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
-CONCENTRIC = os.path.join(SOURCE, "scenarios", "concentric.yaml")
-
 # the concentric scenario, shorter, as a dict (so that no file is read either)
 SCENARIO = {
     "name": "in_memory",
@@ -51,8 +48,9 @@ def test_run_and_sensitivities_write_nothing(watched):
     with_sensitivities = scenario.run(sensitivities=["model.f_iso", "actuator.mass"])
     assert len(plain) == 51 and plain.status == "completed"
     # the same trajectory with and without sensitivities: their error control changes the
-    # steps, so only to the solver's tolerance (rtol 1e-6 on lengths of 0.1 m)
-    np.testing.assert_allclose(with_sensitivities["length"], plain["length"], rtol=0, atol=1e-7)
+    # steps, so only to the solver's accuracy (rtol 1e-6 a step; the global error of this
+    # 50 ms run is a few of them, 5e-7 m on 0.13 m seen)
+    np.testing.assert_allclose(with_sensitivities["length"], plain["length"], rtol=1e-5)
     assert "d_length/d_model.f_iso" in with_sensitivities.columns
 
 

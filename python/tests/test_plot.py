@@ -13,11 +13,10 @@ import numpy as np
 import pytest
 
 import musclesim
+from conftest import CLI, SOURCE
 
-SOURCE = os.environ.get("MUSCLESIM_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 SCENARIOS = os.path.join(SOURCE, "scenarios")
 DATA = os.path.join(SOURCE, "data")
-CLI = os.environ.get("MUSCLESIM_CLI")
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 TITLE = "same title"  # given to both, so that no line names a file
 

@@ -10,10 +10,9 @@ import numpy as np
 import pytest
 
 import musclesim
+from conftest import CLI, SOURCE
 
-SOURCE = pathlib.Path(os.environ.get("MUSCLESIM_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
 CONCENTRIC = SOURCE / "scenarios" / "concentric.yaml"
-CLI = os.environ["MUSCLESIM_CLI"]
 
 
 def test_pathlib_paths_are_taken_everywhere():

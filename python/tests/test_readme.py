@@ -7,8 +7,9 @@ import subprocess
 import sys
 
 import pytest
+from conftest import SOURCE
 
-ROOT = pathlib.Path(os.environ.get("MUSCLESIM_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
+ROOT = SOURCE
 BLOCKS = re.findall(r"```python\n(.*?)```", (ROOT / "README.md").read_text(), re.S)
 
 

@@ -9,9 +9,8 @@ import numpy as np
 import pytest
 
 import musclesim
+from conftest import CLI, SOURCE
 
-SOURCE = os.environ.get("MUSCLESIM_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
-CLI = os.environ["MUSCLESIM_CLI"]  # the musclesim program: ctest sets it
 
 
 def scenario_path(name):

@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 import musclesim
+from conftest import CLI, SOURCE
 
-SOURCE = os.environ.get("MUSCLESIM_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 FORCE_REGULATION = os.path.join(SOURCE, "scenarios", "force_regulation.yaml")
 
 
@@ -23,7 +23,7 @@ def read_csv_columns(path, names):
 
 def test_stepping_in_1ms_pieces_reproduces_the_clis_one_shot_run(tmp_path):
     csv = tmp_path / "one_shot.csv"
-    subprocess.run([os.environ["MUSCLESIM_CLI"], "run", FORCE_REGULATION, "-o", str(csv)],
+    subprocess.run([CLI, "run", FORCE_REGULATION, "-o", str(csv)],
                    check=True, capture_output=True)
     reference = read_csv_columns(csv, ["t", "force.measured", "muscle.length", "tip.velocity"])
 
@@ -180,7 +180,7 @@ def test_a_single_actuator_steps_as_its_network_and_python_can_drive_it(tmp_path
     concentric = os.path.join(SOURCE, "scenarios", "concentric.yaml")
     tight = ["solver.rtol=1e-10", "solver.atol=1e-12", "time.end=0.2"]
     csv = tmp_path / "concentric.csv"
-    command = [os.environ["MUSCLESIM_CLI"], "run", concentric, "-o", str(csv)]
+    command = [CLI, "run", concentric, "-o", str(csv)]
     for text in tight:
         command += ["--set", text]
     subprocess.run(command, check=True, capture_output=True)

@@ -9,10 +9,9 @@ import numpy as np
 import pytest
 
 import musclesim
+from conftest import CLI, SOURCE
 
-SOURCE = os.environ.get("MUSCLESIM_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 SCENARIOS = os.path.join(SOURCE, "scenarios")
-CLI = os.environ.get("MUSCLESIM_CLI")
 
 
 def test_sweep_equals_the_clis_summary(tmp_path):
