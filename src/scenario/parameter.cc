@@ -35,9 +35,10 @@ std::string Canonical(const std::vector<KeyPathStep>& steps) {
 // A length limit [m]: 0 (the element collapsed) to the longest length a file may give.
 constexpr InputRange kLimitRange{0.0, 1e3, "m", "a kilometre is beyond any actuator"};
 
-// A reference into the scenario from its parts' indices, for both Get (const) and Set.
-template <typename T>
-using Locate = std::function<T&(Scenario&)>;
+// A reference into the scenario (or a model block) from its parts' indices, for both Get
+// (const) and Set.
+template <typename T, typename In = Scenario>
+using Locate = std::function<T&(In&)>;
 
 }  // namespace
 
@@ -99,6 +100,14 @@ class ParameterResolver {
   void Top();
   void Model(std::size_t i);
   void ModelField(std::size_t i, bool fitted);
+  void ModelNumber(Locate<double, ModelSpec> at, bool refits = false);
+  void ModelValue(std::function<double(const ModelSpec&)> get,
+                  std::function<void(ModelSpec&, double)> set, bool refits = false);
+  void PassiveField(std::size_t i);
+  void VelocityField(std::size_t i);
+  void EccentricField(std::size_t i);
+  void ActiveLengthField(std::size_t i);
+  void GaussianField(std::size_t i);
   void Node(std::size_t i);
   void Element(std::size_t i);
   void Load(std::size_t i);
@@ -112,6 +121,7 @@ class ParameterResolver {
   std::string given_;
   std::vector<KeyPathStep> steps_;
   Parameter p_;
+  bool fitted_ = false;  // the model block asks for a fit
 };
 
 void ParameterResolver::Top() {
@@ -136,126 +146,142 @@ void ParameterResolver::Model(std::size_t i) {
 }
 
 void ParameterResolver::ModelField(std::size_t i, bool fitted) {
-  using Get = std::function<double(const ModelSpec&)>;
-  using Set = std::function<void(ModelSpec&, double)>;
-  const auto field = [&](Get get, Set set, bool refits = false) {
-    p_.model_get_ = std::move(get);
-    p_.model_set_ = std::move(set);
-    p_.refits_ = refits && fitted;
-  };
+  fitted_ = fitted;
   const std::string& block = Key(i);
-  const std::string& key = Key(i + 1);
   if (block == "f_iso") {
     End(i + 1);
-    return field([](const ModelSpec& m) { return m.params.f_iso; },
-                 [](ModelSpec& m, double v) { m.params.f_iso = v; });
+    return ModelNumber([](ModelSpec& m) -> double& { return m.params.f_iso; });
   }
-  if (block == "passive") {
-    End(i + 2);
-    if (key == "k_p") return field([](const ModelSpec& m) { return m.params.passive.k_p; },
-                                   [](ModelSpec& m, double v) { m.params.passive.k_p = v; });
-    if (key == "alpha") return field([](const ModelSpec& m) { return m.params.passive.alpha; },
-                                     [](ModelSpec& m, double v) { m.params.passive.alpha = v; });
-    if (key == "slack_length") {
-      return field([](const ModelSpec& m) { return m.params.passive.slack_length; },
-                   [](ModelSpec& m, double v) { m.params.passive.slack_length = v; });
-    }
-  }
-  if (block == "velocity") {
-    if (key == "eccentric") {
-      End(i + 3);
-      const std::string& leaf = Key(i + 2);
-      if (leaf == "v_max") {
-        return field([](const ModelSpec& m) {
-                       const VelocityParams& v = m.params.velocity;
-                       return v.eccentric.v_max.value_or(v.v_max);
-                     },
-                     [](ModelSpec& m, double v) { m.params.velocity.eccentric.v_max = v; });
-      }
-      if (leaf == "n") {
-        p_.integer_ = true;
-        return field([](const ModelSpec& m) {
-                       const VelocityParams& v = m.params.velocity;
-                       return static_cast<double>(v.eccentric.n.value_or(v.n));
-                     },
-                     [](ModelSpec& m, double v) {
-                       m.params.velocity.eccentric.n = static_cast<int>(v);
-                     });
-      }
-      if (leaf == "limit") {
-        return field([](const ModelSpec& m) {
-                       return m.params.velocity.eccentric.limit.value_or(
-                           std::numeric_limits<double>::infinity());
-                     },
-                     [](ModelSpec& m, double v) { m.params.velocity.eccentric.limit = v; });
-      }
-    }
-    End(i + 2);
-    if (key == "v_max") return field([](const ModelSpec& m) { return m.params.velocity.v_max; },
-                                     [](ModelSpec& m, double v) { m.params.velocity.v_max = v; });
-    if (key == "epsilon") {
-      return field([](const ModelSpec& m) { return m.params.velocity.epsilon; },
-                   [](ModelSpec& m, double v) { m.params.velocity.epsilon = v; });
-    }
-    if (key == "n") {
-      p_.integer_ = true;
-      return field([](const ModelSpec& m) { return static_cast<double>(m.params.velocity.n); },
-                   [](ModelSpec& m, double v) { m.params.velocity.n = static_cast<int>(v); });
-    }
-  }
-  if (block == "active_length") {
-    if (key == "optimal_range") {
-      const std::size_t end = Index(i + 2, 2, "optimal_range");
-      End(i + 3);
-      return field(
-          [end](const ModelSpec& m) {
-            const ActiveLengthParams& a = m.params.active_length;
-            return end == 0 ? a.optimal_min : a.optimal_max;
-          },
-          [end](ModelSpec& m, double v) {
-            (end == 0 ? m.params.active_length.optimal_min : m.params.active_length.optimal_max) = v;
-          },
-          true);
-    }
-    if (key == "sigma") {
-      End(i + 2);
-      return field([](const ModelSpec& m) { return m.params.active_length.sigma; },
-                   [](ModelSpec& m, double v) { m.params.active_length.sigma = v; }, true);
-    }
-    if (key == "gaussians") {
-      if (fitted) Fail("is fitted when the model is built: change the fit's settings instead");
-      const std::size_t k = Index(i + 2, scenario_.models.at(p_.model_).spec.params
-                                              .active_length.gaussians.size(), "gaussians");
-      End(i + 4);
-      const std::string& leaf = Key(i + 3);
-      using Member = double Gaussian::*;
-      const Member member = leaf == "amplitude" ? &Gaussian::amplitude
-                            : leaf == "width"   ? &Gaussian::precision
-                            : leaf == "center"  ? &Gaussian::center
-                                                : nullptr;
-      if (member == nullptr) Fail("names no field of a Gaussian (amplitude, width, center)");
-      return field([k, member](const ModelSpec& m) {
-                     return m.params.active_length.gaussians[k].*member;
-                   },
-                   [k, member](ModelSpec& m, double v) {
-                     m.params.active_length.gaussians[k].*member = v;
-                   });
-    }
-    if (key == "fit" && fitted) {
-      End(i + 3);
-      const std::string& leaf = Key(i + 2);
-      if (leaf == "count") {
-        p_.integer_ = true;
-        return field([](const ModelSpec& m) { return static_cast<double>(m.fit->count); },
-                     [](ModelSpec& m, double v) { m.fit->count = static_cast<int>(v); }, true);
-      }
-      if (leaf == "optimal_length") {
-        return field([](const ModelSpec& m) { return m.fit->optimal_length.value_or(0.0); },
-                     [](ModelSpec& m, double v) { m.fit->optimal_length = v; }, true);
-      }
-    }
-  }
+  if (block == "passive") return PassiveField(i + 1);
+  if (block == "velocity") return VelocityField(i + 1);
+  if (block == "active_length") return ActiveLengthField(i + 1);
   Fail("names no numeric parameter of a model block");
+}
+
+void ParameterResolver::ModelNumber(Locate<double, ModelSpec> at, bool refits) {
+  p_.model_get_ = [at](const ModelSpec& m) { return at(const_cast<ModelSpec&>(m)); };
+  p_.model_set_ = [at](ModelSpec& m, double v) { at(m) = v; };
+  p_.refits_ = refits && fitted_;
+}
+
+void ParameterResolver::ModelValue(std::function<double(const ModelSpec&)> get,
+                                   std::function<void(ModelSpec&, double)> set, bool refits) {
+  p_.model_get_ = std::move(get);
+  p_.model_set_ = std::move(set);
+  p_.refits_ = refits && fitted_;
+}
+
+void ParameterResolver::PassiveField(std::size_t i) {
+  End(i + 1);
+  const std::string& key = Key(i);
+  if (key == "k_p") return ModelNumber([](ModelSpec& m) -> double& { return m.params.passive.k_p; });
+  if (key == "alpha") {
+    return ModelNumber([](ModelSpec& m) -> double& { return m.params.passive.alpha; });
+  }
+  if (key == "slack_length") {
+    return ModelNumber([](ModelSpec& m) -> double& { return m.params.passive.slack_length; });
+  }
+  Fail("names no parameter of the passive curve (k_p, alpha, slack_length)");
+}
+
+void ParameterResolver::VelocityField(std::size_t i) {
+  const std::string& key = Key(i);
+  if (key == "eccentric") return EccentricField(i + 1);
+  End(i + 1);
+  if (key == "v_max") {
+    return ModelNumber([](ModelSpec& m) -> double& { return m.params.velocity.v_max; });
+  }
+  if (key == "epsilon") {
+    return ModelNumber([](ModelSpec& m) -> double& { return m.params.velocity.epsilon; });
+  }
+  if (key == "n") {
+    p_.integer_ = true;
+    return ModelValue([](const ModelSpec& m) { return static_cast<double>(m.params.velocity.n); },
+                      [](ModelSpec& m, double v) { m.params.velocity.n = static_cast<int>(v); });
+  }
+  Fail("names no parameter of the velocity curve (v_max, n, epsilon, eccentric)");
+}
+
+void ParameterResolver::EccentricField(std::size_t i) {
+  // each optional, its value when left out the one the curve takes (docs/model.md 9)
+  End(i + 1);
+  const std::string& key = Key(i);
+  if (key == "v_max") {
+    return ModelValue(
+        [](const ModelSpec& m) {
+          const VelocityParams& v = m.params.velocity;
+          return v.eccentric.v_max.value_or(v.v_max);
+        },
+        [](ModelSpec& m, double v) { m.params.velocity.eccentric.v_max = v; });
+  }
+  if (key == "n") {
+    p_.integer_ = true;
+    return ModelValue(
+        [](const ModelSpec& m) {
+          const VelocityParams& v = m.params.velocity;
+          return static_cast<double>(v.eccentric.n.value_or(v.n));
+        },
+        [](ModelSpec& m, double v) { m.params.velocity.eccentric.n = static_cast<int>(v); });
+  }
+  if (key == "limit") {
+    return ModelValue(
+        [](const ModelSpec& m) {
+          return m.params.velocity.eccentric.limit.value_or(std::numeric_limits<double>::infinity());
+        },
+        [](ModelSpec& m, double v) { m.params.velocity.eccentric.limit = v; });
+  }
+  Fail("names no parameter of the eccentric branch (v_max, n, limit)");
+}
+
+void ParameterResolver::ActiveLengthField(std::size_t i) {
+  const std::string& key = Key(i);
+  if (key == "optimal_range") {
+    const std::size_t end = Index(i + 1, 2, "optimal_range");
+    End(i + 2);
+    return ModelNumber(
+        [end](ModelSpec& m) -> double& {
+          ActiveLengthParams& a = m.params.active_length;
+          return end == 0 ? a.optimal_min : a.optimal_max;
+        },
+        true);
+  }
+  if (key == "sigma") {
+    End(i + 1);
+    return ModelNumber([](ModelSpec& m) -> double& { return m.params.active_length.sigma; }, true);
+  }
+  if (key == "gaussians") return GaussianField(i + 1);
+  if (key == "fit" && fitted_) {
+    End(i + 2);
+    const std::string& leaf = Key(i + 1);
+    if (leaf == "count") {
+      p_.integer_ = true;
+      return ModelValue([](const ModelSpec& m) { return static_cast<double>(m.fit->count); },
+                        [](ModelSpec& m, double v) { m.fit->count = static_cast<int>(v); }, true);
+    }
+    if (leaf == "optimal_length") {
+      return ModelValue([](const ModelSpec& m) { return m.fit->optimal_length.value_or(0.0); },
+                        [](ModelSpec& m, double v) { m.fit->optimal_length = v; }, true);
+    }
+  }
+  Fail("names no numeric parameter of the active length curve");
+}
+
+void ParameterResolver::GaussianField(std::size_t i) {
+  if (fitted_) Fail("is fitted when the model is built: change the fit's settings instead");
+  const std::size_t count =
+      scenario_.models.at(p_.model_).spec.params.active_length.gaussians.size();
+  const std::size_t k = Index(i, count, "gaussians");
+  End(i + 2);
+  const std::string& leaf = Key(i + 1);
+  using Member = double Gaussian::*;
+  const Member member = leaf == "amplitude" ? &Gaussian::amplitude
+                        : leaf == "width"   ? &Gaussian::precision
+                        : leaf == "center"  ? &Gaussian::center
+                                            : nullptr;
+  if (member == nullptr) Fail("names no field of a Gaussian (amplitude, width, center)");
+  ModelNumber([k, member](ModelSpec& m) -> double& {
+    return m.params.active_length.gaussians[k].*member;
+  });
 }
 
 void ParameterResolver::Node(std::size_t i) {

@@ -12,7 +12,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "musclesim/io/scenario.h"
+#include "musclesim/io/scenario_yaml.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {
@@ -58,10 +58,11 @@ TEST(IdentifySeriesCli, TheEstimatedScenarioHoldsTheEstimatesAndRuns) {
   // some 6 of its standard errors)
   const auto at = text.find("#   model.f_iso = ") + 18;
   const double f_iso = std::stod(text.substr(at, text.find(' ', at) - at));
-  const ScenarioSpec spec = LoadScenario(scenario);
-  EXPECT_EQ(spec.model.params.f_iso, f_iso);
+  const Scenario estimated = LoadScenario(scenario);
+  const ModelParams& model = estimated.models.at("model").spec.params;
+  EXPECT_EQ(model.f_iso, f_iso);
   EXPECT_NEAR(f_iso, 100.0, 0.2);
-  EXPECT_EQ(spec.model.params.passive.slack_length, 0.11);  // the start: not identifiable
+  EXPECT_EQ(model.passive.slack_length, 0.11);  // the start: not identifiable
   EXPECT_EQ(RunCli("run " + scenario + " -o - --quiet").exit_code, 0);
   EXPECT_THAT(testing::ReadFile(report), HasSubstr("| model.f_iso | 100 | 80 | "));
   // 251 measured lengths, one residual row each
@@ -121,9 +122,10 @@ TEST(IdentifySeriesCli, SetChangesTheScenarioBeforeTheFit) {
                            " --set load[0].after=30 --set load[1].after=-15"
                            " --set actuator.mass=0.05");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const ScenarioSpec spec = LoadScenario(scenario);
-  EXPECT_NEAR(spec.model.params.f_iso, 50.0, 0.1);  // half of 100 +- 0.2 (as above)
-  EXPECT_EQ(spec.actuator.mass, 0.05);  // the --set values are in the estimated scenario
+  const Scenario estimated = LoadScenario(scenario);
+  EXPECT_NEAR(estimated.models.at("model").spec.params.f_iso, 50.0, 0.1);  // half of 100 +- 0.2
+  // the --set values are in the estimated scenario
+  EXPECT_EQ(estimated.nodes[kActuatorTipNode].mass, 0.05);
 }
 
 TEST(IdentifySeriesCli, TheMeasuredCurvesKindIsUnchangedAndHelpShowsBoth) {

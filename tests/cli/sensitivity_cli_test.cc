@@ -148,7 +148,7 @@ TEST(SensitivityCli, NetworkHeader) {
   const CsvText csv = RunToCsv(scenario, TempPath("out.csv"),
                                "--sensitivity models.muscle.f_iso --sensitivity 'nodes[1].mass'");
   // free nodes' states, then every element's length and tension, an actuator's activation
-  // (a state only with activation dynamics) and its tension's parts (io/sensitivity_run.h)
+  // (a state only with activation dynamics) and its tension's parts (scenario/sensitivity_run.h)
   const std::vector<std::string> columns = {
       "load.position",     "load.velocity",           "flexor.length",
       "flexor.tension",    "flexor.activation",       "flexor.tension_passive",
@@ -274,15 +274,24 @@ TEST(SensitivityCli, RefusesASetting) {
   ExpectRefused(Single(), "output.interval", "a setting of the run, not a parameter");
 }
 
+// What a path names is found by the parameter handles (scenario/parameter.h), which read the
+// scenario in memory, not its file: a key left out of the file holds its default there.
 TEST(SensitivityCli, RefusesAPathAbsentFromTheFile) {
-  ExpectRefused(Single(), "model.velocity.eccentric.limit", ": no value in the scenario");
-  ExpectRefused(Single(), "initial.lengthening_rate", ": no value in the scenario");
-  ExpectRefused(Network(), "elements[7].stiffness", ": no value in the scenario");
+  // no eccentric block: no limit, which as a number is infinite
+  ExpectRefused(Single(), "model.velocity.eccentric.limit", "= inf: not a finite number");
+  ExpectRefused(Network(), "elements[7].stiffness", ": indexes past the end of elements");
+}
+
+TEST(SensitivityCli, AValueTheFileLeavesOutIsDifferentiated) {
+  // initial.lengthening_rate, left out of the file, is the scenario's 0 m/s
+  const CsvText with =
+      RunToCsv(Single(), TempPath("rate.csv"), "--sensitivity initial.lengthening_rate");
+  EXPECT_GE(with.Column("d_length/d_initial.lengthening_rate"), 0) << with.header;
 }
 
 TEST(SensitivityCli, RefusesANonNumber) {
-  ExpectRefused(Single(), "load[0].type", ": not a number");
-  ExpectRefused(Network(), "elements[2].from", ": not a number");
+  ExpectRefused(Single(), "load[0].type", ": names no field of this step waveform");
+  ExpectRefused(Network(), "elements[2].from", ": names no number of this spring");
 }
 
 TEST(SensitivityCli, RefusesTheScenarioKeysBadEntriesWithTheirPlace) {

@@ -233,9 +233,11 @@ TEST(SweepCli, ErrorsNameTheBaseFileOrTheAxisThatCausedThem) {
       "parameters:\n  load[0].after: [10, 20]\n  model.velocity.n: [3, 0]\nmetrics: [work]\n"),
       "cli_axis_error");
   EXPECT_EQ(axis.first, 2);
+  // a numeric axis sets its number through the parameter handle: the rule is the handle's,
+  // with no "(--set)"
   EXPECT_THAT(axis.second, HasSubstr("cli_axis_error.yaml:4:3: axis model.velocity.n = 0 makes "
                                      "point 1 (load[0].after=10, model.velocity.n=0) an invalid "
-                                     "scenario: model.velocity.n = 0 (--set): must be an integer"));
+                                     "scenario: model.velocity.n = 0: must be an integer"));
 }
 
 TEST(SweepCli, TooManyPointsExitTwoAndInvalidPointsOfALargeSweepExitTwoAfterIt) {

@@ -1,5 +1,5 @@
-// The bounded Levenberg-Marquardt fit of time-series identification, on closed-form models
-// whose optimum is known independently.
+// The bounded Levenberg-Marquardt fit (core/bounded_least_squares.h) that time-series
+// identification runs, on closed-form models whose optimum is known independently.
 #include "musclesim/core/bounded_least_squares.h"
 
 #include <gmock/gmock.h>
@@ -9,7 +9,7 @@
 
 #include "musclesim/core/errors.h"
 
-namespace musclesim::identify_series_detail {
+namespace musclesim {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -143,4 +143,4 @@ TEST(BoundedLeastSquares, AStartOutsideTheBoundsIsRefused) {
 }
 
 }  // namespace
-}  // namespace musclesim::identify_series_detail
+}  // namespace musclesim

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 
-namespace musclesim::yaml {
+namespace musclesim {
 namespace {
 
 // The steps written back as text, one per step: "a", "[2]".
@@ -61,4 +61,4 @@ TEST(KeyPath, IndexBeyondTheLongestListIsMalformed) {
 }
 
 }  // namespace
-}  // namespace musclesim::yaml
+}  // namespace musclesim

@@ -20,13 +20,13 @@
 
 #include "musclesim/core/errors.h"
 #include "musclesim/io/csv_table.h"
-#include "musclesim/io/network_csv.h"
-#include "musclesim/io/network_scenario.h"
-#include "musclesim/io/run_scenario.h"
-#include "musclesim/io/trajectory_csv.h"
-#include "musclesim/solver/simulation.h"
+#include "musclesim/io/run_csv.h"
+#include "musclesim/io/scenario_yaml.h"
 #include "musclesim/plot/plot.h"
-#include "musclesim/sweep/sweep.h"
+#include "musclesim/scenario/actuator_scenario.h"
+#include "musclesim/scenario/run_columns.h"
+#include "musclesim/solver/simulation.h"
+#include "musclesim/sweep/sweep_file.h"
 #include "support/canonical_actuator.h"
 #include "support/difference_jacobian.h"
 #include "support/scenario_files.h"
@@ -372,7 +372,10 @@ TEST(ActivationDynamics, TwoActuatorsInANetworkEachFollowTheirClosedForm) {
 
 TEST(ActivationDynamics, NetworkCsvHasTheExcitationAfterTheActivationOfDynamicActuatorsOnly) {
   const NetworkSystem mixed = MixedNetwork();
-  const std::vector<std::string> columns = NetworkCsvColumns(mixed);
+  Scenario scenario;  // the mixed network as a scenario: its CSV's columns
+  scenario.nodes = mixed.nodes();
+  scenario.elements = mixed.elements();
+  const std::vector<std::string> columns = RunColumns(scenario, mixed).names();
   const auto at = [&](const std::string& name) {
     return std::find(columns.begin(), columns.end(), name) - columns.begin();
   };
@@ -397,25 +400,28 @@ double Tension(const ActuatorSample& s) { return s.tension.total; }
 double Activation(const ActuatorSample& s) { return s.activation; }
 
 TEST(ActivationDynamics, TwitchScenarioRisesAndFallsWithoutJumps) {
-  const ScenarioSpec spec = LoadScenario(testing::ScenarioPath("twitches.yaml"));
-  ASSERT_TRUE(spec.excitation.has_value());
-  const RunResult run = RunScenario(spec);
+  const Scenario twitches = LoadScenario(testing::ScenarioPath("twitches.yaml"));
+  const std::optional<ExcitationInput>& excitation =
+      twitches.elements[kActuatorElement].excitation;
+  ASSERT_TRUE(excitation.has_value());
+  const RunResult run = testing::RunActuator(twitches);
   ASSERT_EQ(run.stats.status, RunStatus::kCompleted) << run.stats.message;
-  const double interval = spec.output.interval;
+  const double interval = twitches.output.interval;
 
   // |udot| <= |e - u| / (tau_act (0.5 + 1.5 u)) <= 1 / (0.5 tau_act) while activating and
   // |e - u| (0.5 + 1.5 u) / tau_deact <= 2 / tau_deact while deactivating, whichever larger
-  const ActivationDynamics& d = spec.excitation->dynamics;
+  const ActivationDynamics& d = excitation->dynamics;
   const double fastest = std::max(1.0 / (0.5 * d.tau_activation), 2.0 / d.tau_deactivation);
   EXPECT_LE(LargestStep(run.trajectory, Activation), fastest * interval);
 
   // the same pulses as an instantaneous activation jump the tension by most of a twitch
   // from one sample to the next; through the dynamics u moves at most fastest * interval
   // (a fifteenth) per sample, and the tension with it
-  ScenarioSpec instantaneous = spec;
-  instantaneous.activation = spec.excitation->signal;
-  instantaneous.excitation.reset();
-  const RunResult jumps = RunScenario(instantaneous);
+  Scenario instantaneous = twitches;
+  Element& actuator = instantaneous.elements[kActuatorElement];
+  actuator.activation = excitation->signal;
+  actuator.excitation.reset();
+  const RunResult jumps = testing::RunActuator(instantaneous);
   ASSERT_EQ(jumps.stats.status, RunStatus::kCompleted) << jumps.stats.message;
   const double jump = LargestStep(jumps.trajectory, Tension);
   EXPECT_GT(jump, 50.0);
@@ -467,9 +473,13 @@ output: {file: twitches_network.csv, interval: 0.0005}
 )";
 
 TEST(ActivationDynamics, SingleActuatorAndNetworkFormsGiveTheSameTrajectory) {
-  const RunResult single = RunScenarioFile(testing::ScenarioPath("twitches.yaml"));
-  const NetworkRunResult network =
-      RunNetworkScenarioFile(testing::WriteTempFile("network.yaml", kTwitchNetwork));
+  const RunResult single =
+      testing::RunActuator(LoadScenario(testing::ScenarioPath("twitches.yaml")));
+  const Scenario network_scenario =
+      LoadScenario(testing::WriteTempFile("network.yaml", kTwitchNetwork));
+  Simulation simulation;
+  const NetworkRunResult network = simulation.Run(
+      network_scenario.Build(), network_scenario.solver, network_scenario.Request());
   ASSERT_EQ(single.stats.status, RunStatus::kCompleted) << single.stats.message;
   ASSERT_EQ(network.stats.status, RunStatus::kCompleted) << network.stats.message;
   ASSERT_EQ(single.trajectory.size(), network.times.size());
@@ -487,25 +497,38 @@ TEST(ActivationDynamics, SingleActuatorAndNetworkFormsGiveTheSameTrajectory) {
   }
 }
 
+// The CSV of scenarios/twitches.yaml (a single actuator with activation dynamics) with rows
+// at the times `times`, the actuator's activation and excitation set, every other value 0.
+std::string TwitchCsv(const std::vector<double>& times, double activation, double excitation) {
+  const Scenario twitches = LoadScenario(testing::ScenarioPath("twitches.yaml"));
+  const RunColumns columns(twitches, twitches.Build());
+  NetworkSample sample;  // the network of docs/model.md 7.4: 2 nodes, 3 elements
+  sample.position = sample.velocity = sample.load = {0.0, 0.0};
+  sample.elements.resize(3);
+  sample.elements[kActuatorElement].activation = activation;
+  sample.elements[kActuatorElement].excitation = excitation;
+  std::string csv = CsvHeader(columns) + "\n";
+  std::vector<double> row(columns.size());
+  for (double t : times) {
+    columns.Fill(t, sample, row.data());
+    AppendCsvRow(csv, columns, row.data());
+    csv += "\n";
+  }
+  return csv;
+}
+
 TEST(ActivationDynamics, SingleActuatorCsvHasTheExcitationRightAfterTheActivation) {
-  TrajectoryPoint point{0.25, {}};
-  point.sample.activation = 0.5;
-  point.sample.excitation = 0.75;
-  const std::string csv = FormatTrajectoryCsv({point}, 1e-3, true);
-  EXPECT_EQ(csv.substr(0, csv.find('\n')), kTrajectoryHeaderWithExcitation);
-  EXPECT_THAT(csv, HasSubstr("\n0.25,0,0,0.5,0.75,0,"));
-  EXPECT_EQ(std::string(kTrajectoryHeaderWithExcitation),
+  const std::string csv = TwitchCsv({0.25}, 0.5, 0.75);
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "t,length,shortening_velocity,activation,excitation,tension_passive,tension_active,"
             "tension_total,load,phase");
+  EXPECT_THAT(csv, HasSubstr("\n0.25,0,0,0.5,0.75,0,"));
 }
 
 TEST(ActivationDynamics, PlotsDrawTheExcitationDashedBesideTheActivation) {
   PlotOptions options;
   options.output = "x.png";
-  TrajectoryPoint point{0.0, {}};
-  point.sample.excitation = 1.0;
-  const std::string single = testing::WriteTempFile(
-      "single.csv", FormatTrajectoryCsv({point, {0.1, point.sample}}, 1e-3, true));
+  const std::string single = testing::WriteTempFile("single.csv", TwitchCsv({0.0, 0.1}, 0.0, 1.0));
   const std::string script = TrajectoryPlotScript(ReadCsv(single), options);
   EXPECT_THAT(script, HasSubstr("$trajectory using 1:9 with lines lw 1 dt 2"));
   EXPECT_THAT(script, HasSubstr("title 'excitation'"));
@@ -520,19 +543,20 @@ TEST(ActivationDynamics, PlotsDrawTheExcitationDashedBesideTheActivation) {
 // ---- overrides and sweeps reach the new keys ----------------------------------------------------
 
 TEST(ActivationDynamics, SetReachesEveryKeyOfTheSingleActuatorForm) {
-  const ScenarioSpec spec = LoadScenario(
+  const Scenario s = LoadScenario(
       testing::ScenarioPath("twitches.yaml"),
       {"activation_dynamics.tau_activation=0.02", "activation_dynamics.tau_deactivation=0.07",
        "initial.activation=0.3", "excitation.high=0.6"});
-  ASSERT_TRUE(spec.excitation.has_value());
-  EXPECT_EQ(spec.excitation->dynamics.tau_activation, 0.02);
-  EXPECT_EQ(spec.excitation->dynamics.tau_deactivation, 0.07);
-  EXPECT_EQ(spec.excitation->initial_activation.value_or(-1.0), 0.3);
-  EXPECT_EQ(spec.excitation->signal.high, 0.6);
+  const std::optional<ExcitationInput>& input = s.elements[kActuatorElement].excitation;
+  ASSERT_TRUE(input.has_value());
+  EXPECT_EQ(input->dynamics.tau_activation, 0.02);
+  EXPECT_EQ(input->dynamics.tau_deactivation, 0.07);
+  EXPECT_EQ(input->initial_activation.value_or(-1.0), 0.3);
+  EXPECT_EQ(input->signal.high, 0.6);
 }
 
 TEST(ActivationDynamics, SetReachesEveryKeyOfANetworkActuator) {
-  const NetworkScenarioSpec spec = LoadNetworkScenario(
+  const Scenario spec = LoadScenario(
       testing::WriteTempFile("network.yaml", kTwitchNetwork),
       {"elements[0].activation_dynamics.tau_deactivation=0.08",
        "elements[0].initial_activation=0.25", "elements[0].excitation.width=0.02"});
@@ -547,24 +571,24 @@ TEST(ActivationDynamics, SetReachesEveryKeyOfANetworkActuator) {
 TEST(ActivationDynamics, SweepAxesReachTheNewKeysOfBothForms) {
   const std::string base = testing::WriteTempFile(
       "base.yaml", testing::ReadFile(testing::ScenarioPath("twitches.yaml")));
-  const SweepSpec single = LoadSweep(testing::WriteTempFile(
+  const SweepPlan single = LoadSweep(testing::WriteTempFile(
       "sweep.yaml", "base: " + std::filesystem::path(base).filename().string() +
                         "\nparameters:\n  activation_dynamics.tau_activation: [0.01, 0.03]\n"
                         "metrics: [peak_tension]\n"));
-  ASSERT_EQ(single.scenarios.size(), 2u);
-  EXPECT_EQ(single.scenarios[0].excitation->dynamics.tau_activation, 0.01);
-  EXPECT_EQ(single.scenarios[1].excitation->dynamics.tau_activation, 0.03);
+  const std::vector<Scenario>& points = single.spec.scenarios;
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_EQ(points[0].elements[kActuatorElement].excitation->dynamics.tau_activation, 0.01);
+  EXPECT_EQ(points[1].elements[kActuatorElement].excitation->dynamics.tau_activation, 0.03);
 
   const std::string network = testing::WriteTempFile("network.yaml", kTwitchNetwork);
-  const SweepSpec swept = LoadSweep(testing::WriteTempFile(
+  const SweepPlan swept = LoadSweep(testing::WriteTempFile(
       "network_sweep.yaml", "base: " + std::filesystem::path(network).filename().string() +
                                 "\nparameters:\n  elements[0].initial_activation: [0.1, 0.2]\n"
                                 "metrics: [peak_tension]\n"));
-  ASSERT_EQ(swept.network_scenarios.size(), 2u);
-  EXPECT_EQ(swept.network_scenarios[0].elements[0].excitation->initial_activation.value_or(-1.0),
-            0.1);
-  EXPECT_EQ(swept.network_scenarios[1].elements[0].excitation->initial_activation.value_or(-1.0),
-            0.2);
+  const std::vector<Scenario>& network_points = swept.spec.scenarios;
+  ASSERT_EQ(network_points.size(), 2u);
+  EXPECT_EQ(network_points[0].elements[0].excitation->initial_activation.value_or(-1.0), 0.1);
+  EXPECT_EQ(network_points[1].elements[0].excitation->initial_activation.value_or(-1.0), 0.2);
 }
 
 // ---- validation in code ------------------------------------------------------------------------

@@ -1,10 +1,13 @@
-// libFuzzer target: the network scenario reader (nodes, elements, loads, controllers), with
-// `--set` overrides given as lines starting "#--set ", as for the single-actuator reader.
+// libFuzzer target: the network form of the scenario reader (nodes, elements, loads,
+// controllers; its corpus holds networks), with `--set` overrides given as lines starting
+// "#--set ", as for the single-actuator form. The scenario read is then built and checked as
+// a run would (Scenario::Validate), which must refuse nothing the reader accepted.
+#include <optional>
 #include <sstream>
 #include <vector>
 
 #include "fuzz_input.h"
-#include "musclesim/io/network_scenario.h"
+#include "musclesim/io/scenario_yaml.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace musclesim;
@@ -14,6 +17,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (std::string line; std::getline(lines, line);) {
     if (line.rfind("#--set ", 0) == 0) overrides.push_back(line.substr(7));
   }
-  fuzz::ExpectOnlyInputErrors([&] { LoadNetworkScenario(path, overrides).Build(); });
+  std::optional<Scenario> scenario;
+  fuzz::ExpectOnlyInputErrors([&] { scenario = LoadScenario(path, overrides); });
+  // a scenario the reader accepted builds and passes a run's checks: any exception here
+  // escapes to libFuzzer as a finding
+  if (scenario) {
+    scenario->Build();
+    scenario->Validate();
+  }
   return 0;
 }

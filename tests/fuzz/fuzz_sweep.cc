@@ -2,7 +2,7 @@
 // so that a sweep's `base` (concentric.yaml, isometric.yaml, ...) is found and every point is
 // validated as a scenario.
 #include "fuzz_input.h"
-#include "musclesim/sweep/sweep.h"
+#include "musclesim/sweep/sweep_file.h"
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   namespace fs = std::filesystem;

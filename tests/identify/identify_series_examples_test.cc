@@ -11,7 +11,8 @@
 #include <map>
 
 #include "musclesim/io/identify_series_spec.h"
-#include "musclesim/io/sensitivity_run.h"
+#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/scenario/sensitivity_run.h"
 #include "support/normal_noise.h"
 #include "support/scenario_files.h"
 
@@ -45,7 +46,8 @@ Example Load(const std::string& name) {
   std::vector<std::string> paths;
   for (const SeriesParameterSpec& p : e.spec.parameters) paths.push_back(p.path);
   for (MeasuredSeries& s : e.series) {
-    const SensitivityTable truth = RunWithSensitivities(e.spec.scenario, {}, paths, s.times);
+    const SensitivityTable truth =
+        RunWithSensitivities(LoadScenario(e.spec.scenario), paths, s.times);
     EXPECT_EQ(truth.rows(), s.times.size());
     for (std::size_t r = 0; r < s.times.size(); ++r) {
       for (std::size_t c = 0; c < s.columns.size(); ++c) {
@@ -71,7 +73,7 @@ std::vector<MeasuredSeries> Noisy(const Example& e, std::uint64_t seed) {
 }
 
 SeriesIdentification Fit(const Example& e, const std::vector<MeasuredSeries>& series) {
-  return FitSeries(e.spec, series, ScenarioSensitivityRunner(e.spec.scenario, {}));
+  return FitSeries(e.spec, series, ScenarioSensitivityRunner(LoadScenario(e.spec.scenario)));
 }
 
 // Over 20 seeded data sets, how often each parameter's estimate lies within 3 standard
@@ -134,7 +136,7 @@ TEST(IdentifySeriesExamples, TheSlackLengthAQuickReleaseNeverReachesIsFlagged) {
   // slack length's column exactly zero, in the design and in every fit
   const Example e = Load("quick_release.yaml");
   const SeriesIdentification design =
-      DesignSeries(e.spec, e.series, ScenarioSensitivityRunner(e.spec.scenario, {}));
+      DesignSeries(e.spec, e.series, ScenarioSensitivityRunner(LoadScenario(e.spec.scenario)));
   const SeriesIdentification fit = Fit(e, Noisy(e, 1));
   for (const SeriesIdentification* r : {&design, &fit}) {
     const SeriesParameterResult& slack = r->parameters[2];
@@ -161,7 +163,7 @@ TEST(IdentifySeriesExamples, ForcesAndMassScaledTogetherAreAnUnresolvedCombinati
   const IdentifySeriesSpec spec = LoadIdentifySeriesSpec(data);
   const SeriesIdentification design =
       DesignSeries(spec, ReadMeasuredSeries(spec, true),
-                   ScenarioSensitivityRunner(spec.scenario, {}));
+                   ScenarioSensitivityRunner(LoadScenario(spec.scenario)));
   ASSERT_EQ(design.weak_directions.size(), 1u);
   const WeakDirection& w = design.weak_directions[0];
   // the sensitivities are accurate to about 1e-8 here (rtol 1e-8): the direction's ratio

@@ -19,7 +19,7 @@ using ::testing::HasSubstr;
 
 // The stand-in: a release to a new length, length(t) = base - amp (1 - exp(-t / tau)), and a
 // tension that decays with it, tension_total(t) = 100 amp exp(-t / tau); `unused` changes
-// nothing. Parameters as dotted paths, overridden by "path=value" as a scenario would be.
+// nothing. Parameters as dotted paths, each set to a value as a scenario's handle sets it.
 const std::map<std::string, double> kScenario = {
     {"release.amp", 0.02}, {"release.tau", 0.05}, {"release.base", 0.1}, {"unused", 3.0}};
 
@@ -51,22 +51,20 @@ struct StandIn {
   int failures = 0;
   int fail_every = 0;  // > 0: every so many runs fails, as a solver may at a trial point
 
-  SensitivityTable operator()(const std::vector<std::string>& overrides,
-                              const std::vector<std::string>& parameters,
+  // SensitivityRunner's call: `values` (none: the scenario as it is) at `parameters`
+  SensitivityTable operator()(const std::vector<std::string>& parameters,
+                              const std::vector<double>& values,
                               const std::vector<double>& times) {
     ++runs;
     std::map<std::string, double> p = kScenario;
-    for (const std::string& o : overrides) {
-      const auto eq = o.find('=');
-      p.at(o.substr(0, eq)) = std::stod(o.substr(eq + 1));
+    for (const std::string& path : parameters) {
+      if (!p.count(path)) throw InputError("--sensitivity " + path + ": no such number");
     }
+    for (std::size_t i = 0; i < values.size(); ++i) p.at(parameters[i]) = values[i];
     SensitivityTable table;
     table.columns = {"length", "tension_total"};
     table.parameters = parameters;
-    for (const std::string& path : parameters) {
-      if (!p.count(path)) throw InputError("--sensitivity " + path + ": no such number");
-      table.parameter_values.push_back(p.at(path));
-    }
+    for (const std::string& path : parameters) table.parameter_values.push_back(p.at(path));
     table.times = times.empty() ? Grid() : times;
     if (fail_every > 0 && runs % fail_every == 0) {
       ++failures;

@@ -1,9 +1,13 @@
-#include "musclesim/io/scenario.h"
+// The single-actuator form of scenario files (io/scenario_yaml.h): every key read into the
+// network of docs/model.md 7.4, --set on any scalar, and every broken rule placed at its
+// file, line and column.
+#include "musclesim/io/scenario_yaml.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/scenario/actuator_scenario.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {
@@ -11,31 +15,15 @@ namespace {
 
 using ::testing::HasSubstr;
 
-const std::string kModel = R"(model:
-  f_iso: 100.0
-  passive: {k_p: 1.0, alpha: 100.0, slack_length: 0.105}
-  active_length:
-    optimal_range: [0.095, 0.105]
-    gaussians: [{amplitude: 2.0, width: 4000.0, center: 0.1}]
-  velocity: {v_max: 1.0, n: 3, epsilon: 1.0e-3}
-)";
-
-const std::string kRest = R"(actuator: {mass: 0.1, damping: 0.0, stiffness: 0.0, rest_length: 0.1}
-initial: {length: 0.1, lengthening_rate: 0.0}
-activation: {type: step, time: 0.05, before: 0.0, after: 1.0}
-load:
-  - {type: constant, value: 40.0}
-time: {start: 0.0, end: 1.0}
-solver: {method: bdf, rtol: 1.0e-6, atol: 1.0e-9, jacobian: analytic, max_step: 0.0}
-output: {file: out.csv, interval: 0.001}
-limits: {min_length: 0.05, max_length: 0.2}
-)";
+// The single actuator of tests/fixtures/actuator.yaml, as text to edit: a constant 40 N load
+// after a step to full activation, lines 1-7 its model block, line 8 `actuator:`.
+std::string Valid() { return testing::ReadFile(testing::FixturePath("actuator.yaml")); }
 
 // The error LoadScenario raises for the valid file with `from` replaced by `to`, with the
 // temporary path shown as FILE.
 std::string ErrorFor(const std::string& from, const std::string& to,
                      const std::vector<std::string>& sets = {}) {
-  std::string text = kModel + kRest;
+  std::string text = Valid();
   if (!from.empty()) {
     const auto at = text.find(from);
     EXPECT_NE(at, std::string::npos) << from;
@@ -46,18 +34,31 @@ std::string ErrorFor(const std::string& from, const std::string& to,
 }
 
 TEST(Scenario, ReadsEveryKey) {
-  const std::string path = testing::WriteTempFile("scenario_ok.yaml", kModel + kRest);
-  const ScenarioSpec s = LoadScenario(path);
-  EXPECT_EQ(s.actuator.mass, 0.1);
-  EXPECT_EQ(s.activation.kind, WaveformKind::kStep);
+  const std::string path = testing::FixturePath("actuator.yaml");
+  const Scenario s = LoadScenario(path);
+  EXPECT_EQ(s.form, ScenarioForm::kActuator);
+  // the network of docs/model.md 7.4: the actuator's mass and initial state on node `tip`,
+  // its activation on element `actuator`, the damper and the spring beside it
+  ASSERT_EQ(s.nodes.size(), 2u);
+  ASSERT_EQ(s.elements.size(), 3u);
+  EXPECT_EQ(s.nodes[kActuatorTipNode].mass, 0.1);
+  EXPECT_EQ(s.nodes[kActuatorTipNode].position, 0.1);
+  EXPECT_EQ(s.nodes[kActuatorTipNode].velocity, 0.0);
+  EXPECT_EQ(s.elements[kActuatorElement].activation.kind, WaveformKind::kStep);
+  EXPECT_EQ(s.elements[kActuatorDamperElement].damping, 0.0);
+  EXPECT_EQ(s.elements[kActuatorSpringElement].rest_length, 0.1);
   ASSERT_EQ(s.loads.size(), 1u);
-  EXPECT_EQ(s.loads[0].force.value, 40.0);
+  EXPECT_EQ(s.loads[0].node, "tip");
+  EXPECT_EQ(s.loads[0].load.force.value, 40.0);
   EXPECT_EQ(s.t_end, 1.0);
   EXPECT_EQ(s.solver.method, IntegrationMethod::kBdf);
   EXPECT_EQ(s.output.file, "out.csv");
   EXPECT_EQ(s.output.interval, 0.001);
-  EXPECT_EQ(*s.min_length, 0.05);
-  EXPECT_EQ(s.PhaseTolerance(), 1e-3);  // defaults to epsilon, docs/model.md section 6
+  ASSERT_EQ(s.limits.size(), 1u);
+  EXPECT_EQ(s.limits[0].element, "actuator");
+  EXPECT_EQ(*s.limits[0].min_length, 0.05);
+  // defaults to epsilon, docs/model.md section 6
+  EXPECT_EQ(s.PhaseTolerance(kActuatorElement), 1e-3);
 }
 
 TEST(Scenario, ReadsEveryWaveformAndLoadType) {
@@ -71,28 +72,32 @@ TEST(Scenario, ReadsEveryWaveformAndLoadType) {
   - {type: spring, stiffness: 100.0, anchor: 0.1}
   - {type: mass, mass: 2.0}
 )";
+  const std::string valid = Valid();
   const std::string path = testing::WriteTempFile(
-      "scenario_loads.yaml", kModel + kRest.substr(0, kRest.find("load:")) + loads +
-                                 kRest.substr(kRest.find("time: {")));
-  const ScenarioSpec s = LoadScenario(path);
+      "scenario_loads.yaml",
+      valid.substr(0, valid.find("load:")) + loads + valid.substr(valid.find("time: {")));
+  const Scenario s = LoadScenario(path);
   ASSERT_EQ(s.loads.size(), 8u);
-  EXPECT_EQ(s.loads[6].kind, LoadKind::kSpring);
-  EXPECT_EQ(s.loads[7].gravity, 9.81);
-  EXPECT_EQ(s.loads[5].force.points[1].value, 2.0);
+  EXPECT_EQ(s.loads[6].load.kind, LoadKind::kSpring);
+  EXPECT_EQ(s.loads[7].load.gravity, 9.81);
+  EXPECT_EQ(s.loads[5].load.force.points[1].value, 2.0);
 }
 
 TEST(Scenario, SetOverridesAnyScalarByItsPath) {
-  const std::string path = testing::WriteTempFile("scenario_set.yaml", kModel + kRest);
-  const ScenarioSpec s = LoadScenario(
+  const std::string path = testing::FixturePath("actuator.yaml");
+  const Scenario s = LoadScenario(
       path, {"model.velocity.n=4", "load[0].value=55", "solver.method=adams",
              "model.active_length.optimal_range[1]=0.11", "output.interval=steps",
              "model.active_length.sigma=2"});
-  EXPECT_EQ(s.model.params.velocity.n, 4);
-  EXPECT_EQ(s.loads[0].force.value, 55.0);
+  const ModelParams& model = s.models.at("model").spec.params;
+  EXPECT_EQ(model.velocity.n, 4);
+  EXPECT_EQ(s.loads[0].load.force.value, 55.0);
   EXPECT_EQ(s.solver.method, IntegrationMethod::kAdams);
-  EXPECT_EQ(s.model.params.active_length.optimal_max, 0.11);
+  EXPECT_EQ(model.active_length.optimal_max, 0.11);
   EXPECT_TRUE(s.output.every_step);
-  EXPECT_EQ(s.model.params.active_length.sigma, 2.0);  // a new key in an existing map
+  EXPECT_EQ(model.active_length.sigma, 2.0);  // a new key in an existing map
+  // the actuator holds the model built from the block as overridden
+  EXPECT_EQ(s.elements[kActuatorElement].model->params().velocity.n, 4);
 }
 
 TEST(Scenario, SetIsValidatedLikeTheFile) {
@@ -122,12 +127,12 @@ TEST(Scenario, SetIndexesOnlyLists) {
               HasSubstr("--set model[0].f_iso=50: model is a map, not a list"));
   EXPECT_THAT(ErrorFor("", "", {"[0].name=x"}), HasSubstr("the file's top level is a map"));
   // one load written as a map is load[0], as the README says
-  const std::string path = testing::WriteTempFile(
-      "scenario_one_load.yaml",
-      kModel + std::string(kRest).replace(kRest.find("load:\n  - {"), 11, "load: {"));
-  const ScenarioSpec s = LoadScenario(path, {"load[0].value=55"});
+  std::string one_load = Valid();
+  one_load.replace(one_load.find("load:\n  - {"), 11, "load: {");
+  const std::string path = testing::WriteTempFile("scenario_one_load.yaml", one_load);
+  const Scenario s = LoadScenario(path, {"load[0].value=55"});
   ASSERT_EQ(s.loads.size(), 1u);
-  EXPECT_EQ(s.loads[0].force.value, 55.0);
+  EXPECT_EQ(s.loads[0].load.force.value, 55.0);
 }
 
 TEST(Scenario, DuplicateKeysAreErrorsNamingBothPlaces) {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/network_scenario.h"
+#include "musclesim/io/scenario_yaml.h"
 #include "support/canonical_networks.h"
 
 namespace musclesim {
@@ -29,7 +29,7 @@ class CanonicalNetworkFile : public ::testing::TestWithParam<Canonical> {};
 
 TEST_P(CanonicalNetworkFile, IsTheSystemItsTestsCheck) {
   const std::string path = std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/" + GetParam().file;
-  const NetworkScenarioSpec spec = LoadNetworkScenario(path);
+  const Scenario spec = LoadScenario(path);
   const NetworkSystem from_file = spec.Build();
   const testing::NetworkExperiment tested = GetParam().make();
   const NetworkSystem& in_code = tested.system;

@@ -1,4 +1,4 @@
-// Feedback controllers in network scenario files (io/network_scenario.h, docs/model.md 11):
+// Feedback controllers in network scenario files (io/scenario_yaml.h, docs/model.md 11):
 // a controlled network loads and runs, its CSV's controller columns against the waveform and
 // the lengths and positions recomputed here, every refusal placed at its file, line and key,
 // --set and `musclesim sweep` on a controlled base, and the plot's controller panels.
@@ -14,9 +14,10 @@
 #include <vector>
 
 #include "musclesim/io/csv_table.h"
-#include "musclesim/io/network_csv.h"
-#include "musclesim/io/network_scenario.h"
-#include "musclesim/io/sensitivity_run.h"
+#include "musclesim/io/run_csv.h"
+#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/scenario/run.h"
+#include "musclesim/scenario/sensitivity_run.h"
 #include "support/cli_run.h"
 #include "support/scenario_files.h"
 
@@ -98,14 +99,9 @@ std::string At(const std::string& text, std::string needle) {
 
 // The run's CSV, as musclesim run writes it, read back.
 CsvTable RunToCsv(const std::string& name, const std::string& text) {
-  const NetworkScenarioSpec spec = LoadNetworkScenario(WriteTempFile(name + ".yaml", text));
-  const NetworkSystem system = spec.Build();
-  Simulation simulation;
-  const NetworkRunResult result = simulation.Run(system, spec.solver, spec.Request());
-  EXPECT_EQ(result.stats.status, RunStatus::kCompleted) << result.stats.message;
-  const std::string path = WriteTempFile(name + ".csv",
-                                         FormatNetworkCsv(system, result, std::nullopt));
-  return ReadCsv(path);
+  const RecordedRun run = RunScenario(LoadScenario(WriteTempFile(name + ".yaml", text)));
+  EXPECT_EQ(run.stats.status, RunStatus::kCompleted) << run.stats.message;
+  return ReadCsv(WriteTempFile(name + ".csv", FormatRunCsv(run)));
 }
 
 double Column(const CsvTable& csv, std::size_t row, const std::string& name) {
@@ -143,7 +139,7 @@ TEST(ControllerYaml, DrivenActuatorRunsAndTheCsvRecordsTheLoop) {
 }
 
 TEST(ControllerYaml, CoContractionSteersThePairThroughActivationDynamics) {
-  const NetworkScenarioSpec spec = LoadNetworkScenario(WriteTempFile("pair.yaml", kPair));
+  const Scenario spec = LoadScenario(WriteTempFile("pair.yaml", kPair));
   ASSERT_EQ(spec.controllers.size(), 1u);
   ASSERT_TRUE(spec.controllers[0].co_contraction.has_value());
   EXPECT_EQ(spec.controllers[0].co_contraction->first, "flexor");
@@ -174,12 +170,12 @@ TEST(ControllerYaml, CoContractionSteersThePairThroughActivationDynamics) {
 
 TEST(ControllerYaml, SetReachesAControllersGains) {
   const std::string path = WriteTempFile("hold.yaml", kHold);
-  const NetworkScenarioSpec s =
-      LoadNetworkScenario(path, {"controllers[0].gains.kp=-300", "controllers[0].reference.to=0.098"});
+  const Scenario s =
+      LoadScenario(path, {"controllers[0].gains.kp=-300", "controllers[0].reference.to=0.098"});
   EXPECT_EQ(s.controllers[0].gains.kp, -300.0);
   EXPECT_EQ(s.controllers[0].reference.to, 0.098);
   EXPECT_THAT(InputErrorOf(path, [&] {
-                LoadNetworkScenario(path, {"controllers[0].measure.quantity=tension"});
+                LoadScenario(path, {"controllers[0].measure.quantity=tension"});
               }),
               HasSubstr("controllers[0].gains.kd = -1 (" + At(kHold, "kd: ^-1.0") +
                         "): must be 0 on a tension"));
@@ -188,7 +184,7 @@ TEST(ControllerYaml, SetReachesAControllersGains) {
 // The message of loading `text`, the file's path shown as FILE.
 std::string ErrorOf(const std::string& text) {
   const std::string path = WriteTempFile("bad.yaml", text);
-  return InputErrorOf(path, [&] { LoadNetworkScenario(path); });
+  return InputErrorOf(path, [&] { LoadScenario(path); });
 }
 
 TEST(ControllerYaml, DrivenActuatorWithItsOwnActivationIsRefused) {
@@ -306,7 +302,7 @@ TEST(ControllerYaml, CoContractionNamesAreResolved) {
 TEST(ControllerYaml, SensitivitiesOfAControlledNetworkAreRefused) {
   const std::string text = kHold + "sensitivities: [models.muscle.f_iso]\n";
   const std::string path = WriteTempFile("sensitive.yaml", text);
-  EXPECT_THAT(InputErrorOf(path, [&] { RunWithSensitivities(path, {}, {}); }),
+  EXPECT_THAT(InputErrorOf(path, [&] { RunWithSensitivities(LoadScenario(path), {}); }),
               HasSubstr(At(text, "models.muscle.f_iso]") +
                         ": sensitivities[0] models.muscle.f_iso: sensitivities of a network with "
                         "controllers are not supported yet"));

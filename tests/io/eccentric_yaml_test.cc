@@ -10,8 +10,9 @@
 #include "musclesim/io/curves_csv.h"
 #include "musclesim/io/model_yaml.h"
 #include "musclesim/io/model_yaml_writer.h"
-#include "musclesim/io/run_scenario.h"
+#include "musclesim/core/number_format.h"
 #include "musclesim/identify/identify.h"
+#include "musclesim/io/scenario_yaml.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {
@@ -110,11 +111,12 @@ TEST(EccentricYaml, WrittenModelReadsBackToTheSameParameters) {
 
 TEST(EccentricYaml, SetCreatesTheBlockAFileLeavesOut) {
   const std::string scenario = testing::ScenarioPath("eccentric.yaml");
-  const ScenarioSpec spec =
+  const Scenario read =
       LoadScenario(scenario, {"model.velocity.eccentric.limit=1.5", "model.velocity.eccentric.n=2"});
-  EXPECT_EQ(spec.model.params.velocity.eccentric.limit, 1.5);
-  EXPECT_EQ(spec.model.params.velocity.eccentric.n, 2);
-  EXPECT_FALSE(spec.model.params.velocity.eccentric.v_max.has_value());
+  const EccentricParams& eccentric = read.models.at("model").spec.params.velocity.eccentric;
+  EXPECT_EQ(eccentric.limit, 1.5);
+  EXPECT_EQ(eccentric.n, 2);
+  EXPECT_FALSE(eccentric.v_max.has_value());
   // validated as the file's own value would be, placed at the override
   EXPECT_THAT(testing::InputErrorOf(scenario, [&] {
                 LoadScenario(scenario, {"model.velocity.eccentric.limit=0.5"});
@@ -141,9 +143,9 @@ TEST(EccentricYaml, SweepAxisReachesTheEccentricKeys) {
   const std::string csv = ReadFile(::testing::TempDir() + "eccentric_sweep.csv");
   // each row's final length is the one a run with that value --set gives
   for (double limit : {1.2, 3.0}) {
-    const RunResult run =
-        RunScenarioFile(testing::ScenarioPath("eccentric.yaml"),
-                        {"model.velocity.eccentric.limit=" + std::to_string(limit)});
+    const RunResult run = testing::RunActuator(
+        LoadScenario(testing::ScenarioPath("eccentric.yaml"),
+                     {"model.velocity.eccentric.limit=" + std::to_string(limit)}));
     const std::string length = FormatFull(run.trajectory.back().sample.length);
     EXPECT_THAT(csv, HasSubstr(length)) << csv;
   }

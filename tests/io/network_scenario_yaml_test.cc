@@ -1,8 +1,8 @@
-// Network scenario files (io/network_scenario.h) and their CSV (io/network_csv.h): what the
+// Network scenario files (io/scenario_yaml.h) and their CSV (io/run_csv.h): what the
 // reader makes of every kind of node, element and load, the CSV's columns, its first row
 // against a hand computation of docs/model.md sections 2-5 and 7.1, --set on nested keys,
 // and `musclesim run` on a network.
-#include "musclesim/io/network_scenario.h"
+#include "musclesim/io/scenario_yaml.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -15,7 +15,9 @@
 #include <sstream>
 #include <sys/wait.h>
 
-#include "musclesim/io/network_csv.h"
+#include "musclesim/io/run_csv.h"
+#include "musclesim/scenario/run.h"
+#include "musclesim/scenario/run_columns.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {
@@ -25,53 +27,14 @@ using ::testing::HasSubstr;
 using testing::ReadFile;
 using testing::WriteTempFile;
 
-// Every kind of node, element and load. The Gaussian peaks at 0.1 m, below the optimal
-// range, so that max f on the range is at its lower end, 0.105 m, exactly: f_L(x) =
-// exp(-b ((x - 0.1)^2 - 0.005^2) / 2) with no numerical search in it.
-constexpr const char* kNetwork = R"(name: every_part
-models:
-  flexor:
-    f_iso: 100.0
-    passive: {k_p: 1.0, alpha: 100.0, slack_length: 0.095}
-    active_length:
-      optimal_range: [0.105, 0.115]
-      gaussians: [{amplitude: 2.0, width: 4000.0, center: 0.1}]
-    velocity: {v_max: 1.0, n: 3, epsilon: 1.0e-3}
-  extensor:
-    f_iso: 80.0
-    passive: {k_p: 0.0, alpha: 100.0, slack_length: 0.095}
-    active_length:
-      optimal_range: [0.105, 0.115]
-      gaussians: [{amplitude: 2.0, width: 4000.0, center: 0.1}]
-    velocity: {v_max: 1.0, n: 1, epsilon: 0.5}
-nodes:
-  - {name: wall_a, fixed: 0.0}
-  - {name: load, mass: 0.5, position: 0.1, velocity: 0.2}
-  - {name: wall_b, fixed: 0.2}
-  - {name: crank, prescribed: {type: sine, offset: 0.3, amplitude: 0.01, frequency: 1.0, phase: 0.5}}
-elements:
-  - {name: flexor, type: actuator, from: wall_a, to: load, model: flexor,
-     activation: {type: step, time: 0.5, before: 0.4, after: 1.0}}
-  - {name: extensor, type: actuator, from: load, to: wall_b, model: extensor,
-     activation: {type: constant, value: 0.3}}
-  - {name: tendon, type: tendon, from: load, to: crank, slack_length: 0.18, stiffness: 2.0e4}
-  - {name: cable, type: tendon, from: wall_a, to: load, slack_length: 0.05,
-     exponential: {k: 3.0, alpha: 20.0}}
-  - {name: spring, type: spring, from: wall_a, to: load, stiffness: 50.0, rest_length: 0.08}
-  - {name: damper, type: damper, from: wall_a, to: load, damping: 2.0}
-loads:
-  - {node: load, type: constant, value: 5.0}
-  - {node: load, type: mass, mass: 0.2, gravity: 9.81}
-  - {node: load, type: spring, stiffness: 100.0, anchor: 0.12}
-time: {start: 0.25, end: 0.26}
-solver: {method: bdf, rtol: 1.0e-8, atol: 1.0e-12, jacobian: analytic, linear_solver: dense}
-output: {file: every_part.csv, interval: 0.001}
-limits: [{element: flexor, min_length: 0.05, max_length: 0.15}, {element: tendon, max_length: 0.3}]
-)";
+// Every kind of node, element and load (tests/fixtures/every_part.yaml, whose numbers the
+// hand computation below repeats).
+std::string EveryPart() { return testing::FixturePath("every_part.yaml"); }
 
 TEST(NetworkScenario, ReadsEveryNodeElementLoadAndLimit) {
-  const NetworkScenarioSpec s = LoadNetworkScenario(WriteTempFile("every.yaml", kNetwork));
+  const Scenario s = LoadScenario(EveryPart());
   EXPECT_EQ(s.name, "every_part");
+  EXPECT_EQ(s.form, ScenarioForm::kNetwork);
   ASSERT_EQ(s.nodes.size(), 4u);
   EXPECT_EQ(s.nodes[0].kind, NodeKind::kFixed);
   EXPECT_EQ(s.nodes[0].position, 0.0);
@@ -105,7 +68,9 @@ TEST(NetworkScenario, ReadsEveryNodeElementLoadAndLimit) {
   EXPECT_EQ(s.elements[5].kind, ElementKind::kDamper);
   EXPECT_EQ(s.elements[5].damping, 2.0);
   EXPECT_EQ(s.models.size(), 2u);
-  EXPECT_EQ(s.models.at("extensor").params.velocity.n, 1);
+  EXPECT_EQ(s.models.at("extensor").spec.params.velocity.n, 1);
+  // each actuator holds its block's model
+  EXPECT_EQ(s.elements[1].model, s.models.at("extensor").model);
 
   ASSERT_EQ(s.loads.size(), 3u);
   EXPECT_EQ(s.loads[0].node, "load");
@@ -125,9 +90,8 @@ TEST(NetworkScenario, ReadsEveryNodeElementLoadAndLimit) {
 }
 
 TEST(NetworkScenario, CsvHeaderIsTheContractsColumnsInOrder) {
-  const NetworkScenarioSpec s = LoadNetworkScenario(WriteTempFile("every.yaml", kNetwork));
-  const NetworkCsvFormat format(s.Build(), std::nullopt);
-  EXPECT_EQ(format.header(),
+  const Scenario s = LoadScenario(EveryPart());
+  EXPECT_EQ(CsvHeader(RunColumns(s, s.Build())),
             "t,wall_a.position,wall_a.velocity,load.position,load.velocity,wall_b.position,"
             "wall_b.velocity,crank.position,crank.velocity,"
             "flexor.length,flexor.tension,flexor.shortening_velocity,flexor.activation,"
@@ -166,7 +130,7 @@ std::map<std::string, std::string> FirstRow(const std::string& csv) {
 }
 
 TEST(NetworkScenario, FirstRowAgreesWithAHandComputation) {
-  const std::string path = WriteTempFile("every.yaml", kNetwork);
+  const std::string path = EveryPart();
   const std::string csv = ::testing::TempDir() + "network_first_row.csv";
   ASSERT_EQ(RunCli("run " + path + " -o " + csv + " --quiet").exit_code, 0);
   const std::map<std::string, std::string> row = FirstRow(ReadFile(csv));
@@ -216,7 +180,7 @@ TEST(NetworkScenario, FirstRowAgreesWithAHandComputation) {
 }
 
 TEST(NetworkScenario, PhaseToleranceOfTheOutputOverridesEveryModels) {
-  const std::string path = WriteTempFile("every.yaml", kNetwork);
+  const std::string path = EveryPart();
   const std::string csv = ::testing::TempDir() + "network_phase.csv";
   ASSERT_EQ(RunCli("run " + path + " -o " + csv + " --quiet --set output.phase_tolerance=0.1")
                 .exit_code, 0);
@@ -226,8 +190,8 @@ TEST(NetworkScenario, PhaseToleranceOfTheOutputOverridesEveryModels) {
 }
 
 TEST(NetworkScenario, SetReachesNestedKeysOfListsAndModels) {
-  const std::string path = WriteTempFile("every.yaml", kNetwork);
-  const NetworkScenarioSpec s = LoadNetworkScenario(
+  const std::string path = EveryPart();
+  const Scenario s = LoadScenario(
       path, {"elements[0].activation.after=0.5", "nodes[1].mass=2", "models.flexor.f_iso=50",
              "elements[3].exponential.k=7", "nodes[3].prescribed.amplitude=0.02",
              "loads[1].gravity=-9.81", "limits[1].max_length=0.4"});
@@ -240,21 +204,36 @@ TEST(NetworkScenario, SetReachesNestedKeysOfListsAndModels) {
   EXPECT_EQ(*s.limits[1].max_length, 0.4);
   // an override is validated as the file's value, and named as one
   EXPECT_THAT(testing::InputErrorOf(path, [&] {
-                LoadNetworkScenario(path, {"elements[1].activation.value=1.5"});
+                LoadScenario(path, {"elements[1].activation.value=1.5"});
               }),
               HasSubstr("elements[1].activation.value = 1.5 (--set): activation must stay "
                         "within [0, 1]"));
 }
 
+// The form of a file is told by its top-level keys (ScenarioTemplate::form, which
+// LoadScenario follows): a top-level `nodes:` key is a network.
+bool IsNetworkScenario(const std::string& path) {
+  return ScenarioTemplate(path).form() == ScenarioForm::kNetwork;
+}
+
 TEST(NetworkScenario, IsNetworkScenarioLooksAtTopLevelKeysOnly) {
-  EXPECT_TRUE(IsNetworkScenario(WriteTempFile("every.yaml", kNetwork)));
+  EXPECT_TRUE(IsNetworkScenario(EveryPart()));
   EXPECT_TRUE(IsNetworkScenario(WriteTempFile("flow.yaml", "{time: {start: 0}, nodes: []}\n")));
   EXPECT_FALSE(IsNetworkScenario(testing::ScenarioPath("concentric.yaml")));
   // `nodes` as a value, or below the top level, is not the key
   EXPECT_FALSE(IsNetworkScenario(WriteTempFile("value.yaml", "name: nodes\nx: {nodes: 1}\n")));
   EXPECT_FALSE(IsNetworkScenario(WriteTempFile("list.yaml", "- nodes\n- {nodes: 1}\n")));
-  EXPECT_FALSE(IsNetworkScenario(WriteTempFile("empty.yaml", "# nothing\n")));
+  // an empty file has no form: reading it says so, whichever reader is asked
+  const std::string empty = WriteTempFile("empty.yaml", "# nothing\n");
+  EXPECT_THAT(testing::InputErrorOf(empty, [&] { IsNetworkScenario(empty); }),
+              HasSubstr("FILE: the file is empty"));
+  EXPECT_THAT(testing::InputErrorOf(empty, [&] { LoadScenario(empty); }),
+              HasSubstr("FILE: the file is empty"));
   EXPECT_THROW(IsNetworkScenario(::testing::TempDir() + "no_such_network.yaml"), InputError);
+  // and the scenario read is of that form
+  EXPECT_EQ(LoadScenario(testing::ScenarioPath("concentric.yaml")).form,
+            ScenarioForm::kActuator);
+  EXPECT_EQ(LoadScenario(EveryPart()).form, ScenarioForm::kNetwork);
 }
 
 // A free node moving towards a fixed one at 1 m/s with nothing to stop it: the spring
@@ -266,7 +245,7 @@ output: {interval: 0.01}
 )";
 
 TEST(NetworkScenario, AnElementReachingZeroLengthFailsTheRun) {
-  const NetworkRunResult result = RunNetworkScenarioFile(WriteTempFile("collapse.yaml", kCollapse));
+  const RecordedRun result = RunScenario(LoadScenario(WriteTempFile("collapse.yaml", kCollapse)));
   EXPECT_EQ(result.stats.status, RunStatus::kFailed);
   EXPECT_THAT(result.stats.message, HasSubstr("the length of gap reached zero"));
   // x = 0.1 - t exactly: the root is found to CVODE's root tolerance, far below 1e-6 s
@@ -285,7 +264,7 @@ TEST(NetworkScenario, RunExitsThreeOnCollapseAndKeepsTheEarlierCsv) {
 }
 
 TEST(NetworkScenario, RunPrintsTheLinearSolverInItsSummary) {
-  const std::string path = WriteTempFile("every.yaml", kNetwork);
+  const std::string path = EveryPart();
   const Outcome r = RunCli("run " + path + " -o " + ::testing::TempDir() + "network_summary.csv");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.err, HasSubstr("every_part: completed at t = 0.26 s: "));

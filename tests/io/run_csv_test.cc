@@ -1,4 +1,7 @@
-#include "musclesim/io/trajectory_csv.h"
+// A run as CSV (io/run_csv.h) and its stats as JSON (io/stats_json.h): the single actuator's
+// documented header, rows of 17 significant digits that read back to the same doubles, the
+// phase words, and the streamed writer writing what the whole formatter does.
+#include "musclesim/io/run_csv.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -6,26 +9,75 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <random>
 #include <sstream>
 
 #include "musclesim/io/output_file.h"
+#include "musclesim/io/stats_json.h"
+#include "support/canonical_scenarios.h"
 
 namespace musclesim {
 namespace {
 
 using ::testing::HasSubstr;
 
-TrajectoryPoint Point(double t, double length, double v) {
-  TrajectoryPoint p{t, {}};
-  p.sample.length = length;
-  p.sample.shortening_velocity = v;
-  p.sample.activation = 0.75;
-  p.sample.tension.passive = 1.0 / 3.0;
-  p.sample.tension.active = 2.0 / 3.0;
-  p.sample.tension.total = 1.0;
-  p.sample.load = -40.0;
-  return p;
+// The single actuator's columns (scenarios/concentric.yaml built in code), with
+// output.phase_tolerance set when given; with `excitation`, activation dynamics.
+RunColumns ActuatorColumns(std::optional<double> phase_tolerance = std::nullopt,
+                           bool excitation = false) {
+  ActuatorScenarioSpec spec = testing::ConcentricSpec();
+  spec.output.phase_tolerance = phase_tolerance;
+  if (excitation) spec.excitation = ExcitationInput{Waveform::Constant(0.5), {}, std::nullopt};
+  const Scenario scenario = MakeActuatorScenario(spec);
+  return RunColumns(scenario, scenario.Build());
+}
+
+// What the actuator's network observes when the actuator is `length` long and shortens at
+// `v`: element 0 the actuator, node 1 its tip (docs/model.md 7.4).
+NetworkSample Sample(double length, double v) {
+  NetworkSample s;
+  s.position = {0.0, length};
+  s.velocity = {0.0, -v};
+  s.load = {0.0, -40.0};
+  s.elements.resize(3);
+  ElementSample& actuator = s.elements[kActuatorElement];
+  actuator.length = length;
+  actuator.lengthening_rate = -v;
+  actuator.activation = 0.75;
+  actuator.excitation = 0.75;
+  actuator.parts.passive = 1.0 / 3.0;
+  actuator.parts.active = 2.0 / 3.0;
+  actuator.parts.total = 1.0;
+  actuator.tension = 1.0;
+  return s;
+}
+
+struct Point {
+  double t;
+  NetworkSample sample;
+};
+
+Point At(double t, double length, double v) { return {t, Sample(length, v)}; }
+
+// The run that recorded `points`, in memory, as a ColumnRecorder would hold it.
+RecordedRun Recorded(const RunColumns& columns, const std::vector<Point>& points) {
+  RecordedRun run{columns, std::vector<std::vector<double>>(columns.size()), {}};
+  std::vector<double> row(columns.size());
+  for (const Point& p : points) {
+    columns.Fill(p.t, p.sample, row.data());
+    for (std::size_t c = 0; c < row.size(); ++c) run.values[c].push_back(row[c]);
+  }
+  return run;
+}
+
+// The CSV line (without its newline) of one point.
+std::string Row(const RunColumns& columns, const Point& p) {
+  std::vector<double> row(columns.size());
+  columns.Fill(p.t, p.sample, row.data());
+  std::string csv;
+  AppendCsvRow(csv, columns, row.data());
+  return csv;
 }
 
 std::vector<std::string> Split(const std::string& text, char separator) {
@@ -38,17 +90,19 @@ std::vector<std::string> Split(const std::string& text, char separator) {
 
 TEST(TrajectoryCsv, HeaderIsTheDocumentedOne) {
   // README "Scenarios": the header is exactly this
-  EXPECT_EQ(FormatTrajectoryCsv({}, 1e-3),
+  EXPECT_EQ(FormatRunCsv(Recorded(ActuatorColumns(), {})),
             "t,length,shortening_velocity,activation,tension_passive,tension_active,"
             "tension_total,load,phase\n");
+  // with activation dynamics, `excitation` right after `activation`
+  EXPECT_EQ(CsvHeader(ActuatorColumns(std::nullopt, true)),
+            "t,length,shortening_velocity,activation,excitation,tension_passive,"
+            "tension_active,tension_total,load,phase");
 }
 
 TEST(TrajectoryCsv, RowHoldsEveryFieldWithSeventeenDigits) {
-  std::string row;
-  AppendTrajectoryRow(row, Point(0.1, 0.2, 0.3), 1e-3);
-  EXPECT_EQ(row,
+  EXPECT_EQ(Row(ActuatorColumns(), At(0.1, 0.2, 0.3)),
             "0.10000000000000001,0.20000000000000001,0.29999999999999999,0.75,"
-            "0.33333333333333331,0.66666666666666663,1,-40,concentric\n");
+            "0.33333333333333331,0.66666666666666663,1,-40,concentric");
 }
 
 TEST(TrajectoryCsv, NumbersReadBackToTheSameDoubles) {
@@ -56,23 +110,25 @@ TEST(TrajectoryCsv, NumbersReadBackToTheSameDoubles) {
   std::mt19937_64 rng(17);
   std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
   std::uniform_int_distribution<int> exponent(-300, 300);
-  std::vector<TrajectoryPoint> points;
+  std::vector<Point> points;
   for (int i = 0; i < 2000; ++i) {
-    TrajectoryPoint p = Point(mantissa(rng), std::ldexp(mantissa(rng), exponent(rng)),
-                              std::ldexp(mantissa(rng), exponent(rng) / 10));
-    p.sample.tension.total = std::ldexp(mantissa(rng), exponent(rng));
+    Point p = At(mantissa(rng), std::ldexp(mantissa(rng), exponent(rng)),
+                 std::ldexp(mantissa(rng), exponent(rng) / 10));
+    p.sample.elements[kActuatorElement].parts.total = std::ldexp(mantissa(rng), exponent(rng));
     points.push_back(p);
   }
-  points.push_back(Point(5e-324, 1.7976931348623157e308, -0.0));  // the extremes
-  const std::vector<std::string> lines = Split(FormatTrajectoryCsv(points, 0.0), '\n');
+  points.push_back(At(5e-324, 1.7976931348623157e308, -0.0));  // the extremes
+  const RunColumns columns = ActuatorColumns(0.0);
+  const std::vector<std::string> lines = Split(FormatRunCsv(Recorded(columns, points)), '\n');
   ASSERT_EQ(lines.size(), points.size() + 1);
   for (std::size_t i = 0; i < points.size(); ++i) {
     const std::vector<std::string> fields = Split(lines[i + 1], ',');
     ASSERT_EQ(fields.size(), 9u) << lines[i + 1];
-    const TrajectoryPoint& p = points[i];
-    const double expected[8] = {p.t, p.sample.length, p.sample.shortening_velocity,
-                                p.sample.activation, p.sample.tension.passive,
-                                p.sample.tension.active, p.sample.tension.total, p.sample.load};
+    const NetworkSample& s = points[i].sample;
+    const ElementSample& a = s.elements[kActuatorElement];
+    const double expected[8] = {points[i].t,    a.length,        -a.lengthening_rate,
+                                a.activation,   a.parts.passive, a.parts.active,
+                                a.parts.total,  s.load[kActuatorTipNode]};
     for (int k = 0; k < 8; ++k) {
       EXPECT_EQ(std::strtod(fields[k].c_str(), nullptr), expected[k]) << fields[k];
       // at most 17 significant digits (fewer when they end in zeros, as 0.75 does): the
@@ -101,17 +157,16 @@ TEST(TrajectoryCsv, PhaseIsIsometricUpToAndIncludingTheTolerance) {
   EXPECT_EQ(ClassifyPhase(0.0, 0.0), Phase::kIsometric);
   EXPECT_EQ(ClassifyPhase(1e-300, 0.0), Phase::kConcentric);
   // and in the CSV, by name
-  std::string rows;
-  for (double v : {std::nextafter(tol, 1.0), tol, -tol, std::nextafter(-tol, -1.0)}) {
-    AppendTrajectoryRow(rows, Point(0.0, 0.1, v), tol);
-  }
+  const RunColumns columns = ActuatorColumns(tol);
   std::vector<std::string> phases;
-  for (const std::string& line : Split(rows, '\n')) phases.push_back(Split(line, ',').back());
+  for (double v : {std::nextafter(tol, 1.0), tol, -tol, std::nextafter(-tol, -1.0)}) {
+    phases.push_back(Split(Row(columns, At(0.0, 0.1, v)), ',').back());
+  }
   EXPECT_THAT(phases, ::testing::ElementsAre("concentric", "isometric", "isometric", "eccentric"));
 }
 
 std::string TempPath(const std::string& name) {
-  return ::testing::TempDir() + "trajectory_csv_" +
+  return ::testing::TempDir() + "run_csv_" +
          ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" + name;
 }
 
@@ -122,34 +177,36 @@ std::string ReadFile(const std::string& path) {
 
 TEST(TrajectoryCsv, StreamedWriterWritesWhatTheWholeFormatterDoes) {
   // 3000 rows of ~200 bytes span several of the writer's 64 KiB blocks
-  std::vector<TrajectoryPoint> points;
+  std::vector<Point> points;
   for (int i = 0; i < 3000; ++i) {
-    points.push_back(Point(1e-3 * i, 0.1 + 1e-6 * i, 2e-3 * std::sin(0.01 * i)));
+    points.push_back(At(1e-3 * i, 0.1 + 1e-6 * i, 2e-3 * std::sin(0.01 * i)));
   }
+  const Scenario scenario = testing::ConcentricScenario();
   const std::string path = TempPath("streamed.csv");
   std::remove(path.c_str());
   {
     StreamedOutput output(path);
-    TrajectoryCsvWriter writer(output, 1e-3);
-    for (const TrajectoryPoint& p : points) writer.Record(p);
+    RunCsvWriter writer(output, scenario, scenario.Build());
+    for (const Point& p : points) writer.Record(p.t, p.sample);
     EXPECT_EQ(writer.rows(), 3000);
-    EXPECT_EQ(writer.last().t, points.back().t);
+    EXPECT_EQ(writer.last().front(), points.back().t);  // column t
     writer.Flush();
     output.Commit();
   }
-  EXPECT_EQ(ReadFile(path), FormatTrajectoryCsv(points, 1e-3));
+  EXPECT_EQ(ReadFile(path), FormatRunCsv(Recorded(ActuatorColumns(), points)));
 }
 
 TEST(TrajectoryCsv, StreamedWriterOfAnEmptyRunWritesTheHeader) {
   const std::string path = TempPath("empty.csv");
+  const Scenario scenario = testing::ConcentricScenario();
   {
     StreamedOutput output(path);
-    TrajectoryCsvWriter writer(output, 1e-3);
+    RunCsvWriter writer(output, scenario, scenario.Build());
     EXPECT_EQ(writer.rows(), 0);
     writer.Flush();
     output.Commit();
   }
-  EXPECT_EQ(ReadFile(path), FormatTrajectoryCsv({}, 1e-3));
+  EXPECT_EQ(ReadFile(path), FormatRunCsv(Recorded(ActuatorColumns(), {})));
 }
 
 TEST(TrajectoryCsv, StatsJsonHoldsEveryCounterAndEscapesTheMessage) {

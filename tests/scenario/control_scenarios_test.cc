@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/network_scenario.h"
+#include "musclesim/io/scenario_yaml.h"
 #include "support/control_networks.h"
 #include "support/difference_jacobian.h"
 
@@ -72,7 +72,7 @@ TEST(ControlScenarioFiles, RunAsTheirCodeTwins) {
                {"position_tracking.yaml", testing::PositionTracking()},
                {"stiffness_modulation.yaml", testing::StiffnessModulation()}};
   for (const auto& c : cases) {
-    const NetworkScenarioSpec spec = LoadNetworkScenario(ScenarioPath(c.file));
+    const Scenario spec = LoadScenario(ScenarioPath(c.file));
     Simulation simulation;
     const NetworkRunResult file = simulation.Run(spec.Build(), spec.solver, spec.Request());
     const NetworkRunResult code = c.code.Run();

@@ -1,4 +1,6 @@
-#include "musclesim/io/run_scenario.h"
+// A scenario run in code (scenario/run.h) against the `musclesim run` program's CSV, and the
+// canonical scenarios doing what the README says they do.
+#include "musclesim/scenario/run.h"
 
 #include <gtest/gtest.h>
 
@@ -8,11 +10,13 @@
 #include <string>
 
 #include "musclesim/io/csv_table.h"
+#include "musclesim/io/scenario_yaml.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {
 namespace {
 
+using testing::ColumnOf;
 using testing::ScenarioPath;
 
 // The trajectory CSV that the `musclesim run` program writes for `arguments`.
@@ -25,39 +29,43 @@ CsvTable RunProgram(const std::string& arguments, const std::string& name) {
 
 // Every recorded length and tension of `result` equals the program's CSV to the 17
 // digits the CSV keeps (both are the same double printed and parsed back).
-void ExpectSameTrajectory(const RunResult& result, const CsvTable& csv) {
-  ASSERT_EQ(result.trajectory.size(), csv.rows.size());
+void ExpectSameTrajectory(const RecordedRun& result, const CsvTable& csv) {
+  const std::vector<double>& lengths = ColumnOf(result, "length");
+  const std::vector<double>& tensions = ColumnOf(result, "tension_total");
+  ASSERT_EQ(lengths.size(), csv.rows.size());
+  ASSERT_EQ(tensions.size(), csv.rows.size());
   const int length = csv.Find("length"), tension = csv.Find("tension_total");
   for (std::size_t i = 0; i < csv.rows.size(); ++i) {
-    ASSERT_EQ(result.trajectory[i].sample.length, csv.Number(i, length)) << "row " << i;
-    ASSERT_EQ(result.trajectory[i].sample.tension.total, csv.Number(i, tension)) << "row " << i;
+    ASSERT_EQ(lengths[i], csv.Number(i, length)) << "row " << i;
+    ASSERT_EQ(tensions[i], csv.Number(i, tension)) << "row " << i;
   }
 }
 
 TEST(RunScenario, FileRunInCodeEqualsTheProgramsCsv) {
-  const RunResult result = RunScenarioFile(ScenarioPath("concentric.yaml"));
+  const RecordedRun result = RunScenario(LoadScenario(ScenarioPath("concentric.yaml")));
   EXPECT_EQ(result.stats.status, RunStatus::kCompleted);
   ExpectSameTrajectory(result, RunProgram(ScenarioPath("concentric.yaml"), "file.csv"));
 }
 
 TEST(RunScenario, ValueChangedInCodeEqualsTheSameValueSetOnTheCommandLine) {
-  ScenarioSpec spec = LoadScenario(ScenarioPath("concentric.yaml"));
-  spec.loads.at(0).force.after = 55.0;  // the step load's value after the switch-on
-  const RunResult result = RunScenario(spec);
+  Scenario scenario = LoadScenario(ScenarioPath("concentric.yaml"));
+  // the step load's value after the switch-on, written into the network's load on the tip
+  scenario.loads.at(0).load.force.after = 55.0;
+  const RecordedRun result = RunScenario(scenario);
   ExpectSameTrajectory(result, RunProgram(ScenarioPath("concentric.yaml") +
                                               " --set load[0].after=55", "set.csv"));
 }
 
 TEST(RunScenario, ABadOverrideIsAnInputError) {
-  EXPECT_THROW(RunScenarioFile(ScenarioPath("concentric.yaml"), {"model.velocity.n=0"}),
-               InputError);
+  EXPECT_THROW(LoadScenario(ScenarioPath("concentric.yaml"), {"model.velocity.n=0"}), InputError);
 }
 
 // README "The canonical scenarios": what each run shows, checked on the shipped files.
 TEST(RunScenario, CanonicalScenariosDoWhatTheReadmeSays) {
   // concentric: "a 40 N load [...] applied with full activation at 0.05 s: the actuator
   // shortens where T(x, v, 1) = 40 N, slowing as it leaves L_opt"
-  const RunResult concentric = RunScenarioFile(ScenarioPath("concentric.yaml"));
+  const RunResult concentric =
+      testing::RunActuator(LoadScenario(ScenarioPath("concentric.yaml")));
   ASSERT_EQ(concentric.stats.status, RunStatus::kCompleted);
   double previous_v = INFINITY;
   for (const TrajectoryPoint& p : concentric.trajectory) {
@@ -74,7 +82,8 @@ TEST(RunScenario, CanonicalScenariosDoWhatTheReadmeSays) {
 
   // eccentric: "a 150 N load: it lengthens (v < 0) with the active tension above f_iso,
   // until the passive element holds the load"
-  const RunResult eccentric = RunScenarioFile(ScenarioPath("eccentric.yaml"));
+  const RunResult eccentric =
+      testing::RunActuator(LoadScenario(ScenarioPath("eccentric.yaml")));
   ASSERT_EQ(eccentric.stats.status, RunStatus::kCompleted);
   // (when the passive element catches it, it rebounds for ~10 ms before settling)
   double peak_active = 0.0;
@@ -93,9 +102,10 @@ TEST(RunScenario, CanonicalScenariosDoWhatTheReadmeSays) {
 
   // sine_load: "a 60 +- 50 N, 2 Hz load on the active actuator: concentric and eccentric
   // phases alternate" (three periods: at least two of each)
-  const ScenarioSpec sine = LoadScenario(ScenarioPath("sine_load.yaml"));
-  const RunResult run = RunScenario(sine);
-  const double tolerance = sine.PhaseTolerance();  // the CSV's isometric band, 1e-3 m/s
+  const Scenario sine = LoadScenario(ScenarioPath("sine_load.yaml"));
+  const RunResult run = testing::RunActuator(sine);
+  // the CSV's isometric band, 1e-3 m/s
+  const double tolerance = sine.PhaseTolerance(kActuatorElement);
   int concentric_spells = 0, eccentric_spells = 0;
   double last = 0.0;  // sign of the last spell that left the isometric band
   for (const TrajectoryPoint& p : run.trajectory) {

@@ -105,8 +105,9 @@ TEST(SensitivityActuator, MassSpringAndRestLength) {
 }
 
 TEST(SensitivityActuator, DampingAtItsBoundOfZero) {
-  // a damping cannot go below 0: the library's quotient is one-sided there, and so is the
-  // reference, its steps relative to 1 N s/m (next to the muscle's own ~1e3 N s/m near rest)
+  // a damping cannot go below 0: the reference's quotient is one-sided there, its steps
+  // relative to 1 N s/m (next to the muscle's own ~1e3 N s/m near rest); the library's df/dp
+  // is the damper element's closed form, which a bound does not affect
   ExpectSensitivitiesMatchDifferences(SingleActuator(), {},
                                       {Differentiated{"actuator.damping", 0.0, 1.0, true}});
 }

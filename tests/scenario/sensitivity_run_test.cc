@@ -1,6 +1,7 @@
-// RunWithSensitivities as data (io/sensitivity_run.h): rows exactly at listed output times,
-// with the derivatives there against finite differences of full runs; what the table says
-// about its parameters; and each refusal, an InputError naming the path and the rule.
+// RunWithSensitivities as data (scenario/sensitivity_run.h): rows exactly at listed output
+// times, with the derivatives there against finite differences of full runs; what the table
+// says about its parameters; and each refusal, an InputError naming who asked, the path and
+// the rule.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -9,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/scenario/sensitivity_run.h"
 #include "support/scenario_files.h"
 #include "support/sensitivity_reference.h"
 
@@ -18,6 +21,7 @@ namespace {
 using ::testing::HasSubstr;
 using testing::At;
 using testing::ExpectSensitivitiesMatchDifferences;
+using testing::RunFileWithSensitivities;
 
 // A concentric contraction without kinks: the symmetric velocity curve (no eccentric block,
 // so v = 0 is no kink), the length below the slack length throughout; the activation steps
@@ -74,15 +78,16 @@ std::string Network() { return testing::WriteTempFile("network.yaml", kNetwork);
 const std::vector<double> kListed = {0.0123, 0.05, 0.0777, 0.13, 0.2};
 
 TEST(SensitivityOutputTimes, RowsExactlyAtTheListedTimes) {
-  const SensitivityTable single = RunWithSensitivities(Single(), {}, {"model.f_iso"}, kListed);
+  const SensitivityTable single =
+      RunWithSensitivities(LoadScenario(Single()), {"model.f_iso"}, kListed);
   EXPECT_EQ(single.times, kListed);  // exactly: no row at t_start, none of the grid's
   const SensitivityTable network =
-      RunWithSensitivities(Network(), {}, {"models.muscle.f_iso"}, kListed);
+      RunWithSensitivities(LoadScenario(Network()), {"models.muscle.f_iso"}, kListed);
   EXPECT_EQ(network.times, kListed);
   // t_start listed: the first row is the initial state
   const std::vector<double> with_start = {0.0, 0.1, 0.2};
   const SensitivityTable from_start =
-      RunWithSensitivities(Single(), {}, {"initial.length"}, with_start);
+      RunWithSensitivities(LoadScenario(Single()), {"initial.length"}, with_start);
   EXPECT_EQ(from_start.times, with_start);
   ASSERT_EQ(from_start.rows(), 3u);
   // dx(t0)/dx0 = 1 and dxdot(t0)/dx0 = 0, exactly: the initial sensitivity itself
@@ -107,7 +112,7 @@ TEST(SensitivityOutputTimes, DerivativesAtListedTimesNetwork) {
 
 TEST(SensitivityTable, NamesItsParametersValuesAndSources) {
   const SensitivityTable table =
-      RunWithSensitivities(Single(), {"actuator.mass=0.25"}, {"model.f_iso", "actuator.mass"});
+      RunFileWithSensitivities(Single(), {"actuator.mass=0.25"}, {"model.f_iso", "actuator.mass"});
   EXPECT_EQ(table.parameters, (std::vector<std::string>{"model.f_iso", "actuator.mass"}));
   // the values as run: the file's, or an override's
   EXPECT_EQ(table.parameter_values, (std::vector<double>{100.0, 0.25}));
@@ -124,10 +129,24 @@ TEST(SensitivityTable, NamesItsParametersValuesAndSources) {
   EXPECT_EQ(table.derivatives.size(), 11u * 2u * 5u);
 }
 
-// The InputError a request throws, the scenario's path shown as FILE.
+TEST(SensitivityTable, TheActuatorsDamperAndSpringAreClosedForms) {
+  // the single actuator's damping, stiffness and rest length are the coefficients of its
+  // network's damper and spring elements (docs/model.md 7.4), whose df/dp has a closed form;
+  // its mass, a node's, is a difference quotient
+  const SensitivityTable table = RunWithSensitivities(
+      LoadScenario(Single()), {"actuator.damping", "actuator.stiffness", "actuator.rest_length",
+                               "actuator.mass"});
+  EXPECT_EQ(table.sources,
+            (std::vector<DerivativeSource>{DerivativeSource::kAnalytic, DerivativeSource::kAnalytic,
+                                           DerivativeSource::kAnalytic,
+                                           DerivativeSource::kDifferenceQuotient}));
+}
+
+// The InputError a request from the command line throws, the scenario's path shown as FILE.
 std::string Refusal(const std::string& scenario, const std::string& parameter) {
-  return testing::InputErrorOf(scenario,
-                               [&] { RunWithSensitivities(scenario, {}, {parameter}); });
+  return testing::InputErrorOf(scenario, [&] {
+    SensitivityRun(LoadScenario(scenario), {{parameter, "--sensitivity"}});
+  });
 }
 
 TEST(SensitivityRefusals, AParameterThatMovesABreakpoint) {
@@ -157,21 +176,34 @@ TEST(SensitivityRefusals, ASetting) {
 }
 
 TEST(SensitivityRefusals, APathAbsentFromTheFile) {
-  const std::string message = Refusal(Single(), "initial.lengthening_rate");
-  EXPECT_THAT(message, HasSubstr("--sensitivity initial.lengthening_rate: no value in the "
-                                 "scenario"));
+  // a part the scenario does not have (it has one load): nothing to differentiate by
+  const std::string message = Refusal(Single(), "load[3].value");
+  EXPECT_THAT(message, HasSubstr("--sensitivity load[3].value: "));
+  EXPECT_THAT(message, HasSubstr(": a sensitivity needs a number of the scenario's dynamics"));
+}
+
+// A key the file leaves out still has its value in the scenario (the initial lengthening
+// rate: 0 m/s), and the handle on it differentiates like any other: the sensitivity is
+// checked against differences of full runs with the key added by --set.
+TEST(SensitivityTable, AValueTheFileLeavesOutIsTheScenariosDefault) {
+  const SensitivityTable table =
+      RunWithSensitivities(LoadScenario(Single()), {"initial.lengthening_rate"});
+  EXPECT_EQ(table.parameter_values, std::vector<double>{0.0});
+  testing::Differentiated rate{"initial.lengthening_rate", 0.0, 0.01, false};  // 1 cm/s
+  ExpectSensitivitiesMatchDifferences(Single(), {}, {rate});
 }
 
 TEST(SensitivityRefusals, ANonNumber) {
   const std::string message = Refusal(Network(), "elements[0].model");
-  EXPECT_THAT(message,
-              HasSubstr("--sensitivity elements[0].model = muscle: not a number"));
+  EXPECT_THAT(message, HasSubstr("--sensitivity elements[0].model: names no number of this "
+                                 "actuator: a sensitivity needs a number of the scenario's "
+                                 "dynamics"));
 }
 
 // No parameters: the plain columns, through the sensitivity path.
 TEST(SensitivityTable, NoParametersGiveThePlainColumns) {
   const std::string scenario = Single();
-  const SensitivityTable table = RunWithSensitivities(scenario, {}, {});
+  const SensitivityTable table = RunWithSensitivities(LoadScenario(scenario), {});
   const testing::FullTrajectory plain = testing::FullRun(scenario, {});
   ASSERT_EQ(table.times, plain.times);
   ASSERT_EQ(table.columns, plain.columns);

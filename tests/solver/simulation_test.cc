@@ -8,7 +8,9 @@
 #include <thread>
 
 #include "musclesim/core/errors.h"
-#include "musclesim/io/network_scenario.h"
+#include "musclesim/core/number_format.h"
+#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/scenario/run.h"
 #include "support/canonical_actuator.h"
 #include "support/scenario_files.h"
 
@@ -80,7 +82,7 @@ TEST(Simulation, IsometricTransducerReadsTheIsometricTension) {
   // run long enough for the transducer to settle (time constant (dT/dv) / k_t = 0.1 s)
   const Outcome run = Simulate(ScenarioPath("isometric.yaml"), {"time.end=3"});
   ASSERT_EQ(run.stats.status, RunStatus::kCompleted) << run.stats.message;
-  const TensionModel model(run.spec.model.params);
+  const TensionModel model(run.scenario.models.at("model").spec.params);
   const double x = run.trajectory.back().sample.length;
   const double transducer = 1.0e5 * (0.1 - x);
   const double isometric = PassiveTension(model.params().passive, x).value +
@@ -371,20 +373,15 @@ TEST(Simulation, RunResultHoldsWhatTheBufferedRunRecords) {
 // with CV_TOO_CLOSE at t = 4.11 s): this is the guard against that class of failure.
 TEST(Simulation, EveryShippedScenarioRunsToTenTimesItsEnd) {
   int checked = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios")) {
+  const std::string scenarios = std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios";
+  for (const auto& entry : std::filesystem::directory_iterator(scenarios)) {
     const std::string path = entry.path().string();
     if (testing::ReadFile(path).find("\ntime:") == std::string::npos) continue;  // sweeps, fits
-    if (IsNetworkScenario(path)) {
-      const NetworkScenarioSpec network = LoadNetworkScenario(path);
-      const std::string end = FormatNumber(network.t_start + 10.0 * (network.t_end - network.t_start));
-      const NetworkRunResult run = RunNetworkScenarioFile(path, {"time.end=" + end});
-      EXPECT_NE(run.stats.status, RunStatus::kFailed) << path << ": " << run.stats.message;
-      ++checked;
-      continue;
-    }
-    const ScenarioSpec spec = LoadScenario(path);
-    const std::string end = FormatNumber(spec.t_start + 10.0 * (spec.t_end - spec.t_start));
-    const Outcome run = Simulate(path, {"time.end=" + end});
+    // either form: a single actuator runs as its network (docs/model.md 7.4)
+    const Scenario scenario = LoadScenario(path);
+    const std::string end =
+        FormatNumber(scenario.t_start + 10.0 * (scenario.t_end - scenario.t_start));
+    const RecordedRun run = RunScenario(LoadScenario(path, {"time.end=" + end}));
     EXPECT_NE(run.stats.status, RunStatus::kFailed) << path << ": " << run.stats.message;
     ++checked;
   }

@@ -1,16 +1,21 @@
-// Test helpers: temporary scenario files and one-call simulations of them.
+// Test helpers: temporary scenario files, the shipped scenarios and the tests' fixtures, and
+// one-call runs of a single actuator whose rows are read as the actuator's samples.
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "musclesim/io/run_scenario.h"
 #include "musclesim/core/errors.h"
-#include "musclesim/io/scenario.h"
+#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/scenario/actuator_scenario.h"
+#include "musclesim/scenario/run.h"
+#include "musclesim/scenario/scenario.h"
 #include "musclesim/solver/simulation.h"
 
 namespace musclesim::testing {
@@ -71,22 +76,94 @@ inline std::string SummaryWithoutWallTime(const std::string& path) {
   return out;
 }
 
+// A shipped scenario (scenarios/NAME), the data the CLI, tests and benchmarks share.
 inline std::string ScenarioPath(const std::string& name) {
   return std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/" + name;
 }
 
+// A scenario only the tests use, read by several of them (tests/fixtures/NAME).
+inline std::string FixturePath(const std::string& name) {
+  return std::string(MUSCLESIM_SOURCE_DIR) + "/tests/fixtures/" + name;
+}
+
+// Records a single actuator's run (ScenarioForm::kActuator) as the actuator's samples: what
+// its network observes of element `actuator` and node `tip` (ActuatorSampleOf).
+class ActuatorTrajectory final : public NetworkSink {
+ public:
+  explicit ActuatorTrajectory(std::vector<TrajectoryPoint>& points) : points_(points) {}
+  void Record(double t, const NetworkSample& sample) override {
+    points_.push_back({t, ActuatorSampleOf(sample)});
+  }
+
+ private:
+  std::vector<TrajectoryPoint>& points_;
+};
+
+// RunScenario of a single actuator into `trajectory` (cleared first).
+inline RunStats RunActuator(const Scenario& scenario, std::vector<TrajectoryPoint>& trajectory) {
+  EXPECT_EQ(scenario.form, ScenarioForm::kActuator) << scenario.source;
+  trajectory.clear();
+  ActuatorTrajectory sink(trajectory);
+  Simulation simulation;
+  return RunScenario(scenario, simulation, sink);
+}
+
+inline RunResult RunActuator(const Scenario& scenario) {
+  RunResult result;
+  result.stats = RunActuator(scenario, result.trajectory);
+  return result;
+}
+
 struct Outcome {
-  ScenarioSpec spec;
+  Scenario scenario;
   RunStats stats;
   std::vector<TrajectoryPoint> trajectory;
 };
 
+// LoadScenario(path, sets) of a single actuator, then its run.
 inline Outcome Simulate(const std::string& path, const std::vector<std::string>& sets = {}) {
   Outcome out{LoadScenario(path, sets), {}, {}};
-  const ActuatorSystem system = BuildSystem(out.spec);
-  Simulation simulation;
-  out.stats = simulation.Run(system, out.spec.solver, out.spec.Request(), out.trajectory);
+  out.stats = RunActuator(out.scenario, out.trajectory);
   return out;
+}
+
+// Column `name` of a recorded run; fails the test and returns an empty column when it has
+// none.
+inline const std::vector<double>& ColumnOf(const RecordedRun& run, const std::string& name) {
+  static const std::vector<double> kNone;
+  const std::vector<std::string>& names = run.columns.names();
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    if (names[c] == name) return run.values[c];
+  }
+  ADD_FAILURE() << "no column " << name;
+  return kNone;
+}
+
+// Whether two runs recorded the same rows to the last bit: the same columns, every value's
+// bits equal (so +0 and -0 differ, and a NaN equals only itself), the same step count.
+inline ::testing::AssertionResult SameRecordedRun(const RecordedRun& a, const RecordedRun& b) {
+  if (a.columns.names() != b.columns.names()) {
+    return ::testing::AssertionFailure() << "the columns differ";
+  }
+  if (a.stats.steps != b.stats.steps || a.stats.status != b.stats.status) {
+    return ::testing::AssertionFailure()
+           << "steps " << a.stats.steps << " and " << b.stats.steps << ", status "
+           << ToString(a.stats.status) << " and " << ToString(b.stats.status);
+  }
+  for (std::size_t c = 0; c < a.values.size(); ++c) {
+    const std::vector<double>& x = a.values[c];
+    const std::vector<double>& y = b.values[c];
+    if (x.size() != y.size()) {
+      return ::testing::AssertionFailure() << x.size() << " and " << y.size() << " rows";
+    }
+    for (std::size_t r = 0; r < x.size(); ++r) {
+      if (std::bit_cast<std::uint64_t>(x[r]) != std::bit_cast<std::uint64_t>(y[r])) {
+        return ::testing::AssertionFailure()
+               << a.columns.names()[c] << " at row " << r << ": " << x[r] << " and " << y[r];
+      }
+    }
+  }
+  return ::testing::AssertionSuccess();
 }
 
 }  // namespace musclesim::testing

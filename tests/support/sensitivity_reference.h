@@ -20,10 +20,10 @@
 #include <vector>
 
 #include "musclesim/core/errors.h"
-#include "musclesim/io/network_scenario.h"
-#include "musclesim/io/run_scenario.h"
-#include "musclesim/io/scenario.h"
-#include "musclesim/io/sensitivity_run.h"
+#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/scenario/actuator_scenario.h"
+#include "musclesim/scenario/scenario.h"
+#include "musclesim/scenario/sensitivity_run.h"
 #include "musclesim/solver/simulation.h"
 
 namespace musclesim::testing {
@@ -37,7 +37,7 @@ inline std::string SetTo(const std::string& path, double value) {
 }
 
 // A full run's trajectory in the columns a sensitivity run differentiates
-// (io/sensitivity_run.h), by their names, from the plain runs' samples.
+// (scenario/sensitivity_run.h), by their names, from the plain runs' samples.
 struct FullTrajectory {
   std::vector<double> times;
   std::vector<std::string> columns;
@@ -61,7 +61,7 @@ inline void AppendActuatorRow(FullTrajectory& out, const ActuatorSample& s, bool
   out.values.push_back(s.tension.total);
 }
 
-inline FullTrajectory FromNetworkRun(const NetworkScenarioSpec& spec,
+inline FullTrajectory FromNetworkRun(const Scenario& spec,
                                      const NetworkRunResult& result) {
   FullTrajectory out;
   out.times = result.times;
@@ -100,60 +100,43 @@ inline FullTrajectory FromNetworkRun(const NetworkScenarioSpec& spec,
 }  // namespace detail
 
 // The full run of `scenario` (a single actuator or a network) with `extra` added to
-// `overrides`, by the plain integrator: RunScenario of a single actuator, Simulation::Run of a
-// network; rows on the scenario's grid, or at listed `times` (then a single actuator runs as
-// its own network, as io/sensitivity_run.h does, the only form that takes listed times).
+// `overrides`, by the plain integrator (Simulation::Run of the scenario's network, no
+// sensitivity in it); rows on the scenario's grid, or at listed `times`. A single actuator's
+// rows are its actuator's samples (ActuatorSampleOf), as its sensitivity columns are.
 inline FullTrajectory FullRun(const std::string& scenario,
                               const std::vector<std::string>& overrides,
                               const std::string& extra = "",
                               const std::vector<double>& times = {}) {
   std::vector<std::string> all = overrides;
   if (!extra.empty()) all.push_back(extra);
-  if (IsNetworkScenario(scenario)) {
-    const NetworkScenarioSpec spec = LoadNetworkScenario(scenario, all);
-    NetworkRunRequest request = spec.Request();
-    request.output_times = times;
-    Simulation simulation;
-    const NetworkRunResult result = simulation.Run(spec.Build(), spec.solver, request);
-    EXPECT_EQ(result.stats.status, RunStatus::kCompleted) << result.stats.message;
-    return detail::FromNetworkRun(spec, result);
-  }
-  const ScenarioSpec spec = LoadScenario(scenario, all);
-  const bool activation = spec.excitation.has_value();
+  const Scenario spec = LoadScenario(scenario, all);
+  NetworkRunRequest request = spec.Request();
+  request.output_times = times;
+  Simulation simulation;
+  const NetworkRunResult result = simulation.Run(spec.Build(), spec.solver, request);
+  EXPECT_EQ(result.stats.status, RunStatus::kCompleted) << result.stats.message;
+  if (spec.form == ScenarioForm::kNetwork) return detail::FromNetworkRun(spec, result);
+  const bool activation = spec.elements[kActuatorElement].excitation.has_value();
   FullTrajectory out;
   out.columns = {"length", "shortening_velocity"};
   if (activation) out.columns.push_back("activation");
   for (const char* c : {"tension_passive", "tension_active", "tension_total"}) {
     out.columns.push_back(c);
   }
-  if (times.empty()) {
-    const RunResult result = RunScenario(spec);
-    EXPECT_EQ(result.stats.status, RunStatus::kCompleted) << result.stats.message;
-    for (const TrajectoryPoint& point : result.trajectory) {
-      out.times.push_back(point.t);
-      detail::AppendActuatorRow(out, point.sample, activation);
-    }
-    return out;
-  }
-  // the run's own network form (docs/model.md 7.4) with rows at `times`: element 0 the
-  // actuator, node 1 its free end
-  const ActuatorSystem system = BuildSystem(spec);
-  NetworkRunRequest request = NetworkRequestOf(system, spec.Request());
-  request.output_times = times;
-  Simulation simulation;
-  const NetworkRunResult result = simulation.Run(system.network(), spec.solver, request);
-  EXPECT_EQ(result.stats.status, RunStatus::kCompleted) << result.stats.message;
   out.times = result.times;
   for (const NetworkSample& sample : result.samples) {
-    const ElementSample& actuator = sample.elements[0];
-    ActuatorSample s;
-    s.length = actuator.length;
-    s.shortening_velocity = -actuator.lengthening_rate;
-    s.activation = actuator.activation;
-    s.tension = actuator.parts;
-    detail::AppendActuatorRow(out, s, activation);
+    detail::AppendActuatorRow(out, ActuatorSampleOf(sample), activation);
   }
   return out;
+}
+
+// RunWithSensitivities of the scenario file `scenario` with `overrides` (as `--set` gives
+// them) applied.
+inline SensitivityTable RunFileWithSensitivities(const std::string& scenario,
+                                                 const std::vector<std::string>& overrides,
+                                                 const std::vector<std::string>& parameters,
+                                                 const std::vector<double>& times = {}) {
+  return RunWithSensitivities(LoadScenario(scenario, overrides), parameters, times);
 }
 
 // One parameter to differentiate by: its path, its value as written in the scenario (the
@@ -373,7 +356,7 @@ inline void ExpectSensitivitiesMatchDifferences(const std::string& scenario,
                                                 const std::vector<double>& times = {}) {
   std::vector<std::string> paths;
   for (const Differentiated& p : parameters) paths.push_back(p.path);
-  const SensitivityTable table = RunWithSensitivities(scenario, overrides, paths, times);
+  const SensitivityTable table = RunFileWithSensitivities(scenario, overrides, paths, times);
   ASSERT_EQ(table.stats.status, RunStatus::kCompleted) << table.stats.message;
   ASSERT_EQ(table.parameters, paths);
   for (const Differentiated& p : parameters) {

@@ -9,6 +9,7 @@
 
 #include "musclesim/io/csv_table.h"
 #include "musclesim/sweep/sweep.h"
+#include "musclesim/sweep/sweep_file.h"
 #include "musclesim/sweep/sweep_runner.h"
 
 namespace musclesim {
@@ -16,12 +17,12 @@ namespace {
 
 // Runs the shipped sweep `name` on one thread into TEST_TMPDIR and reads its summary.
 CsvTable RunShippedSweep(const std::string& name) {
-  const SweepSpec spec = LoadSweep(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/" + name);
+  const SweepPlan plan = LoadSweep(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/" + name);
   SweepRunOptions options;
   options.output = ::testing::TempDir() + "example_sweeps_" + name + ".csv";
   std::remove((options.output + ".partial").c_str());
   options.jobs = 1;
-  const SweepOutcome outcome = RunSweep(spec, options);
+  const SweepOutcome outcome = RunSweep(plan, options);
   EXPECT_EQ(outcome.failed, 0);
   return ReadCsv(options.output);
 }

@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/sweep/sweep_file.h"
 #include "musclesim/sweep/sweep_mpi.h"
 #include "musclesim/sweep/sweep_runner.h"
 #include "sweep/sweep_sorted_summary.h"
@@ -37,46 +38,47 @@ std::string WriteSweep(const std::string& name, const std::string& body,
 }
 
 TEST(Sweep, GridIsTheCartesianProductLastAxisFastest) {
-  const SweepSpec spec = LoadSweep(WriteSweep("grid", R"(mode: grid
+  const SweepPlan plan = LoadSweep(WriteSweep("grid", R"(mode: grid
 parameters:
   model.velocity.n: [1, 2, 3]
   load[0].after: {from: 10.0, to: 30.0, count: 3}
 metrics: [final_length]
 )"));
-  ASSERT_EQ(PointCount(spec), 9);
-  EXPECT_THAT(PointValues(spec, 0), ElementsAre("1", "10"));
-  EXPECT_THAT(PointValues(spec, 1), ElementsAre("1", "20"));
-  EXPECT_THAT(PointValues(spec, 5), ElementsAre("2", "30"));
-  EXPECT_THAT(PointValues(spec, 8), ElementsAre("3", "30"));
-  EXPECT_THAT(PointOverrides(spec, 3), ElementsAre("model.velocity.n=2", "load[0].after=10"));
+  ASSERT_EQ(PointCount(plan.spec), 9);
+  EXPECT_THAT(PointValues(plan.spec, 0), ElementsAre("1", "10"));
+  EXPECT_THAT(PointValues(plan.spec, 1), ElementsAre("1", "20"));
+  EXPECT_THAT(PointValues(plan.spec, 5), ElementsAre("2", "30"));
+  EXPECT_THAT(PointValues(plan.spec, 8), ElementsAre("3", "30"));
+  EXPECT_THAT(PointOverrides(plan.spec, 3), ElementsAre("model.velocity.n=2", "load[0].after=10"));
 }
 
 TEST(Sweep, LogScaleIsExactAtTheEndsAndGeometricBetween) {
-  const SweepSpec spec = LoadSweep(WriteSweep("log", R"(parameters:
+  const SweepPlan plan = LoadSweep(WriteSweep("log", R"(parameters:
   model.velocity.epsilon: {from: 3.0e-6, to: 7.0e-2, count: 6, scale: log}
 metrics: [final_length]
 )"));
-  ASSERT_EQ(PointCount(spec), 6);
-  EXPECT_EQ(std::stod(PointValues(spec, 0)[0]), 3.0e-6);
-  EXPECT_EQ(std::stod(PointValues(spec, 5)[0]), 7.0e-2);
+  ASSERT_EQ(PointCount(plan.spec), 6);
+  EXPECT_EQ(std::stod(PointValues(plan.spec, 0)[0]), 3.0e-6);
+  EXPECT_EQ(std::stod(PointValues(plan.spec, 5)[0]), 7.0e-2);
   const double ratio = std::pow(7.0e-2 / 3.0e-6, 1.0 / 5.0);
   for (long i = 1; i < 6; ++i) {
     // the values are printed with 17 significant digits: a ratio of two is exact to ~1e-16,
     // and pow/log rounding in the grid adds a few ulps
-    EXPECT_NEAR(std::stod(PointValues(spec, i)[0]) / std::stod(PointValues(spec, i - 1)[0]), ratio,
-                1e-12 * ratio);
+    EXPECT_NEAR(std::stod(PointValues(plan.spec, i)[0]) /
+                    std::stod(PointValues(plan.spec, i - 1)[0]),
+                ratio, 1e-12 * ratio);
   }
 }
 
 TEST(Sweep, ZipPairsAxesAndRejectsUnequalLengths) {
-  const SweepSpec spec = LoadSweep(WriteSweep("zip", R"(mode: zip
+  const SweepPlan plan = LoadSweep(WriteSweep("zip", R"(mode: zip
 parameters:
   model.velocity.n: [1, 2, 3]
   load[0].after: {from: 10.0, to: 30.0, count: 3}
 metrics: [final_length]
 )"));
-  ASSERT_EQ(PointCount(spec), 3);
-  EXPECT_THAT(PointValues(spec, 2), ElementsAre("3", "30"));
+  ASSERT_EQ(PointCount(plan.spec), 3);
+  EXPECT_THAT(PointValues(plan.spec, 2), ElementsAre("3", "30"));
   EXPECT_THAT([] {
     LoadSweep(WriteSweep("zip_bad", R"(mode: zip
 parameters:
@@ -103,15 +105,15 @@ metrics: [final_length]
     text.replace(text.find("SEED"), 4, seed);
     return LoadSweep(WriteSweep("random_" + seed, text));
   };
-  const SweepSpec a = with_seed("1"), again = with_seed("1"), other = with_seed("2");
-  ASSERT_EQ(PointCount(a), 200);
+  const SweepPlan a = with_seed("1"), again = with_seed("1"), other = with_seed("2");
+  ASSERT_EQ(PointCount(a.spec), 200);
   std::set<std::string> methods;
   int differing = 0;
   double log_mean = 0.0;
   for (long i = 0; i < 200; ++i) {
-    const std::vector<std::string> v = PointValues(a, i);
-    EXPECT_EQ(v, PointValues(again, i));
-    differing += v != PointValues(other, i);
+    const std::vector<std::string> v = PointValues(a.spec, i);
+    EXPECT_EQ(v, PointValues(again.spec, i));
+    differing += v != PointValues(other.spec, i);
     const double load = std::stod(v[0]), eps = std::stod(v[1]);
     EXPECT_GE(load, 10.0);
     EXPECT_LT(load, 90.0);
@@ -151,7 +153,9 @@ TEST(Sweep, EveryPointIsValidatedBeforeAnythingRunsNamingTheAxis) {
 }
 
 TEST(Sweep, AnAxisValueErrorNamesTheAxisValuePointAndTheAxisLine) {
-  // the second axis, at line 4 column 3, is the culprit of point 2 = (n=1, epsilon=-1)
+  // the second axis, at line 4 column 3, is the culprit of point 2 = (n=1, epsilon=-1). A
+  // numeric axis naming a number of the base sets it through its parameter handle: the rule
+  // is the handle's ParameterError, with no "(--set)"
   const std::string sweep = WriteSweep("axis_error", R"(parameters:
   model.velocity.n: [1, 3]
   model.velocity.epsilon: [1.0e-3, 2.0e-3, -1, 3.0e-3]
@@ -159,8 +163,9 @@ metrics: [work]
 )");
   EXPECT_EQ(testing::InputErrorOf(sweep, [&] { LoadSweep(sweep); }),
             "FILE:4:3: axis model.velocity.epsilon = -1 makes point 2 (model.velocity.n=1, "
-            "model.velocity.epsilon=-1) an invalid scenario: model.velocity.epsilon = -1 (--set): "
-            "must be between 1e-12 v_max and v_max = 1 [m/s] (smaller: too stiff to integrate in double precision; larger: the regularisation replaces the power law)");
+            "model.velocity.epsilon=-1) an invalid scenario: model.velocity.epsilon = -1: must "
+            "be between 1e-12 v_max and v_max = 1 [m/s] (smaller: too stiff to integrate in "
+            "double precision; larger: the regularisation replaces the power law)");
 }
 
 TEST(Sweep, AnErrorInTheBaseScenarioNamesTheBaseFileLineAndColumn) {
@@ -192,10 +197,12 @@ TEST(Sweep, APointInvalidOnlyInCombinationIsToldSo) {
   limits.max_length: [0.2, 0.15]
 metrics: [work]
 )");
+  // (both axes set through handles: the rule is the scenario's check of its limits)
   EXPECT_THAT(testing::InputErrorOf(sweep, [&] { LoadSweep(sweep); }),
-              HasSubstr("point 3 (initial.length=0.19, limits.max_length=0.15) is not a valid "
-                        "scenario, though each of its values is valid alone: limits.max_length "
-                        "= 0.15 (--set): must be above initial.length = 0.19"));
+              HasSubstr("FILE:3:3: point 3 (initial.length=0.19, limits.max_length=0.15) is not "
+                        "a valid scenario, though each of its values is valid alone: "
+                        "limits.max_length = 0.15: must be above the element's initial length = "
+                        "0.19 [m]"));
 }
 
 TEST(Sweep, SeedAndSamplesAreForRandomModeOnly) {
@@ -264,16 +271,16 @@ class ProgressLog : public SweepObserver {
 };
 
 TEST(SweepRunner, OneAndTwoJobsGiveTheSameSummary) {
-  const SweepSpec spec = LoadSweep(WriteSweep("jobs", SweepOf(10)));
+  const SweepPlan plan = LoadSweep(WriteSweep("jobs", SweepOf(10)));
   SweepRunOptions options;
   options.jobs = 1;
   options.output = testing::WriteTempFile("jobs1.csv", "");
   std::filesystem::remove(options.output);
-  const SweepOutcome one = RunSweep(spec, options);
+  const SweepOutcome one = RunSweep(plan, options);
   const std::string first = options.output;
   options.jobs = 2;
   options.output = testing::WriteTempFile("jobs2.csv", "");
-  const SweepOutcome two = RunSweep(spec, options);
+  const SweepOutcome two = RunSweep(plan, options);
   EXPECT_EQ(one.points, 20);
   EXPECT_EQ(two.ran, 20);
   EXPECT_EQ(one.failed, 0);
@@ -290,40 +297,40 @@ std::vector<std::string> LinesOf(const std::string& path) {
 
 // The first line of the partial file a sweep starts (its signature), from a sweep stopped
 // before any point ran.
-std::string SignatureLine(const SweepSpec& spec, const std::string& name) {
+std::string SignatureLine(const SweepPlan& plan, const std::string& name) {
   SweepRunOptions options;
   options.output = testing::WriteTempFile(name + "_signature.csv", "");
   std::filesystem::remove(options.output + ".partial");
   ProgressLog stop_at_once(0);
   options.observer = &stop_at_once;
-  RunSweep(spec, options);
+  RunSweep(plan, options);
   const std::vector<std::string> lines = LinesOf(options.output + ".partial");
   std::filesystem::remove(options.output + ".partial");
   return lines.empty() ? "" : lines[0];
 }
 
 TEST(SweepRunner, ResumeFromAPartialSummaryGivesTheSameResult) {
-  const SweepSpec spec = LoadSweep(WriteSweep("resume", SweepOf(8)));
+  const SweepPlan plan = LoadSweep(WriteSweep("resume", SweepOf(8)));
   SweepRunOptions options;
   options.output = testing::WriteTempFile("full.csv", "");
-  RunSweep(spec, options);
+  RunSweep(plan, options);
   const std::string full = testing::SummaryWithoutWallTime(options.output);
 
   // what an interrupted sweep leaves: signature, header, some rows in any order, a cut-off line
   const std::vector<std::string> lines = LinesOf(options.output);
   const std::string resumed = testing::WriteTempFile("resumed.csv", "");
   std::filesystem::remove(resumed);
-  std::ofstream(resumed + ".partial") << SignatureLine(spec, "resume") << "\n" << lines[0] << "\n"
+  std::ofstream(resumed + ".partial") << SignatureLine(plan, "resume") << "\n" << lines[0] << "\n"
                                       << lines[7] << "\n" << lines[2] << "\n" << lines[12] << "\n"
                                       << lines[5].substr(0, 9);
   options.output = resumed;
-  EXPECT_THAT([&] { RunSweep(spec, options); },  // no silent restart over it
+  EXPECT_THAT([&] { RunSweep(plan, options); },  // no silent restart over it
               ::testing::ThrowsMessage<InputError>(HasSubstr(
                   "resumed.csv.partial exists: an earlier sweep was interrupted. Pass --resume")));
   options.resume = true;
   ProgressLog log;
   options.observer = &log;
-  const SweepOutcome outcome = RunSweep(spec, options);
+  const SweepOutcome outcome = RunSweep(plan, options);
   EXPECT_EQ(outcome.resumed, 3);
   EXPECT_EQ(outcome.ran, 13);
   EXPECT_TRUE(log.notices.empty());  // a line cut short by a kill is expected, not malformed
@@ -334,10 +341,10 @@ TEST(SweepRunner, ResumeFromAPartialSummaryGivesTheSameResult) {
 }
 
 TEST(SweepRunner, ResumeDropsMalformedRowsAndRunsTheirPointsAgain) {
-  const SweepSpec spec = LoadSweep(WriteSweep("malformed", SweepOf(4)));  // 8 points
+  const SweepPlan plan = LoadSweep(WriteSweep("malformed", SweepOf(4)));  // 8 points
   SweepRunOptions options;
   options.output = testing::WriteTempFile("reference.csv", "");
-  RunSweep(spec, options);
+  RunSweep(plan, options);
   const std::vector<std::string> lines = LinesOf(options.output);  // header, rows 0..7
   ASSERT_EQ(lines.size(), 9u);
   const std::string full = testing::SummaryWithoutWallTime(options.output);
@@ -352,7 +359,7 @@ TEST(SweepRunner, ResumeDropsMalformedRowsAndRunsTheirPointsAgain) {
   const std::string partial = options.output = testing::WriteTempFile("malformed.csv", "");
   std::filesystem::remove(partial);
   std::ofstream(partial + ".partial")
-      << SignatureLine(spec, "malformed") << "\n" << lines[0] << "\n"
+      << SignatureLine(plan, "malformed") << "\n" << lines[0] << "\n"
       << lines[1] << "\n"         // point 0, kept
       << "1,zzz\n"                // too few fields
       << "x" << lines[2] << "\n"  // an index that is not a number
@@ -362,7 +369,7 @@ TEST(SweepRunner, ResumeDropsMalformedRowsAndRunsTheirPointsAgain) {
   options.resume = true;
   ProgressLog log;
   options.observer = &log;
-  const SweepOutcome outcome = RunSweep(spec, options);
+  const SweepOutcome outcome = RunSweep(plan, options);
   EXPECT_EQ(outcome.resumed, 2);
   EXPECT_EQ(outcome.ran, 6);
   ASSERT_EQ(log.notices.size(), 1u);
@@ -411,7 +418,7 @@ TEST(SweepRunner, ResumeRefusesThePartialOfAnotherSweepSayingWhatChanged) {
 }
 
 TEST(SweepRunner, ASecondSweepOnTheSameOutputIsRefusedWhileTheFirstRuns) {
-  const SweepSpec spec = LoadSweep(WriteSweep("busy", SweepOf(300)));
+  const SweepPlan plan = LoadSweep(WriteSweep("busy", SweepOf(300)));
   SweepRunOptions first;
   first.jobs = 1;
   first.output = testing::WriteTempFile("busy.csv", "");
@@ -432,14 +439,14 @@ TEST(SweepRunner, ASecondSweepOnTheSameOutputIsRefusedWhileTheFirstRuns) {
   StopWhenTold observer(rows, tried);
   first.observer = &observer;
   SweepOutcome outcome;
-  std::thread running([&] { outcome = RunSweep(spec, first); });
+  std::thread running([&] { outcome = RunSweep(plan, first); });
   while (rows < 1) std::this_thread::sleep_for(std::chrono::milliseconds(1));
 
   SweepRunOptions second = first;
   second.observer = nullptr;
   for (const bool resume : {false, true}) {
     second.resume = resume;
-    EXPECT_THAT([&] { RunSweep(spec, second); },
+    EXPECT_THAT([&] { RunSweep(plan, second); },
                 ::testing::ThrowsMessage<InputError>(HasSubstr(
                     "busy.csv.partial is in use by a running sweep writing the same output")));
   }
@@ -449,16 +456,16 @@ TEST(SweepRunner, ASecondSweepOnTheSameOutputIsRefusedWhileTheFirstRuns) {
   // once the first has stopped, its file is free to resume
   ProgressLog stop_at_once(0);
   second.observer = &stop_at_once;
-  EXPECT_EQ(RunSweep(spec, second).resumed, outcome.ran);
+  EXPECT_EQ(RunSweep(plan, second).resumed, outcome.ran);
 }
 
 TEST(SweepRunner, AFailingPointIsMarkedAndTheRestGoesOn) {
-  const SweepSpec spec = LoadSweep(WriteSweep("failing",
+  const SweepPlan plan = LoadSweep(WriteSweep("failing",
       "parameters:\n  solver.max_steps: [10000000, 20, 10000000]\nmetrics: [final_length]\n",
       "isometric.yaml"));
   SweepRunOptions options;
   options.output = testing::WriteTempFile("failing.csv", "");
-  const SweepOutcome outcome = RunSweep(spec, options);
+  const SweepOutcome outcome = RunSweep(plan, options);
   EXPECT_EQ(outcome.failed, 1);
   std::ifstream in(options.output);
   std::vector<std::string> lines;
@@ -471,13 +478,13 @@ TEST(SweepRunner, AFailingPointIsMarkedAndTheRestGoesOn) {
 }
 
 TEST(SweepRunner, ObserverSeesProgressFromZeroUpToTheTotal) {
-  const SweepSpec spec = LoadSweep(WriteSweep("observed", SweepOf(6)));
+  const SweepPlan plan = LoadSweep(WriteSweep("observed", SweepOf(6)));
   SweepRunOptions options;
   options.jobs = 2;
   options.output = testing::WriteTempFile("observed.csv", "");
   ProgressLog log;
   options.observer = &log;
-  const SweepOutcome outcome = RunSweep(spec, options);
+  const SweepOutcome outcome = RunSweep(plan, options);
   EXPECT_FALSE(outcome.interrupted);
   ASSERT_GE(log.calls.size(), 2u);
   EXPECT_EQ(log.calls.front().first, 0);  // reported before any point ran
@@ -493,8 +500,8 @@ TEST(SweepRunner, ObserverSeesProgressFromZeroUpToTheTotal) {
 TEST(SweepRunner, AStopRequestEndsOnlyTheSweepOfItsObserver) {
   // two sweeps at once in one process: one observer stops after 3 rows, the other never;
   // the first has far more points than it could run before its observer is asked
-  const SweepSpec long_spec = LoadSweep(WriteSweep("long_sweep", SweepOf(300)));
-  const SweepSpec spec = LoadSweep(WriteSweep("two_sweeps", SweepOf(20)));
+  const SweepPlan long_plan = LoadSweep(WriteSweep("long_sweep", SweepOf(300)));
+  const SweepPlan plan = LoadSweep(WriteSweep("two_sweeps", SweepOf(20)));
   SweepRunOptions stopped, completed;
   stopped.jobs = completed.jobs = 1;
   stopped.output = testing::WriteTempFile("stopped.csv", "");
@@ -507,8 +514,8 @@ TEST(SweepRunner, AStopRequestEndsOnlyTheSweepOfItsObserver) {
   completed.observer = &watcher;
 
   SweepOutcome first, second;
-  std::thread other([&] { second = RunSweep(spec, completed); });
-  first = RunSweep(long_spec, stopped);
+  std::thread other([&] { second = RunSweep(plan, completed); });
+  first = RunSweep(long_plan, stopped);
   other.join();
 
   EXPECT_TRUE(first.interrupted);
@@ -523,7 +530,7 @@ TEST(SweepRunner, AStopRequestEndsOnlyTheSweepOfItsObserver) {
   const std::string partial = testing::ReadFile(stopped.output + ".partial");
   // the signature line, the header, the rows
   EXPECT_EQ(partial.find("# sweep "), 0u);
-  EXPECT_EQ(partial.find("\n" + SummaryHeader(long_spec) + "\n"), partial.find('\n'));
+  EXPECT_EQ(partial.find("\n" + SummaryHeader(long_plan.spec) + "\n"), partial.find('\n'));
   EXPECT_EQ(std::count(partial.begin(), partial.end(), '\n'), first.ran + 2);
 
   EXPECT_FALSE(second.interrupted);
@@ -553,17 +560,17 @@ TEST(SweepRunner, ASweepOfTheMaximumSizeStartsRunningAtOnce) {
   model.velocity.epsilon: {from: 1.0e-4, to: 1.0e-2, count: 1000, scale: log}
 metrics: [work]
 )");
-  const SweepSpec spec = LoadSweep(sweep);
-  ASSERT_EQ(PointCount(spec), 1000000000L);
-  EXPECT_TRUE(spec.scenarios.empty());
-  EXPECT_THAT(PointValues(spec, 999999999L), ElementsAre("90", "0.5", "0.01"));
+  const SweepPlan plan = LoadSweep(sweep);
+  ASSERT_EQ(PointCount(plan.spec), 1000000000L);
+  EXPECT_TRUE(plan.spec.scenarios.empty());
+  EXPECT_THAT(PointValues(plan.spec, 999999999L), ElementsAre("90", "0.5", "0.01"));
   SweepRunOptions options;
   options.jobs = 2;
   options.output = testing::WriteTempFile("maximum.csv", "");
   std::filesystem::remove(options.output + ".partial");
   ProgressLog stop_after_five(5);
   options.observer = &stop_after_five;
-  const SweepOutcome outcome = RunSweep(spec, options);
+  const SweepOutcome outcome = RunSweep(plan, options);
   EXPECT_TRUE(outcome.interrupted);
   EXPECT_GE(outcome.ran, 5);
   EXPECT_EQ(stop_after_five.calls.front(), std::make_pair(0L, 1000000000L));
@@ -593,15 +600,15 @@ metrics: [work]
   };
   // a small sweep of the same values is refused before anything runs
   EXPECT_THROW(LoadSweep(with_count("10")), InputError);
-  const SweepSpec spec = LoadSweep(with_count("3000"));
-  ASSERT_EQ(PointCount(spec), 12000);
+  const SweepPlan plan = LoadSweep(with_count("3000"));
+  ASSERT_EQ(PointCount(plan.spec), 12000);
   SweepRunOptions options;
   options.jobs = 1;
   options.output = testing::WriteTempFile("large_invalid.csv", "");
   std::filesystem::remove(options.output + ".partial");
   ProgressLog stop_after_eight(8);
   options.observer = &stop_after_eight;
-  const SweepOutcome outcome = RunSweep(spec, options);
+  const SweepOutcome outcome = RunSweep(plan, options);
   // rows come in order from one thread: points 0 to 7 at least, one in four of them invalid
   // (those with index 3 mod 4: the last two axes at their second values)
   EXPECT_GE(outcome.ran, 8);
@@ -620,8 +627,8 @@ metrics: [work]
     EXPECT_THAT(line, ::testing::StartsWith("3,10,0.19,0.15,invalid,,0,0,0,\""));
     EXPECT_THAT(line, HasSubstr("point 3 (load[0].after=10, initial.length=0.19, "
                                 "limits.max_length=0.15) is not a valid scenario, though each of "
-                                "its values is valid alone: limits.max_length = 0.15 (--set): "
-                                "must be above initial.length = 0.19"));
+                                "its values is valid alone: limits.max_length = 0.15: must be "
+                                "above the element's initial length = 0.19 [m]"));
   }
   EXPECT_EQ(outcome.invalid, expected_invalid);
   EXPECT_TRUE(seen);
@@ -646,18 +653,18 @@ TEST(SweepRunner, EveryShippedSweepRunsEveryPoint) {
   EXPECT_EQ(shipped, known) << "a sweep was added to scenarios/: give its point count here";
   for (const auto& [name, count] : points) {
     SCOPED_TRACE(name);
-    const SweepSpec spec = LoadSweep(testing::ScenarioPath(name));
+    const SweepPlan plan = LoadSweep(testing::ScenarioPath(name));
     SweepRunOptions options;
     options.output = testing::WriteTempFile(name + ".csv", "");
     std::filesystem::remove(options.output + ".partial");
-    const SweepOutcome outcome = RunSweep(spec, options);
+    const SweepOutcome outcome = RunSweep(plan, options);
     EXPECT_EQ(outcome.points, count);
     EXPECT_EQ(outcome.failed, 0);
     EXPECT_EQ(outcome.invalid, 0);
     EXPECT_FALSE(outcome.interrupted);
     const std::vector<std::string> lines = LinesOf(options.output);
     ASSERT_EQ(static_cast<long>(lines.size()), count + 1);
-    const std::size_t status = spec.axes.size() + 1;  // the field after index and the axes
+    const std::size_t status = plan.spec.axes.size() + 1;  // the field after index and the axes
     for (long i = 0; i < count; ++i) {
       const std::string& line = lines[static_cast<std::size_t>(i + 1)];
       EXPECT_EQ(line.substr(0, line.find(',')), std::to_string(i));
@@ -692,10 +699,10 @@ TEST(SweepSortedSummary, RowsBeyondTheMemoryBudgetAreMergedFromSortedRuns) {
 
 TEST(SweepMpi, RefusesToRunWithoutAnInitialisedMpi) {
   // this test program never calls MPI_Init (and may be built without MPI at all)
-  const SweepSpec spec = LoadSweep(WriteSweep("no_mpi", SweepOf(2)));
+  const SweepPlan plan = LoadSweep(WriteSweep("no_mpi", SweepOf(2)));
   SweepRunOptions options;
   options.output = testing::WriteTempFile("no_mpi.csv", "");
-  EXPECT_THROW(RunSweepMpi(spec, options), std::logic_error);
+  EXPECT_THROW(RunSweepMpi(plan, options), std::logic_error);
   EXPECT_FALSE(std::filesystem::exists(options.output + ".partial"));
 }
 
