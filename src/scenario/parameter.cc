@@ -54,13 +54,13 @@ class ParameterResolver {
       throw ParameterError(given_, "", "is not a key path such as model.f_iso or load[0].value");
     }
     p_.path_ = Canonical(*steps);
-    std::string network_path = p_.path_;
+    p_.network_path_ = p_.path_;
     if (scenario_.form == ScenarioForm::kActuator) {
       const std::optional<std::string> translated = NetworkKeyPath(p_.path_);
       if (!translated) Fail("names no key of a single-actuator scenario");
-      network_path = *translated;
+      p_.network_path_ = Canonical(*SplitKeyPath(*translated));
     }
-    steps_ = *SplitKeyPath(network_path);
+    steps_ = *SplitKeyPath(p_.network_path_);
     Top();
     return std::move(p_);
   }

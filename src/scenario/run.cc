@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "musclesim/solver/integration_session.h"
+
 namespace musclesim {
 
 RunStats RunScenario(const Scenario& scenario, Simulation& simulation, NetworkSink& sink) {
@@ -39,8 +41,9 @@ void ColumnRecorder::Keep() {
 
 std::size_t ExpectedRows(const Scenario& scenario) {
   if (scenario.output.every_step || !(scenario.output.interval > 0.0)) return 0;
-  const double rows = std::ceil((scenario.t_end - scenario.t_start) / scenario.output.interval);
-  return rows < 1e8 ? static_cast<std::size_t>(rows) + 1 : 0;
+  const double rows = (scenario.t_end - scenario.t_start) / scenario.output.interval;
+  if (!(rows < 1e8)) return 0;  // not reserved: a run that long ends on a limit first
+  return GridRows(OutputGrid{scenario.output.interval, {}}, scenario.t_start, scenario.t_end);
 }
 
 RecordedRun RunScenario(const Scenario& scenario) {

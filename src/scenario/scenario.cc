@@ -97,6 +97,9 @@ void ValidateNetwork(const Scenario& s) {
   std::vector<double> y(static_cast<std::size_t>(system.state_size()));
   system.InitialState(s.t_start, y.data());
   system.CheckLengths(s.t_start, y.data());
+  // the single actuator's element starts at its initial.length
+  const std::string initial =
+      s.form == ScenarioForm::kActuator ? "initial.length" : "the element's initial length";
   for (std::size_t i = 0; i < s.limits.size(); ++i) {
     const LengthLimit& limit = s.limits[i];
     const std::string at = "limits[" + std::to_string(i) + "]";
@@ -106,12 +109,12 @@ void ValidateNetwork(const Scenario& s) {
     if (limit.min_length) {
       Require(*limit.min_length >= 0.0 && *limit.min_length < length, at + ".min_length",
               *limit.min_length,
-              "must be >= 0 and below the element's initial length = " + FormatNumber(length) +
+              "must be >= 0 and below " + initial + " = " + FormatNumber(length) +
                   " [m]");
     }
     if (limit.max_length) {
       Require(*limit.max_length > length, at + ".max_length", *limit.max_length,
-              "must be above the element's initial length = " + FormatNumber(length) + " [m]");
+              "must be above " + initial + " = " + FormatNumber(length) + " [m]");
     }
   }
   ForEachWaveform(s, [&](const std::string& path, const Waveform& w) {

@@ -25,6 +25,7 @@ struct SensitivityRun::Prepared {
   Scenario scenario;
   BuiltScenario base;
   std::vector<std::string> paths;
+  std::vector<std::string> network_paths;  // the numbers paths[i] name, for dropping repeats
   std::vector<double> values;
   std::vector<DerivativeSource> sources;
   std::vector<std::unique_ptr<ParameterDerivative>> derivatives;
@@ -90,7 +91,13 @@ SensitivityRun::SensitivityRun(const Scenario& scenario,
   for (const SensitivityRequest& request : requests) {
     std::string where;
     const Parameter parameter = HandleOf(scenario, request, where);
-    if (std::find(p.paths.begin(), p.paths.end(), parameter.path()) != p.paths.end()) continue;
+    // a repeat, under its own or another name of the number (load.value, load[0].value)
+    const std::string& target = parameter.network_path();
+    if (std::find(p.network_paths.begin(), p.network_paths.end(), target) !=
+        p.network_paths.end()) {
+      continue;
+    }
+    p.network_paths.push_back(target);
     ResolvedParameter resolved = ResolveParameter(p.scenario, p.base, parameter, where);
     p.paths.push_back(resolved.path);
     p.values.push_back(resolved.value);

@@ -15,8 +15,27 @@
 
 namespace musclesim {
 
+namespace {
+
+// Times a rounding error apart (a pulse edge computed as start + k period + width and an
+// output time k interval, say) are one time: CVODE refuses to step over less than a few
+// ulps (CV_TOO_CLOSE), so nothing closer than this is integrated over.
+double MergeDistance(double start, double end) {
+  return 16.0 * std::numeric_limits<double>::epsilon() *
+         std::max(std::abs(start), std::abs(end));
+}
+
+}  // namespace
+
 OutputGrid OutputGrid::Of(const NetworkRunRequest& request) {
   return {request.output_interval, request.output_times};
+}
+
+std::size_t GridRows(const OutputGrid& grid, double start, double end) {
+  OutputRows rows;
+  rows.Plan(grid, start, end, MergeDistance(start, end));
+  if (rows.every_step()) return 0;
+  return static_cast<std::size_t>(rows.remaining() + (rows.row_at_start() ? 1 : 0));
 }
 
 struct IntegrationSession::Impl {
@@ -300,10 +319,7 @@ RunStats IntegrationSession::Impl::Advance(double until, const OutputGrid& grid)
   stats.linear_solver = kind;
   stats.sensitivities = sensitivity_count;
   calls = 0;
-  // Times a rounding error apart (a pulse edge computed as start + k period + width and an
-  // output time k interval, say) are one time: CVODE refuses to step over less than a few
-  // ulps (CV_TOO_CLOSE), so nothing closer than `merge` is integrated over.
-  merge = 16.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(t), std::abs(until));
+  merge = MergeDistance(t, until);
   std::vector<double> stops;
   for (double b : system.Breakpoints(t, until)) {
     const double previous = stops.empty() ? t : stops.back();

@@ -32,6 +32,7 @@ class OutputRows {
   bool every_step() const { return every_step_; }
   bool row_at_start() const { return row_at_start_; }
   bool pending() const { return next_ <= count_; }
+  long remaining() const { return count_ - next_ + 1; }  // rows still to record
   double next_time() const { return Time(next_); }
   void Done() { ++next_; }
   // How many pending rows lie strictly before `until`.

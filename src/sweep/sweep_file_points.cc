@@ -4,6 +4,7 @@
 
 #include "musclesim/core/errors.h"
 #include "sweep/point_explanation.h"
+#include "sweep/sweep_base.h"
 #include "sweep/sweep_point_error.h"
 
 namespace musclesim {
@@ -47,6 +48,10 @@ class FilePointFactory final : public PointFactory {
     } else {
       try {
         point = template_->Instantiate(overrides);
+        // a text axis may rename the element the metrics read: told as that axis's doing
+        if (point.form == ScenarioForm::kNetwork && !spec.metric_options.element.empty()) {
+          MetricElementIndex(point, spec.metric_options.element);
+        }
       } catch (const InputError& e) {
         throw InputError(PointErrorExplainer(spec, *template_).Explain(index, e.what()).message);
       }

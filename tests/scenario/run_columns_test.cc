@@ -106,12 +106,9 @@ TEST(RunColumns, ExpectedRowsAreTheRowsTheRunRecords) {
   }
 }
 
-// Library bug, reported with the refactoring: ExpectedRows counts ceil(span / interval) + 1
-// rows, while a run merges a grid time within rounding of the end into the end (OutputRows):
-// every_part.yaml (0.25 to 0.26 s every 1 ms, a span of 0.010000000000000009 s) records 11
-// rows and is expected to record 12. Harmless for reserving memory, wrong as the count the
-// header promises. Enable once ExpectedRows plans the grid as a run does.
-TEST(RunColumns, DISABLED_ExpectedRowsOfAGridFarFromZero) {
+// every_part.yaml: 0.25 to 0.26 s every 1 ms, a span of 0.010000000000000009 s whose
+// rounding error a run merges into the end; 11 rows, not ceil(span / interval) + 1 = 12
+TEST(RunColumns, ExpectedRowsOfAGridFarFromZero) {
   const Scenario scenario = LoadScenario(testing::FixturePath("every_part.yaml"));
   EXPECT_EQ(ExpectedRows(scenario), RunScenario(scenario).values[0].size());
 }

@@ -193,13 +193,14 @@ TEST(NetworkSweep, AMissingOrUnknownElementIsAnInputErrorSayingWhere) {
                         "the network "));
   EXPECT_THAT(InputErrorOf(unknown, [&] { LoadSweep(unknown); }), HasSubstr(": spring, damper"));
 
-  // an axis that renames the element makes its points invalid, saying so (which axis did
-  // it: DISABLED_AnAxisRenamingTheMetricElementIsNamed below)
+  // an axis that renames the element makes its points invalid, saying which axis did it
   const std::string renamed = WriteSweep("renamed_element", kSpring,
       "parameters:\n  elements[0].name: [spring, coil]\nmetrics: [final_length]\n"
       "metric_options: {element: spring}\n");
   EXPECT_THAT(InputErrorOf(renamed, [&] { LoadSweep(renamed); }),
-              HasSubstr("metric_options.element = spring: the network "));
+              HasSubstr("FILE:3:3: axis elements[0].name = coil makes point 1 "
+                        "(elements[0].name=coil) an invalid scenario: metric_options.element = "
+                        "spring: the network "));
   EXPECT_THAT(InputErrorOf(renamed, [&] { LoadSweep(renamed); }),
               HasSubstr("has no such element (its elements: coil, damper)"));
 
@@ -211,20 +212,6 @@ TEST(NetworkSweep, AMissingOrUnknownElementIsAnInputErrorSayingWhere) {
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 2);
   EXPECT_THAT(ReadFile(err), HasSubstr("no_actuator.yaml:4:10): missing: the network "));
-}
-
-// Library bug, reported with the refactoring of the sweep layer: the metric element is now
-// checked after a point is made (SweepBase::Validate), outside the explanation that names the
-// axis whose value makes the point invalid, so the message has lost its "axis ... makes point
-// 1 (...) an invalid scenario:" head. Enable once the check is explained again.
-TEST(NetworkSweep, DISABLED_AnAxisRenamingTheMetricElementIsNamed) {
-  const std::string renamed = WriteSweep("renamed_element", kSpring,
-      "parameters:\n  elements[0].name: [spring, coil]\nmetrics: [final_length]\n"
-      "metric_options: {element: spring}\n");
-  EXPECT_THAT(InputErrorOf(renamed, [&] { LoadSweep(renamed); }),
-              HasSubstr("FILE:3:3: axis elements[0].name = coil makes point 1 "
-                        "(elements[0].name=coil) an invalid scenario: metric_options.element = "
-                        "spring: the network "));
 }
 
 TEST(NetworkSweep, TheSingleActuatorFormTakesOnlyActuatorAsItsElement) {

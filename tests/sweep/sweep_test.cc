@@ -201,8 +201,7 @@ metrics: [work]
   EXPECT_THAT(testing::InputErrorOf(sweep, [&] { LoadSweep(sweep); }),
               HasSubstr("FILE:3:3: point 3 (initial.length=0.19, limits.max_length=0.15) is not "
                         "a valid scenario, though each of its values is valid alone: "
-                        "limits.max_length = 0.15: must be above the element's initial length = "
-                        "0.19 [m]"));
+                        "limits.max_length = 0.15: must be above initial.length = 0.19 [m]"));
 }
 
 TEST(Sweep, SeedAndSamplesAreForRandomModeOnly) {
@@ -628,7 +627,7 @@ metrics: [work]
     EXPECT_THAT(line, HasSubstr("point 3 (load[0].after=10, initial.length=0.19, "
                                 "limits.max_length=0.15) is not a valid scenario, though each of "
                                 "its values is valid alone: limits.max_length = 0.15: must be "
-                                "above the element's initial length = 0.19 [m]"));
+                                "above initial.length = 0.19 [m]"));
   }
   EXPECT_EQ(outcome.invalid, expected_invalid);
   EXPECT_TRUE(seen);

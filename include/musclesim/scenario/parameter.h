@@ -26,6 +26,9 @@ class Parameter {
  public:
   // The key path, written the one way the handle's form writes it ("load[0].after").
   const std::string& path() const { return path_; }
+  // The path into the scenario's network: the same number under one name whatever the form
+  // ("loads[0].value" for a single actuator's load.value and load[0].value alike).
+  const std::string& network_path() const { return network_path_; }
 
   // The value in `scenario` [the key's unit].
   double Get(const Scenario& scenario) const;
@@ -62,7 +65,7 @@ class Parameter {
   friend Parameter FindParameter(const Scenario& scenario, const std::string& path);
   friend class ParameterResolver;
 
-  std::string path_;
+  std::string path_, network_path_;
   std::function<double(const Scenario&)> get_;
   std::function<void(Scenario&, double)> set_;  // writes, without checking
   InputRange range_{};                           // [range_.min, range_.max] unless unbounded

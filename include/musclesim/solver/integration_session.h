@@ -29,6 +29,10 @@ struct OutputGrid {
   static OutputGrid Of(const NetworkRunRequest& request);
 };
 
+// How many rows a piece from `start` to `end` records on `grid`, the one at `start`
+// included: what a recorder may reserve. 0 for every step (unknown in advance).
+std::size_t GridRows(const OutputGrid& grid, double start, double end);
+
 class IntegrationSession {
  public:
   // An integration of `system` with `options` from `start` (its t_start, initial state and
