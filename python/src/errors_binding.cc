@@ -26,19 +26,19 @@ struct MessageParts {
 //   KEY = VALUE (FILE:LINE:COLUMN): RULE      (yaml_fields.cc Fail)
 //   KEY (FILE:LINE:COLUMN): RULE              (a missing or unknown key)
 //   FILE:LINE:COLUMN: YAML syntax error: ...
-//   --set KEY=VALUE: ...                      (an override that names no value)
+//   set KEY=VALUE: ...                        (an override that names no value)
 //   ARGUMENT: row N: ...                      (data given as arrays: the argument's name)
 //   --sensitivity PATH: ...                   (a sensitivity's parameter; from Python,
 //   sensitivities PATH: ...                    Scenario.run's `sensitivities`)
 //   FILE:LINE:COLUMN: KEY = VALUE ...         (an entry whose value the reader refers on)
 //   FILE:LINE:COLUMN: axis PATH = VALUE ...   (a sweep's axis: key parameters.PATH)
-// and a value given by an override is placed at "--set" (no file position: location None);
+// and a value given by an override is placed at "set" (no file position: location None);
 // a dict's entries are placed at the dict's name ("<dict>", "identify_series"): location None.
 MessageParts ParseInputMessage(const std::string& message) {
   MessageParts parts;
   static const std::regex located(R"(^(\(top level\)|\S+)(?: = .*?)? \(([^()]*)\): )");
   static const std::regex syntax(R"(^(.*:\d+:\d+): )");
-  static const std::regex override_text(R"(^--set ([^=:\s]+)=)");
+  static const std::regex override_text(R"(^(?:set|override) ([^=:\s]+)=)");
   static const std::regex position(R"(.*:\d+:\d+$)");
   static const std::regex array_row(R"(^([A-Za-z_][\w.\[\]]*): row \d+: )");
   static const std::regex sensitivity(R"(^(?:--sensitivity|sensitivities) ([^:\s]+): )");

@@ -183,9 +183,7 @@ py::object Optional(const std::optional<double>& value) {
   return value ? py::object(py::float_(*value)) : py::object(py::none());
 }
 
-}  // namespace
-
-void BindIdentifySeries(py::module_& m) {
+void BindParameterEstimate(py::module_& m) {
   py::class_<SeriesParameterResult>(
       m, "SeriesParameterEstimate",
       "One parameter of identify_series: its values, its standard error and the verdict on "
@@ -233,16 +231,11 @@ void BindIdentifySeries(py::module_& m) {
                py::repr(py::float_(p.standard_error)).cast<std::string>() + " (" +
                VerdictName(p.verdict) + ")>";
       });
+}
 
-  py::class_<Identification>(
-      m, "SeriesIdentification",
-      "The result of identify_series: a weighted least-squares fit of scenario parameters to "
-      "measured time series (or, with design=True, the experiment's check at the start "
-      "values), with what the Jacobian of forward sensitivities says about the parameters: "
-      "standard errors, correlations, the singular values of the scaled sensitivity matrix "
-      "and a verdict. As `musclesim identify DATA.yaml` (README \"From time series\"). "
-      "Values in the units of the scenario's parameters and of the measured columns (SI: m, "
-      "m/s, N, s).")
+// The estimates and what the experiment determines of them.
+void DefineEstimates(py::class_<Identification>& identification) {
+  identification
       .def_property_readonly(
           "design", [](const Identification& r) { return r.design; },
           "True for the design check (no fit: the start values, Cramer-Rao standard errors).")
@@ -284,7 +277,12 @@ void BindIdentifySeries(py::module_& m) {
           },
           "The combinations the experiment does not determine: a list of dicts {ratio: its "
           "singular value over the largest [-], components: float64 array, one per parameter, "
-          "unit length, relative changes d p_j / |p_j| that leave the outputs unchanged}.")
+          "unit length, relative changes d p_j / |p_j| that leave the outputs unchanged}.");
+}
+
+// The fit's counts and how it ended.
+void DefineFitStatistics(py::class_<Identification>& identification) {
+  identification
       .def_property_readonly(
           "noise_given", [](const Identification& r) { return r.result.noise_given; },
           "True: weighted by 1/noise, covariance (J^T W J)^-1; False: unweighted, s^2 "
@@ -316,7 +314,12 @@ void BindIdentifySeries(py::module_& m) {
           "with its last point and a RuntimeWarning.")
       .def_property_readonly(
           "stop_reason", [](const Identification& r) { return r.result.stop_reason; },
-          "Why the fit stopped ('' for the design).")
+          "Why the fit stopped ('' for the design).");
+}
+
+// The verdict, residuals, report, warnings and the estimated scenario.
+void DefineOutcome(py::class_<Identification>& identification) {
+  identification
       .def_property_readonly(
           "verdict", [](const Identification& r) { return IdentifiabilityVerdict(r.result); },
           "The verdict in plain sentences: which parameters this experiment determines.")
@@ -347,7 +350,28 @@ void BindIdentifySeries(py::module_& m) {
         }
         return text + ">";
       });
+}
 
+void BindSeriesIdentification(py::module_& m) {
+  py::class_<Identification> identification(
+      m, "SeriesIdentification",
+      "The result of identify_series: a weighted least-squares fit of scenario parameters to "
+      "measured time series (or, with design=True, the experiment's check at the start "
+      "values), with what the Jacobian of forward sensitivities says about the parameters: "
+      "standard errors, correlations, the singular values of the scaled sensitivity matrix "
+      "and a verdict. As `musclesim identify DATA.yaml` (README \"From time series\"). "
+      "Values in the units of the scenario's parameters and of the measured columns (SI: m, "
+      "m/s, N, s).");
+  DefineEstimates(identification);
+  DefineFitStatistics(identification);
+  DefineOutcome(identification);
+}
+
+}  // namespace
+
+void BindIdentifySeries(py::module_& m) {
+  BindParameterEstimate(m);
+  BindSeriesIdentification(m);
   m.def("_identify_series", &Identify, py::arg("scenario"), py::arg("spec"),
         py::arg("spec_name"), py::arg("series"), py::arg("design"), py::arg("max_evaluations"),
         "identify_series's C++ half: `spec` a data file's keys as a dict without csv keys "

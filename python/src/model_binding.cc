@@ -204,16 +204,9 @@ py::dict Fit(const py::object& x, const py::object& f, int n, std::optional<std:
   return FitDict(result);
 }
 
-}  // namespace
-
-void BindModel(py::module_& m) {
-  py::class_<Model>(m, "Model", R"(The tension model of one actuator (docs/model.md):
-T(x, v, u) = T_p(x) + u f_iso f_L(x) g(v), x the length [m], v the shortening velocity [m/s]
-(positive when the actuator shortens, v = -dx/dt), u the activation in [0, 1], T in [N].
-
-Every curve method takes numbers or NumPy arrays (converted to float64) and broadcasts its
-arguments against each other as NumPy does; it returns float64 arrays of the broadcast shape,
-or a numpy.float64 (a subclass of float) when every argument is a scalar or 0-d. Immutable.)")
+// The constructor and the tension with its parts.
+void DefineTension(py::class_<Model>& model_class) {
+  model_class
       .def(py::init(&FromDict), py::arg("params"),
            R"(A model from a dict with the keys of a scenario's `model:` block (README "The model
 block", docs/model.md): f_iso [N]; passive {k_p [N], alpha [1/m], slack_length [m]};
@@ -257,7 +250,12 @@ eccentric {v_max, n, limit} (optional)}. The block is read by the same reader as
 total T [N], passive T_p [N], active T_a = u f_iso f_L g [N], d_length dT/dx [N/m],
 d_velocity dT/dv [N s/m] (v the shortening velocity), d_activation dT/du [N]. The
 derivatives are the analytic ones the simulator's Jacobian uses; at x = slack_length the
-passive slope is the left one (0).)")
+passive slope is the left one (0).)");
+}
+
+// The curves of one argument: passive tension, f_L, g and their slopes.
+void DefineCurves(py::class_<Model>& model_class) {
+  model_class
       .def("passive",
            [](const Model& self, const py::object& x) {
              const PassiveParams& p = self.tension->params().passive;
@@ -293,7 +291,11 @@ passive slope is the left one (0).)")
              const VelocityCurve& c = self.tension->velocity();
              return Curve1(v, [&](double vi) { return c.Evaluate(vi).slope; });
            },
-           py::arg("v"), "dg/dv [s/m] at shortening velocity v [m/s].")
+           py::arg("v"), "dg/dv [s/m] at shortening velocity v [m/s].");
+}
+
+void DefineModelProperties(py::class_<Model>& model_class) {
+  model_class
       .def_property_readonly(
           "params", [](const Model& self) { return ParamsDict(self.tension->params()); },
           "The parameters as a dict with the `model:` block's keys (units as there), the "
@@ -316,7 +318,22 @@ passive slope is the left one (0).)")
                std::to_string(p.active_length.gaussians.size()) + " Gaussians, v_max=" +
                FormatNumber(p.velocity.v_max) + " m/s>";
       });
+}
 
+void BindModelClass(py::module_& m) {
+  py::class_<Model> model_class(m, "Model", R"(The tension model of one actuator (docs/model.md):
+T(x, v, u) = T_p(x) + u f_iso f_L(x) g(v), x the length [m], v the shortening velocity [m/s]
+(positive when the actuator shortens, v = -dx/dt), u the activation in [0, 1], T in [N].
+
+Every curve method takes numbers or NumPy arrays (converted to float64) and broadcasts its
+arguments against each other as NumPy does; it returns float64 arrays of the broadcast shape,
+or a numpy.float64 (a subclass of float) when every argument is a scalar or 0-d. Immutable.)");
+  DefineTension(model_class);
+  DefineCurves(model_class);
+  DefineModelProperties(model_class);
+}
+
+void BindLoadModel(py::module_& m) {
   m.def(
       "load_model",
       [](const py::object& given) {
@@ -332,7 +349,9 @@ passive slope is the left one (0).)")
       R"(The model of a YAML file: a model file (`name` and `model` only, as the CLI writes) or a
 scenario, which is then checked whole (as `musclesim curves FILE` reads it). Raises the
 reader's error (file:line:column, key, value, rule) for bad input.)");
+}
 
+void BindForceLengthPreset(py::module_& m) {
   m.def(
       "force_length_preset",
       [](const std::string& name, const py::object& x, double optimal_length) {
@@ -353,7 +372,9 @@ reader's error (file:line:column, key, value, rule) for bad input.)");
 is 1 at `optimal_length` [m] (default 1: x is then the normalised length l / L), as `musclesim
 curves --preset NAME` tabulates it: preset degroote2016, thelen2003, gordon1966 or mujoco
 (README "The closed-form fit"). fit_gaussians(preset=...) fits Gaussians to it.)");
+}
 
+void BindFitGaussians(py::module_& m) {
   m.def("fit_gaussians", &Fit, py::arg("x") = py::none(), py::arg("f") = py::none(),
         py::arg("n") = 3, py::kw_only(), py::arg("target") = py::none(),
         py::arg("preset") = py::none(), py::arg("optimal_length") = 1.0,
@@ -384,6 +405,15 @@ Returns a dict: amplitudes, widths, centers (float64 arrays of n), gaussians (th
 over the integral of target^2, or the sum of f_i^2 for samples), iterations (cost evaluations
 of the best start; 0 with shapes fixed), starts (starting points tried). A bad argument
 raises the library's ParameterError (a ValueError) naming it.)");
+}
+
+}  // namespace
+
+void BindModel(py::module_& m) {
+  BindModelClass(m);
+  BindLoadModel(m);
+  BindForceLengthPreset(m);
+  BindFitGaussians(m);
 }
 
 }  // namespace musclesim::python

@@ -4,7 +4,6 @@
 // (which reads back to the same double), so that the script, and so the figure, is the one
 // the CLI makes of the CSV of the same data.
 #include <cmath>
-#include <cstring>
 #include <optional>
 #include <string>
 #include <utility>
@@ -38,24 +37,14 @@ struct Column {
   std::size_t size() const { return text ? texts.size() : numbers.size(); }
 };
 
-// The library's messages name the CLI's flags; plot() has arguments of these names.
-std::string WithArgumentNames(const std::string& message) {
-  static const std::pair<const char*, const char*> kNames[] = {
-      {"-o ", "output "}, {"--title ", "title "}, {"--size ", "size "},
-      {"--x ", "x "},     {"--y ", "y "},         {"--color ", "color "}};
-  for (const auto& [flag, name] : kNames) {
-    if (message.rfind(flag, 0) == 0) return name + message.substr(std::strlen(flag));
-  }
-  return message;
-}
-
-// Runs `call`, its InputError naming plot()'s arguments rather than the CLI's flags.
+// Runs `call`; a plot option the library refuses (ParameterError naming the option, which
+// plot() takes as an argument of the same name) is an InputError "NAME VALUE: rule".
 template <typename Call>
 void Renamed(Call call) {
   try {
     call();
-  } catch (const InputError& e) {
-    throw InputError(WithArgumentNames(e.what()));
+  } catch (const ParameterError& e) {
+    throw InputError(e.path() + " " + e.value() + ": " + e.rule());
   }
 }
 

@@ -26,9 +26,9 @@ bool IsNumber(const py::handle& value) {
 Scenario PyScenario::Read(const std::vector<std::string>& more) const {
   std::vector<std::string> all = overrides;
   all.insert(all.end(), more.begin(), more.end());
-  if (document) return ReadScenario(*document, display, all);
+  if (document) return ReadScenario(*document, display, Overrides(all, kOverrideLabel));
   try {
-    return LoadScenario(path, all);
+    return LoadScenario(path, Overrides(all, kOverrideLabel));
   } catch (const InputError& e) {
     // messages name the file as the user gave it
     std::string message = e.what();
@@ -41,8 +41,8 @@ Scenario PyScenario::Read(const std::vector<std::string>& more) const {
 }
 
 std::string PyScenario::ToYaml() const {
-  return document ? RewriteScenario(*document, display, overrides, {})
-                  : RewriteScenario(path, overrides, {});
+  const Overrides set(overrides, kOverrideLabel);
+  return document ? RewriteScenario(*document, display, set, {}) : RewriteScenario(path, set, {});
 }
 
 void PyScenario::Set(const std::string& key, const py::object& value) {
@@ -89,7 +89,7 @@ PyScenario LoadPyScenario(const py::object& given, const py::object& set) {
   s.display = path;
   s.overrides = OverridesFrom(set);
   py::gil_scoped_release release;
-  s.scenario = LoadScenario(path, s.overrides);
+  s.scenario = LoadScenario(path, Overrides(s.overrides, kOverrideLabel));
   return s;
 }
 

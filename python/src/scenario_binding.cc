@@ -220,17 +220,9 @@ void BindParameter(py::module_& m) {
       });
 }
 
-}  // namespace
-
-void BindScenario(py::module_& m) {
-  BindResult(m);
-  BindSolverTypes(m);
-  BindParameter(m);
-  py::class_<PyScenario>(
-      m, "Scenario",
-      "A validated scenario in memory (a single actuator, or a network on a line, README "
-      "\"Scenario files\"), read from a file or a dict, with the values set() since. SI units "
-      "as in the files.")
+// What a scenario is: its form, name, values set, solver, and its parameters' handles.
+void DefineScenarioProperties(py::class_<PyScenario>& scenario_class) {
+  scenario_class
       .def_property_readonly(
           "is_network", [](const PyScenario& s) { return s.scenario.form == ScenarioForm::kNetwork; },
           "True for a network (a top-level `nodes:` key), False for a single actuator.")
@@ -258,7 +250,12 @@ void BindScenario(py::module_& m) {
           },
           py::arg("path"),
           "The handle on the number at key path `path` (ParameterError when it names no "
-          "number of this scenario): handle.value reads it, handle.value = v sets it.")
+          "number of this scenario): handle.value reads it, handle.value = v sets it.");
+}
+
+// Pickling and copies.
+void DefineScenarioCopies(py::class_<PyScenario>& scenario_class) {
+  scenario_class
       .def(py::pickle(
           // a file's scenario as its path and values; a dict's as its YAML text
           [](const PyScenario& s) {
@@ -293,7 +290,12 @@ void BindScenario(py::module_& m) {
            "copy.deepcopy give the same).")
       .def("__copy__", [](const PyScenario& s) { return s; })
       .def("__deepcopy__", [](const PyScenario& s, const py::object&) { return s; },
-           py::arg("memo"))
+           py::arg("memo"));
+}
+
+// The YAML text, set() and run().
+void DefineScenarioUse(py::class_<PyScenario>& scenario_class) {
+  scenario_class
       .def(
           "to_yaml",
           [](const PyScenario& s) {
@@ -332,7 +334,21 @@ void BindScenario(py::module_& m) {
                (s.scenario.form == ScenarioForm::kNetwork ? " (network)" : " (single actuator)") +
                ">";
       });
+}
 
+void BindScenarioClass(py::module_& m) {
+  py::class_<PyScenario> scenario_class(
+      m, "Scenario",
+      "A validated scenario in memory (a single actuator, or a network on a line, README "
+      "\"Scenario files\"), read from a file or a dict, with the values set() since. SI units "
+      "as in the files.");
+  DefineScenarioProperties(scenario_class);
+  DefineScenarioCopies(scenario_class);
+  DefineScenarioUse(scenario_class);
+}
+
+// The module's functions: run timing for the overhead benchmark, reading a file or a dict.
+void BindScenarioFunctions(py::module_& m) {
   m.def(
       "_cpp_run_seconds",
       [](const PyScenario& s, int repeats) {
@@ -363,6 +379,16 @@ void BindScenario(py::module_& m) {
       py::arg("dict"), py::arg("name"),
       "A scenario from a dict read as a file's document (no text in between); messages name "
       "it `name`. scenario_from_dict is the public way.");
+}
+
+}  // namespace
+
+void BindScenario(py::module_& m) {
+  BindResult(m);
+  BindSolverTypes(m);
+  BindParameter(m);
+  BindScenarioClass(m);
+  BindScenarioFunctions(m);
 }
 
 }  // namespace musclesim::python

@@ -115,7 +115,9 @@ py::list RunMany(const py::list& given, int threads, const std::vector<std::stri
         try {
           const Job& job = jobs[k];
           outcomes[k].data = RunData::Of(
-              job.scenario ? *job.scenario : LoadScenario(job.path, job.overrides), sensitivities);
+              job.scenario ? *job.scenario
+                           : LoadScenario(job.path, Overrides(job.overrides, kOverrideLabel)),
+              sensitivities);
         } catch (...) {
           outcomes[k].error = std::current_exception();
         }
@@ -238,7 +240,12 @@ py::object Sweep(const py::object& spec, int threads, const py::object& output, 
   SweepOutcome outcome;
   {
     py::gil_scoped_release release;
-    outcome = RunSweep(plan, options);
+    try {
+      outcome = RunSweep(plan, options);
+    } catch (const InterruptedSweepError& e) {
+      throw InputError(e.partial_path() + " exists: an earlier sweep was interrupted. Pass "
+                       "resume=True to continue it, or delete the file to start again");
+    }
   }
   if (observer.interrupted()) throw py::error_already_set();
   if (!output.is_none()) return py::none();

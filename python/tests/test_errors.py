@@ -77,7 +77,7 @@ def test_override_naming_no_value():
         musclesim.load_scenario(CONCENTRIC, set=["model.nothing.n=3"])
     assert error.value.key == "model.nothing.n"
     assert error.value.location is None
-    assert str(error.value).startswith("--set model.nothing.n=3: ")
+    assert str(error.value).startswith("set model.nothing.n=3: ")
 
 
 def test_override_value_type_is_checked():

@@ -126,7 +126,7 @@ bool NamesSeriesDataFile(int argc, char** argv) {
 // The data file's scenario with --set applied, its errors naming the data file's entry.
 Scenario LoadSeriesScenario(const IdentifySeriesSpec& spec, const std::vector<std::string>& sets) {
   try {
-    return LoadScenario(spec.scenario, sets);
+    return LoadScenario(spec.scenario, Overrides(sets, "--set"));
   } catch (const InputError& e) {
     throw InputError(spec.source + ": scenario " + spec.scenario + " (" + spec.scenario_at +
                      "): " + e.what());
@@ -167,7 +167,8 @@ int IdentifySeriesCommand(int argc, char** argv) {
     outputs.back()->Write(text);
   };
   stage(args.Value("-o", "-"),
-        RewriteScenario(spec.scenario, overrides, EstimatedScenarioHeader(fit, data_file)));
+        RewriteScenario(spec.scenario, Overrides(overrides, "--set"),
+                        EstimatedScenarioHeader(fit, data_file)));
   if (args.Has("--report")) stage(args.Value("--report"), FormatSeriesReport(fit, data_file));
   if (args.Has("--residuals")) stage(args.Value("--residuals"), FormatResidualCsv(fit));
   for (const auto& output : outputs) output->Commit();

@@ -1,5 +1,8 @@
 // musclesim plot: figures of trajectories, model curves and sweeps, drawn by gnuplot.
 #include <iostream>
+#include <map>
+#include <optional>
+#include <string>
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
@@ -44,6 +47,36 @@ void ParseSize(const std::string& text, PlotOptions& options) {
   options.height = height;
 }
 
+// The library names a refused option as PlotOptions and SweepPlotScript do; this program
+// says the flag that gave it ("--x mass: not a swept path of ...").
+[[noreturn]] void ThrowWithFlag(const ParameterError& e) {
+  static const std::map<std::string, std::string> kFlags = {
+      {"output", "-o"}, {"title", "--title"}, {"size", "--size"},
+      {"x", "--x"},     {"y", "--y"},         {"color", "--color"}};
+  const auto flag = kFlags.find(e.path());
+  if (flag == kFlags.end()) throw InputError(e.what());
+  throw InputError(flag->second + " " + e.value() + ": " + e.rule());
+}
+
+std::string Script(const Arguments& args, const PlotOptions& options) {
+  if (args.Has("--curves")) {
+    if (!args.positional.empty()) throw UsageError("--curves takes the model file; give no CSV");
+    return CurvesPlotScript(TensionModel(LoadModelSpec(args.Value("--curves")).params), options);
+  }
+  if (args.positional.size() != 1) throw UsageError("expected one CSV file (see --help)");
+  const CsvTable table = ReadCsv(args.positional[0]);
+  if (args.Has("--x")) {
+    const auto optional = [&](const char* name) {
+      return args.Has(name) ? std::optional<std::string>(args.Value(name)) : std::nullopt;
+    };
+    return SweepPlotScript(table, args.Value("--x"), optional("--y"), optional("--color"), options);
+  }
+  if (args.Has("--y") || args.Has("--color")) throw UsageError("--y and --color go with --x");
+  return IsResidualTable(table)       ? ResidualPlotScript(table, options)
+         : IsNetworkTrajectory(table) ? NetworkPlotScript(table, options)
+                                      : TrajectoryPlotScript(table, options);
+}
+
 }  // namespace
 
 int PlotCommand(int argc, char** argv) {
@@ -59,29 +92,14 @@ int PlotCommand(int argc, char** argv) {
   if (options.output.empty()) throw UsageError("-o PATH (a .png or .svg file) is required");
   options.title = args.Value("--title");
   if (args.Has("--size")) ParseSize(args.Value("--size"), options);
-  Validate(options);
-
-  std::string script;
-  if (args.Has("--curves")) {
-    if (!args.positional.empty()) throw UsageError("--curves takes the model file; give no CSV");
-    script = CurvesPlotScript(TensionModel(LoadModelSpec(args.Value("--curves")).params), options);
-  } else {
-    if (args.positional.size() != 1) throw UsageError("expected one CSV file (see --help)");
-    const CsvTable table = ReadCsv(args.positional[0]);
-    if (args.Has("--x")) {
-      const auto optional = [&](const char* name) {
-        return args.Has(name) ? std::optional<std::string>(args.Value(name)) : std::nullopt;
-      };
-      script = SweepPlotScript(table, args.Value("--x"), optional("--y"), optional("--color"), options);
-    } else {
-      if (args.Has("--y") || args.Has("--color")) throw UsageError("--y and --color go with --x");
-      script = IsResidualTable(table)       ? ResidualPlotScript(table, options)
-               : IsNetworkTrajectory(table) ? NetworkPlotScript(table, options)
-                                            : TrajectoryPlotScript(table, options);
-    }
+  try {
+    Validate(options);
+    const std::string script = Script(args, options);
+    if (args.Has("--script")) WriteOutput(args.Value("--script"), script);
+    Render(script, options);
+  } catch (const ParameterError& e) {
+    ThrowWithFlag(e);
   }
-  if (args.Has("--script")) WriteOutput(args.Value("--script"), script);
-  Render(script, options);
   return kExitSuccess;
 }
 

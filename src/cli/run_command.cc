@@ -178,7 +178,7 @@ int RunCommand(int argc, char** argv) {
     return kExitSuccess;
   }
   if (args.positional.size() != 1) throw UsageError("expected one scenario file (see --help)");
-  const Scenario scenario = LoadScenario(args.positional[0], args.List("--set"));
+  const Scenario scenario = LoadScenario(args.positional[0], Overrides(args.List("--set"), "--set"));
   // a scenario's own `sensitivities:` asks for them too
   const std::vector<std::string> parameters = args.List("--sensitivity");
   if (!parameters.empty() || !scenario.sensitivities.empty()) {

@@ -78,6 +78,18 @@ int DefaultJobs() {
   return std::max(1, cores / ranks);
 }
 
+// The sweep on the threads, or over the ranks when launched by mpirun; the library's refusal
+// of a leftover PATH.partial worded with this program's flag.
+SweepOutcome RunSweepCommand(const MpiSession& mpi, const SweepPlan& plan,
+                             const SweepRunOptions& options) {
+  try {
+    return mpi.active() ? RunSweepMpi(plan, options) : RunSweep(plan, options);
+  } catch (const InterruptedSweepError& e) {
+    throw InputError(e.partial_path() + " exists: an earlier sweep was interrupted. Pass "
+                     "--resume to continue it, or delete the file to start again");
+  }
+}
+
 }  // namespace
 
 int SweepCommand(int argc, char** argv) {
@@ -115,7 +127,7 @@ int SweepCommand(int argc, char** argv) {
   CheckSummaryPath(spec, options.output);
   std::signal(SIGINT, OnStopSignal);
   std::signal(SIGTERM, OnStopSignal);
-  const SweepOutcome outcome = mpi.active() ? RunSweepMpi(plan, options) : RunSweep(plan, options);
+  const SweepOutcome outcome = RunSweepCommand(mpi, plan, options);
   if (!mpi.is_root()) return kExitSuccess;
   observer.Finish();
 

@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "musclesim/core/errors.h"
 
@@ -86,10 +90,29 @@ Eigen::VectorXd ProjectedStep(const Eigen::MatrixXd& jr, const Eigen::VectorXd& 
   return step;
 }
 
-}  // namespace
+// The iterate: the parameters, the model there, its weighted residual, their Jacobian and
+// the cost |r|^2.
+struct Iterate {
+  Eigen::VectorXd x;
+  ModelPoint point;
+  Eigen::VectorXd r;
+  Eigen::MatrixXd jr;
+  double cost = 0.0;
+};
 
-LeastSquaresResult SolveBoundedLeastSquares(const BoundedLeastSquaresProblem& problem,
-                                            const LeastSquaresOptions& options) {
+// Marquardt's lambda and Nielsen's nu, by which a rejected step raises it.
+struct Damping {
+  double lambda = kInitialDamping;
+  double growth = 2.0;
+};
+
+// Why the iteration ends.
+struct Stop {
+  bool converged = false;
+  std::string reason;
+};
+
+void CheckProblem(const BoundedLeastSquaresProblem& problem) {
   const Eigen::Index n = problem.data.size(), p = problem.start.size();
   if (problem.weights.size() != n || problem.lower.size() != p || problem.upper.size() != p) {
     throw std::invalid_argument("identify: data, weights and bounds of different sizes");
@@ -100,130 +123,174 @@ LeastSquaresResult SolveBoundedLeastSquares(const BoundedLeastSquaresProblem& pr
                                   " starts outside its bounds");
     }
   }
+}
 
-  LeastSquaresResult result;
-  Eigen::VectorXd x = problem.start;
-  ModelPoint point = problem.model(x);  // a failure here is the caller's to report
-  result.evaluations = 1;
-  CheckShape(point, n, p);
-  Eigen::VectorXd r = WeightedResidual(problem, point);
-  Eigen::MatrixXd jr = ResidualJacobian(problem, point);
-  double cost = r.squaredNorm();
-  Eigen::VectorXd scaling = jr.colwise().norm().transpose();  // Moré's D: the largest seen
-  double lambda = kInitialDamping;
-  double growth = 2.0;  // Nielsen's nu
+// Free parameters: not on a bound that the descent direction (-gradient) points through.
+std::vector<Eigen::Index> FreeParameters(const BoundedLeastSquaresProblem& problem,
+                                         const Eigen::VectorXd& x,
+                                         const Eigen::VectorXd& gradient) {
+  std::vector<Eigen::Index> free;
+  for (Eigen::Index j = 0; j < x.size(); ++j) {
+    const bool held = (x[j] <= problem.lower[j] && gradient[j] > 0.0) ||
+                      (x[j] >= problem.upper[j] && gradient[j] < 0.0);
+    if (!held) free.push_back(j);
+  }
+  return free;
+}
 
-  while (true) {
-    if (cost == 0.0) {
-      result.converged = true;
-      result.stop_reason = "the model reproduces the data exactly";
-      break;
-    }
-    // free parameters: not on a bound that the descent direction (-gradient) points through
-    const Eigen::VectorXd gradient = jr.transpose() * r;
-    std::vector<Eigen::Index> free;
-    for (Eigen::Index j = 0; j < p; ++j) {
-      const bool held = (x[j] <= problem.lower[j] && gradient[j] > 0.0) ||
-                        (x[j] >= problem.upper[j] && gradient[j] < 0.0);
-      if (!held) free.push_back(j);
-    }
-    // stationary: every free column (nearly) orthogonal to the residual
-    double worst_cosine = 0.0;
-    const double r_norm = r.norm();
-    for (Eigen::Index j : free) {
-      const double column = jr.col(j).norm();
-      if (column > 0.0) {
-        worst_cosine = std::max(worst_cosine, std::abs(gradient[j]) / (column * r_norm));
-      }
-    }
-    if (free.empty() || worst_cosine <= options.gradient_tolerance) {
-      result.converged = true;
-      result.stop_reason = "the residual is orthogonal to every parameter's column";
-      break;
-    }
-    if (result.evaluations >= options.max_evaluations) {
-      result.stop_reason = "the budget of " + std::to_string(options.max_evaluations) +
-                           " model evaluations ran out before a tolerance was met";
-      break;
-    }
-
-    scaling = scaling.cwiseMax(jr.colwise().norm().transpose());
-    // converged when even the undamped (Gauss-Newton) step is negligible, in size or in
-    // what it would gain
-    const Eigen::VectorXd full_step = ProjectedStep(jr, r, x, free, 0.0, scaling, problem);
-    if (StepIsSmall(full_step, x, options.step_tolerance)) {
-      result.converged = true;
-      result.stop_reason = "the Gauss-Newton step fell below the step tolerance";
-      break;
-    }
-    if (cost - (r + jr * full_step).squaredNorm() <= options.improvement_tolerance * cost) {
-      result.converged = true;
-      result.stop_reason = "the Gauss-Newton step would lower the cost by less than the "
-                           "improvement tolerance";
-      break;
-    }
-    const Eigen::VectorXd step = ProjectedStep(jr, r, x, free, lambda, scaling, problem);
-    const double predicted = cost - (r + jr * step).squaredNorm();
-    const Eigen::VectorXd trial = (x + step).cwiseMax(problem.lower).cwiseMin(problem.upper);
-
-    bool accepted = false;
-    double actual = 0.0;
-    try {
-      ModelPoint trial_point = problem.model(trial);
-      ++result.evaluations;
-      CheckShape(trial_point, n, p);
-      const Eigen::VectorXd trial_r = WeightedResidual(problem, trial_point);
-      const double trial_cost = trial_r.squaredNorm();
-      actual = cost - trial_cost;
-      if (std::isfinite(trial_cost) && actual > 0.0 && predicted > 0.0) {
-        accepted = true;
-        const double rho = actual / predicted;
-        lambda *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3));
-        growth = 2.0;
-        x = trial;
-        point = std::move(trial_point);
-        r = trial_r;
-        jr = ResidualJacobian(problem, point);
-        ++result.iterations;
-      }
-    } catch (const EvaluationFailure&) {
-      ++result.evaluations;  // rejected: a shorter step may stay where the model runs
-    } catch (const InputError&) {
-      ++result.evaluations;
-    } catch (const ParameterError&) {
-      ++result.evaluations;
-    }
-    if (accepted) {
-      const double before = cost;
-      cost = r.squaredNorm();
-      const double negligible = options.cost_tolerance * before;
-      if (actual <= negligible && predicted <= negligible) {
-        result.converged = true;
-        result.stop_reason = "the cost fell by less than the cost tolerance";
-        break;
-      }
-    } else if (StepIsSmall(step, x, options.step_tolerance) ||
-               predicted <= options.improvement_tolerance * cost) {
-      // the damping has shrunk the step to nothing (or to a gain the improvement tolerance
-      // calls none) and still the cost does not fall: the minimum, to the model's numerical
-      // precision
-      result.converged = true;
-      result.stop_reason = "no step lowers the cost further (the model's numerical precision)";
-      break;
-    } else {
-      lambda *= growth;
-      growth *= 2.0;
+// The largest cosine between a free column and the residual: near 0 where stationary.
+double WorstCosine(const Iterate& it, const Eigen::VectorXd& gradient,
+                   const std::vector<Eigen::Index>& free) {
+  double worst_cosine = 0.0;
+  const double r_norm = it.r.norm();
+  for (Eigen::Index j : free) {
+    const double column = it.jr.col(j).norm();
+    if (column > 0.0) {
+      worst_cosine = std::max(worst_cosine, std::abs(gradient[j]) / (column * r_norm));
     }
   }
+  return worst_cosine;
+}
 
-  result.parameters = x;
-  result.cost = cost;
+// The tests at the iterate, before any step: an exact fit, a stationary point, the budget
+// spent. Fills `free` with the parameters a step may move.
+std::optional<Stop> StopAtIterate(const BoundedLeastSquaresProblem& problem,
+                                  const LeastSquaresOptions& options, const Iterate& it,
+                                  int evaluations, std::vector<Eigen::Index>& free) {
+  if (it.cost == 0.0) return Stop{true, "the model reproduces the data exactly"};
+  const Eigen::VectorXd gradient = it.jr.transpose() * it.r;
+  free = FreeParameters(problem, it.x, gradient);
+  if (free.empty() || WorstCosine(it, gradient, free) <= options.gradient_tolerance) {
+    return Stop{true, "the residual is orthogonal to every parameter's column"};
+  }
+  if (evaluations >= options.max_evaluations) {
+    return Stop{false, "the budget of " + std::to_string(options.max_evaluations) +
+                           " model evaluations ran out before a tolerance was met"};
+  }
+  return std::nullopt;
+}
+
+// Converged when even the undamped (Gauss-Newton) step is negligible, in size or in what it
+// would gain.
+std::optional<Stop> StopAtGaussNewtonStep(const BoundedLeastSquaresProblem& problem,
+                                          const LeastSquaresOptions& options,
+                                          const Iterate& it,
+                                          const std::vector<Eigen::Index>& free,
+                                          const Eigen::VectorXd& scaling) {
+  const Eigen::VectorXd full_step = ProjectedStep(it.jr, it.r, it.x, free, 0.0, scaling, problem);
+  if (StepIsSmall(full_step, it.x, options.step_tolerance)) {
+    return Stop{true, "the Gauss-Newton step fell below the step tolerance"};
+  }
+  if (it.cost - (it.r + it.jr * full_step).squaredNorm() <=
+      options.improvement_tolerance * it.cost) {
+    return Stop{true, "the Gauss-Newton step would lower the cost by less than the "
+                      "improvement tolerance"};
+  }
+  return std::nullopt;
+}
+
+// The model at a trial point (its Jacobian left for when the point is accepted), or nothing
+// when the model cannot be run there: the step is then rejected, and a shorter one may stay
+// where the model runs.
+std::optional<Iterate> TrialIterate(const BoundedLeastSquaresProblem& problem,
+                                    const Eigen::VectorXd& trial, int& evaluations) {
+  try {
+    ModelPoint point = problem.model(trial);
+    ++evaluations;
+    CheckShape(point, problem.data.size(), problem.start.size());
+    Iterate it;
+    it.x = trial;
+    it.r = WeightedResidual(problem, point);
+    it.cost = it.r.squaredNorm();
+    it.point = std::move(point);
+    return it;
+  } catch (const EvaluationFailure&) {
+    ++evaluations;
+  } catch (const InputError&) {
+    ++evaluations;
+  } catch (const ParameterError&) {
+    ++evaluations;
+  }
+  return std::nullopt;
+}
+
+// One damped step: taken when the model at its end lowers the cost (the damping eased by
+// the gain against the prediction), else the damping raised. A stop when the step shows the
+// minimum reached.
+std::optional<Stop> DampedStep(const BoundedLeastSquaresProblem& problem,
+                               const LeastSquaresOptions& options,
+                               const std::vector<Eigen::Index>& free,
+                               const Eigen::VectorXd& scaling, Iterate& it, Damping& damping,
+                               LeastSquaresResult& result) {
+  const Eigen::VectorXd step =
+      ProjectedStep(it.jr, it.r, it.x, free, damping.lambda, scaling, problem);
+  const double predicted = it.cost - (it.r + it.jr * step).squaredNorm();
+  const Eigen::VectorXd trial = (it.x + step).cwiseMax(problem.lower).cwiseMin(problem.upper);
+  std::optional<Iterate> next = TrialIterate(problem, trial, result.evaluations);
+  const double actual = next ? it.cost - next->cost : 0.0;
+  if (next && std::isfinite(next->cost) && actual > 0.0 && predicted > 0.0) {
+    const double rho = actual / predicted;
+    damping.lambda *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3));
+    damping.growth = 2.0;
+    const double before = it.cost;
+    it = std::move(*next);
+    it.jr = ResidualJacobian(problem, it.point);
+    ++result.iterations;
+    const double negligible = options.cost_tolerance * before;
+    if (actual <= negligible && predicted <= negligible) {
+      return Stop{true, "the cost fell by less than the cost tolerance"};
+    }
+  } else if (StepIsSmall(step, it.x, options.step_tolerance) ||
+             predicted <= options.improvement_tolerance * it.cost) {
+    // the damping has shrunk the step to nothing (or to a gain the improvement tolerance
+    // calls none) and still the cost does not fall: the minimum, to the model's numerical
+    // precision
+    return Stop{true, "no step lowers the cost further (the model's numerical precision)"};
+  } else {
+    damping.lambda *= damping.growth;
+    damping.growth *= 2.0;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+LeastSquaresResult SolveBoundedLeastSquares(const BoundedLeastSquaresProblem& problem,
+                                            const LeastSquaresOptions& options) {
+  CheckProblem(problem);
+  LeastSquaresResult result;
+  Iterate it;
+  it.x = problem.start;
+  it.point = problem.model(it.x);  // a failure here is the caller's to report
+  result.evaluations = 1;
+  CheckShape(it.point, problem.data.size(), problem.start.size());
+  it.r = WeightedResidual(problem, it.point);
+  it.jr = ResidualJacobian(problem, it.point);
+  it.cost = it.r.squaredNorm();
+  Eigen::VectorXd scaling = it.jr.colwise().norm().transpose();  // Moré's D: the largest seen
+  Damping damping;
+
+  std::optional<Stop> stop;
+  while (!stop) {
+    std::vector<Eigen::Index> free;
+    stop = StopAtIterate(problem, options, it, result.evaluations, free);
+    if (stop) break;
+    scaling = scaling.cwiseMax(it.jr.colwise().norm().transpose());
+    stop = StopAtGaussNewtonStep(problem, options, it, free, scaling);
+    if (!stop) stop = DampedStep(problem, options, free, scaling, it, damping, result);
+  }
+
+  result.converged = stop->converged;
+  result.stop_reason = stop->reason;
+  result.parameters = it.x;
+  result.cost = it.cost;
+  const Eigen::Index p = problem.start.size();
   result.at_bound.resize(static_cast<std::size_t>(p));
   for (Eigen::Index j = 0; j < p; ++j) {
     result.at_bound[static_cast<std::size_t>(j)] =
-        x[j] <= problem.lower[j] || x[j] >= problem.upper[j];
+        it.x[j] <= problem.lower[j] || it.x[j] >= problem.upper[j];
   }
-  result.at_solution = std::move(point);
+  result.at_solution = std::move(it.point);
   return result;
 }
 

@@ -55,6 +55,17 @@ class Components {
   std::vector<std::size_t> parent_;
 };
 
+// Whether each node is joined, through elements, to a fixed or prescribed node.
+std::vector<bool> AnchoredNodes(const std::vector<Node>& nodes, Components& joined) {
+  std::vector<bool> anchored_root(nodes.size(), false);
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (nodes[i].kind != NodeKind::kFree) anchored_root[joined.Find(i)] = true;
+  }
+  std::vector<bool> anchored(nodes.size(), false);
+  for (std::size_t i = 0; i < nodes.size(); ++i) anchored[i] = anchored_root[joined.Find(i)];
+  return anchored;
+}
+
 }  // namespace
 
 NetworkSystem::NetworkSystem(std::vector<Node> nodes, std::vector<Element> elements,
@@ -97,6 +108,27 @@ int NetworkSystem::FindController(std::string_view name) const {
 }
 
 void NetworkSystem::Resolve() {
+  int states = NumberEnds();
+  for (std::size_t e = 0; e < elements_.size(); ++e) AddLink(e, states);
+  Components joined(nodes_.size());
+  for (const Link& link : links_) {
+    joined.Join(static_cast<std::size_t>(link.from), static_cast<std::size_t>(link.to));
+  }
+  std::vector<std::vector<Load>> node_loads = LoadsByNode();
+  AddFreeNodes(std::move(node_loads), AnchoredNodes(nodes_, joined));
+  ResolveControllers(states);
+  FindSingleNode();
+}
+
+int NetworkSystem::NodeNamed(const std::string& name, const std::string& path) const {
+  const int i = FindNode(name);
+  if (i < 0) {
+    throw ParameterError(path, name, "names no node; the nodes are: " + KnownNames(nodes_));
+  }
+  return i;
+}
+
+int NetworkSystem::NumberEnds() {
   int states = 0;
   for (const Node& node : nodes_) {
     End end{node.kind, -1, node.position, static_cast<int>(ends_.size())};
@@ -106,48 +138,42 @@ void NetworkSystem::Resolve() {
     }
     ends_.push_back(end);
   }
-  const auto node_named = [&](const std::string& name, const std::string& path) {
-    const int i = FindNode(name);
-    if (i < 0) {
-      throw ParameterError(path, name, "names no node; the nodes are: " + KnownNames(nodes_));
-    }
-    return i;
-  };
+  return states;
+}
 
-  Components joined(nodes_.size());
-  for (std::size_t e = 0; e < elements_.size(); ++e) {
-    const Element& element = elements_[e];
-    Link link{node_named(element.from, Entry("elements", e, "from")),
-              node_named(element.to, Entry("elements", e, "to")), {}, -1, {-1, -1}};
-    if (link.from == link.to) {
-      throw ParameterError(Entry("elements", e, "to"), element.to,
-                           "must differ from `from`: an element joins two nodes");
-    }
-    joined.Join(static_cast<std::size_t>(link.from), static_cast<std::size_t>(link.to));
-    if (element.kind == ElementKind::kActuator && element.excitation) {
-      // after every node's states (the nodes were numbered above)
-      link.activation = states++;
-      activations_.push_back({static_cast<int>(e), link.activation, -1});
-      kinks_.push_back({Kink::kExcitation, static_cast<int>(e), 0.0});
-    }
-    links_.push_back(link);
-    const bool inert = (element.kind == ElementKind::kDamper && element.damping == 0.0) ||
-                       (element.kind == ElementKind::kSpring && element.stiffness == 0.0);
-    if (!inert) active_links_.push_back(static_cast<int>(e));
-    if (element.kind == ElementKind::kTendon) {
-      kinks_.push_back({Kink::kLength, static_cast<int>(e), element.slack_length});
-    } else if (element.kind == ElementKind::kActuator && element.model->params().passive.k_p > 0.0) {
-      kinks_.push_back(
-          {Kink::kLength, static_cast<int>(e), element.model->params().passive.slack_length});
-    }
-    if (element.kind == ElementKind::kActuator && element.model->velocity().has_kink()) {
-      kinks_.push_back({Kink::kLengtheningRate, static_cast<int>(e), 0.0});  // v = 0
-    }
+void NetworkSystem::AddLink(std::size_t e, int& states) {
+  const Element& element = elements_[e];
+  Link link{NodeNamed(element.from, Entry("elements", e, "from")),
+            NodeNamed(element.to, Entry("elements", e, "to")), {}, -1, {-1, -1}};
+  if (link.from == link.to) {
+    throw ParameterError(Entry("elements", e, "to"), element.to,
+                         "must differ from `from`: an element joins two nodes");
   }
+  if (element.kind == ElementKind::kActuator && element.excitation) {
+    // after every node's states (the nodes were numbered first)
+    link.activation = states++;
+    activations_.push_back({static_cast<int>(e), link.activation, -1});
+    kinks_.push_back({Kink::kExcitation, static_cast<int>(e), 0.0});
+  }
+  links_.push_back(link);
+  const bool inert = (element.kind == ElementKind::kDamper && element.damping == 0.0) ||
+                     (element.kind == ElementKind::kSpring && element.stiffness == 0.0);
+  if (!inert) active_links_.push_back(static_cast<int>(e));
+  if (element.kind == ElementKind::kTendon) {
+    kinks_.push_back({Kink::kLength, static_cast<int>(e), element.slack_length});
+  } else if (element.kind == ElementKind::kActuator && element.model->params().passive.k_p > 0.0) {
+    kinks_.push_back(
+        {Kink::kLength, static_cast<int>(e), element.model->params().passive.slack_length});
+  }
+  if (element.kind == ElementKind::kActuator && element.model->velocity().has_kink()) {
+    kinks_.push_back({Kink::kLengtheningRate, static_cast<int>(e), 0.0});  // v = 0
+  }
+}
 
+std::vector<std::vector<Load>> NetworkSystem::LoadsByNode() const {
   std::vector<std::vector<Load>> node_loads(nodes_.size());
   for (std::size_t l = 0; l < loads_.size(); ++l) {
-    const int node = node_named(loads_[l].node, Entry("loads", l, "node"));
+    const int node = NodeNamed(loads_[l].node, Entry("loads", l, "node"));
     if (nodes_[node].kind != NodeKind::kFree) {
       throw ParameterError(Entry("loads", l, "node"), loads_[l].node,
                            "must name a free node (one with a mass); it is " +
@@ -160,14 +186,14 @@ void NetworkSystem::Resolve() {
     }
     node_loads[node].push_back(loads_[l].load);
   }
+  return node_loads;
+}
 
-  std::vector<bool> anchored(nodes_.size(), false);
-  for (std::size_t i = 0; i < nodes_.size(); ++i) {
-    if (nodes_[i].kind != NodeKind::kFree) anchored[joined.Find(i)] = true;
-  }
+void NetworkSystem::AddFreeNodes(std::vector<std::vector<Load>> node_loads,
+                                 const std::vector<bool>& anchored) {
   for (std::size_t i = 0; i < nodes_.size(); ++i) {
     if (nodes_[i].kind != NodeKind::kFree) continue;
-    if (!anchored[joined.Find(i)]) {
+    if (!anchored[i]) {
       throw ParameterError(Entry("nodes", i, "name"), nodes_[i].name,
                            "floats: no chain of elements joins this free node to a fixed or "
                            "prescribed node");
@@ -180,8 +206,6 @@ void NetworkSystem::Resolve() {
     throw ParameterError("nodes", std::to_string(nodes_.size()) + " nodes",
                          "need at least one free node (one with a mass): nothing would move");
   }
-  ResolveControllers(states);
-  FindSingleNode();
 }
 
 void NetworkSystem::FindSingleNode() {

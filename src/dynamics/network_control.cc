@@ -20,109 +20,139 @@ namespace {
 constexpr int kFromPosition = 0, kFromVelocity = 1, kToPosition = 2, kToVelocity = 3;
 constexpr int kMeasuredActivation = 4, kIntegral = 5;
 
+void RequireEveryControlledDriven(const std::vector<Element>& elements,
+                                  const std::vector<int>& driver) {
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    if (elements[e].controlled && driver[e] < 0) {
+      throw ParameterError(Entry("elements", e, "name"), elements[e].name,
+                           "is a controlled actuator that no controller drives: give it a "
+                           "controller or an activation of its own");
+    }
+  }
+}
+
 }  // namespace
 
 void NetworkSystem::ResolveControllers(int& states) {
   std::vector<int> driver(elements_.size(), -1);
   for (std::size_t k = 0; k < controllers_.size(); ++k) {
-    const Controller& c = controllers_[k];
-    Loop loop;
-    std::fill(std::begin(loop.columns), std::end(loop.columns), -1);
-    if (!c.measure.element.empty()) {
-      loop.element = FindElement(c.measure.element);
-      if (loop.element < 0) {
-        throw ParameterError(Entry("controllers", k, "measure.element"), c.measure.element,
-                             "names no element; the elements are: " + KnownNames(elements_));
-      }
-    } else {
-      loop.node = FindNode(c.measure.node);
-      if (loop.node < 0) {
-        throw ParameterError(Entry("controllers", k, "measure.node"), c.measure.node,
-                             "names no node; the nodes are: " + KnownNames(nodes_));
-      }
-      if (nodes_[loop.node].kind != NodeKind::kFree) {
-        throw ParameterError(Entry("controllers", k, "measure.node"), c.measure.node,
-                             "must name a free node (one with a mass): it is " +
-                                 std::string(ToString(nodes_[loop.node].kind)));
-      }
-    }
-    const bool pair = c.co_contraction.has_value();
-    const std::string names[2] = {pair ? c.co_contraction->first : c.drives,
-                                  pair ? c.co_contraction->second : std::string()};
-    const char* key = pair ? "co_contraction.actuators" : "drives";
-    for (int i = 0; i < (pair ? 2 : 1); ++i) {
-      const int e = FindElement(names[i]);
-      if (e < 0) {
-        throw ParameterError(Entry("controllers", k, key), names[i],
-                             "names no element; the elements are: " + KnownNames(elements_));
-      }
-      if (elements_[e].kind != ElementKind::kActuator) {
-        throw ParameterError(Entry("controllers", k, key), names[i],
-                             "must name an actuator; it is a " +
-                                 std::string(ToString(elements_[e].kind)));
-      }
-      if (!elements_[e].controlled) {
-        throw ParameterError(Entry("controllers", k, key), names[i],
-                             "drives an actuator that has an activation of its own: a "
-                             "controlled actuator has none (no `activation:` or `excitation:`)");
-      }
-      if (driver[e] >= 0) {
-        throw ParameterError(Entry("controllers", k, key), names[i],
-                             "is driven by controllers[" + std::to_string(driver[e]) +
-                                 "] already: an actuator takes one controller");
-      }
-      driver[e] = static_cast<int>(k);
-      links_[e].loop = static_cast<int>(k);
-      links_[e].side = i == 0 ? 1 : -1;
-      loop.driven[i] = e;
-      kinks_.push_back({Kink::kCommand, e, 0.0});
-      kinks_.push_back({Kink::kCommand, e, 1.0});
-    }
-    if (c.gains.ki != 0.0) {
+    Loop loop = MeasuredLoop(k);
+    AttachDriven(k, loop, driver);
+    if (controllers_[k].gains.ki != 0.0) {
       loop.integral = states++;
       ++integral_count_;
     }
     loops_.push_back(loop);
   }
-  for (std::size_t e = 0; e < elements_.size(); ++e) {
-    if (elements_[e].controlled && driver[e] < 0) {
-      throw ParameterError(Entry("elements", e, "name"), elements_[e].name,
-                           "is a controlled actuator that no controller drives: give it a "
-                           "controller or an activation of its own");
-    }
-  }
+  RequireEveryControlledDriven(elements_, driver);
   for (std::size_t k = 0; k < loops_.size(); ++k) {
-    Loop& loop = loops_[k];
-    const int m = loop.element;
-    if (m >= 0 && controllers_[k].measure.quantity == MeasuredQuantity::kTension &&
-        elements_[m].controlled && !elements_[m].excitation) {
-      // its tension depends on a controller's output, computed from the state now: an
-      // algebraic loop when it is this controller's, a chain of them otherwise
-      throw ParameterError(
-          Entry("controllers", k, "measure.element"), elements_[m].name,
-          (driver[m] == static_cast<int>(k) ? std::string("is the actuator this controller drives")
-                                            : "is driven by controllers[" +
-                                                  std::to_string(driver[m]) + "]") +
-              ", without activation dynamics: its tension would be an algebraic function of "
-              "a controller's output; give it activation_dynamics (docs/model.md 11)");
-    }
-    const auto place = [&](int node, int column) {
-      const int state = ends_[node].state;
-      if (state < 0) return;
-      loop.columns[column] = state;
-      loop.columns[column + 1] = state + 1;
-    };
-    if (m >= 0) {
-      place(links_[m].from, kFromPosition);
-      place(links_[m].to, kToPosition);
-      if (controllers_[k].measure.quantity == MeasuredQuantity::kTension) {
-        loop.columns[kMeasuredActivation] = links_[m].activation;
-      }
-    } else {
-      place(loop.node, kToPosition);
-    }
-    loop.columns[kIntegral] = loop.integral;
+    RequireNoAlgebraicLoop(k, driver);
+    PlaceLoopColumns(k);
   }
+}
+
+NetworkSystem::Loop NetworkSystem::MeasuredLoop(std::size_t k) const {
+  const Controller& c = controllers_[k];
+  Loop loop;
+  std::fill(std::begin(loop.columns), std::end(loop.columns), -1);
+  if (!c.measure.element.empty()) {
+    loop.element = FindElement(c.measure.element);
+    if (loop.element < 0) {
+      throw ParameterError(Entry("controllers", k, "measure.element"), c.measure.element,
+                           "names no element; the elements are: " + KnownNames(elements_));
+    }
+  } else {
+    loop.node = FindNode(c.measure.node);
+    if (loop.node < 0) {
+      throw ParameterError(Entry("controllers", k, "measure.node"), c.measure.node,
+                           "names no node; the nodes are: " + KnownNames(nodes_));
+    }
+    if (nodes_[loop.node].kind != NodeKind::kFree) {
+      throw ParameterError(Entry("controllers", k, "measure.node"), c.measure.node,
+                           "must name a free node (one with a mass): it is " +
+                               std::string(ToString(nodes_[loop.node].kind)));
+    }
+  }
+  return loop;
+}
+
+int NetworkSystem::DrivableActuator(std::size_t k, const char* key, const std::string& name,
+                                    const std::vector<int>& driver) const {
+  const int e = FindElement(name);
+  if (e < 0) {
+    throw ParameterError(Entry("controllers", k, key), name,
+                         "names no element; the elements are: " + KnownNames(elements_));
+  }
+  if (elements_[e].kind != ElementKind::kActuator) {
+    throw ParameterError(Entry("controllers", k, key), name,
+                         "must name an actuator; it is a " +
+                             std::string(ToString(elements_[e].kind)));
+  }
+  if (!elements_[e].controlled) {
+    throw ParameterError(Entry("controllers", k, key), name,
+                         "drives an actuator that has an activation of its own: a "
+                         "controlled actuator has none (no `activation:` or `excitation:`)");
+  }
+  if (driver[e] >= 0) {
+    throw ParameterError(Entry("controllers", k, key), name,
+                         "is driven by controllers[" + std::to_string(driver[e]) +
+                             "] already: an actuator takes one controller");
+  }
+  return e;
+}
+
+void NetworkSystem::AttachDriven(std::size_t k, Loop& loop, std::vector<int>& driver) {
+  const Controller& c = controllers_[k];
+  const bool pair = c.co_contraction.has_value();
+  const std::string names[2] = {pair ? c.co_contraction->first : c.drives,
+                                pair ? c.co_contraction->second : std::string()};
+  const char* key = pair ? "co_contraction.actuators" : "drives";
+  for (int i = 0; i < (pair ? 2 : 1); ++i) {
+    const int e = DrivableActuator(k, key, names[i], driver);
+    driver[e] = static_cast<int>(k);
+    links_[e].loop = static_cast<int>(k);
+    links_[e].side = i == 0 ? 1 : -1;
+    loop.driven[i] = e;
+    kinks_.push_back({Kink::kCommand, e, 0.0});
+    kinks_.push_back({Kink::kCommand, e, 1.0});
+  }
+}
+
+void NetworkSystem::RequireNoAlgebraicLoop(std::size_t k, const std::vector<int>& driver) const {
+  const int m = loops_[k].element;
+  if (m >= 0 && controllers_[k].measure.quantity == MeasuredQuantity::kTension &&
+      elements_[m].controlled && !elements_[m].excitation) {
+    // its tension depends on a controller's output, computed from the state now: an
+    // algebraic loop when it is this controller's, a chain of them otherwise
+    throw ParameterError(
+        Entry("controllers", k, "measure.element"), elements_[m].name,
+        (driver[m] == static_cast<int>(k) ? std::string("is the actuator this controller drives")
+                                          : "is driven by controllers[" +
+                                                std::to_string(driver[m]) + "]") +
+            ", without activation dynamics: its tension would be an algebraic function of "
+            "a controller's output; give it activation_dynamics (docs/model.md 11)");
+  }
+}
+
+void NetworkSystem::PlaceLoopColumns(std::size_t k) {
+  Loop& loop = loops_[k];
+  const int m = loop.element;
+  const auto place = [&](int node, int column) {
+    const int state = ends_[node].state;
+    if (state < 0) return;
+    loop.columns[column] = state;
+    loop.columns[column + 1] = state + 1;
+  };
+  if (m >= 0) {
+    place(links_[m].from, kFromPosition);
+    place(links_[m].to, kToPosition);
+    if (controllers_[k].measure.quantity == MeasuredQuantity::kTension) {
+      loop.columns[kMeasuredActivation] = links_[m].activation;
+    }
+  } else {
+    place(loop.node, kToPosition);
+  }
+  loop.columns[kIntegral] = loop.integral;
 }
 
 void NetworkSystem::AddControlPattern(std::vector<std::pair<int, int>>& pairs) const {

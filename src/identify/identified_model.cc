@@ -17,39 +17,42 @@ std::string PlusMinus(const Estimate& e) {
          (std::isfinite(e.standard_error) ? FormatNumber(e.standard_error) : "n/a");
 }
 
-}  // namespace
-
-ModelYamlDraft DraftIdentifiedModel(const std::string& source,
-                                    const std::optional<PassiveIdentification>& passive,
-                                    const std::optional<ActiveIdentification>& active,
-                                    const std::optional<VelocityIdentification>& velocity) {
-  ModelYamlDraft draft;
-  draft.header = {"identified by musclesim identify from " + source,
-                  "(+- standard errors from the Jacobian at the optimum)"};
+ModelYamlPart<double> DraftFIso(const std::optional<ActiveIdentification>& active,
+                                const std::optional<VelocityIdentification>& velocity) {
+  ModelYamlPart<double> f_iso;
   if (active) {
-    draft.f_iso = {active->f_iso.value,
-                   {"N, " + PlusMinus(active->f_iso) + ", the active curve's maximum"}};
+    f_iso = {active->f_iso.value,
+             {"N, " + PlusMinus(active->f_iso) + ", the active curve's maximum"}};
   } else if (velocity) {
-    draft.f_iso = {velocity->best.f_iso.value,
-                   {"N, " + PlusMinus(velocity->best.f_iso) + ", from the tension-velocity curve"}};
+    f_iso = {velocity->best.f_iso.value,
+             {"N, " + PlusMinus(velocity->best.f_iso) + ", from the tension-velocity curve"}};
   } else {
-    draft.f_iso.comments = {"not identified (no active or velocity data)"};
+    f_iso.comments = {"not identified (no active or velocity data)"};
   }
+  return f_iso;
+}
 
+ModelYamlPart<PassiveParams> DraftPassive(const std::optional<PassiveIdentification>& passive) {
+  ModelYamlPart<PassiveParams> part;
   if (passive) {
-    draft.passive.params =
+    part.params =
         PassiveParams{passive->k_p.value, passive->alpha.value, passive->slack_length.value};
-    draft.passive.comments = {"k_p = " + PlusMinus(passive->k_p) + " N, alpha = " +
-                              PlusMinus(passive->alpha) + " 1/m, slack_length = " +
-                              PlusMinus(passive->slack_length) + " m; RMSE " +
-                              FormatNumber(passive->rmse) + " N"};
+    part.comments = {"k_p = " + PlusMinus(passive->k_p) + " N, alpha = " +
+                     PlusMinus(passive->alpha) + " 1/m, slack_length = " +
+                     PlusMinus(passive->slack_length) + " m; RMSE " +
+                     FormatNumber(passive->rmse) + " N"};
     for (const std::string& note : PassiveUncertaintyNotes(*passive, FormatNumber)) {
-      draft.passive.comments.push_back(note);
+      part.comments.push_back(note);
     }
   } else {
-    draft.passive.comments = {"not identified: no passive tension"};
+    part.comments = {"not identified: no passive tension"};
   }
+  return part;
+}
 
+// The active_length part and its comment per Gaussian.
+void DraftActiveLength(const std::optional<ActiveIdentification>& active,
+                       ModelYamlDraft& draft) {
   if (active) {
     draft.active_length.params = active->curve;
     draft.active_length.comments = {
@@ -63,54 +66,87 @@ ModelYamlDraft DraftIdentifiedModel(const std::string& source,
   } else {
     draft.active_length.comments = {"not identified: one Gaussian a kilometre wide, a flat f_L"};
   }
+}
 
+// "`heading` n=1 RMSE ...; n=3 no fit;": the candidates other than the best exponent.
+template <typename Candidate>
+std::string OtherExponents(std::string heading, const std::vector<Candidate>& candidates,
+                           int best_n) {
+  for (const Candidate& c : candidates) {
+    if (c.n == best_n) continue;
+    heading += " n=" + std::to_string(c.n) + " " +
+               (c.valid ? "RMSE " + FormatNumber(c.rmse) : "no fit") + ";";
+  }
+  return heading;
+}
+
+// The velocity part as it is being drafted: its parameters, and what its comments say of
+// epsilon and of the eccentric branch.
+struct VelocityDraft {
+  VelocityParams params;
+  std::string epsilon_rule = "1e-3 v_max";
+  std::vector<std::string> eccentric_comments;
+};
+
+// The identified eccentric branch put in; epsilon kept below the smaller v_max.
+void DraftEccentric(const EccentricIdentification& e, double concentric_v_max,
+                    VelocityDraft& v) {
+  v.params.eccentric = {e.best.v_max.value, e.best.n, std::nullopt};
+  if (e.limit_identified) v.params.eccentric.limit = e.best.limit.value;
+  // eps must not exceed either v_max (the model's rule)
+  if (e.best.v_max.value < concentric_v_max) {
+    v.params.epsilon = StandInEpsilon(e.best.v_max.value);
+    v.epsilon_rule = "1e-3 times the eccentric v_max, the smaller";
+  }
+  v.eccentric_comments.push_back(OtherExponents(
+      "other eccentric n:", e.limit_identified ? e.bounded : e.unbounded, e.best.n));
+}
+
+ModelYamlPart<VelocityParams> DraftVelocity(const VelocityIdentification& velocity) {
+  const VelocityCandidate& best = velocity.best;
+  VelocityDraft v;
+  v.params = {best.v_max.value, best.n, StandInEpsilon(best.v_max.value)};
+  const std::string others = OtherExponents("other n:", velocity.candidates, best.n);
+  if (velocity.eccentric) {
+    const EccentricIdentification& e = *velocity.eccentric;
+    v.eccentric_comments = DescribeEccentric(e);
+    if (e.identified) DraftEccentric(e, best.v_max.value, v);
+  }
+  try {
+    Validate(v.params);  // extreme eccentric estimates may break the model's rules: say so
+  } catch (const ParameterError& error) {
+    v.params.eccentric = {};
+    v.params.epsilon = StandInEpsilon(best.v_max.value);
+    v.epsilon_rule = "1e-3 v_max";
+    v.eccentric_comments.push_back("eccentric branch left out: it gives velocity." +
+                                   error.path() + " = " + error.value() + ", which " +
+                                   error.rule());
+  }
+  ModelYamlPart<VelocityParams> part;
+  part.params = v.params;
+  part.comments = {"v_max = " + PlusMinus(best.v_max) + " m/s, RMSE " +
+                       FormatNumber(best.rmse) + " N; epsilon is not identified (" +
+                       v.epsilon_rule + ")",
+                   others};
+  part.comments.insert(part.comments.end(), v.eccentric_comments.begin(),
+                       v.eccentric_comments.end());
+  return part;
+}
+
+}  // namespace
+
+ModelYamlDraft DraftIdentifiedModel(const std::string& source,
+                                    const std::optional<PassiveIdentification>& passive,
+                                    const std::optional<ActiveIdentification>& active,
+                                    const std::optional<VelocityIdentification>& velocity) {
+  ModelYamlDraft draft;
+  draft.header = {"identified by musclesim identify from " + source,
+                  "(+- standard errors from the Jacobian at the optimum)"};
+  draft.f_iso = DraftFIso(active, velocity);
+  draft.passive = DraftPassive(passive);
+  DraftActiveLength(active, draft);
   if (velocity) {
-    const VelocityCandidate& best = velocity->best;
-    VelocityParams params{best.v_max.value, best.n, StandInEpsilon(best.v_max.value)};
-    std::string others = "other n:";
-    for (const VelocityCandidate& c : velocity->candidates) {
-      if (c.n == best.n) continue;
-      others += " n=" + std::to_string(c.n) + " " +
-                (c.valid ? "RMSE " + FormatNumber(c.rmse) : "no fit") + ";";
-    }
-    std::vector<std::string> eccentric_comments;
-    std::string epsilon_rule = "1e-3 v_max";
-    if (velocity->eccentric) {
-      const EccentricIdentification& e = *velocity->eccentric;
-      eccentric_comments = DescribeEccentric(e);
-      if (e.identified) {
-        params.eccentric = {e.best.v_max.value, e.best.n, std::nullopt};
-        if (e.limit_identified) params.eccentric.limit = e.best.limit.value;
-        // eps must not exceed either v_max (the model's rule)
-        if (e.best.v_max.value < best.v_max.value) {
-          params.epsilon = StandInEpsilon(e.best.v_max.value);
-          epsilon_rule = "1e-3 times the eccentric v_max, the smaller";
-        }
-        std::string other_exponents = "other eccentric n:";
-        for (const EccentricCandidate& c : e.limit_identified ? e.bounded : e.unbounded) {
-          if (c.n == e.best.n) continue;
-          other_exponents += " n=" + std::to_string(c.n) + " " +
-                             (c.valid ? "RMSE " + FormatNumber(c.rmse) : "no fit") + ";";
-        }
-        eccentric_comments.push_back(other_exponents);
-      }
-    }
-    try {
-      Validate(params);  // extreme eccentric estimates may break the model's rules: say so
-    } catch (const ParameterError& error) {
-      params.eccentric = {};
-      params.epsilon = StandInEpsilon(best.v_max.value);
-      epsilon_rule = "1e-3 v_max";
-      eccentric_comments.push_back("eccentric branch left out: it gives velocity." + error.path() +
-                                   " = " + error.value() + ", which " + error.rule());
-    }
-    draft.velocity.params = params;
-    draft.velocity.comments = {"v_max = " + PlusMinus(best.v_max) + " m/s, RMSE " +
-                                   FormatNumber(best.rmse) + " N; epsilon is not identified (" +
-                                   epsilon_rule + ")",
-                               others};
-    draft.velocity.comments.insert(draft.velocity.comments.end(), eccentric_comments.begin(),
-                                   eccentric_comments.end());
+    draft.velocity = DraftVelocity(*velocity);
   } else {
     draft.velocity.comments = {"not identified: g close to 1"};
   }

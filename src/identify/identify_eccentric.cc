@@ -211,45 +211,36 @@ bool Determined(const Fit& fit) {
   return fit.full_rank && std::isfinite(v.standard_error) && v.standard_error < v.value;
 }
 
-}  // namespace
-
-double EccentricFactor(const EccentricCandidate& branch, double v) {
-  const double psi = std::pow(-v / branch.v_max.value, 1.0 / branch.n);
-  if (!std::isfinite(branch.limit.value)) return 1.0 + psi;
-  const double headroom = branch.limit.value - 1.0;
-  return 1.0 + headroom * std::tanh(psi / headroom);
-}
-
-EccentricIdentification IdentifyEccentric(const std::vector<DataPoint>& lengthening,
-                                          const Estimate& f_iso) {
-  EccentricIdentification out;
-  out.points = lengthening.size();
-  // 0 when f_iso was given; the concentric fit always leaves a degree of freedom (it needs 3
-  // points for 2 parameters), so its error is finite when fitted
-  const double f_iso_variance =
-      std::isfinite(f_iso.standard_error) ? f_iso.standard_error * f_iso.standard_error : 0.0;
-  const auto k = static_cast<Eigen::Index>(lengthening.size());
-  Eigen::VectorXd tension(k);
-  for (Eigen::Index i = 0; i < k; ++i) tension(i) = lengthening[static_cast<std::size_t>(i)].y;
-  const double scale = k > 0 ? tension.cwiseAbs().maxCoeff() : 0.0;  // [N]
+// Every n_e's fits of the eccentric points: the unbounded branch's, and the bounded one's
+// (an invalid fit when there are too few points for a limit).
+struct ExponentScan {
   std::vector<Fit> unbounded, bounded;
+};
+
+ExponentScan FitEveryExponent(const std::vector<DataPoint>& lengthening,
+                              const Eigen::VectorXd& tension, double f_iso,
+                              double f_iso_variance) {
+  ExponentScan scan;
+  const Eigen::Index k = tension.size();
   for (int n = 1; n <= kMaxExponent && k > 0; ++n) {
-    Branch b{n, Eigen::VectorXd(k), tension, f_iso.value};
+    Branch b{n, Eigen::VectorXd(k), tension, f_iso};
     for (Eigen::Index i = 0; i < k; ++i) {
       b.s(i) = std::pow(-lengthening[static_cast<std::size_t>(i)].x, 1.0 / n);
     }
-    unbounded.push_back(FitUnbounded(b, f_iso_variance));
-    bounded.push_back(out.points >= kMinLimitPoints
-                          ? FitBounded(b, unbounded.back(), f_iso_variance)
-                          : Fit{});
-    bounded.back().candidate.n = n;
-    out.unbounded.push_back(unbounded.back().candidate);
-    out.bounded.push_back(bounded.back().candidate);
+    scan.unbounded.push_back(FitUnbounded(b, f_iso_variance));
+    scan.bounded.push_back(lengthening.size() >= kMinLimitPoints
+                               ? FitBounded(b, scan.unbounded.back(), f_iso_variance)
+                               : Fit{});
+    scan.bounded.back().candidate.n = n;
   }
+  return scan;
+}
 
-  const std::string count = std::to_string(out.points) + " with v < 0";
-  const Fit* free = LeastSquares(unbounded);
-  const Fit* bound = LeastSquares(bounded);
+std::string PointCount(std::size_t points) { return std::to_string(points) + " with v < 0"; }
+
+// Whether the unbounded branch is identified (out.identified, out.best), or why not.
+void DecideBranch(const std::vector<DataPoint>& lengthening, const Fit* free, const Fit* bound,
+                  EccentricIdentification& out) {
   // a tension flat over the eccentric points (at f_iso, or saturated at L f_iso) has no
   // v_max_e to show: the branch must beat a constant by the Bayesian information criterion
   double mean = 0.0, flat_rss = 0.0;
@@ -258,7 +249,8 @@ EccentricIdentification IdentifyEccentric(const std::vector<DataPoint>& lengthen
   const double branch_rss = std::min(free ? free->rss : kInfinity, bound ? bound->rss : kInfinity);
   const bool beats_flat = BicPrefers(flat_rss, branch_rss, out.points);
   if (out.points < kMinPoints) {
-    out.why_not = "too few eccentric points: " + count + ", need at least 3 for v_max_e and n_e";
+    out.why_not = "too few eccentric points: " + PointCount(out.points) +
+                  ", need at least 3 for v_max_e and n_e";
   } else if (free && !beats_flat) {
     out.why_not = "the tension shows no trend with the lengthening speed (flat at " +
                   FormatNumber(mean) + " N to within the noise, RMSE " +
@@ -273,13 +265,17 @@ EccentricIdentification IdentifyEccentric(const std::vector<DataPoint>& lengthen
     out.identified = true;
     out.best = free->candidate;
   }
+}
 
-  // residuals of 1e-12 of the tensions are rounding: a fit that good leaves nothing to explain
-  const double rounding = static_cast<double>(out.points) * std::pow(1e-12 * scale, 2);
+// Whether the branch's limit is identified too (out.limit_identified, out.best), or why not.
+// `rounding`: the residual sum of squares that is rounding alone [N^2].
+void DecideLimit(const Fit* free, const Fit* bound, double rounding,
+                 EccentricIdentification& out) {
   if (!out.identified) {
     out.why_no_limit = "the eccentric branch itself is not identified";
   } else if (out.points < kMinLimitPoints) {
-    out.why_no_limit = "too few eccentric points: " + count + ", need at least 4 for a limit too";
+    out.why_no_limit = "too few eccentric points: " + PointCount(out.points) +
+                       ", need at least 4 for a limit too";
   } else if (!bound) {
     out.why_no_limit = "no bounded fit with the tension rising with the lengthening speed";
   } else if (!bound->full_rank) {
@@ -306,6 +302,38 @@ EccentricIdentification IdentifyEccentric(const std::vector<DataPoint>& lengthen
     out.limit_identified = true;
     out.best = bound->candidate;
   }
+}
+
+}  // namespace
+
+double EccentricFactor(const EccentricCandidate& branch, double v) {
+  const double psi = std::pow(-v / branch.v_max.value, 1.0 / branch.n);
+  if (!std::isfinite(branch.limit.value)) return 1.0 + psi;
+  const double headroom = branch.limit.value - 1.0;
+  return 1.0 + headroom * std::tanh(psi / headroom);
+}
+
+EccentricIdentification IdentifyEccentric(const std::vector<DataPoint>& lengthening,
+                                          const Estimate& f_iso) {
+  EccentricIdentification out;
+  out.points = lengthening.size();
+  // 0 when f_iso was given; the concentric fit always leaves a degree of freedom (it needs 3
+  // points for 2 parameters), so its error is finite when fitted
+  const double f_iso_variance =
+      std::isfinite(f_iso.standard_error) ? f_iso.standard_error * f_iso.standard_error : 0.0;
+  const auto k = static_cast<Eigen::Index>(lengthening.size());
+  Eigen::VectorXd tension(k);
+  for (Eigen::Index i = 0; i < k; ++i) tension(i) = lengthening[static_cast<std::size_t>(i)].y;
+  const double scale = k > 0 ? tension.cwiseAbs().maxCoeff() : 0.0;  // [N]
+  const ExponentScan scan = FitEveryExponent(lengthening, tension, f_iso.value, f_iso_variance);
+  for (const Fit& fit : scan.unbounded) out.unbounded.push_back(fit.candidate);
+  for (const Fit& fit : scan.bounded) out.bounded.push_back(fit.candidate);
+  const Fit* free = LeastSquares(scan.unbounded);
+  const Fit* bound = LeastSquares(scan.bounded);
+  DecideBranch(lengthening, free, bound, out);
+  // residuals of 1e-12 of the tensions are rounding: a fit that good leaves nothing to explain
+  const double rounding = static_cast<double>(out.points) * std::pow(1e-12 * scale, 2);
+  DecideLimit(free, bound, rounding, out);
   return out;
 }
 

@@ -94,15 +94,14 @@ std::vector<double> MergedTimes(std::vector<MeasuredSeries>& series,
   return times;
 }
 
-Setup Prepare(const IdentifySeriesSpec& spec, std::vector<MeasuredSeries> series,
-              const SensitivityRunner& run, bool design) {
-  Setup setup;
-  for (const SeriesParameterSpec& p : spec.parameters) setup.paths.push_back(p.path);
-  // the scenario as given, on its output grid: its values of the parameters, its columns,
-  // the span the measured times must lie in, and the grid for a series without times
+// The scenario as given, on its output grid: its values of the parameters, its columns, the
+// span the measured times must lie in, and the grid for a series without times. A scenario
+// that refuses the parameters is reported at the first entry it refuses on its own.
+SensitivityTable BaselineRun(const IdentifySeriesSpec& spec, const std::vector<std::string>& paths,
+                             const SensitivityRunner& run) {
   SensitivityTable baseline;
   try {
-    baseline = run(setup.paths, {}, {});
+    baseline = run(paths, {}, {});
   } catch (const InputError& e) {
     // name the entry at fault: the first parameter the scenario refuses on its own
     for (std::size_t i = 0; i < spec.parameters.size(); ++i) {
@@ -121,6 +120,12 @@ Setup Prepare(const IdentifySeriesSpec& spec, std::vector<MeasuredSeries> series
     throw std::runtime_error(spec.source + ": scenario " + spec.scenario +
                              " fails as given: " + baseline.stats.message);
   }
+  return baseline;
+}
+
+// Every measured time within the baseline run's span.
+void RequireTimesInRun(const std::vector<MeasuredSeries>& series,
+                       const SensitivityTable& baseline) {
   const double first = baseline.times.front(), last = baseline.times.back();
   for (std::size_t s = 0; s < series.size(); ++s) {
     for (std::size_t r = 0; r < series[s].times.size(); ++r) {
@@ -138,25 +143,51 @@ Setup Prepare(const IdentifySeriesSpec& spec, std::vector<MeasuredSeries> series
                                                       : ""));
     }
   }
-  setup.scenario_values = baseline.parameter_values;
-  setup.times = MergedTimes(series, baseline.times);
+}
 
-  // the measured columns among the run's differentiated ones; the noise all or nothing
+// The index of series[s]'s column c among the run's differentiated outputs.
+std::size_t RunColumn(const std::vector<std::string>& columns, const MeasuredSeries& m,
+                      std::size_t s, std::size_t c) {
+  const auto found = std::find(columns.begin(), columns.end(), m.columns[c]);
+  if (found == columns.end()) {
+    std::string known;
+    for (const std::string& name : columns) {
+      known += (known.empty() ? "" : ", ") + name;
+    }
+    throw InputError("series[" + std::to_string(s) + "] (" + m.at + "): column " +
+                     m.columns[c] + " is not an output the scenario's run differentiates; "
+                     "these are: " + known);
+  }
+  return static_cast<std::size_t>(found - columns.begin());
+}
+
+// Whether the noise is given: for every measured column or for none, and without it the
+// series must measure one column (there is no other weight between quantities).
+bool NoiseGiven(const IdentifySeriesSpec& spec, std::size_t with_noise,
+                std::size_t without_noise, std::size_t distinct_columns) {
+  if (with_noise > 0 && without_noise > 0) {
+    throw InputError(spec.source + ": noise levels are given for some columns and not for others: "
+                     "give one for every measured column (or for none, when every series "
+                     "measures one and the same column)");
+  }
+  if (with_noise == 0 && distinct_columns > 1) {
+    throw InputError(spec.source + ": the series measure " + std::to_string(distinct_columns) +
+                     " different columns and give no noise levels: give noise: {COLUMN: SD} "
+                     "for each, which weighs values of different quantities against each other");
+  }
+  return with_noise > 0;
+}
+
+// setup.observations: the measured columns among the run's differentiated ones, each value
+// at its row of the merged times; the noise all or nothing; more values than parameters.
+void AddObservations(const IdentifySeriesSpec& spec, const std::vector<MeasuredSeries>& series,
+                     const std::vector<std::string>& run_columns, bool design, Setup& setup) {
   std::size_t with_noise = 0, without_noise = 0;
   std::set<std::string> names;
   for (std::size_t s = 0; s < series.size(); ++s) {
     const MeasuredSeries& m = series[s];
     for (std::size_t c = 0; c < m.columns.size(); ++c) {
-      const auto found = std::find(baseline.columns.begin(), baseline.columns.end(), m.columns[c]);
-      if (found == baseline.columns.end()) {
-        std::string known;
-        for (const std::string& name : baseline.columns) {
-          known += (known.empty() ? "" : ", ") + name;
-        }
-        throw InputError("series[" + std::to_string(s) + "] (" + m.at + "): column " +
-                         m.columns[c] + " is not an output the scenario's run differentiates; "
-                         "these are: " + known);
-      }
+      const std::size_t run_column = RunColumn(run_columns, m, s, c);
       (std::isnan(m.noise[c]) ? without_noise : with_noise) += 1;
       names.insert(m.columns[c]);
       const double weight = std::isnan(m.noise[c]) ? 1.0 : 1.0 / m.noise[c];
@@ -164,29 +195,21 @@ Setup Prepare(const IdentifySeriesSpec& spec, std::vector<MeasuredSeries> series
       for (std::size_t r = 0; r < m.times.size(); ++r) {
         while (setup.times[merged] < m.times[r]) ++merged;
         const double measured = design ? 0.0 : m.values[r * m.columns.size() + c];
-          setup.observations.push_back(
-            {s, c, merged, static_cast<std::size_t>(found - baseline.columns.begin()), measured,
-             weight});
+        setup.observations.push_back({s, c, merged, run_column, measured, weight});
       }
     }
   }
-  if (with_noise > 0 && without_noise > 0) {
-    throw InputError(spec.source + ": noise levels are given for some columns and not for others: "
-                     "give one for every measured column (or for none, when every series "
-                     "measures one and the same column)");
-  }
-  if (with_noise == 0 && names.size() > 1) {
-    throw InputError(spec.source + ": the series measure " + std::to_string(names.size()) +
-                     " different columns and give no noise levels: give noise: {COLUMN: SD} "
-                     "for each, which weighs values of different quantities against each other");
-  }
-  setup.noise_given = with_noise > 0;
+  setup.noise_given = NoiseGiven(spec, with_noise, without_noise, names.size());
   if (setup.observations.size() <= setup.paths.size()) {
     throw InputError(spec.source + ": " + std::to_string(setup.observations.size()) +
                      " measured values for " + std::to_string(setup.paths.size()) +
                      " parameters: need more values than parameters");
   }
+}
 
+// Each parameter's start (the entry's, or the scenario's value) and bounds; the start must
+// lie within them.
+void SetStartsAndBounds(const IdentifySeriesSpec& spec, Setup& setup) {
   const Eigen::Index np = static_cast<Eigen::Index>(spec.parameters.size());
   setup.start.resize(np);
   setup.lower = Eigen::VectorXd::Constant(np, -kInfinity);
@@ -203,6 +226,18 @@ Setup Prepare(const IdentifySeriesSpec& spec, std::vector<MeasuredSeries> series
                        "]: give a start within them");
     }
   }
+}
+
+Setup Prepare(const IdentifySeriesSpec& spec, std::vector<MeasuredSeries> series,
+              const SensitivityRunner& run, bool design) {
+  Setup setup;
+  for (const SeriesParameterSpec& p : spec.parameters) setup.paths.push_back(p.path);
+  const SensitivityTable baseline = BaselineRun(spec, setup.paths, run);
+  RequireTimesInRun(series, baseline);
+  setup.scenario_values = baseline.parameter_values;
+  setup.times = MergedTimes(series, baseline.times);
+  AddObservations(spec, series, baseline.columns, design, setup);
+  SetStartsAndBounds(spec, setup);
   return setup;
 }
 

@@ -40,7 +40,7 @@ std::vector<MeasuredSeries> ReadMeasuredSeries(const IdentifySeriesSpec& spec, b
       }
     } else if (!design) {
       throw InputError(label + " (" + s.at + "): needs csv, the measured values, to fit (only "
-                       "--design does without: it takes the columns from noise)");
+                       "an experiment design does without: it takes the columns from noise)");
     } else {
       for (const auto& [column, level] : s.noise) series.columns.push_back(column);
     }

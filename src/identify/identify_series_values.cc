@@ -57,7 +57,7 @@ void ApplyNoise(MeasuredSeries& series, const SeriesSpec& spec, const std::strin
   if (!design) return;
   for (std::size_t c = 0; c < series.columns.size(); ++c) {
     if (std::isnan(series.noise[c])) {
-      throw InputError(label + " (" + spec.at + "): --design needs a noise level for column " +
+      throw InputError(label + " (" + spec.at + "): an experiment design needs a noise level for column " +
                        series.columns[c] + " (noise: {" + series.columns[c] +
                        ": SD}): the design's standard errors are in units of the noise");
     }

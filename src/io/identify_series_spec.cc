@@ -41,7 +41,7 @@ SeriesSpec ReadSeries(const yaml::Source& src, const YAML::Node& node, const std
   if (values == SeriesValues::kCsvFiles && !node["csv"] && !node["noise"]) {
     yaml::Fail(src, node, path, yaml::Describe(node),
                "give csv (the measured values, to fit) or noise (the columns and their noise "
-               "levels, enough for --design)");
+               "levels, enough for an experiment design)");
   }
   if (const YAML::Node csv = node["csv"]) {
     const std::string file = yaml::ReadString(src, csv, path + ".csv");
@@ -73,7 +73,7 @@ SeriesParameterSpec ReadParameter(const yaml::Source& src, const YAML::Node& nod
   const auto steps = SplitKeyPath(parameter.path);
   if (!steps || steps->empty()) {
     yaml::Fail(src, name, path + ".path", yaml::Describe(name),
-               "must be a dotted key path as --set takes it, e.g. model.f_iso or load[0].value");
+               "must be a dotted key path into the scenario, e.g. model.f_iso or load[0].value");
   }
   if (const YAML::Node start = node["start"]) {
     parameter.start = yaml::ReadNumberIn(src, start, path + ".start", kParameterRange);

@@ -81,13 +81,10 @@ std::shared_ptr<const TensionModel> FindModel(const yaml::Source& src, const YAM
   return found->second;
 }
 
-Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::string& path,
-                    const NamedModels& models, const DrivenActuators& driven, double t_start,
-                    double t_end) {
-  const std::string type = ReadType(src, item, path);
-  Element e;
-  ValidateAt(src, item, path, [&] { e.kind = ParseElementKind(type); });
-  switch (e.kind) {
+// The keys an element of `kind` may have: a misspelt one is an error before any is read.
+void RequireElementKeys(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+                        ElementKind kind) {
+  switch (kind) {
     case ElementKind::kActuator:
       yaml::RequireMap(src, item, path,
                        {"name", "type", "from", "to", "model", "activation", "excitation",
@@ -104,62 +101,83 @@ Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::
       yaml::RequireMap(src, item, path, {"name", "type", "from", "to", "damping"});
       break;
   }
+}
+
+double NumberIn(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+                const char* key, const InputRange& range) {
+  return yaml::ReadNumberIn(src, Required(src, item, path, key), Join(path, key), range);
+}
+
+// An actuator's model and its input: a controller's (`driven` names it), or its own
+// activation or excitation.
+void ReadActuator(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+                  const NamedModels& models, const DrivenActuators& driven, double t_start,
+                  double t_end, Element& e) {
+  e.model = FindModel(src, item, path, models);
+  if (const auto driver = driven.find(e.name); driver != driven.end()) {
+    e = ReadControlledActuator(src, item, path, e.name, e.from, e.to, e.model, driver->second);
+    return;
+  }
+  if (!item["activation"] && !item["excitation"]) {
+    // neither an input of its own nor a controller's: perhaps a misspelt `drives`
+    std::string drivers;
+    for (const auto& [name, unused] : driven) drivers += (drivers.empty() ? "" : ", ") + name;
+    throw InputError(Join(path, "activation") + " (" + yaml::Location(src, item) +
+                     "): missing required key: give activation (u(t) itself) or "
+                     "excitation (e(t), driving u through activation_dynamics), or name " +
+                     e.name + " in a controller's drives or co_contraction.actuators" +
+                     (drivers.empty() ? "" : " (the controllers drive: " + drivers + ")"));
+  }
+  ActuatorDrive drive = ReadActuatorDrive(src, item, path, item["initial_activation"],
+                                          Join(path, "initial_activation"), t_start, t_end);
+  e.activation = std::move(drive.activation);
+  e.excitation = std::move(drive.excitation);
+}
+
+// A tendon's slack length and its stiffness: linear or exponential, exactly one.
+void ReadTendon(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+                Element& e) {
+  e.slack_length = NumberIn(src, item, path, "slack_length", kPositionRange);
+  const YAML::Node exponential = item["exponential"];
+  if (static_cast<bool>(item["stiffness"]) == static_cast<bool>(exponential)) {
+    yaml::Fail(src, item, path, exponential ? "stiffness and exponential" : "neither",
+               "give exactly one of stiffness (a linear tendon [N/m]) or exponential "
+               "({k, alpha}: k (exp(alpha (l - slack_length)) - 1))");
+  }
+  if (exponential) {
+    const std::string at = Join(path, "exponential");
+    yaml::RequireMap(src, exponential, at, {"k", "alpha"});
+    e.k = yaml::ReadNumberIn(src, Required(src, exponential, at, "k"), Join(at, "k"),
+                             kPositiveForceRange);
+    e.alpha = yaml::ReadNumber(src, Required(src, exponential, at, "alpha"), Join(at, "alpha"));
+  } else {
+    e.stiffness = NumberIn(src, item, path, "stiffness", kStiffnessRange);
+  }
+}
+
+Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+                    const NamedModels& models, const DrivenActuators& driven, double t_start,
+                    double t_end) {
+  const std::string type = ReadType(src, item, path);
+  Element e;
+  ValidateAt(src, item, path, [&] { e.kind = ParseElementKind(type); });
+  RequireElementKeys(src, item, path, e.kind);
   e.name = ReadName(src, item, path);
   e.from = yaml::ReadString(src, Required(src, item, path, "from"), Join(path, "from"));
   e.to = yaml::ReadString(src, Required(src, item, path, "to"), Join(path, "to"));
-  const auto number_in = [&](const char* key, const InputRange& range) {
-    return yaml::ReadNumberIn(src, Required(src, item, path, key), Join(path, key), range);
-  };
   switch (e.kind) {
-    case ElementKind::kActuator: {
-      e.model = FindModel(src, item, path, models);
-      if (const auto driver = driven.find(e.name); driver != driven.end()) {
-        e = ReadControlledActuator(src, item, path, e.name, e.from, e.to, e.model,
-                                   driver->second);
-        break;
-      }
-      if (!item["activation"] && !item["excitation"]) {
-        // neither an input of its own nor a controller's: perhaps a misspelt `drives`
-        std::string drivers;
-        for (const auto& [name, unused] : driven) drivers += (drivers.empty() ? "" : ", ") + name;
-        throw InputError(Join(path, "activation") + " (" + yaml::Location(src, item) +
-                         "): missing required key: give activation (u(t) itself) or "
-                         "excitation (e(t), driving u through activation_dynamics), or name " +
-                         e.name + " in a controller's drives or co_contraction.actuators" +
-                         (drivers.empty() ? "" : " (the controllers drive: " + drivers + ")"));
-      }
-      ActuatorDrive drive = ReadActuatorDrive(src, item, path, item["initial_activation"],
-                                              Join(path, "initial_activation"), t_start, t_end);
-      e.activation = std::move(drive.activation);
-      e.excitation = std::move(drive.excitation);
+    case ElementKind::kActuator:
+      ReadActuator(src, item, path, models, driven, t_start, t_end, e);
       break;
-    }
     case ElementKind::kSpring:
-      e.stiffness = number_in("stiffness", kStiffnessRange);
-      e.rest_length = number_in("rest_length", kPositionRange);
+      e.stiffness = NumberIn(src, item, path, "stiffness", kStiffnessRange);
+      e.rest_length = NumberIn(src, item, path, "rest_length", kPositionRange);
       break;
-    case ElementKind::kTendon: {
-      e.slack_length = number_in("slack_length", kPositionRange);
-      const YAML::Node exponential = item["exponential"];
-      if (static_cast<bool>(item["stiffness"]) == static_cast<bool>(exponential)) {
-        yaml::Fail(src, item, path, exponential ? "stiffness and exponential" : "neither",
-                   "give exactly one of stiffness (a linear tendon [N/m]) or exponential "
-                   "({k, alpha}: k (exp(alpha (l - slack_length)) - 1))");
-      }
-      if (exponential) {
-        const std::string at = Join(path, "exponential");
-        yaml::RequireMap(src, exponential, at, {"k", "alpha"});
-        e.k = yaml::ReadNumberIn(src, Required(src, exponential, at, "k"), Join(at, "k"),
-                                 kPositiveForceRange);
-        e.alpha = yaml::ReadNumber(src, Required(src, exponential, at, "alpha"),
-                                   Join(at, "alpha"));
-      } else {
-        e.stiffness = number_in("stiffness", kStiffnessRange);
-      }
+    case ElementKind::kTendon:
+      ReadTendon(src, item, path, e);
       break;
-    }
     case ElementKind::kDamper:
-      e.damping = number_in("damping", kDampingRange);
+      e.damping = NumberIn(src, item, path, "damping", kDampingRange);
       break;
   }
   ValidateAt(src, item, path, [&] { Validate(e); });

@@ -12,6 +12,40 @@ using yaml::ReadOptionalNumber;
 using yaml::Required;
 using yaml::ValidateAt;
 
+namespace {
+
+// A table's `points`: [t, value] pairs, t in the time range and the values in `values`
+// (any number when null); at most kMaxBreakpoints of them.
+std::vector<TablePoint> ReadTablePoints(const yaml::Source& src, const YAML::Node& node,
+                                        const std::string& path, const InputRange* values) {
+  const YAML::Node points = Required(src, node, path, "points");
+  const std::string at = Join(path, "points");
+  if (!points.IsSequence()) {
+    yaml::Fail(src, points, at, yaml::Describe(points), "must be a list of [t, value] pairs");
+  }
+  if (static_cast<double>(points.size()) > kMaxBreakpoints) {
+    yaml::Fail(src, points, at, std::to_string(points.size()) + " points",
+               "at most 5 million: each point is a stop time where the integrator restarts");
+  }
+  std::vector<TablePoint> table;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::string item = at + "[" + std::to_string(i) + "]";
+    const std::vector<double> pair = yaml::ReadNumbers(src, points[i], item, 2);
+    if (!kTimeRange.Contains(pair[0])) {
+      yaml::Fail(src, points[i][0], item + "[0]", yaml::Describe(points[i][0]),
+                 kTimeRange.Rule());
+    }
+    if (values && !values->Contains(pair[1])) {
+      yaml::Fail(src, points[i][1], item + "[1]", yaml::Describe(points[i][1]),
+                 values->Rule());
+    }
+    table.push_back({pair[0], pair[1]});
+  }
+  return table;
+}
+
+}  // namespace
+
 Waveform ReadWaveform(const yaml::Source& src, const YAML::Node& node, const std::string& path,
                       WaveformKind kind, const InputRange* values, const char* extra) {
   Waveform w;
@@ -64,32 +98,10 @@ Waveform ReadWaveform(const yaml::Source& src, const YAML::Node& node, const std
       w.low = value("low");
       w.high = value("high");
       break;
-    case WaveformKind::kTable: {
+    case WaveformKind::kTable:
       yaml::RequireMap(src, node, path, {"type", "points"}, extra);
-      const YAML::Node points = Required(src, node, path, "points");
-      const std::string at = Join(path, "points");
-      if (!points.IsSequence()) {
-        yaml::Fail(src, points, at, yaml::Describe(points), "must be a list of [t, value] pairs");
-      }
-      if (static_cast<double>(points.size()) > kMaxBreakpoints) {
-        yaml::Fail(src, points, at, std::to_string(points.size()) + " points",
-                   "at most 5 million: each point is a stop time where the integrator restarts");
-      }
-      for (std::size_t i = 0; i < points.size(); ++i) {
-        const std::string item = at + "[" + std::to_string(i) + "]";
-        const std::vector<double> pair = yaml::ReadNumbers(src, points[i], item, 2);
-        if (!kTimeRange.Contains(pair[0])) {
-          yaml::Fail(src, points[i][0], item + "[0]", yaml::Describe(points[i][0]),
-                     kTimeRange.Rule());
-        }
-        if (values && !values->Contains(pair[1])) {
-          yaml::Fail(src, points[i][1], item + "[1]", yaml::Describe(points[i][1]),
-                     values->Rule());
-        }
-        w.points.push_back({pair[0], pair[1]});
-      }
+      w.points = ReadTablePoints(src, node, path, values);
       break;
-    }
   }
   return w;
 }

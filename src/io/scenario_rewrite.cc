@@ -20,18 +20,18 @@ std::string Emit(const YAML::Node& root, const std::vector<std::string>& header)
 
 }  // namespace
 
-std::string RewriteScenario(const std::string& path, const std::vector<std::string>& overrides,
+std::string RewriteScenario(const std::string& path, const Overrides& overrides,
                             const std::vector<std::string>& header) {
   YAML::Node root = yaml::Parse(path, yaml::ReadText(path));
-  for (const std::string& o : overrides) yaml::ApplyOverride(root, o, path);
+  yaml::ApplyOverrides(root, overrides, path);
   return Emit(root, header);
 }
 
 std::string RewriteScenario(const Document& document, const std::string& name,
-                            const std::vector<std::string>& overrides,
+                            const Overrides& overrides,
                             const std::vector<std::string>& header) {
   YAML::Node root = ToYaml(document);
-  for (const std::string& o : overrides) yaml::ApplyOverride(root, o, name);
+  yaml::ApplyOverrides(root, overrides, name);
   return Emit(root, header);
 }
 

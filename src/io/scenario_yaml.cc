@@ -1,5 +1,5 @@
 // LoadScenario and ScenarioTemplate: the file parsed once, its form told by its top-level
-// keys, the `--set` overrides applied to the document before it is read, so that an override
+// keys, the overrides (`--set`) applied to the document before it is read, so that an override
 // is validated exactly as the file's own value would be.
 #include "musclesim/io/scenario_yaml.h"
 
@@ -44,50 +44,50 @@ bool ScenarioTemplate::has_sensitivities() const {
   return parsed_->root.IsMap() && parsed_->root["sensitivities"].IsDefined();
 }
 
-Scenario ScenarioTemplate::Instantiate(const std::vector<std::string>& overrides) const {
-  const yaml::Source src{path_};
-  if (overrides.empty()) return Read(src, parsed_->root);
+Scenario ScenarioTemplate::Instantiate(const Overrides& overrides) const {
+  const yaml::Source src{path_, overrides.label};
+  if (overrides.texts.empty()) return Read(src, parsed_->root);
   // overrides must not touch the template, so they go into a copy. yaml-cpp's Clone is fast
   // but gives no node its file position; errors are rare, so a failing scenario is read
   // again from its text parsed afresh, whose nodes keep their file:line:column for the
-  // message (and the overridden nodes, which have none, say --set)
+  // message (and the overridden nodes, which have none, say the overrides' label)
   try {
     YAML::Node root = YAML::Clone(parsed_->root);
-    for (const std::string& text : overrides) yaml::ApplyOverride(root, text, path_);
+    yaml::ApplyOverrides(root, overrides, path_);
     return Read(src, root);
   } catch (const InputError&) {
     YAML::Node root = yaml::Parse(path_, text_);
-    for (const std::string& text : overrides) yaml::ApplyOverride(root, text, path_);
+    yaml::ApplyOverrides(root, overrides, path_);
     return Read(src, root);
   }
 }
 
 Scenario ReadScenario(const Document& document, const std::string& name,
-                      const std::vector<std::string>& overrides) {
+                      const Overrides& overrides) {
   YAML::Node root = ToYaml(document);
   if (document.kind() == Document::Kind::kNull) throw InputError(name + ": the document is empty");
-  for (const std::string& text : overrides) yaml::ApplyOverride(root, text, name);
+  yaml::ApplyOverrides(root, overrides, name);
   return Read(yaml::Source{name, name}, root);
 }
 
 ActuatorScenarioSpec LoadActuatorScenarioSpec(const std::string& path,
-                                              const std::vector<std::string>& overrides) {
+                                              const Overrides& overrides) {
   YAML::Node root = yaml::LoadFile(path);
-  for (const std::string& text : overrides) yaml::ApplyOverride(root, text, path);
+  yaml::ApplyOverrides(root, overrides, path);
   if (FormOf(root) == ScenarioForm::kNetwork) {
     throw InputError(path + ": a network (it has nodes:), not the single-actuator form");
   }
-  const yaml::Source src{path};
+  const yaml::Source src{path, overrides.label};
   ActuatorScenarioSpec spec = ReadActuatorScenarioSpec(src, root);
   yaml::ValidateAt(src, root, "", [&] { MakeActuatorScenario(spec); });
   return spec;
 }
 
-Scenario LoadScenario(const std::string& path, const std::vector<std::string>& overrides) {
+Scenario LoadScenario(const std::string& path, const Overrides& overrides) {
   // read once, so no clone is needed: the nodes not overridden keep their file positions
   YAML::Node root = yaml::LoadFile(path);
-  for (const std::string& text : overrides) yaml::ApplyOverride(root, text, path);
-  return Read(yaml::Source{path}, root);
+  yaml::ApplyOverrides(root, overrides, path);
+  return Read(yaml::Source{path, overrides.label}, root);
 }
 
 }  // namespace musclesim

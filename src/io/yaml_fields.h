@@ -19,7 +19,7 @@ namespace musclesim::yaml {
 // a node has no file position (one given by an override, or a document built in code).
 struct Source {
   std::string file;
-  std::string unplaced = "--set";
+  std::string unplaced = "override";
 };
 
 // Throws InputError for `path` at `node`'s position.

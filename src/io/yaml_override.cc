@@ -8,23 +8,31 @@ namespace musclesim::yaml {
 namespace {
 
 // Blocks whose keys are all optional, so that a file may leave the block out entirely:
-// `--set` of one of their keys creates the block. Any other missing map is a misspelt path.
+// an override of one of their keys creates the block. Any other missing map is a misspelt path.
 bool IsOptionalBlock(const std::string& key) {
   return key == "eccentric";  // model.velocity.eccentric (docs/model.md section 9)
 }
 
 }  // namespace
 
-void ApplyOverride(YAML::Node root, const std::string& text, const std::string& file) {
+void ApplyOverrides(YAML::Node root, const Overrides& overrides, const std::string& file) {
+  for (const std::string& text : overrides.texts) {
+    ApplyOverride(root, text, file, overrides.label);
+  }
+}
+
+void ApplyOverride(YAML::Node root, const std::string& text, const std::string& file,
+                   const std::string& label) {
+  const std::string head = label + " " + text + ": ";
   const std::size_t eq = text.find('=');
   if (eq == std::string::npos) {
-    throw InputError("--set " + text + ": expected KEY=VALUE, e.g. model.velocity.n=4");
+    throw InputError(head + "expected KEY=VALUE, e.g. model.velocity.n=4");
   }
   const std::string path = text.substr(0, eq);
   const std::string value = text.substr(eq + 1);
   const auto split = SplitKeyPath(path);
   if (!split || split->empty()) {
-    throw InputError("--set " + text + ": '" + path +
+    throw InputError(head + "'" + path +
                      "' is not a dotted key path such as model.velocity.n or load[0].value (names "
                      "joined by dots, list indices in brackets from 0 to 999999999)");
   }
@@ -43,28 +51,28 @@ void ApplyOverride(YAML::Node root, const std::string& text, const std::string& 
         next.reset(node);  // a single load written as a map is load[0]
       } else if (node.IsMap()) {
         const std::string map = walked.empty() ? "the file's top level" : walked;
-        throw InputError("--set " + text + ": " + map + " is a map, not a list, in " + file +
+        throw InputError(head + map + " is a map, not a list, in " + file +
                          ": an index on it has no meaning (name a key instead)");
       } else if (!node.IsSequence() || step.index >= node.size()) {
-        throw InputError("--set " + text + ": " + here + " does not exist in " + file);
+        throw InputError(head + here + " does not exist in " + file);
       } else {
         next.reset(node[step.index]);
       }
     } else {
       if (!node.IsMap()) {
-        throw InputError("--set " + text + ": " + (walked.empty() ? "the file" : walked) +
+        throw InputError(head + (walked.empty() ? "the file" : walked) +
                          " is not a map in " + file);
       }
       if (!node[step.key] && !last) {
         if (!IsOptionalBlock(step.key)) {
-          throw InputError("--set " + text + ": " + here + " does not exist in " + file);
+          throw InputError(head + here + " does not exist in " + file);
         }
         node[step.key] = YAML::Node(YAML::NodeType::Map);  // filled by the steps below
       }
       if (last) {
         if (node[step.key] && !node[step.key].IsScalar() && !node[step.key].IsNull()) {
-          throw InputError("--set " + text + ": " + here +
-                           " is a map or list; --set replaces single values only");
+          throw InputError(head + here +
+                           " is a map or list; an override replaces single values only");
         }
         node[step.key] = YAML::Node(value);
         return;
@@ -73,8 +81,8 @@ void ApplyOverride(YAML::Node root, const std::string& text, const std::string& 
     }
     if (last) {
       if (!next.IsScalar()) {
-        throw InputError("--set " + text + ": " + here +
-                         " is a map or list; --set replaces single values only");
+        throw InputError(head + here +
+                         " is a map or list; an override replaces single values only");
       }
       next = YAML::Node(value);
       return;

@@ -25,59 +25,61 @@ std::string PresetNamesRule() {
   return rule;
 }
 
-}  // namespace
+std::string PointName(std::size_t i) { return "points[" + std::to_string(i) + "]"; }
 
-void Validate(const FitSpec& spec) {
-  Require(spec.count >= 1 && spec.count <= 12, "count", spec.count,
-          "must be an integer from 1 to 12");
-  const auto point_name = [](std::size_t i) { return "points[" + std::to_string(i) + "]"; };
-  for (std::size_t i = 0; i < spec.points.size(); ++i) {
-    Require(std::isfinite(spec.points[i].x), point_name(i) + "[0]", spec.points[i].x,
-            "must be finite");
-    Require(std::isfinite(spec.points[i].y), point_name(i) + "[1]", spec.points[i].y,
-            "must be finite");
+std::string PointCount(const FitSpec& spec) {
+  return std::to_string(spec.points.size()) + " points";
+}
+
+void ValidatePolygon(const FitSpec& spec) {
+  if (spec.points.size() < 2) {
+    throw ParameterError("points", PointCount(spec), "a polygon needs at least 2 points");
   }
+  for (std::size_t i = 1; i < spec.points.size(); ++i) {
+    Require(spec.points[i].x > spec.points[i - 1].x, PointName(i) + "[0]", spec.points[i].x,
+            "polygon x must be strictly increasing (previous x = " +
+                FormatNumber(spec.points[i - 1].x) + ")");
+  }
+}
+
+void ValidatePreset(const FitSpec& spec) {
+  if (!spec.points.empty()) {
+    throw ParameterError("points", PointCount(spec),
+                         "must be absent for target preset (it uses name and optimal_length)");
+  }
+  if (!spec.preset) {
+    throw ParameterError("name", "~", "target preset needs the name of a curve: " +
+                                          PresetNamesRule());
+  }
+  if (!spec.optimal_length) {
+    throw ParameterError("optimal_length", "~",
+                         "target preset needs optimal_length, the length [m] where the "
+                         "curve peaks");
+  }
+  Require(std::isfinite(*spec.optimal_length) && *spec.optimal_length > 0.0, "optimal_length",
+          *spec.optimal_length, "must be finite and > 0 [m]");
+}
+
+// What the target asks of the points (and a preset of its name and length).
+void ValidateTarget(const FitSpec& spec) {
   switch (spec.target) {
     case FitTargetKind::kIndicator:
       if (!spec.points.empty()) {
-        throw ParameterError("points", std::to_string(spec.points.size()) + " points",
+        throw ParameterError("points", PointCount(spec),
                              "must be absent for target indicator (it uses optimal_range)");
       }
       break;
     case FitTargetKind::kPolygon:
-      if (spec.points.size() < 2) {
-        throw ParameterError("points", std::to_string(spec.points.size()) + " points",
-                             "a polygon needs at least 2 points");
-      }
-      for (std::size_t i = 1; i < spec.points.size(); ++i) {
-        Require(spec.points[i].x > spec.points[i - 1].x, point_name(i) + "[0]",
-                spec.points[i].x,
-                "polygon x must be strictly increasing (previous x = " +
-                    FormatNumber(spec.points[i - 1].x) + ")");
-      }
+      ValidatePolygon(spec);
       break;
     case FitTargetKind::kPreset:
-      if (!spec.points.empty()) {
-        throw ParameterError("points", std::to_string(spec.points.size()) + " points",
-                             "must be absent for target preset (it uses name and optimal_length)");
-      }
-      if (!spec.preset) {
-        throw ParameterError("name", "~", "target preset needs the name of a curve: " +
-                                              PresetNamesRule());
-      }
-      if (!spec.optimal_length) {
-        throw ParameterError("optimal_length", "~",
-                             "target preset needs optimal_length, the length [m] where the "
-                             "curve peaks");
-      }
-      Require(std::isfinite(*spec.optimal_length) && *spec.optimal_length > 0.0,
-              "optimal_length", *spec.optimal_length, "must be finite and > 0 [m]");
+      ValidatePreset(spec);
       break;
     case FitTargetKind::kSamples: {
       const bool shapes_fixed = !spec.precisions.empty();
       const std::size_t needed = static_cast<std::size_t>(spec.count) * (shapes_fixed ? 1 : 3);
       if (spec.points.size() < needed) {
-        throw ParameterError("points", std::to_string(spec.points.size()) + " points",
+        throw ParameterError("points", PointCount(spec),
                              "samples need at least " + std::to_string(needed) +
                                  " points for " + std::to_string(spec.count) +
                                  " Gaussians (3 parameters each, 1 with shapes fixed)");
@@ -85,6 +87,42 @@ void Validate(const FitSpec& spec) {
       break;
     }
   }
+}
+
+// Fixed shapes: widths and centers together, count of each, widths > 0, all finite.
+void ValidateShapes(const FitSpec& spec) {
+  if (spec.precisions.empty() != spec.centers.empty()) {
+    throw ParameterError(spec.precisions.empty() ? "centers" : "widths", "given alone",
+                         "widths and centers fix the shapes together: give both or neither");
+  }
+  if (spec.precisions.empty()) return;
+  for (const char* key : {"widths", "centers"}) {
+    const auto& list = std::string(key) == "widths" ? spec.precisions : spec.centers;
+    if (list.size() != static_cast<std::size_t>(spec.count)) {
+      throw ParameterError(key, std::to_string(list.size()) + " values",
+                           "must have count = " + std::to_string(spec.count) + " values");
+    }
+  }
+  for (std::size_t k = 0; k < spec.precisions.size(); ++k) {
+    Require(std::isfinite(spec.precisions[k]) && spec.precisions[k] > 0.0,
+            "widths[" + std::to_string(k) + "]", spec.precisions[k], "must be finite and > 0");
+    Require(std::isfinite(spec.centers[k]), "centers[" + std::to_string(k) + "]",
+            spec.centers[k], "must be finite");
+  }
+}
+
+}  // namespace
+
+void Validate(const FitSpec& spec) {
+  Require(spec.count >= 1 && spec.count <= 12, "count", spec.count,
+          "must be an integer from 1 to 12");
+  for (std::size_t i = 0; i < spec.points.size(); ++i) {
+    Require(std::isfinite(spec.points[i].x), PointName(i) + "[0]", spec.points[i].x,
+            "must be finite");
+    Require(std::isfinite(spec.points[i].y), PointName(i) + "[1]", spec.points[i].y,
+            "must be finite");
+  }
+  ValidateTarget(spec);
   if (spec.target != FitTargetKind::kPreset && (spec.preset || spec.optimal_length)) {
     throw ParameterError(spec.preset ? "name" : "optimal_length",
                          spec.preset ? std::string(ToString(*spec.preset))
@@ -92,25 +130,7 @@ void Validate(const FitSpec& spec) {
                          "only for target preset (this target is " +
                              std::string(ToString(spec.target)) + ")");
   }
-  if (spec.precisions.empty() != spec.centers.empty()) {
-    throw ParameterError(spec.precisions.empty() ? "centers" : "widths", "given alone",
-                         "widths and centers fix the shapes together: give both or neither");
-  }
-  if (!spec.precisions.empty()) {
-    for (const char* key : {"widths", "centers"}) {
-      const auto& list = std::string(key) == "widths" ? spec.precisions : spec.centers;
-      if (list.size() != static_cast<std::size_t>(spec.count)) {
-        throw ParameterError(key, std::to_string(list.size()) + " values",
-                             "must have count = " + std::to_string(spec.count) + " values");
-      }
-    }
-    for (std::size_t k = 0; k < spec.precisions.size(); ++k) {
-      Require(std::isfinite(spec.precisions[k]) && spec.precisions[k] > 0.0,
-              "widths[" + std::to_string(k) + "]", spec.precisions[k], "must be finite and > 0");
-      Require(std::isfinite(spec.centers[k]), "centers[" + std::to_string(k) + "]",
-              spec.centers[k], "must be finite");
-    }
-  }
+  ValidateShapes(spec);
 }
 
 std::unique_ptr<FitTarget> MakeFitTarget(const FitSpec& spec, double l1, double l2,

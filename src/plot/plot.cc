@@ -25,21 +25,27 @@ namespace musclesim {
 
 using namespace plot_text;  // the script pieces every figure shares
 
-std::string GnuplotString(const std::string& text, const std::string& what) {
+namespace {
+
+// Why `text` cannot be a gnuplot string ("" when it can): a control character (a newline
+// would end the command, and no quoting carries it) or a byte that is not UTF-8.
+std::string TextProblem(const std::string& text) {
   const auto control = std::find_if(text.begin(), text.end(), [](char c) {
     return IsControl(static_cast<unsigned char>(c));
   });
   if (control != text.end()) {
-    throw InputError(what + " '" + Printable(text) +
-                     "': must not contain control characters (bytes below 0x20, and 0x7f); byte " +
-                     Hex(static_cast<unsigned char>(*control)) + " at offset " +
-                     std::to_string(control - text.begin()));
+    return "must not contain control characters (bytes below 0x20, and 0x7f); byte " +
+           Hex(static_cast<unsigned char>(*control)) + " at offset " +
+           std::to_string(control - text.begin());
   }
   if (const std::size_t bad = FirstInvalidUtf8(text); bad != std::string::npos) {
-    throw InputError(what + " '" + Printable(text) + "': must be valid UTF-8; byte " +
-                     Hex(static_cast<unsigned char>(text[bad])) + " at offset " +
-                     std::to_string(bad) + " starts no UTF-8 character");
+    return "must be valid UTF-8; byte " + Hex(static_cast<unsigned char>(text[bad])) +
+           " at offset " + std::to_string(bad) + " starts no UTF-8 character";
   }
+  return "";
+}
+
+std::string Quoted(const std::string& text) {
   // gnuplot 5.4's own '' escape fails at the start of a string and for two quotes in a row
   // (its scanner ends the string there), so each quote is sprintf's %c of 39 between quoted
   // pieces; a quote inside double quotes would mislead its macro expander about where the
@@ -49,16 +55,32 @@ std::string GnuplotString(const std::string& text, const std::string& what) {
   return out + "'";
 }
 
+}  // namespace
+
+std::string GnuplotString(const std::string& text, const std::string& what) {
+  if (const std::string problem = TextProblem(text); !problem.empty()) {
+    throw InputError(what + " '" + Printable(text) + "': " + problem);
+  }
+  return Quoted(text);
+}
+
+std::string plot_text::OptionString(const std::string& text, const std::string& option) {
+  if (const std::string problem = TextProblem(text); !problem.empty()) {
+    throw ParameterError(option, "'" + Printable(text) + "'", problem);
+  }
+  return Quoted(text);
+}
+
 void Validate(const PlotOptions& options) {
-  GnuplotString(options.output, "-o");
-  if (!options.title.empty()) GnuplotString(options.title, "--title");
+  OptionString(options.output, "output");
+  if (!options.title.empty()) OptionString(options.title, "title");
   if (!EndsWith(options.output, ".png") && !EndsWith(options.output, ".svg")) {
-    throw InputError("-o " + options.output + ": the figure's file must end in .png or .svg");
+    throw ParameterError("output", options.output, "the figure's file must end in .png or .svg");
   }
   if (options.width < 100 || options.width > 10000 || options.height < 100 ||
       options.height > 10000) {
-    throw InputError("--size " + std::to_string(options.width) + "x" +
-                     std::to_string(options.height) + ": width and height must be 100 to 10000 px");
+    throw ParameterError("size", std::to_string(options.width) + "x" + std::to_string(options.height),
+                         "width and height must be 100 to 10000 px");
   }
 }
 
@@ -249,20 +271,21 @@ std::string SweepPlotScript(const CsvTable& table, const std::string& x,
     return std::find(swept.begin(), swept.end(), path) != swept.end();
   };
   if (!is_swept(x)) {
-    throw InputError("--x " + Printable(x) + ": not a swept path of " + table.source +
-                     " (it sweeps " + List(swept) + ")");
+    throw ParameterError("x", Printable(x),
+                         "not a swept path of " + table.source + " (it sweeps " + List(swept) + ")");
   }
   if (color && (!is_swept(*color) || *color == x)) {
-    throw InputError("--color " + Printable(*color) + ": must be a swept path other than --x (" +
-                     table.source + " sweeps " + List(swept) + ")");
+    throw ParameterError("color", Printable(*color),
+                         "must be a swept path other than the x axis's (" + table.source +
+                             " sweeps " + List(swept) + ")");
   }
   const std::string y_name = y ? *y : (summary.metrics.empty() ? "steps" : summary.metrics.front());
   const int y_column = table.Find(y_name);
   // a metric, or one of the run's counts (steps, rhs_evals, wall_seconds)
   if (y_column <= status || y_column >= summary.message) {
-    throw InputError("--y " + Printable(y_name) + ": not a metric of " + table.source +
-                     " (its metrics: " + List(summary.metrics) +
-                     "; also steps, rhs_evals, wall_seconds)");
+    throw ParameterError("y", Printable(y_name),
+                         "not a metric of " + table.source + " (its metrics: " +
+                             List(summary.metrics) + "; also steps, rhs_evals, wall_seconds)");
   }
   const int x_column = table.Find(x);
   std::optional<std::string> other = color;
@@ -270,12 +293,13 @@ std::string SweepPlotScript(const CsvTable& table, const std::string& x,
   if (heat_map) other = swept[0] == x ? swept[1] : swept[0];
   const int other_column = other ? table.Find(*other) : -1;
   // every column name that reaches the script, checked before any row
-  const std::string x_text = GnuplotString(x, "--x");
-  const std::string y_text =
-      GnuplotString(y_name, y ? "--y" : table.source + ": the first metric's name");
+  const std::string x_text = OptionString(x, "x");
+  const std::string y_text = y ? OptionString(y_name, "y")
+                               : GnuplotString(y_name, table.source + ": the first metric's name");
   const std::string other_text =
-      other ? GnuplotString(*other, color ? "--color" : table.source + ": the other swept path")
-            : "";
+      !other  ? ""
+      : color ? OptionString(*other, "color")
+              : GnuplotString(*other, table.source + ": the other swept path");
 
   // the usable rows: status ok and a value for y
   struct Group {
@@ -485,7 +509,7 @@ void Render(const std::string& script, const PlotOptions& options) {
           : "set terminal pngcairo size " + std::to_string(options.width) + "," +
                 std::to_string(options.height) + " noenhanced font 'sans,10'\n";
   const auto script_file = WriteScript(terminal + "set output " +
-                                       GnuplotString(figure.path(), "-o") + "\n" + script +
+                                       OptionString(figure.path(), "output") + "\n" + script +
                                        "unset output\n");
 
   std::string messages;

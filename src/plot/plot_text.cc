@@ -111,7 +111,7 @@ bool WantsLogScale(const std::vector<double>& values) {
 std::string TitleOf(const PlotOptions& options, const std::string& fallback,
                     const std::string& fallback_source) {
   return options.title.empty() ? GnuplotString(fallback, fallback_source)
-                               : GnuplotString(options.title, "--title");
+                               : OptionString(options.title, "title");
 }
 
 }  // namespace musclesim::plot_text

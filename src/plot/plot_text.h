@@ -27,6 +27,9 @@ double FiniteValue(const CsvTable& table, std::size_t row, int column);
 extern const char* const kFrame;
 // Whether positive values spanning two decades or more read better on a log scale.
 bool WantsLogScale(const std::vector<double>& values);
+// GnuplotString of the text given as option `option` (PlotOptions' or SweepPlotScript's
+// name: "title", "x"), refused with ParameterError(option, quoted text, rule).
+std::string OptionString(const std::string& text, const std::string& option);
 // The title as a gnuplot string: the user's, or `fallback` (named `fallback_source`).
 std::string TitleOf(const PlotOptions& options, const std::string& fallback,
                     const std::string& fallback_source);

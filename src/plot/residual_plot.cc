@@ -17,7 +17,7 @@ using namespace plot_text;  // the script pieces every figure shares
 namespace {
 
 constexpr const char* kResidualLayout =
-    "a residual CSV of musclesim identify --residuals: series, output, t, measured, model, "
+    "a residual CSV of a time-series identification: series, output, t, measured, model, "
     "residual, standardised";
 
 }  // namespace

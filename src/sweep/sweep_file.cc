@@ -87,45 +87,18 @@ void CheckGridSize(const yaml::Source& src, const YAML::Node& parameters, const 
   }
 }
 
-// Everything a sweep file says but its base: the axes, the mode, the metrics and where the
-// summary goes. `base_dir` is where a base path is relative to.
-SweepSpec ReadSweepSpec(const yaml::Source& src, const YAML::Node& root,
-                        const std::string& base_dir) {
-  yaml::RequireMap(src, root, "",
-                   {"base", "mode", "samples", "seed", "parameters", "metrics", "metric_options",
-                    "trajectories", "output"});
-  SweepSpec spec;
-  spec.source = src.file;
-  const std::string base = yaml::ReadString(src, yaml::Required(src, root, "", "base"), "base");
-  spec.base = (std::filesystem::path(base_dir) / base).lexically_normal().string();
+void ReadMode(const yaml::Source& src, const YAML::Node& root, SweepSpec& spec) {
+  if (!root["mode"]) return;  // the default
+  const std::string mode = yaml::ReadString(src, root["mode"], "mode");
+  if (mode == "grid") spec.mode = SweepMode::kGrid;
+  else if (mode == "zip") spec.mode = SweepMode::kZip;
+  else if (mode == "random") spec.mode = SweepMode::kRandom;
+  else yaml::Fail(src, root["mode"], "mode", mode, "must be grid, zip or random");
+}
 
-  if (root["mode"]) {
-    const std::string mode = yaml::ReadString(src, root["mode"], "mode");
-    if (mode == "grid") spec.mode = SweepMode::kGrid;
-    else if (mode == "zip") spec.mode = SweepMode::kZip;
-    else if (mode == "random") spec.mode = SweepMode::kRandom;
-    else yaml::Fail(src, root["mode"], "mode", mode, "must be grid, zip or random");
-  }
-  if (spec.mode == SweepMode::kRandom) {
-    const YAML::Node samples = yaml::Required(src, root, "", "samples");
-    const double n = yaml::ReadNumber(src, samples, "samples");
-    if (!(n >= 1 && n <= 1e9) || n != std::floor(n)) {
-      yaml::Fail(src, samples, "samples", yaml::Describe(samples), "must be an integer from 1 to 1e9");
-    }
-    spec.samples = static_cast<long>(n);
-    // no default seed: a documented, reproducible sweep names the seed it draws from
-    const YAML::Node seed = root["seed"];
-    if (!seed) {
-      throw InputError("seed (" + yaml::Location(src, root) +
-                       "): missing required key: mode random draws every value from a hash "
-                       "of (seed, index, axis); give an integer >= 0");
-    }
-    const double value = yaml::ReadNumber(src, seed, "seed");
-    if (!(value >= 0 && value <= 9.007199254740992e15) || value != std::floor(value)) {
-      yaml::Fail(src, seed, "seed", yaml::Describe(seed), "must be an integer from 0 to 2^53");
-    }
-    spec.seed = static_cast<std::uint64_t>(value);
-  } else {
+// Mode random's `samples` and `seed`; other modes refuse them.
+void ReadSampling(const yaml::Source& src, const YAML::Node& root, SweepSpec& spec) {
+  if (spec.mode != SweepMode::kRandom) {
     for (const char* key : {"samples", "seed"}) {
       if (root[key]) {
         yaml::Fail(src, root[key], key, yaml::Describe(root[key]),
@@ -133,8 +106,31 @@ SweepSpec ReadSweepSpec(const yaml::Source& src, const YAML::Node& root,
                        ")");
       }
     }
+    return;
   }
+  const YAML::Node samples = yaml::Required(src, root, "", "samples");
+  const double n = yaml::ReadNumber(src, samples, "samples");
+  if (!(n >= 1 && n <= 1e9) || n != std::floor(n)) {
+    yaml::Fail(src, samples, "samples", yaml::Describe(samples),
+               "must be an integer from 1 to 1e9");
+  }
+  spec.samples = static_cast<long>(n);
+  // no default seed: a documented, reproducible sweep names the seed it draws from
+  const YAML::Node seed = root["seed"];
+  if (!seed) {
+    throw InputError("seed (" + yaml::Location(src, root) +
+                     "): missing required key: mode random draws every value from a hash "
+                     "of (seed, index, axis); give an integer >= 0");
+  }
+  const double value = yaml::ReadNumber(src, seed, "seed");
+  if (!(value >= 0 && value <= 9.007199254740992e15) || value != std::floor(value)) {
+    yaml::Fail(src, seed, "seed", yaml::Describe(seed), "must be an integer from 0 to 2^53");
+  }
+  spec.seed = static_cast<std::uint64_t>(value);
+}
 
+// The axes of `parameters`: zip's all of one length, a grid's product within the limit.
+void ReadAxes(const yaml::Source& src, const YAML::Node& root, SweepSpec& spec) {
   const YAML::Node parameters = yaml::Required(src, root, "", "parameters");
   if (!parameters.IsMap() || parameters.size() == 0) {
     yaml::Fail(src, parameters, "parameters", yaml::Describe(parameters),
@@ -151,57 +147,92 @@ SweepSpec ReadSweepSpec(const yaml::Source& src, const YAML::Node& root,
     }
   }
   if (spec.mode == SweepMode::kGrid) CheckGridSize(src, parameters, spec);
+}
 
+// The `metrics` list, parsed; the node, for messages about its entries.
+YAML::Node ReadMetrics(const yaml::Source& src, const YAML::Node& root, SweepSpec& spec) {
   const YAML::Node metrics = yaml::Required(src, root, "", "metrics");
   if (!metrics.IsSequence() || metrics.size() == 0) {
-    yaml::Fail(src, metrics, "metrics", yaml::Describe(metrics), "must be a non-empty list of metric names");
+    yaml::Fail(src, metrics, "metrics", yaml::Describe(metrics),
+               "must be a non-empty list of metric names");
   }
   for (std::size_t i = 0; i < metrics.size(); ++i) {
-    const std::string name = yaml::ReadString(src, metrics[i], "metrics[" + std::to_string(i) + "]");
+    const std::string name =
+        yaml::ReadString(src, metrics[i], "metrics[" + std::to_string(i) + "]");
     try {
       spec.metrics.push_back(ParseMetric(name));
     } catch (const ParameterError& e) {
       yaml::Fail(src, metrics[i], "metrics[" + std::to_string(i) + "]", name, e.rule());
     }
   }
-  if (const YAML::Node options = root["metric_options"]) {
-    // `element` is read once the base's elements are known, below
-    yaml::RequireMap(src, options, "metric_options", {"window", "target_length", "element"});
-    if (options["window"]) {
-      const std::vector<double> w = yaml::ReadNumbers(src, options["window"], "metric_options.window", 2);
-      if (!(std::isfinite(w[0]) && std::isfinite(w[1]) && w[1] > w[0])) {
-        yaml::Fail(src, options["window"], "metric_options.window", yaml::Describe(options["window"]),
-                   "must be [start, end] with end > start [s]");
-      }
-      spec.metric_options.window_start = w[0];
-      spec.metric_options.window_end = w[1];
+  return metrics;
+}
+
+// `metric_options`' window and target_length (its element is read once the base's elements
+// are known).
+void ReadMetricOptions(const yaml::Source& src, const YAML::Node& root, SweepSpec& spec) {
+  const YAML::Node options = root["metric_options"];
+  if (!options) return;
+  yaml::RequireMap(src, options, "metric_options", {"window", "target_length", "element"});
+  if (options["window"]) {
+    const std::vector<double> w =
+        yaml::ReadNumbers(src, options["window"], "metric_options.window", 2);
+    if (!(std::isfinite(w[0]) && std::isfinite(w[1]) && w[1] > w[0])) {
+      yaml::Fail(src, options["window"], "metric_options.window",
+                 yaml::Describe(options["window"]), "must be [start, end] with end > start [s]");
     }
-    if (options["target_length"]) {
-      const double target = yaml::ReadNumber(src, options["target_length"], "metric_options.target_length");
-      if (!(std::isfinite(target) && target > 0.0)) {
-        yaml::Fail(src, options["target_length"], "metric_options.target_length",
-                   yaml::Describe(options["target_length"]), "must be finite and > 0 [m]");
-      }
-      spec.metric_options.target_length = target;
-    }
+    spec.metric_options.window_start = w[0];
+    spec.metric_options.window_end = w[1];
   }
+  if (options["target_length"]) {
+    const double target =
+        yaml::ReadNumber(src, options["target_length"], "metric_options.target_length");
+    if (!(std::isfinite(target) && target > 0.0)) {
+      yaml::Fail(src, options["target_length"], "metric_options.target_length",
+                 yaml::Describe(options["target_length"]), "must be finite and > 0 [m]");
+    }
+    spec.metric_options.target_length = target;
+  }
+}
+
+// `trajectories` (which points' trajectories are kept) and `output` (where the summary goes).
+void ReadOutputs(const yaml::Source& src, const YAML::Node& root, SweepSpec& spec) {
+  if (root["trajectories"]) {
+    const std::string policy = yaml::ReadString(src, root["trajectories"], "trajectories");
+    if (policy == "none") spec.trajectories = TrajectoryPolicy::kNone;
+    else if (policy == "all") spec.trajectories = TrajectoryPolicy::kAll;
+    else if (policy == "failed") spec.trajectories = TrajectoryPolicy::kFailed;
+    else yaml::Fail(src, root["trajectories"], "trajectories", policy,
+                    "must be none, all or failed");
+  }
+  if (root["output"]) {
+    spec.output = yaml::ReadString(src, root["output"], "output");
+  }
+}
+
+// Everything a sweep file says but its base: the axes, the mode, the metrics and where the
+// summary goes. `base_dir` is where a base path is relative to.
+SweepSpec ReadSweepSpec(const yaml::Source& src, const YAML::Node& root,
+                        const std::string& base_dir) {
+  yaml::RequireMap(src, root, "",
+                   {"base", "mode", "samples", "seed", "parameters", "metrics", "metric_options",
+                    "trajectories", "output"});
+  SweepSpec spec;
+  spec.source = src.file;
+  const std::string base = yaml::ReadString(src, yaml::Required(src, root, "", "base"), "base");
+  spec.base = (std::filesystem::path(base_dir) / base).lexically_normal().string();
+  ReadMode(src, root, spec);
+  ReadSampling(src, root, spec);
+  ReadAxes(src, root, spec);
+  const YAML::Node metrics = ReadMetrics(src, root, spec);
+  ReadMetricOptions(src, root, spec);
   for (std::size_t i = 0; i < spec.metrics.size(); ++i) {
     if (spec.metrics[i] == Metric::kTimeToLength && !spec.metric_options.target_length) {
       yaml::Fail(src, metrics[i], "metrics[" + std::to_string(i) + "]", "time_to_length",
                  "needs metric_options.target_length");
     }
   }
-  if (root["trajectories"]) {
-    const std::string policy = yaml::ReadString(src, root["trajectories"], "trajectories");
-    if (policy == "none") spec.trajectories = TrajectoryPolicy::kNone;
-    else if (policy == "all") spec.trajectories = TrajectoryPolicy::kAll;
-    else if (policy == "failed") spec.trajectories = TrajectoryPolicy::kFailed;
-    else yaml::Fail(src, root["trajectories"], "trajectories", policy, "must be none, all or failed");
-  }
-  if (root["output"]) {
-    spec.output = yaml::ReadString(src, root["output"], "output");
-  }
-
+  ReadOutputs(src, root, spec);
   return spec;
 }
 

@@ -47,7 +47,7 @@ class FilePointFactory final : public PointFactory {
       point = *base_;
     } else {
       try {
-        point = template_->Instantiate(overrides);
+        point = template_->Instantiate(Overrides(overrides, kAxisLabel));
         // a text axis may rename the element the metrics read: told as that axis's doing
         if (point.form == ScenarioForm::kNetwork && !spec.metric_options.element.empty()) {
           MetricElementIndex(point, spec.metric_options.element);

@@ -21,7 +21,7 @@ void CheckSummaryPath(const SweepSpec& spec, const std::string& path) {
   }
   std::error_code error;
   if (fs::is_directory(path, error)) {
-    throw InputError(path + ": is a directory: name the summary's CSV file (-o PATH)");
+    throw InputError(path + ": is a directory: name the summary's CSV file");
   }
   const fs::path directory = fs::path(path).parent_path();
   if (!directory.empty() && !fs::is_directory(directory, error)) {

@@ -15,6 +15,9 @@
 
 namespace musclesim {
 
+// What messages call a value a sweep's axis gives a point: "KEY = VALUE (axis): rule".
+inline const char* const kAxisLabel = "axis";
+
 class PointErrorExplainer {
  public:
   // `base` must be the spec's base scenario file, read; both must outlive the explainer,

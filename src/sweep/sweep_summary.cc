@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/sweep/sweep_runner.h"
 #include "sweep/sweep_share.h"
 #include "sweep/sweep_signature.h"
 #include "sweep/sweep_sorted_summary.h"
@@ -42,8 +43,8 @@ int OpenLocked(const std::string& path) {
       ::close(fd);
       if (error == EWOULDBLOCK) {
         throw InputError(path + " is in use by a running sweep writing the same output (it "
-                         "holds the file's lock); wait for it to end, stop it, or pass another "
-                         "-o PATH");
+                         "holds the file's lock); wait for it to end, stop it, or write this "
+                         "sweep's summary to another file");
       }
       errno = error;
       throw IoError(path, "cannot lock");
@@ -76,8 +77,7 @@ SummaryFile::SummaryFile(const SweepSpec& spec, std::string path, bool resume)
       // new, or left empty by a sweep killed as it started
       Append(signature + "\n" + header_ + "\n");
     } else if (!resume) {
-      throw InputError(partial_path_ + " exists: an earlier sweep was interrupted. Pass --resume "
-                       "to continue it, or delete the file to start again");
+      throw InterruptedSweepError(partial_path_);
     } else {
       Resume(spec, signature);
     }
@@ -123,7 +123,7 @@ void SummaryFile::Resume(const SweepSpec& spec, const std::string& signature) {
   if (!changed.empty()) {
     throw InputError(partial_path_ + kDifferentSweep + changed +
                      " changed since it was written. Delete it to start again, or write this "
-                     "sweep to another -o PATH");
+                     "sweep's summary to another file");
   }
   const off_t rows_start = static_cast<off_t>(signature.size() + 1 + header_.size() + 1);
   if (!std::getline(in, line) || line != header_) {

@@ -464,7 +464,7 @@ const std::vector<Case> kCases = {
     {"SetMissingPath", "run {file} -o - --set model.speed.n=3", Scenario(), 2,
      {"--set model.speed.n=3: model.speed does not exist in {file}"}},
     {"SetOnAMap", "run {file} -o - --set model.velocity=3", Scenario(), 2,
-     {"--set model.velocity=3: model.velocity is a map or list; --set replaces single values only"}},
+     {"--set model.velocity=3: model.velocity is a map or list; an override replaces single values only"}},
     {"SetUnknownKey", "run {file} -o - --set actuator.colour=red", Scenario(), 2,
      {"actuator.colour (--set): unknown key"}},
     // --- run's arguments ----------------------------------------------------------------------

@@ -234,7 +234,7 @@ TEST(SweepCli, ErrorsNameTheBaseFileOrTheAxisThatCausedThem) {
       "cli_axis_error");
   EXPECT_EQ(axis.first, 2);
   // a numeric axis sets its number through the parameter handle: the rule is the handle's,
-  // with no "(--set)"
+  // with no "(axis)"
   EXPECT_THAT(axis.second, HasSubstr("cli_axis_error.yaml:4:3: axis model.velocity.n = 0 makes "
                                      "point 1 (load[0].after=10, model.velocity.n=0) an invalid "
                                      "scenario: model.velocity.n = 0: must be an integer"));

@@ -85,7 +85,7 @@ TEST(MeasuredSeriesFromColumns, RefusesWhatTheCsvRulesRefuse) {
             "noise levels name its output columns");
   EXPECT_THAT(ErrorOf({{"t", {0.0}}, {"length", {0.1}}, {"tension_total", {1.0}}},
                       "{noise: {length: 1.0e-5}}", true),
-              HasSubstr("series[0] (TEXT:3:5): --design needs a noise level for column "
+              HasSubstr("series[0] (TEXT:3:5): an experiment design needs a noise level for column "
                         "tension_total"));
   // only in memory: columns of one length, each once
   EXPECT_EQ(ErrorOf({{"t", {0.0, 0.01}}, {"length", {0.1}}}),

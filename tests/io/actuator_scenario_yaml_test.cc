@@ -102,15 +102,15 @@ TEST(Scenario, SetOverridesAnyScalarByItsPath) {
 
 TEST(Scenario, SetIsValidatedLikeTheFile) {
   EXPECT_EQ(ErrorFor("", "", {"model.velocity.n=0"}),
-            "model.velocity.n = 0 (--set): must be an integer >= 1 (at most 1000)");
-  EXPECT_THAT(ErrorFor("", "", {"model.velocity.m=3"}), HasSubstr("model.velocity.m (--set): unknown key"));
+            "model.velocity.n = 0 (override): must be an integer >= 1 (at most 1000)");
+  EXPECT_THAT(ErrorFor("", "", {"model.velocity.m=3"}), HasSubstr("model.velocity.m (override): unknown key"));
   EXPECT_EQ(ErrorFor("", "", {"model.speed.n=3"}),
-            "--set model.speed.n=3: model.speed does not exist in FILE");
+            "override model.speed.n=3: model.speed does not exist in FILE");
   EXPECT_EQ(ErrorFor("", "", {"load[3].value=3"}),
-            "--set load[3].value=3: load[3] does not exist in FILE");
+            "override load[3].value=3: load[3] does not exist in FILE");
   EXPECT_EQ(ErrorFor("", "", {"model.velocity=3"}),
-            "--set model.velocity=3: model.velocity is a map or list; --set replaces single "
-            "values only");
+            "override model.velocity=3: model.velocity is a map or list; an override replaces "
+            "single values only");
   EXPECT_THAT(ErrorFor("", "", {"model.velocity.n"}), HasSubstr("expected KEY=VALUE"));
   EXPECT_THAT(ErrorFor("", "", {"a..b=1"}), HasSubstr("is not a dotted key path"));
 }
@@ -119,12 +119,12 @@ TEST(Scenario, SetKeepsTheFileLocationsOfOtherErrors) {
   // the copy the overrides go into must not lose where the file's values are
   EXPECT_THAT(ErrorFor("mass: 0.1,", "mass: -1,", {"model.velocity.n=2"}),
               HasSubstr("actuator.mass = -1 (FILE:8:18): must be from 1e-09"));
-  EXPECT_THAT(ErrorFor("", "", {"actuator.mass=-1"}), HasSubstr("actuator.mass = -1 (--set)"));
+  EXPECT_THAT(ErrorFor("", "", {"actuator.mass=-1"}), HasSubstr("actuator.mass = -1 (override)"));
 }
 
 TEST(Scenario, SetIndexesOnlyLists) {
   EXPECT_THAT(ErrorFor("", "", {"model[0].f_iso=50"}),
-              HasSubstr("--set model[0].f_iso=50: model is a map, not a list"));
+              HasSubstr("override model[0].f_iso=50: model is a map, not a list"));
   EXPECT_THAT(ErrorFor("", "", {"[0].name=x"}), HasSubstr("the file's top level is a map"));
   // one load written as a map is load[0], as the README says
   std::string one_load = Valid();

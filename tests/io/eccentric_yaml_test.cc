@@ -121,7 +121,7 @@ TEST(EccentricYaml, SetCreatesTheBlockAFileLeavesOut) {
   EXPECT_THAT(testing::InputErrorOf(scenario, [&] {
                 LoadScenario(scenario, {"model.velocity.eccentric.limit=0.5"});
               }),
-              HasSubstr("model.velocity.eccentric.limit = 0.5 (--set): must be > 1"));
+              HasSubstr("model.velocity.eccentric.limit = 0.5 (override): must be > 1"));
   // only an optional block is created: a misspelt one still does not exist
   EXPECT_THAT(testing::InputErrorOf(scenario, [&] {
                 LoadScenario(scenario, {"model.velocity.eccentrc.limit=1.5"});

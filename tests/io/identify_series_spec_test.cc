@@ -80,8 +80,8 @@ TEST(IdentifySeriesSpec, RejectsEachBrokenRuleNamingWhereAndWhy) {
   EXPECT_THAT(ErrorWith("{length: 2.0e-5}", "2.0e-5"),
               HasSubstr("series[0].noise = 2.0e-5 (FILE:4:12): must be a map from column names"));
   EXPECT_EQ(ErrorWith("path: model.velocity.v_max", "path: model..v_max"),
-            "parameters[1].path = model..v_max (FILE:8:12): must be a dotted key path as --set "
-            "takes it, e.g. model.f_iso or load[0].value");
+            "parameters[1].path = model..v_max (FILE:8:12): must be a dotted key path into "
+            "the scenario, e.g. model.f_iso or load[0].value");
   EXPECT_EQ(ErrorWith("path: model.velocity.v_max", "path: model.f_iso"),
             "parameters[1].path = model.f_iso (FILE:8:12): is listed twice: each parameter once");
   EXPECT_EQ(ErrorWith("bounds: [1, 1000]", "bounds: [1000, 1]"),
@@ -148,7 +148,7 @@ TEST(ReadMeasuredSeries, RejectsDataTheFitCannotUse) {
               HasSubstr("series[0].noise.tension_total (FILE:3:5): CSV has no column "
                         "tension_total; noise levels name its output columns"));
   EXPECT_THAT(SeriesError("t,length,tension_total\n0,0.1,1\n", ", noise: {length: 1.0e-5}", true),
-              HasSubstr("series[0] (FILE:3:5): --design needs a noise level for column "
+              HasSubstr("series[0] (FILE:3:5): an experiment design needs a noise level for column "
                         "tension_total"));
   EXPECT_EQ(SeriesError("t,length\n0,0.1\n", ", noise: {length: 1.0e-5}", false), "accepted");
 }
@@ -159,8 +159,8 @@ TEST(ReadMeasuredSeries, OnlyTheDesignDoesWithoutCsv) {
       "scenario: r.yaml\nseries:\n  - noise: {length: 1.0e-5}\nparameters: [{path: a}]\n");
   const IdentifySeriesSpec spec = LoadIdentifySeriesSpec(data);
   EXPECT_EQ(InputErrorOf(data, [&] { ReadMeasuredSeries(spec, false); }),
-            "series[0] (FILE:3:5): needs csv, the measured values, to fit (only --design does "
-            "without: it takes the columns from noise)");
+            "series[0] (FILE:3:5): needs csv, the measured values, to fit (only an experiment "
+            "design does without: it takes the columns from noise)");
   const std::vector<MeasuredSeries> planned = ReadMeasuredSeries(spec, true);
   EXPECT_EQ(planned[0].columns, std::vector<std::string>{"length"});
   EXPECT_TRUE(planned[0].times.empty());  // the scenario's output grid

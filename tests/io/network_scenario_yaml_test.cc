@@ -206,7 +206,7 @@ TEST(NetworkScenario, SetReachesNestedKeysOfListsAndModels) {
   EXPECT_THAT(testing::InputErrorOf(path, [&] {
                 LoadScenario(path, {"elements[1].activation.value=1.5"});
               }),
-              HasSubstr("elements[1].activation.value = 1.5 (--set): activation must stay "
+              HasSubstr("elements[1].activation.value = 1.5 (override): activation must stay "
                         "within [0, 1]"));
 }
 

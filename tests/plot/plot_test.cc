@@ -162,21 +162,21 @@ TEST(Plot, SweepRejectsUnknownPaths) {
   PlotOptions options;
   options.output = "sweep.png";
   EXPECT_THAT([&] { SweepPlotScript(Summary(), "mass", std::nullopt, std::nullopt, options); },
-              ::testing::ThrowsMessage<InputError>(HasSubstr(
-                  "--x mass: not a swept path of " )));
+              ::testing::ThrowsMessage<ParameterError>(HasSubstr(
+                  "x = mass: not a swept path of " )));
   EXPECT_THAT([&] { SweepPlotScript(Summary(), "load[0].after", std::string("speed"), std::nullopt, options); },
-              ::testing::ThrowsMessage<InputError>(HasSubstr("--y speed: not a metric")));
+              ::testing::ThrowsMessage<ParameterError>(HasSubstr("y = speed: not a metric")));
 }
 
 TEST(Plot, OptionsNeedAKnownFormatAndSize) {
   PlotOptions options;
   options.output = "figure.jpg";
   EXPECT_THAT([&] { Validate(options); },
-              ::testing::ThrowsMessage<InputError>(HasSubstr("must end in .png or .svg")));
+              ::testing::ThrowsMessage<ParameterError>(HasSubstr("must end in .png or .svg")));
   options.output = "figure.png";
   options.width = 20;
   EXPECT_THAT([&] { Validate(options); },
-              ::testing::ThrowsMessage<InputError>(HasSubstr("--size 20x750: width and height")));
+              ::testing::ThrowsMessage<ParameterError>(HasSubstr("size = 20x750: width and height")));
 }
 
 // --- hostile text -----------------------------------------------------------------------
@@ -383,12 +383,12 @@ TEST(Plot, OptionsRejectControlCharactersInTheOutputAndTitle) {
   PlotOptions options;
   options.output = "a\nsystem(\"touch F\")\n#.png";
   EXPECT_THAT([&] { Validate(options); },
-              ThrowsMessage<InputError>(HasSubstr("-o 'a\\x0asystem(\"touch F\")\\x0a#.png': "
+              ThrowsMessage<ParameterError>(HasSubstr("output = 'a\\x0asystem(\"touch F\")\\x0a#.png': "
                                                   "must not contain control characters")));
   options.output = "a.png";
   options.title = "x\nsystem(\"touch F\")\n#";
   EXPECT_THAT([&] { Validate(options); },
-              ThrowsMessage<InputError>(HasSubstr("--title 'x\\x0asystem(\"touch F\")\\x0a#': "
+              ThrowsMessage<ParameterError>(HasSubstr("title = 'x\\x0asystem(\"touch F\")\\x0a#': "
                                                   "must not contain control characters")));
 }
 
@@ -429,7 +429,7 @@ TEST(Plot, SweepWithoutMetricsPlotsSteps) {
   const std::string script = SweepPlotScript(table, "x", std::nullopt, std::nullopt, options);
   EXPECT_THAT(script, HasSubstr("$group0 << EOD\n1 100\n2 120\nEOD\n"));
   EXPECT_THAT([&] { SweepPlotScript(table, "x", std::string("message"), std::nullopt, options); },
-              ThrowsMessage<InputError>(HasSubstr("--y message: not a metric of ")));
+              ThrowsMessage<ParameterError>(HasSubstr("y = message: not a metric of ")));
 }
 
 TEST(Plot, CellsThatAreNotFiniteNumbersAreNamedByLineAndColumn) {

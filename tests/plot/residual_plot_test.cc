@@ -50,7 +50,7 @@ TEST(ResidualPlot, OtherTablesAreNotResidualsAndBrokenOnesAreRefused) {
   const std::string path = testing::WriteTempFile(
       "residuals.csv", "series,t,measured,model,standardised\n0,0,1,1,0\n");
   EXPECT_EQ(testing::InputErrorOf(path, [&] { ResidualPlotScript(ReadCsv(path), options); }),
-            "FILE: missing columns: output (a residual CSV of musclesim identify --residuals: "
+            "FILE: missing columns: output (a residual CSV of a time-series identification: "
             "series, output, t, measured, model, residual, standardised)");
   const std::string nan = testing::WriteTempFile(
       "residuals.csv",

@@ -135,12 +135,12 @@ TEST(Sweep, EveryPointIsValidatedBeforeAnythingRunsNamingTheAxis) {
     LoadSweep(WriteSweep("bad_path", "parameters:\n  model.speed.n: [1, 2]\nmetrics: [work]\n"));
   }, ::testing::ThrowsMessage<InputError>(HasSubstr(
          "bad_path.yaml:3:3: axis model.speed.n = 1 makes point 0 (model.speed.n=1) an invalid "
-         "scenario: --set model.speed.n=1: model.speed does not exist")));
+         "scenario: axis model.speed.n=1: model.speed does not exist")));
   EXPECT_THAT([] {
     LoadSweep(WriteSweep("bad_value", "parameters:\n  model.velocity.n: [3, fast]\nmetrics: [work]\n"));
   }, ::testing::ThrowsMessage<InputError>(HasSubstr(
          "bad_value.yaml:3:3: axis model.velocity.n = fast makes point 1 (model.velocity.n=fast) "
-         "an invalid scenario: model.velocity.n = fast (--set): must be a number")));
+         "an invalid scenario: model.velocity.n = fast (axis): must be a number")));
   EXPECT_THAT([] {
     LoadSweep(WriteSweep("bad_metric", "parameters:\n  model.velocity.n: [3]\nmetrics: [speed]\n"));
   }, ::testing::ThrowsMessage<InputError>(HasSubstr("metrics[0] = speed (")));
@@ -155,7 +155,7 @@ TEST(Sweep, EveryPointIsValidatedBeforeAnythingRunsNamingTheAxis) {
 TEST(Sweep, AnAxisValueErrorNamesTheAxisValuePointAndTheAxisLine) {
   // the second axis, at line 4 column 3, is the culprit of point 2 = (n=1, epsilon=-1). A
   // numeric axis naming a number of the base sets it through its parameter handle: the rule
-  // is the handle's ParameterError, with no "(--set)"
+  // is the handle's ParameterError, with no "(axis)"
   const std::string sweep = WriteSweep("axis_error", R"(parameters:
   model.velocity.n: [1, 3]
   model.velocity.epsilon: [1.0e-3, 2.0e-3, -1, 3.0e-3]
@@ -324,8 +324,9 @@ TEST(SweepRunner, ResumeFromAPartialSummaryGivesTheSameResult) {
                                       << lines[5].substr(0, 9);
   options.output = resumed;
   EXPECT_THAT([&] { RunSweep(plan, options); },  // no silent restart over it
-              ::testing::ThrowsMessage<InputError>(HasSubstr(
-                  "resumed.csv.partial exists: an earlier sweep was interrupted. Pass --resume")));
+              ::testing::ThrowsMessage<InterruptedSweepError>(HasSubstr(
+                  "resumed.csv.partial exists: an earlier sweep was interrupted. Resume the "
+                  "sweep")));
   options.resume = true;
   ProgressLog log;
   options.observer = &log;

@@ -214,8 +214,27 @@ class NetworkSystem {
   // needs only the value, computes no derivative for nothing.)
   Tension TensionOf(int e, double t, double l, double ldot, const double* y) const;
   void Resolve();
+  // Resolve's steps: a node's index by name (ParameterError at `path` if none); the nodes'
+  // ends, their states numbered (returns how many); element e's link and kinks, an
+  // excitation's state numbered from `states`; the loads of each node; the free nodes, each
+  // required `anchored` to a fixed or prescribed node.
+  int NodeNamed(const std::string& name, const std::string& path) const;
+  int NumberEnds();
+  void AddLink(std::size_t e, int& states);
+  std::vector<std::vector<Load>> LoadsByNode() const;
+  void AddFreeNodes(std::vector<std::vector<Load>> node_loads, const std::vector<bool>& anchored);
   void FindSingleNode();
   void ResolveControllers(int& states);
+  // ResolveControllers' steps: controllers[k]'s loop with what it measures; the actuator
+  // `name` at controllers[k].`key`, checked to be one it may drive; the actuators it drives,
+  // their drivers noted in `driver`; the refusal of a tension measured through a
+  // controller's output; the loop's state columns.
+  Loop MeasuredLoop(std::size_t k) const;
+  int DrivableActuator(std::size_t k, const char* key, const std::string& name,
+                       const std::vector<int>& driver) const;
+  void AttachDriven(std::size_t k, Loop& loop, std::vector<int>& driver);
+  void RequireNoAlgebraicLoop(std::size_t k, const std::vector<int>& driver) const;
+  void PlaceLoopColumns(std::size_t k);
   void BuildPattern();
   void AddControlPattern(std::vector<std::pair<int, int>>& pairs) const;
   void FindControlSlots(const std::vector<std::pair<int, int>>& pairs);

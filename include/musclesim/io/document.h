@@ -4,6 +4,7 @@
 // Python module builds one from a dict (scenario_from_dict, sweep, identify_series).
 #pragma once
 
+#include <initializer_list>
 #include <string>
 #include <utility>
 #include <vector>
@@ -47,5 +48,19 @@ class Document {
 // The document YAML (or JSON) `text` holds; `name` names it in messages. Throws InputError
 // for a syntax error, a key given twice or a second document, as the file readers do.
 Document ParseDocument(const std::string& name, const std::string& text);
+
+// Values of a document replaced before it is read, each "dotted.path=value" (a scalar at an
+// existing path, or a new key in an existing map), so that a replaced value is checked as
+// the document's own would be. `label` is the caller's word for them in messages: "LABEL
+// KEY=VALUE: rule" for one that does not apply, "KEY = VALUE (LABEL): rule" for a value
+// that breaks a rule (the command line says "--set", a sweep "axis").
+struct Overrides {
+  Overrides(std::vector<std::string> given = {}, std::string word = "override")
+      : texts(std::move(given)), label(std::move(word)) {}
+  Overrides(std::initializer_list<std::string> given) : texts(given) {}
+
+  std::vector<std::string> texts;
+  std::string label = "override";
+};
 
 }  // namespace musclesim

@@ -13,23 +13,22 @@
 
 namespace musclesim {
 
-// Reads and validates `path`, applying each "dotted.path=value" override first (as `--set`
-// gives them: a scalar at an existing path, or a new key in an existing map). Checks
+// Reads and validates `path`, applying `overrides` first (io/document.h). Checks
 // everything a run would: for a network, names unique, references resolved, every free node
 // joined to a fixed or prescribed node, every controller fitting the network, every element
 // longer than zero at the start, the limits against the elements' initial lengths. Throws
-// InputError naming file:line:column (or --set), key path, value and rule.
-Scenario LoadScenario(const std::string& path, const std::vector<std::string>& overrides = {});
+// InputError naming file:line:column (or the overrides' label), key path, value and rule.
+Scenario LoadScenario(const std::string& path, const Overrides& overrides = {});
 
 // The single-actuator file `path` as written (MakeActuatorScenario's input: the old form's
 // own fields), read and validated as LoadScenario does; InputError for a network file.
 ActuatorScenarioSpec LoadActuatorScenarioSpec(const std::string& path,
-                                              const std::vector<std::string>& overrides = {});
+                                              const Overrides& overrides = {});
 
 // Reads the scenario `document` (io/document.h), built in code, with `overrides` applied, as
 // LoadScenario reads a file; `name` names it in messages ("<dict>"), which cannot give lines.
 Scenario ReadScenario(const Document& document, const std::string& name,
-                      const std::vector<std::string>& overrides = {});
+                      const Overrides& overrides = {});
 
 // A scenario file read and parsed once, from which many scenarios are made by overrides (a
 // sweep's points whose axes are not numbers). Not shared between threads: each thread makes
@@ -46,7 +45,7 @@ class ScenarioTemplate {
   std::unique_ptr<ScenarioTemplate> Copy() const;
 
   // The scenario with `overrides` applied, validated as LoadScenario does.
-  Scenario Instantiate(const std::vector<std::string>& overrides) const;
+  Scenario Instantiate(const Overrides& overrides) const;
   const std::string& path() const { return path_; }
   // How the file is written (a network: a top-level `nodes:` key).
   ScenarioForm form() const { return form_; }

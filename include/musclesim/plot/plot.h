@@ -26,13 +26,14 @@ struct PlotOptions {
 // `text` as a gnuplot string expression: pieces in single quotes, inside which gnuplot
 // interprets nothing (no backslash escapes, no `command` substitution, no @macros), each
 // quote of the text joined in as sprintf("%c",39): "it's" is 'it'.sprintf("%c",39).'s'.
-// Throws InputError naming `what` (the flag, file or column the text came from) when the
+// Throws InputError naming `what` (the file or column the text came from) when the
 // text holds a control character (a byte below 0x20, or 0x7f: a newline would end the
 // command, and no quoting carries it) or is not valid UTF-8 (an SVG must be).
 std::string GnuplotString(const std::string& text, const std::string& what);
 
-// Throws InputError unless `output` ends in .png or .svg, the size is 100..10000 px and
-// `output` and `title` pass GnuplotString's rules.
+// Throws ParameterError naming the option ("output", "size", "title") unless `output` ends
+// in .png or .svg, the size is 100..10000 px and `output` and `title` pass GnuplotString's
+// rules.
 void Validate(const PlotOptions& options);
 
 // A trajectory CSV of `musclesim run`: length, shortening velocity, activation (with the

@@ -7,8 +7,10 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "musclesim/core/errors.h"
 #include "musclesim/sweep/sweep.h"
 #include "musclesim/sweep/sweep_points.h"
 #include "musclesim/sweep/sweep_observer.h"
@@ -60,12 +62,27 @@ struct SweepOutcome {
   std::vector<SweepRow> rows;  // the summary by index, when kept in memory (output empty) [-]
 };
 
+// PATH.partial, left by an interrupted sweep, met without `resume`: resuming continues it,
+// deleting it starts again.
+class InterruptedSweepError : public InputError {
+ public:
+  explicit InterruptedSweepError(std::string partial_path)
+      : InputError(partial_path + " exists: an earlier sweep was interrupted. Resume the sweep "
+                   "to continue it, or delete the file to start again"),
+        partial_path_(std::move(partial_path)) {}
+  const std::string& partial_path() const { return partial_path_; }
+
+ private:
+  std::string partial_path_;
+};
+
 // Runs every point not yet in the summary on `options.jobs` threads of this process,
 // reporting to `options.observer`.
 //
 // PATH.partial starts with a signature of the sweep (a hash of the base scenario file, the
 // points and the metrics) and is locked while the sweep runs. Throws InputError when
-// another running sweep holds PATH.partial, when it exists without `resume`, or when it
+// another running sweep holds PATH.partial, when it exists without `resume`
+// (InterruptedSweepError), or when it
 // belongs to another sweep (naming what changed). On `resume`, rows of PATH.partial that
 // are malformed (field count, index, axis values, status, numbers) or repeat a point are
 // dropped and their points run again; the observer's OnNotice says so. Rethrows a
