@@ -261,12 +261,22 @@ std::string List(const std::vector<std::string>& names) {
 
 }  // namespace
 
-std::string SweepPlotScript(const CsvTable& table, const std::string& x,
-                            const std::optional<std::string>& y,
-                            const std::optional<std::string>& color, const PlotOptions& options) {
+namespace {
+
+// What a sweep figure plots, its columns resolved and its texts checked before any row.
+struct SweepFigure {
+  int status = -1, x_column = -1, y_column = -1, other_column = -1;  // -1: no other [-]
+  std::string y_name;                   // the metric plotted [-]
+  std::optional<std::string> other;     // the colour's swept path, or the heat map's y [-]
+  bool heat_map = false;                // two swept paths and no colour: a heat map [-]
+  std::string x_text, y_text, other_text;  // gnuplot strings of the column names [-]
+};
+
+SweepFigure ResolveSweepFigure(const CsvTable& table, const std::string& x,
+                               const std::optional<std::string>& y,
+                               const std::optional<std::string>& color) {
   const SummaryColumns summary = FindSummaryColumns(table);
   const std::vector<std::string>& swept = summary.swept;
-  const int status = summary.status;
   const auto is_swept = [&](const std::string& path) {
     return std::find(swept.begin(), swept.end(), path) != swept.end();
   };
@@ -279,111 +289,120 @@ std::string SweepPlotScript(const CsvTable& table, const std::string& x,
                          "must be a swept path other than the x axis's (" + table.source +
                              " sweeps " + List(swept) + ")");
   }
-  const std::string y_name = y ? *y : (summary.metrics.empty() ? "steps" : summary.metrics.front());
-  const int y_column = table.Find(y_name);
+  SweepFigure f;
+  f.status = summary.status;
+  f.y_name = y ? *y : (summary.metrics.empty() ? "steps" : summary.metrics.front());
+  f.y_column = table.Find(f.y_name);
   // a metric, or one of the run's counts (steps, rhs_evals, wall_seconds)
-  if (y_column <= status || y_column >= summary.message) {
-    throw ParameterError("y", Printable(y_name),
+  if (f.y_column <= f.status || f.y_column >= summary.message) {
+    throw ParameterError("y", Printable(f.y_name),
                          "not a metric of " + table.source + " (its metrics: " +
                              List(summary.metrics) + "; also steps, rhs_evals, wall_seconds)");
   }
-  const int x_column = table.Find(x);
-  std::optional<std::string> other = color;
-  const bool heat_map = !color && swept.size() == 2;
-  if (heat_map) other = swept[0] == x ? swept[1] : swept[0];
-  const int other_column = other ? table.Find(*other) : -1;
+  f.x_column = table.Find(x);
+  f.other = color;
+  f.heat_map = !color && swept.size() == 2;
+  if (f.heat_map) f.other = swept[0] == x ? swept[1] : swept[0];
+  f.other_column = f.other ? table.Find(*f.other) : -1;
   // every column name that reaches the script, checked before any row
-  const std::string x_text = OptionString(x, "x");
-  const std::string y_text = y ? OptionString(y_name, "y")
-                               : GnuplotString(y_name, table.source + ": the first metric's name");
-  const std::string other_text =
-      !other  ? ""
-      : color ? OptionString(*other, "color")
-              : GnuplotString(*other, table.source + ": the other swept path");
+  f.x_text = OptionString(x, "x");
+  f.y_text = y ? OptionString(f.y_name, "y")
+               : GnuplotString(f.y_name, table.source + ": the first metric's name");
+  f.other_text = !f.other ? ""
+                 : color  ? OptionString(*f.other, "color")
+                          : GnuplotString(*f.other, table.source + ": the other swept path");
+  return f;
+}
 
-  // the usable rows: status ok and a value for y
-  struct Group {
-    std::string title;                             // gnuplot string of the legend entry [-]
-    std::vector<std::pair<double, double>> points;  // (x, y) in the CSV's units
-  };
-  std::map<std::string, Group> groups;  // by the value of `other` as written in the CSV
+// A line of the figure: one value of the colour's path.
+struct Group {
+  std::string title;                              // gnuplot string of the legend entry [-]
+  std::vector<std::pair<double, double>> points;  // (x, y) in the CSV's units
+};
+
+// The usable rows (status ok and a value for y): the lines by the colour's value as written
+// in the CSV, or the heat map's cells; every x either way.
+struct SweepPoints {
+  std::map<std::string, Group> groups;
   std::vector<double> xs, others;
-  std::vector<std::tuple<double, double, double>> cells;
+  std::vector<std::tuple<double, double, double>> cells;  // (x, other, y)
+};
+
+SweepPoints CollectSweepPoints(const CsvTable& table, const SweepFigure& f) {
+  SweepPoints p;
   for (std::size_t r = 0; r < table.rows.size(); ++r) {
-    if (table.rows[r][static_cast<std::size_t>(status)] != "ok") continue;
-    if (table.rows[r][static_cast<std::size_t>(y_column)].empty()) continue;
-    const double xv = FiniteValue(table, r, x_column), yv = FiniteValue(table, r, y_column);
-    xs.push_back(xv);
-    if (heat_map) {
-      const double ov = FiniteValue(table, r, other_column);
-      others.push_back(ov);
-      cells.emplace_back(xv, ov, yv);
+    if (table.rows[r][static_cast<std::size_t>(f.status)] != "ok") continue;
+    if (table.rows[r][static_cast<std::size_t>(f.y_column)].empty()) continue;
+    const double xv = FiniteValue(table, r, f.x_column), yv = FiniteValue(table, r, f.y_column);
+    p.xs.push_back(xv);
+    if (f.heat_map) {
+      const double ov = FiniteValue(table, r, f.other_column);
+      p.others.push_back(ov);
+      p.cells.emplace_back(xv, ov, yv);
       continue;
     }
-    const std::string label = other ? table.rows[r][static_cast<std::size_t>(other_column)] : "";
-    Group& group = groups[label];
+    const std::string label =
+        f.other ? table.rows[r][static_cast<std::size_t>(f.other_column)] : "";
+    Group& group = p.groups[label];
     if (group.title.empty()) {
-      group.title = other ? GnuplotString(*other + " = " + label,
-                                          table.source + ":" + std::to_string(table.lines[r]) +
-                                              ": the legend entry")
-                          : y_text;
+      group.title = f.other ? GnuplotString(*f.other + " = " + label,
+                                            table.source + ":" + std::to_string(table.lines[r]) +
+                                                ": the legend entry")
+                            : f.y_text;
     }
     group.points.emplace_back(xv, yv);
   }
-  if (xs.empty()) {
-    throw InputError(table.source + ": no successful row with a value of " + Printable(y_name));
+  if (p.xs.empty()) {
+    throw InputError(table.source + ": no successful row with a value of " + Printable(f.y_name));
   }
+  return p;
+}
 
-  std::ostringstream s;
-  s << kFrame;
-  s << "set title " << TitleOf(options, y_name + " against " + x, "the default title") << "\n"
-    << "set xlabel " << x_text << "\n";
-  if (WantsLogScale(xs)) s << "set logscale x\nset format x '%g'\n";
-
-  if (heat_map) {
-    // each cell reaches halfway to its neighbours (geometrically on a log axis)
-    const bool log_x = WantsLogScale(xs), log_y = WantsLogScale(others);
-    const auto bounds = [](std::vector<double> values, bool log) {
-      std::sort(values.begin(), values.end());
-      values.erase(std::unique(values.begin(), values.end()), values.end());
-      std::map<double, std::pair<double, double>> out;
-      const auto mid = [log](double a, double b) { return log ? std::sqrt(a * b) : 0.5 * (a + b); };
-      for (std::size_t i = 0; i < values.size(); ++i) {
-        const double left = i > 0 ? mid(values[i - 1], values[i]) : values[i];
-        const double right = i + 1 < values.size() ? mid(values[i], values[i + 1]) : values[i];
-        const double half_left = i > 0 ? left : values[i] - (right - values[i]);
-        const double half_right = i + 1 < values.size() ? right : values[i] + (values[i] - left);
-        double lo = values.size() == 1 ? values[i] * 0.9 : half_left;
-        double hi = values.size() == 1 ? values[i] * 1.1 : half_right;
-        if (log && values.size() > 1) {
-          if (i == 0) lo = values[i] * values[i] / right;
-          if (i + 1 == values.size()) hi = values[i] * values[i] / left;
-        }
-        out[values[i]] = {lo, hi};
-      }
-      return out;
-    };
-    const auto x_cells = bounds(xs, log_x), y_cells = bounds(others, log_y);
-    if (log_y) s << "set logscale y\nset format y '%g'\n";
-    s << "set autoscale xfix\nset autoscale yfix\n";
-    s << "set ylabel " << other_text << "\nset cblabel " << y_text << "\n"
-      << "set palette rgb 33,13,10\nset key off\n$cells << EOD\n";
-    for (const auto& [xv, ov, yv] : cells) {
-      const auto [x0, x1] = x_cells.at(xv);
-      const auto [y0, y1] = y_cells.at(ov);
-      s << Number(xv) << " " << Number(ov) << " " << Number(x0) << " " << Number(x1) << " "
-        << Number(y0) << " " << Number(y1) << " " << Number(yv) << "\n";
+// Each heat-map cell's extent: halfway to its neighbours (geometrically on a log axis).
+std::map<double, std::pair<double, double>> CellBounds(std::vector<double> values, bool log) {
+  std::sort(values.begin(), values.end());
+  values.erase(std::unique(values.begin(), values.end()), values.end());
+  std::map<double, std::pair<double, double>> out;
+  const auto mid = [log](double a, double b) { return log ? std::sqrt(a * b) : 0.5 * (a + b); };
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const double left = i > 0 ? mid(values[i - 1], values[i]) : values[i];
+    const double right = i + 1 < values.size() ? mid(values[i], values[i + 1]) : values[i];
+    const double half_left = i > 0 ? left : values[i] - (right - values[i]);
+    const double half_right = i + 1 < values.size() ? right : values[i] + (values[i] - left);
+    double lo = values.size() == 1 ? values[i] * 0.9 : half_left;
+    double hi = values.size() == 1 ? values[i] * 1.1 : half_right;
+    if (log && values.size() > 1) {
+      if (i == 0) lo = values[i] * values[i] / right;
+      if (i + 1 == values.size()) hi = values[i] * values[i] / left;
     }
-    s << "EOD\n"
-      << "plot $cells using 1:2:3:4:5:6:7 with boxxyerror fs solid 1.0 noborder lc palette title "
-      << y_text << "\n";
-    return s.str();
+    out[values[i]] = {lo, hi};
   }
+  return out;
+}
 
-  s << "set ylabel " << y_text << "\nset key outside right top\nset autoscale xfix\n";
+void WriteHeatMap(const SweepFigure& f, const SweepPoints& p, std::ostringstream& s) {
+  const bool log_y = WantsLogScale(p.others);
+  const auto x_cells = CellBounds(p.xs, WantsLogScale(p.xs)), y_cells = CellBounds(p.others, log_y);
+  if (log_y) s << "set logscale y\nset format y '%g'\n";
+  s << "set autoscale xfix\nset autoscale yfix\n";
+  s << "set ylabel " << f.other_text << "\nset cblabel " << f.y_text << "\n"
+    << "set palette rgb 33,13,10\nset key off\n$cells << EOD\n";
+  for (const auto& [xv, ov, yv] : p.cells) {
+    const auto [x0, x1] = x_cells.at(xv);
+    const auto [y0, y1] = y_cells.at(ov);
+    s << Number(xv) << " " << Number(ov) << " " << Number(x0) << " " << Number(x1) << " "
+      << Number(y0) << " " << Number(y1) << " " << Number(yv) << "\n";
+  }
+  s << "EOD\n"
+    << "plot $cells using 1:2:3:4:5:6:7 with boxxyerror fs solid 1.0 noborder lc palette title "
+    << f.y_text << "\n";
+}
+
+void WriteLines(const SweepFigure& f, SweepPoints& p, std::ostringstream& s) {
+  s << "set ylabel " << f.y_text << "\nset key outside right top\nset autoscale xfix\n";
   std::ostringstream plots;
   int block = 0;
-  for (auto& entry : groups) {
+  for (auto& entry : p.groups) {
     Group& group = entry.second;
     std::vector<std::pair<double, double>>& points = group.points;
     std::sort(points.begin(), points.end());
@@ -395,6 +414,26 @@ std::string SweepPlotScript(const CsvTable& table, const std::string& x,
     ++block;
   }
   s << plots.str() << "\n";
+}
+
+}  // namespace
+
+std::string SweepPlotScript(const CsvTable& table, const std::string& x,
+                            const std::optional<std::string>& y,
+                            const std::optional<std::string>& color, const PlotOptions& options) {
+  const SweepFigure figure = ResolveSweepFigure(table, x, y, color);
+  SweepPoints points = CollectSweepPoints(table, figure);
+  std::ostringstream s;
+  s << kFrame;
+  s << "set title " << TitleOf(options, figure.y_name + " against " + x, "the default title")
+    << "\n"
+    << "set xlabel " << figure.x_text << "\n";
+  if (WantsLogScale(points.xs)) s << "set logscale x\nset format x '%g'\n";
+  if (figure.heat_map) {
+    WriteHeatMap(figure, points, s);
+  } else {
+    WriteLines(figure, points, s);
+  }
   return s.str();
 }
 
