@@ -9,7 +9,8 @@ namespace musclesim {
 namespace {
 
 ActuatorSystem Concentric() {
-  const ActuatorScenarioSpec s = LoadActuatorScenarioSpec(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/concentric.yaml");
+  const ActuatorScenarioSpec s =
+      LoadActuatorScenarioSpec(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/concentric.yaml");
   return MakeActuatorSystem(s);
 }
 

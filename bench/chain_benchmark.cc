@@ -45,7 +45,7 @@ constexpr double kNodeMass = 1e-3;  // [kg] a small lumped mass per free node
 // [N s/m] light: about 1.6% of one segment's critical damping 2 sqrt(k m) at the start, where
 // the passive stiffness is k = alpha (T_p + k_p) = 1.01e4 N/m
 constexpr double kDamping = 0.1;
-constexpr double kBudgetSeconds = 20.0;  // a run longer than this is stopped and reported
+constexpr double kBudgetSeconds = 20.0;   // a run longer than this is stopped and reported
 constexpr double kRecordInterval = 0.01;  // [s] records are cheap next to the integration
 
 const LinearSolverKind kSolvers[] = {LinearSolverKind::kDense, LinearSolverKind::kBand,
@@ -304,12 +304,12 @@ void BM_ChainOdeint(benchmark::State& state) {
     final_state = RunOdeint(chain, counts);
     benchmark::DoNotOptimize(final_state.data());
   }
-  SetRunCounters(state, chain.system.state_size(), counts.steps, counts.rhs_evals,
-                 counts.jac_evals, counts.jac_evals);
-  state.counters["error"] = MaxRelativeDifference(final_state, ReferenceState(chain, segments),
-                                                  chain.options);
-  state.counters["vs_cvode"] = MaxRelativeDifference(
-      final_state, FinalState(chain, chain.options), chain.options);
+  SetRunCounters(state, chain.system.state_size(), counts.steps, counts.rhs_evals, counts.jac_evals,
+                 counts.jac_evals);
+  state.counters["error"] =
+      MaxRelativeDifference(final_state, ReferenceState(chain, segments), chain.options);
+  state.counters["vs_cvode"] =
+      MaxRelativeDifference(final_state, FinalState(chain, chain.options), chain.options);
 }
 // dense LU on 2N states every attempted step: N = 1000 would take minutes per run
 BENCHMARK(BM_ChainOdeint)

@@ -22,7 +22,7 @@ const char* const kScenarios[] = {"isometric", "concentric", "eccentric"};
 
 ActuatorScenarioSpec Spec(const benchmark::State& state) {
   return LoadActuatorScenarioSpec(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/" +
-                      kScenarios[state.range(0)] + ".yaml");
+                                  kScenarios[state.range(0)] + ".yaml");
 }
 
 ActuatorSystem Canonical(const benchmark::State& state) {
@@ -35,11 +35,11 @@ ActuatorSystem Canonical(const benchmark::State& state) {
 NetworkSystem Bare(const ActuatorScenarioSpec& s) {
   std::vector<NodeLoad> loads;
   for (const Load& load : s.loads) loads.push_back({"tip", load});
-  return NetworkSystem({Node::Fixed("ground", 0.0), Node::Free("tip", s.actuator.mass, 0.0)},
-                       {Element::Actuator("actuator", "ground", "tip",
-                                          std::make_shared<const TensionModel>(s.model.params),
-                                          s.activation)},
-                       std::move(loads));
+  return NetworkSystem(
+      {Node::Fixed("ground", 0.0), Node::Free("tip", s.actuator.mass, 0.0)},
+      {Element::Actuator("actuator", "ground", "tip",
+                         std::make_shared<const TensionModel>(s.model.params), s.activation)},
+      std::move(loads));
 }
 
 // Active, near the initial length, shortening slowly: a state of the runs' second phase. The
@@ -205,7 +205,8 @@ NetworkRunRequest AsNetworkRequest(const RunRequest& r) {
   request.t_start = r.t_start;
   request.t_end = r.t_end;
   request.output_interval = r.output_interval;
-  if (r.min_length || r.max_length) request.limits.push_back({"actuator", r.min_length, r.max_length});
+  if (r.min_length || r.max_length)
+    request.limits.push_back({"actuator", r.min_length, r.max_length});
   request.initial_state = {r.length, r.lengthening_rate};
   return request;
 }
@@ -220,9 +221,11 @@ void BM_SingleActuatorRun(benchmark::State& state) {
   Simulation simulation;
   std::vector<TrajectoryPoint> trajectory;
   const auto run = [&] {
-    if (state.range(1) == 0) return simulation.Run(system, spec.solver, MakeActuatorRunRequest(spec), trajectory);
+    if (state.range(1) == 0)
+      return simulation.Run(system, spec.solver, MakeActuatorRunRequest(spec), trajectory);
     ViewSink sink(trajectory);
-    return simulation.Run(state.range(1) == 1 ? system.network() : bare, spec.solver, request, sink);
+    return simulation.Run(state.range(1) == 1 ? system.network() : bare, spec.solver, request,
+                          sink);
   };
   RunStats stats = run();  // allocates the CVODE memory and the trajectory's storage
   for (auto _ : state) {

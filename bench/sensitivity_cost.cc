@@ -1,9 +1,9 @@
 // The cost of forward sensitivities (CVODES, staggered corrector): a run with k parameters
-// against the plain run of the same scenario (both on the linear solver `auto` picks), on three scenarios, with the tension model's
-// closed-form df/dp and with difference quotients of the scenario set at nearby values. Prints a Markdown
-// table of the median integration time over repeated runs (stats.wall_seconds: setup and
-// file reading excluded on both sides) and the steps taken. The goal: about (1 + k)
-// times the plain run or less.
+// against the plain run of the same scenario (both on the linear solver `auto` picks), on three
+// scenarios, with the tension model's closed-form df/dp and with difference quotients of the
+// scenario set at nearby values. Prints a Markdown table of the median integration time over
+// repeated runs (stats.wall_seconds: setup and file reading excluded on both sides) and the steps
+// taken. The goal: about (1 + k) times the plain run or less.
 //   sensitivity_cost [REPEATS]
 #include <algorithm>
 #include <cstdio>
@@ -19,9 +19,9 @@ namespace {
 using namespace musclesim;
 
 struct Case {
-  std::string scenario;                  // under scenarios/
-  std::vector<std::string> analytic;     // tension model parameters
-  std::vector<std::string> quotient;     // parameters by difference quotient
+  std::string scenario;               // under scenarios/
+  std::vector<std::string> analytic;  // tension model parameters
+  std::vector<std::string> quotient;  // parameters by difference quotient
 };
 
 std::string Path(const std::string& name) {
@@ -69,8 +69,7 @@ int main(int argc, char** argv) {
       {"antagonist_pair",
        {"models.muscle.f_iso", "models.muscle.velocity.v_max", "models.muscle.passive.k_p",
         "models.muscle.active_length.gaussians[1].center"},
-       {"nodes[1].mass", "nodes[1].position", "elements[0].activation.value",
-        "nodes[2].fixed"}},
+       {"nodes[1].mass", "nodes[1].position", "elements[0].activation.value", "nodes[2].fixed"}},
   };
   std::printf("| scenario | plain run | df/dp | k = 1 | k = 2 | k = 4 |\n");
   std::printf("|---|---|---|---|---|---|\n");

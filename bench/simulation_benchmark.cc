@@ -13,7 +13,7 @@
 namespace musclesim {
 namespace {
 
-const char* const kScenarios[] = {"isometric", "concentric", "eccentric", "twitches",
+const char* const kScenarios[] = {"isometric", "concentric",      "eccentric",   "twitches",
                                   "sine_load", "activation_ramp", "hanging_mass"};
 
 // args: scenario index, method (0 bdf, 1 adams), jacobian (0 analytic, 1 difference quotient)
@@ -41,9 +41,9 @@ void BM_SimulationRun(benchmark::State& state) {
   state.counters["rhs"] = static_cast<double>(stats.rhs_evals);
   state.counters["jac"] = static_cast<double>(stats.jac_evals);
   // seconds per internal step (printed with an SI prefix: 1.2u is 1.2 microseconds)
-  state.counters["time_per_step"] = benchmark::Counter(
-      static_cast<double>(stats.steps) * static_cast<double>(state.iterations()),
-      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["time_per_step"] =
+      benchmark::Counter(static_cast<double>(stats.steps) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   if (stats.status == RunStatus::kFailed) state.SkipWithError(stats.message.c_str());
 }
 BENCHMARK(BM_SimulationRun)

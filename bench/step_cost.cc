@@ -49,14 +49,17 @@ std::pair<double, double> UnitCosts(const ActuatorSystem& system,
   return {rhs, Seconds(start) / (rounds * trajectory.size())};
 }
 
-double LargestEigenvalue(const ActuatorSystem& system, const std::vector<TrajectoryPoint>& trajectory) {
+double LargestEigenvalue(const ActuatorSystem& system,
+                         const std::vector<TrajectoryPoint>& trajectory) {
   double largest = 0.0;
   for (const TrajectoryPoint& p : trajectory) {
     // [[0, 1], [a, b]]: lambda^2 - b lambda - a = 0
     const ActuatorSystem::JacobianRow row =
         system.Jacobian(p.t, p.sample.length, -p.sample.shortening_velocity);
-    const std::complex<double> root = std::sqrt(std::complex<double>(row.by_rate * row.by_rate + 4.0 * row.by_length));
-    for (const std::complex<double> lambda : {(row.by_rate + root) / 2.0, (row.by_rate - root) / 2.0}) {
+    const std::complex<double> root =
+        std::sqrt(std::complex<double>(row.by_rate * row.by_rate + 4.0 * row.by_length));
+    for (const std::complex<double> lambda :
+         {(row.by_rate + root) / 2.0, (row.by_rate - root) / 2.0}) {
       largest = std::max(largest, std::abs(lambda));
     }
   }
@@ -70,19 +73,22 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: step_cost SCENARIO_DIR\n");
     return 2;
   }
-  std::printf("scenario,method,jacobian,epsilon,n,status,steps,rhs_evals,jac_evals,newton_iters,"
-              "error_test_fails,wall_seconds,us_per_step,model_share,max_eigenvalue\n");
+  std::printf(
+      "scenario,method,jacobian,epsilon,n,status,steps,rhs_evals,jac_evals,newton_iters,"
+      "error_test_fails,wall_seconds,us_per_step,model_share,max_eigenvalue\n");
   Simulation sim;
   std::vector<TrajectoryPoint> trajectory;
   for (const char* name : {"isometric", "concentric", "eccentric"}) {
     for (double eps : {1e-2, 1e-3, 1e-4, 1e-5, 1e-6}) {
       for (int n : {1, 2, 3, 5}) {
-        const ActuatorScenarioSpec spec = LoadActuatorScenarioSpec(std::string(argv[1]) + "/" + name + ".yaml",
-                                               {"model.velocity.epsilon=" + std::to_string(eps),
-                                                "model.velocity.n=" + std::to_string(n)});
+        const ActuatorScenarioSpec spec =
+            LoadActuatorScenarioSpec(std::string(argv[1]) + "/" + name + ".yaml",
+                                     {"model.velocity.epsilon=" + std::to_string(eps),
+                                      "model.velocity.n=" + std::to_string(n)});
         const ActuatorSystem system = MakeActuatorSystem(spec);
         for (IntegrationMethod method : {IntegrationMethod::kBdf, IntegrationMethod::kAdams}) {
-          for (JacobianKind jacobian : {JacobianKind::kAnalytic, JacobianKind::kDifferenceQuotient}) {
+          for (JacobianKind jacobian :
+               {JacobianKind::kAnalytic, JacobianKind::kDifferenceQuotient}) {
             SolverOptions options = spec.solver;
             options.method = method;
             options.jacobian = jacobian;

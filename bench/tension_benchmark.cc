@@ -13,7 +13,8 @@ ModelParams Example(int n, int gaussians) {
   p.passive = {2.0, 30.0, 0.105};
   p.active_length = {0.095, 0.105, 1.0, {}};
   for (int k = 0; k < gaussians; ++k) {
-    p.active_length.gaussians.push_back({0.02, 2e5, 0.096 + 0.008 * k / std::max(1, gaussians - 1)});
+    p.active_length.gaussians.push_back(
+        {0.02, 2e5, 0.096 + 0.008 * k / std::max(1, gaussians - 1)});
   }
   p.velocity = {1.0, n, 1e-3};
   return p;
@@ -21,8 +22,8 @@ ModelParams Example(int n, int gaussians) {
 
 // args: n (the velocity exponent's denominator), number of Gaussians
 void BM_TensionEvaluate(benchmark::State& state) {
-  const TensionModel model(Example(static_cast<int>(state.range(0)),
-                                   static_cast<int>(state.range(1))));
+  const TensionModel model(
+      Example(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))));
   double x = 0.1, v = 0.01;
   for (auto _ : state) {
     const TensionSample s = model.Evaluate(x, v, 0.8);

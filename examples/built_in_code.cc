@@ -23,20 +23,20 @@ Scenario Concentric() {
   ActuatorScenarioSpec spec;
   spec.name = "built in code";
   ModelParams& p = spec.model.params;
-  p.f_iso = 100.0;                                  // N
-  p.passive = {1.0, 100.0, 0.105};                  // k_p [N], alpha [1/m], slack [m]
-  p.active_length.optimal_min = 0.095;              // m
-  p.active_length.optimal_max = 0.105;              // m
+  p.f_iso = 100.0;                                   // N
+  p.passive = {1.0, 100.0, 0.105};                   // k_p [N], alpha [1/m], slack [m]
+  p.active_length.optimal_min = 0.095;               // m
+  p.active_length.optimal_max = 0.105;               // m
   p.active_length.gaussians = {{1.0, 3000.0, 0.1}};  // a [-], b [1/m^2], d [m]
-  p.velocity.v_max = 1.0;                           // m/s
+  p.velocity.v_max = 1.0;                            // m/s
   p.velocity.n = 3;
-  p.velocity.epsilon = 1e-3;                        // m/s
-  spec.actuator.mass = 0.1;                         // kg
-  spec.initial_length = 0.1;                        // m
+  p.velocity.epsilon = 1e-3;  // m/s
+  spec.actuator.mass = 0.1;   // kg
+  spec.initial_length = 0.1;  // m
   spec.activation = Waveform::Step(0.01, 0.0, 1.0);
   spec.loads = {Load::Force(Waveform::Step(0.01, 0.0, 40.0))};  // N
-  spec.t_end = 0.1;                                 // s
-  spec.output.interval = 0.001;                     // s
+  spec.t_end = 0.1;                                             // s
+  spec.output.interval = 0.001;                                 // s
   return MakeActuatorScenario(spec);
 }
 

@@ -15,28 +15,30 @@ int main() {
   try {
     // the canonical actuator (docs/model.md), as in the scenario's `models.muscle`
     ModelParams params;
-    params.f_iso = 100.0;                     // N
-    params.passive = {1.0, 100.0, 0.105};     // k_p [N], alpha [1/m], slack length [m]
-    params.active_length = {0.095, 0.105, 1.0,
+    params.f_iso = 100.0;                  // N
+    params.passive = {1.0, 100.0, 0.105};  // k_p [N], alpha [1/m], slack length [m]
+    params.active_length = {0.095,
+                            0.105,
+                            1.0,
                             {{0.35188944617853268, 20635.199147929347, 0.073556703926583866},
                              {2.2575025981825489, 4125.1402656159307, 0.097194271247335401},
                              {1.3136662819543681, 3009.3607405177986, 0.1301541244400391}}};
-    params.velocity = {1.0, 3, 1e-3};         // v_max [m/s], n, epsilon [m/s]
+    params.velocity = {1.0, 3, 1e-3};  // v_max [m/s], n, epsilon [m/s]
     const auto model = std::make_shared<const TensionModel>(params);
     const ExcitationInput excitation{Waveform::Constant(0.0), {0.03, 0.03}, 0.0};  // s, s
-    NetworkSystem network({Node::Fixed("wall", 0.0), Node::Free("tip", 0.05, 0.1),
-                           Node::Fixed("anchor", 0.2)},
-                          {Element::Actuator("muscle", "wall", "tip", model, excitation),
-                           Element::Spring("transducer", "tip", "anchor", 1e5, 0.1)});
+    NetworkSystem network(
+        {Node::Fixed("wall", 0.0), Node::Free("tip", 0.05, 0.1), Node::Fixed("anchor", 0.2)},
+        {Element::Actuator("muscle", "wall", "tip", model, excitation),
+         Element::Spring("transducer", "tip", "anchor", 1e5, 0.1)});
     SolverOptions options;
     options.rtol = 1e-6;
     options.atol = 1e-10;
     Stepper stepper(std::move(network), options);
 
-    constexpr double kPeriod = 1e-3;                // s: the loop's sample period
-    constexpr double kp = 0.005, ki = 0.15;         // 1/N, 1/(N s): the scenario's gains
-    constexpr double kReference = 33.0;             // N
-    double integral = 0.0;                          // N s
+    constexpr double kPeriod = 1e-3;         // s: the loop's sample period
+    constexpr double kp = 0.005, ki = 0.15;  // 1/N, 1/(N s): the scenario's gains
+    constexpr double kReference = 33.0;      // N
+    double integral = 0.0;                   // N s
     std::printf("%6s %12s %12s\n", "t_s", "tension_N", "excitation");
     for (int k = 0; k < 600; ++k) {
       const double tension = stepper.sample().elements[0].tension;

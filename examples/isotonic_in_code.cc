@@ -12,10 +12,10 @@ int main() {
   using namespace musclesim;
 
   ModelParams params;
-  params.f_iso = 100.0;                                       // N
+  params.f_iso = 100.0;  // N
   params.passive = {.k_p = 1.0, .alpha = 100.0, .slack_length = 0.105};
-  params.active_length.optimal_min = 0.095;                   // m
-  params.active_length.optimal_max = 0.105;                   // m
+  params.active_length.optimal_min = 0.095;  // m
+  params.active_length.optimal_max = 0.105;  // m
   // amplitude, b_k [1/m^2], centre [m]: the three Gaussians of scenarios/concentric.yaml
   params.active_length.gaussians = {{0.35188944617853268, 20635.199147929347, 0.073556703926583866},
                                     {2.2575025981825489, 4125.1402656159307, 0.097194271247335401},
@@ -24,14 +24,13 @@ int main() {
   const auto model = std::make_shared<const TensionModel>(params);
 
   RunRequest request;
-  request.t_end = 0.3;          // s
-  request.length = 0.1;         // m
+  request.t_end = 0.3;   // s
+  request.length = 0.1;  // m
   request.output_interval = 0.01;
-  request.min_length = 0.06;    // m: stop there rather than shorten without end
+  request.min_length = 0.06;  // m: stop there rather than shorten without end
 
-  Simulation simulation;        // one CVODE workspace, re-used for every run
-  std::printf("%8s %20s %14s %10s\n", "load_N", "shortening_m/s_0.1s", "final_length_m",
-              "status");
+  Simulation simulation;  // one CVODE workspace, re-used for every run
+  std::printf("%8s %20s %14s %10s\n", "load_N", "shortening_m/s_0.1s", "final_length_m", "status");
   for (double load : {10.0, 30.0, 50.0, 70.0, 90.0}) {
     ActuatorParams actuator;
     actuator.mass = 0.1;  // kg; no parallel spring or damper

@@ -9,9 +9,10 @@ namespace {
 // Boost 1.74's rosenbrock4 is Hairer and Wanner's RODAS with the sign of D4, the weight of
 // df/dt in the fourth stage, flipped (+0.0362 where rodas.f has -0.0362): on a problem with an
 // explicit time dependence (a ramp, a sine) the method drops to first order (y' = cos t: the
-// error halves as the step halves; with -0.0362 it falls 30-fold, checked by hand), and its error controller,
-// fooled, takes hundreds of thousands of steps. The peer uses the published coefficient, so
-// that it is compared at its best; with df/dt = 0 (constant inputs) nothing changes.
+// error halves as the step halves; with -0.0362 it falls 30-fold, checked by hand), and its error
+// controller, fooled, takes hundreds of thousands of steps. The peer uses the published
+// coefficient, so that it is compared at its best; with df/dt = 0 (constant inputs) nothing
+// changes.
 struct RodasCoefficients : boost::numeric::odeint::default_rosenbrock_coefficients<double> {
   const double d4 = -0.3620000000000023e-01;  // hides the base's +0.0362
 };
@@ -44,12 +45,12 @@ void OdeintSegment(const TwoStateProblem& problem, double rtol, double atol, dou
   state[1] = y[1];
   auto stepper = odeint::make_dense_output(atol, rtol, Rosenbrock4());
   const double span = times.back() - times.front();
-  counts.steps += static_cast<long>(odeint::integrate_times(
-      stepper, std::make_pair(rhs, jacobian), state, times.begin(), times.end(),
-      std::min(1e-6, span), [&](const Vector& s, double t) {
-        const double values[2] = {s[0], s[1]};
-        observe(t, values);
-      }));
+  counts.steps += static_cast<long>(
+      odeint::integrate_times(stepper, std::make_pair(rhs, jacobian), state, times.begin(),
+                              times.end(), std::min(1e-6, span), [&](const Vector& s, double t) {
+                                const double values[2] = {s[0], s[1]};
+                                observe(t, values);
+                              }));
   y[0] = state[0];
   y[1] = state[1];
 }
@@ -69,7 +70,8 @@ void OdeintSegmentN(const NStateProblem& problem, double rtol, double atol, doub
   const auto jacobian = [&](const Vector& state, Matrix& j, double t, Vector& dfdt) {
     ++counts.jac_evals;
     problem.jacobian(problem.context, t, &state.data()[0], &j.data()[0]);
-    for (std::size_t i = 0; i < n; ++i) dfdt[i] = 0.0;  // the inputs are constant between breakpoints
+    // the inputs are constant between breakpoints
+    for (std::size_t i = 0; i < n; ++i) dfdt[i] = 0.0;
   };
   Vector state(n);
   std::copy(y, y + n, state.begin());

@@ -1,6 +1,6 @@
 // Boost.Odeint's rosenbrock4 on the two-state actuator problem and on an N-state system, in a
-// translation unit of its own: Boost 1.74's uBLAS needs C++17 (it uses std::allocator::construct, which C++20
-// removed), while musclesim's headers need C++20. The problem comes in through function
+// translation unit of its own: Boost 1.74's uBLAS needs C++17 (it uses std::allocator::construct,
+// which C++20 removed), while musclesim's headers need C++20. The problem comes in through function
 // pointers, as CVODE's right-hand side does.
 #pragma once
 

@@ -1,6 +1,7 @@
 // Work-precision of musclesim's CVODE configurations and of Boost.Odeint's rosenbrock4 on
-// a canonical scenario (two states (x, xdot), or three with activation dynamics): for rtol from 1e-3 to 1e-11, the achieved error against a reference
-// run at rtol 1e-13 (itself checked against a second method) and the median wall time.
+// a canonical scenario (two states (x, xdot), or three with activation dynamics): for rtol from
+// 1e-3 to 1e-11, the achieved error against a reference run at rtol 1e-13 (itself checked against a
+// second method) and the median wall time.
 //   work_precision SCENARIO.yaml REFERENCE.csv > rows.csv
 // writes the reference trajectory (t, length, tension on the output grid) to REFERENCE.csv
 // for the Python peers, and CSV rows
@@ -44,7 +45,8 @@ Errors Compare(const Grid& run, const Grid& reference) {
   const std::size_t n = std::min(run.t.size(), reference.t.size());
   if (run.t.size() != reference.t.size()) return {INFINITY, INFINITY};
   for (std::size_t i = 0; i < n; ++i) {
-    e.length = std::max(e.length, std::abs(run.length[i] - reference.length[i]) / std::abs(reference.length[i]));
+    e.length = std::max(
+        e.length, std::abs(run.length[i] - reference.length[i]) / std::abs(reference.length[i]));
     e.tension = std::max(e.tension, std::abs(run.tension[i] - reference.tension[i]) / scale);
   }
   return e;
@@ -56,7 +58,8 @@ double MedianSeconds(int repeats, const std::function<void()>& run) {
   for (int r = 0; r < repeats; ++r) {
     const auto start = std::chrono::steady_clock::now();
     run();
-    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    times.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   std::sort(times.begin(), times.end());
   return times[times.size() / 2];
@@ -121,13 +124,15 @@ std::vector<Segment> Segments(const ActuatorScenarioSpec& spec, const ActuatorSy
   for (double stop : stops) {
     Segment s;
     s.times.push_back(t0);
-    s.grid_index.push_back(next < static_cast<long>(grid.size()) && grid[next] - t0 <= same ? next++ : -1);
+    s.grid_index.push_back(next < static_cast<long>(grid.size()) && grid[next] - t0 <= same ? next++
+                                                                                            : -1);
     while (next < static_cast<long>(grid.size()) && grid[next] < stop - same) {
       s.times.push_back(grid[next]);
       s.grid_index.push_back(next++);
     }
     s.times.push_back(stop);
-    s.grid_index.push_back(next < static_cast<long>(grid.size()) && grid[next] - stop <= same ? next++ : -1);
+    s.grid_index.push_back(
+        next < static_cast<long>(grid.size()) && grid[next] - stop <= same ? next++ : -1);
     segments.push_back(std::move(s));
     t0 = stop;
   }
@@ -137,10 +142,11 @@ std::vector<Segment> Segments(const ActuatorScenarioSpec& spec, const ActuatorSy
 // Integrates segment by segment (restarting at each breakpoint, as a careful user would),
 // `segment` integrating one from the state `y` through its times and calling `observe` at each;
 // `tension` gives the total tension at (t, state). Returns the run on the output grid.
-Grid OnGrid(const ActuatorScenarioSpec& spec, const ActuatorSystem& system, std::vector<double> y,
-            const std::function<double(double t, const double* y)>& tension,
-            const std::function<void(std::vector<double>& y, const std::vector<double>& times,
-                                     const std::function<void(double, const double*)>& observe)>& segment) {
+Grid OnGrid(
+    const ActuatorScenarioSpec& spec, const ActuatorSystem& system, std::vector<double> y,
+    const std::function<double(double t, const double* y)>& tension,
+    const std::function<void(std::vector<double>& y, const std::vector<double>& times,
+                             const std::function<void(double, const double*)>& observe)>& segment) {
   std::vector<double> grid;
   const std::vector<Segment> segments = Segments(spec, system, grid);
   Grid g;
@@ -192,7 +198,6 @@ Grid OdeintTwoState(const ActuatorScenarioSpec& spec, const ActuatorSystem& syst
       });
 }
 
-
 bool PiecewiseConstant(const Waveform& w) {
   return w.kind == WaveformKind::kConstant || w.kind == WaveformKind::kStep ||
          w.kind == WaveformKind::kPulses;
@@ -217,8 +222,8 @@ Grid OdeintNetworkRun(const ActuatorScenarioSpec& spec, const ActuatorSystem& sy
       });
 }
 
-Grid Odeint(const ActuatorScenarioSpec& spec, const ActuatorSystem& system, double rtol, double atol,
-            OdeintCounts& counts) {
+Grid Odeint(const ActuatorScenarioSpec& spec, const ActuatorSystem& system, double rtol,
+            double atol, OdeintCounts& counts) {
   return system.excitation() ? OdeintNetworkRun(spec, system, rtol, atol, counts)
                              : OdeintTwoState(spec, system, rtol, atol, counts);
 }
@@ -249,8 +254,10 @@ int main(int argc, char** argv) {
       if (load.kind == LoadKind::kForce) constant = constant && PiecewiseConstant(load.force);
     }
     if (!constant) {
-      std::fprintf(stderr, "%s: excitation and force loads must be constant, step or pulses "
-                           "(the N-state Odeint peer takes df/dt = 0 between breakpoints)\n", argv[1]);
+      std::fprintf(stderr,
+                   "%s: excitation and force loads must be constant, step or pulses "
+                   "(the N-state Odeint peer takes df/dt = 0 between breakpoints)\n",
+                   argv[1]);
       return 2;
     }
   }
@@ -272,15 +279,18 @@ int main(int argc, char** argv) {
   tight.method = IntegrationMethod::kAdams;
   const Grid check = Cvode(spec, system, sim, tight, nullptr);
   const Errors agreement = Compare(check, reference);
-  std::fprintf(stderr, "%s: reference (BDF, rtol 1e-13) against Adams at rtol 1e-13: length %.2g, tension %.2g\n",
-               name.c_str(), agreement.length, agreement.tension);
+  std::fprintf(
+      stderr,
+      "%s: reference (BDF, rtol 1e-13) against Adams at rtol 1e-13: length %.2g, tension %.2g\n",
+      name.c_str(), agreement.length, agreement.tension);
   WriteReference(argv[2], reference);
 
   std::fprintf(stderr, "%s: Odeint (%s) restarts at %zu breakpoints\n", name.c_str(),
                system.excitation() ? "N-state, on the network (x, xdot, u)" : "two-state (x, xdot)",
                system.Breakpoints(spec.t_start, spec.t_end).size());
   const int repeats = 7;
-  std::printf("scenario,tool,method,rtol,error,error_length,error_tension,wall_seconds,rhs_evals,steps\n");
+  std::printf(
+      "scenario,tool,method,rtol,error,error_length,error_tension,wall_seconds,rhs_evals,steps\n");
   const auto row = [&](const char* tool, const std::string& method, double rtol, const Grid& g,
                        double seconds, long rhs_evals, long steps) {
     const Errors e = Compare(g, reference);
@@ -298,9 +308,11 @@ int main(int argc, char** argv) {
         o.atol = atol;
         Grid g;
         RunStats stats;
-        const double seconds = MedianSeconds(repeats, [&] { g = Cvode(spec, system, sim, o, &stats); });
-        row("musclesim", std::string(ToString(method)) + "-" +
-                             (jacobian == JacobianKind::kAnalytic ? "analytic" : "dq"),
+        const double seconds =
+            MedianSeconds(repeats, [&] { g = Cvode(spec, system, sim, o, &stats); });
+        row("musclesim",
+            std::string(ToString(method)) + "-" +
+                (jacobian == JacobianKind::kAnalytic ? "analytic" : "dq"),
             rtol, g, seconds, stats.rhs_evals, stats.steps);
       }
     }

@@ -12,7 +12,7 @@ int main() {
   using namespace musclesim;
 
   const double l1 = 0.095, l2 = 0.105;  // optimal range [m]
-  FitSpec spec;  // the indicator of [l1, l2] by default
+  FitSpec spec;                         // the indicator of [l1, l2] by default
   spec.count = 2;
   const FitResult fit = FitGaussians(spec, l1, l2, 1.0);
   std::printf("two Gaussians fitted to [%g, %g] m: relative residual %.4f\n", l1, l2,
@@ -21,8 +21,8 @@ int main() {
   ModelParams params;
   params.f_iso = 100.0;  // N
   params.passive = {.k_p = 1.0, .alpha = 100.0, .slack_length = 0.105};
-  params.active_length = {.optimal_min = l1, .optimal_max = l2, .sigma = 1.0,
-                          .gaussians = fit.gaussians};
+  params.active_length = {
+      .optimal_min = l1, .optimal_max = l2, .sigma = 1.0, .gaussians = fit.gaussians};
   params.velocity = {.v_max = 1.0, .n = 3, .epsilon = 1e-3};
   const TensionModel model(params);
 

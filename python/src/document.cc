@@ -31,9 +31,11 @@ Document DocumentFrom(const py::handle& given, const std::string& where) {
     }
   }
   if (py::isinstance<py::float_>(value)) return Document::Number(value.cast<double>());
-  if (py::isinstance<py::str>(value)) return Document::Text(Checked(value.cast<std::string>(), where));
+  if (py::isinstance<py::str>(value))
+    return Document::Text(Checked(value.cast<std::string>(), where));
   if (py::hasattr(value, "__fspath__")) {
-    return Document::Text(Checked(py::module_::import("os").attr("fspath")(value).cast<std::string>(), where));
+    return Document::Text(
+        Checked(py::module_::import("os").attr("fspath")(value).cast<std::string>(), where));
   }
   if (py::isinstance<py::dict>(value)) {
     std::vector<std::pair<std::string, Document>> entries;
@@ -55,8 +57,10 @@ Document DocumentFrom(const py::handle& given, const std::string& where) {
     }
     return Document::List(std::move(items));
   }
-  throw py::type_error(where + ": a value must be a number, a bool, a str, None, a list or a "
-                       "dict, not " + py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+  throw py::type_error(where +
+                       ": a value must be a number, a bool, a str, None, a list or a "
+                       "dict, not " +
+                       py::str(py::type::of(value).attr("__name__")).cast<std::string>());
 }
 
 }  // namespace musclesim::python

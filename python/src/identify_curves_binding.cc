@@ -75,9 +75,8 @@ py::dict PassiveDict(const PassiveIdentification& p, std::size_t points) {
       py::arg("points") = points,
       py::arg("slack_length_interval") =
           py::dict(py::arg("low") = i.low, py::arg("high") = i.high,
-                   py::arg("low_bounded") = i.low_bounded,
-                   py::arg("high_bounded") = i.high_bounded, py::arg("level") = i.level,
-                   py::arg("wide") = i.wide),
+                   py::arg("low_bounded") = i.low_bounded, py::arg("high_bounded") = i.high_bounded,
+                   py::arg("level") = i.level, py::arg("wide") = i.wide),
       py::arg("k_p_over_interval") =
           py::make_tuple(p.k_p_over_interval.low, p.k_p_over_interval.high),
       py::arg("alpha_over_interval") =
@@ -85,25 +84,23 @@ py::dict PassiveDict(const PassiveIdentification& p, std::size_t points) {
 }
 
 py::dict ActiveDict(const ActiveIdentification& a, std::size_t points) {
-  return py::dict(py::arg("f_iso") = Pair(a.f_iso),
-                  py::arg("optimal_range") =
-                      py::make_tuple(a.curve.optimal_min, a.curve.optimal_max),
-                  py::arg("amplitudes") = Pairs(a.amplitudes),
-                  py::arg("widths") = Pairs(a.precisions), py::arg("centers") = Pairs(a.centers),
-                  py::arg("rmse") = a.rmse, py::arg("points") = points);
+  return py::dict(
+      py::arg("f_iso") = Pair(a.f_iso),
+      py::arg("optimal_range") = py::make_tuple(a.curve.optimal_min, a.curve.optimal_max),
+      py::arg("amplitudes") = Pairs(a.amplitudes), py::arg("widths") = Pairs(a.precisions),
+      py::arg("centers") = Pairs(a.centers), py::arg("rmse") = a.rmse, py::arg("points") = points);
 }
 
 py::dict EccentricDict(const EccentricIdentification& e, bool in_model) {
   const py::object none = py::none();
-  return py::dict(
-      py::arg("points") = e.points, py::arg("identified") = e.identified,
-      py::arg("limit_identified") = e.limit_identified, py::arg("in_model") = in_model,
-      py::arg("why_not") = e.identified ? none : py::str(e.why_not),
-      py::arg("why_no_limit") = e.limit_identified ? none : py::str(e.why_no_limit),
-      py::arg("v_max") = e.identified ? py::object(Pair(e.best.v_max)) : none,
-      py::arg("n") = e.identified ? py::object(py::int_(e.best.n)) : none,
-      py::arg("limit") = e.limit_identified ? py::object(Pair(e.best.limit)) : none,
-      py::arg("rmse") = e.identified ? py::object(py::float_(e.best.rmse)) : none);
+  return py::dict(py::arg("points") = e.points, py::arg("identified") = e.identified,
+                  py::arg("limit_identified") = e.limit_identified, py::arg("in_model") = in_model,
+                  py::arg("why_not") = e.identified ? none : py::str(e.why_not),
+                  py::arg("why_no_limit") = e.limit_identified ? none : py::str(e.why_no_limit),
+                  py::arg("v_max") = e.identified ? py::object(Pair(e.best.v_max)) : none,
+                  py::arg("n") = e.identified ? py::object(py::int_(e.best.n)) : none,
+                  py::arg("limit") = e.limit_identified ? py::object(Pair(e.best.limit)) : none,
+                  py::arg("rmse") = e.identified ? py::object(py::float_(e.best.rmse)) : none);
 }
 
 py::dict VelocityDict(const VelocityIdentification& v, std::size_t points,
@@ -117,9 +114,9 @@ py::dict VelocityDict(const VelocityIdentification& v, std::size_t points,
   return py::dict(py::arg("f_iso") = Pair(v.best.f_iso), py::arg("v_max") = Pair(v.best.v_max),
                   py::arg("n") = v.best.n, py::arg("rmse") = v.best.rmse,
                   py::arg("points") = points, py::arg("candidates") = candidates,
-                  py::arg("eccentric") = v.eccentric ? py::object(EccentricDict(
-                                                           *v.eccentric, eccentric_in_model))
-                                                     : py::object(py::none()));
+                  py::arg("eccentric") =
+                      v.eccentric ? py::object(EccentricDict(*v.eccentric, eccentric_in_model))
+                                  : py::object(py::none()));
 }
 
 // What the fits give, before conversion to Python values (made with the GIL released).
@@ -173,21 +170,21 @@ py::dict IdentifyCurves(const py::object& passive_curve, const py::object& activ
       if (report) comparisons.push_back(CompareActiveFit(data, active_count, nonnegative));
     }
     if (velocity) {
-      const auto data = CheckedCurve("velocity", velocity->x, velocity->tension,
-                                     "shortening_velocity", "tension",
-                                     MinVelocityPoints(f_iso.has_value()));
+      const auto data =
+          CheckedCurve("velocity", velocity->x, velocity->tension, "shortening_velocity", "tension",
+                       MinVelocityPoints(f_iso.has_value()));
       out.velocity = IdentifyVelocity(data, f_iso);
       out.velocity_points = data.size();
       if (report) comparisons.push_back(CompareVelocityFit(data, f_iso, *out.velocity));
     }
-    out.model_yaml = FormatModelYaml(
-        DraftIdentifiedModel(source, out.passive, out.active, out.velocity));
+    out.model_yaml =
+        FormatModelYaml(DraftIdentifiedModel(source, out.passive, out.active, out.velocity));
     // the model is the block's text read back: the value of its `model:` key, whose lines
     // keep their two-space indent (YAML takes any consistent indent)
     const std::string key = "\nmodel:\n";
     const std::size_t block = out.model_yaml.find(key);
-    out.params = ParseModelSpec("<identified model>", out.model_yaml.substr(block + key.size()))
-                     .params;
+    out.params =
+        ParseModelSpec("<identified model>", out.model_yaml.substr(block + key.size())).params;
     if (report) out.report = FormatReport(comparisons);
   }
 
@@ -195,14 +192,14 @@ py::dict IdentifyCurves(const py::object& passive_curve, const py::object& activ
   const bool eccentric_in_model = out.params.velocity.eccentric.v_max.has_value();
   return py::dict(
       py::arg("model_yaml") = out.model_yaml, py::arg("params") = ParamsDict(out.params),
-      py::arg("passive") = out.passive ? py::object(PassiveDict(*out.passive, out.passive_points))
-                                       : none,
+      py::arg("passive") =
+          out.passive ? py::object(PassiveDict(*out.passive, out.passive_points)) : none,
       py::arg("active") =
           out.active ? py::object(ActiveDict(*out.active, out.active_points)) : none,
-      py::arg("velocity") = out.velocity ? py::object(VelocityDict(*out.velocity,
-                                                                   out.velocity_points,
-                                                                   eccentric_in_model))
-                                         : none,
+      py::arg("velocity") =
+          out.velocity
+              ? py::object(VelocityDict(*out.velocity, out.velocity_points, eccentric_in_model))
+              : none,
       py::arg("report") = out.report ? py::object(py::str(*out.report)) : none);
 }
 

@@ -56,8 +56,8 @@ py::array_t<double> ToArray(const Eigen::VectorXd& values) {
 }
 
 py::array_t<double> ToArray(const Eigen::MatrixXd& matrix) {
-  py::array_t<double> array({static_cast<py::ssize_t>(matrix.rows()),
-                             static_cast<py::ssize_t>(matrix.cols())});
+  py::array_t<double> array(
+      {static_cast<py::ssize_t>(matrix.rows()), static_cast<py::ssize_t>(matrix.cols())});
   auto out = array.mutable_unchecked<2>();
   for (Eigen::Index i = 0; i < matrix.rows(); ++i) {
     for (Eigen::Index j = 0; j < matrix.cols(); ++j) out(i, j) = matrix(i, j);
@@ -106,12 +106,14 @@ Identification Identify(const py::object& scenario, const py::object& spec_dict,
                         const std::string& spec_name, const py::list& series, bool design,
                         int max_evaluations) {
   if (max_evaluations < 1) {
-    throw py::value_error("max_evaluations must be at least 1 (runs with sensitivities the fit "
-                          "may take), not " + std::to_string(max_evaluations));
+    throw py::value_error(
+        "max_evaluations must be at least 1 (runs with sensitivities the fit "
+        "may take), not " +
+        std::to_string(max_evaluations));
   }
   const PyScenario& given = ScenarioArgument(scenario, "scenario");
-  const IdentifySeriesSpec spec = ReadIdentifySeriesSpec(DocumentFrom(spec_dict, ""), spec_name,
-                                                         "", SeriesValues::kInMemory);
+  const IdentifySeriesSpec spec =
+      ReadIdentifySeriesSpec(DocumentFrom(spec_dict, ""), spec_name, "", SeriesValues::kInMemory);
   if (py::len(series) != spec.series.size()) {
     throw std::invalid_argument("_identify_series: the spec names " +
                                 std::to_string(spec.series.size()) + " series, the values " +
@@ -248,10 +250,7 @@ void DefineEstimates(py::class_<Identification>& identification) {
           },
           "dict {path: estimate} in the parameters' order and units (the design: the starts).")
       .def_property_readonly(
-          "parameters",
-          [](const Identification& r) {
-            return r.result.parameters;
-          },
+          "parameters", [](const Identification& r) { return r.result.parameters; },
           "One SeriesParameterEstimate per parameter, in the order given.")
       .def_property_readonly(
           "correlation", [](const Identification& r) { return ToArray(r.result.correlation); },
@@ -294,8 +293,7 @@ void DefineFitStatistics(py::class_<Identification>& identification) {
           "values", [](const Identification& r) { return r.result.values; },
           "The number of measured values in the fit.")
       .def_property_readonly(
-          "degrees_of_freedom",
-          [](const Identification& r) { return r.result.degrees_of_freedom; },
+          "degrees_of_freedom", [](const Identification& r) { return r.result.degrees_of_freedom; },
           "values - parameters not at a bound.")
       .def_property_readonly(
           "weighted_rss", [](const Identification& r) { return r.result.weighted_rss; },
@@ -372,8 +370,8 @@ void BindSeriesIdentification(py::module_& m) {
 void BindIdentifySeries(py::module_& m) {
   BindParameterEstimate(m);
   BindSeriesIdentification(m);
-  m.def("_identify_series", &Identify, py::arg("scenario"), py::arg("spec"),
-        py::arg("spec_name"), py::arg("series"), py::arg("design"), py::arg("max_evaluations"),
+  m.def("_identify_series", &Identify, py::arg("scenario"), py::arg("spec"), py::arg("spec_name"),
+        py::arg("series"), py::arg("design"), py::arg("max_evaluations"),
         "identify_series's C++ half: `spec` a data file's keys as a dict without csv keys "
         "(messages name it `spec_name`), `series` one list of (column, array) pairs per entry "
         "of its series. identify_series is the public way.");

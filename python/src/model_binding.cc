@@ -95,10 +95,9 @@ std::vector<py::array_t<double>> Evaluate(const std::vector<py::object>& args, i
 // One curve of one argument: value or slope of a CurvePoint.
 template <typename Curve>
 py::object Curve1(const py::object& arg, const Curve& curve) {
-  return Finish(Evaluate({arg}, 1, [&](py::ssize_t i, const std::vector<const double*>& in,
-                                       const std::vector<double*>& out) {
-                  out[0][i] = curve(in[0][i]);
-                })[0]);
+  return Finish(Evaluate({arg}, 1,
+                         [&](py::ssize_t i, const std::vector<const double*>& in,
+                             const std::vector<double*>& out) { out[0][i] = curve(in[0][i]); })[0]);
 }
 
 // An activation as the model takes it: the tension is not defined outside [0, 1].
@@ -140,9 +139,8 @@ py::dict FitDict(const FitResult& fit) {
   for (const Gaussian& g : fit.gaussians) gaussians.append(GaussianDict(g));
   return py::dict(py::arg("amplitudes") = column(&Gaussian::amplitude),
                   py::arg("widths") = column(&Gaussian::precision),
-                  py::arg("centers") = column(&Gaussian::center),
-                  py::arg("gaussians") = gaussians, py::arg("cost") = fit.cost,
-                  py::arg("relative_residual") = fit.relative_residual,
+                  py::arg("centers") = column(&Gaussian::center), py::arg("gaussians") = gaussians,
+                  py::arg("cost") = fit.cost, py::arg("relative_residual") = fit.relative_residual,
                   py::arg("iterations") = fit.iterations, py::arg("starts") = fit.starts);
 }
 
@@ -156,8 +154,8 @@ std::vector<double> Vector(const py::object& values, const char* name) {
 
 py::dict Fit(const py::object& x, const py::object& f, int n, std::optional<std::string> target,
              std::optional<std::string> preset, double optimal_length,
-             std::optional<std::pair<double, double>> optimal_range, double sigma,
-             bool nonnegative, const py::object& widths, const py::object& centers) {
+             std::optional<std::pair<double, double>> optimal_range, double sigma, bool nonnegative,
+             const py::object& widths, const py::object& centers) {
   FitSpec spec;
   spec.count = n;
   spec.nonnegative = nonnegative;
@@ -215,38 +213,40 @@ width, center}] or fit {count, target, ...}}; velocity {v_max [m/s], n, epsilon 
 eccentric {v_max, n, limit} (optional)}. The block is read by the same reader as a file
 (the dict is written as JSON, which is YAML): the same rules, and the same error, naming
 "<model dict>:line:column" and the key path, for a value that breaks one.)")
-      .def("tension",
-           [](const Model& self, const py::object& x, const py::object& v, const py::object& u) {
-             const TensionModel& model = *self.tension;
-             return Finish(Evaluate({x, v, u}, 1, [&](py::ssize_t i, const auto& in,
-                                                      const auto& out) {
-                             out[0][i] = model.Evaluate(in[0][i], in[1][i], Activation(in[2][i])).total;
-                           })[0]);
-           },
-           py::arg("x"), py::arg("v"), py::arg("u"),
-           "Total tension T [N] at length x [m], shortening velocity v [m/s] (> 0 shortening) "
-           "and activation u [-] in [0, 1] (ParameterError outside, NaN included).")
-      .def("tension_parts",
-           [](const Model& self, const py::object& x, const py::object& v, const py::object& u) {
-             const TensionModel& model = *self.tension;
-             auto parts = Evaluate({x, v, u}, 6, [&](py::ssize_t i, const auto& in,
-                                                     const auto& out) {
-               const TensionSample s = model.Evaluate(in[0][i], in[1][i], Activation(in[2][i]));
-               out[0][i] = s.total;
-               out[1][i] = s.passive;
-               out[2][i] = s.active;
-               out[3][i] = s.d_length;
-               out[4][i] = s.d_velocity;
-               out[5][i] = s.d_activation;
-             });
-             py::dict result;
-             const char* names[] = {"total",    "passive",    "active",
-                                    "d_length", "d_velocity", "d_activation"};
-             for (int k = 0; k < 6; ++k) result[names[k]] = Finish(parts[k]);
-             return result;
-           },
-           py::arg("x"), py::arg("v"), py::arg("u"),
-           R"(The tension and its parts at (x [m], v [m/s], u [-]), as a dict of arrays:
+      .def(
+          "tension",
+          [](const Model& self, const py::object& x, const py::object& v, const py::object& u) {
+            const TensionModel& model = *self.tension;
+            return Finish(
+                Evaluate({x, v, u}, 1, [&](py::ssize_t i, const auto& in, const auto& out) {
+                  out[0][i] = model.Evaluate(in[0][i], in[1][i], Activation(in[2][i])).total;
+                })[0]);
+          },
+          py::arg("x"), py::arg("v"), py::arg("u"),
+          "Total tension T [N] at length x [m], shortening velocity v [m/s] (> 0 shortening) "
+          "and activation u [-] in [0, 1] (ParameterError outside, NaN included).")
+      .def(
+          "tension_parts",
+          [](const Model& self, const py::object& x, const py::object& v, const py::object& u) {
+            const TensionModel& model = *self.tension;
+            auto parts =
+                Evaluate({x, v, u}, 6, [&](py::ssize_t i, const auto& in, const auto& out) {
+                  const TensionSample s = model.Evaluate(in[0][i], in[1][i], Activation(in[2][i]));
+                  out[0][i] = s.total;
+                  out[1][i] = s.passive;
+                  out[2][i] = s.active;
+                  out[3][i] = s.d_length;
+                  out[4][i] = s.d_velocity;
+                  out[5][i] = s.d_activation;
+                });
+            py::dict result;
+            const char* names[] = {"total",    "passive",    "active",
+                                   "d_length", "d_velocity", "d_activation"};
+            for (int k = 0; k < 6; ++k) result[names[k]] = Finish(parts[k]);
+            return result;
+          },
+          py::arg("x"), py::arg("v"), py::arg("u"),
+          R"(The tension and its parts at (x [m], v [m/s], u [-]), as a dict of arrays:
 total T [N], passive T_p [N], active T_a = u f_iso f_L g [N], d_length dT/dx [N/m],
 d_velocity dT/dv [N s/m] (v the shortening velocity), d_activation dT/du [N]. The
 derivatives are the analytic ones the simulator's Jacobian uses; at x = slack_length the
@@ -256,42 +256,47 @@ passive slope is the left one (0).)");
 // The curves of one argument: passive tension, f_L, g and their slopes.
 void DefineCurves(py::class_<Model>& model_class) {
   model_class
-      .def("passive",
-           [](const Model& self, const py::object& x) {
-             const PassiveParams& p = self.tension->params().passive;
-             return Curve1(x, [&](double xi) { return PassiveTension(p, xi).value; });
-           },
-           py::arg("x"),
-           "Passive tension T_p [N] at length x [m]: k_p (exp(alpha (x - slack_length)) - 1) "
-           "above the slack length, 0 at or below it.")
-      .def("f_L",
-           [](const Model& self, const py::object& x) {
-             const ActiveLengthCurve& c = self.tension->active_length();
-             return Curve1(x, [&](double xi) { return c.Evaluate(xi).value; });
-           },
-           py::arg("x"),
-           "Active tension-length factor f_L [-] at length x [m]: the sum of Gaussians divided "
-           "by its maximum over optimal_range, so its peak there is 1.")
-      .def("f_L_slope",
-           [](const Model& self, const py::object& x) {
-             const ActiveLengthCurve& c = self.tension->active_length();
-             return Curve1(x, [&](double xi) { return c.Evaluate(xi).slope; });
-           },
-           py::arg("x"), "df_L/dx [1/m] at length x [m].")
-      .def("g",
-           [](const Model& self, const py::object& v) {
-             const VelocityCurve& c = self.tension->velocity();
-             return Curve1(v, [&](double vi) { return c.Evaluate(vi).value; });
-           },
-           py::arg("v"),
-           "Tension-velocity factor g [-] at shortening velocity v [m/s] (> 0 shortening): 1 at "
-           "v = 0, 0 at v = v_max, epsilon-regularised so it is smooth at 0.")
-      .def("g_slope",
-           [](const Model& self, const py::object& v) {
-             const VelocityCurve& c = self.tension->velocity();
-             return Curve1(v, [&](double vi) { return c.Evaluate(vi).slope; });
-           },
-           py::arg("v"), "dg/dv [s/m] at shortening velocity v [m/s].");
+      .def(
+          "passive",
+          [](const Model& self, const py::object& x) {
+            const PassiveParams& p = self.tension->params().passive;
+            return Curve1(x, [&](double xi) { return PassiveTension(p, xi).value; });
+          },
+          py::arg("x"),
+          "Passive tension T_p [N] at length x [m]: k_p (exp(alpha (x - slack_length)) - 1) "
+          "above the slack length, 0 at or below it.")
+      .def(
+          "f_L",
+          [](const Model& self, const py::object& x) {
+            const ActiveLengthCurve& c = self.tension->active_length();
+            return Curve1(x, [&](double xi) { return c.Evaluate(xi).value; });
+          },
+          py::arg("x"),
+          "Active tension-length factor f_L [-] at length x [m]: the sum of Gaussians divided "
+          "by its maximum over optimal_range, so its peak there is 1.")
+      .def(
+          "f_L_slope",
+          [](const Model& self, const py::object& x) {
+            const ActiveLengthCurve& c = self.tension->active_length();
+            return Curve1(x, [&](double xi) { return c.Evaluate(xi).slope; });
+          },
+          py::arg("x"), "df_L/dx [1/m] at length x [m].")
+      .def(
+          "g",
+          [](const Model& self, const py::object& v) {
+            const VelocityCurve& c = self.tension->velocity();
+            return Curve1(v, [&](double vi) { return c.Evaluate(vi).value; });
+          },
+          py::arg("v"),
+          "Tension-velocity factor g [-] at shortening velocity v [m/s] (> 0 shortening): 1 at "
+          "v = 0, 0 at v = v_max, epsilon-regularised so it is smooth at 0.")
+      .def(
+          "g_slope",
+          [](const Model& self, const py::object& v) {
+            const VelocityCurve& c = self.tension->velocity();
+            return Curve1(v, [&](double vi) { return c.Evaluate(vi).slope; });
+          },
+          py::arg("v"), "dg/dv [s/m] at shortening velocity v [m/s].");
 }
 
 void DefineModelProperties(py::class_<Model>& model_class) {
@@ -302,7 +307,8 @@ void DefineModelProperties(py::class_<Model>& model_class) {
           "Gaussians always explicit (a fit's result in its place): Model(model.params) is the "
           "same model.")
       .def_property_readonly(
-          "optimal_length", [](const Model& self) { return self.tension->active_length().optimal_length(); },
+          "optimal_length",
+          [](const Model& self) { return self.tension->active_length().optimal_length(); },
           "Where f_L peaks on optimal_range [m] (f_L = 1 there).")
       .def_property_readonly(
           "fit_result",
@@ -315,8 +321,8 @@ void DefineModelProperties(py::class_<Model>& model_class) {
       .def("__repr__", [](const Model& self) {
         const ModelParams& p = self.tension->params();
         return "<musclesim.Model f_iso=" + FormatNumber(p.f_iso) + " N, " +
-               std::to_string(p.active_length.gaussians.size()) + " Gaussians, v_max=" +
-               FormatNumber(p.velocity.v_max) + " m/s>";
+               std::to_string(p.active_length.gaussians.size()) +
+               " Gaussians, v_max=" + FormatNumber(p.velocity.v_max) + " m/s>";
       });
 }
 
@@ -363,9 +369,8 @@ void BindForceLengthPreset(py::module_& m) {
         }
         Require(std::isfinite(optimal_length) && optimal_length > 0.0, "optimal_length",
                 optimal_length, "must be finite and > 0 [m]");
-        return Curve1(x, [&](double length) {
-          return EvaluatePreset(preset, length / optimal_length);
-        });
+        return Curve1(
+            x, [&](double length) { return EvaluatePreset(preset, length / optimal_length); });
       },
       py::arg("preset"), py::arg("x"), py::arg("optimal_length") = 1.0,
       R"(A standard active force-length curve f_L [-] at lengths x [m], scaled so that its peak

@@ -24,16 +24,15 @@ py::dict ParamsDict(const ModelParams& p) {
     if (e.limit) eccentric["limit"] = *e.limit;
     velocity["eccentric"] = eccentric;
   }
-  return py::dict(
-      py::arg("f_iso") = p.f_iso,
-      py::arg("passive") =
-          py::dict(py::arg("k_p") = p.passive.k_p, py::arg("alpha") = p.passive.alpha,
-                   py::arg("slack_length") = p.passive.slack_length),
-      py::arg("active_length") =
-          py::dict(py::arg("optimal_range") =
-                       py::make_tuple(p.active_length.optimal_min, p.active_length.optimal_max),
-                   py::arg("sigma") = p.active_length.sigma, py::arg("gaussians") = gaussians),
-      py::arg("velocity") = velocity);
+  return py::dict(py::arg("f_iso") = p.f_iso,
+                  py::arg("passive") =
+                      py::dict(py::arg("k_p") = p.passive.k_p, py::arg("alpha") = p.passive.alpha,
+                               py::arg("slack_length") = p.passive.slack_length),
+                  py::arg("active_length") = py::dict(
+                      py::arg("optimal_range") =
+                          py::make_tuple(p.active_length.optimal_min, p.active_length.optimal_max),
+                      py::arg("sigma") = p.active_length.sigma, py::arg("gaussians") = gaussians),
+                  py::arg("velocity") = velocity);
 }
 
 }  // namespace musclesim::python

@@ -1,4 +1,5 @@
-// Overrides from Python (the command line's --set): a list of "key=value" strings, or a dict {key: value}.
+// Overrides from Python (the command line's --set): a list of "key=value" strings, or a dict {key:
+// value}.
 #pragma once
 
 #include <string>

@@ -68,7 +68,8 @@ std::vector<Column> ReadColumns(const std::vector<std::string>& names, const py:
   for (const py::handle item : given) {
     Column column;
     if (py::isinstance<py::array>(item)) {
-      const auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(item);
+      const auto array =
+          py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(item);
       if (!array || array.ndim() != 1) {
         throw std::invalid_argument("_plot_columns: a column must be a 1-D float64 array");
       }

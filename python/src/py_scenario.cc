@@ -106,7 +106,8 @@ const PyScenario& ScenarioArgument(const py::handle& object, const std::string& 
   try {
     return object.cast<const PyScenario&>();
   } catch (const py::cast_error&) {
-    throw py::type_error(what + " must be a musclesim.Scenario (load_scenario or "
+    throw py::type_error(what +
+                         " must be a musclesim.Scenario (load_scenario or "
                          "scenario_from_dict), not " +
                          py::str(py::type::of(object).attr("__name__")).cast<std::string>());
   }

@@ -15,11 +15,11 @@
 namespace musclesim::python {
 
 struct PyScenario {
-  Scenario scenario;                          // as read, with every set() value
-  std::string path;                           // the file read, absolute; "" for a document
-  std::shared_ptr<const Document> document;   // a dict's document; null for a file
-  std::string display;                        // its name in messages
-  std::vector<std::string> overrides;         // "key=value" since reading, in order
+  Scenario scenario;                         // as read, with every set() value
+  std::string path;                          // the file read, absolute; "" for a document
+  std::shared_ptr<const Document> document;  // a dict's document; null for a file
+  std::string display;                       // its name in messages
+  std::vector<std::string> overrides;        // "key=value" since reading, in order
 
   // The source read again with `more` overrides after the scenario's own (without the GIL).
   Scenario Read(const std::vector<std::string>& more) const;

@@ -43,7 +43,8 @@ RunData WithSensitivities(const Scenario& scenario, const std::vector<std::strin
   RunData data;
   data.layout.emplace(run.scenario(), run.system());
   for (const std::string& path : run.paths()) {
-    for (const std::string& column : run.columns()) data.extra.push_back("d_" + column + "/d_" + path);
+    for (const std::string& column : run.columns())
+      data.extra.push_back("d_" + column + "/d_" + path);
   }
   for (std::size_t i = 0; i < run.paths().size(); ++i) {
     data.sensitivities.push_back({run.paths()[i], std::string(ToString(run.sources()[i]))});
@@ -64,12 +65,14 @@ py::array_t<double> Array(std::vector<double>&& values) {
 // A phase column's words as a NumPy str array (<U10), written as UCS-4 in place.
 py::array Phases(const RunColumns& layout, std::size_t c, const std::vector<double>& values) {
   constexpr std::size_t kWidth = 10;  // "concentric"
-  py::array words(py::dtype("<U10"), std::vector<py::ssize_t>{static_cast<py::ssize_t>(values.size())});
+  py::array words(py::dtype("<U10"),
+                  std::vector<py::ssize_t>{static_cast<py::ssize_t>(values.size())});
   auto* out = static_cast<char32_t*>(words.mutable_data());
   std::memset(out, 0, values.size() * kWidth * sizeof(char32_t));
   for (std::size_t r = 0; r < values.size(); ++r) {
     const std::string_view word = ToString(layout.PhaseOf(c, values[r]));
-    for (std::size_t i = 0; i < word.size(); ++i) out[r * kWidth + i] = static_cast<char32_t>(word[i]);
+    for (std::size_t i = 0; i < word.size(); ++i)
+      out[r * kWidth + i] = static_cast<char32_t>(word[i]);
   }
   return words;
 }
@@ -127,7 +130,8 @@ py::dict StatsDict(const RunStats& s, const std::vector<SensitivityNote>& notes)
   stats["sensitivity_error_test_fails"] = s.sensitivity_error_test_fails;
   py::list parameters;
   for (const SensitivityNote& note : notes) {
-    parameters.append(py::dict(py::arg("path") = note.path, py::arg("derivative") = note.derivative));
+    parameters.append(
+        py::dict(py::arg("path") = note.path, py::arg("derivative") = note.derivative));
   }
   stats["sensitivities"] = parameters;
   return stats;

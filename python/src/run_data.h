@@ -33,7 +33,7 @@ struct Result {
   pybind11::dict columns;  // {name: 1-D array}: float64, or str for a phase column
   pybind11::dict stats;    // as --stats writes them
   pybind11::ssize_t rows = 0;
-  RunStats run_stats;      // the same, typed
+  RunStats run_stats;  // the same, typed
 };
 
 // The Python form of `data` (taken apart). Needs the GIL.

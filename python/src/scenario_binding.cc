@@ -94,7 +94,8 @@ void BindResult(py::module_& m) {
       .def("to_dataframe", &ToDataFrame,
            "The columns as a pandas.DataFrame (pandas imported only here; ImportError naming "
            "python3-pandas if it is missing).")
-      .def("__len__", [](const Result& r) { return r.rows; }, "The number of rows.")
+      .def(
+          "__len__", [](const Result& r) { return r.rows; }, "The number of rows.")
       .def(py::pickle(  // for multiprocessing and joblib: the columns and stats as they are
           [](const Result& r) { return py::make_tuple(r.columns, r.stats, r.rows, r.run_stats); },
           [](const py::tuple& state) {
@@ -154,8 +155,7 @@ void BindSolverTypes(py::module_& m) {
       .def_readonly("rhs_evals", &RunStats::rhs_evals,
                     "Right-hand side evaluations, a difference-quotient Jacobian's included [-].")
       .def_readonly("jac_evals", &RunStats::jac_evals, "Jacobian evaluations [-].")
-      .def_readonly("linear_setups", &RunStats::linear_setups,
-                    "Newton matrix factorisations [-].")
+      .def_readonly("linear_setups", &RunStats::linear_setups, "Newton matrix factorisations [-].")
       .def_readonly("newton_iters", &RunStats::newton_iters, "Newton iterations [-].")
       .def_readonly("newton_conv_fails", &RunStats::newton_conv_fails,
                     "Newton convergence failures [-].")
@@ -224,7 +224,8 @@ void BindParameter(py::module_& m) {
 void DefineScenarioProperties(py::class_<PyScenario>& scenario_class) {
   scenario_class
       .def_property_readonly(
-          "is_network", [](const PyScenario& s) { return s.scenario.form == ScenarioForm::kNetwork; },
+          "is_network",
+          [](const PyScenario& s) { return s.scenario.form == ScenarioForm::kNetwork; },
           "True for a network (a top-level `nodes:` key), False for a single actuator.")
       .def_property_readonly(
           "name", [](const PyScenario& s) { return s.scenario.name; },
@@ -285,12 +286,14 @@ void DefineScenarioCopies(py::class_<PyScenario>& scenario_class) {
             s.scenario = s.Read({});
             return s;
           }))
-      .def("copy", [](const PyScenario& s) { return s; },
-           "An independent copy: set() on one leaves the other as it is (copy.copy and "
-           "copy.deepcopy give the same).")
+      .def(
+          "copy", [](const PyScenario& s) { return s; },
+          "An independent copy: set() on one leaves the other as it is (copy.copy and "
+          "copy.deepcopy give the same).")
       .def("__copy__", [](const PyScenario& s) { return s; })
-      .def("__deepcopy__", [](const PyScenario& s, const py::object&) { return s; },
-           py::arg("memo"));
+      .def(
+          "__deepcopy__", [](const PyScenario& s, const py::object&) { return s; },
+          py::arg("memo"));
 }
 
 // The YAML text, set() and run().

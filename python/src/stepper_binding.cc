@@ -1,6 +1,6 @@
 // musclesim.Stepper: a scenario (a network, or a single actuator as one) stepped piece by
-// piece from a Python loop (solver/stepper.h). advance() converts nothing but a float and returns one of three
-// prebuilt status strings, so that a 1 kHz loop spends its time integrating.
+// piece from a Python loop (solver/stepper.h). advance() converts nothing but a float and returns
+// one of three prebuilt status strings, so that a 1 kHz loop spends its time integrating.
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -141,11 +141,11 @@ class PyStepper {
 
   mutable std::mutex mutex_;
   std::unique_ptr<Stepper> stepper_;
-  py::list columns_;          // names of sample()'s values after t, in the CSV's order
-  std::vector<std::size_t> numeric_;   // their columns in layout_
-  std::optional<RunColumns> layout_;   // the network's columns
-  py::str statuses_[3];       // by RunStatus
-  mutable std::vector<double> row_;    // sample()'s scratch
+  py::list columns_;                  // names of sample()'s values after t, in the CSV's order
+  std::vector<std::size_t> numeric_;  // their columns in layout_
+  std::optional<RunColumns> layout_;  // the network's columns
+  py::str statuses_[3];               // by RunStatus
+  mutable std::vector<double> row_;   // sample()'s scratch
 };
 
 }  // namespace
@@ -157,7 +157,8 @@ void BindStepper(py::module_& m) {
                         "of actuators no controller drives, advance again. A single-actuator "
                         "scenario steps as its network (docs/model.md 7.4): node `ground` "
                         "fixed at 0, node `tip` (its position is the length), element "
-                        "`actuator`, `damper` and `spring` (the last two of coefficient 0 when the scenario gives none). Times in s, lengths "
+                        "`actuator`, `damper` and `spring` (the last two of coefficient 0 when the "
+                        "scenario gives none). Times in s, lengths "
                         "in m, tensions in N, activations in [0, 1].")
       .def(py::init([](const py::object& scenario, const py::object& overrides,
                        std::optional<double> rtol, std::optional<double> atol) {
@@ -169,7 +170,8 @@ void BindStepper(py::module_& m) {
              if (!overrides.is_none()) {
                if (py::isinstance<py::dict>(overrides)) {
                  for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(overrides)) {
-                   s.Set(py::str(key).cast<std::string>(), py::reinterpret_borrow<py::object>(value));
+                   s.Set(py::str(key).cast<std::string>(),
+                         py::reinterpret_borrow<py::object>(value));
                  }
                } else {
                  const std::vector<std::string> more = OverridesFrom(overrides);

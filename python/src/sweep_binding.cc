@@ -63,12 +63,14 @@ std::vector<Job> JobsFrom(const py::list& given) {
     }
     if ((py::isinstance<py::tuple>(item) || py::isinstance<py::list>(item)) && py::len(item) == 2) {
       const py::sequence pair = py::reinterpret_borrow<py::sequence>(item);
-      jobs.push_back({std::nullopt, PathText(pair[0], "run_many: a job's path"),
-                      OverridesFrom(pair[1])});
+      jobs.push_back(
+          {std::nullopt, PathText(pair[0], "run_many: a job's path"), OverridesFrom(pair[1])});
       continue;
     }
-    throw py::type_error("jobs[" + std::to_string(k) + "] must be a Scenario or a (path, "
-                         "overrides) pair, not " + py::repr(item).cast<std::string>());
+    throw py::type_error("jobs[" + std::to_string(k) +
+                         "] must be a Scenario or a (path, "
+                         "overrides) pair, not " +
+                         py::repr(item).cast<std::string>());
   }
   return jobs;
 }
@@ -107,7 +109,8 @@ bool RunOnThreads(std::size_t count, int workers, Work work) {
   return stop;
 }
 
-py::list RunMany(const py::list& given, int threads, const std::vector<std::string>& sensitivities) {
+py::list RunMany(const py::list& given, int threads,
+                 const std::vector<std::string>& sensitivities) {
   const std::vector<Job> jobs = JobsFrom(given);
   std::vector<Outcome> outcomes(jobs.size());
   const bool interrupted =
@@ -182,12 +185,14 @@ py::tuple SummaryColumns(const SweepSpec& spec, const std::vector<SweepRow>& row
   py::list header, columns;
   const auto numbers = [&](auto value) {
     py::array_t<double> out(n);
-    for (py::ssize_t r = 0; r < n; ++r) out.mutable_at(r) = value(rows[static_cast<std::size_t>(r)]);
+    for (py::ssize_t r = 0; r < n; ++r)
+      out.mutable_at(r) = value(rows[static_cast<std::size_t>(r)]);
     return out;
   };
   const auto counts = [&](auto value) {
     py::array_t<std::int64_t> out(n);
-    for (py::ssize_t r = 0; r < n; ++r) out.mutable_at(r) = value(rows[static_cast<std::size_t>(r)]);
+    for (py::ssize_t r = 0; r < n; ++r)
+      out.mutable_at(r) = value(rows[static_cast<std::size_t>(r)]);
     return out;
   };
   const auto texts = [&](auto value) {
@@ -228,7 +233,8 @@ py::object Sweep(const py::object& spec, int threads, const py::object& output, 
   const SweepPlan plan = PlanOf(spec, threads, name);
   if (plan.spec.trajectories != TrajectoryPolicy::kNone && output.is_none()) {
     throw InputError("trajectories = " + std::string(ToString(plan.spec.trajectories)) + " (" +
-                     name + "): the runs' CSVs are written beside the summary: give "
+                     name +
+                     "): the runs' CSVs are written beside the summary: give "
                      "sweep(..., output=PATH)");
   }
   SweepRunOptions options;
@@ -243,7 +249,8 @@ py::object Sweep(const py::object& spec, int threads, const py::object& output, 
     try {
       outcome = RunSweep(plan, options);
     } catch (const InterruptedSweepError& e) {
-      throw InputError(e.partial_path() + " exists: an earlier sweep was interrupted. Pass "
+      throw InputError(e.partial_path() +
+                       " exists: an earlier sweep was interrupted. Pass "
                        "resume=True to continue it, or delete the file to start again");
     }
   }
@@ -266,8 +273,8 @@ void BindSweep(py::module_& m) {
         "d_<column>/d_<path> columns to every run, as Scenario.run does. SI units. A bad job "
         "raises (the first in the list's order) after every job has run; musclesim.table() "
         "stacks the results into one structured array.");
-  m.def("_sweep", &Sweep, py::arg("spec"), py::arg("threads"), py::arg("output"),
-        py::arg("resume"), py::arg("name"),
+  m.def("_sweep", &Sweep, py::arg("spec"), py::arg("threads"), py::arg("output"), py::arg("resume"),
+        py::arg("name"),
         "Runs the sweep `spec` (a sweep file's path, or a dict of its keys whose base may be a "
         "Scenario) as `musclesim sweep` does (threads 0: every core), GIL released, Ctrl-C "
         "stopping it. With `output`, the summary is that file (and `resume` continues an "

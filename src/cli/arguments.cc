@@ -60,8 +60,7 @@ double ParseDouble(const std::string& option, const std::string& text) {
 
 }  // namespace
 
-UniformGrid ParseGrid(const std::string& option, const std::string& text,
-                      const InputRange& range) {
+UniformGrid ParseGrid(const std::string& option, const std::string& text, const InputRange& range) {
   const auto first = text.find(':');
   const auto second = text.find(':', first == std::string::npos ? first : first + 1);
   if (first == std::string::npos || second == std::string::npos) {
@@ -72,8 +71,8 @@ UniformGrid ParseGrid(const std::string& option, const std::string& text,
   grid.to = ParseDouble(option, text.substr(first + 1, second - first - 1));
   const std::string count = text.substr(second + 1);
   const auto result = std::from_chars(count.data(), count.data() + count.size(), grid.count);
-  if (result.ec != std::errc() || result.ptr != count.data() + count.size() ||
-      grid.count < 2 || grid.count > 10000000) {
+  if (result.ec != std::errc() || result.ptr != count.data() + count.size() || grid.count < 2 ||
+      grid.count > 10000000) {
     throw UsageError(option + " " + text + ": N must be an integer from 2 to 10000000");
   }
   if (!(grid.from < grid.to)) {

@@ -41,8 +41,7 @@ Arguments Parse(int argc, char** argv, int first, const std::set<std::string>& w
 
 // An evenly spaced grid "A:B:N": N >= 2 points from A to B inclusive, A < B, both within
 // `range`. A malformed grid is a UsageError naming `option` and `text`.
-UniformGrid ParseGrid(const std::string& option, const std::string& text,
-                      const InputRange& range);
+UniformGrid ParseGrid(const std::string& option, const std::string& text, const InputRange& range);
 
 // A number within `range` (NaN and infinities never are). A UsageError names `option`,
 // `text` and the rule otherwise.

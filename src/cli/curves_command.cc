@@ -14,7 +14,8 @@ namespace musclesim::cli {
 
 namespace {
 
-constexpr const char* kHelp = R"(usage: musclesim curves FILE.yaml (--length A:B:N | --velocity A:B:N) [-o PATH]
+constexpr const char* kHelp =
+    R"(usage: musclesim curves FILE.yaml (--length A:B:N | --velocity A:B:N) [-o PATH]
        musclesim curves --preset NAME [--optimal-length L] [--length A:B:N] [-o PATH]
 
 Tabulates the model of FILE.yaml's `model:` block on N evenly spaced points from A to B
@@ -57,9 +58,9 @@ int PresetCurve(const Arguments& args) {
 }  // namespace
 
 int CurvesCommand(int argc, char** argv) {
-  const Arguments args = Parse(argc, argv, 2,
-                               {"--length", "--velocity", "-o", "--preset", "--optimal-length"},
-                               {"--help", "-h"});
+  const Arguments args =
+      Parse(argc, argv, 2, {"--length", "--velocity", "-o", "--preset", "--optimal-length"},
+            {"--help", "-h"});
   if (args.Has("--help") || args.Has("-h")) {
     std::cout << kHelp;
     return 0;

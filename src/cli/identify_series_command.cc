@@ -166,9 +166,8 @@ int IdentifySeriesCommand(int argc, char** argv) {
     outputs.push_back(std::make_unique<StreamedOutput>(path));
     outputs.back()->Write(text);
   };
-  stage(args.Value("-o", "-"),
-        RewriteScenario(spec.scenario, Overrides(overrides, "--set"),
-                        EstimatedScenarioHeader(fit, data_file)));
+  stage(args.Value("-o", "-"), RewriteScenario(spec.scenario, Overrides(overrides, "--set"),
+                                               EstimatedScenarioHeader(fit, data_file)));
   if (args.Has("--report")) stage(args.Value("--report"), FormatSeriesReport(fit, data_file));
   if (args.Has("--residuals")) stage(args.Value("--residuals"), FormatResidualCsv(fit));
   for (const auto& output : outputs) output->Commit();

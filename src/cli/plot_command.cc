@@ -16,7 +16,8 @@ namespace musclesim::cli {
 
 namespace {
 
-constexpr const char* kHelp = R"(usage: musclesim plot RUN.csv -o run.png           a trajectory of musclesim run
+constexpr const char* kHelp =
+    R"(usage: musclesim plot RUN.csv -o run.png           a trajectory of musclesim run
   musclesim plot --curves SCENARIO.yaml -o curves.png     the model's curves
   musclesim plot RESIDUALS.csv -o fit.png    musclesim identify --residuals: data beside model
   musclesim plot SWEEP.csv --x PATH [--y METRIC] [--color PATH] -o sweep.png
@@ -80,9 +81,9 @@ std::string Script(const Arguments& args, const PlotOptions& options) {
 }  // namespace
 
 int PlotCommand(int argc, char** argv) {
-  const Arguments args = Parse(argc, argv, 2,
-                               {"-o", "--title", "--size", "--script", "--curves", "--x", "--y", "--color"},
-                               {"--help", "-h"});
+  const Arguments args = Parse(
+      argc, argv, 2, {"-o", "--title", "--size", "--script", "--curves", "--x", "--y", "--color"},
+      {"--help", "-h"});
   if (args.Has("--help") || args.Has("-h")) {
     std::cout << kHelp;
     return kExitSuccess;

@@ -20,7 +20,8 @@ namespace musclesim::cli {
 
 namespace {
 
-constexpr const char* kHelp = R"(usage: musclesim run SCENARIO.yaml [-o PATH] [--set KEY=VALUE ...] [--sensitivity PATH ...]
+constexpr const char* kHelp =
+    R"(usage: musclesim run SCENARIO.yaml [-o PATH] [--set KEY=VALUE ...] [--sensitivity PATH ...]
                      [--stats PATH] [--quiet]
 
 Integrates the scenario's dynamics with CVODE and writes the trajectory CSV. A single
@@ -90,8 +91,8 @@ class PeakSpeeds final : public NetworkSink {
       // the single actuator is the scenario's only one: its note names none
       const std::string who =
           scenario_.form == ScenarioForm::kActuator ? "" : " of " + element.name;
-      notes.push_back("note: |shortening velocity|" + who + " reached " +
-                      FormatNumber(w.speed) + " m/s, beyond v_max = " + FormatNumber(v_max) +
+      notes.push_back("note: |shortening velocity|" + who + " reached " + FormatNumber(w.speed) +
+                      " m/s, beyond v_max = " + FormatNumber(v_max) +
                       " m/s, where g(v) is the paper's power law extrapolated");
     }
     return notes;
@@ -171,14 +172,15 @@ int RunSensitivities(const Arguments& args, const Scenario& scenario,
 }  // namespace
 
 int RunCommand(int argc, char** argv) {
-  const Arguments args =
-      Parse(argc, argv, 2, {"-o", "--set", "--stats", "--sensitivity"}, {"--quiet", "--help", "-h"});
+  const Arguments args = Parse(argc, argv, 2, {"-o", "--set", "--stats", "--sensitivity"},
+                               {"--quiet", "--help", "-h"});
   if (args.Has("--help") || args.Has("-h")) {
     std::cout << kHelp;
     return kExitSuccess;
   }
   if (args.positional.size() != 1) throw UsageError("expected one scenario file (see --help)");
-  const Scenario scenario = LoadScenario(args.positional[0], Overrides(args.List("--set"), "--set"));
+  const Scenario scenario =
+      LoadScenario(args.positional[0], Overrides(args.List("--set"), "--set"));
   // a scenario's own `sensitivities:` asks for them too
   const std::vector<std::string> parameters = args.List("--sensitivity");
   if (!parameters.empty() || !scenario.sensitivities.empty()) {

@@ -35,8 +35,7 @@ int FinishRun(const Arguments& args, StreamedOutput& csv, const RunStats& stats,
   }
   if (stats.status == RunStatus::kFailed) {
     const std::string& partial = csv.written_path();
-    std::cerr << "musclesim run: " << outcome.label << ": solver failure: " << stats.message
-              << "\n"
+    std::cerr << "musclesim run: " << outcome.label << ": solver failure: " << stats.message << "\n"
               << "musclesim run: the " << outcome.rows << " rows computed so far are in "
               << (partial == "-" ? std::string("standard output") : partial)
               << (csv.in_place() ? "" : "; " + outcome.output + " was left as it was") << "\n";
@@ -48,10 +47,10 @@ int FinishRun(const Arguments& args, StreamedOutput& csv, const RunStats& stats,
     for (const std::string& note : outcome.notes) std::cerr << "musclesim run: " << note << "\n";
     if (stats.status == RunStatus::kLimit) std::cerr << "musclesim run: " << stats.message << "\n";
     std::cerr << "musclesim run: " << outcome.label << ": " << ToString(stats.status)
-              << " at t = " << FormatNumber(stats.final_time) << " s: " << stats.steps
-              << " steps, " << stats.rhs_evals << " RHS evaluations, "
-              << stats.wall_seconds * 1e3 << " ms, " << ToString(stats.linear_solver)
-              << " linear solver, " << outcome.result << " -> " << outcome.output << "\n";
+              << " at t = " << FormatNumber(stats.final_time) << " s: " << stats.steps << " steps, "
+              << stats.rhs_evals << " RHS evaluations, " << stats.wall_seconds * 1e3 << " ms, "
+              << ToString(stats.linear_solver) << " linear solver, " << outcome.result << " -> "
+              << outcome.output << "\n";
   }
   return kExitSuccess;
 }

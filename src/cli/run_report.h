@@ -18,11 +18,11 @@ std::string RunOutputPath(const Arguments& args, const std::string& file,
                           const std::string& source);
 
 struct RunOutcome {
-  std::string label;               // the scenario's name, or its file
-  std::string output;              // the CSV's path as given ("-": standard output)
-  long rows = 0;                   // rows written so far
-  std::string result;              // the summary's last item before " -> output"
-  std::vector<std::string> notes;  // lines printed before the summary unless --quiet
+  std::string label;                           // the scenario's name, or its file
+  std::string output;                          // the CSV's path as given ("-": standard output)
+  long rows = 0;                               // rows written so far
+  std::string result;                          // the summary's last item before " -> output"
+  std::vector<std::string> notes;              // lines printed before the summary unless --quiet
   std::vector<SensitivityNote> sensitivities;  // a run with sensitivities: for --stats
 };
 

@@ -19,7 +19,8 @@ namespace musclesim::cli {
 
 namespace {
 
-constexpr const char* kHelp = R"(usage: musclesim sweep SWEEP.yaml [-o PATH] [--jobs N] [--resume] [--quiet]
+constexpr const char* kHelp =
+    R"(usage: musclesim sweep SWEEP.yaml [-o PATH] [--jobs N] [--resume] [--quiet]
 
 Runs every point of the sweep (a base scenario with values overridden at dotted paths) and
 writes one summary CSV: index, one column per swept path, status (ok, failed, or invalid),
@@ -85,7 +86,8 @@ SweepOutcome RunSweepCommand(const MpiSession& mpi, const SweepPlan& plan,
   try {
     return mpi.active() ? RunSweepMpi(plan, options) : RunSweep(plan, options);
   } catch (const InterruptedSweepError& e) {
-    throw InputError(e.partial_path() + " exists: an earlier sweep was interrupted. Pass "
+    throw InputError(e.partial_path() +
+                     " exists: an earlier sweep was interrupted. Pass "
                      "--resume to continue it, or delete the file to start again");
   }
 }

@@ -34,8 +34,7 @@ void CheckShape(const ModelPoint& m, Eigen::Index n, Eigen::Index p) {
     throw std::logic_error("identify: the model returned " + std::to_string(m.predictions.size()) +
                            " predictions and a " + std::to_string(m.jacobian.rows()) + " x " +
                            std::to_string(m.jacobian.cols()) + " Jacobian for " +
-                           std::to_string(n) + " values and " + std::to_string(p) +
-                           " parameters");
+                           std::to_string(n) + " values and " + std::to_string(p) + " parameters");
   }
 }
 
@@ -173,8 +172,7 @@ std::optional<Stop> StopAtIterate(const BoundedLeastSquaresProblem& problem,
 // Converged when even the undamped (Gauss-Newton) step is negligible, in size or in what it
 // would gain.
 std::optional<Stop> StopAtGaussNewtonStep(const BoundedLeastSquaresProblem& problem,
-                                          const LeastSquaresOptions& options,
-                                          const Iterate& it,
+                                          const LeastSquaresOptions& options, const Iterate& it,
                                           const std::vector<Eigen::Index>& free,
                                           const Eigen::VectorXd& scaling) {
   const Eigen::VectorXd full_step = ProjectedStep(it.jr, it.r, it.x, free, 0.0, scaling, problem);
@@ -183,8 +181,9 @@ std::optional<Stop> StopAtGaussNewtonStep(const BoundedLeastSquaresProblem& prob
   }
   if (it.cost - (it.r + it.jr * full_step).squaredNorm() <=
       options.improvement_tolerance * it.cost) {
-    return Stop{true, "the Gauss-Newton step would lower the cost by less than the "
-                      "improvement tolerance"};
+    return Stop{true,
+                "the Gauss-Newton step would lower the cost by less than the "
+                "improvement tolerance"};
   }
   return std::nullopt;
 }

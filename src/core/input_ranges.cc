@@ -12,9 +12,9 @@ double TimeScale(double t_start, double t_end) {
 }
 
 std::string InputRange::Rule() const {
-  const std::string bounds =
-      min_exclusive ? "must be > " + FormatNumber(min) + " and <= " + FormatNumber(max)
-                    : "must be from " + FormatNumber(min) + " to " + FormatNumber(max);
+  const std::string bounds = min_exclusive
+                                 ? "must be > " + FormatNumber(min) + " and <= " + FormatNumber(max)
+                                 : "must be from " + FormatNumber(min) + " to " + FormatNumber(max);
   return bounds + " [" + unit + "]: " + why;
 }
 

@@ -14,8 +14,10 @@ std::optional<std::vector<KeyPathStep>> SplitKeyPath(const std::string& path) {
       const std::string digits = path.substr(pos + 1, close - pos - 1);
       if (digits.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
       std::size_t index = 0;
-      const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), index);
-      if (error != std::errc() || end != digits.data() + digits.size() || index > kMaxKeyPathIndex) {
+      const auto [end, error] =
+          std::from_chars(digits.data(), digits.data() + digits.size(), index);
+      if (error != std::errc() || end != digits.data() + digits.size() ||
+          index > kMaxKeyPathIndex) {
         return std::nullopt;
       }
       steps.push_back({"", index});

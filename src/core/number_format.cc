@@ -20,8 +20,6 @@ std::string ToChars(double value, Format... format) {
 
 std::string FormatNumber(double value) { return ToChars(value); }
 
-std::string FormatFull(double value) {
-  return ToChars(value, std::chars_format::general, 17);
-}
+std::string FormatFull(double value) { return ToChars(value, std::chars_format::general, 17); }
 
 }  // namespace musclesim

@@ -15,8 +15,8 @@ void Validate(const ActivationDynamics& d) {
                            "(give the activation itself), longer is no muscle-like actuator";
   for (const auto& [key, value] : {std::pair{"tau_activation", d.tau_activation},
                                    std::pair{"tau_deactivation", d.tau_deactivation}}) {
-    Require(value >= kMinActivationTimeConstant && value <= kMaxActivationTimeConstant, key,
-            value, rule);
+    Require(value >= kMinActivationTimeConstant && value <= kMaxActivationTimeConstant, key, value,
+            rule);
   }
 }
 

@@ -69,8 +69,8 @@ ActuatorSystem::ActuatorSystem(std::shared_ptr<const TensionModel> model,
 
 ActuatorSystem::ActuatorSystem(const ModelParams& model, const ActuatorParams& actuator,
                                Waveform activation, std::vector<Load> loads)
-    : ActuatorSystem(std::make_shared<const TensionModel>(model), actuator,
-                     std::move(activation), std::move(loads)) {}
+    : ActuatorSystem(std::make_shared<const TensionModel>(model), actuator, std::move(activation),
+                     std::move(loads)) {}
 
 ActuatorSystem::ActuatorSystem(std::shared_ptr<const TensionModel> model,
                                const ActuatorParams& actuator, ExcitationInput excitation,
@@ -84,8 +84,8 @@ ActuatorSystem::ActuatorSystem(std::shared_ptr<const TensionModel> model,
 
 ActuatorSystem::ActuatorSystem(const ModelParams& model, const ActuatorParams& actuator,
                                ExcitationInput excitation, std::vector<Load> loads)
-    : ActuatorSystem(std::make_shared<const TensionModel>(model), actuator,
-                     std::move(excitation), std::move(loads)) {}
+    : ActuatorSystem(std::make_shared<const TensionModel>(model), actuator, std::move(excitation),
+                     std::move(loads)) {}
 
 ActuatorSample ActuatorSystem::Observe(double t, double x, double xdot) const {
   ActuatorSample s;
@@ -110,8 +110,8 @@ ActuatorSample ActuatorSystem::Observe(double t, double x, double xdot, double u
 }
 
 std::vector<double> ActuatorSystem::Breakpoints(double t0, double t1) const {
-  std::vector<double> times = excitation_ ? excitation_->signal.Breakpoints(t0, t1)
-                                         : activation_.Breakpoints(t0, t1);
+  std::vector<double> times =
+      excitation_ ? excitation_->signal.Breakpoints(t0, t1) : activation_.Breakpoints(t0, t1);
   const std::vector<double> load_times = loads_.Breakpoints(t0, t1);
   times.insert(times.end(), load_times.begin(), load_times.end());
   SortUnique(times);

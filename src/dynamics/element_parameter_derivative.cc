@@ -80,8 +80,7 @@ std::unique_ptr<ParameterDerivative> ElementParameterDerivative(const NetworkSys
     case ElementKind::kDamper:
       if (path == "damping") return make(ElementParameter::kDamping);
       break;
-    case ElementKind::kActuator:
-      break;
+    case ElementKind::kActuator: break;
   }
   return nullptr;
 }

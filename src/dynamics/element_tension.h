@@ -10,14 +10,14 @@
 namespace musclesim {
 
 inline NetworkSystem::Tension NetworkSystem::TensionOf(int e, double t, double l, double ldot,
-                                                const double* y) const {
+                                                       const double* y) const {
   const Element& element = elements_[e];
   switch (element.kind) {
     case ElementKind::kActuator: {
       const int state = links_[e].activation;
-      const double u = state >= 0                ? y[state]
-                       : links_[e].loop >= 0     ? ControlOutput(e, t, y)
-                                                 : element.activation.Evaluate(t);
+      const double u = state >= 0            ? y[state]
+                       : links_[e].loop >= 0 ? ControlOutput(e, t, y)
+                                             : element.activation.Evaluate(t);
       const TensionSample s = element.model->Evaluate(l, -ldot, u);
       return {s.total, s.d_length, -s.d_velocity, s.d_activation};  // v = -ldot
     }
@@ -32,8 +32,7 @@ inline NetworkSystem::Tension NetworkSystem::TensionOf(int e, double t, double l
       const double grow = std::exp(element.alpha * stretch);
       return {element.k * (grow - 1.0), element.k * element.alpha * grow, 0.0, 0.0};
     }
-    case ElementKind::kDamper:
-      return {element.damping * ldot, 0.0, element.damping, 0.0};
+    case ElementKind::kDamper: return {element.damping * ldot, 0.0, element.damping, 0.0};
   }
   return {0.0, 0.0, 0.0, 0.0};
 }

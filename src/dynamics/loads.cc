@@ -10,12 +10,10 @@ namespace musclesim {
 
 void Validate(const Load& load) {
   switch (load.kind) {
-    case LoadKind::kForce:
-      Validate(load.force);
-      break;
+    case LoadKind::kForce: Validate(load.force); break;
     case LoadKind::kSpring:
-      Require(std::isfinite(load.stiffness) && load.stiffness >= 0.0, "stiffness",
-              load.stiffness, "must be finite and >= 0 [N/m]");
+      Require(std::isfinite(load.stiffness) && load.stiffness >= 0.0, "stiffness", load.stiffness,
+              "must be finite and >= 0 [N/m]");
       Require(std::isfinite(load.anchor), "anchor", load.anchor, "must be finite [m]");
       break;
     case LoadKind::kMass:
@@ -61,9 +59,7 @@ LoadSet::LoadSet(std::vector<Load> loads) : loads_(std::move(loads)) {
   }
   for (const Load& load : loads_) {
     switch (load.kind) {
-      case LoadKind::kForce:
-        forces_.push_back(load.force);
-        break;
+      case LoadKind::kForce: forces_.push_back(load.force); break;
       case LoadKind::kSpring:
         spring_stiffness_ += load.stiffness;
         spring_pull_ += load.stiffness * load.anchor;

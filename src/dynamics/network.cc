@@ -30,12 +30,13 @@ void ValidateEntry(const Part& part, const char* list, std::size_t i) {
 template <typename Part>
 void RequireUniqueNames(const std::vector<Part>& parts, const char* list) {
   for (std::size_t i = 0; i < parts.size(); ++i) {
-    if (parts[i].name.empty()) throw ParameterError(Entry(list, i, "name"), "", "must not be empty");
+    if (parts[i].name.empty())
+      throw ParameterError(Entry(list, i, "name"), "", "must not be empty");
     for (std::size_t j = 0; j < i; ++j) {
       if (parts[j].name == parts[i].name) {
-        throw ParameterError(Entry(list, i, "name"), parts[i].name,
-                             "must be unique: " + std::string(list) + "[" + std::to_string(j) +
-                                 "] has it too");
+        throw ParameterError(
+            Entry(list, i, "name"), parts[i].name,
+            "must be unique: " + std::string(list) + "[" + std::to_string(j) + "] has it too");
       }
     }
   }
@@ -144,7 +145,10 @@ int NetworkSystem::NumberEnds() {
 void NetworkSystem::AddLink(std::size_t e, int& states) {
   const Element& element = elements_[e];
   Link link{NodeNamed(element.from, Entry("elements", e, "from")),
-            NodeNamed(element.to, Entry("elements", e, "to")), {}, -1, {-1, -1}};
+            NodeNamed(element.to, Entry("elements", e, "to")),
+            {},
+            -1,
+            {-1, -1}};
   if (link.from == link.to) {
     throw ParameterError(Entry("elements", e, "to"), element.to,
                          "must differ from `from`: an element joins two nodes");
@@ -313,33 +317,26 @@ void NetworkSystem::CheckLengths(double t, const double* y) const {
     if (!(l > 0.0)) {
       const Element& element = elements_[e];
       throw ParameterError("elements[" + std::to_string(e) + "]", element.name,
-                           "must be longer than 0 at the start: its length x(" + element.to + ") - x(" +
-                               element.from + ") is " + FormatNumber(l) +
-                               " m");
+                           "must be longer than 0 at the start: its length x(" + element.to +
+                               ") - x(" + element.from + ") is " + FormatNumber(l) + " m");
     }
   }
 }
 
 double NetworkSystem::PositionOf(const End& end, double t, const double* y) const {
   switch (end.kind) {
-    case NodeKind::kFree:
-      return y[end.state];
-    case NodeKind::kFixed:
-      return end.position;
-    case NodeKind::kPrescribed:
-      return nodes_[end.node].motion.Evaluate(t);
+    case NodeKind::kFree: return y[end.state];
+    case NodeKind::kFixed: return end.position;
+    case NodeKind::kPrescribed: return nodes_[end.node].motion.Evaluate(t);
   }
   return 0.0;
 }
 
 double NetworkSystem::VelocityOf(const End& end, double t, const double* y) const {
   switch (end.kind) {
-    case NodeKind::kFree:
-      return y[end.state + 1];
-    case NodeKind::kFixed:
-      return 0.0;
-    case NodeKind::kPrescribed:
-      return nodes_[end.node].motion.Slope(t);
+    case NodeKind::kFree: return y[end.state + 1];
+    case NodeKind::kFixed: return 0.0;
+    case NodeKind::kPrescribed: return nodes_[end.node].motion.Slope(t);
   }
   return 0.0;
 }
@@ -455,8 +452,7 @@ std::vector<double> NetworkSystem::Breakpoints(double t0, double t1) const {
   };
   for (const Element& e : elements_) {
     if (e.kind != ElementKind::kActuator || e.controlled) continue;
-    add(e.excitation ? e.excitation->signal.Breakpoints(t0, t1)
-                     : e.activation.Breakpoints(t0, t1));
+    add(e.excitation ? e.excitation->signal.Breakpoints(t0, t1) : e.activation.Breakpoints(t0, t1));
   }
   for (const Controller& c : controllers_) {
     add(c.reference.Breakpoints(t0, t1));
@@ -519,7 +515,7 @@ void NetworkSystem::Observe(double t, const double* y, NetworkSample& sample) co
 }
 
 NetworkSystem::ElementPartials NetworkSystem::Along(int e, double t, const double* y,
-                                                   const double* s) const {
+                                                    const double* s) const {
   const Link& link = links_[e];
   const End& a = ends_[link.from];
   const End& b = ends_[link.to];

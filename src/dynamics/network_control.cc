@@ -84,9 +84,9 @@ int NetworkSystem::DrivableActuator(std::size_t k, const char* key, const std::s
                          "names no element; the elements are: " + KnownNames(elements_));
   }
   if (elements_[e].kind != ElementKind::kActuator) {
-    throw ParameterError(Entry("controllers", k, key), name,
-                         "must name an actuator; it is a " +
-                             std::string(ToString(elements_[e].kind)));
+    throw ParameterError(
+        Entry("controllers", k, key), name,
+        "must name an actuator; it is a " + std::string(ToString(elements_[e].kind)));
   }
   if (!elements_[e].controlled) {
     throw ParameterError(Entry("controllers", k, key), name,
@@ -126,9 +126,9 @@ void NetworkSystem::RequireNoAlgebraicLoop(std::size_t k, const std::vector<int>
     // algebraic loop when it is this controller's, a chain of them otherwise
     throw ParameterError(
         Entry("controllers", k, "measure.element"), elements_[m].name,
-        (driver[m] == static_cast<int>(k) ? std::string("is the actuator this controller drives")
-                                          : "is driven by controllers[" +
-                                                std::to_string(driver[m]) + "]") +
+        (driver[m] == static_cast<int>(k)
+             ? std::string("is the actuator this controller drives")
+             : "is driven by controllers[" + std::to_string(driver[m]) + "]") +
             ", without activation dynamics: its tension would be an algebraic function of "
             "a controller's output; give it activation_dynamics (docs/model.md 11)");
   }
@@ -281,8 +281,7 @@ double NetworkSystem::ControlOutput(int e, double t, const double* y) const {
 }
 
 double NetworkSystem::ExcitationOf(int e, double t, const double* y) const {
-  return links_[e].loop >= 0 ? ControlOutput(e, t, y)
-                             : elements_[e].excitation->signal.Evaluate(t);
+  return links_[e].loop >= 0 ? ControlOutput(e, t, y) : elements_[e].excitation->signal.Evaluate(t);
 }
 
 double NetworkSystem::IntegralRate(const Command& command, double ki, double* by_state) const {
@@ -300,8 +299,8 @@ double NetworkSystem::IntegralRate(const Command& command, double ki, double* by
     weight_by_value = (push > 0.0 ? -1.0 : 1.0) / kIntegralFadeBand;
   }
   for (int i = 0; i < kLoopColumns; ++i) {
-    by_state[i] = weight * command.error_by_state[i] +
-                  command.error * weight_by_value * command.by_state[i];
+    by_state[i] =
+        weight * command.error_by_state[i] + command.error * weight_by_value * command.by_state[i];
   }
   return weight * command.error;
 }
@@ -363,8 +362,8 @@ void NetworkSystem::ObserveControllers(double t, const double* y, NetworkSample&
     out.reference = command.reference;
     out.measured = command.measured;
     out.error = command.error;
-    out.output = controllers_[k].co_contraction ? command.value
-                                                : std::clamp(command.value, 0.0, 1.0);
+    out.output =
+        controllers_[k].co_contraction ? command.value : std::clamp(command.value, 0.0, 1.0);
   }
 }
 

@@ -34,9 +34,7 @@ void Validate(const Node& node) {
     case NodeKind::kFixed:
       Require(std::isfinite(node.position), "fixed", node.position, "must be finite [m]");
       break;
-    case NodeKind::kPrescribed:
-      try {
-        Validate(node.motion);
+    case NodeKind::kPrescribed: try { Validate(node.motion);
       } catch (const ParameterError& e) {
         throw ParameterError("prescribed." + e.path(), e.value(), e.rule());
       }

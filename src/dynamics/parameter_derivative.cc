@@ -25,7 +25,8 @@ void DifferenceQuotientDerivative::RightHandSide(double t, const double* y, doub
 void DifferenceQuotientDerivative::RefineRate(double t, const double* y, const double* s,
                                               double* rate) const {
   const std::size_t n = scratch_.size();
-  const std::size_t first = n - static_cast<std::size_t>(stencil_.front().system->activation_count());
+  const std::size_t first =
+      n - static_cast<std::size_t>(stencil_.front().system->activation_count());
   if (first == n) return;
   for (std::size_t i = first; i < n; ++i) rate[i] = 0.0;
   std::copy(y, y + n, shifted_.begin());

@@ -12,12 +12,9 @@
 namespace musclesim {
 
 constexpr EnumName<WaveformKind> kWaveformNames[] = {
-    {WaveformKind::kConstant, "constant"},
-    {WaveformKind::kStep, "step"},
-    {WaveformKind::kRamp, "ramp"},
-    {WaveformKind::kSine, "sine"},
-    {WaveformKind::kPulses, "pulses"},
-    {WaveformKind::kTable, "table"},
+    {WaveformKind::kConstant, "constant"}, {WaveformKind::kStep, "step"},
+    {WaveformKind::kRamp, "ramp"},         {WaveformKind::kSine, "sine"},
+    {WaveformKind::kPulses, "pulses"},     {WaveformKind::kTable, "table"},
 };
 
 std::string_view ToString(WaveformKind kind) { return ToString(kWaveformNames, kind); }
@@ -28,10 +25,8 @@ WaveformKind ParseWaveformKind(std::string_view text) {
 
 double Waveform::Evaluate(double t) const {
   switch (kind) {
-    case WaveformKind::kConstant:
-      return value;
-    case WaveformKind::kStep:
-      return t < time ? before : after;
+    case WaveformKind::kConstant: return value;
+    case WaveformKind::kStep: return t < time ? before : after;
     case WaveformKind::kRamp:
       if (t <= start) return from;
       if (t >= end) return to;
@@ -60,10 +55,8 @@ double Waveform::Slope(double t) const {
   switch (kind) {
     case WaveformKind::kConstant:
     case WaveformKind::kStep:
-    case WaveformKind::kPulses:
-      return 0.0;
-    case WaveformKind::kRamp:
-      return t >= start && t < end ? (to - from) / (end - start) : 0.0;
+    case WaveformKind::kPulses: return 0.0;
+    case WaveformKind::kRamp: return t >= start && t < end ? (to - from) / (end - start) : 0.0;
     case WaveformKind::kSine: {
       const double omega = 2.0 * std::numbers::pi * frequency;
       return amplitude * omega * std::cos(omega * t + phase);
@@ -87,11 +80,8 @@ std::vector<double> Waveform::Breakpoints(double t0, double t1) const {
   };
   switch (kind) {
     case WaveformKind::kConstant:
-    case WaveformKind::kSine:
-      break;
-    case WaveformKind::kStep:
-      add(time);
-      break;
+    case WaveformKind::kSine: break;
+    case WaveformKind::kStep: add(time); break;
     case WaveformKind::kRamp:
       add(start);
       add(end);
@@ -143,9 +133,7 @@ void Validate(const Waveform& w) {
     Require(std::isfinite(v), key, v, "must be finite");
   };
   switch (w.kind) {
-    case WaveformKind::kConstant:
-      finite("value", w.value);
-      break;
+    case WaveformKind::kConstant: finite("value", w.value); break;
     case WaveformKind::kStep:
       finite("time", w.time);
       finite("before", w.before);
@@ -179,8 +167,7 @@ void Validate(const Waveform& w) {
       for (std::size_t i = 0; i < w.points.size(); ++i) {
         const std::string at = "points[" + std::to_string(i) + "]";
         Require(std::isfinite(w.points[i].t), at + "[0]", w.points[i].t, "must be finite");
-        Require(std::isfinite(w.points[i].value), at + "[1]", w.points[i].value,
-                "must be finite");
+        Require(std::isfinite(w.points[i].value), at + "[1]", w.points[i].value, "must be finite");
         if (i > 0) {
           Require(w.points[i].t > w.points[i - 1].t, at + "[0]", w.points[i].t,
                   "table times must be strictly increasing (previous t = " +
@@ -202,14 +189,23 @@ void ValidateUnitInterval(const Waveform& w, const std::string& what) {
   };
   switch (w.kind) {
     case WaveformKind::kConstant: unit("value", w.value); break;
-    case WaveformKind::kStep: unit("before", w.before); unit("after", w.after); break;
-    case WaveformKind::kRamp: unit("from", w.from); unit("to", w.to); break;
+    case WaveformKind::kStep:
+      unit("before", w.before);
+      unit("after", w.after);
+      break;
+    case WaveformKind::kRamp:
+      unit("from", w.from);
+      unit("to", w.to);
+      break;
     case WaveformKind::kSine:
       Require(w.offset - std::abs(w.amplitude) >= 0.0 && w.offset + std::abs(w.amplitude) <= 1.0,
               "amplitude", w.amplitude,
               rule + ": offset = " + FormatNumber(w.offset) + " -+ |amplitude| leaves it");
       break;
-    case WaveformKind::kPulses: unit("low", w.low); unit("high", w.high); break;
+    case WaveformKind::kPulses:
+      unit("low", w.low);
+      unit("high", w.high);
+      break;
     case WaveformKind::kTable:
       for (std::size_t i = 0; i < w.points.size(); ++i) {
         unit("points[" + std::to_string(i) + "][1]", w.points[i].value);

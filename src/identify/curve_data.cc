@@ -13,8 +13,8 @@ namespace curve_rules {
 
 void RequireEnoughPoints(const std::string& source, std::size_t rows, std::size_t min_points) {
   if (rows < min_points) {
-    throw InputError(source + ": too few points: " + std::to_string(rows) +
-                     ", need at least " + std::to_string(min_points));
+    throw InputError(source + ": too few points: " + std::to_string(rows) + ", need at least " +
+                     std::to_string(min_points));
   }
 }
 
@@ -25,9 +25,11 @@ void RequireRow(const std::string& where, const std::string& x_name, const std::
                      FormatNumber(p.y) + ": values must be finite");
   }
   if (!before.empty() && !(p.x > before.back().x)) {
-    throw InputError(where + x_name + " = " + FormatNumber(p.x) + " is not greater than the row "
-                     "before (" + FormatNumber(before.back().x) + "): rows must be sorted by " +
-                     x_name + ", without duplicates");
+    throw InputError(where + x_name + " = " + FormatNumber(p.x) +
+                     " is not greater than the row "
+                     "before (" +
+                     FormatNumber(before.back().x) + "): rows must be sorted by " + x_name +
+                     ", without duplicates");
   }
 }
 

@@ -37,9 +37,9 @@ ModelYamlPart<PassiveParams> DraftPassive(const std::optional<PassiveIdentificat
   if (passive) {
     part.params =
         PassiveParams{passive->k_p.value, passive->alpha.value, passive->slack_length.value};
-    part.comments = {"k_p = " + PlusMinus(passive->k_p) + " N, alpha = " +
-                     PlusMinus(passive->alpha) + " 1/m, slack_length = " +
-                     PlusMinus(passive->slack_length) + " m; RMSE " +
+    part.comments = {"k_p = " + PlusMinus(passive->k_p) +
+                     " N, alpha = " + PlusMinus(passive->alpha) +
+                     " 1/m, slack_length = " + PlusMinus(passive->slack_length) + " m; RMSE " +
                      FormatNumber(passive->rmse) + " N"};
     for (const std::string& note : PassiveUncertaintyNotes(*passive, FormatNumber)) {
       part.comments.push_back(note);
@@ -51,17 +51,16 @@ ModelYamlPart<PassiveParams> DraftPassive(const std::optional<PassiveIdentificat
 }
 
 // The active_length part and its comment per Gaussian.
-void DraftActiveLength(const std::optional<ActiveIdentification>& active,
-                       ModelYamlDraft& draft) {
+void DraftActiveLength(const std::optional<ActiveIdentification>& active, ModelYamlDraft& draft) {
   if (active) {
     draft.active_length.params = active->curve;
     draft.active_length.comments = {
         "optimal_range: where the fitted curve is within 2% of its maximum; RMSE " +
         FormatNumber(active->rmse) + " N"};
     for (std::size_t k = 0; k < active->curve.gaussians.size(); ++k) {
-      draft.gaussian_comments.push_back(
-          "amplitude " + PlusMinus(active->amplitudes[k]) + ", width " +
-          PlusMinus(active->precisions[k]) + ", center " + PlusMinus(active->centers[k]));
+      draft.gaussian_comments.push_back("amplitude " + PlusMinus(active->amplitudes[k]) +
+                                        ", width " + PlusMinus(active->precisions[k]) +
+                                        ", center " + PlusMinus(active->centers[k]));
     }
   } else {
     draft.active_length.comments = {"not identified: one Gaussian a kilometre wide, a flat f_L"};
@@ -89,8 +88,7 @@ struct VelocityDraft {
 };
 
 // The identified eccentric branch put in; epsilon kept below the smaller v_max.
-void DraftEccentric(const EccentricIdentification& e, double concentric_v_max,
-                    VelocityDraft& v) {
+void DraftEccentric(const EccentricIdentification& e, double concentric_v_max, VelocityDraft& v) {
   v.params.eccentric = {e.best.v_max.value, e.best.n, std::nullopt};
   if (e.limit_identified) v.params.eccentric.limit = e.best.limit.value;
   // eps must not exceed either v_max (the model's rule)
@@ -98,8 +96,8 @@ void DraftEccentric(const EccentricIdentification& e, double concentric_v_max,
     v.params.epsilon = StandInEpsilon(e.best.v_max.value);
     v.epsilon_rule = "1e-3 times the eccentric v_max, the smaller";
   }
-  v.eccentric_comments.push_back(OtherExponents(
-      "other eccentric n:", e.limit_identified ? e.bounded : e.unbounded, e.best.n));
+  v.eccentric_comments.push_back(
+      OtherExponents("other eccentric n:", e.limit_identified ? e.bounded : e.unbounded, e.best.n));
 }
 
 ModelYamlPart<VelocityParams> DraftVelocity(const VelocityIdentification& velocity) {
@@ -118,15 +116,13 @@ ModelYamlPart<VelocityParams> DraftVelocity(const VelocityIdentification& veloci
     v.params.eccentric = {};
     v.params.epsilon = StandInEpsilon(best.v_max.value);
     v.epsilon_rule = "1e-3 v_max";
-    v.eccentric_comments.push_back("eccentric branch left out: it gives velocity." +
-                                   error.path() + " = " + error.value() + ", which " +
-                                   error.rule());
+    v.eccentric_comments.push_back("eccentric branch left out: it gives velocity." + error.path() +
+                                   " = " + error.value() + ", which " + error.rule());
   }
   ModelYamlPart<VelocityParams> part;
   part.params = v.params;
-  part.comments = {"v_max = " + PlusMinus(best.v_max) + " m/s, RMSE " +
-                       FormatNumber(best.rmse) + " N; epsilon is not identified (" +
-                       v.epsilon_rule + ")",
+  part.comments = {"v_max = " + PlusMinus(best.v_max) + " m/s, RMSE " + FormatNumber(best.rmse) +
+                       " N; epsilon is not identified (" + v.epsilon_rule + ")",
                    others};
   part.comments.insert(part.comments.end(), v.eccentric_comments.begin(),
                        v.eccentric_comments.end());

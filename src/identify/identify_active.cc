@@ -15,7 +15,8 @@ namespace musclesim {
 using identify_detail::Covariance;
 using identify_detail::Rmse;
 
-ActiveIdentification IdentifyActive(const std::vector<DataPoint>& data, int count, bool nonnegative) {
+ActiveIdentification IdentifyActive(const std::vector<DataPoint>& data, int count,
+                                    bool nonnegative) {
   double top = 0.0;
   for (const DataPoint& d : data) top = std::max(top, std::abs(d.y));
   FitSpec spec;
@@ -45,7 +46,10 @@ ActiveIdentification IdentifyActive(const std::vector<DataPoint>& data, int coun
   double l1 = peak.x, l2 = peak.x;
   while (l1 - step >= data.front().x && sum.Value(l1 - step) >= 0.98 * peak.value) l1 -= step;
   while (l2 + step <= data.back().x && sum.Value(l2 + step) >= 0.98 * peak.value) l2 += step;
-  if (!(l2 > l1)) { l1 = peak.x - 1e-6 * span; l2 = peak.x + 1e-6 * span; }
+  if (!(l2 > l1)) {
+    l1 = peak.x - 1e-6 * span;
+    l2 = peak.x + 1e-6 * span;
+  }
   out.curve.optimal_min = l1;
   out.curve.optimal_max = l2;
   out.sum = GaussianSum(out.curve.gaussians, out.curve.sigma);
@@ -83,7 +87,8 @@ ActiveIdentification IdentifyActive(const std::vector<DataPoint>& data, int coun
       double& value = j < m ? g.amplitude : (j < 2 * m ? g.precision : g.center);
       const double h = 1e-6 * std::max(std::abs(value), j < 2 * m ? 1e-12 : span);
       value += sign * h;
-      return std::make_pair(MaximumOnInterval(GaussianSum(gs, 1.0), data.front().x, data.back().x).value, h);
+      return std::make_pair(
+          MaximumOnInterval(GaussianSum(gs, 1.0), data.front().x, data.back().x).value, h);
     };
     const auto [up, h] = shifted(1.0);
     const auto [down, h2] = shifted(-1.0);

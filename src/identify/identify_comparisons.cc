@@ -14,10 +14,10 @@ template <typename Fit>
 std::vector<std::pair<std::string, Fitter>> WithModel(const std::string& name, Fit fit) {
   auto models = ReferenceFitters();
   models.insert(models.begin(), {name, [fit](const std::vector<DataPoint>& d) {
-    auto identified = fit(d);
-    return std::function<double(double)>(
-        [identified](double x) { return identified.Evaluate(x); });
-  }});
+                                   auto identified = fit(d);
+                                   return std::function<double(double)>(
+                                       [identified](double x) { return identified.Evaluate(x); });
+                                 }});
   return models;
 }
 
@@ -25,10 +25,10 @@ std::vector<std::pair<std::string, Fitter>> WithModel(const std::string& name, F
 
 CurveComparison ComparePassiveFit(const std::vector<DataPoint>& data,
                                   const PassiveIdentification& fit) {
-  CurveComparison c =
-      Compare("passive tension-length", "length units of the CSV", data,
-              WithModel("exponential (eq. 1)",
-                        [](const std::vector<DataPoint>& d) { return IdentifyPassive(d); }));
+  CurveComparison c = Compare("passive tension-length", "length units of the CSV", data,
+                              WithModel("exponential (eq. 1)", [](const std::vector<DataPoint>& d) {
+                                return IdentifyPassive(d);
+                              }));
   // the report's tables print 4 significant digits; its notes alike
   const std::vector<std::string> notes = PassiveUncertaintyNotes(fit, [](double x) {
     char text[32];
@@ -49,11 +49,10 @@ CurveComparison CompareActiveFit(const std::vector<DataPoint>& data, int count, 
 
 CurveComparison CompareVelocityFit(const std::vector<DataPoint>& data, std::optional<double> f_iso,
                                    const VelocityIdentification& fit) {
-  CurveComparison c =
-      Compare("tension-velocity", "shortening velocity units of the CSV", data,
-              WithModel("power law (eq. 12)", [f_iso](const std::vector<DataPoint>& d) {
-                return IdentifyVelocity(d, f_iso);
-              }));
+  CurveComparison c = Compare(
+      "tension-velocity", "shortening velocity units of the CSV", data,
+      WithModel("power law (eq. 12)",
+                [f_iso](const std::vector<DataPoint>& d) { return IdentifyVelocity(d, f_iso); }));
   if (fit.eccentric) {
     const std::vector<std::string> notes = DescribeEccentric(*fit.eccentric);
     c.notes.insert(c.notes.end(), notes.begin(), notes.end());

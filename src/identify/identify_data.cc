@@ -16,8 +16,8 @@ std::vector<DataPoint> ReadCurveCsv(const std::string& path, const std::string& 
   // row by row, so that of two faults the first in the file is the one reported
   for (std::size_t r = 0; r < table.rows.size(); ++r) {
     const DataPoint p{table.Number(r, xc), table.Number(r, yc)};
-    curve_rules::RequireRow(path + ":" + std::to_string(table.lines[r]) + ": ", x_name, y_name,
-                            p, data);
+    curve_rules::RequireRow(path + ":" + std::to_string(table.lines[r]) + ": ", x_name, y_name, p,
+                            data);
     data.push_back(p);
   }
   curve_rules::RequireSomeTension(path, y_name, data);

@@ -18,9 +18,9 @@ namespace musclesim::identify_detail {
 
 namespace {
 
-constexpr int kMaxExponent = 10;              // n_e = 1..10, the concentric scan's range
-constexpr std::size_t kMinPoints = 3;         // v_max_e and n_e, with two degrees of freedom
-constexpr std::size_t kMinLimitPoints = 4;    // and L: two parameters, two degrees of freedom
+constexpr int kMaxExponent = 10;            // n_e = 1..10, the concentric scan's range
+constexpr std::size_t kMinPoints = 3;       // v_max_e and n_e, with two degrees of freedom
+constexpr std::size_t kMinLimitPoints = 4;  // and L: two parameters, two degrees of freedom
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // m(psi, q) = tanh(sqrt(q) psi) / sqrt(q) (psi itself at q = 0), the excess g - 1, with its
@@ -103,8 +103,7 @@ Eigen::MatrixXd ParameterCovariance(const Linearisation& at, double f_iso_varian
   Eigen::MatrixXd cov = Covariance(at.jacobian, at.rss());
   if (f_iso_variance > 0.0) {
     const Eigen::MatrixXd normal = at.jacobian.transpose() * at.jacobian;
-    const Eigen::VectorXd sensitivity =
-        -normal.ldlt().solve(at.jacobian.transpose() * at.by_f_iso);
+    const Eigen::VectorXd sensitivity = -normal.ldlt().solve(at.jacobian.transpose() * at.by_f_iso);
     cov += f_iso_variance * sensitivity * sensitivity.transpose();
   }
   return cov;
@@ -218,8 +217,7 @@ struct ExponentScan {
 };
 
 ExponentScan FitEveryExponent(const std::vector<DataPoint>& lengthening,
-                              const Eigen::VectorXd& tension, double f_iso,
-                              double f_iso_variance) {
+                              const Eigen::VectorXd& tension, double f_iso, double f_iso_variance) {
   ExponentScan scan;
   const Eigen::Index k = tension.size();
   for (int n = 1; n <= kMaxExponent && k > 0; ++n) {
@@ -269,13 +267,12 @@ void DecideBranch(const std::vector<DataPoint>& lengthening, const Fit* free, co
 
 // Whether the branch's limit is identified too (out.limit_identified, out.best), or why not.
 // `rounding`: the residual sum of squares that is rounding alone [N^2].
-void DecideLimit(const Fit* free, const Fit* bound, double rounding,
-                 EccentricIdentification& out) {
+void DecideLimit(const Fit* free, const Fit* bound, double rounding, EccentricIdentification& out) {
   if (!out.identified) {
     out.why_no_limit = "the eccentric branch itself is not identified";
   } else if (out.points < kMinLimitPoints) {
-    out.why_no_limit = "too few eccentric points: " + PointCount(out.points) +
-                       ", need at least 4 for a limit too";
+    out.why_no_limit =
+        "too few eccentric points: " + PointCount(out.points) + ", need at least 4 for a limit too";
   } else if (!bound) {
     out.why_no_limit = "no bounded fit with the tension rising with the lengthening speed";
   } else if (!bound->full_rank) {

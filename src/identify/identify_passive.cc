@@ -85,11 +85,13 @@ ProfilePoint ProfileMinimum(const PassiveProfile& profile, const std::vector<Pro
   }
   // the scan always reaches a quarter spacing below the first data point
   const double below = best > 0 && std::isfinite(scan[best - 1].slack_length)
-                           ? scan[best - 1].slack_length : scan[best].slack_length;
-  const double above = best + 1 < scan.size() ? scan[best + 1].slack_length : scan[best].slack_length;
+                           ? scan[best - 1].slack_length
+                           : scan[best].slack_length;
+  const double above =
+      best + 1 < scan.size() ? scan[best + 1].slack_length : scan[best].slack_length;
   // to 1e-12 of the bracket: the joint fit that follows polishes the rest
-  const auto [x0, rss] = BrentMinimum(
-      [&](double x) { return profile.At(x).rss; }, below, above, 1e-12 * (above - below));
+  const auto [x0, rss] = BrentMinimum([&](double x) { return profile.At(x).rss; }, below, above,
+                                      1e-12 * (above - below));
   return rss < scan[best].rss ? profile.At(x0) : scan[best];
 }
 

@@ -68,9 +68,9 @@ ProfilePoint PassiveProfile::At(double slack_length) const {
       best_u = u;
     }
   }
-  const auto [u, rss] = BrentMinimum(
-      [&](double v) { return ProjectedRss(slack_length, v, c); },
-      std::max(log_alpha_low_, best_u - step), std::min(log_alpha_high_, best_u + step), 1e-9);
+  const auto [u, rss] = BrentMinimum([&](double v) { return ProjectedRss(slack_length, v, c); },
+                                     std::max(log_alpha_low_, best_u - step),
+                                     std::min(log_alpha_high_, best_u + step), 1e-9);
   const double log_alpha = rss <= best_rss ? u : best_u;
   ProjectedRss(slack_length, log_alpha, c);
 

@@ -39,7 +39,7 @@ class PassiveProfile {
   double ProjectedRss(double slack_length, double log_alpha, double& c) const;
 
   const std::vector<DataPoint>& data_;
-  double upper_limit_ = 0.0;   // [m]
+  double upper_limit_ = 0.0;     // [m]
   double log_alpha_low_ = 0.0;   // ln(alpha [1/m]) searched: alpha times the data's span
   double log_alpha_high_ = 0.0;  // from 1e-3 (a straight line) to 1e3 (only the last point)
 };

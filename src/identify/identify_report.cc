@@ -110,8 +110,9 @@ std::vector<std::string> PassiveUncertaintyNotes(const PassiveIdentification& fi
   interval += number(in.high);
   interval += in.high_bounded ? "] m (F test)" : ") m (F test)";
   if (!in.low_bounded) {
-    interval += "; not bounded below: the data reject no slack length however low (the curve "
-                "then tends to a pure exponential)";
+    interval +=
+        "; not bounded below: the data reject no slack length however low (the curve "
+        "then tends to a pure exponential)";
   }
   if (!in.high_bounded) {
     interval += "; not bounded above: it reaches ";
@@ -120,12 +121,13 @@ std::vector<std::string> PassiveUncertaintyNotes(const PassiveIdentification& fi
   }
   if (in.wide) {
     interval += "; wide (";
-    interval += in.low_bounded && in.high_bounded
-                    ? "more than " + Percent(ProfileInterval::kWideFraction) +
-                          " of the data's length span"
-                    : std::string("one-sided");
-    interval += "): the data place it only coarsely, and its +-, a linearisation at the "
-                "optimum, does not describe that";
+    interval +=
+        in.low_bounded && in.high_bounded
+            ? "more than " + Percent(ProfileInterval::kWideFraction) + " of the data's length span"
+            : std::string("one-sided");
+    interval +=
+        "): the data place it only coarsely, and its +-, a linearisation at the "
+        "optimum, does not describe that";
   }
   std::string carried = "k_p and alpha at the slack lengths inside that interval: k_p from ";
   carried += number(fit.k_p_over_interval.low);
@@ -151,9 +153,9 @@ std::vector<std::string> DescribeEccentric(const EccentricIdentification& e) {
             "; the model keeps the concentric v_max and n for it, and no limit"};
   }
   const std::string limit = e.limit_identified ? ", limit = " + plus_minus(e.best.limit) : "";
-  std::vector<std::string> notes = {"eccentric branch (" + points + "): v_max = " +
-                                    plus_minus(e.best.v_max) + " m/s, n = " +
-                                    std::to_string(e.best.n) + limit + "; RMSE " +
+  std::vector<std::string> notes = {"eccentric branch (" + points +
+                                    "): v_max = " + plus_minus(e.best.v_max) +
+                                    " m/s, n = " + std::to_string(e.best.n) + limit + "; RMSE " +
                                     FormatNumber(e.best.rmse) + " N"};
   if (!e.limit_identified) {
     notes.push_back("eccentric limit not identifiable from the data: " + e.why_no_limit +

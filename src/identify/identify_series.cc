@@ -109,8 +109,8 @@ SensitivityTable BaselineRun(const IdentifySeriesSpec& spec, const std::vector<s
         run({spec.parameters[i].path}, {}, {});
       } catch (const InputError& alone) {
         throw InputError(spec.parameters[i].at + ": parameters[" + std::to_string(i) +
-                         "].path = " + spec.parameters[i].path + " in scenario " +
-                         spec.scenario + ": " + alone.what());
+                         "].path = " + spec.parameters[i].path + " in scenario " + spec.scenario +
+                         ": " + alone.what());
       }
     }
     throw InputError(spec.source + ": scenario " + spec.scenario + " (" + spec.scenario_at +
@@ -136,9 +136,8 @@ void RequireTimesInRun(const std::vector<MeasuredSeries>& series,
       throw InputError(
           (series[s].source.empty() ? label + " (row " + row + ")"  // values given in memory
                                     : label + ".csv = " + series[s].source + ":" + row) +
-          ": t = " + FormatNumber(t) +
-          " lies outside the scenario's run, from " + FormatNumber(first) + " to " +
-          FormatNumber(last) + " s" +
+          ": t = " + FormatNumber(t) + " lies outside the scenario's run, from " +
+          FormatNumber(first) + " to " + FormatNumber(last) + " s" +
           (baseline.stats.status == RunStatus::kLimit ? " (where " + baseline.stats.message + ")"
                                                       : ""));
     }
@@ -154,19 +153,21 @@ std::size_t RunColumn(const std::vector<std::string>& columns, const MeasuredSer
     for (const std::string& name : columns) {
       known += (known.empty() ? "" : ", ") + name;
     }
-    throw InputError("series[" + std::to_string(s) + "] (" + m.at + "): column " +
-                     m.columns[c] + " is not an output the scenario's run differentiates; "
-                     "these are: " + known);
+    throw InputError("series[" + std::to_string(s) + "] (" + m.at + "): column " + m.columns[c] +
+                     " is not an output the scenario's run differentiates; "
+                     "these are: " +
+                     known);
   }
   return static_cast<std::size_t>(found - columns.begin());
 }
 
 // Whether the noise is given: for every measured column or for none, and without it the
 // series must measure one column (there is no other weight between quantities).
-bool NoiseGiven(const IdentifySeriesSpec& spec, std::size_t with_noise,
-                std::size_t without_noise, std::size_t distinct_columns) {
+bool NoiseGiven(const IdentifySeriesSpec& spec, std::size_t with_noise, std::size_t without_noise,
+                std::size_t distinct_columns) {
   if (with_noise > 0 && without_noise > 0) {
-    throw InputError(spec.source + ": noise levels are given for some columns and not for others: "
+    throw InputError(spec.source +
+                     ": noise levels are given for some columns and not for others: "
                      "give one for every measured column (or for none, when every series "
                      "measures one and the same column)");
   }
@@ -303,8 +304,10 @@ SeriesIdentification FitSeries(const IdentifySeriesSpec& spec,
   try {
     solved = SolveBoundedLeastSquares(problem, lm);
   } catch (const EvaluationFailure& e) {
-    throw std::runtime_error(spec.source + ": the scenario's run at the start values cannot "
-                             "serve the fit: " + e.what());
+    throw std::runtime_error(spec.source +
+                             ": the scenario's run at the start values cannot "
+                             "serve the fit: " +
+                             e.what());
   }
 
   const JacobianAnalysis a =
@@ -334,11 +337,11 @@ SeriesIdentification DesignSeries(const IdentifySeriesSpec& spec,
   try {
     point = Evaluate(setup, run, setup.start);
   } catch (const EvaluationFailure& e) {
-    throw std::runtime_error(spec.source + ": the scenario's run at the start values fails: " +
-                             e.what());
+    throw std::runtime_error(spec.source +
+                             ": the scenario's run at the start values fails: " + e.what());
   }
-  const JacobianAnalysis a = AnalyseJacobian(Weighted(setup, point.jacobian), setup.start,
-                                             true, 0.0, {});
+  const JacobianAnalysis a =
+      AnalyseJacobian(Weighted(setup, point.jacobian), setup.start, true, 0.0, {});
   return Result(spec, setup, setup.start, a);
 }
 

@@ -19,7 +19,8 @@ MeasuredSeries FromColumns(const SeriesSpec& spec, const SeriesColumns& columns,
   const std::string name = label + " (" + spec.at + ")";
   const bool times_only = design && columns.size() == 1 && columns[0].first == "t";
   if (design && (columns.empty() || times_only) && spec.noise.empty()) {
-    throw InputError(name + ": neither output columns nor noise levels: the design takes the "
+    throw InputError(name +
+                     ": neither output columns nor noise levels: the design takes the "
                      "columns from noise: {COLUMN: SD} (and the times from t, or the "
                      "scenario's output grid)");
   }
@@ -40,9 +41,12 @@ MeasuredSeries FromColumns(const SeriesSpec& spec, const SeriesColumns& columns,
     if (columns[c].first == "t") t_column = c;
   }
   if (t_column == columns.size()) {
-    throw InputError(name + ": no column t: give the measured times t [s] beside the output "
-                     "columns" + (design ? " (or, for the design, no columns at all: the "
-                                           "scenario's output grid)" : ""));
+    throw InputError(name +
+                     ": no column t: give the measured times t [s] beside the output "
+                     "columns" +
+                     (design ? " (or, for the design, no columns at all: the "
+                               "scenario's output grid)"
+                             : ""));
   }
   const std::size_t rows = columns[t_column].second.size();
   for (const auto& [column, values] : columns) {
@@ -77,8 +81,8 @@ std::vector<MeasuredSeries> MeasuredSeriesFromColumns(const IdentifySeriesSpec& 
   }
   std::vector<MeasuredSeries> all;
   for (std::size_t i = 0; i < given.size(); ++i) {
-    all.push_back(FromColumns(spec.series[i], given[i], "series[" + std::to_string(i) + "]",
-                              design));
+    all.push_back(
+        FromColumns(spec.series[i], given[i], "series[" + std::to_string(i) + "]", design));
   }
   return all;
 }

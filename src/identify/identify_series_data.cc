@@ -39,7 +39,8 @@ std::vector<MeasuredSeries> ReadMeasuredSeries(const IdentifySeriesSpec& spec, b
         throw InputError(label + ".csv = " + *s.csv + " (" + s.csv_at + "): " + e.what());
       }
     } else if (!design) {
-      throw InputError(label + " (" + s.at + "): needs csv, the measured values, to fit (only "
+      throw InputError(label + " (" + s.at +
+                       "): needs csv, the measured values, to fit (only "
                        "an experiment design does without: it takes the columns from noise)");
     } else {
       for (const auto& [column, level] : s.noise) series.columns.push_back(column);

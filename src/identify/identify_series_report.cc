@@ -92,19 +92,23 @@ std::string Wrap(const std::string& text, std::size_t width, const std::string& 
 std::string StatisticsSentence(const SeriesIdentification& r, bool design) {
   if (design) {
     return "Cramer-Rao standard errors, (J^T W J)^-1 with W the inverse noise variances, at "
-           "the start values and " + std::to_string(r.values) + " measured values: the "
+           "the start values and " +
+           std::to_string(r.values) +
+           " measured values: the "
            "smallest errors an unbiased estimate from this experiment can have.";
   }
   if (r.noise_given) {
     return "Weighted by the stated noise: standard errors from (J^T W J)^-1, the Fisher "
-           "information's inverse at the estimate (" + std::to_string(r.values) + " values, " +
-           std::to_string(r.degrees_of_freedom) + " degrees of freedom). The weighted residuals' "
-           "mean square is " + Short(r.weighted_rss / r.degrees_of_freedom, 3) +
+           "information's inverse at the estimate (" +
+           std::to_string(r.values) + " values, " + std::to_string(r.degrees_of_freedom) +
+           " degrees of freedom). The weighted residuals' "
+           "mean square is " +
+           Short(r.weighted_rss / r.degrees_of_freedom, 3) +
            " (near 1 when the noise levels describe the data).";
   }
   return "No noise levels: standard errors from s^2 (J^T J)^-1, s^2 = RSS / (N - P) = " +
-         Short(r.variance_factor, 4) + " (s = " + Short(std::sqrt(r.variance_factor), 4) +
-         ", " + std::to_string(r.values) + " values, " + std::to_string(r.degrees_of_freedom) +
+         Short(r.variance_factor, 4) + " (s = " + Short(std::sqrt(r.variance_factor), 4) + ", " +
+         std::to_string(r.values) + " values, " + std::to_string(r.degrees_of_freedom) +
          " degrees of freedom).";
 }
 
@@ -126,7 +130,9 @@ void CorrelationTable(std::ostringstream& s, const SeriesIdentification& r) {
 
 void SingularValueTable(std::ostringstream& s, const SeriesIdentification& r) {
   s << "Each column of the scaled sensitivity matrix is the outputs' change, in noise standard "
-       "deviations" << (r.noise_given ? "" : " (s)") << ", for a relative change of its "
+       "deviations"
+    << (r.noise_given ? "" : " (s)")
+    << ", for a relative change of its "
        "parameter (an absolute one for a parameter at 0). A singular value below "
     << Short(kDependentSingularValueRatio, 1) << " of the largest, or a column below "
     << Short(kNegligibleColumnRatio, 1) << " of the largest, is not resolved.\n\n"
@@ -179,8 +185,8 @@ std::string IdentifiabilityVerdict(const SeriesIdentification& r) {
   for (const WeakDirection& w : r.weak_directions) {
     const auto [names, combination] = Combination(r, w);
     reasons.push_back(List(names) + (names.size() == 1 ? " is not: " : " are not, separately: ") +
-                      "a step along " + combination + " changes the outputs " +
-                      Short(w.ratio, 1) + " times as much as one along the best-determined "
+                      "a step along " + combination + " changes the outputs " + Short(w.ratio, 1) +
+                      " times as much as one along the best-determined "
                       "direction");
   }
   std::string text;
@@ -210,8 +216,9 @@ std::string FormatSeriesReport(const SeriesIdentification& r, const std::string&
   SingularValueTable(s, r);
   s << "\n## The fit\n\n"
     << (r.converged ? "Converged" : "Not converged") << " after " << r.iterations
-    << " Levenberg-Marquardt steps (" << r.evaluations << " runs with sensitivities): "
-    << r.stop_reason << ". Weighted residual sum of squares " << Short(r.weighted_rss, 6) << ".\n";
+    << " Levenberg-Marquardt steps (" << r.evaluations
+    << " runs with sensitivities): " << r.stop_reason << ". Weighted residual sum of squares "
+    << Short(r.weighted_rss, 6) << ".\n";
   return s.str();
 }
 
@@ -241,8 +248,8 @@ std::string FormatDesignReport(const SeriesIdentification& r, const std::string&
 
 std::vector<std::string> EstimatedScenarioHeader(const SeriesIdentification& r,
                                                  const std::string& data_file) {
-  std::vector<std::string> lines = {
-      "estimated by musclesim identify from " + data_file + " (scenario " + r.scenario + ")"};
+  std::vector<std::string> lines = {"estimated by musclesim identify from " + data_file +
+                                    " (scenario " + r.scenario + ")"};
   for (const SeriesParameterResult& p : r.parameters) {
     lines.push_back("  " + p.path + " = " + FormatNumber(p.estimate) + " +- " +
                     Error(p.standard_error) + " (" + VerdictWord(p.verdict) + "; started at " +

@@ -106,8 +106,8 @@ Eigen::MatrixXd RelativeCovariance(const Eigen::MatrixXd& s,
   }
   for (Eigen::Index i = 0; i < m; ++i) {
     for (Eigen::Index k = 0; k < m; ++k) {
-      const bool finite = !unbounded[static_cast<std::size_t>(i)] &&
-                          !unbounded[static_cast<std::size_t>(k)];
+      const bool finite =
+          !unbounded[static_cast<std::size_t>(i)] && !unbounded[static_cast<std::size_t>(k)];
       relative_covariance(estimable[static_cast<std::size_t>(i)],
                           estimable[static_cast<std::size_t>(k)]) = finite ? inner(i, k) : kNaN;
     }
@@ -143,7 +143,7 @@ JacobianAnalysis AnalyseJacobian(const Eigen::MatrixXd& weighted_jacobian,
   Eigen::Index estimated = 0;
   for (Eigen::Index j = 0; j < p; ++j) estimated += Held(at_bound, j) ? 0 : 1;
   a.degrees_of_freedom = static_cast<int>(n - estimated);
-  a.variance_factor = noise_given ? 1.0
+  a.variance_factor = noise_given                ? 1.0
                       : a.degrees_of_freedom > 0 ? weighted_rss / a.degrees_of_freedom
                                                  : kNaN;
 

@@ -16,19 +16,19 @@ struct JacobianAnalysis {
   // the statistics: covariance = variance_factor (J_w^T J_w)^-1 over the parameters not at a
   // bound and not negligible, from the resolved directions (a truncated SVD); the others, and
   // those in an unresolved direction, have infinite standard errors and NaN correlations
-  double variance_factor = 1.0;      // 1 with the noise given; s^2 = RSS / dof without
-  int degrees_of_freedom = 0;        // values - parameters not at a bound
-  Eigen::VectorXd standard_errors;   // P [the parameters' units]
-  Eigen::MatrixXd covariance;        // P x P
-  Eigen::MatrixXd correlation;       // P x P [-]
+  double variance_factor = 1.0;     // 1 with the noise given; s^2 = RSS / dof without
+  int degrees_of_freedom = 0;       // values - parameters not at a bound
+  Eigen::VectorXd standard_errors;  // P [the parameters' units]
+  Eigen::MatrixXd covariance;       // P x P
+  Eigen::MatrixXd correlation;      // P x P [-]
   // the identifiability: the sensitivity matrix S = J_w diag(scales) / sqrt(variance_factor),
   // each column the outputs' change, in noise standard deviations, for a relative change of
   // its parameter
-  Eigen::VectorXd scales;                    // P: |p_j|, or 1 where p_j = 0
-  Eigen::VectorXd column_ratios;             // P: |S_j| / max_k |S_k| [-]
-  Eigen::VectorXd singular_values;           // of S without the columns at a bound, descending
-  Eigen::VectorXd relative_standard_errors;  // P: standard error / scale [-]
-  std::vector<Identifiability> verdicts;     // P
+  Eigen::VectorXd scales;                      // P: |p_j|, or 1 where p_j = 0
+  Eigen::VectorXd column_ratios;               // P: |S_j| / max_k |S_k| [-]
+  Eigen::VectorXd singular_values;             // of S without the columns at a bound, descending
+  Eigen::VectorXd relative_standard_errors;    // P: standard error / scale [-]
+  std::vector<Identifiability> verdicts;       // P
   std::vector<WeakDirection> weak_directions;  // ratio < kDependentSingularValueRatio, but
                                                // those of negligible columns alone
 };

@@ -16,7 +16,8 @@ void FillValues(MeasuredSeries& series, const std::vector<std::string>& header,
     if (c != t_column) series.columns.push_back(header[c]);
   }
   if (series.columns.empty() && !outputs_optional) {
-    throw InputError(place.name + ": only a column t" + place.label + ": give one or more output "
+    throw InputError(place.name + ": only a column t" + place.label +
+                     ": give one or more output "
                      "columns named as the trajectory CSV names them (length, tension_total, ...)");
   }
   if (lines.empty()) throw InputError(place.name + ": no rows" + place.label);
@@ -57,7 +58,8 @@ void ApplyNoise(MeasuredSeries& series, const SeriesSpec& spec, const std::strin
   if (!design) return;
   for (std::size_t c = 0; c < series.columns.size(); ++c) {
     if (std::isnan(series.noise[c])) {
-      throw InputError(label + " (" + spec.at + "): an experiment design needs a noise level for column " +
+      throw InputError(label + " (" + spec.at +
+                       "): an experiment design needs a noise level for column " +
                        series.columns[c] + " (noise: {" + series.columns[c] +
                        ": SD}): the design's standard errors are in units of the noise");
     }

@@ -3,8 +3,8 @@
 // (RSS(x0) - RSS_min) / (RSS_min / (n - 3)) <= F(1, n - 3; level) is exact for a model linear
 // in its parameters, where the chi-square form holds only as n grows (with 29 points it
 // admits RSS up to 1.142 RSS_min against F's 1.163, and covers 93.4% for a nominal 95% in
-// the linear case). On the shipped design (tests/identify/identify_slack_interval_test.cc's data) at
-// noise of 0.02-0.2% of the largest tension, 1000 simulated data sets each, 95% intervals
+// the linear case). On the shipped design (tests/identify/identify_slack_interval_test.cc's data)
+// at noise of 0.02-0.2% of the largest tension, 1000 simulated data sets each, 95% intervals
 // covered the truth 96% of the time by F against 94% by chi-square: the slack length is not
 // a regular parameter (RSS(x0) has kinks at the data points, a plateau below them), so
 // neither is exact, and F errs on the side of too wide. At the shipped 2% both cover 97.5%.

@@ -100,8 +100,9 @@ VelocityIdentification IdentifyVelocity(const std::vector<DataPoint>& all,
   // the paper's symmetric curve from every point
   const PowerLawFit symmetric = FitPowerLaw(all, f_iso);
   if (!symmetric.best.valid) {
-    throw InputError("velocity data: tension does not fall with shortening velocity for any n "
-                     "in 1..10; nothing to fit");
+    throw InputError(
+        "velocity data: tension does not fall with shortening velocity for any n "
+        "in 1..10; nothing to fit");
   }
   VelocityIdentification out;
   out.best = symmetric.best;
@@ -123,8 +124,9 @@ VelocityIdentification IdentifyVelocity(const std::vector<DataPoint>& all,
   eccentric.points = lengthening.size();
   const PowerLawFit concentric = FitPowerLaw(data, f_iso);
   if (!concentric.best.valid) {
-    eccentric.why_not = "the points with v >= 0 alone show no tension falling with shortening "
-                        "velocity";
+    eccentric.why_not =
+        "the points with v >= 0 alone show no tension falling with shortening "
+        "velocity";
     eccentric.why_no_limit = eccentric.why_not;
     out.eccentric = eccentric;
     return out;
@@ -134,8 +136,8 @@ VelocityIdentification IdentifyVelocity(const std::vector<DataPoint>& all,
     // the two-branch curve has v_max_e and n_e (and L) more than the symmetric one, which it
     // contains: it is kept only when the data pay for them
     const int own = f_iso ? 0 : 1;  // f_iso, when fitted
-    const double rss = concentric.rss + std::pow(eccentric.best.rmse, 2) *
-                                            static_cast<double>(eccentric.points);
+    const double rss =
+        concentric.rss + std::pow(eccentric.best.rmse, 2) * static_cast<double>(eccentric.points);
     const int two_branch = own + 4 + (eccentric.limit_identified ? 1 : 0);
     const int one_branch = own + 2;
     if (Bic(rss, all.size(), two_branch) < Bic(symmetric.rss, all.size(), one_branch)) {
@@ -143,9 +145,10 @@ VelocityIdentification IdentifyVelocity(const std::vector<DataPoint>& all,
       out.candidates = concentric.candidates;
     } else {
       eccentric.identified = eccentric.limit_identified = false;
-      eccentric.why_not = "the symmetric curve fitted to every point describes the data as well "
-                          "(Bayesian information criterion), so the data do not tell a separate "
-                          "eccentric branch apart";
+      eccentric.why_not =
+          "the symmetric curve fitted to every point describes the data as well "
+          "(Bayesian information criterion), so the data do not tell a separate "
+          "eccentric branch apart";
       eccentric.why_no_limit = eccentric.why_not;
     }
   }

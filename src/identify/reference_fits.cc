@@ -60,8 +60,9 @@ PolynomialFit::PolynomialFit(const std::vector<DataPoint>& points, int degree) {
     throw std::invalid_argument("a polynomial of degree " + std::to_string(degree) +
                                 " needs more than " + std::to_string(degree) + " points");
   }
-  const auto [lo, hi] = std::minmax_element(
-      points.begin(), points.end(), [](const DataPoint& a, const DataPoint& b) { return a.x < b.x; });
+  const auto [lo, hi] =
+      std::minmax_element(points.begin(), points.end(),
+                          [](const DataPoint& a, const DataPoint& b) { return a.x < b.x; });
   center_ = 0.5 * (lo->x + hi->x);
   half_width_ = std::max(0.5 * (hi->x - lo->x), 1e-300);
   Eigen::MatrixXd vandermonde(static_cast<Eigen::Index>(points.size()), degree + 1);
@@ -69,7 +70,8 @@ PolynomialFit::PolynomialFit(const std::vector<DataPoint>& points, int degree) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     const double t = (points[i].x - center_) / half_width_;
     double power = 1.0;
-    for (int j = 0; j <= degree; ++j, power *= t) vandermonde(static_cast<Eigen::Index>(i), j) = power;
+    for (int j = 0; j <= degree; ++j, power *= t)
+      vandermonde(static_cast<Eigen::Index>(i), j) = power;
     y(static_cast<Eigen::Index>(i)) = points[i].y;
   }
   coefficients_ = vandermonde.householderQr().solve(y);

@@ -16,9 +16,9 @@ void ReadLimits(const yaml::Source& src, const YAML::Node& limits, ActuatorScena
   if (const YAML::Node min = limits["min_length"]) {
     const double value = yaml::ReadNumber(src, min, "limits.min_length");
     if (!(value >= 0.0 && value < s.initial_length)) {
-      yaml::Fail(src, min, "limits.min_length", yaml::Describe(min),
-                 "must be >= 0 and below initial.length = " + FormatNumber(s.initial_length) +
-                     " [m]");
+      yaml::Fail(
+          src, min, "limits.min_length", yaml::Describe(min),
+          "must be >= 0 and below initial.length = " + FormatNumber(s.initial_length) + " [m]");
     }
     s.min_length = value;
   }
@@ -48,10 +48,10 @@ ActuatorScenarioSpec ReadActuatorScenarioSpec(const yaml::Source& src, const YAM
                                        "actuator.mass", kMassRange);
   s.actuator.damping =
       yaml::ReadOptionalNumberIn(src, actuator, "actuator", "damping", kDampingRange, 0.0);
-  s.actuator.stiffness = yaml::ReadOptionalNumberIn(src, actuator, "actuator", "stiffness",
-                                                    kStiffnessRange, 0.0);
-  s.actuator.rest_length = yaml::ReadOptionalNumberIn(src, actuator, "actuator", "rest_length",
-                                                      kPositionRange, 0.0);
+  s.actuator.stiffness =
+      yaml::ReadOptionalNumberIn(src, actuator, "actuator", "stiffness", kStiffnessRange, 0.0);
+  s.actuator.rest_length =
+      yaml::ReadOptionalNumberIn(src, actuator, "actuator", "rest_length", kPositionRange, 0.0);
   ValidateAt(src, actuator, "actuator", [&] { Validate(s.actuator); });
   // before what needs it: the shortest interval, step and pulse are measured against it
   const TimeSpan time = ReadTime(src, Required(src, root, "", "time"));
@@ -62,8 +62,8 @@ ActuatorScenarioSpec ReadActuatorScenarioSpec(const yaml::Source& src, const YAM
   yaml::RequireMap(src, initial, "initial", {"length", "lengthening_rate", "activation"});
   s.initial_length = yaml::ReadNumberIn(src, Required(src, initial, "initial", "length"),
                                         "initial.length", kLengthRange);
-  s.initial_lengthening_rate = yaml::ReadOptionalNumberIn(
-      src, initial, "initial", "lengthening_rate", kSpeedRange, 0.0);
+  s.initial_lengthening_rate =
+      yaml::ReadOptionalNumberIn(src, initial, "initial", "lengthening_rate", kSpeedRange, 0.0);
 
   ActuatorDrive drive = ReadActuatorDrive(src, root, "", initial["activation"],
                                           "initial.activation", s.t_start, s.t_end);
@@ -80,9 +80,11 @@ ActuatorScenarioSpec ReadActuatorScenarioSpec(const yaml::Source& src, const YAM
     if (load.IsMap()) {
       read(load, "load");
     } else if (load.IsSequence()) {
-      for (std::size_t i = 0; i < load.size(); ++i) read(load[i], "load[" + std::to_string(i) + "]");
+      for (std::size_t i = 0; i < load.size(); ++i)
+        read(load[i], "load[" + std::to_string(i) + "]");
     } else {
-      yaml::Fail(src, load, "load", yaml::Describe(load), "must be one load (a map) or a list of loads");
+      yaml::Fail(src, load, "load", yaml::Describe(load),
+                 "must be one load (a map) or a list of loads");
     }
   }
 

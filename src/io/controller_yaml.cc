@@ -81,16 +81,16 @@ CoContraction ReadCoContraction(const yaml::Source& src, const YAML::Node& node,
   return pair;
 }
 
-Controller ReadController(const yaml::Source& src, const YAML::Node& item,
-                          const std::string& path, double t_start, double t_end) {
+Controller ReadController(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+                          double t_start, double t_end) {
   if (!item.IsMap()) {
     yaml::Fail(src, item, path, yaml::Describe(item),
                "must be a map: {name, type: pid, measure, reference, gains, drives or "
                "co_contraction}");
   }
-  yaml::RequireMap(src, item, path,
-                   {"name", "type", "measure", "reference", "gains", "feedforward", "drives",
-                    "co_contraction"});
+  yaml::RequireMap(
+      src, item, path,
+      {"name", "type", "measure", "reference", "gains", "feedforward", "drives", "co_contraction"});
   Controller c;
   c.name = ReadName(src, item, path);
   const YAML::Node type = Required(src, item, path, "type");
@@ -164,9 +164,8 @@ Element ReadControlledActuator(const yaml::Source& src, const YAML::Node& item,
   for (const char* key : {"activation", "excitation"}) {
     if (const YAML::Node own = item[key]) {
       yaml::Fail(src, own, Join(path, key), yaml::Describe(own),
-                 "actuator " + name + " is driven by controllers[" +
-                     std::to_string(driver.index) + "] (" + driver.name +
-                     "): it has no activation of its own");
+                 "actuator " + name + " is driven by controllers[" + std::to_string(driver.index) +
+                     "] (" + driver.name + "): it has no activation of its own");
     }
   }
   const YAML::Node dynamics = item["activation_dynamics"];
@@ -193,10 +192,10 @@ Element ReadControlledActuator(const yaml::Source& src, const YAML::Node& item,
   ActivationDynamics lag;
   lag.tau_activation = time_constant("tau_activation");
   lag.tau_deactivation = time_constant("tau_deactivation");
-  const double u0 = initial ? yaml::ReadNumberIn(src, initial, initial_path, kActivationRange) : 0.0;
-  ValidateAt(src, item, path, [&] {
-    e = Element::ControlledActuator(name, from, to, std::move(model), lag, u0);
-  });
+  const double u0 =
+      initial ? yaml::ReadNumberIn(src, initial, initial_path, kActivationRange) : 0.0;
+  ValidateAt(src, item, path,
+             [&] { e = Element::ControlledActuator(name, from, to, std::move(model), lag, u0); });
   return e;
 }
 

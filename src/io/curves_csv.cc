@@ -55,14 +55,13 @@ std::string FormatVelocityCurveCsv(const TensionModel& model, const UniformGrid&
 std::string FormatPresetCurveCsv(ForceLengthPreset preset, double optimal_length,
                                  const UniformGrid& lengths) {
   Validate(lengths);
-  Require(std::isfinite(optimal_length) && optimal_length > 0.0, "optimal_length",
-          optimal_length, "must be finite and > 0 [m]");
+  Require(std::isfinite(optimal_length) && optimal_length > 0.0, "optimal_length", optimal_length,
+          "must be finite and > 0 [m]");
   std::string csv = "length,normalized_length,f_L\n";
   for (int i = 0; i < lengths.count; ++i) {
     const double x = lengths.At(i);
     const double s = Finite(x / optimal_length, "length", x, "normalized_length");
-    csv += FormatFull(x) + ',' + FormatFull(s) + ',' + FormatFull(EvaluatePreset(preset, s)) +
-           '\n';
+    csv += FormatFull(x) + ',' + FormatFull(s) + ',' + FormatFull(EvaluatePreset(preset, s)) + '\n';
   }
   return csv;
 }

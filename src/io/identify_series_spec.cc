@@ -15,8 +15,7 @@ namespace {
 // A noise level: a standard deviation in the column's own unit.
 constexpr InputRange kNoiseRange{
     0.0, 1e12, "the column's unit",
-    "a standard deviation is positive, and 1e12 is beyond any quantity a trajectory holds",
-    true};
+    "a standard deviation is positive, and 1e12 is beyond any quantity a trajectory holds", true};
 
 // A start value or bound: the scenario's own rules check the value itself; this range keeps
 // the fit's arithmetic (differences and squares of steps) finite.

@@ -16,8 +16,8 @@ PassiveParams ReadPassive(const yaml::Source& src, const YAML::Node& node,
   PassiveParams p;
   p.k_p = yaml::ReadNumber(src, Required(src, node, path, "k_p"), Join(path, "k_p"));
   p.alpha = yaml::ReadNumber(src, Required(src, node, path, "alpha"), Join(path, "alpha"));
-  p.slack_length = yaml::ReadNumber(src, Required(src, node, path, "slack_length"),
-                                    Join(path, "slack_length"));
+  p.slack_length =
+      yaml::ReadNumber(src, Required(src, node, path, "slack_length"), Join(path, "slack_length"));
   return p;
 }
 
@@ -48,8 +48,7 @@ VelocityParams ReadVelocity(const yaml::Source& src, const YAML::Node& node,
   VelocityParams p;
   p.v_max = yaml::ReadNumber(src, Required(src, node, path, "v_max"), Join(path, "v_max"));
   p.n = ReadExponent(src, Required(src, node, path, "n"), Join(path, "n"));
-  p.epsilon =
-      yaml::ReadNumber(src, Required(src, node, path, "epsilon"), Join(path, "epsilon"));
+  p.epsilon = yaml::ReadNumber(src, Required(src, node, path, "epsilon"), Join(path, "epsilon"));
   if (node["eccentric"]) {
     p.eccentric = ReadEccentric(src, node["eccentric"], Join(path, "eccentric"));
   }
@@ -67,12 +66,10 @@ std::vector<TargetPoint> ReadPoints(const yaml::Source& src, const YAML::Node& n
     const std::vector<double> pair = yaml::ReadNumbers(src, node[i], at, 2);
     // x is a length, y a target value of about 1: bounded so the fit's integrals stay finite
     if (!kPositionRange.Contains(pair[0])) {
-      yaml::Fail(src, node[i][0], at + "[0]", yaml::Describe(node[i][0]),
-                 kPositionRange.Rule());
+      yaml::Fail(src, node[i][0], at + "[0]", yaml::Describe(node[i][0]), kPositionRange.Rule());
     }
     if (!kFitValueRange.Contains(pair[1])) {
-      yaml::Fail(src, node[i][1], at + "[1]", yaml::Describe(node[i][1]),
-                 kFitValueRange.Rule());
+      yaml::Fail(src, node[i][1], at + "[1]", yaml::Describe(node[i][1]), kFitValueRange.Rule());
     }
     points.push_back({pair[0], pair[1]});
   }
@@ -80,9 +77,9 @@ std::vector<TargetPoint> ReadPoints(const yaml::Source& src, const YAML::Node& n
 }
 
 FitSpec ReadFitSpec(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
-  yaml::RequireMap(src, node, path,
-                   {"count", "target", "points", "nonnegative", "widths", "centers", "name",
-                    "optimal_length"});
+  yaml::RequireMap(
+      src, node, path,
+      {"count", "target", "points", "nonnegative", "widths", "centers", "name", "optimal_length"});
   FitSpec spec;
   spec.count = yaml::ReadInteger(src, Required(src, node, path, "count"), Join(path, "count"));
   if (node["target"]) {
@@ -95,13 +92,14 @@ FitSpec ReadFitSpec(const yaml::Source& src, const YAML::Node& node, const std::
     yaml::ValidateAt(src, node, path, [&] { spec.preset = ParseForceLengthPreset(text); });
   }
   if (node["optimal_length"]) {
-    spec.optimal_length = yaml::ReadNumberIn(src, node["optimal_length"],
-                                             Join(path, "optimal_length"), kLengthRange);
+    spec.optimal_length =
+        yaml::ReadNumberIn(src, node["optimal_length"], Join(path, "optimal_length"), kLengthRange);
   }
   if (node["nonnegative"]) {
     spec.nonnegative = yaml::ReadBool(src, node["nonnegative"], Join(path, "nonnegative"));
   }
-  if (node["widths"]) spec.precisions = yaml::ReadNumbers(src, node["widths"], Join(path, "widths"));
+  if (node["widths"])
+    spec.precisions = yaml::ReadNumbers(src, node["widths"], Join(path, "widths"));
   if (node["centers"]) {
     spec.centers = yaml::ReadNumbers(src, node["centers"], Join(path, "centers"));
     for (std::size_t k = 0; k < spec.centers.size(); ++k) {
@@ -149,15 +147,14 @@ ModelSpec ReadModelSpec(const yaml::Source& src, const YAML::Node& node, const s
   ModelParams& p = model.params;
   p.f_iso = yaml::ReadNumber(src, Required(src, node, path, "f_iso"), Join(path, "f_iso"));
   p.passive = ReadPassive(src, Required(src, node, path, "passive"), Join(path, "passive"));
-  p.velocity =
-      ReadVelocity(src, Required(src, node, path, "velocity"), Join(path, "velocity"));
+  p.velocity = ReadVelocity(src, Required(src, node, path, "velocity"), Join(path, "velocity"));
 
   const std::string active_path = Join(path, "active_length");
   const YAML::Node active = Required(src, node, path, "active_length");
   yaml::RequireMap(src, active, active_path, {"optimal_range", "sigma", "gaussians", "fit"});
-  const std::vector<double> range = yaml::ReadNumbers(
-      src, Required(src, active, active_path, "optimal_range"),
-      Join(active_path, "optimal_range"), 2);
+  const std::vector<double> range =
+      yaml::ReadNumbers(src, Required(src, active, active_path, "optimal_range"),
+                        Join(active_path, "optimal_range"), 2);
   p.active_length.optimal_min = range[0];
   p.active_length.optimal_max = range[1];
   p.active_length.sigma =
@@ -208,11 +205,11 @@ ModelSpec ReadModelSpec(const yaml::Source& src, const YAML::Node& node, const s
       const YAML::Node fit = active["fit"];
       const bool has_points = static_cast<bool>(fit["points"]);
       const std::string target_path = Join(active_path, has_points ? "fit.points" : "fit");
-      yaml::Fail(src, has_points ? fit["points"] : fit, target_path,
-                 has_points ? std::to_string(fit["points"].size()) + " points"
-                            : yaml::Describe(fit),
-                 "the fit of this target gave " + error.path() + " = " + error.value() +
-                     " (rule: " + error.rule() + "); choose a target the Gaussians can follow");
+      yaml::Fail(
+          src, has_points ? fit["points"] : fit, target_path,
+          has_points ? std::to_string(fit["points"].size()) + " points" : yaml::Describe(fit),
+          "the fit of this target gave " + error.path() + " = " + error.value() +
+              " (rule: " + error.rule() + "); choose a target the Gaussians can follow");
     }
     yaml::Relocate(src, node, path, error);
   }
@@ -227,7 +224,8 @@ ModelSpec ReadModelFile(const yaml::Source& src, const YAML::Node& root) {
   yaml::RequireMap(src, root, "", kScenarioKeys);
   for (const auto& entry : root) {
     const std::string& key = entry.first.Scalar();
-    if (key != "model" && key != "name") return ReadActuatorScenario(src, root).models.at("model").spec;
+    if (key != "model" && key != "name")
+      return ReadActuatorScenario(src, root).models.at("model").spec;
   }
   return ReadModelSpec(src, Required(src, root, "", "model"), "model");
 }

@@ -11,11 +11,11 @@ namespace musclesim {
 // The top-level keys of a scenario file: readers of any part of one accept these and no
 // others, so a misspelt key is caught whichever verb reads the file.
 inline constexpr std::initializer_list<const char*> kScenarioKeys = {
-    "name", "model", "actuator", "initial", "activation", "excitation", "activation_dynamics",
-    "load", "time", "solver", "output", "limits", "sensitivities"};
+    "name", "model", "actuator", "initial", "activation", "excitation",   "activation_dynamics",
+    "load", "time",  "solver",   "output",  "limits",     "sensitivities"};
 
 // `node` is the value of the `model` key, `path` its key path ("model").
 ModelSpec ReadModelSpec(const yaml::Source& source, const YAML::Node& node,
-                      const std::string& path);
+                        const std::string& path);
 
 }  // namespace musclesim

@@ -34,7 +34,8 @@ Node ReadNode(const yaml::Source& src, const YAML::Node& item, const std::string
                "must be a map: a name and one of fixed, prescribed or mass");
   }
   // a misspelt key first: it would otherwise read as a missing kind
-  yaml::RequireMap(src, item, path, {"name", "fixed", "prescribed", "mass", "position", "velocity"});
+  yaml::RequireMap(src, item, path,
+                   {"name", "fixed", "prescribed", "mass", "position", "velocity"});
   Node node;
   node.name = ReadName(src, item, path);
   const int kinds = static_cast<int>(static_cast<bool>(item["fixed"])) +
@@ -66,8 +67,7 @@ Node ReadNode(const yaml::Source& src, const YAML::Node& item, const std::string
 }
 
 std::shared_ptr<const TensionModel> FindModel(const yaml::Source& src, const YAML::Node& item,
-                                              const std::string& path,
-                                              const NamedModels& models) {
+                                              const std::string& path, const NamedModels& models) {
   const YAML::Node node = Required(src, item, path, "model");
   const std::string name = yaml::ReadString(src, node, Join(path, "model"));
   const auto found = models.by_name.find(name);
@@ -173,9 +173,7 @@ Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::
       e.stiffness = NumberIn(src, item, path, "stiffness", kStiffnessRange);
       e.rest_length = NumberIn(src, item, path, "rest_length", kPositionRange);
       break;
-    case ElementKind::kTendon:
-      ReadTendon(src, item, path, e);
-      break;
+    case ElementKind::kTendon: ReadTendon(src, item, path, e); break;
     case ElementKind::kDamper:
       e.damping = NumberIn(src, item, path, "damping", kDampingRange);
       break;
@@ -198,8 +196,8 @@ std::string ReadName(const yaml::Source& src, const YAML::Node& item, const std:
   const std::string name = yaml::ReadString(src, node, Join(path, "name"));
   bool plain = !name.empty();
   for (const char c : name) {
-    plain = plain && ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
-                      (c >= '0' && c <= '9') || c == '_' || c == '-');
+    plain = plain && ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                      c == '_' || c == '-');
   }
   if (!plain) {
     yaml::Fail(src, node, Join(path, "name"), name.empty() ? "\"\"" : yaml::Describe(node),
@@ -224,13 +222,14 @@ std::vector<Element> ReadElements(const yaml::Source& src, const YAML::Node& nod
   RequireList(src, node, "elements", "elements, each {name, type, from, to, ...}");
   std::vector<Element> elements;
   for (std::size_t i = 0; i < node.size(); ++i) {
-    elements.push_back(ReadElement(src, node[i], Item("elements", i), models, driven, t_start, t_end));
+    elements.push_back(
+        ReadElement(src, node[i], Item("elements", i), models, driven, t_start, t_end));
   }
   return elements;
 }
 
-std::vector<NodeLoad> ReadNodeLoads(const yaml::Source& src, const YAML::Node& node,
-                                    double t_start, double t_end) {
+std::vector<NodeLoad> ReadNodeLoads(const yaml::Source& src, const YAML::Node& node, double t_start,
+                                    double t_end) {
   RequireList(src, node, "loads", "loads, each {node, type, ...}");
   std::vector<NodeLoad> loads;
   for (std::size_t i = 0; i < node.size(); ++i) {
@@ -263,13 +262,13 @@ std::vector<LengthLimit> ReadLengthLimits(const yaml::Source& src, const YAML::N
     const int e = system.FindElement(limit.element);
     if (e < 0) {
       std::string known;
-      for (const Element& part : system.elements()) known += (known.empty() ? "" : ", ") + part.name;
+      for (const Element& part : system.elements())
+        known += (known.empty() ? "" : ", ") + part.name;
       yaml::Fail(src, element, Join(path, "element"), limit.element,
                  "names no element; the elements are: " + known);
     }
     if (!item["min_length"] && !item["max_length"]) {
-      yaml::Fail(src, item, path, yaml::Describe(item),
-                 "give min_length, max_length or both [m]");
+      yaml::Fail(src, item, path, yaml::Describe(item), "give min_length, max_length or both [m]");
     }
     const double length = system.Length(e, t_start, y.data());
     const std::string initial =

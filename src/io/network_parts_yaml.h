@@ -42,8 +42,8 @@ std::vector<Element> ReadElements(const yaml::Source& src, const YAML::Node& nod
                                   double t_start, double t_end);
 
 // `node` is the value of `loads` (a list of loads, each with the `node` it acts on).
-std::vector<NodeLoad> ReadNodeLoads(const yaml::Source& src, const YAML::Node& node,
-                                    double t_start, double t_end);
+std::vector<NodeLoad> ReadNodeLoads(const yaml::Source& src, const YAML::Node& node, double t_start,
+                                    double t_end);
 
 // `node` is the value of `limits` (a list); each limit's element must be one of `system`'s
 // and its lengths must lie on either side of that element's length at t_start.

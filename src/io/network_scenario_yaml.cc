@@ -18,8 +18,8 @@ using yaml::Required;
 
 // The top-level keys of a network scenario file.
 constexpr std::initializer_list<const char*> kNetworkKeys = {
-    "name", "models", "nodes", "elements", "loads", "time", "solver", "output", "limits",
-    "sensitivities", "controllers"};
+    "name",   "models", "nodes",  "elements",      "loads",      "time",
+    "solver", "output", "limits", "sensitivities", "controllers"};
 
 NamedModels ReadModels(const yaml::Source& src, const YAML::Node& node, Scenario& s) {
   if (!node.IsMap()) {

@@ -58,7 +58,6 @@ void WriteOutput(const std::string& path, const std::string& content) {
   }
 }
 
-
 StreamedOutput::StreamedOutput(std::string path) : path_(std::move(path)) {
   if (path_ == "-") {
     written_path_ = path_;

@@ -32,12 +32,10 @@ std::vector<TablePoint> ReadTablePoints(const yaml::Source& src, const YAML::Nod
     const std::string item = at + "[" + std::to_string(i) + "]";
     const std::vector<double> pair = yaml::ReadNumbers(src, points[i], item, 2);
     if (!kTimeRange.Contains(pair[0])) {
-      yaml::Fail(src, points[i][0], item + "[0]", yaml::Describe(points[i][0]),
-                 kTimeRange.Rule());
+      yaml::Fail(src, points[i][0], item + "[0]", yaml::Describe(points[i][0]), kTimeRange.Rule());
     }
     if (values && !values->Contains(pair[1])) {
-      yaml::Fail(src, points[i][1], item + "[1]", yaml::Describe(points[i][1]),
-                 values->Rule());
+      yaml::Fail(src, points[i][1], item + "[1]", yaml::Describe(points[i][1]), values->Rule());
     }
     table.push_back({pair[0], pair[1]});
   }
@@ -56,8 +54,7 @@ Waveform ReadWaveform(const yaml::Source& src, const YAML::Node& node, const std
                   : yaml::ReadNumber(src, item, Join(path, key));
   };
   const auto time = [&](const char* key) {
-    return yaml::ReadNumberIn(src, Required(src, node, path, key), Join(path, key),
-                              kTimeRange);
+    return yaml::ReadNumberIn(src, Required(src, node, path, key), Join(path, key), kTimeRange);
   };
   const auto number = [&](const char* key) {
     return yaml::ReadNumber(src, Required(src, node, path, key), Join(path, key));
@@ -90,8 +87,7 @@ Waveform ReadWaveform(const yaml::Source& src, const YAML::Node& node, const std
       w.phase = ReadOptionalNumber(src, node, path, "phase", 0.0);
       break;
     case WaveformKind::kPulses:
-      yaml::RequireMap(src, node, path, {"type", "start", "period", "width", "low", "high"},
-                       extra);
+      yaml::RequireMap(src, node, path, {"type", "start", "period", "width", "low", "high"}, extra);
       w.start = time("start");
       w.period = number("period");  // checked against the run's time scale by CheckPulses
       w.width = number("width");
@@ -192,15 +188,14 @@ Load ReadLoad(const yaml::Source& src, const YAML::Node& node, const std::string
     load.kind = LoadKind::kSpring;
     load.stiffness = yaml::ReadNumberIn(src, Required(src, node, path, "stiffness"),
                                         Join(path, "stiffness"), kStiffnessRange);
-    load.anchor = yaml::ReadNumberIn(src, Required(src, node, path, "anchor"),
-                                     Join(path, "anchor"), kPositionRange);
+    load.anchor = yaml::ReadNumberIn(src, Required(src, node, path, "anchor"), Join(path, "anchor"),
+                                     kPositionRange);
   } else if (type == "mass") {
     yaml::RequireMap(src, node, path, {"type", "mass", "gravity"}, extra);
     load.kind = LoadKind::kMass;
-    load.mass = yaml::ReadNumberIn(src, Required(src, node, path, "mass"), Join(path, "mass"),
-                                   kMassRange);
-    load.gravity =
-        yaml::ReadOptionalNumberIn(src, node, path, "gravity", kGravityRange, 9.81);
+    load.mass =
+        yaml::ReadNumberIn(src, Required(src, node, path, "mass"), Join(path, "mass"), kMassRange);
+    load.gravity = yaml::ReadOptionalNumberIn(src, node, path, "gravity", kGravityRange, 9.81);
   } else {
     WaveformKind kind{};
     try {
@@ -233,10 +228,9 @@ void CheckPulses(const yaml::Source& src, const YAML::Node& node, const std::str
 TimeSpan ReadTime(const yaml::Source& src, const YAML::Node& time) {
   yaml::RequireMap(src, time, "time", {"start", "end"});
   TimeSpan span;
-  span.start = yaml::ReadNumberIn(src, Required(src, time, "time", "start"), "time.start",
-                                  kTimeRange);
-  span.end = yaml::ReadNumberIn(src, Required(src, time, "time", "end"), "time.end",
-                                kTimeRange);
+  span.start =
+      yaml::ReadNumberIn(src, Required(src, time, "time", "start"), "time.start", kTimeRange);
+  span.end = yaml::ReadNumberIn(src, Required(src, time, "time", "end"), "time.end", kTimeRange);
   const double shortest = kMinSpanRelative * TimeScale(span.start, span.end);
   if (!(span.end - span.start >= shortest)) {
     yaml::Fail(src, time["end"], "time.end", yaml::Describe(time["end"]),
@@ -251,9 +245,9 @@ TimeSpan ReadTime(const yaml::Source& src, const YAML::Node& time) {
 SolverOptions ReadSolver(const yaml::Source& src, const YAML::Node& node, const std::string& path,
                          double t_start, double t_end) {
   SolverOptions o;
-  yaml::RequireMap(src, node, path,
-                   {"method", "rtol", "atol", "jacobian", "max_step", "max_steps",
-                    "linear_solver"});
+  yaml::RequireMap(
+      src, node, path,
+      {"method", "rtol", "atol", "jacobian", "max_step", "max_steps", "linear_solver"});
   if (node["method"]) {
     const std::string text = yaml::ReadString(src, node["method"], Join(path, "method"));
     ValidateAt(src, node, path, [&] { o.method = ParseIntegrationMethod(text); });
@@ -294,7 +288,7 @@ SolverOptions ReadSolver(const yaml::Source& src, const YAML::Node& node, const 
 }
 
 OutputRequest ReadOutput(const yaml::Source& src, const YAML::Node& node, const std::string& path,
-                      double t_start, double t_end) {
+                         double t_start, double t_end) {
   OutputRequest output;
   yaml::RequireMap(src, node, path, {"file", "interval", "phase_tolerance"});
   if (node["file"]) {
@@ -323,9 +317,8 @@ OutputRequest ReadOutput(const yaml::Source& src, const YAML::Node& node, const 
     }
   }
   if (node["phase_tolerance"]) {
-    output.phase_tolerance = yaml::ReadNumberIn(src, node["phase_tolerance"],
-                                                Join(path, "phase_tolerance"),
-                                                kPhaseToleranceRange);
+    output.phase_tolerance = yaml::ReadNumberIn(
+        src, node["phase_tolerance"], Join(path, "phase_tolerance"), kPhaseToleranceRange);
   }
   return output;
 }

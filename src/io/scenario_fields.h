@@ -67,7 +67,7 @@ SolverOptions ReadSolver(const yaml::Source& src, const YAML::Node& node, const 
 // The `output` block (`path` its key path) of a run over [t_start, t_end]; the interval
 // defaults to a thousandth of the span.
 OutputRequest ReadOutput(const yaml::Source& src, const YAML::Node& node, const std::string& path,
-                      double t_start, double t_end);
+                         double t_start, double t_end);
 
 // The `sensitivities` list of parameter paths (strings), and where each is (file:line:column).
 // Whether each names a parameter is checked when a run resolves it.

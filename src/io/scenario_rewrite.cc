@@ -28,8 +28,7 @@ std::string RewriteScenario(const std::string& path, const Overrides& overrides,
 }
 
 std::string RewriteScenario(const Document& document, const std::string& name,
-                            const Overrides& overrides,
-                            const std::vector<std::string>& header) {
+                            const Overrides& overrides, const std::vector<std::string>& header) {
   YAML::Node root = ToYaml(document);
   yaml::ApplyOverrides(root, overrides, name);
   return Emit(root, header);

@@ -30,7 +30,8 @@ ScenarioTemplate::ScenarioTemplate(const std::string& path)
     : ScenarioTemplate(path, yaml::ReadText(path)) {}
 
 ScenarioTemplate::ScenarioTemplate(std::string path, std::string text)
-    : path_(std::move(path)), text_(std::move(text)),
+    : path_(std::move(path)),
+      text_(std::move(text)),
       parsed_(std::make_unique<Parsed>(Parsed{yaml::Parse(path_, text_)})),
       form_(FormOf(parsed_->root)) {}
 
@@ -70,8 +71,7 @@ Scenario ReadScenario(const Document& document, const std::string& name,
   return Read(yaml::Source{name, name}, root);
 }
 
-ActuatorScenarioSpec LoadActuatorScenarioSpec(const std::string& path,
-                                              const Overrides& overrides) {
+ActuatorScenarioSpec LoadActuatorScenarioSpec(const std::string& path, const Overrides& overrides) {
   YAML::Node root = yaml::LoadFile(path);
   yaml::ApplyOverrides(root, overrides, path);
   if (FormOf(root) == ScenarioForm::kNetwork) {

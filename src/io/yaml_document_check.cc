@@ -46,11 +46,11 @@ class DocumentChecker : public YAML::EventHandler {
  private:
   struct Collection {
     bool is_map = false;
-    std::string path;                                   // key path of this map or list
-    std::size_t items = 0;                              // list items seen so far
-    bool expecting_key = true;                          // maps alternate key, value
-    std::string key;                                    // the key of the value to come
-    std::unordered_map<std::string, YAML::Mark> keys;   // every key so far, where given
+    std::string path;                                  // key path of this map or list
+    std::size_t items = 0;                             // list items seen so far
+    bool expecting_key = true;                         // maps alternate key, value
+    std::string key;                                   // the key of the value to come
+    std::unordered_map<std::string, YAML::Mark> keys;  // every key so far, where given
   };
 
   // A scalar (`value`) or a null or alias (nullptr) at `mark`.
@@ -63,8 +63,7 @@ class DocumentChecker : public YAML::EventHandler {
         throw InputError(Join(map.path, *value) + " (" + Place(path_, mark) +
                          "): duplicate key: already given at line " +
                          std::to_string(seen->second.line + 1) + ", column " +
-                         std::to_string(seen->second.column + 1) +
-                         "; a map holds each key once");
+                         std::to_string(seen->second.column + 1) + "; a map holds each key once");
       }
       map.key = *value;
       map.expecting_key = false;
@@ -96,9 +95,8 @@ class DocumentChecker : public YAML::EventHandler {
 
   [[noreturn]] void KeyNotAName(const YAML::Mark& mark, const std::string& what) const {
     const std::string& at = open_.back().path;
-    throw InputError((at.empty() ? std::string("(top level)") : at) + " (" +
-                     Place(path_, mark) + "): a key is " + what +
-                     "; keys must be plain names");
+    throw InputError((at.empty() ? std::string("(top level)") : at) + " (" + Place(path_, mark) +
+                     "): a key is " + what + "; keys must be plain names");
   }
 
   static std::string Join(const std::string& path, const std::string& key) {

@@ -13,8 +13,7 @@ namespace musclesim::yaml {
 std::string Location(const Source& source, const YAML::Node& node) {
   const YAML::Mark mark = node.Mark();
   if (mark.is_null()) return source.unplaced;  // an override's, or a document built in code
-  return source.file + ":" + std::to_string(mark.line + 1) + ":" +
-         std::to_string(mark.column + 1);
+  return source.file + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
 }
 
 std::string Describe(const YAML::Node& node) {
@@ -146,8 +145,7 @@ namespace {
 
 // The node at steps[i..] below `node`, or the deepest one that exists on the way.
 // Recursive on const nodes: assigning yaml-cpp nodes would write into the document.
-YAML::Node Deepest(const YAML::Node& node, const std::vector<KeyPathStep>& steps,
-                   std::size_t i) {
+YAML::Node Deepest(const YAML::Node& node, const std::vector<KeyPathStep>& steps, std::size_t i) {
   if (i == steps.size()) return node;
   const KeyPathStep& step = steps[i];
   if (step.key.empty()) {

@@ -60,8 +60,8 @@ void ApplyOverride(YAML::Node root, const std::string& text, const std::string& 
       }
     } else {
       if (!node.IsMap()) {
-        throw InputError(head + (walked.empty() ? "the file" : walked) +
-                         " is not a map in " + file);
+        throw InputError(head + (walked.empty() ? "the file" : walked) + " is not a map in " +
+                         file);
       }
       if (!node[step.key] && !last) {
         if (!IsOptionalBlock(step.key)) {

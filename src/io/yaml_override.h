@@ -1,6 +1,6 @@
-// Private: overrides (`--set KEY=VALUE` on the command line), one value of a parsed document replaced (or one key added to
-// an existing map) before the document is read, so that the override is validated exactly
-// as the file's own value would be. Used by both forms of a scenario file.
+// Private: overrides (`--set KEY=VALUE` on the command line), one value of a parsed document
+// replaced (or one key added to an existing map) before the document is read, so that the override
+// is validated exactly as the file's own value would be. Used by both forms of a scenario file.
 #pragma once
 
 #include <yaml-cpp/yaml.h>

@@ -13,8 +13,7 @@ void Validate(const ActiveLengthParams& params) {
           "must be finite [m]");
   Require(std::isfinite(params.optimal_max) && params.optimal_max > params.optimal_min,
           "optimal_range[1]", params.optimal_max,
-          "must be finite and greater than optimal_range[0] = " +
-              FormatNumber(params.optimal_min));
+          "must be finite and greater than optimal_range[0] = " + FormatNumber(params.optimal_min));
   Require(std::isfinite(params.sigma) && params.sigma > 0.0, "sigma", params.sigma,
           "must be finite and > 0");
   if (params.gaussians.empty()) {

@@ -42,8 +42,8 @@ struct PieceIntegral {
   double value, d_precision, d_center;
 };
 
-PieceIntegral IntegratePiece(double x1, double x2, double y1, double slope, double b,
-                             double d, double sigma) {
+PieceIntegral IntegratePiece(double x1, double x2, double y1, double slope, double b, double d,
+                             double sigma) {
   const double spread = std::sqrt(sigma / b);  // standard deviation s
   const double z1 = (x1 - d) / spread;
   const double z2 = (x2 - d) / spread;
@@ -60,8 +60,8 @@ PieceIntegral IntegratePiece(double x1, double x2, double y1, double slope, doub
       inv_sqrt_b * (slope * mass - at_center * (n2 - n1) / spread + slope * (z1 * n1 - z2 * n2));
   // dz/db = z / (2b), ds/db = -s / (2b)
   const double d_inner =
-      (at_center * (z2 * n2 - z1 * n1) +
-       slope * spread * (n2 - n1 + z2 * z2 * n2 - z1 * z1 * n1)) / (2.0 * b);
+      (at_center * (z2 * n2 - z1 * n1) + slope * spread * (n2 - n1 + z2 * z2 * n2 - z1 * z1 * n1)) /
+      (2.0 * b);
   const double d_precision = -value / (2.0 * b) + inv_sqrt_b * d_inner;
   return {value, d_precision, d_center};
 }
@@ -127,8 +127,8 @@ class ContinuousTarget : public FitTarget {
         const double bj = shapes.precisions(j);
         const double sum = bk + bj;
         const double gap = shapes.centers(k) - shapes.centers(j);
-        by_precision += a(j) * gram(k, j) *
-                    (-0.5 / sum - gap * gap * bj * bj / (2.0 * sigma_ * sum * sum));
+        by_precision +=
+            a(j) * gram(k, j) * (-0.5 / sum - gap * gap * bj * bj / (2.0 * sigma_ * sum * sum));
         by_center += a(j) * gram(k, j) * (-bk * bj * gap / (sigma_ * sum));
       }
       const PieceIntegral r = Project(bk, shapes.centers(k));
@@ -174,14 +174,12 @@ class PiecewiseLinearTarget final : public ContinuousTarget {
 };
 
 // 8-point Gauss-Legendre rule on [-1, 1]: nodes and weights, symmetric pairs.
-constexpr double kLegendreNodes[4] = {0.183434642495649804939476142360,
-                                      0.525532409916328985817739049189,
-                                      0.796666477413626739591553936476,
-                                      0.960289856497536231683560868569};
-constexpr double kLegendreWeights[4] = {0.362683783378361982965150449277,
-                                        0.313706645877887287337962201987,
-                                        0.222381034453374470544355994426,
-                                        0.101228536290376259152531354310};
+constexpr double kLegendreNodes[4] = {
+    0.183434642495649804939476142360, 0.525532409916328985817739049189,
+    0.796666477413626739591553936476, 0.960289856497536231683560868569};
+constexpr double kLegendreWeights[4] = {
+    0.362683783378361982965150449277, 0.313706645877887287337962201987,
+    0.222381034453374470544355994426, 0.101228536290376259152531354310};
 
 // Calls visit(x, w) for the nodes and weights of the composite 8-point rule on [lo, hi],
 // split into equal panels no wider than `panel`.
@@ -268,7 +266,7 @@ class SampleTarget final : public FitTarget {
   }
 
   void NormalEquations(const GaussianShapes& shapes, Eigen::MatrixXd& gram,
-              Eigen::VectorXd& projection) const override {
+                       Eigen::VectorXd& projection) const override {
     const Eigen::MatrixXd basis = Basis(shapes);
     gram = basis.transpose() * basis;
     projection = basis.transpose() * Values();
@@ -304,8 +302,7 @@ class SampleTarget final : public FitTarget {
   Eigen::MatrixXd Basis(const GaussianShapes& shapes) const {
     Eigen::MatrixXd basis(samples_.size(), shapes.precisions.size());
     for (Eigen::Index k = 0; k < basis.cols(); ++k) {
-      const GaussianTerm phi =
-          GaussianTerm::Unit(shapes.precisions(k), shapes.centers(k), sigma_);
+      const GaussianTerm phi = GaussianTerm::Unit(shapes.precisions(k), shapes.centers(k), sigma_);
       for (std::size_t s = 0; s < samples_.size(); ++s) basis(s, k) = phi(samples_[s].x);
     }
     return basis;

@@ -130,8 +130,8 @@ struct Vertex {
   double s, f;
 };
 constexpr Vertex kGordonVertices[] = {
-    {1.27 / kGordonOptimum, 0.0},  {1.67 / kGordonOptimum, 0.84}, {2.0 / kGordonOptimum, 1.0},
-    {2.25 / kGordonOptimum, 1.0},  {3.65 / kGordonOptimum, 0.0},
+    {1.27 / kGordonOptimum, 0.0}, {1.67 / kGordonOptimum, 0.84}, {2.0 / kGordonOptimum, 1.0},
+    {2.25 / kGordonOptimum, 1.0}, {3.65 / kGordonOptimum, 0.0},
 };
 
 double Gordon(double s) {
@@ -180,14 +180,10 @@ double MuJoCo(double s) {
 
 double EvaluatePreset(ForceLengthPreset preset, double s) {
   switch (preset) {
-    case ForceLengthPreset::kDeGroote2016:
-      return DeGroote(s);
-    case ForceLengthPreset::kThelen2003:
-      return Thelen(s);
-    case ForceLengthPreset::kGordon1966:
-      return Gordon(s);
-    case ForceLengthPreset::kMuJoCo:
-      return MuJoCo(s);
+    case ForceLengthPreset::kDeGroote2016: return DeGroote(s);
+    case ForceLengthPreset::kThelen2003: return Thelen(s);
+    case ForceLengthPreset::kGordon1966: return Gordon(s);
+    case ForceLengthPreset::kMuJoCo: return MuJoCo(s);
   }
   return 0.0;
 }
@@ -198,8 +194,7 @@ PresetPieces PiecesOf(ForceLengthPreset preset) {
   // residual by 1e-11 relative). Thelen's Gaussian is 0.47 wide. The polygon and the quadratics
   // are polynomials between their breaks, resolved by any panel.
   switch (preset) {
-    case ForceLengthPreset::kDeGroote2016:
-      return {{kDeGrooteMin, kDeGrooteMax}, 0.04};
+    case ForceLengthPreset::kDeGroote2016: return {{kDeGrooteMin, kDeGrooteMax}, 0.04};
     case ForceLengthPreset::kThelen2003:
       return {{1.0 - kThelenHalfWidth, 1.0 + kThelenHalfWidth}, 0.1};
     case ForceLengthPreset::kGordon1966: {

@@ -48,8 +48,8 @@ void ValidatePreset(const FitSpec& spec) {
                          "must be absent for target preset (it uses name and optimal_length)");
   }
   if (!spec.preset) {
-    throw ParameterError("name", "~", "target preset needs the name of a curve: " +
-                                          PresetNamesRule());
+    throw ParameterError("name", "~",
+                         "target preset needs the name of a curve: " + PresetNamesRule());
   }
   if (!spec.optimal_length) {
     throw ParameterError("optimal_length", "~",
@@ -69,19 +69,15 @@ void ValidateTarget(const FitSpec& spec) {
                              "must be absent for target indicator (it uses optimal_range)");
       }
       break;
-    case FitTargetKind::kPolygon:
-      ValidatePolygon(spec);
-      break;
-    case FitTargetKind::kPreset:
-      ValidatePreset(spec);
-      break;
+    case FitTargetKind::kPolygon: ValidatePolygon(spec); break;
+    case FitTargetKind::kPreset: ValidatePreset(spec); break;
     case FitTargetKind::kSamples: {
       const bool shapes_fixed = !spec.precisions.empty();
       const std::size_t needed = static_cast<std::size_t>(spec.count) * (shapes_fixed ? 1 : 3);
       if (spec.points.size() < needed) {
         throw ParameterError("points", PointCount(spec),
-                             "samples need at least " + std::to_string(needed) +
-                                 " points for " + std::to_string(spec.count) +
+                             "samples need at least " + std::to_string(needed) + " points for " +
+                                 std::to_string(spec.count) +
                                  " Gaussians (3 parameters each, 1 with shapes fixed)");
       }
       break;
@@ -106,8 +102,8 @@ void ValidateShapes(const FitSpec& spec) {
   for (std::size_t k = 0; k < spec.precisions.size(); ++k) {
     Require(std::isfinite(spec.precisions[k]) && spec.precisions[k] > 0.0,
             "widths[" + std::to_string(k) + "]", spec.precisions[k], "must be finite and > 0");
-    Require(std::isfinite(spec.centers[k]), "centers[" + std::to_string(k) + "]",
-            spec.centers[k], "must be finite");
+    Require(std::isfinite(spec.centers[k]), "centers[" + std::to_string(k) + "]", spec.centers[k],
+            "must be finite");
   }
 }
 
@@ -124,26 +120,20 @@ void Validate(const FitSpec& spec) {
   }
   ValidateTarget(spec);
   if (spec.target != FitTargetKind::kPreset && (spec.preset || spec.optimal_length)) {
-    throw ParameterError(spec.preset ? "name" : "optimal_length",
-                         spec.preset ? std::string(ToString(*spec.preset))
-                                     : FormatNumber(*spec.optimal_length),
-                         "only for target preset (this target is " +
-                             std::string(ToString(spec.target)) + ")");
+    throw ParameterError(
+        spec.preset ? "name" : "optimal_length",
+        spec.preset ? std::string(ToString(*spec.preset)) : FormatNumber(*spec.optimal_length),
+        "only for target preset (this target is " + std::string(ToString(spec.target)) + ")");
   }
   ValidateShapes(spec);
 }
 
-std::unique_ptr<FitTarget> MakeFitTarget(const FitSpec& spec, double l1, double l2,
-                                         double sigma) {
+std::unique_ptr<FitTarget> MakeFitTarget(const FitSpec& spec, double l1, double l2, double sigma) {
   switch (spec.target) {
-    case FitTargetKind::kIndicator:
-      return MakePiecewiseLinearTarget({{l1, 1.0}, {l2, 1.0}}, sigma);
-    case FitTargetKind::kPolygon:
-      return MakePiecewiseLinearTarget(spec.points, sigma);
-    case FitTargetKind::kSamples:
-      return MakeSampleTarget(spec.points, sigma);
-    case FitTargetKind::kPreset:
-      return MakePresetTarget(*spec.preset, *spec.optimal_length, sigma);
+    case FitTargetKind::kIndicator: return MakePiecewiseLinearTarget({{l1, 1.0}, {l2, 1.0}}, sigma);
+    case FitTargetKind::kPolygon: return MakePiecewiseLinearTarget(spec.points, sigma);
+    case FitTargetKind::kSamples: return MakeSampleTarget(spec.points, sigma);
+    case FitTargetKind::kPreset: return MakePresetTarget(*spec.preset, *spec.optimal_length, sigma);
   }
   return nullptr;
 }
@@ -273,7 +263,8 @@ double NloptObjective(unsigned n, const double* theta, double* gradient, void* d
 }
 
 // Starting points: centres spread evenly over the support (tightly or fully) and spreads
-// (standard deviations) of a fraction of each component's share of it. Fixed, so fits are reproducible.
+// (standard deviations) of a fraction of each component's share of it. Fixed, so fits are
+// reproducible.
 std::vector<std::vector<double>> StartingPoints(int m) {
   std::vector<std::vector<double>> starts;
   for (double spread : {1.0, 0.5}) {

@@ -8,7 +8,8 @@ std::shared_ptr<const TensionModel> BuildModel(ModelSpec& spec) {
   if (spec.fit && !spec.fit_result) {
     ActiveLengthParams& active = spec.params.active_length;
     try {
-      spec.fit_result = FitGaussians(*spec.fit, active.optimal_min, active.optimal_max, active.sigma);
+      spec.fit_result =
+          FitGaussians(*spec.fit, active.optimal_min, active.optimal_max, active.sigma);
     } catch (const ParameterError& error) {
       throw ParameterError("active_length.fit." + error.path(), error.value(), error.rule());
     }

@@ -117,8 +117,7 @@ void RequirePresent(const ModelParams& params, const TensionParameter& p) {
                              "and a limit is a parameter only where one is given");
       }
       return;
-    default:
-      return;
+    default: return;
   }
 }
 
@@ -231,9 +230,7 @@ TensionParameterDerivative::TensionParameterDerivative(const TensionModel& model
       peak_derivative_ =
           peak_x == active.optimal_max ? length.sum().ValueAndSlope(peak_x).slope : 0.0;
       break;
-    default:
-      peak_derivative_ = SumDerivative(peak_x);
-      break;
+    default: peak_derivative_ = SumDerivative(peak_x); break;
   }
 }
 
@@ -251,8 +248,7 @@ double TensionParameterDerivative::SumDerivative(double x) const {
       const double dx = x - terms[k].center;
       return -terms[k](x) * dx * dx / (2.0 * sigma);
     }
-    case Kind::kCenter:
-      return terms[k](x) * 2.0 * terms[k].rate * (x - terms[k].center);
+    case Kind::kCenter: return terms[k](x) * 2.0 * terms[k].rate * (x - terms[k].center);
     case Kind::kSigma: {
       // sigma scales every component by sigma^-1/2 and its rate by 1 / sigma
       double sum = 0.0;
@@ -262,8 +258,7 @@ double TensionParameterDerivative::SumDerivative(double x) const {
       }
       return sum / sigma;
     }
-    default:
-      return 0.0;
+    default: return 0.0;
   }
 }
 

@@ -36,9 +36,10 @@ void Validate(const VelocityParams& params) {
     // the lengthening branch is regularised with the same eps: the same rule, read for v_max_e
     Require(params.epsilon >= 1e-12 * *e.v_max && params.epsilon <= *e.v_max, "eccentric.v_max",
             *e.v_max,
-            "must be between epsilon = " + FormatNumber(params.epsilon) + " and 1e12 epsilon "
-            "[m/s] (epsilon's rule, between 1e-12 v_max and v_max, holds for the eccentric "
-            "v_max too)");
+            "must be between epsilon = " + FormatNumber(params.epsilon) +
+                " and 1e12 epsilon "
+                "[m/s] (epsilon's rule, between 1e-12 v_max and v_max, holds for the eccentric "
+                "v_max too)");
   }
   if (e.n) {
     Require(IsExponent(*e.n), "eccentric.n", *e.n, "must be an integer >= 1 (at most 1000)");

@@ -17,7 +17,8 @@ std::vector<int> ColumnsEndingIn(const CsvTable& table, const std::string& suffi
   std::vector<int> columns;
   for (std::size_t c = 0; c < table.header.size(); ++c) {
     const std::string& name = table.header[c];
-    if (name.size() > suffix.size() && EndsWith(name, suffix)) columns.push_back(static_cast<int>(c));
+    if (name.size() > suffix.size() && EndsWith(name, suffix))
+      columns.push_back(static_cast<int>(c));
   }
   return columns;
 }
@@ -74,16 +75,18 @@ std::string NetworkPlotScript(const CsvTable& table, const PlotOptions& options)
       add(panel, column, name.substr(0, name.size() - suffix.size()) + label_end, dashed);
     }
   };
-  std::vector<Panel> panels = {
-      {"position [m]", {}, ""}, {"length [m]", {}, ""}, {"tension [N]", {}, ""},
-      {"activation [-]", {}, ""}};
+  std::vector<Panel> panels = {{"position [m]", {}, ""},
+                               {"length [m]", {}, ""},
+                               {"tension [N]", {}, ""},
+                               {"activation [-]", {}, ""}};
   add_kind(panels[0], ".position", "", false);
   add_kind(panels[1], ".length", "", false);
   add_kind(panels[2], ".tension", "", false);
   add_kind(panels[3], ".activation", "", false);
   add_kind(panels[3], ".excitation", " excitation", true);
   if (panels[0].lines.empty()) {
-    throw InputError(table.source + ": a network trajectory CSV of musclesim run needs "
+    throw InputError(table.source +
+                     ": a network trajectory CSV of musclesim run needs "
                      "<node>.position columns; found none");
   }
   // a controller's panel: what it measures against its reference (in the measured unit),
@@ -116,7 +119,8 @@ std::string NetworkPlotScript(const CsvTable& table, const PlotOptions& options)
   for (std::size_t p = 0; p < panels.size(); ++p) {
     const Panel& panel = panels[p];
     if (p + 1 == panels.size()) s << "set format x '%g'\nset xlabel 'time [s]'\n";
-    s << "set ylabel " << GnuplotString(panel.ylabel, "column " + Printable(panel.ylabel_source)) << "\nplot ";
+    s << "set ylabel " << GnuplotString(panel.ylabel, "column " + Printable(panel.ylabel_source))
+      << "\nplot ";
     for (std::size_t i = 0; i < panel.lines.size(); ++i) {
       const Line& line = panel.lines[i];
       s << (i ? ", \\\n  " : "") << "$network using 1:" << line.column

@@ -30,9 +30,8 @@ namespace {
 // Why `text` cannot be a gnuplot string ("" when it can): a control character (a newline
 // would end the command, and no quoting carries it) or a byte that is not UTF-8.
 std::string TextProblem(const std::string& text) {
-  const auto control = std::find_if(text.begin(), text.end(), [](char c) {
-    return IsControl(static_cast<unsigned char>(c));
-  });
+  const auto control = std::find_if(
+      text.begin(), text.end(), [](char c) { return IsControl(static_cast<unsigned char>(c)); });
   if (control != text.end()) {
     return "must not contain control characters (bytes below 0x20, and 0x7f); byte " +
            Hex(static_cast<unsigned char>(*control)) + " at offset " +
@@ -79,15 +78,22 @@ void Validate(const PlotOptions& options) {
   }
   if (options.width < 100 || options.width > 10000 || options.height < 100 ||
       options.height > 10000) {
-    throw ParameterError("size", std::to_string(options.width) + "x" + std::to_string(options.height),
+    throw ParameterError("size",
+                         std::to_string(options.width) + "x" + std::to_string(options.height),
                          "width and height must be 100 to 10000 px");
   }
 }
 
 std::string TrajectoryPlotScript(const CsvTable& table, const PlotOptions& options) {
-  const std::vector<std::string> needed = {"t", "length", "shortening_velocity", "activation",
-                                           "tension_passive", "tension_active", "tension_total",
-                                           "load", "phase"};
+  const std::vector<std::string> needed = {"t",
+                                           "length",
+                                           "shortening_velocity",
+                                           "activation",
+                                           "tension_passive",
+                                           "tension_active",
+                                           "tension_total",
+                                           "load",
+                                           "phase"};
   table.Require(needed, "a trajectory CSV of musclesim run");
   if (table.rows.empty()) throw InputError(table.source + ": no rows to plot");
   std::vector<int> columns;
@@ -115,13 +121,15 @@ std::string TrajectoryPlotScript(const CsvTable& table, const PlotOptions& optio
   for (std::size_t r = 0; r < table.rows.size();) {
     const std::string& label = table.rows[r][static_cast<std::size_t>(phase)];
     std::size_t end = r + 1;
-    while (end < table.rows.size() && table.rows[end][static_cast<std::size_t>(phase)] == label) ++end;
+    while (end < table.rows.size() && table.rows[end][static_cast<std::size_t>(phase)] == label)
+      ++end;
     const double t0 = FiniteValue(table, r, columns[0]);
     const double t1 = FiniteValue(table, end < table.rows.size() ? end : end - 1, columns[0]);
     const auto color = shade.find(label);
     if (color != shade.end() && t1 > t0) {
       s << "set object " << object++ << " rect from first " << Number(t0) << ", graph 0 to first "
-        << Number(t1) << ", graph 1 fc rgb '" << color->second << "' fs solid 0.45 noborder behind\n";
+        << Number(t1) << ", graph 1 fc rgb '" << color->second
+        << "' fs solid 0.45 noborder behind\n";
     }
     r = end;
   }
@@ -187,8 +195,8 @@ std::string CurvesPlotScript(const TensionModel& model, const PlotOptions& optio
   }
   s << "EOD\n";
 
-  s << "set multiplot layout 1,2 title "
-    << TitleOf(options, "model curves", "the default title") << "\n"
+  s << "set multiplot layout 1,2 title " << TitleOf(options, "model curves", "the default title")
+    << "\n"
     << "set key top left\nset autoscale xfix\nset xlabel 'length [m]'\nset ylabel 'tension [N]'\n"
     << "set yrange [" << Number(1.1 * lowest) << ":" << Number(1.6 * p.f_iso) << "]\n"
     << "set object 1 rect from first " << Number(a.optimal_min) << ", graph 0 to first "
@@ -196,7 +204,8 @@ std::string CurvesPlotScript(const TensionModel& model, const PlotOptions& optio
     << "set label 1 'L_opt' at first " << Number(0.5 * (a.optimal_min + a.optimal_max))
     << ", graph 0.03 center\n"
     << "plot $length using 1:2 with lines lw 2 lc rgb '#31a354' title 'passive T_p', \\\n"
-    << "  $length using 1:3 with lines lw 2 lc rgb '#de2d26' title 'active f_iso f_L (u = 1, v = 0)', \\\n"
+    << "  $length using 1:3 with lines lw 2 lc rgb '#de2d26' title 'active f_iso f_L (u = 1, v = "
+       "0)', \\\n"
     << "  $length using 1:4 with lines lw 2 lc rgb '#000000' title 'total'";
   for (std::size_t k = 0; k < a.gaussians.size(); ++k) {
     s << ", \\\n  $length using 1:" << 5 + k << " with lines lw 1 dt 2 lc rgb '#fb6a4a' title '"
@@ -206,9 +215,10 @@ std::string CurvesPlotScript(const TensionModel& model, const PlotOptions& optio
     << "set xlabel 'shortening velocity v [m/s]'\nset ylabel 'g(v) [-]'\nset xzeroaxis\n"
     << "set key bottom left\n"
     << "set arrow 1 from " << Number(v_max) << ", graph 0 to " << Number(v_max)
-    << ", graph 1 nohead dt 3\nset label 2 'v_max' at " << Number(v_max) << ", graph 0.95 right offset -0.5,0\n"
-    << "plot $velocity using 1:2 with lines lw 2 lc rgb '#08519c' title 'g(v), n = "
-    << p.velocity.n << ", eps = " << Number(p.velocity.epsilon) << " m/s'\n"
+    << ", graph 1 nohead dt 3\nset label 2 'v_max' at " << Number(v_max)
+    << ", graph 0.95 right offset -0.5,0\n"
+    << "plot $velocity using 1:2 with lines lw 2 lc rgb '#08519c' title 'g(v), n = " << p.velocity.n
+    << ", eps = " << Number(p.velocity.epsilon) << " m/s'\n"
     << "unset multiplot\n";
   return s.str();
 }
@@ -266,9 +276,9 @@ namespace {
 // What a sweep figure plots, its columns resolved and its texts checked before any row.
 struct SweepFigure {
   int status = -1, x_column = -1, y_column = -1, other_column = -1;  // -1: no other [-]
-  std::string y_name;                   // the metric plotted [-]
-  std::optional<std::string> other;     // the colour's swept path, or the heat map's y [-]
-  bool heat_map = false;                // two swept paths and no colour: a heat map [-]
+  std::string y_name;                                                // the metric plotted [-]
+  std::optional<std::string> other;        // the colour's swept path, or the heat map's y [-]
+  bool heat_map = false;                   // two swept paths and no colour: a heat map [-]
   std::string x_text, y_text, other_text;  // gnuplot strings of the column names [-]
 };
 
@@ -281,8 +291,9 @@ SweepFigure ResolveSweepFigure(const CsvTable& table, const std::string& x,
     return std::find(swept.begin(), swept.end(), path) != swept.end();
   };
   if (!is_swept(x)) {
-    throw ParameterError("x", Printable(x),
-                         "not a swept path of " + table.source + " (it sweeps " + List(swept) + ")");
+    throw ParameterError(
+        "x", Printable(x),
+        "not a swept path of " + table.source + " (it sweeps " + List(swept) + ")");
   }
   if (color && (!is_swept(*color) || *color == x)) {
     throw ParameterError("color", Printable(*color),
@@ -462,12 +473,11 @@ class TemporaryFile {
 
 // The script in a new file of the system's temporary folder.
 std::unique_ptr<TemporaryFile> WriteScript(const std::string& script) {
-  std::string name =
-      (std::filesystem::temp_directory_path() / "musclesim_plot_XXXXXX.gp").string();
+  std::string name = (std::filesystem::temp_directory_path() / "musclesim_plot_XXXXXX.gp").string();
   const int fd = ::mkstemps(name.data(), 3);
   if (fd < 0) {
-    throw std::runtime_error(name + ": cannot create the gnuplot script (" +
-                             std::strerror(errno) + ")");
+    throw std::runtime_error(name + ": cannot create the gnuplot script (" + std::strerror(errno) +
+                             ")");
   }
   auto file = std::make_unique<TemporaryFile>(name);
   std::size_t written = 0;
@@ -521,8 +531,7 @@ bool RunGnuplot(const std::string& script_path, std::string& messages) {
   }
   ::close(out[0]);
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
   return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
@@ -547,9 +556,9 @@ void Render(const std::string& script, const PlotOptions& options) {
                 std::to_string(options.height) + " noenhanced font 'sans,12' background '#ffffff'\n"
           : "set terminal pngcairo size " + std::to_string(options.width) + "," +
                 std::to_string(options.height) + " noenhanced font 'sans,10'\n";
-  const auto script_file = WriteScript(terminal + "set output " +
-                                       OptionString(figure.path(), "output") + "\n" + script +
-                                       "unset output\n");
+  const auto script_file =
+      WriteScript(terminal + "set output " + OptionString(figure.path(), "output") + "\n" + script +
+                  "unset output\n");
 
   std::string messages;
   const bool ran = RunGnuplot(script_file->path(), messages);

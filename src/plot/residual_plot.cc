@@ -23,8 +23,7 @@ constexpr const char* kResidualLayout =
 }  // namespace
 
 bool IsResidualTable(const CsvTable& table) {
-  return table.Find("measured") >= 0 && table.Find("model") >= 0 &&
-         table.Find("standardised") >= 0;
+  return table.Find("measured") >= 0 && table.Find("model") >= 0 && table.Find("standardised") >= 0;
 }
 
 std::string ResidualPlotScript(const CsvTable& table, const PlotOptions& options) {
@@ -63,8 +62,8 @@ std::string ResidualPlotScript(const CsvTable& table, const PlotOptions& options
   for (std::size_t k = 0; k < panels.size(); ++k) {
     s << "$d" << k << " << EOD\n";
     for (std::size_t r : rows[k]) {
-      s << Number(FiniteValue(table, r, t)) << " " << Number(FiniteValue(table, r, measured))
-        << " " << Number(FiniteValue(table, r, model)) << " "
+      s << Number(FiniteValue(table, r, t)) << " " << Number(FiniteValue(table, r, measured)) << " "
+        << Number(FiniteValue(table, r, model)) << " "
         << Number(FiniteValue(table, r, standardised)) << "\n";
     }
     s << "EOD\n";

@@ -129,9 +129,11 @@ Scenario MakeActuatorScenario(ActuatorScenarioSpec spec) {
     throw ParameterError("model." + error.path(), error.value(), error.rule());
   }
   const ActuatorParams& a = spec.actuator;
-  Made("actuator", [&] { Validate(a); return 0; });
-  s.nodes = {Node::Fixed("ground", 0.0),
-             Made("tip", [&] {
+  Made("actuator", [&] {
+    Validate(a);
+    return 0;
+  });
+  s.nodes = {Node::Fixed("ground", 0.0), Made("tip", [&] {
                return Node::Free("tip", a.mass, spec.initial_length, spec.initial_lengthening_rate);
              })};
   // the order of docs/model.md 7.4: the network's sum of forces is then the actuator's own
@@ -140,9 +142,8 @@ Scenario MakeActuatorScenario(ActuatorScenarioSpec spec) {
     return spec.excitation ? Element::Actuator("actuator", "ground", "tip", model, *spec.excitation)
                            : Element::Actuator("actuator", "ground", "tip", model, spec.activation);
   }));
-  s.elements.push_back(Made("actuator", [&] {
-    return Element::Damper("damper", "ground", "tip", a.damping);
-  }));
+  s.elements.push_back(
+      Made("actuator", [&] { return Element::Damper("damper", "ground", "tip", a.damping); }));
   s.elements.push_back(Made("actuator", [&] {
     return Element::Spring("spring", "ground", "tip", a.stiffness, a.rest_length);
   }));

@@ -77,7 +77,8 @@ class ParameterResolver {
   }
   // The index of step i, within `count` items of `what`.
   std::size_t Index(std::size_t i, std::size_t count, const char* what) const {
-    if (i >= steps_.size() || !steps_[i].key.empty()) Fail(std::string("needs an index of ") + what);
+    if (i >= steps_.size() || !steps_[i].key.empty())
+      Fail(std::string("needs an index of ") + what);
     if (steps_[i].index >= count) {
       Fail("indexes past the end of " + std::string(what) + " (" + std::to_string(count) + ")");
     }
@@ -132,8 +133,9 @@ void ParameterResolver::Top() {
   if (top == "loads") return Load(1);
   if (top == "controllers") return Controller(1);
   if (top == "time" || top == "solver" || top == "output" || top == "limits") return Setting(0);
-  Fail("names no numeric value of the scenario (a model, node, element, load, controller, "
-       "time, solver, output or limits key)");
+  Fail(
+      "names no numeric value of the scenario (a model, node, element, load, controller, "
+      "time, solver, output or limits key)");
 }
 
 void ParameterResolver::Model(std::size_t i) {
@@ -174,7 +176,8 @@ void ParameterResolver::ModelValue(std::function<double(const ModelSpec&)> get,
 void ParameterResolver::PassiveField(std::size_t i) {
   End(i + 1);
   const std::string& key = Key(i);
-  if (key == "k_p") return ModelNumber([](ModelSpec& m) -> double& { return m.params.passive.k_p; });
+  if (key == "k_p")
+    return ModelNumber([](ModelSpec& m) -> double& { return m.params.passive.k_p; });
   if (key == "alpha") {
     return ModelNumber([](ModelSpec& m) -> double& { return m.params.passive.alpha; });
   }
@@ -226,7 +229,8 @@ void ParameterResolver::EccentricField(std::size_t i) {
   if (key == "limit") {
     return ModelValue(
         [](const ModelSpec& m) {
-          return m.params.velocity.eccentric.limit.value_or(std::numeric_limits<double>::infinity());
+          return m.params.velocity.eccentric.limit.value_or(
+              std::numeric_limits<double>::infinity());
         },
         [](ModelSpec& m, double v) { m.params.velocity.eccentric.limit = v; });
   }
@@ -279,9 +283,8 @@ void ParameterResolver::GaussianField(std::size_t i) {
                         : leaf == "center"  ? &Gaussian::center
                                             : nullptr;
   if (member == nullptr) Fail("names no field of a Gaussian (amplitude, width, center)");
-  ModelNumber([k, member](ModelSpec& m) -> double& {
-    return m.params.active_length.gaussians[k].*member;
-  });
+  ModelNumber(
+      [k, member](ModelSpec& m) -> double& { return m.params.active_length.gaussians[k].*member; });
 }
 
 void ParameterResolver::Node(std::size_t i) {
@@ -290,15 +293,16 @@ void ParameterResolver::Node(std::size_t i) {
   const NodeKind kind = scenario_.nodes[n].kind;
   const Locate<musclesim::Node> node = [n](Scenario& s) -> musclesim::Node& { return s.nodes[n]; };
   if (kind == NodeKind::kPrescribed && key == "prescribed") {
-    return WaveformField(i + 2, [node](Scenario& s) -> Waveform& { return node(s).motion; },
-                         &kPositionRange);
+    return WaveformField(
+        i + 2, [node](Scenario& s) -> Waveform& { return node(s).motion; }, &kPositionRange);
   }
   End(i + 2);
   if (kind == NodeKind::kFixed && key == "fixed") {
     return Number([node](Scenario& s) -> double& { return node(s).position; }, &kPositionRange);
   }
   if (kind == NodeKind::kFree) {
-    if (key == "mass") return Number([node](Scenario& s) -> double& { return node(s).mass; }, &kMassRange);
+    if (key == "mass")
+      return Number([node](Scenario& s) -> double& { return node(s).mass; }, &kMassRange);
     if (key == "position") {
       return Number([node](Scenario& s) -> double& { return node(s).position; },
                     scenario_.form == ScenarioForm::kActuator ? &kLengthRange : &kPositionRange);
@@ -319,8 +323,8 @@ void ParameterResolver::Element(std::size_t i) {
   };
   if (element.kind == ElementKind::kActuator) {
     if (key == "activation" && !element.excitation && !element.controlled) {
-      return WaveformField(i + 2, [at](Scenario& s) -> Waveform& { return at(s).activation; },
-                           nullptr);
+      return WaveformField(
+          i + 2, [at](Scenario& s) -> Waveform& { return at(s).activation; }, nullptr);
     }
     if (key == "excitation" && element.excitation && !element.controlled) {
       return WaveformField(
@@ -368,10 +372,12 @@ void ParameterResolver::Element(std::size_t i) {
   switch (element.kind) {
     case ElementKind::kSpring:
       if (key == "stiffness") return coefficient(&musclesim::Element::stiffness, &kStiffnessRange);
-      if (key == "rest_length") return coefficient(&musclesim::Element::rest_length, &kPositionRange);
+      if (key == "rest_length")
+        return coefficient(&musclesim::Element::rest_length, &kPositionRange);
       break;
     case ElementKind::kTendon:
-      if (key == "slack_length") return coefficient(&musclesim::Element::slack_length, &kPositionRange);
+      if (key == "slack_length")
+        return coefficient(&musclesim::Element::slack_length, &kPositionRange);
       if (key == "stiffness" && !element.exponential()) {
         return coefficient(&musclesim::Element::stiffness, &kStiffnessRange);
       }
@@ -379,8 +385,7 @@ void ParameterResolver::Element(std::size_t i) {
     case ElementKind::kDamper:
       if (key == "damping") return coefficient(&musclesim::Element::damping, &kDampingRange);
       break;
-    case ElementKind::kActuator:
-      break;
+    case ElementKind::kActuator: break;
   }
   Fail("names no number of this " + std::string(ToString(element.kind)));
 }
@@ -389,10 +394,12 @@ void ParameterResolver::Load(std::size_t i) {
   const std::size_t k = Index(i, scenario_.loads.size(), "loads");
   const std::string& key = Key(i + 1);
   const musclesim::Load& load = scenario_.loads[k].load;
-  const Locate<musclesim::Load> at = [k](Scenario& s) -> musclesim::Load& { return s.loads[k].load; };
+  const Locate<musclesim::Load> at = [k](Scenario& s) -> musclesim::Load& {
+    return s.loads[k].load;
+  };
   if (load.kind == LoadKind::kForce) {
-    return WaveformField(i + 1, [at](Scenario& s) -> Waveform& { return at(s).force; },
-                         &kForceRange);
+    return WaveformField(
+        i + 1, [at](Scenario& s) -> Waveform& { return at(s).force; }, &kForceRange);
   }
   End(i + 2);
   const auto field = [&](double musclesim::Load::*member, const InputRange& range) {
@@ -418,7 +425,7 @@ void ParameterResolver::Controller(std::size_t i) {
   if (key == "gains") {
     End(i + 3);
     const std::string& leaf = Key(i + 2);
-    double PidGains::*member = leaf == "kp" ? &PidGains::kp
+    double PidGains::*member = leaf == "kp"   ? &PidGains::kp
                                : leaf == "ki" ? &PidGains::ki
                                : leaf == "kd" ? &PidGains::kd
                                               : nullptr;
@@ -428,12 +435,13 @@ void ParameterResolver::Controller(std::size_t i) {
   }
   if (key == "reference") {
     const bool tension = controller.measure.quantity == MeasuredQuantity::kTension;
-    return WaveformField(i + 2, [at](Scenario& s) -> Waveform& { return at(s).reference; },
-                         tension ? &kForceRange : &kPositionRange);
+    return WaveformField(
+        i + 2, [at](Scenario& s) -> Waveform& { return at(s).reference; },
+        tension ? &kForceRange : &kPositionRange);
   }
   if (key == "feedforward") {
-    return WaveformField(i + 2, [at](Scenario& s) -> Waveform& { return at(s).feedforward; },
-                         &kFeedforwardRange);
+    return WaveformField(
+        i + 2, [at](Scenario& s) -> Waveform& { return at(s).feedforward; }, &kFeedforwardRange);
   }
   if (key == "co_contraction" && controller.co_contraction && Key(i + 2) == "level") {
     return WaveformField(
@@ -451,8 +459,8 @@ void ParameterResolver::Setting(std::size_t i) {
     End(i + 3);
     const std::string& leaf = Key(i + 2);
     const bool low = leaf == "min_length";
-    if ((!low && leaf != "max_length") || !(low ? scenario_.limits[k].min_length
-                                                : scenario_.limits[k].max_length)) {
+    if ((!low && leaf != "max_length") ||
+        !(low ? scenario_.limits[k].min_length : scenario_.limits[k].max_length)) {
       Fail("names no length limit of this scenario");
     }
     return Number(
@@ -559,8 +567,8 @@ void Parameter::Check(double value) const {
   Require(std::isfinite(value), path_, value, "must be finite");
   if (integer_) {
     // a model's integers are ints: the largest any of them accepts is far below 1e9
-    Require(value == std::floor(value) && std::abs(value) <= (model_.empty() ? 1e15 : 1e9),
-            path_, value, "must be an integer");
+    Require(value == std::floor(value) && std::abs(value) <= (model_.empty() ? 1e15 : 1e9), path_,
+            value, "must be an integer");
   }
   if (bounded_ && !range_.Contains(value)) {
     throw ParameterError(path_, FormatNumber(value), range_.Rule());

@@ -71,7 +71,8 @@ void RunColumns::AddNetworkView(const Scenario& scenario, const NetworkSystem& s
     Add(element.name + ".phase", Kind::kPhase, e, scenario.PhaseTolerance(e));
   }
   for (std::size_t i = 0; i < nodes.size(); ++i) {
-    if (nodes[i].kind == NodeKind::kFree) Add(nodes[i].name + ".load", Kind::kLoad, static_cast<int>(i));
+    if (nodes[i].kind == NodeKind::kFree)
+      Add(nodes[i].name + ".load", Kind::kLoad, static_cast<int>(i));
   }
   for (std::size_t k = 0; k < system.controllers().size(); ++k) {
     const std::string& name = system.controllers()[k].name;
@@ -110,8 +111,8 @@ void RunColumns::Fill(double t, const NetworkSample& s, double* row) const {
   }
 }
 
-bool RunColumns::FillFromState(const NetworkSystem& system, double t, const double* y,
-                               double* row, std::vector<ElementSample>& scratch) const {
+bool RunColumns::FillFromState(const NetworkSystem& system, double t, const double* y, double* row,
+                               std::vector<ElementSample>& scratch) const {
   if (whole_sample_) return false;
   scratch.resize(system.elements().size());
   if (actuator_view_) {
@@ -132,7 +133,8 @@ bool RunColumns::FillFromState(const NetworkSystem& system, double t, const doub
     *out = shortening;
     return true;
   }
-  for (const int e : elements_read_) system.ObserveElement(e, t, y, scratch[static_cast<std::size_t>(e)]);
+  for (const int e : elements_read_)
+    system.ObserveElement(e, t, y, scratch[static_cast<std::size_t>(e)]);
   const ElementSample* samples = scratch.data();
   for (std::size_t c = 0; c < columns_.size(); ++c) {
     const Column& column = columns_[c];

@@ -109,8 +109,7 @@ void ValidateNetwork(const Scenario& s) {
     if (limit.min_length) {
       Require(*limit.min_length >= 0.0 && *limit.min_length < length, at + ".min_length",
               *limit.min_length,
-              "must be >= 0 and below " + initial + " = " + FormatNumber(length) +
-                  " [m]");
+              "must be >= 0 and below " + initial + " = " + FormatNumber(length) + " [m]");
     }
     if (limit.max_length) {
       Require(*limit.max_length > length, at + ".max_length", *limit.max_length,
@@ -128,8 +127,7 @@ void ValidateNetwork(const Scenario& s) {
       system.state_size() > kSmallSystemMaxSize) {
     throw ParameterError("solver.linear_solver", "small",
                          "serves at most " + std::to_string(kSmallSystemMaxSize) +
-                             " states and this network has " +
-                             std::to_string(system.state_size()) +
+                             " states and this network has " + std::to_string(system.state_size()) +
                              ": use auto, dense, band or sparse");
   }
 }

@@ -41,8 +41,8 @@ SensitivityColumns::SensitivityColumns(ScenarioForm form, const NetworkSystem& s
   partials_.resize(system.elements().size());
 }
 
-void SensitivityColumns::Evaluate(double t, const double* y, const double* const* s,
-                                  double* values, double* derivatives) {
+void SensitivityColumns::Evaluate(double t, const double* y, const double* const* s, double* values,
+                                  double* derivatives) {
   const NetworkSystem& system = system_;
   system.Observe(t, y, sample_);
   const std::size_t count = columns_.size();

@@ -28,8 +28,16 @@ class SensitivityColumns {
   const NetworkSample& sample() const { return sample_; }
 
  private:
-  enum class Kind { kPosition, kVelocity, kShortening, kActivation, kLength, kTension, kPassive,
-                    kActive };
+  enum class Kind {
+    kPosition,
+    kVelocity,
+    kShortening,
+    kActivation,
+    kLength,
+    kTension,
+    kPassive,
+    kActive
+  };
   struct Column {
     Kind kind;
     int index;  // a state (position, velocity, shortening, activation) or an element

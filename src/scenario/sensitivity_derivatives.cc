@@ -62,7 +62,8 @@ std::vector<NearbyPoint> StencilPoints(const Scenario& scenario, const BuiltScen
   if (!above.built && !below.built) {
     throw InputError(where + " = " + FormatNumber(value) +
                      ": cannot change continuously (an integer, or a value at the edge of its "
-                     "range on both sides), so it has no sensitivity; near it: " + below.error);
+                     "range on both sides), so it has no sensitivity; near it: " +
+                     below.error);
   }
   const double direction = above.built ? 1.0 : -1.0;
   NearbyPoint near = above.built ? std::move(above) : std::move(below);
@@ -138,14 +139,16 @@ BuiltScenario BuildScenario(const Scenario& scenario) {
 ResolvedParameter ResolveParameter(const Scenario& scenario, const BuiltScenario& base,
                                    const Parameter& parameter, const std::string& where) {
   if (parameter.is_setting()) {
-    throw InputError(where + ": a setting of the run, not a parameter of its dynamics: it has "
+    throw InputError(where +
+                     ": a setting of the run, not a parameter of its dynamics: it has "
                      "no sensitivity");
   }
   ResolvedParameter out;
   out.path = parameter.path();
   out.value = parameter.Get(scenario);
   if (!std::isfinite(out.value)) {
-    throw InputError(where + " = " + FormatNumber(out.value) + ": not a finite number: it has "
+    throw InputError(where + " = " + FormatNumber(out.value) +
+                     ": not a finite number: it has "
                      "no sensitivity");
   }
   out.derivative = ClosedForm(scenario, *base.system, parameter);

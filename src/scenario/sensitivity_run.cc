@@ -76,8 +76,8 @@ SensitivityRun::SensitivityRun(const Scenario& scenario,
   std::vector<SensitivityRequest> requests = parameters;
   for (std::size_t i = 0; i < scenario.sensitivities.size(); ++i) {
     const std::string at = i < scenario.sensitivities_at.size() ? scenario.sensitivities_at[i] : "";
-    requests.push_back({scenario.sensitivities[i],
-                        (at.empty() ? "" : at + ": ") + "sensitivities[" + std::to_string(i) + "]"});
+    requests.push_back({scenario.sensitivities[i], (at.empty() ? "" : at + ": ") +
+                                                       "sensitivities[" + std::to_string(i) + "]"});
   }
   p.base = BuildScenario(scenario);
   if (!scenario.controllers.empty() && !requests.empty()) {
@@ -115,9 +115,7 @@ const Scenario& SensitivityRun::scenario() const { return prepared_->scenario; }
 const NetworkSystem& SensitivityRun::system() const { return *prepared_->base.system; }
 const std::vector<std::string>& SensitivityRun::paths() const { return prepared_->paths; }
 const std::vector<double>& SensitivityRun::values() const { return prepared_->values; }
-const std::vector<DerivativeSource>& SensitivityRun::sources() const {
-  return prepared_->sources;
-}
+const std::vector<DerivativeSource>& SensitivityRun::sources() const { return prepared_->sources; }
 const std::vector<std::string>& SensitivityRun::columns() const { return prepared_->columns; }
 
 namespace {

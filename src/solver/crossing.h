@@ -15,8 +15,8 @@ double LocateCrossing(Function&& g, double t_lo, double g_lo, double t_hi, doubl
                       double tolerance) {
   int kept = 0;  // which end stayed in the last iteration: -1 low, +1 high
   for (int iteration = 1; g_hi != 0.0 && t_hi - t_lo > tolerance; ++iteration) {
-    double t = iteration % 3 == 0 ? 0.5 * (t_lo + t_hi)
-                                  : t_hi - g_hi * (t_hi - t_lo) / (g_hi - g_lo);
+    double t =
+        iteration % 3 == 0 ? 0.5 * (t_lo + t_hi) : t_hi - g_hi * (t_hi - t_lo) / (g_hi - g_lo);
     // at least half a tolerance inside, so every iteration shrinks the bracket
     const double margin = 0.5 * tolerance;
     t = std::fmin(std::fmax(t, t_lo + margin), t_hi - margin);

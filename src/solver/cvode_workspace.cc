@@ -33,8 +33,8 @@ int RightHandSide(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
   return 0;
 }
 
-int AnalyticJacobian(sunrealtype t, N_Vector y, N_Vector, SUNMatrix jacobian, void* data,
-                     N_Vector, N_Vector, N_Vector) {
+int AnalyticJacobian(sunrealtype t, N_Vector y, N_Vector, SUNMatrix jacobian, void* data, N_Vector,
+                     N_Vector, N_Vector) {
   const auto* cb = static_cast<const Callbacks*>(data);
   std::vector<double>& values = cb->linear->values();
   cb->system->Jacobian(cb->InputTime(t), N_VGetArrayPointer(y), values.data());
@@ -128,8 +128,8 @@ void CvodeWorkspace::FitSensitivities(int count) {
 void CvodeWorkspace::Fit(const NetworkSystem& system, LinearSolverKind kind) {
   const JacobianPattern& pattern = system.jacobian_pattern();
   const bool small = kind == LinearSolverKind::kSmall;
-  const bool same_size = state_ != nullptr && N_VGetLength(state_) == pattern.size &&
-                         IsSmallVector(state_) == small;
+  const bool same_size =
+      state_ != nullptr && N_VGetLength(state_) == pattern.size && IsSmallVector(state_) == small;
   if (same_size && linear_ != nullptr && linear_->Fits(kind, pattern)) return;
   if (cvode_ != nullptr) CVodeFree(&cvode_);
   cvode_ = nullptr;
@@ -170,16 +170,15 @@ void CvodeWorkspace::Start(IntegrationMethod method, double t) {
 void CvodeWorkspace::Configure(const SolverOptions& options, double t, int count) {
   Start(options.method, t);
   Check(CVodeSStolerances(cvode_, options.rtol, options.atol), "CVodeSStolerances");
-  Check(CVodeSetJacFn(cvode_, options.jacobian == JacobianKind::kAnalytic ? AnalyticJacobian
-                                                                          : nullptr),
+  Check(CVodeSetJacFn(cvode_,
+                      options.jacobian == JacobianKind::kAnalytic ? AnalyticJacobian : nullptr),
         "CVodeSetJacFn");
   Check(CVodeSetMaxStep(cvode_, options.max_step), "CVodeSetMaxStep");
   // A tighter Newton test (CVODE's default 0.1) and a fresher Jacobian (default every 51
   // steps): on this stiff, strongly nonlinear problem fewer steps fail, and each costs
   // little next to a step (README "Work-precision")
   Check(CVodeSetNonlinConvCoef(cvode_, kNewtonConvergenceCoefficient), "CVodeSetNonlinConvCoef");
-  Check(CVodeSetJacEvalFrequency(cvode_, kJacobianEvaluationFrequency),
-        "CVodeSetJacEvalFrequency");
+  Check(CVodeSetJacEvalFrequency(cvode_, kJacobianEvaluationFrequency), "CVodeSetJacEvalFrequency");
   ConfigureSensitivities(count);
 }
 

@@ -21,8 +21,7 @@ namespace {
 // output time k interval, say) are one time: CVODE refuses to step over less than a few
 // ulps (CV_TOO_CLOSE), so nothing closer than this is integrated over.
 double MergeDistance(double start, double end) {
-  return 16.0 * std::numeric_limits<double>::epsilon() *
-         std::max(std::abs(start), std::abs(end));
+  return 16.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(start), std::abs(end));
 }
 
 }  // namespace
@@ -42,8 +41,12 @@ struct IntegrationSession::Impl {
   Impl(CvodeWorkspace& workspace, const NetworkSystem& network, const SolverOptions& settings,
        NetworkSink* row_sink, const std::vector<SensitivityParameter>* sensitivity_parameters,
        SensitivitySink* sensitivity_rows)
-      : ws(workspace), system(network), options(settings), sink(row_sink),
-        parameters(sensitivity_parameters), sensitivity_sink(sensitivity_rows),
+      : ws(workspace),
+        system(network),
+        options(settings),
+        sink(row_sink),
+        parameters(sensitivity_parameters),
+        sensitivity_sink(sensitivity_rows),
         n(network.state_size()),
         sensitivity_count(parameters == nullptr ? 0 : static_cast<int>(parameters->size())),
         rows_sensitivities(static_cast<std::size_t>(sensitivity_count)) {}
@@ -88,8 +91,8 @@ struct IntegrationSession::Impl {
   std::vector<const double*> rows_sensitivities;
   // the piece under way
   RunStats stats;
-  long calls = 0;           // CVode calls, one internal step each: the max_steps guard
-  double merge = 0.0;       // [s]: times closer than this are one
+  long calls = 0;      // CVode calls, one internal step each: the max_steps guard
+  double merge = 0.0;  // [s]: times closer than this are one
   std::chrono::steady_clock::time_point wall_start;
 };
 
@@ -156,8 +159,8 @@ void IntegrationSession::Impl::Prepare(const NetworkRunRequest& start) {
 const double* const* IntegrationSession::Impl::SensitivitiesAt(double at) {
   // those the run (re)started with until a step is taken, then the last step's interpolant's
   for (int i = 0; i < sensitivity_count; ++i) {
-    rows_sensitivities[static_cast<std::size_t>(i)] = N_VGetArrayPointer(
-        fresh ? ws.sensitivities()[i] : ws.sensitivities_between()[i]);
+    rows_sensitivities[static_cast<std::size_t>(i)] =
+        N_VGetArrayPointer(fresh ? ws.sensitivities()[i] : ws.sensitivities_between()[i]);
   }
   if (!fresh && sensitivity_count > 0) {
     ws.Check(CVodeGetSensDky(ws.cvode(), at, 0, ws.sensitivities_between()), "CVodeGetSensDky");
@@ -203,9 +206,8 @@ void IntegrationSession::Impl::RecordRows(double until, const double* at_until,
   // fetch), and one polynomial serves them all; fewer, and CVodeGetDky per row costs less
   const long inside = rows.Before(until);
   int order = 0;
-  const bool by_polynomial = sensitivity_count == 0 &&
-                             CVodeGetLastOrder(ws.cvode(), &order) >= 0 && inside > order + 1 &&
-                             polynomial.Fetch(ws.cvode(), ws.between(), n);
+  const bool by_polynomial = sensitivity_count == 0 && CVodeGetLastOrder(ws.cvode(), &order) >= 0 &&
+                             inside > order + 1 && polynomial.Fetch(ws.cvode(), ws.between(), n);
   double* between = N_VGetArrayPointer(ws.between());
   while (rows.pending()) {
     const double out = rows.next_time();
@@ -240,15 +242,15 @@ std::optional<RunStatus> IntegrationSession::Impl::Crossed(int hit, double stop)
     const std::string& name = system.elements()[root.element].name;
     Record(t, y);
     if (root.kind == Root::kZeroLength) {
-      return Finish(RunStatus::kFailed, t,
-                    "the length of " + name + " reached zero at t = " + FormatNumber(t) +
-                        " s: it collapsed");
+      return Finish(
+          RunStatus::kFailed, t,
+          "the length of " + name + " reached zero at t = " + FormatNumber(t) + " s: it collapsed");
     }
     return Finish(RunStatus::kLimit, t,
-                  std::string(root.kind == Root::kMinLength ? "min_length" : "max_length") +
-                      " = " + FormatNumber(root.level) + " reached by " + name + ": length " +
-                      FormatNumber(system.Length(root.element, t, y)) + " m at t = " +
-                      FormatNumber(t) + " s");
+                  std::string(root.kind == Root::kMinLength ? "min_length" : "max_length") + " = " +
+                      FormatNumber(root.level) + " reached by " + name + ": length " +
+                      FormatNumber(system.Length(root.element, t, y)) +
+                      " m at t = " + FormatNumber(t) + " s");
   }
   // a kink: restart the integrator on its far side, the sensitivities carried over (the
   // right-hand side is continuous there: no jump, docs/model.md 10)
@@ -295,8 +297,7 @@ std::optional<RunStatus> IntegrationSession::Impl::Segment(double stop) {
                     "CVODE failed at t = " + FormatNumber(t) + " s with " + FlagName(flag) +
                         (cb.last_error.empty() ? "" : " (" + cb.last_error + ")"));
     }
-    const int hit =
-        roots.Step(cb, t_before, t, y, [&](double at) { return Interpolate(at); });
+    const int hit = roots.Step(cb, t_before, t, y, [&](double at) { return Interpolate(at); });
     if (hit >= 0) {
       if (const std::optional<RunStatus> ended_here = Crossed(hit, stop)) return ended_here;
       continue;
@@ -309,8 +310,7 @@ std::optional<RunStatus> IntegrationSession::Impl::Segment(double stop) {
 
 RunStats IntegrationSession::Impl::Advance(double until, const OutputGrid& grid) {
   if (ended) {
-    throw std::logic_error("advance after the integration ended at t = " + FormatNumber(t) +
-                           " s");
+    throw std::logic_error("advance after the integration ended at t = " + FormatNumber(t) + " s");
   }
   Require(std::isfinite(until) && until > t, "t_end", until,
           "must be finite and after the integration's time = " + FormatNumber(t) + " [s]");
@@ -346,15 +346,16 @@ RunStats IntegrationSession::Impl::Advance(double until, const OutputGrid& grid)
 }
 
 IntegrationSession::IntegrationSession(Simulation& simulation, const NetworkSystem& system,
-                                       const SolverOptions& options,
-                                       const NetworkRunRequest& start, NetworkSink* sink,
+                                       const SolverOptions& options, const NetworkRunRequest& start,
+                                       NetworkSink* sink,
                                        const std::vector<SensitivityParameter>* parameters,
                                        SensitivitySink* sensitivity_sink)
     : impl_(std::make_unique<Impl>(simulation.workspace(), system, options, sink, parameters,
                                    sensitivity_sink)) {
   Validate(options);
   Require(std::isfinite(start.t_start), "t_start", start.t_start, "must be finite [s]");
-  for (double v : start.initial_state) Require(std::isfinite(v), "initial_state", v, "must be finite");
+  for (double v : start.initial_state)
+    Require(std::isfinite(v), "initial_state", v, "must be finite");
   impl_->Prepare(start);
 }
 

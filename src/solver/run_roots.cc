@@ -33,13 +33,13 @@ std::vector<Root> RootsOf(const NetworkSystem& system, const NetworkRunRequest& 
       Require(std::isfinite(*limit.min_length) && *limit.min_length >= 0.0 &&
                   *limit.min_length < length,
               path + "min_length", *limit.min_length,
-              "must be >= 0 and below " + limit.element + "'s initial length = " +
-                  FormatNumber(length) + " [m]");
+              "must be >= 0 and below " + limit.element +
+                  "'s initial length = " + FormatNumber(length) + " [m]");
       roots.push_back({Root::kMinLength, e, *limit.min_length});
     }
     if (limit.max_length) {
-      Require(std::isfinite(*limit.max_length) && *limit.max_length > length,
-              path + "max_length", *limit.max_length,
+      Require(std::isfinite(*limit.max_length) && *limit.max_length > length, path + "max_length",
+              *limit.max_length,
               "must be above " + limit.element + "'s initial length = " + FormatNumber(length) +
                   " [m]");
       roots.push_back({Root::kMaxLength, e, *limit.max_length});

@@ -25,8 +25,7 @@ std::vector<Root> RootsOf(const NetworkSystem& system, const NetworkRunRequest& 
                           const double* y);
 
 // The value of `root` at (t, y).
-inline double RootValue(const NetworkSystem& system, const Root& root, double t,
-                        const double* y) {
+inline double RootValue(const NetworkSystem& system, const Root& root, double t, const double* y) {
   return root.kind == Root::kKink ? system.KinkValue(system.kinks()[root.element], t, y)
                                   : system.Length(root.element, t, y) - root.level;
 }

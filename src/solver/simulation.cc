@@ -33,10 +33,8 @@ JacobianKind ParseJacobianKind(std::string_view text) {
 }
 
 constexpr EnumName<LinearSolverKind> kLinearSolverNames[] = {
-    {LinearSolverKind::kDense, "dense"},
-    {LinearSolverKind::kBand, "band"},
-    {LinearSolverKind::kSparse, "sparse"},
-    {LinearSolverKind::kAuto, "auto"},
+    {LinearSolverKind::kDense, "dense"},   {LinearSolverKind::kBand, "band"},
+    {LinearSolverKind::kSparse, "sparse"}, {LinearSolverKind::kAuto, "auto"},
     {LinearSolverKind::kSmall, "small"},
 };
 
@@ -73,8 +71,7 @@ void Validate(const SolverOptions& o) {
           "must be >= 1e-14 (what double precision can meet) and < 1 (an error as large as "
           "the value)");
   // an absolute error of a metre or a metre per second says nothing about an actuator
-  Require(o.atol > 0.0 && o.atol < 1.0, "atol", o.atol,
-          "must be > 0 and < 1 [m and m/s]");
+  Require(o.atol > 0.0 && o.atol < 1.0, "atol", o.atol, "must be > 0 and < 1 [m and m/s]");
   Require(std::isfinite(o.max_step) && o.max_step >= 0.0, "max_step", o.max_step,
           "must be finite and >= 0 (0: no limit) [s]");
   Require(o.max_steps >= 1, "max_steps", static_cast<double>(o.max_steps), "must be >= 1");
@@ -117,8 +114,7 @@ void Validate(const RunRequest& r) {
             "must be >= 0 and below the initial length = " + FormatNumber(r.length) + " [m]");
   }
   if (r.max_length) {
-    Require(std::isfinite(*r.max_length) && *r.max_length > r.length, "max_length",
-            *r.max_length,
+    Require(std::isfinite(*r.max_length) && *r.max_length > r.length, "max_length", *r.max_length,
             "must be above the initial length = " + FormatNumber(r.length) + " [m]");
   }
 }
@@ -129,7 +125,8 @@ void Validate(const NetworkRunRequest& r) {
   for (double v : r.initial_state) Require(std::isfinite(v), "initial_state", v, "must be finite");
   for (std::size_t i = 0; i < r.output_times.size(); ++i) {
     const double t = r.output_times[i];
-    const double previous = i == 0 ? -std::numeric_limits<double>::infinity() : r.output_times[i - 1];
+    const double previous =
+        i == 0 ? -std::numeric_limits<double>::infinity() : r.output_times[i - 1];
     Require(std::isfinite(t) && t >= r.t_start && t <= r.t_end && t > previous, "output_times", t,
             "must be strictly increasing within [t_start, t_end] = [" + FormatNumber(r.t_start) +
                 ", " + FormatNumber(r.t_end) + "] [s]");

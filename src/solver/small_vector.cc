@@ -24,9 +24,7 @@ struct OwningContent {
   sunrealtype storage[N];
 };
 
-inline sunrealtype* Data(N_Vector v) {
-  return static_cast<SmallVectorContent*>(v->content)->data;
-}
+inline sunrealtype* Data(N_Vector v) { return static_cast<SmallVectorContent*>(v->content)->data; }
 
 // ---------------------------------------------------------------------------------------------
 // construction, access and bookkeeping
@@ -375,8 +373,7 @@ int WrmsNormVectorArray(int nvec, N_Vector* x, N_Vector* w, sunrealtype* norms) 
 }
 
 template <int N>
-int WrmsNormMaskVectorArray(int nvec, N_Vector* x, N_Vector* w, N_Vector id,
-                            sunrealtype* norms) {
+int WrmsNormMaskVectorArray(int nvec, N_Vector* x, N_Vector* w, N_Vector id, sunrealtype* norms) {
   if (nvec < 1) return -1;
   for (int i = 0; i < nvec; ++i) norms[i] = WrmsNormMask<N>(x[i], w[i], id);
   return 0;
@@ -400,8 +397,7 @@ int ScaleAddMultiVectorArray(int nvec, int nsum, sunrealtype* a, N_Vector* x, N_
 
 // z[i] = sum over j of c[j] x[j][i], for the nvec vectors i
 template <int N>
-int LinearCombinationVectorArray(int nvec, int nsum, sunrealtype* c, N_Vector** x,
-                                 N_Vector* z) {
+int LinearCombinationVectorArray(int nvec, int nsum, sunrealtype* c, N_Vector** x, N_Vector* z) {
   if (nvec < 1 || nsum < 1) return -1;
   for (int i = 0; i < nvec; ++i) {
     if (nsum == 1) {

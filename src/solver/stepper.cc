@@ -41,8 +41,7 @@ Stepper::Stepper(NetworkSystem system, SolverOptions options, StepperStart start
     system_.InitialState(time_, state_.data());
   } else {
     if (static_cast<int>(start.initial_state.size()) != n) {
-      throw ParameterError("initial_state",
-                           std::to_string(start.initial_state.size()) + " values",
+      throw ParameterError("initial_state", std::to_string(start.initial_state.size()) + " values",
                            "must hold the system's " + std::to_string(n) + " states");
     }
     for (double v : start.initial_state) {
@@ -65,8 +64,8 @@ Stepper::~Stepper() = default;
 RunStatus Stepper::Advance(double t_next) {
   if (ended_) {
     throw std::logic_error("advance after the stepping ended at t = " + FormatNumber(time_) +
-                           " s (" + std::string(ToString(stats_.status)) + ": " +
-                           stats_.message + "): a new stepper starts again");
+                           " s (" + std::string(ToString(stats_.status)) + ": " + stats_.message +
+                           "): a new stepper starts again");
   }
   Require(std::isfinite(t_next) && t_next > time_, "t_next", t_next,
           "must be finite and after time() = " + FormatNumber(time_) + " [s]");

@@ -11,10 +11,14 @@
 namespace musclesim {
 
 const std::vector<Metric>& AllMetrics() {
-  static const std::vector<Metric> all = {
-      Metric::kFinalLength, Metric::kMinLength, Metric::kMaxLength,
-      Metric::kPeakTension, Metric::kMeanShorteningVelocity, Metric::kFinalShorteningVelocity,
-      Metric::kWork, Metric::kTimeToLength};
+  static const std::vector<Metric> all = {Metric::kFinalLength,
+                                          Metric::kMinLength,
+                                          Metric::kMaxLength,
+                                          Metric::kPeakTension,
+                                          Metric::kMeanShorteningVelocity,
+                                          Metric::kFinalShorteningVelocity,
+                                          Metric::kWork,
+                                          Metric::kTimeToLength};
   return all;
 }
 
@@ -63,8 +67,7 @@ double ComputeMetric(Metric metric, const std::vector<TrajectoryPoint>& tr,
                      const MetricOptions& options) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   switch (metric) {
-    case Metric::kFinalLength:
-      return tr.back().sample.length;
+    case Metric::kFinalLength: return tr.back().sample.length;
     case Metric::kMinLength:
     case Metric::kMaxLength: {
       const auto [lo, hi] = std::minmax_element(
@@ -84,8 +87,7 @@ double ComputeMetric(Metric metric, const std::vector<TrajectoryPoint>& tr,
       if (!(w1 > w0)) return nan;  // the run ended before the window
       return (LengthAt(tr, w0) - LengthAt(tr, w1)) / (w1 - w0);
     }
-    case Metric::kFinalShorteningVelocity:
-      return tr.back().sample.shortening_velocity;
+    case Metric::kFinalShorteningVelocity: return tr.back().sample.shortening_velocity;
     case Metric::kWork: {
       double work = 0.0;
       for (std::size_t i = 1; i < tr.size(); ++i) {
@@ -194,14 +196,10 @@ void MetricAccumulator::Record(const TrajectoryPoint& point) {
 double MetricAccumulator::Value(Metric metric) const {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   switch (metric) {
-    case Metric::kFinalLength:
-      return last_.length;
-    case Metric::kMinLength:
-      return min_length_;
-    case Metric::kMaxLength:
-      return max_length_;
-    case Metric::kPeakTension:
-      return peak_tension_;
+    case Metric::kFinalLength: return last_.length;
+    case Metric::kMinLength: return min_length_;
+    case Metric::kMaxLength: return max_length_;
+    case Metric::kPeakTension: return peak_tension_;
     case Metric::kMeanShorteningVelocity: {
       const double w0 = options_.window_start.value_or(first_.t);
       const double w1 = std::min(options_.window_end.value_or(last_.t), last_.t);
@@ -209,12 +207,9 @@ double MetricAccumulator::Value(Metric metric) const {
       // a probe is at w0 (w1) whenever w0 (w1) may lie strictly inside the records
       return (LengthAt(w0, window_start_) - LengthAt(w1, window_end_)) / (w1 - w0);
     }
-    case Metric::kFinalShorteningVelocity:
-      return last_.shortening_velocity;
-    case Metric::kWork:
-      return work_sum_;
-    case Metric::kTimeToLength:
-      return crossed_ ? crossing_time_ : nan;
+    case Metric::kFinalShorteningVelocity: return last_.shortening_velocity;
+    case Metric::kWork: return work_sum_;
+    case Metric::kTimeToLength: return crossed_ ? crossing_time_ : nan;
   }
   return nan;
 }

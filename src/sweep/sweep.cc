@@ -93,7 +93,8 @@ std::vector<AxisValue> PointAxisValues(const SweepSpec& spec, long index) {
         const SweepAxis& a = spec.axes[k];
         const double u = Uniform(spec.seed, index, k);
         if (!a.is_range()) {
-          const auto pick = std::min(static_cast<std::size_t>(u * a.values.size()), a.values.size() - 1);
+          const auto pick =
+              std::min(static_cast<std::size_t>(u * a.values.size()), a.values.size() - 1);
           values[k] = ValueOf(a, static_cast<long>(pick));
           continue;
         }

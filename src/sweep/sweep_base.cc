@@ -15,8 +15,11 @@ class Recorder final : public NetworkSink {
  public:
   Recorder(const Scenario& scenario, const NetworkSystem& system, int element,
            TrajectorySink& metrics, ColumnRecorder* trajectory)
-      : actuator_form_(scenario.form == ScenarioForm::kActuator), system_(system),
-        element_(static_cast<std::size_t>(element)), metrics_(metrics), trajectory_(trajectory) {}
+      : actuator_form_(scenario.form == ScenarioForm::kActuator),
+        system_(system),
+        element_(static_cast<std::size_t>(element)),
+        metrics_(metrics),
+        trajectory_(trajectory) {}
 
   // the metrics' one element straight from the state, unless the whole row is kept
   bool RecordState(double t, const double* y) override {
@@ -62,8 +65,8 @@ int MetricElementIndex(const Scenario& scenario, const std::string& element) {
     if (scenario.elements[e].name == element) return static_cast<int>(e);
     names += (e ? ", " : "") + scenario.elements[e].name;
   }
-  throw InputError("metric_options.element = " + element + ": the network of " +
-                   scenario.source + " has no such element (its elements: " + names + ")");
+  throw InputError("metric_options.element = " + element + ": the network of " + scenario.source +
+                   " has no such element (its elements: " + names + ")");
 }
 
 MetricElements SweepBase::Validate(const SweepSpec& spec, long index, const std::string& element,

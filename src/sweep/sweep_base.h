@@ -24,9 +24,7 @@ class SweepBase {
   explicit SweepBase(std::unique_ptr<PointFactory> points) : points_(std::move(points)) {}
 
   // An independent base, for another thread.
-  std::unique_ptr<SweepBase> Copy() const {
-    return std::make_unique<SweepBase>(points_->Copy());
-  }
+  std::unique_ptr<SweepBase> Copy() const { return std::make_unique<SweepBase>(points_->Copy()); }
 
   // Makes and validates point `index` of `spec` (InputError, as the factory says, or naming
   // metric_options.element when `element`, unless empty, is not one of its elements). Moves
@@ -49,12 +47,12 @@ class SweepBase {
 
  private:
   std::unique_ptr<PointFactory> points_;
-  std::optional<Scenario> built_;      // the point, when not kept in the spec
-  const Scenario* scenario_ = nullptr;  // the prepared point
-  int element_ = 0;                    // the metric element's index
-  bool keep_ = false;                  // the spec keeps trajectories
-  std::optional<NetworkSystem> system_;         // of the last run
-  std::optional<ColumnRecorder> trajectory_;    // of the last run, when kept
+  std::optional<Scenario> built_;             // the point, when not kept in the spec
+  const Scenario* scenario_ = nullptr;        // the prepared point
+  int element_ = 0;                           // the metric element's index
+  bool keep_ = false;                         // the spec keeps trajectories
+  std::optional<NetworkSystem> system_;       // of the last run
+  std::optional<ColumnRecorder> trajectory_;  // of the last run, when kept
 };
 
 // The index of `element` among the scenario's elements; InputError if it has none of that

@@ -51,8 +51,10 @@ SweepAxis ReadAxis(const yaml::Source& src, const YAML::Node& key, const YAML::N
     }
     axis.log_scale = scale == "log";
   }
-  if (!std::isfinite(axis.from)) yaml::Fail(src, node["from"], where + ".from", yaml::Describe(node["from"]), "must be finite");
-  if (!std::isfinite(axis.to)) yaml::Fail(src, node["to"], where + ".to", yaml::Describe(node["to"]), "must be finite");
+  if (!std::isfinite(axis.from))
+    yaml::Fail(src, node["from"], where + ".from", yaml::Describe(node["from"]), "must be finite");
+  if (!std::isfinite(axis.to))
+    yaml::Fail(src, node["to"], where + ".to", yaml::Describe(node["to"]), "must be finite");
   if (axis.log_scale && !(axis.from > 0.0 && axis.to > 0.0)) {
     yaml::Fail(src, node, where, "from " + FormatNumber(axis.from) + " to " + FormatNumber(axis.to),
                "a log scale needs from > 0 and to > 0");
@@ -66,7 +68,8 @@ SweepAxis ReadAxis(const yaml::Source& src, const YAML::Node& key, const YAML::N
   }
   const YAML::Node count_node = yaml::Required(src, node, where, "count");
   axis.count = yaml::ReadInteger(src, count_node, where + ".count");
-  if (axis.count < 1) yaml::Fail(src, count_node, where + ".count", yaml::Describe(count_node), "must be >= 1");
+  if (axis.count < 1)
+    yaml::Fail(src, count_node, where + ".count", yaml::Describe(count_node), "must be >= 1");
   return axis;
 }
 
@@ -90,10 +93,14 @@ void CheckGridSize(const yaml::Source& src, const YAML::Node& parameters, const 
 void ReadMode(const yaml::Source& src, const YAML::Node& root, SweepSpec& spec) {
   if (!root["mode"]) return;  // the default
   const std::string mode = yaml::ReadString(src, root["mode"], "mode");
-  if (mode == "grid") spec.mode = SweepMode::kGrid;
-  else if (mode == "zip") spec.mode = SweepMode::kZip;
-  else if (mode == "random") spec.mode = SweepMode::kRandom;
-  else yaml::Fail(src, root["mode"], "mode", mode, "must be grid, zip or random");
+  if (mode == "grid")
+    spec.mode = SweepMode::kGrid;
+  else if (mode == "zip")
+    spec.mode = SweepMode::kZip;
+  else if (mode == "random")
+    spec.mode = SweepMode::kRandom;
+  else
+    yaml::Fail(src, root["mode"], "mode", mode, "must be grid, zip or random");
 }
 
 // Mode random's `samples` and `seed`; other modes refuse them.
@@ -101,9 +108,9 @@ void ReadSampling(const yaml::Source& src, const YAML::Node& root, SweepSpec& sp
   if (spec.mode != SweepMode::kRandom) {
     for (const char* key : {"samples", "seed"}) {
       if (root[key]) {
-        yaml::Fail(src, root[key], key, yaml::Describe(root[key]),
-                   "is for mode random only (this sweep is " + std::string(ToString(spec.mode)) +
-                       ")");
+        yaml::Fail(
+            src, root[key], key, yaml::Describe(root[key]),
+            "is for mode random only (this sweep is " + std::string(ToString(spec.mode)) + ")");
       }
     }
     return;
@@ -178,8 +185,8 @@ void ReadMetricOptions(const yaml::Source& src, const YAML::Node& root, SweepSpe
     const std::vector<double> w =
         yaml::ReadNumbers(src, options["window"], "metric_options.window", 2);
     if (!(std::isfinite(w[0]) && std::isfinite(w[1]) && w[1] > w[0])) {
-      yaml::Fail(src, options["window"], "metric_options.window",
-                 yaml::Describe(options["window"]), "must be [start, end] with end > start [s]");
+      yaml::Fail(src, options["window"], "metric_options.window", yaml::Describe(options["window"]),
+                 "must be [start, end] with end > start [s]");
     }
     spec.metric_options.window_start = w[0];
     spec.metric_options.window_end = w[1];
@@ -199,11 +206,14 @@ void ReadMetricOptions(const yaml::Source& src, const YAML::Node& root, SweepSpe
 void ReadOutputs(const yaml::Source& src, const YAML::Node& root, SweepSpec& spec) {
   if (root["trajectories"]) {
     const std::string policy = yaml::ReadString(src, root["trajectories"], "trajectories");
-    if (policy == "none") spec.trajectories = TrajectoryPolicy::kNone;
-    else if (policy == "all") spec.trajectories = TrajectoryPolicy::kAll;
-    else if (policy == "failed") spec.trajectories = TrajectoryPolicy::kFailed;
-    else yaml::Fail(src, root["trajectories"], "trajectories", policy,
-                    "must be none, all or failed");
+    if (policy == "none")
+      spec.trajectories = TrajectoryPolicy::kNone;
+    else if (policy == "all")
+      spec.trajectories = TrajectoryPolicy::kAll;
+    else if (policy == "failed")
+      spec.trajectories = TrajectoryPolicy::kFailed;
+    else
+      yaml::Fail(src, root["trajectories"], "trajectories", policy, "must be none, all or failed");
   }
   if (root["output"]) {
     spec.output = yaml::ReadString(src, root["output"], "output");
@@ -246,7 +256,8 @@ SweepPlan PlanFromFile(const yaml::Source& src, const YAML::Node& root, SweepSpe
   spec.form = base_file->form();
   if (base_file->has_sensitivities()) {
     // a sweep's points are plain runs reduced to metrics: a list that would be ignored is refused
-    throw InputError(spec.base + ": sensitivities: a sweep runs its points without "
+    throw InputError(spec.base +
+                     ": sensitivities: a sweep runs its points without "
                      "sensitivities; remove the key from the base scenario (musclesim run "
                      "computes them)");
   }
@@ -273,7 +284,8 @@ SweepPlan ReadSweep(const Document& document, const std::string& name, const Sce
   SweepSpec spec = ReadSweepSpec(src, root, "");
   if (base == nullptr) return PlanFromFile(src, root, std::move(spec), threads);
   if (!base->sensitivities.empty()) {
-    throw InputError(spec.base + ": sensitivities: a sweep runs its points without "
+    throw InputError(spec.base +
+                     ": sensitivities: a sweep runs its points without "
                      "sensitivities; remove them from the base scenario");
   }
   spec.base_digest = Digest(base_text);

@@ -33,7 +33,9 @@ class FilePointFactory final : public PointFactory {
   }
 
   FilePointFactory(const FilePointFactory& other)
-      : template_(other.template_->Copy()), base_(other.base_), numeric_(other.numeric_),
+      : template_(other.template_->Copy()),
+        base_(other.base_),
+        numeric_(other.numeric_),
         handles_(other.handles_) {}
 
   std::unique_ptr<PointFactory> Copy() const override {

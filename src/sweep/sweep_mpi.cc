@@ -108,7 +108,8 @@ SweepOutcome Root(const SweepSpec& spec, const SweepRunOptions& options, int ran
         MPI_Recv(text.data(), bytes, MPI_CHAR, status.MPI_SOURCE, kResult, MPI_COMM_WORLD,
                  MPI_STATUS_IGNORE);
         std::size_t start = 0;
-        for (std::size_t end; (end = text.find('\n', start)) != std::string::npos; start = end + 1) {
+        for (std::size_t end; (end = text.find('\n', start)) != std::string::npos;
+             start = end + 1) {
           const std::string row = text.substr(start + 1, end - start - 1);
           summary.Add(std::strtol(row.c_str(), nullptr, 10), row, StatusOfLetter(text[start]));
         }

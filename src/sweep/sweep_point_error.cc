@@ -122,8 +122,8 @@ bool PointErrorExplainer::IsBaseError(const std::string& message) const {
 
 PointErrorExplainer::Explanation PointErrorExplainer::Explain(long index,
                                                               const std::string& error) const {
-  const std::string base_fault = spec_.base + " (the base scenario of the sweep " +
-                                 spec_.source + ") is not a valid scenario: ";
+  const std::string base_fault = spec_.base + " (the base scenario of the sweep " + spec_.source +
+                                 ") is not a valid scenario: ";
   if (IsBaseError(error)) return {base_fault + *base_error_, true};
 
   // the first axis whose value alone breaks the base is the culprit
@@ -144,10 +144,10 @@ PointErrorExplainer::Explanation PointErrorExplainer::Explain(long index,
   if (base_error_) return {base_fault + *base_error_, true};
   // no single value is wrong: their combination is
   const std::string where = spec_.axes.empty() ? spec_.source : spec_.axes.front().location;
-  return {where + ": point " + std::to_string(index) + " (" + Describe(spec_, values) +
-              ") is not a valid scenario, though each of its values is valid alone: " +
-              Restore(error),
-          false};
+  return {
+      where + ": point " + std::to_string(index) + " (" + Describe(spec_, values) +
+          ") is not a valid scenario, though each of its values is valid alone: " + Restore(error),
+      false};
 }
 
 }  // namespace musclesim

@@ -137,8 +137,8 @@ std::string ExplainInvalidPoint(const SweepSpec& spec, long index, const Scenari
       handles[j].Set(alone, numbers[k]);
     } catch (const ParameterError& alone) {
       const SweepAxis& axis = spec.axes[k];
-      return AxisPlace(axis) + ": axis " + axis.path + " = " + values[k] + " makes point " +
-             point + " an invalid scenario: " + alone.what();
+      return AxisPlace(axis) + ": axis " + axis.path + " = " + values[k] + " makes point " + point +
+             " an invalid scenario: " + alone.what();
     }
   }
   const std::string where = spec.axes.empty() ? spec.source : AxisPlace(spec.axes.front());
@@ -178,10 +178,10 @@ std::string ResolveElementInMemory(const SweepSpec& spec, const MetricElements& 
     return given;
   }
   if (elements.actuators.size() == 1) return elements.actuators.front();
-  throw InputError("metric_options.element: missing: " + spec.base + " has " +
-                   std::to_string(elements.actuators.size()) +
-                   " actuators, so name the element the metrics read, one of: " +
-                   List(elements.all));
+  throw InputError(
+      "metric_options.element: missing: " + spec.base + " has " +
+      std::to_string(elements.actuators.size()) +
+      " actuators, so name the element the metrics read, one of: " + List(elements.all));
 }
 
 SweepPlan PlanSweep(SweepSpec spec, std::unique_ptr<PointFactory> points, int threads,

@@ -34,10 +34,10 @@ struct PointRunner::State {
   State(const SweepSpec& s, std::unique_ptr<SweepBase> b)
       : spec(s), base(std::move(b)), metrics(s.metrics, s.metric_options) {}
   const SweepSpec& spec;
-  std::unique_ptr<SweepBase> base;                 // this thread's own copy
-  MetricAccumulator metrics;                       // of the running point
+  std::unique_ptr<SweepBase> base;  // this thread's own copy
+  MetricAccumulator metrics;        // of the running point
   std::string trajectory_folder;
-  Simulation simulation;                           // re-used by every point of this thread
+  Simulation simulation;  // re-used by every point of this thread
 };
 
 PointRunner::PointRunner(const SweepSpec& spec, const SweepBase& base, std::string output)
@@ -100,15 +100,16 @@ std::string FormatSummaryRow(const SweepRow& row) {
   for (const std::string& v : row.values) text.append(",").append(CsvField(v));
   text.append(",").append(ToString(row.status));
   for (double value : row.metrics) text.append(",").append(MetricField(value));
-  if (row.status == RowStatus::kInvalid) return text.append(",0,0,0,").append(CsvField(row.message));
+  if (row.status == RowStatus::kInvalid)
+    return text.append(",0,0,0,").append(CsvField(row.message));
   text.append(",").append(std::to_string(row.steps));
   text.append(",").append(std::to_string(row.rhs_evals));
   text.append(",").append(FormatFull(row.wall_seconds));
   return text.append(",").append(CsvField(row.message));
 }
 
-WorkerPool::WorkerPool(const SweepSpec& spec, const SweepBase& base, std::string output,
-                       int jobs, std::size_t low_water)
+WorkerPool::WorkerPool(const SweepSpec& spec, const SweepBase& base, std::string output, int jobs,
+                       std::size_t low_water)
     : low_water_(low_water) {
   running_ = jobs;
   for (int j = 0; j < jobs; ++j) {
@@ -127,8 +128,7 @@ WorkerPool::~WorkerPool() {
   for (std::thread& t : threads_) t.join();
 }
 
-void WorkerPool::Work(const SweepSpec& spec, const SweepBase& base,
-                      const std::string& output) {
+void WorkerPool::Work(const SweepSpec& spec, const SweepBase& base, const std::string& output) {
   try {
     PointRunner runner(spec, base, output);
     for (;;) {

@@ -13,9 +13,7 @@ int ValidationThreads(const RankShare& share) {
   return std::max(1, cores / ranks);
 }
 
-long ShareBlock(long points, int ranks) {
-  return std::clamp<long>(points / (4L * ranks), 1, 64);
-}
+long ShareBlock(long points, int ranks) { return std::clamp<long>(points / (4L * ranks), 1, 64); }
 
 int PointOwner(const SweepSpec& spec, long index) {
   return static_cast<int>((index / spec.share_block) % spec.share_ranks);

@@ -88,7 +88,7 @@ std::optional<SweepSignature> SweepSignature::Parse(const std::string& line) {
 std::string SweepSignature::Differences(const SweepSignature& other) const {
   std::vector<std::string> parts;
   if (base != other.base) parts.push_back("the base scenario");
-  if (points != other.points) parts.push_back("the axes");  // or mode, samples, seed
+  if (points != other.points) parts.push_back("the axes");       // or mode, samples, seed
   if (metrics != other.metrics) parts.push_back("the metrics");  // or metric_options
   std::string text;
   for (std::size_t i = 0; i < parts.size(); ++i) {

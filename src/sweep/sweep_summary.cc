@@ -42,7 +42,8 @@ int OpenLocked(const std::string& path) {
       const int error = errno;
       ::close(fd);
       if (error == EWOULDBLOCK) {
-        throw InputError(path + " is in use by a running sweep writing the same output (it "
+        throw InputError(path +
+                         " is in use by a running sweep writing the same output (it "
                          "holds the file's lock); wait for it to end, stop it, or write this "
                          "sweep's summary to another file");
       }
@@ -51,7 +52,8 @@ int OpenLocked(const std::string& path) {
     }
     // a sweep that finished may have removed the file between our open and our lock: then
     // the lock is on a file no longer there, and the path must be opened again
-    struct stat opened {}, named {};
+    struct stat opened {
+    }, named{};
     if (::fstat(fd, &opened) == 0 && ::stat(path.c_str(), &named) == 0 &&
         opened.st_dev == named.st_dev && opened.st_ino == named.st_ino) {
       return fd;
@@ -92,9 +94,11 @@ SummaryFile::SummaryFile(const SweepSpec& spec, std::string path, bool resume)
     share_ranks_ = spec.share_ranks;
     share_next_.resize(static_cast<std::size_t>(share_ranks_));
     share_left_.assign(static_cast<std::size_t>(share_ranks_), 0);
-    for (int r = 0; r < share_ranks_; ++r) share_next_[static_cast<std::size_t>(r)] = r * share_block_;
+    for (int r = 0; r < share_ranks_; ++r)
+      share_next_[static_cast<std::size_t>(r)] = r * share_block_;
     for (long i = 0; i < points_; ++i) {
-      if (!done_[static_cast<std::size_t>(i)]) ++share_left_[static_cast<std::size_t>(PointOwner(spec, i))];
+      if (!done_[static_cast<std::size_t>(i)])
+        ++share_left_[static_cast<std::size_t>(PointOwner(spec, i))];
     }
   }
 }
@@ -201,8 +205,8 @@ std::vector<long> SummaryFile::Hand(long max, int owner) {
   auto from = static_cast<std::size_t>(owner % share_ranks_);
   while (static_cast<long>(indices.size()) < max && unhanded_ > 0) {
     if (share_left_[from] == 0) {
-      from = static_cast<std::size_t>(
-          std::max_element(share_left_.begin(), share_left_.end()) - share_left_.begin());
+      from = static_cast<std::size_t>(std::max_element(share_left_.begin(), share_left_.end()) -
+                                      share_left_.begin());
       if (share_left_[from] == 0) break;
     }
     // the next point of `from`'s blocks: block b holds [b * block, (b + 1) * block)

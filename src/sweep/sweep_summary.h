@@ -54,16 +54,16 @@ class SummaryFile {
   void Append(const std::string& text);
 
   std::string path_, partial_path_, header_;
-  int fd_ = -1;                // PATH.partial, locked
+  int fd_ = -1;  // PATH.partial, locked
   long points_ = 0;
-  std::vector<bool> done_;     // per point: its row is in
+  std::vector<bool> done_;  // per point: its row is in
   long count_ = 0, resumed_ = 0, failed_ = 0, invalid_ = 0;
   long next_ = 0, unhanded_ = 0;  // Hand's cursor; points not in and not handed out
   // with several ranks keeping shares: each rank's cursor and its points not yet handed out
   long share_block_ = 1;
   int share_ranks_ = 1;
   std::vector<long> share_next_, share_left_;
-  std::string pending_;        // rows taken, not yet written
+  std::string pending_;  // rows taken, not yet written
   std::string dropped_;
 };
 

@@ -111,8 +111,8 @@ CheckedRow CheckRow(const SweepSpec& spec, long points, const std::string& line)
   const std::vector<std::string> values = PointValues(spec, index);
   for (std::size_t k = 0; k < axes; ++k) {
     if (f[1 + k] != CsvField(values[k])) {
-      row.problem = spec.axes[k].path + " = " + f[1 + k] + ", but point " + f[0] + " has " +
-                    values[k];
+      row.problem =
+          spec.axes[k].path + " = " + f[1 + k] + ", but point " + f[0] + " has " + values[k];
       return row;
     }
   }
@@ -124,8 +124,8 @@ CheckedRow CheckRow(const SweepSpec& spec, long points, const std::string& line)
   row.status = *status;
   for (std::size_t m = 0; m < metrics; ++m) {
     if (!IsNumber(f[2 + axes + m], true)) {
-      row.problem = std::string(ToString(spec.metrics[m])) + " '" + f[2 + axes + m] +
-                    "' is not a number";
+      row.problem =
+          std::string(ToString(spec.metrics[m])) + " '" + f[2 + axes + m] + "' is not a number";
       return row;
     }
   }

@@ -57,12 +57,15 @@ std::optional<InvalidPoint> ValidatePoints(SweepSpec& spec, const SweepBase& bas
   };
 
   const std::size_t chunks = (count + kChunk - 1) / kChunk;
-  const int helpers = static_cast<int>(std::min<std::size_t>(
-      static_cast<std::size_t>(std::max(1, threads)), std::max<std::size_t>(1, chunks))) - 1;
+  const int helpers =
+      static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(1, threads)),
+                                             std::max<std::size_t>(1, chunks))) -
+      1;
   std::vector<std::thread> pool;
   std::vector<std::unique_ptr<SweepBase>> copies;
   for (int t = 0; t < helpers; ++t) copies.push_back(base.Copy());
-  for (int t = 0; t < helpers; ++t) pool.emplace_back(work, std::cref(*copies[static_cast<std::size_t>(t)]));
+  for (int t = 0; t < helpers; ++t)
+    pool.emplace_back(work, std::cref(*copies[static_cast<std::size_t>(t)]));
   work(base);
   for (std::thread& t : pool) t.join();
   if (error) std::rethrow_exception(error);

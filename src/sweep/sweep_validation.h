@@ -17,8 +17,8 @@ struct InvalidPoint {
 };
 
 // Validates the points `indices` (ascending) of `spec` with `base` (and copies of it) on up
-// to `threads` threads; when spec.kept, moves each scenario into its slot (KeptSlot), which must exist.
-// Returns the first invalid point of `indices` (the lowest index), if any: the points after
+// to `threads` threads; when spec.kept, moves each scenario into its slot (KeptSlot), which must
+// exist. Returns the first invalid point of `indices` (the lowest index), if any: the points after
 // it may be left unchecked. Rethrows any other exception.
 std::optional<InvalidPoint> ValidatePoints(SweepSpec& spec, const SweepBase& base,
                                            const std::vector<long>& indices, int threads);

@@ -33,7 +33,8 @@ model:
   velocity: {v_max: 1.0, n: 3, epsilon: 1.0e-3}
 )";
 
-constexpr const char* kRest = R"(actuator: {mass: 0.1, damping: 0.0, stiffness: 0.0, rest_length: 0.1}
+constexpr const char* kRest =
+    R"(actuator: {mass: 0.1, damping: 0.0, stiffness: 0.0, rest_length: 0.1}
 initial: {length: 0.1, lengthening_rate: 0.0}
 activation: {type: step, time: 0.05, before: 0.0, after: 1.0}
 load:
@@ -611,13 +612,15 @@ std::string LineColumn(const std::string& text, std::size_t offset) {
 
 // The data files of the identify cases, beside the case's file.
 void WriteIdentifyData(const std::string& dir) {
-  std::ofstream(dir + "/passive.csv") << "length,tension\n0.10,0\n0.11,0.5\n0.12,1.5\n0.13,4\n0.14,10\n";
+  std::ofstream(dir + "/passive.csv")
+      << "length,tension\n0.10,0\n0.11,0.5\n0.12,1.5\n0.13,4\n0.14,10\n";
   std::ofstream(dir + "/active.csv")
       << "length,tension\n0.08,5\n0.085,20\n0.09,60\n0.095,95\n0.1,100\n0.105,95\n0.11,60\n"
          "0.115,20\n0.12,5\n";
   std::ofstream(dir + "/velocity.csv")
       << "shortening_velocity,tension\n0,100\n0.2,60\n0.4,35\n0.6,18\n0.8,7\n1.0,0\n";
-  std::ofstream(dir + "/eccentric_only.csv") << "shortening_velocity,tension\n-1,150\n-0.5,140\n-0.2,120\n0,100\n";
+  std::ofstream(dir + "/eccentric_only.csv")
+      << "shortening_velocity,tension\n-1,150\n-0.5,140\n-0.2,120\n0,100\n";
   std::ofstream(dir + "/zero.csv") << "length,tension\n0.1,0\n0.2,0\n0.3,0\n0.4,0\n";
   std::ofstream(dir + "/one_positive.csv") << "length,tension\n0.1,0\n0.2,0\n0.3,0\n0.4,5\n";
   std::ofstream(dir + "/text.csv") << "shortening_velocity,tension\n0,100\n0.5,heavy\n1,0\n";
@@ -658,7 +661,9 @@ TEST_P(BadInput, ExitsWithTheCodeAndNamesKeyPlaceAndRule) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryReaderAndVerb, BadInput, ::testing::ValuesIn(kCases),
-                         [](const ::testing::TestParamInfo<Case>& param) { return param.param.name; });
+                         [](const ::testing::TestParamInfo<Case>& param) {
+                           return param.param.name;
+                         });
 
 TEST(BadInputTable, CoversEnoughCases) {
   // the table is the list of every input error the program promises; it only grows

@@ -29,8 +29,7 @@ Outcome RunCli(const std::string& arguments) {
   const std::string err_path = ::testing::TempDir() + "cli_test_stderr_" +
                                ::testing::UnitTest::GetInstance()->current_test_info()->name() +
                                ".txt";
-  const std::string command =
-      std::string(MUSCLESIM_BINARY) + " " + arguments + " 2>" + err_path;
+  const std::string command = std::string(MUSCLESIM_BINARY) + " " + arguments + " 2>" + err_path;
   FILE* pipe = popen(command.c_str(), "r");
   std::string out;
   std::array<char, 4096> buffer;
@@ -103,9 +102,10 @@ TEST(Cli, FitPrintsPasteableGaussians) {
   std::istringstream lines(block);
   for (std::string line; std::getline(lines, line);) indented += "    " + line + "\n";
   const std::string path = ::testing::TempDir() + "cli_pasted.yaml";
-  std::ofstream(path) << "model:\n  f_iso: 100\n  passive: {k_p: 2, alpha: 30, slack_length: 0.105}\n"
-                         "  active_length:\n    optimal_range: [0.095, 0.105]\n"
-                      << indented << "  velocity: {v_max: 1, n: 3, epsilon: 0.001}\n";
+  std::ofstream(path)
+      << "model:\n  f_iso: 100\n  passive: {k_p: 2, alpha: 30, slack_length: 0.105}\n"
+         "  active_length:\n    optimal_range: [0.095, 0.105]\n"
+      << indented << "  velocity: {v_max: 1, n: 3, epsilon: 0.001}\n";
   const ModelSpec pasted = LoadModelSpec(path);
   const ModelSpec fitted = LoadModelSpec(Scenario("fit_indicator.yaml"));
   ASSERT_EQ(pasted.params.active_length.gaussians.size(), 2u);
@@ -149,7 +149,8 @@ TEST(Cli, BadModelValueExitsTwoNamingFileAndKey) {
 TEST(Cli, FailedWriteKeepsThePreviousFile) {
   const std::string path = ::testing::TempDir() + "cli_keep.csv";
   std::ofstream(path) << "previous result\n";
-  const Outcome r = RunCli("curves " + Scenario("fit_indicator.yaml") + " --length 1:0:3 -o " + path);
+  const Outcome r =
+      RunCli("curves " + Scenario("fit_indicator.yaml") + " --length 1:0:3 -o " + path);
   EXPECT_EQ(r.exit_code, 2);
   std::ifstream file(path);
   std::string line;
@@ -167,7 +168,8 @@ std::string ReadFile(const std::string& path) {
 TEST(Cli, RunWritesTheTrajectoryAndStats) {
   const std::string csv = ::testing::TempDir() + "cli_run.csv";
   const std::string json = ::testing::TempDir() + "cli_run.json";
-  const Outcome r = RunCli("run " + Scenario("concentric.yaml") + " -o " + csv + " --stats " + json);
+  const Outcome r =
+      RunCli("run " + Scenario("concentric.yaml") + " -o " + csv + " --stats " + json);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.err, HasSubstr("concentric_isotonic: completed at t = 0.5 s: "));
   std::string header;
@@ -185,17 +187,17 @@ TEST(Cli, RunWritesTheTrajectoryAndStats) {
   EXPECT_EQ(rows, 501);  // 0 to 0.5 s every millisecond
   EXPECT_GT(concentric, 400);
   const std::string stats = ReadFile(json);
-  for (const char* key : {"\"steps\": ", "\"rhs_evals\": ", "\"jac_evals\": ",
-                          "\"linear_setups\": ", "\"newton_iters\": ", "\"newton_conv_fails\": ",
-                          "\"error_test_fails\": ", "\"wall_seconds\": ", "\"final_time\": 0.5",
-                          "\"status\": \"completed\""}) {
+  for (const char* key :
+       {"\"steps\": ", "\"rhs_evals\": ", "\"jac_evals\": ", "\"linear_setups\": ",
+        "\"newton_iters\": ", "\"newton_conv_fails\": ", "\"error_test_fails\": ",
+        "\"wall_seconds\": ", "\"final_time\": 0.5", "\"status\": \"completed\""}) {
     EXPECT_THAT(stats, HasSubstr(key));
   }
 }
 
 TEST(Cli, RunToStandardOutputAndQuiet) {
-  const Outcome r = RunCli("run " + Scenario("isometric.yaml") +
-                           " -o - --quiet --set output.interval=0.25");
+  const Outcome r =
+      RunCli("run " + Scenario("isometric.yaml") + " -o - --quiet --set output.interval=0.25");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   EXPECT_THAT(r.out, StartsWith("t,length,"));
@@ -215,8 +217,8 @@ TEST(Cli, SolverFailureExitsThreeAndKeepsThePreviousResult) {
   const std::string csv = ::testing::TempDir() + "cli_fail.csv";
   std::ofstream(csv) << "previous result\n";
   std::remove((csv + ".partial").c_str());
-  const Outcome r = RunCli("run " + Scenario("isometric.yaml") + " -o " + csv +
-                           " --set solver.max_steps=20");
+  const Outcome r =
+      RunCli("run " + Scenario("isometric.yaml") + " -o " + csv + " --set solver.max_steps=20");
   EXPECT_EQ(r.exit_code, 3);
   EXPECT_THAT(r.err, HasSubstr("solver failure: CVODE failed at t = "));
   EXPECT_THAT(r.err, HasSubstr("CV_TOO_MUCH_WORK"));
@@ -257,14 +259,15 @@ TEST(Cli, RunRejectsInvalidInputWithExitTwo) {
 
 TEST(Cli, OutputToADeviceWritesIntoIt) {
   // an atomic rename over /dev/null would replace the device with a file
-  const Outcome r = RunCli("run " + Scenario("concentric.yaml") +
-                           " --quiet -o /dev/null --stats /dev/null");
+  const Outcome r =
+      RunCli("run " + Scenario("concentric.yaml") + " --quiet -o /dev/null --stats /dev/null");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
 }
 
 TEST(Cli, UnwritableOutputExitsOne) {
-  const Outcome r = RunCli("run " + Scenario("concentric.yaml") + " --quiet -o /nonexistent/run.csv");
+  const Outcome r =
+      RunCli("run " + Scenario("concentric.yaml") + " --quiet -o /nonexistent/run.csv");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_THAT(r.err, HasSubstr("/nonexistent/run.csv: cannot write"));
 }
@@ -286,17 +289,21 @@ std::pair<int, int> PngSize(const std::string& path) {
     return {0, 0};
   }
   const auto be32 = [&](std::size_t at) {
-    return (static_cast<unsigned char>(data[at]) << 24) | (static_cast<unsigned char>(data[at + 1]) << 16) |
-           (static_cast<unsigned char>(data[at + 2]) << 8) | static_cast<unsigned char>(data[at + 3]);
+    return (static_cast<unsigned char>(data[at]) << 24) |
+           (static_cast<unsigned char>(data[at + 1]) << 16) |
+           (static_cast<unsigned char>(data[at + 2]) << 8) |
+           static_cast<unsigned char>(data[at + 3]);
   };
   return {be32(16), be32(20)};
 }
 
 TEST(Cli, PlotsATrajectoryAsAPngOfTheRequestedSize) {
   const std::string dir = ::testing::TempDir();
-  ASSERT_EQ(RunCli("run " + Scenario("twitches.yaml") + " --quiet -o " + dir + "plot_run.csv").exit_code, 0);
-  const Outcome r = RunCli("plot " + dir + "plot_run.csv -o " + dir + "plot_run.png --size 800x600 --script " +
-                           dir + "plot_run.gp");
+  ASSERT_EQ(
+      RunCli("run " + Scenario("twitches.yaml") + " --quiet -o " + dir + "plot_run.csv").exit_code,
+      0);
+  const Outcome r = RunCli("plot " + dir + "plot_run.csv -o " + dir +
+                           "plot_run.png --size 800x600 --script " + dir + "plot_run.gp");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(PngSize(dir + "plot_run.png"), std::make_pair(800, 600));
   EXPECT_THAT(ReadFile(dir + "plot_run.gp"), HasSubstr("title 'concentric'"));
@@ -304,15 +311,20 @@ TEST(Cli, PlotsATrajectoryAsAPngOfTheRequestedSize) {
 
 TEST(Cli, PlotsCurvesAndSweepsAsSvg) {
   const std::string dir = ::testing::TempDir();
-  Outcome r = RunCli("plot --curves " + Scenario("concentric.yaml") + " -o " + dir + "plot_curves.svg --size 640x480");
+  Outcome r = RunCli("plot --curves " + Scenario("concentric.yaml") + " -o " + dir +
+                     "plot_curves.svg --size 640x480");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string svg = ReadFile(dir + "plot_curves.svg");
   EXPECT_THAT(svg, HasSubstr("<svg"));
   EXPECT_THAT(svg, HasSubstr("width=\"640\""));
   EXPECT_THAT(svg, HasSubstr("height=\"480\""));
   EXPECT_THAT(svg, HasSubstr("</svg>"));
-  ASSERT_EQ(RunCli("sweep " + Scenario("stiffness_sweep.yaml") + " --quiet -o " + dir + "plot_sweep.csv").exit_code, 0);
-  r = RunCli("plot " + dir + "plot_sweep.csv --x model.velocity.epsilon --y steps -o " + dir + "plot_heat.png");
+  ASSERT_EQ(
+      RunCli("sweep " + Scenario("stiffness_sweep.yaml") + " --quiet -o " + dir + "plot_sweep.csv")
+          .exit_code,
+      0);
+  r = RunCli("plot " + dir + "plot_sweep.csv --x model.velocity.epsilon --y steps -o " + dir +
+             "plot_heat.png");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(PngSize(dir + "plot_heat.png"), std::make_pair(1000, 750));
 }
@@ -332,16 +344,20 @@ TEST(Cli, PlotErrorsNameTheProblem) {
   char buffer[512];
   while (fgets(buffer, sizeof buffer, pipe) != nullptr) out += buffer;
   EXPECT_EQ(WEXITSTATUS(pclose(pipe)), 1);
-  EXPECT_THAT(out, HasSubstr("gnuplot is not installed (or not on PATH): install the Debian package gnuplot-nox"));
+  EXPECT_THAT(
+      out,
+      HasSubstr(
+          "gnuplot is not installed (or not on PATH): install the Debian package gnuplot-nox"));
 }
 
 TEST(Cli, IdentifyWritesALoadableModelAndTheReport) {
   const std::string dir = ::testing::TempDir();
-  const Outcome r = RunCli("identify " + std::string(MUSCLESIM_SOURCE_DIR) + "/data/synthetic.yaml -o " +
-                           dir + "identified.yaml --report " + dir + "identified.md");
+  const Outcome r =
+      RunCli("identify " + std::string(MUSCLESIM_SOURCE_DIR) + "/data/synthetic.yaml -o " + dir +
+             "identified.yaml --report " + dir + "identified.md");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const ModelSpec model = LoadModelSpec(dir + "identified.yaml");
-  EXPECT_EQ(model.params.velocity.n, 3);                     // the generating exponent
+  EXPECT_EQ(model.params.velocity.n, 3);  // the generating exponent
   // generated with v_max = 1 m/s and f_iso = 100 N plus noise of 2% of f_iso per point
   // (scripts/make_synthetic_data.py): the bounds are wide enough for that noise and narrow
   // enough that a wrong exponent or a misplaced curve falls outside them
@@ -349,8 +365,9 @@ TEST(Cli, IdentifyWritesALoadableModelAndTheReport) {
   EXPECT_NEAR(model.params.f_iso, 100.0, 3.0);
   EXPECT_EQ(model.params.active_length.gaussians.size(), 3u);
   const std::string report = ReadFile(dir + "identified.md");
-  for (const char* heading : {"## passive tension-length", "## active tension-length", "## tension-velocity",
-                              "| natural cubic spline |", "| polynomial, degree 4 |"}) {
+  for (const char* heading :
+       {"## passive tension-length", "## active tension-length", "## tension-velocity",
+        "| natural cubic spline |", "| polynomial, degree 4 |"}) {
     EXPECT_THAT(report, HasSubstr(heading));
   }
 }

@@ -144,7 +144,9 @@ TEST(IdentifySeriesCli, PlotDrawsTheResiduals) {
   }
   const std::string residuals = testing::WriteTempFile("residuals.csv", "");
   ASSERT_EQ(RunCli("identify " + Data("tetanus_transducer.yaml") + " -o /dev/null --residuals " +
-                   residuals).exit_code, 0);
+                   residuals)
+                .exit_code,
+            0);
   const std::string figure = testing::WriteTempFile("fit.png", "");
   std::filesystem::remove(figure);
   const Outcome r = RunCli("plot " + residuals + " -o " + figure);

@@ -44,8 +44,8 @@ double Fastest(const testing::CsvText& csv, const std::string& name) {
   EXPECT_GE(column, 0) << name;
   double fastest = 0.0;
   for (const auto& row : csv.rows) {
-    fastest = std::max(fastest, std::abs(std::strtod(row[static_cast<std::size_t>(column)].c_str(),
-                                                     nullptr)));
+    fastest = std::max(
+        fastest, std::abs(std::strtod(row[static_cast<std::size_t>(column)].c_str(), nullptr)));
   }
   return fastest;
 }
@@ -80,15 +80,15 @@ TEST(PeakSpeed, ANetworksNoteNamesEachActuatorBeyondItsOwnVmax) {
   // the extensor starts shortening at 0.2 m/s: beyond a v_max of 0.1 m/s (its epsilon moved
   // below it); the flexor keeps v_max = 1 m/s. Each actuator is judged by its own fastest
   // speed in the CSV against its own model's v_max
-  const ProgramRun run = RunWith(testing::FixturePath("every_part.yaml"),
-                                 {"models.extensor.velocity.v_max=0.1",
-                                  "models.extensor.velocity.epsilon=0.01"});
+  const ProgramRun run =
+      RunWith(testing::FixturePath("every_part.yaml"),
+              {"models.extensor.velocity.v_max=0.1", "models.extensor.velocity.epsilon=0.01"});
   ASSERT_GT(Fastest(run.csv, "extensor.shortening_velocity"), 0.1);
   for (const auto& [name, v_max] : {std::pair{"extensor", 0.1}, std::pair{"flexor", 1.0}}) {
     const double fastest = Fastest(run.csv, std::string(name) + ".shortening_velocity");
-    const std::string note = "note: |shortening velocity| of " + std::string(name) +
-                             " reached " + FormatNumber(fastest) + " m/s, beyond v_max = " +
-                             FormatNumber(v_max) + " m/s";
+    const std::string note = "note: |shortening velocity| of " + std::string(name) + " reached " +
+                             FormatNumber(fastest) + " m/s, beyond v_max = " + FormatNumber(v_max) +
+                             " m/s";
     if (fastest > v_max) {
       EXPECT_THAT(run.outcome.err, HasSubstr(note));
     } else {

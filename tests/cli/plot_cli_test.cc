@@ -157,30 +157,52 @@ TEST(PlotCli, MalformedCsvIsInvalidInputAndKeepsTheEarlierFigure) {
   const std::vector<Case> cases = {
       {"empty.csv", "", {}, "empty.csv: empty file, no header"},
       {"header_only.csv", kHeader, {}, "header_only.csv: no rows to plot"},
-      {"text.csv", std::string(kHeader) + "0,abc,0,0,0,0,0,0,isometric\n", {},
+      {"text.csv",
+       std::string(kHeader) + "0,abc,0,0,0,0,0,0,isometric\n",
+       {},
        "text.csv:2: column length = 'abc': must be a number"},
-      {"nan.csv", std::string(kHeader) + "0,nan,0,0,0,0,0,0,isometric\n", {},
+      {"nan.csv",
+       std::string(kHeader) + "0,nan,0,0,0,0,0,0,isometric\n",
+       {},
        "nan.csv:2: column length = 'nan': must be a finite number"},
-      {"inf.csv", std::string(kHeader) + "0,0.1,0,0,0,0,0,-inf,isometric\n", {},
+      {"inf.csv",
+       std::string(kHeader) + "0,0.1,0,0,0,0,0,-inf,isometric\n",
+       {},
        "inf.csv:2: column load = '-inf': must be a finite number"},
-      {"no_phase.csv", "t,length,shortening_velocity,activation,tension_passive,tension_active,"
-                       "tension_total,load\n0,0.1,0,0,0,0,0,0\n", {},
+      {"no_phase.csv",
+       "t,length,shortening_velocity,activation,tension_passive,tension_active,"
+       "tension_total,load\n0,0.1,0,0,0,0,0,0\n",
+       {},
        "no_phase.csv: missing columns: phase (a trajectory CSV of musclesim run)"},
-      {"short_row.csv", std::string(kHeader) + "0,0.1,0\n", {},
+      {"short_row.csv",
+       std::string(kHeader) + "0,0.1,0\n",
+       {},
        "short_row.csv:2: 3 fields where the header has 9"},
-      {"bad_summary.csv", "index,steps,status,x\n0,10,ok,1\n", {"--x", "x"},
+      {"bad_summary.csv",
+       "index,steps,status,x\n0,10,ok,1\n",
+       {"--x", "x"},
        "bad_summary.csv: missing columns: rhs_evals, wall_seconds, message" + layout},
-      {"unswept.csv", "index,status,work,steps,rhs_evals,wall_seconds,message\n0,ok,1,2,3,0.1,\n",
-       {"--x", "work"}, "unswept.csv: no swept path between index and status" + layout},
-      {"trajectory_as_summary.csv", std::string(kHeader) + "0,0.1,0,0,0,0,0,0,isometric\n",
+      {"unswept.csv",
+       "index,status,work,steps,rhs_evals,wall_seconds,message\n0,ok,1,2,3,0.1,\n",
+       {"--x", "work"},
+       "unswept.csv: no swept path between index and status" + layout},
+      {"trajectory_as_summary.csv",
+       std::string(kHeader) + "0,0.1,0,0,0,0,0,0,isometric\n",
        {"--x", "t"},
        "trajectory_as_summary.csv: missing columns: index, status, steps, rhs_evals, "
-       "wall_seconds, message" + layout},
-      {"all_failed.csv", summary_header + "0,1,failed,,10,15,0.001,diverged\n", {"--x", "x"},
+       "wall_seconds, message" +
+           layout},
+      {"all_failed.csv",
+       summary_header + "0,1,failed,,10,15,0.001,diverged\n",
+       {"--x", "x"},
        "all_failed.csv: no successful row with a value of work"},
-      {"metric_nan.csv", summary_header + "0,1,ok,nan,10,15,0.001,\n", {"--x", "x"},
+      {"metric_nan.csv",
+       summary_header + "0,1,ok,nan,10,15,0.001,\n",
+       {"--x", "x"},
        "metric_nan.csv:2: column work = 'nan': must be a finite number"},
-      {"swept_text.csv", summary_header + "0,fast,ok,1,10,15,0.001,\n", {"--x", "x"},
+      {"swept_text.csv",
+       summary_header + "0,fast,ok,1,10,15,0.001,\n",
+       {"--x", "x"},
        "swept_text.csv:2: column x = 'fast': must be a number"},
   };
   std::ofstream(dir + "a.png") << "earlier figure";
@@ -216,13 +238,15 @@ TEST(PlotCli, SingleRowsAndSummariesWithoutMetricsArePlotted) {
 // that name, and exits with `code`.
 std::string FakeGnuplot(const std::string& bin, int code) {
   std::filesystem::create_directories(bin);
-  std::ofstream(bin + "gnuplot")
-      << "#!/bin/sh\n"
-         "out=$(sed -n \"s/^set output '\\(.*\\)'$/\\1/p\" \"$1\")\n"
-         "printf 'half a figure' > \"$out\"\n"
-         "printf '%s\\n' \"$out\" >> '" << bin << "written.log'\n"
-         "echo 'fake gnuplot failed' >&2\n"
-         "exit " << code << "\n";
+  std::ofstream(bin + "gnuplot") << "#!/bin/sh\n"
+                                    "out=$(sed -n \"s/^set output '\\(.*\\)'$/\\1/p\" \"$1\")\n"
+                                    "printf 'half a figure' > \"$out\"\n"
+                                    "printf '%s\\n' \"$out\" >> '"
+                                 << bin
+                                 << "written.log'\n"
+                                    "echo 'fake gnuplot failed' >&2\n"
+                                    "exit "
+                                 << code << "\n";
   std::filesystem::permissions(bin + "gnuplot", std::filesystem::perms::owner_all);
   return bin;
 }
@@ -231,8 +255,8 @@ TEST(PlotCli, FailingGnuplotKeepsTheEarlierFigureAndNoTemporary) {
   const std::string dir = FreshFolder(), run = Trajectory();
   const std::string bin = FakeGnuplot(FreshFolder("bin"), 1);
   std::ofstream(dir + "a.png") << "earlier figure";
-  const Outcome r = RunIn(dir, {run, "-o", "a.png"},
-                          {"PATH=" + bin + ":" + std::string(std::getenv("PATH"))});
+  const Outcome r =
+      RunIn(dir, {run, "-o", "a.png"}, {"PATH=" + bin + ":" + std::string(std::getenv("PATH"))});
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_THAT(r.err, HasSubstr("musclesim plot: error: gnuplot failed: fake gnuplot failed"));
   EXPECT_EQ(testing::ReadFile(dir + "a.png"), "earlier figure");

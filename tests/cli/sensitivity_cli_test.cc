@@ -19,8 +19,8 @@ namespace musclesim {
 namespace {
 
 using ::testing::ContainsRegex;
-using ::testing::HasSubstr;
 using testing::CsvText;
+using ::testing::HasSubstr;
 using testing::ReadCsv;
 using testing::RunMusclesim;
 using testing::TempPath;
@@ -132,13 +132,13 @@ TEST(SensitivityCli, SingleActuatorHeader) {
 
 TEST(SensitivityCli, SingleActuatorHeaderWithActivationDynamics) {
   // the activation is a state here, and differentiated with the others
-  const CsvText csv = RunToCsv(Excited(), TempPath("out.csv"),
-                               "--sensitivity activation_dynamics.tau_activation");
-  EXPECT_EQ(csv.header, kPlainHeaderWithExcitation +
-                            DerivativeColumns({"activation_dynamics.tau_activation"},
-                                              {"length", "shortening_velocity", "activation",
-                                               "tension_passive", "tension_active",
-                                               "tension_total"}));
+  const CsvText csv =
+      RunToCsv(Excited(), TempPath("out.csv"), "--sensitivity activation_dynamics.tau_activation");
+  EXPECT_EQ(csv.header,
+            kPlainHeaderWithExcitation +
+                DerivativeColumns({"activation_dynamics.tau_activation"},
+                                  {"length", "shortening_velocity", "activation", "tension_passive",
+                                   "tension_active", "tension_total"}));
 }
 
 TEST(SensitivityCli, NetworkHeader) {
@@ -149,12 +149,13 @@ TEST(SensitivityCli, NetworkHeader) {
                                "--sensitivity models.muscle.f_iso --sensitivity 'nodes[1].mass'");
   // free nodes' states, then every element's length and tension, an actuator's activation
   // (a state only with activation dynamics) and its tension's parts (scenario/sensitivity_run.h)
-  const std::vector<std::string> columns = {
-      "load.position",     "load.velocity",           "flexor.length",
-      "flexor.tension",    "flexor.activation",       "flexor.tension_passive",
-      "flexor.tension_active", "extensor.length",     "extensor.tension",
-      "extensor.tension_passive", "extensor.tension_active", "holder.length",
-      "holder.tension"};
+  const std::vector<std::string> columns = {"load.position",           "load.velocity",
+                                            "flexor.length",           "flexor.tension",
+                                            "flexor.activation",       "flexor.tension_passive",
+                                            "flexor.tension_active",   "extensor.length",
+                                            "extensor.tension",        "extensor.tension_passive",
+                                            "extensor.tension_active", "holder.length",
+                                            "holder.tension"};
   EXPECT_EQ(csv.header,
             plain.header + DerivativeColumns({"models.muscle.f_iso", "nodes[1].mass"}, columns));
 }
@@ -180,8 +181,7 @@ TEST(SensitivityCli, StatsNameTheDerivativeSource) {
   const std::string json = testing::ReadText(stats);
   // a tension model's parameter in closed form, anything else by difference quotient
   EXPECT_THAT(json, HasSubstr(R"({"path": "model.velocity.v_max", "derivative": "analytic"})"));
-  EXPECT_THAT(json, HasSubstr(
-                        R"({"path": "load[0].after", "derivative": "difference_quotient"})"));
+  EXPECT_THAT(json, HasSubstr(R"({"path": "load[0].after", "derivative": "difference_quotient"})"));
   EXPECT_THAT(json, HasSubstr("\"sensitivity_rhs_evals\": "));
 
   const std::string network_stats = TempPath("network.json");
@@ -247,8 +247,7 @@ TEST(SensitivityCli, PlainColumnsMatchAPlainRunNetwork) {
 }
 
 // Each refusal exits 2, naming the path and the rule.
-void ExpectRefused(const std::string& scenario, const std::string& path,
-                   const std::string& rule) {
+void ExpectRefused(const std::string& scenario, const std::string& path, const std::string& rule) {
   const testing::CliOutcome r = RunMusclesim("run " + scenario + " -o " + TempPath("out.csv") +
                                              " --quiet --sensitivity '" + path + "'");
   EXPECT_EQ(r.exit_code, 2) << path << ": " << r.err;

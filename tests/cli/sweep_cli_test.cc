@@ -46,12 +46,13 @@ int RunToEnd(const std::vector<std::string>& args, const std::string& err) {
 }
 
 std::string Sweep(const std::string& name, long loads) {
-  const std::string base = testing::WriteTempFile(name + "_base.yaml",
-      testing::ReadFile(testing::ScenarioPath("concentric.yaml")));
-  return testing::WriteTempFile(name + ".yaml",
+  const std::string base = testing::WriteTempFile(
+      name + "_base.yaml", testing::ReadFile(testing::ScenarioPath("concentric.yaml")));
+  return testing::WriteTempFile(
+      name + ".yaml",
       "base: " + std::filesystem::path(base).filename().string() +
-      "\nparameters:\n  load[0].after: {from: 10.0, to: 90.0, count: " + std::to_string(loads) +
-      "}\n  model.velocity.n: [1, 3]\nmetrics: [final_length, peak_tension, work]\n");
+          "\nparameters:\n  load[0].after: {from: 10.0, to: 90.0, count: " + std::to_string(loads) +
+          "}\n  model.velocity.n: [1, 3]\nmetrics: [final_length, peak_tension, work]\n");
 }
 
 long Lines(const std::string& path) {
@@ -83,33 +84,40 @@ TEST(SweepCli, InterruptedSweepResumesToTheUninterruptedResult) {
   EXPECT_LT(kept, 3000);
 
   // without --resume the partial file is not overwritten
-  EXPECT_EQ(RunToEnd({MUSCLESIM_BINARY, "sweep", sweep, "-o", resumed}, dir + "sweep_refuse.err"), 2);
+  EXPECT_EQ(RunToEnd({MUSCLESIM_BINARY, "sweep", sweep, "-o", resumed}, dir + "sweep_refuse.err"),
+            2);
   EXPECT_THAT(testing::ReadFile(dir + "sweep_refuse.err"), HasSubstr("Pass --resume"));
 
   EXPECT_EQ(RunToEnd({MUSCLESIM_BINARY, "sweep", sweep, "-o", resumed, "--resume"},
-                     dir + "sweep_resume.err"), 0);
+                     dir + "sweep_resume.err"),
+            0);
   EXPECT_THAT(testing::ReadFile(dir + "sweep_resume.err"),
               HasSubstr("3000 points (" + std::to_string(3000 - kept) + " run now, " +
                         std::to_string(kept) + " resumed), 0 failed"));
   EXPECT_FALSE(std::filesystem::exists(resumed + ".partial"));
   EXPECT_EQ(RunToEnd({MUSCLESIM_BINARY, "sweep", sweep, "-o", reference, "--quiet"},
-                     dir + "sweep_reference.err"), 0);
+                     dir + "sweep_reference.err"),
+            0);
   EXPECT_EQ(testing::SummaryWithoutWallTime(resumed), testing::SummaryWithoutWallTime(reference));
 }
 
 TEST(SweepCli, FailedPointsExitThree) {
-  const std::string base = testing::WriteTempFile("exit3_base.yaml",
-      testing::ReadFile(testing::ScenarioPath("isometric.yaml")));
-  const std::string sweep = testing::WriteTempFile("exit3.yaml",
+  const std::string base = testing::WriteTempFile(
+      "exit3_base.yaml", testing::ReadFile(testing::ScenarioPath("isometric.yaml")));
+  const std::string sweep = testing::WriteTempFile(
+      "exit3.yaml",
       "base: " + std::filesystem::path(base).filename().string() +
-      "\nparameters:\n  solver.max_steps: [20, 10000000]\nmetrics: [final_length]\n");
+          "\nparameters:\n  solver.max_steps: [20, 10000000]\nmetrics: [final_length]\n");
   const std::string err = ::testing::TempDir() + "sweep_exit3.err";
-  EXPECT_EQ(RunToEnd({MUSCLESIM_BINARY, "sweep", sweep, "-o", ::testing::TempDir() + "exit3.csv"}, err), 3);
+  EXPECT_EQ(
+      RunToEnd({MUSCLESIM_BINARY, "sweep", sweep, "-o", ::testing::TempDir() + "exit3.csv"}, err),
+      3);
   EXPECT_THAT(testing::ReadFile(err), HasSubstr("2 points (2 run now, 0 resumed), 1 failed"));
 }
 
 TEST(SweepCli, InvalidSweepExitsTwo) {
-  const std::string sweep = testing::WriteTempFile("exit2.yaml", "base: nowhere.yaml\nparameters: {a: [1]}\nmetrics: [work]\n");
+  const std::string sweep = testing::WriteTempFile(
+      "exit2.yaml", "base: nowhere.yaml\nparameters: {a: [1]}\nmetrics: [work]\n");
   const std::string err = ::testing::TempDir() + "sweep_exit2.err";
   EXPECT_EQ(RunToEnd({MUSCLESIM_BINARY, "sweep", sweep, "-o", "-"}, err), 2);
   EXPECT_THAT(testing::ReadFile(err), HasSubstr("nowhere.yaml: cannot open the file"));
@@ -141,7 +149,8 @@ TEST(SweepCli, ResumeRefusesAnEditedSweepAndDropsMalformedRows) {
   edited.replace(edited.find("from: 10.0"), 10, "from: 50.0");
   std::ofstream(sweep) << edited;
   EXPECT_EQ(RunToEnd({MUSCLESIM_BINARY, "sweep", sweep, "-o", output, "--resume"},
-                     dir + "sweep_edited.err"), 2);
+                     dir + "sweep_edited.err"),
+            2);
   EXPECT_THAT(testing::ReadFile(dir + "sweep_edited.err"),
               HasSubstr("sweep_edited.csv.partial belongs to a different sweep (base scenario, "
                         "axes or metrics changed): the axes changed since it was written"));
@@ -150,7 +159,8 @@ TEST(SweepCli, ResumeRefusesAnEditedSweepAndDropsMalformedRows) {
   std::ofstream(sweep) << text;
   std::ofstream(output + ".partial", std::ios::app) << "1,zzz\n";
   EXPECT_EQ(RunToEnd({MUSCLESIM_BINARY, "sweep", sweep, "-o", output, "--resume", "--quiet"},
-                     dir + "sweep_malformed.err"), 0);
+                     dir + "sweep_malformed.err"),
+            0);
   EXPECT_THAT(testing::ReadFile(dir + "sweep_malformed.err"),
               HasSubstr("sweep_edited.csv.partial: dropped 1 malformed row (line "));
   EXPECT_THAT(testing::ReadFile(dir + "sweep_malformed.err"),
@@ -166,8 +176,9 @@ TEST(SweepCli, ASecondSweepOnAnOutputInUseSaysSoAndAKilledOneLeavesNoLock) {
   // frozen, so that it is still running (and holding its lock) whatever the machine's load
   kill(pid, SIGSTOP);
   for (const char* resume : {"--quiet", "--resume"}) {
-    EXPECT_EQ(RunToEnd({MUSCLESIM_BINARY, "sweep", sweep, "-o", output, resume},
-                       dir + "sweep_busy.err"), 2);
+    EXPECT_EQ(
+        RunToEnd({MUSCLESIM_BINARY, "sweep", sweep, "-o", output, resume}, dir + "sweep_busy.err"),
+        2);
     EXPECT_THAT(testing::ReadFile(dir + "sweep_busy.err"),
                 HasSubstr("sweep_busy.csv.partial is in use by a running sweep writing the same "
                           "output"));
@@ -180,7 +191,8 @@ TEST(SweepCli, ASecondSweepOnAnOutputInUseSaysSoAndAKilledOneLeavesNoLock) {
               HasSubstr("sweep_busy.csv.partial exists: an earlier sweep was interrupted. Pass "
                         "--resume"));
   EXPECT_EQ(RunToEnd({MUSCLESIM_BINARY, "sweep", sweep, "-o", output, "--resume", "--quiet"},
-                     dir + "sweep_busy.err"), 0);
+                     dir + "sweep_busy.err"),
+            0);
   EXPECT_EQ(Lines(output), 3001);
 }
 
@@ -190,31 +202,39 @@ std::string SweepWithBase(const std::string& name, const std::string& body,
   std::string text = testing::ReadFile(testing::ScenarioPath("concentric.yaml"));
   if (!find.empty()) text.replace(text.find(find), find.size(), replace);
   const std::string base = testing::WriteTempFile(name + "_base.yaml", text);
-  return testing::WriteTempFile(name + ".yaml",
-      "base: " + std::filesystem::path(base).filename().string() + "\n" + body);
+  return testing::WriteTempFile(
+      name + ".yaml", "base: " + std::filesystem::path(base).filename().string() + "\n" + body);
 }
 
 // Runs `musclesim sweep` on `sweep` to `output` and returns (exit code, standard error).
 std::pair<int, std::string> SweepExit(const std::string& sweep, const std::string& name) {
   const std::string dir = ::testing::TempDir();
-  const int code = RunToEnd({MUSCLESIM_BINARY, "sweep", sweep, "-o", dir + name + ".csv",
-                             "--quiet"}, dir + name + ".err");
+  const int code =
+      RunToEnd({MUSCLESIM_BINARY, "sweep", sweep, "-o", dir + name + ".csv", "--quiet"},
+               dir + name + ".err");
   return {code, testing::ReadFile(dir + name + ".err")};
 }
 
 TEST(SweepCli, SeedAndSamplesOutsideRandomModeAndRandomWithoutSeedExitTwo) {
-  const auto seed = SweepExit(SweepWithBase("cli_seed",
-      "seed: 3\nparameters:\n  load[0].after: [10, 20]\nmetrics: [work]\n"), "cli_seed");
+  const auto seed =
+      SweepExit(SweepWithBase("cli_seed",
+                              "seed: 3\nparameters:\n  load[0].after: [10, 20]\nmetrics: [work]\n"),
+                "cli_seed");
   EXPECT_EQ(seed.first, 2);
-  EXPECT_THAT(seed.second, HasSubstr("cli_seed.yaml:2:7): is for mode random only (this sweep is grid)"));
-  const auto samples = SweepExit(SweepWithBase("cli_samples",
-      "samples: 3\nparameters:\n  load[0].after: [10, 20]\nmetrics: [work]\n"), "cli_samples");
+  EXPECT_THAT(seed.second,
+              HasSubstr("cli_seed.yaml:2:7): is for mode random only (this sweep is grid)"));
+  const auto samples = SweepExit(
+      SweepWithBase("cli_samples",
+                    "samples: 3\nparameters:\n  load[0].after: [10, 20]\nmetrics: [work]\n"),
+      "cli_samples");
   EXPECT_EQ(samples.first, 2);
   EXPECT_THAT(samples.second, HasSubstr("samples = 3 ("));
   EXPECT_THAT(samples.second, HasSubstr("is for mode random only"));
-  const auto unseeded = SweepExit(SweepWithBase("cli_unseeded",
-      "mode: random\nsamples: 3\nparameters:\n  load[0].after: {from: 10, to: 20}\nmetrics: [work]\n"),
-      "cli_unseeded");
+  const auto unseeded =
+      SweepExit(SweepWithBase("cli_unseeded",
+                              "mode: random\nsamples: 3\nparameters:\n  load[0].after: {from: 10, "
+                              "to: 20}\nmetrics: [work]\n"),
+                "cli_unseeded");
   EXPECT_EQ(unseeded.first, 2);
   EXPECT_THAT(unseeded.second, HasSubstr("seed ("));
   EXPECT_THAT(unseeded.second, HasSubstr("cli_unseeded.yaml:1:1): missing required key"));
@@ -222,15 +242,19 @@ TEST(SweepCli, SeedAndSamplesOutsideRandomModeAndRandomWithoutSeedExitTwo) {
 
 TEST(SweepCli, ErrorsNameTheBaseFileOrTheAxisThatCausedThem) {
   // epsilon on line 19 of concentric.yaml: `  velocity: {v_max: 1.0, n: 3, epsilon: 1.0e-3}`
-  const auto base = SweepExit(SweepWithBase("cli_base_error",
-      "parameters:\n  load[0].after: [10, 20]\nmetrics: [work]\n", "epsilon: 1.0e-3",
-      "epsilon: -1.0e-3"), "cli_base_error");
+  const auto base = SweepExit(
+      SweepWithBase("cli_base_error", "parameters:\n  load[0].after: [10, 20]\nmetrics: [work]\n",
+                    "epsilon: 1.0e-3", "epsilon: -1.0e-3"),
+      "cli_base_error");
   EXPECT_EQ(base.first, 2);
   EXPECT_THAT(base.second, HasSubstr("cli_base_error_base.yaml (the base scenario of the sweep "));
   EXPECT_THAT(base.second, HasSubstr("model.velocity.epsilon = -0.001 ("));
-  EXPECT_THAT(base.second, HasSubstr("cli_base_error_base.yaml:19:41): must be between 1e-12 v_max"));
-  const auto axis = SweepExit(SweepWithBase("cli_axis_error",
-      "parameters:\n  load[0].after: [10, 20]\n  model.velocity.n: [3, 0]\nmetrics: [work]\n"),
+  EXPECT_THAT(base.second,
+              HasSubstr("cli_base_error_base.yaml:19:41): must be between 1e-12 v_max"));
+  const auto axis = SweepExit(
+      SweepWithBase(
+          "cli_axis_error",
+          "parameters:\n  load[0].after: [10, 20]\n  model.velocity.n: [3, 0]\nmetrics: [work]\n"),
       "cli_axis_error");
   EXPECT_EQ(axis.first, 2);
   // a numeric axis sets its number through the parameter handle: the rule is the handle's,
@@ -241,22 +265,26 @@ TEST(SweepCli, ErrorsNameTheBaseFileOrTheAxisThatCausedThem) {
 }
 
 TEST(SweepCli, TooManyPointsExitTwoAndInvalidPointsOfALargeSweepExitTwoAfterIt) {
-  const auto over = SweepExit(SweepWithBase("cli_over",
-      "parameters:\n  load[0].after: {from: 10, to: 90, count: 1000000000}\n"
-      "  model.velocity.n: [1, 3]\nmetrics: [work]\n"), "cli_over");
+  const auto over = SweepExit(
+      SweepWithBase("cli_over",
+                    "parameters:\n  load[0].after: {from: 10, to: 90, count: 1000000000}\n"
+                    "  model.velocity.n: [1, 3]\nmetrics: [work]\n"),
+      "cli_over");
   EXPECT_EQ(over.first, 2);
   EXPECT_THAT(over.second, HasSubstr("parameters = 1000000000 x 2 = 2000000000 points ("));
   EXPECT_THAT(over.second, HasSubstr("a sweep may have at most 1e9 points"));
 
   // 3000 x 2 x 2 points of a 0.06 s run: too many to validate up front; the points with
   // initial length 0.19 m and max_length 0.15 m (one in four) are invalid when they run
-  const std::string sweep = SweepWithBase("cli_large",
+  const std::string sweep = SweepWithBase(
+      "cli_large",
       "parameters:\n  load[0].after: {from: 10, to: 90, count: 3000}\n"
       "  initial.length: [0.1, 0.19]\n  limits.max_length: [0.2, 0.15]\nmetrics: [work]\n",
       "end: 0.5}", "end: 0.06}");
   const std::string dir = ::testing::TempDir();
   EXPECT_EQ(RunToEnd({MUSCLESIM_BINARY, "sweep", sweep, "-o", dir + "cli_large.csv"},
-                     dir + "cli_large.err"), 2);
+                     dir + "cli_large.err"),
+            2);
   EXPECT_THAT(testing::ReadFile(dir + "cli_large.err"),
               HasSubstr("12000 points (12000 run now, 0 resumed), 0 failed, 3000 invalid"));
   EXPECT_THAT(testing::ReadFile(dir + "cli_large.err"),
@@ -268,14 +296,18 @@ TEST(SweepCli, TooManyPointsExitTwoAndInvalidPointsOfALargeSweepExitTwoAfterIt) 
 TEST(SweepCli, TwoMpiRanksGiveTheSingleProcessSummary) {
   const std::string sweep = Sweep("mpi", 60);
   const std::string dir = ::testing::TempDir();
-  ASSERT_EQ(RunToEnd({MUSCLESIM_BINARY, "sweep", sweep, "-o", dir + "sweep_single.csv", "--jobs", "1",
-                      "--quiet"}, dir + "sweep_single.err"), 0);
+  ASSERT_EQ(RunToEnd({MUSCLESIM_BINARY, "sweep", sweep, "-o", dir + "sweep_single.csv", "--jobs",
+                      "1", "--quiet"},
+                     dir + "sweep_single.err"),
+            0);
   ASSERT_EQ(RunToEnd({MUSCLESIM_MPIEXEC, "-n", "2", "--oversubscribe", "--allow-run-as-root",
                       MUSCLESIM_BINARY, "sweep", sweep, "-o", dir + "sweep_mpi.csv", "--quiet"},
-                     dir + "sweep_mpi.err"), 0)
+                     dir + "sweep_mpi.err"),
+            0)
       << testing::ReadFile(dir + "sweep_mpi.err");
   EXPECT_EQ(Lines(dir + "sweep_mpi.csv"), 121);
-  EXPECT_EQ(testing::SummaryWithoutWallTime(dir + "sweep_mpi.csv"), testing::SummaryWithoutWallTime(dir + "sweep_single.csv"));
+  EXPECT_EQ(testing::SummaryWithoutWallTime(dir + "sweep_mpi.csv"),
+            testing::SummaryWithoutWallTime(dir + "sweep_single.csv"));
 }
 #endif
 

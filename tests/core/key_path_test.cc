@@ -3,7 +3,6 @@
 
 #include <gtest/gtest.h>
 
-
 namespace musclesim {
 namespace {
 
@@ -45,16 +44,16 @@ TEST(KeyPath, OneTrailingDotIsIgnored) {
 }
 
 TEST(KeyPath, RejectsMalformedPaths) {
-  for (const char* path : {"a..b", ".a", "load[]", "load[x]", "load[-1]", "load[0",
-                           "load[ 1]", "a.b..", "a[1]..b"}) {
+  for (const char* path :
+       {"a..b", ".a", "load[]", "load[x]", "load[-1]", "load[0", "load[ 1]", "a.b..", "a[1]..b"}) {
     EXPECT_FALSE(SplitKeyPath(path).has_value()) << path;
   }
 }
 
 TEST(KeyPath, IndexBeyondTheLongestListIsMalformed) {
   // 2^64 - 1 and beyond do not fit std::size_t; 1e9 is above kMaxKeyPathIndex
-  for (const char* path : {"load[99999999999999999999999]", "load[18446744073709551615]",
-                           "load[1000000000]"}) {
+  for (const char* path :
+       {"load[99999999999999999999999]", "load[18446744073709551615]", "load[1000000000]"}) {
     EXPECT_FALSE(SplitKeyPath(path).has_value()) << path;
   }
   EXPECT_EQ(Spelled("load[999999999]"), (Steps{"load", "[999999999]"}));

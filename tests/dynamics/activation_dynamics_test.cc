@@ -125,8 +125,8 @@ TEST(ActivationDynamics, StepDownFollowsTheClosedForm) {
   for (const double e : {0.0, 0.3}) {
     const double u0 = 0.9;
     Simulation simulation;
-    const RunResult run = simulation.Run(
-        ExcitedActuator(Excitation(Waveform::Constant(e), u0)), Tight(), Span(0.4, 1e-3));
+    const RunResult run = simulation.Run(ExcitedActuator(Excitation(Waveform::Constant(e), u0)),
+                                         Tight(), Span(0.4, 1e-3));
     ASSERT_EQ(run.stats.status, RunStatus::kCompleted) << run.stats.message;
     for (const TrajectoryPoint& p : run.trajectory) {
       EXPECT_NEAR(p.sample.activation, ActivationAfter(p.t, e, u0), kTightError)
@@ -146,12 +146,12 @@ TEST(ActivationDynamics, PulseTrainFollowsTheClosedFormAcrossEveryEdge) {
   options.atol = 1e-9;
   Simulation simulation;
   const RunResult run = simulation.Run(
-      ExcitedActuator(Excitation(Waveform::Pulses(start, period, width, 0.0, 1.0), 0.0)),
-      options, Span(1.0, 5e-4));
+      ExcitedActuator(Excitation(Waveform::Pulses(start, period, width, 0.0, 1.0), 0.0)), options,
+      Span(1.0, 5e-4));
   ASSERT_EQ(run.stats.status, RunStatus::kCompleted) << run.stats.message;
   // the closed form piece by piece: rise over each pulse, fall until the next one
   double u_edge = 0.0, edge = start;  // the last edge passed and u there
-  bool high = true;                    // the excitation after it
+  bool high = true;                   // the excitation after it
   for (const TrajectoryPoint& p : run.trajectory) {
     if (p.t < start) {
       EXPECT_EQ(p.sample.activation, 0.0);
@@ -231,8 +231,8 @@ TEST(ActivationDynamics, ActivationCatchingAFallingExcitationCrossesTheKink) {
 
 // ---- the Jacobian -------------------------------------------------------------------------
 
-using testing::Dense;
 using testing::AwayFromKinks;
+using testing::Dense;
 using testing::ExpectJacobianMatchesDifferences;
 using testing::PatternMask;
 
@@ -248,8 +248,7 @@ NetworkSystem MixedNetwork() {
                          Excitation(Waveform::Sine(0.5, 0.4, 3.0), 0.2)),
        Element::Actuator("a_b", "a", "b", model, Excitation(Waveform::Ramp(0.0, 1.0, 0.1, 0.9))),
        Element::Actuator("b_crank", "b", "crank", model, Waveform::Constant(0.5)),
-       Element::Spring("spring", "a", "b", 30.0, 0.1),
-       Element::Damper("damper", "wall", "b", 2.0)},
+       Element::Spring("spring", "a", "b", 30.0, 0.1), Element::Damper("damper", "wall", "b", 2.0)},
       {{"a", Load::Constant(3.0)}});
 }
 
@@ -297,8 +296,8 @@ TEST(ActivationDynamics, JacobianMatchesCentralDifferencesOnItsPatternAndNothing
     const double xa = in(0.08, 0.12), xb = xa + in(0.08, 0.12);
     // velocities small and large against eps = 1e-3 m/s, where g_eps bends hardest
     const double scale = uniform(random) < 0.5 ? 2e-3 : 0.5;
-    const std::vector<double> y = {xa, in(-scale, scale), xb, in(-scale, scale), in(0.0, 1.0),
-                                   in(0.0, 1.0)};
+    const std::vector<double> y = {xa,           in(-scale, scale), xb, in(-scale, scale),
+                                   in(0.0, 1.0), in(0.0, 1.0)};
     // a difference straddling a kink (e = u among them) measures neither side's slope
     if (!AwayFromKinks(system, t, y, 100.0 * kStep)) continue;
     ++states;
@@ -326,8 +325,7 @@ Element WithDynamics(Element actuator, double e, double u0) {
 }
 
 TEST(ActivationDynamics, TwoActuatorsInANetworkEachFollowTheirClosedForm) {
-  const NetworkSystem instantaneous =
-      Antagonists(Waveform::Constant(0.0), Waveform::Constant(0.0));
+  const NetworkSystem instantaneous = Antagonists(Waveform::Constant(0.0), Waveform::Constant(0.0));
   const NetworkSystem system(instantaneous.nodes(),
                              {WithDynamics(instantaneous.elements()[0], 0.8, 0.1),
                               WithDynamics(instantaneous.elements()[1], 0.2, 0.9)});
@@ -401,8 +399,7 @@ double Activation(const ActuatorSample& s) { return s.activation; }
 
 TEST(ActivationDynamics, TwitchScenarioRisesAndFallsWithoutJumps) {
   const Scenario twitches = LoadScenario(testing::ScenarioPath("twitches.yaml"));
-  const std::optional<ExcitationInput>& excitation =
-      twitches.elements[kActuatorElement].excitation;
+  const std::optional<ExcitationInput>& excitation = twitches.elements[kActuatorElement].excitation;
   ASSERT_TRUE(excitation.has_value());
   const RunResult run = testing::RunActuator(twitches);
   ASSERT_EQ(run.stats.status, RunStatus::kCompleted) << run.stats.message;
@@ -433,7 +430,7 @@ TEST(ActivationDynamics, TwitchScenarioRisesAndFallsWithoutJumps) {
   const double peak = ActivationAfter(rise_end - 0.1, 1.0, 0.0);
   for (const TrajectoryPoint& p : run.trajectory) {
     if (p.t > 0.3) break;
-    const double expected = p.t <= 0.1       ? 0.0
+    const double expected = p.t <= 0.1        ? 0.0
                             : p.t <= rise_end ? ActivationAfter(p.t - 0.1, 1.0, 0.0)
                                               : ActivationAfter(p.t - rise_end, 0.0, peak);
     // the file's rtol = 1e-6: the global error a few rtol, as for kTightError (8e-7 is seen)
@@ -478,8 +475,8 @@ TEST(ActivationDynamics, SingleActuatorAndNetworkFormsGiveTheSameTrajectory) {
   const Scenario network_scenario =
       LoadScenario(testing::WriteTempFile("network.yaml", kTwitchNetwork));
   Simulation simulation;
-  const NetworkRunResult network = simulation.Run(
-      network_scenario.Build(), network_scenario.solver, network_scenario.Request());
+  const NetworkRunResult network =
+      simulation.Run(network_scenario.Build(), network_scenario.solver, network_scenario.Request());
   ASSERT_EQ(single.stats.status, RunStatus::kCompleted) << single.stats.message;
   ASSERT_EQ(network.stats.status, RunStatus::kCompleted) << network.stats.message;
   ASSERT_EQ(single.trajectory.size(), network.times.size());
@@ -556,10 +553,10 @@ TEST(ActivationDynamics, SetReachesEveryKeyOfTheSingleActuatorForm) {
 }
 
 TEST(ActivationDynamics, SetReachesEveryKeyOfANetworkActuator) {
-  const Scenario spec = LoadScenario(
-      testing::WriteTempFile("network.yaml", kTwitchNetwork),
-      {"elements[0].activation_dynamics.tau_deactivation=0.08",
-       "elements[0].initial_activation=0.25", "elements[0].excitation.width=0.02"});
+  const Scenario spec =
+      LoadScenario(testing::WriteTempFile("network.yaml", kTwitchNetwork),
+                   {"elements[0].activation_dynamics.tau_deactivation=0.08",
+                    "elements[0].initial_activation=0.25", "elements[0].excitation.width=0.02"});
   const std::optional<ExcitationInput>& input = spec.elements[0].excitation;
   ASSERT_TRUE(input.has_value());
   EXPECT_EQ(input->dynamics.tau_activation, 0.015);
@@ -613,10 +610,9 @@ TEST(ActivationDynamics, RejectsTimeConstantsOutsideTheirRangeAndAnActivationOut
   input.dynamics.tau_deactivation = kTauDeact;
   input.initial_activation = 1.5;
   EXPECT_EQ(path_of([&] { ExcitedActuator(input); }), "initial.activation");
-  EXPECT_EQ(path_of([&] {
-              Element::Actuator("m", "a", "b", testing::SharedCanonicalModel(), input);
-            }),
-            "initial_activation");
+  EXPECT_EQ(
+      path_of([&] { Element::Actuator("m", "a", "b", testing::SharedCanonicalModel(), input); }),
+      "initial_activation");
   input.initial_activation.reset();
   input.signal = Waveform::Step(0.1, 0.0, 1.2);
   EXPECT_EQ(path_of([&] { ExcitedActuator(input); }), "excitation.after");

@@ -40,8 +40,8 @@ TEST(Actuator, AccelerationIsNewtonsLawOfMotionSection6) {
   const TensionModel model(Model());
   const double t = 0.3, x = 0.107, xdot = -0.02;
   const double load = 30.0 + 5.0 * std::sin(2 * M_PI * 2.0 * t) + 200.0 * (0.12 - x) + 2.0 * 9.81;
-  const double expected = (load - model.Evaluate(x, -xdot, 0.7).total - 3.0 * xdot -
-                           50.0 * (x - 0.1)) / (0.1 + 2.0);
+  const double expected =
+      (load - model.Evaluate(x, -xdot, 0.7).total - 3.0 * xdot - 50.0 * (x - 0.1)) / (0.1 + 2.0);
   EXPECT_NEAR(system.Acceleration(t, x, xdot), expected, 1e-12 * std::abs(expected));
   EXPECT_DOUBLE_EQ(system.effective_mass(), 2.1);
   EXPECT_NEAR(system.Observe(t, x, xdot).load, load, 1e-12 * load);
@@ -78,8 +78,7 @@ TEST(Actuator, SystemsShareOneImmutableModel) {
   EXPECT_NEAR(a.Acceleration(0.0, x, xdot), (30.0 - model->Evaluate(x, -xdot, 1.0).total) / 0.1,
               1e-9);
   EXPECT_NEAR(b.Acceleration(0.0, x, xdot),
-              (200.0 * (0.12 - x) + 2.0 * 9.81 - model->Evaluate(x, -xdot, 0.5).total) / 2.5,
-              1e-9);
+              (200.0 * (0.12 - x) + 2.0 * 9.81 - model->Evaluate(x, -xdot, 0.5).total) / 2.5, 1e-9);
 }
 
 TEST(Actuator, LoadFactoriesRejectBrokenLoads) {

@@ -123,8 +123,7 @@ TEST(ControllerJacobian, AnalyticAndCvodesDifferenceQuotientRunsAgree) {
       for (std::size_t node = 0; node < analytic.samples[i].position.size(); ++node) {
         // both meet rtol 1e-10 on positions of order 0.1 m; the global error is a few
         // hundred times the local one
-        EXPECT_NEAR(analytic.samples[i].position[node], differenced.samples[i].position[node],
-                    1e-8)
+        EXPECT_NEAR(analytic.samples[i].position[node], differenced.samples[i].position[node], 1e-8)
             << "t = " << analytic.times[i];
       }
     }
@@ -136,8 +135,7 @@ TEST(ControllerJacobian, AnalyticAndCvodesDifferenceQuotientRunsAgree) {
 TEST(ControllerIntegral, StopsAtTheBoundInsteadOfWindingUp) {
   // 200 N is beyond the actuator (f_iso = 100 N): the excitation saturates at 1 for 0.5 s;
   // then the reference drops to 20 N, which the loop reaches again
-  const NetworkExperiment experiment =
-      testing::ForceRegulation(Waveform::Step(0.5, 200.0, 20.0));
+  const NetworkExperiment experiment = testing::ForceRegulation(Waveform::Step(0.5, 200.0, 20.0));
   const int z = experiment.system.IntegralStateIndex(0);
   std::vector<double> times;
   for (double t = 0.1; t < 0.5; t += 0.05) times.push_back(t);
@@ -183,11 +181,11 @@ std::string PathOfRefusal(std::vector<Controller> controllers, bool dynamics = f
                     : Element::ControlledActuator(name, from, to, model);
   };
   try {
-    NetworkSystem({Node::Fixed("wall_a", 0.0), Node::Free("load", 1.0, 0.07),
-                   Node::Fixed("wall_b", 0.14)},
-                  {actuator("flexor", "wall_a", "load"), actuator("extensor", "load", "wall_b"),
-                   Element::Spring("spring", "wall_a", "load", 10.0, 0.07)},
-                  {}, std::move(controllers));
+    NetworkSystem(
+        {Node::Fixed("wall_a", 0.0), Node::Free("load", 1.0, 0.07), Node::Fixed("wall_b", 0.14)},
+        {actuator("flexor", "wall_a", "load"), actuator("extensor", "load", "wall_b"),
+         Element::Spring("spring", "wall_a", "load", 10.0, 0.07)},
+        {}, std::move(controllers));
   } catch (const ParameterError& e) {
     return e.path();
   }
@@ -225,9 +223,10 @@ TEST(ControllerRefusals, NameWhatBreaksWhichRule) {
             "controllers[0].measure.element");
   EXPECT_EQ(PathOfRefusal({Drive("a", position, "flexor"), Drive("b", flexor_tension, "extensor")}),
             "controllers[1].measure.element");
-  EXPECT_EQ(PathOfRefusal({Drive("a", flexor_tension, "flexor"), Drive("b", flexor_tension, "extensor")},
-                          true),
-            "accepted");
+  EXPECT_EQ(
+      PathOfRefusal({Drive("a", flexor_tension, "flexor"), Drive("b", flexor_tension, "extensor")},
+                    true),
+      "accepted");
   // a derivative gain on a tension; names shared
   Controller derivative = Drive("a", {"spring", "", MeasuredQuantity::kTension}, "flexor");
   derivative.gains.kd = 0.1;
@@ -241,8 +240,7 @@ TEST(ControllerRefusals, ActuatorWithItsOwnActivationIsNotDriven) {
   const auto model = testing::PairModel();
   try {
     NetworkSystem({Node::Fixed("wall", 0.0), Node::Free("load", 1.0, 0.07)},
-                  {Element::Actuator("muscle", "wall", "load", model, Waveform::Constant(0.2))},
-                  {},
+                  {Element::Actuator("muscle", "wall", "load", model, Waveform::Constant(0.2))}, {},
                   {Drive("a", {"", "load", MeasuredQuantity::kPosition}, "muscle")});
     FAIL() << "accepted";
   } catch (const ParameterError& e) {

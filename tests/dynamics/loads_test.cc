@@ -62,8 +62,7 @@ TEST(Loads, HangingMassesAddTheirMassAndNothingElseDoes) {
 }
 
 TEST(Loads, BreakpointsOfEveryForceMergedSortedAndUnique) {
-  const LoadSet loads({Load::Force(Waveform::Step(0.3, 0.0, 1.0)),
-                       Load::Spring(10.0, 0.1),
+  const LoadSet loads({Load::Force(Waveform::Step(0.3, 0.0, 1.0)), Load::Spring(10.0, 0.1),
                        Load::Force(Waveform::Ramp(0.1, 0.3, 0.0, 5.0)),
                        Load::Force(Waveform::Table({{0.05, 0.0}, {0.2, 1.0}, {0.9, 1.0}}))});
   EXPECT_THAT(loads.Breakpoints(0.0, 1.0), ElementsAre(0.05, 0.1, 0.2, 0.3, 0.9));
@@ -87,7 +86,7 @@ TEST(Loads, FactoriesFillTheirKindAndFields) {
   const Load mass = Load::Mass(12.0);
   EXPECT_EQ(mass.kind, LoadKind::kMass);
   EXPECT_EQ(mass.mass, 12.0);
-  EXPECT_EQ(mass.gravity, 9.81);  // the default
+  EXPECT_EQ(mass.gravity, 9.81);                     // the default
   EXPECT_EQ(Load::Mass(1.0, -1.62).gravity, -1.62);  // a weight may pull the actuator shorter
 }
 

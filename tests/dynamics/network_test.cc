@@ -34,8 +34,7 @@ constexpr double kPi = std::numbers::pi;
 NetworkSystem EveryKind() {
   return NetworkSystem(
       {Node::Fixed("wall", 0.0), Node::Free("a", 0.2, 0.1), Node::Free("b", 0.3, 0.25),
-       Node::Prescribed("crank", Waveform::Sine(0.4, 0.01, 2.0, 0.3)),
-       Node::Free("c", 0.05, 0.52)},
+       Node::Prescribed("crank", Waveform::Sine(0.4, 0.01, 2.0, 0.3)), Node::Free("c", 0.05, 0.52)},
       {Element::Actuator("muscle", "wall", "a", testing::SharedCanonicalModel(),
                          Waveform::Sine(0.5, 0.2, 3.0)),
        Element::Spring("spring", "a", "b", 80.0, 0.16),
@@ -59,10 +58,10 @@ struct State {
 
 // The accelerations of a, b and c, each term written out from 7.1 and 7.2.
 struct HandComputation {
-  double crank, crank_rate;                                    // p(t), p'(t)
-  double muscle, spring, tendon, sheath, damper, tether;       // tensions [N]
-  double load_a, load_b;                                       // [N]
-  double acc_a, acc_b, acc_c;                                  // [m/s^2]
+  double crank, crank_rate;                               // p(t), p'(t)
+  double muscle, spring, tendon, sheath, damper, tether;  // tensions [N]
+  double load_a, load_b;                                  // [N]
+  double acc_a, acc_b, acc_c;                             // [m/s^2]
 };
 
 HandComputation ByHand(const State& s) {
@@ -114,9 +113,9 @@ void ExpectRightHandSideByHand(const State& s) {
   EXPECT_EQ(sample.load[system.FindNode("wall")], 0.0);
   EXPECT_NEAR(sample.load[system.FindNode("a")], h.load_a, 1e-13);
   EXPECT_NEAR(sample.load[system.FindNode("b")], h.load_b, 1e-13);
-  const std::pair<const char*, double> tensions[] = {
-      {"muscle", h.muscle}, {"spring", h.spring}, {"tendon", h.tendon},
-      {"sheath", h.sheath}, {"damper", h.damper}, {"tether", h.tether}};
+  const std::pair<const char*, double> tensions[] = {{"muscle", h.muscle}, {"spring", h.spring},
+                                                     {"tendon", h.tendon}, {"sheath", h.sheath},
+                                                     {"damper", h.damper}, {"tether", h.tether}};
   for (const auto& [name, tension] : tensions) {
     EXPECT_NEAR(sample.elements[system.FindElement(name)].tension, tension, 1e-12) << name;
   }
@@ -168,8 +167,8 @@ TEST(Network, JacobianMatchesCentralDifferencesOnItsPatternAndNothingLiesOutside
     const double xa = in(0.08, 0.12), xb = xa + in(0.12, 0.18);
     // velocities small and large against eps = 1e-3 m/s, where g_eps bends hardest
     const double scale = uniform(random) < 0.5 ? 2e-3 : 0.5;
-    const std::vector<double> y = {xa, in(-scale, scale), xb, in(-scale, scale),
-                                   in(0.45, 0.6), in(-0.5, 0.5)};
+    const std::vector<double> y = {
+        xa, in(-scale, scale), xb, in(-scale, scale), in(0.45, 0.6), in(-0.5, 0.5)};
     // a difference straddling a kink measures neither side's slope
     if (!AwayFromKinks(system, t, y, 100.0 * kStep)) continue;
     ++states;
@@ -242,9 +241,9 @@ TEST(Network, RejectsAnUnknownNodeNamingTheKnownOnes) {
 
 TEST(Network, RejectsDuplicateNames) {
   const auto nodes = Rejection([] {
-    NetworkSystem({Node::Fixed("wall", 0.0), Node::Free("load", 0.5, 0.1),
-                   Node::Free("load", 0.5, 0.2)},
-                  OneSpring("wall", "load"));
+    NetworkSystem(
+        {Node::Fixed("wall", 0.0), Node::Free("load", 0.5, 0.1), Node::Free("load", 0.5, 0.2)},
+        OneSpring("wall", "load"));
   });
   EXPECT_EQ(nodes.first, "nodes[2].name");
   EXPECT_EQ(nodes.second, "nodes[2].name = load: must be unique: nodes[1] has it too");
@@ -303,9 +302,9 @@ TEST(Network, RejectsAStepAsAPrescribedMotion) {
 
 TEST(Network, RejectsANetworkWithNoFreeNode) {
   const auto [path, message] = Rejection([] {
-    NetworkSystem({Node::Fixed("wall", 0.0),
-                   Node::Prescribed("crank", Waveform::Sine(0.3, 0.01, 1.0))},
-                  OneSpring("wall", "crank"));
+    NetworkSystem(
+        {Node::Fixed("wall", 0.0), Node::Prescribed("crank", Waveform::Sine(0.3, 0.01, 1.0))},
+        OneSpring("wall", "crank"));
   });
   EXPECT_EQ(path, "nodes");
   EXPECT_EQ(message,
@@ -317,9 +316,9 @@ TEST(Network, RejectsANetworkWithNoFreeNode) {
 // A 0.5 kg mass on a spring (50 N/m, rest 0.1 m) to a crank moving as `offset` +
 // 0.01 sin(2 pi t) m.
 NetworkSystem Cranked(double offset) {
-  return NetworkSystem({Node::Free("load", 0.5, 0.1),
-                        Node::Prescribed("crank", Waveform::Sine(offset, 0.01, 1.0))},
-                       {Element::Spring("spring", "load", "crank", 50.0, 0.1)});
+  return NetworkSystem(
+      {Node::Free("load", 0.5, 0.1), Node::Prescribed("crank", Waveform::Sine(offset, 0.01, 1.0))},
+      {Element::Spring("spring", "load", "crank", 50.0, 0.1)});
 }
 
 // A NetworkSystem is a value: its copy must own everything it evaluates. (It fails today:
@@ -351,10 +350,9 @@ TEST(Network, SingleActuatorNetworkIsItsAccelerationBitForBit) {
   actuator.damping = 3.0;
   actuator.stiffness = 50.0;
   actuator.rest_length = 0.1;
-  const ActuatorSystem single(testing::SharedCanonicalModel(), actuator,
-                              Waveform::Sine(0.5, 0.4, 2.0),
-                              {Load::Force(Waveform::Sine(30.0, 5.0, 2.0)),
-                               Load::Spring(200.0, 0.12), Load::Mass(2.0)});
+  const ActuatorSystem single(
+      testing::SharedCanonicalModel(), actuator, Waveform::Sine(0.5, 0.4, 2.0),
+      {Load::Force(Waveform::Sine(30.0, 5.0, 2.0)), Load::Spring(200.0, 0.12), Load::Mass(2.0)});
   const NetworkSystem& network = single.network();
   ASSERT_EQ(network.state_size(), 2);
 
@@ -373,8 +371,8 @@ TEST(Network, SingleActuatorNetworkIsItsAccelerationBitForBit) {
     // floating-point operations of Acceleration, in the same order, so the results are
     // identical, not merely close
     EXPECT_EQ(ydot[0], xdot);
-    EXPECT_EQ(ydot[1], single.Acceleration(t, x, xdot)) << "t = " << t << ", x = " << x
-                                                        << ", xdot = " << xdot;
+    EXPECT_EQ(ydot[1], single.Acceleration(t, x, xdot))
+        << "t = " << t << ", x = " << x << ", xdot = " << xdot;
   }
 }
 

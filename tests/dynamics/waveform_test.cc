@@ -165,7 +165,7 @@ TEST(Waveform, FactoriesMakeTheShapeTheyName) {
   EXPECT_EQ(step.Evaluate(0.04), 0.2);
   EXPECT_EQ(step.Evaluate(0.05), 0.9);
   const Waveform ramp = Waveform::Ramp(1.0, 3.0, 10.0, 20.0);
-  EXPECT_DOUBLE_EQ(ramp.Evaluate(2.5), 17.5);  // a quarter left of the ramp's 10 N rise
+  EXPECT_DOUBLE_EQ(ramp.Evaluate(2.5), 17.5);            // a quarter left of the ramp's 10 N rise
   const Waveform sine = Waveform::Sine(1.0, 2.0, 0.25);  // a quarter period at t = 1 s
   EXPECT_NEAR(sine.Evaluate(1.0), 3.0, 1e-15);
   const Waveform pulses = Waveform::Pulses(0.0, 1.0, 0.25, -1.0, 4.0);

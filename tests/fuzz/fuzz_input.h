@@ -19,8 +19,8 @@ namespace musclesim::fuzz {
 // A directory for this process's files (under TMPDIR): fuzzers may run side by side.
 inline const std::filesystem::path& WorkDirectory() {
   static const std::filesystem::path dir = [] {
-    auto path = std::filesystem::temp_directory_path() /
-                ("musclesim_fuzz_" + std::to_string(::getpid()));
+    auto path =
+        std::filesystem::temp_directory_path() / ("musclesim_fuzz_" + std::to_string(::getpid()));
     std::filesystem::create_directories(path);
     return path;
   }();
@@ -41,8 +41,7 @@ void ExpectOnlyInputErrors(Read read) {
   try {
     read();
   } catch (const InputError&) {
-  } catch (const ParameterError&) {
-  }
+  } catch (const ParameterError&) {}
 }
 
 }  // namespace musclesim::fuzz

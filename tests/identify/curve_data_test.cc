@@ -35,8 +35,8 @@ std::string CsvError(const std::vector<double>& x, const std::vector<double>& y,
     text += FormatNumber(x[i]) + "," + FormatNumber(y[i]) + "\n";
   }
   const std::string path = testing::WriteTempFile("curve.csv", text);
-  std::string message = testing::InputErrorOf(
-      path, [&] { ReadCurveCsv(path, "length", "tension", min_points); });
+  std::string message =
+      testing::InputErrorOf(path, [&] { ReadCurveCsv(path, "length", "tension", min_points); });
   if (message.rfind("FILE:", 0) == 0 && std::isdigit(static_cast<unsigned char>(message[5]))) {
     const std::size_t end = message.find(": ", 5);
     const int line = std::stoi(message.substr(5, end - 5));
@@ -74,12 +74,12 @@ TEST(CheckedCurve, NamesSourceRowAndRule) {
 TEST(CheckedCurve, RefusesWhatTheCsvReaderRefusesInItsWords) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const std::vector<std::pair<std::vector<double>, std::vector<double>>> cases = {
-      {{0.1, 0.2}, {1, 2}},                      // too few
-      {{0.1, 0.2, 0.3, 0.4}, {1, 1, nan, 1}},    // not finite
-      {{0.1, 0.3, 0.2, 0.4}, {1, 2, 1, 1}},      // unsorted
-      {{0.1, 0.2, 0.2, 0.4}, {1, 2, 1, 1}},      // duplicated
-      {{0.1, 0.2, 0.3, 0.4}, {0, 0, 0, 0}},      // zero everywhere
-      {{0.1, 0.2, 0.3, 0.4}, {0, 1, 0, 0}},      // accepted by both
+      {{0.1, 0.2}, {1, 2}},                    // too few
+      {{0.1, 0.2, 0.3, 0.4}, {1, 1, nan, 1}},  // not finite
+      {{0.1, 0.3, 0.2, 0.4}, {1, 2, 1, 1}},    // unsorted
+      {{0.1, 0.2, 0.2, 0.4}, {1, 2, 1, 1}},    // duplicated
+      {{0.1, 0.2, 0.3, 0.4}, {0, 0, 0, 0}},    // zero everywhere
+      {{0.1, 0.2, 0.3, 0.4}, {0, 1, 0, 0}},    // accepted by both
   };
   for (const auto& [x, y] : cases) {
     EXPECT_EQ(MemoryError(x, y), CsvError(x, y)) << FormatNumber(x[1]);
@@ -87,8 +87,8 @@ TEST(CheckedCurve, RefusesWhatTheCsvReaderRefusesInItsWords) {
 }
 
 TEST(CheckedCurve, FewestPointsAreParametersPlusOne) {
-  EXPECT_EQ(kMinPassivePoints, 4u);       // k_p, alpha, slack_length
-  EXPECT_EQ(MinActivePoints(1), 4u);      // a, b, d
+  EXPECT_EQ(kMinPassivePoints, 4u);   // k_p, alpha, slack_length
+  EXPECT_EQ(MinActivePoints(1), 4u);  // a, b, d
   EXPECT_EQ(MinActivePoints(12), 37u);
   EXPECT_EQ(MinVelocityPoints(false), 3u);  // f_iso, v_max
   EXPECT_EQ(MinVelocityPoints(true), 2u);   // v_max

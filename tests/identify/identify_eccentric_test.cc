@@ -21,9 +21,9 @@ using ::testing::HasSubstr;
 using testing::Noise;
 
 struct Truth {
-  double v_max_e = 0.5;                // m/s
+  double v_max_e = 0.5;  // m/s
   int n_e = 2;
-  std::optional<double> limit = 1.8;   // none: unbounded
+  std::optional<double> limit = 1.8;  // none: unbounded
 };
 
 constexpr double kFIso = 100.0, kVMax = 1.0;  // N, m/s
@@ -151,8 +151,9 @@ TEST(IdentifyEccentric, FlatEccentricTensionIsNotIdentifiable) {
         Eccentric(IdentifyVelocity(Data(flat, 1.0, seed), std::nullopt));
     not_identified += !e.identified;
     if (!e.identified) {
-      EXPECT_THAT(e.why_not, ::testing::AnyOf(HasSubstr("shows no trend"), HasSubstr("does not rise"),
-                                              HasSubstr("the standard error is not below")));
+      EXPECT_THAT(e.why_not,
+                  ::testing::AnyOf(HasSubstr("shows no trend"), HasSubstr("does not rise"),
+                                   HasSubstr("the standard error is not below")));
     }
   }
   // a chance trend passes the criterion with a probability of about 0.1 at 20 points, and
@@ -179,7 +180,8 @@ TEST(IdentifyEccentric, SaturatedDataCannotTellVMaxFromTheLimit) {
 
 TEST(IdentifyEccentric, ConcentricPartComesFromNonNegativeVelocities) {
   // a strongly asymmetric curve: the concentric fit must not see the eccentric points
-  const VelocityIdentification fit = IdentifyVelocity(Data(Truth{0.2, 1, 1.3}, 0.0, 1), std::nullopt);
+  const VelocityIdentification fit =
+      IdentifyVelocity(Data(Truth{0.2, 1, 1.3}, 0.0, 1), std::nullopt);
   EXPECT_EQ(fit.best.n, kN);
   // exact concentric data and a linear solve: rounding only
   EXPECT_NEAR(fit.best.v_max.value, kVMax, 1e-10);
@@ -216,7 +218,10 @@ TEST(IdentifyEccentric, ShippedDataAsTheReadmeSays) {
   double s1 = 0, s2 = 0, y1 = 0, sy = 0;
   for (const DataPoint& p : symmetric_data) {
     const double x = ((p.x > 0) - (p.x < 0)) * std::pow(std::abs(p.x), 1.0 / n);
-    s1 += x; s2 += x * x; y1 += p.y; sy += x * p.y;
+    s1 += x;
+    s2 += x * x;
+    y1 += p.y;
+    sy += x * p.y;
   }
   const double m = static_cast<double>(symmetric_data.size());
   const double slope = (m * sy - s1 * y1) / (m * s2 - s1 * s1);

@@ -99,8 +99,8 @@ TEST(IdentifyScenario, NoisySeriesGiveTheTruthWithinTheirStandardErrors) {
   // 10 um of noise on every length: each estimate within 4 of its standard errors of the
   // truth (a fixed seed, so this passes always or never; 4 errors leave 6e-5 to chance)
   const double noise = 1e-5;
-  const SeriesIdentification fit = FitSeries(Spec(), {Lengths(noise, 7)},
-                                             ScenarioSensitivityRunner(Concentric(90.0, 1.2)));
+  const SeriesIdentification fit =
+      FitSeries(Spec(), {Lengths(noise, 7)}, ScenarioSensitivityRunner(Concentric(90.0, 1.2)));
   ASSERT_TRUE(fit.converged) << fit.stop_reason;
   EXPECT_TRUE(fit.noise_given);
   const double truth[] = {kTrueFIso, kTrueVMax};

@@ -28,10 +28,9 @@ std::string MessageOf(F f) {
 
 // A spec read from text with the values in memory; `noise` the series' entry.
 IdentifySeriesSpec InMemorySpec(const std::string& entry) {
-  return ParseIdentifySeriesSpec("TEXT",
-                                 "scenario: s.yaml\nseries:\n  - " + entry +
-                                     "\nparameters: [{path: model.f_iso}]\n",
-                                 "", SeriesValues::kInMemory);
+  return ParseIdentifySeriesSpec(
+      "TEXT", "scenario: s.yaml\nseries:\n  - " + entry + "\nparameters: [{path: model.f_iso}]\n",
+      "", SeriesValues::kInMemory);
 }
 
 // The message of the InputError MeasuredSeriesFromColumns throws for one series.
@@ -46,16 +45,14 @@ TEST(MeasuredSeriesFromColumns, GivesWhatTheSameCsvGives) {
   const std::string csv = WriteTempFile(
       "lengths.csv", "length,t,tension_total\n0.1,0,5\n0.099,0.01,6\n0.097,0.03,6.5\n");
   const std::string data = WriteTempFile(
-      "data.yaml", "scenario: r.yaml\nseries:\n  - {csv: " +
-                       std::filesystem::path(csv).filename().string() +
-                       ", noise: {tension_total: 0.5}}\nparameters: [{path: a}]\n");
+      "data.yaml",
+      "scenario: r.yaml\nseries:\n  - {csv: " + std::filesystem::path(csv).filename().string() +
+          ", noise: {tension_total: 0.5}}\nparameters: [{path: a}]\n");
   const MeasuredSeries file = ReadMeasuredSeries(LoadIdentifySeriesSpec(data), false)[0];
-  const MeasuredSeries memory =
-      MeasuredSeriesFromColumns(InMemorySpec("{noise: {tension_total: 0.5}}"),
-                                {{{"length", {0.1, 0.099, 0.097}},
-                                  {"t", {0.0, 0.01, 0.03}},
-                                  {"tension_total", {5, 6, 6.5}}}},
-                                false)[0];
+  const MeasuredSeries memory = MeasuredSeriesFromColumns(
+      InMemorySpec("{noise: {tension_total: 0.5}}"),
+      {{{"length", {0.1, 0.099, 0.097}}, {"t", {0.0, 0.01, 0.03}}, {"tension_total", {5, 6, 6.5}}}},
+      false)[0];
   EXPECT_EQ(memory.columns, file.columns);
   EXPECT_EQ(memory.times, file.times);
   EXPECT_EQ(memory.values, file.values);

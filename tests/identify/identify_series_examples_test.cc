@@ -24,12 +24,11 @@ using ::testing::HasSubstr;
 // The truth: the values the example's scenario file holds (its data were made from it).
 const std::map<std::string, double> kQuickReleaseTruth = {
     {"model.f_iso", 100.0}, {"model.velocity.v_max", 1.0}, {"model.passive.slack_length", 0.105}};
-const std::map<std::string, double> kTetanusTruth = {
-    {"model.f_iso", 100.0},
-    {"activation_dynamics.tau_activation", 0.015},
-    {"activation_dynamics.tau_deactivation", 0.05},
-    {"model.passive.slack_length", 0.105},
-    {"model.velocity.v_max", 1.0}};
+const std::map<std::string, double> kTetanusTruth = {{"model.f_iso", 100.0},
+                                                     {"activation_dynamics.tau_activation", 0.015},
+                                                     {"activation_dynamics.tau_deactivation", 0.05},
+                                                     {"model.passive.slack_length", 0.105},
+                                                     {"model.velocity.v_max", 1.0}};
 
 struct Example {
   IdentifySeriesSpec spec;
@@ -161,9 +160,8 @@ TEST(IdentifySeriesExamples, ForcesAndMassScaledTogetherAreAnUnresolvedCombinati
                        "  - {path: \"load[1].after\"}\n  - {path: actuator.mass}\n"
                        "  - {path: model.velocity.v_max}\n");
   const IdentifySeriesSpec spec = LoadIdentifySeriesSpec(data);
-  const SeriesIdentification design =
-      DesignSeries(spec, ReadMeasuredSeries(spec, true),
-                   ScenarioSensitivityRunner(LoadScenario(spec.scenario)));
+  const SeriesIdentification design = DesignSeries(
+      spec, ReadMeasuredSeries(spec, true), ScenarioSensitivityRunner(LoadScenario(spec.scenario)));
   ASSERT_EQ(design.weak_directions.size(), 1u);
   const WeakDirection& w = design.weak_directions[0];
   // the sensitivities are accurate to about 1e-8 here (rtol 1e-8): the direction's ratio

@@ -63,7 +63,7 @@ TEST(AnalyseJacobian, WithoutNoiseTheResidualsGiveTheVariance) {
   }
   const double det = n * tt - t * t;
   const JacobianAnalysis a = AnalyseJacobian(x, Eigen::Vector2d(1.0, 1.0), false, rss, {});
-  EXPECT_NEAR(a.variance_factor, s2, 1e-15);  // one division
+  EXPECT_NEAR(a.variance_factor, s2, 1e-15);                           // one division
   EXPECT_NEAR(a.standard_errors[0], std::sqrt(s2 * tt / det), 1e-13);  // rounding
   EXPECT_NEAR(a.standard_errors[1], std::sqrt(s2 * n / det), 1e-13);
 }
@@ -100,13 +100,13 @@ TEST(AnalyseJacobian, StandardErrorsDescribeTheSpreadOfNonlinearEstimates) {
     // known noise: weights 1/sigma
     problem.weights = Eigen::VectorXd::Constant(exact.size(), 1.0 / sigma);
     const LeastSquaresResult known = SolveBoundedLeastSquares(problem);
-    const JacobianAnalysis a = AnalyseJacobian(known.at_solution.jacobian / sigma,
-                                               known.parameters, true, known.cost, {});
+    const JacobianAnalysis a =
+        AnalyseJacobian(known.at_solution.jacobian / sigma, known.parameters, true, known.cost, {});
     // unknown noise: weights 1, s^2 from the residuals
     problem.weights = Eigen::VectorXd::Ones(exact.size());
     const LeastSquaresResult unknown = SolveBoundedLeastSquares(problem);
-    const JacobianAnalysis b = AnalyseJacobian(unknown.at_solution.jacobian, unknown.parameters,
-                                               false, unknown.cost, {});
+    const JacobianAnalysis b =
+        AnalyseJacobian(unknown.at_solution.jacobian, unknown.parameters, false, unknown.cost, {});
     for (int j = 0; j < 3; ++j) {
       covered_known[j] += std::abs(known.parameters[j] - truth[j]) <= 1.96 * a.standard_errors[j];
       covered_estimated[j] +=
@@ -182,8 +182,8 @@ TEST(AnalyseJacobian, NoiseThatHidesAParameterMakesItPoorlyDetermined) {
     const JacobianAnalysis a =
         AnalyseJacobian(x / sigma, Eigen::Vector2d(10.0, 0.1), true, 0.0, {});
     EXPECT_NEAR(a.relative_standard_errors[1], 0.25 * factor, 1e-12);  // closed form, rounding
-    EXPECT_EQ(a.verdicts[1], factor < 1 ? Identifiability::kIdentifiable
-                                        : Identifiability::kPoorlyDetermined);
+    EXPECT_EQ(a.verdicts[1],
+              factor < 1 ? Identifiability::kIdentifiable : Identifiability::kPoorlyDetermined);
   }
 }
 

@@ -53,8 +53,7 @@ struct StandIn {
 
   // SensitivityRunner's call: `values` (none: the scenario as it is) at `parameters`
   SensitivityTable operator()(const std::vector<std::string>& parameters,
-                              const std::vector<double>& values,
-                              const std::vector<double>& times) {
+                              const std::vector<double>& values, const std::vector<double>& times) {
     ++runs;
     std::map<std::string, double> p = kScenario;
     for (const std::string& path : parameters) {
@@ -116,8 +115,8 @@ MeasuredSeries Measured(const std::vector<std::string>& columns, const std::vect
 // The same without noise in the values, the noise levels still stated.
 MeasuredSeries Exact(const std::vector<std::string>& columns, const std::vector<double>& times,
                      const std::map<std::string, double>& truth, const std::vector<double>& noise) {
-  MeasuredSeries s = Measured(columns, times, truth,
-                              std::vector<double>(columns.size(), std::nan("")), 0);
+  MeasuredSeries s =
+      Measured(columns, times, truth, std::vector<double>(columns.size(), std::nan("")), 0);
   s.noise = noise;
   return s;
 }
@@ -141,9 +140,9 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 TEST(FitSeries, RecoversExactDataFromTwoSeriesAtDifferentTimes) {
   const auto truth = kScenario;
-  const IdentifySeriesSpec spec = Spec({Parameter("release.amp", 0.01),
-                                        Parameter("release.tau", 0.08, 0.001, 1.0),
-                                        Parameter("release.base", 0.09)});
+  const IdentifySeriesSpec spec =
+      Spec({Parameter("release.amp", 0.01), Parameter("release.tau", 0.08, 0.001, 1.0),
+            Parameter("release.base", 0.09)});
   // lengths every 4 ms, tensions every 10 ms from 2 ms: few times shared
   const std::vector<MeasuredSeries> exact = {
       Exact({"length"}, Times(0.0, 0.004, 60), truth, {1e-5}),
@@ -183,10 +182,9 @@ TEST(FitSeries, StandardErrorsAreTheInverseFisherInformationAtTheEstimate) {
   const std::vector<MeasuredSeries> series = {Exact({"length"}, lt, truth, {noise_l}),
                                               Exact({"tension_total"}, tt, truth, {noise_t})};
   StandIn model;
-  const SeriesIdentification fit =
-      FitSeries(Spec({Parameter(paths[0], 0.015), Parameter(paths[1], 0.06),
-                      Parameter(paths[2], 0.11)}),
-                series, std::ref(model));
+  const SeriesIdentification fit = FitSeries(
+      Spec({Parameter(paths[0], 0.015), Parameter(paths[1], 0.06), Parameter(paths[2], 0.11)}),
+      series, std::ref(model));
   ASSERT_TRUE(fit.noise_given);
   for (int k = 0; k < 3; ++k) {
     const double se = std::sqrt(covariance(k, k));

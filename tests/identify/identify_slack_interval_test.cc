@@ -32,8 +32,8 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // (1 + t^2/v)^(-(v+1)/2)
 double CentralProbabilityByQuadrature(double t, int dof) {
   const double v = dof;
-  const double scale = std::exp(std::lgamma(0.5 * (v + 1)) - std::lgamma(0.5 * v)) /
-                       std::sqrt(v * std::numbers::pi);
+  const double scale =
+      std::exp(std::lgamma(0.5 * (v + 1)) - std::lgamma(0.5 * v)) / std::sqrt(v * std::numbers::pi);
   const auto density = [&](double s) { return scale * std::pow(1 + s * s / v, -0.5 * (v + 1)); };
   return 2.0 * testing::Integrate(density, 0.0, t, {}, 1e-14);
 }
@@ -42,8 +42,7 @@ TEST(StudentT, CentralProbabilityMatchesQuadratureOfTheDensity) {
   for (int dof : {1, 2, 3, 4, 7, 26, 27}) {
     for (double t : {0.3, 1.0, 2.0555, 6.0}) {
       // adaptive Simpson to 1e-14 of a smooth density, and a finite sum: both ~1e-14
-      EXPECT_NEAR(StudentTCentralProbability(t, dof),
-                  CentralProbabilityByQuadrature(t, dof), 1e-11)
+      EXPECT_NEAR(StudentTCentralProbability(t, dof), CentralProbabilityByQuadrature(t, dof), 1e-11)
           << "dof " << dof << ", t " << t;
     }
   }
@@ -95,11 +94,17 @@ std::pair<double, double> GoldenMinimum(F f, double a, double b, int iterations)
   double c = b - ratio * (b - a), d = a + ratio * (b - a), fc = f(c), fd = f(d);
   for (int i = 0; i < iterations; ++i) {
     if (fc < fd) {
-      b = d; d = c; fd = fc;
-      c = b - ratio * (b - a); fc = f(c);
+      b = d;
+      d = c;
+      fd = fc;
+      c = b - ratio * (b - a);
+      fc = f(c);
     } else {
-      a = c; c = d; fc = fd;
-      d = a + ratio * (b - a); fd = f(d);
+      a = c;
+      c = d;
+      fc = fd;
+      d = a + ratio * (b - a);
+      fd = f(d);
     }
   }
   return fc < fd ? std::pair{c, fc} : std::pair{d, fd};
@@ -163,7 +168,8 @@ double BruteForceMinimum(const std::vector<DataPoint>& data,
   }
   double least = scan[best].second;
   const auto rss = [&](double x) { return BruteForceRss(data, x); };
-  if (best > 1) least = std::min(least, GoldenMinimum(rss, scan[best - 1].first, scan[best].first, 50).second);
+  if (best > 1)
+    least = std::min(least, GoldenMinimum(rss, scan[best - 1].first, scan[best].first, 50).second);
   if (best + 1 < scan.size()) {
     least = std::min(least, GoldenMinimum(rss, scan[best].first, scan[best + 1].first, 50).second);
   }
@@ -233,9 +239,8 @@ TEST(SlackLengthInterval, UnboundedBelowWhenTheNoiseHidesTheToe) {
   EXPECT_TRUE(in.wide);
   EXPECT_EQ(fit.k_p_over_interval.low, 0.0);  // k_p -> 0 as the slack length goes down
   ExpectIntervalOfBruteForceProfile(data, fit);
-  const std::vector<std::string> notes = PassiveUncertaintyNotes(fit, [](double x) {
-    return std::to_string(x);
-  });
+  const std::vector<std::string> notes =
+      PassiveUncertaintyNotes(fit, [](double x) { return std::to_string(x); });
   ASSERT_EQ(notes.size(), 2u);
   EXPECT_THAT(notes[0], HasSubstr("95% profile-likelihood interval (-inf, "));
   EXPECT_THAT(notes[0], HasSubstr("not bounded below"));
@@ -297,8 +302,8 @@ TEST(SlackLengthInterval, RejectsALevelOutsideZeroToOne) {
 // Lengths 1e-8 m apart near 0.1 m: the bisection's tolerance (1e-10 of the span) is below the
 // spacing of doubles there, and the interval's ends must still be found (this looped forever).
 TEST(SlackLengthInterval, EndsFoundWhenTheToleranceIsBelowTheSpacingOfDoubles) {
-  const std::vector<DataPoint> data = {{0.1, 0.0}, {0.10000001, 1.0}, {0.10000002, 3.0},
-                                       {0.10000003, 8.0}, {0.10000004, 20.0}};
+  const std::vector<DataPoint> data = {
+      {0.1, 0.0}, {0.10000001, 1.0}, {0.10000002, 3.0}, {0.10000003, 8.0}, {0.10000004, 20.0}};
   const PassiveIdentification fit = IdentifyPassive(data);
   const ProfileInterval& in = fit.slack_length_interval;
   EXPECT_LE(in.low, fit.slack_length.value);
@@ -307,10 +312,10 @@ TEST(SlackLengthInterval, EndsFoundWhenTheToleranceIsBelowTheSpacingOfDoubles) {
 
 // Finite data whose fit overflows is an input error, never a model of NaN or infinity.
 TEST(SlackLengthInterval, AFitThatOverflowsIsRefused) {
-  const std::vector<DataPoint> subnormal = {{1e-320, 0.0}, {2e-320, 1.0}, {3e-320, 3.0},
-                                            {4e-320, 8.0}};
-  const std::vector<DataPoint> huge_tension = {{0.1, 0.0}, {0.11, 1e308}, {0.12, 1e308},
-                                               {0.13, 1e308}};
+  const std::vector<DataPoint> subnormal = {
+      {1e-320, 0.0}, {2e-320, 1.0}, {3e-320, 3.0}, {4e-320, 8.0}};
+  const std::vector<DataPoint> huge_tension = {
+      {0.1, 0.0}, {0.11, 1e308}, {0.12, 1e308}, {0.13, 1e308}};
   for (const auto& data : {subnormal, huge_tension}) {
     try {
       const PassiveIdentification fit = IdentifyPassive(data);

@@ -76,7 +76,8 @@ std::vector<DataPoint> VelocityData(double noise, std::uint64_t seed, double f_i
 
 TEST(IdentifyVelocity, RecoversExactDataAndTheExponent) {
   for (int n : {1, 2, 3, 5}) {
-    const VelocityIdentification fit = IdentifyVelocity(VelocityData(0.0, 1, 100.0, 0.8, n), std::nullopt);
+    const VelocityIdentification fit =
+        IdentifyVelocity(VelocityData(0.0, 1, 100.0, 0.8, n), std::nullopt);
     // exact data and a linear least-squares solve: rounding only, ~1e-14 relative; 1e-10
     // (m/s and N) is far below any change of n, which moves the fit by per cent
     EXPECT_EQ(fit.best.n, n);
@@ -112,8 +113,9 @@ TEST(IdentifyVelocity, HoldsAGivenIsometricTension) {
 
 // The generating active curve: 2000 N times two Gaussians (eqs. 3-4, sigma = 1).
 double TrueActive(double x) {
-  const double f = 0.02 / std::sqrt(2 * std::numbers::pi) * std::exp(-2e4 * std::pow(x - 0.095, 2) / 2) +
-                   0.015 / std::sqrt(2 * std::numbers::pi) * std::exp(-1e4 * std::pow(x - 0.11, 2) / 2);
+  const double f =
+      0.02 / std::sqrt(2 * std::numbers::pi) * std::exp(-2e4 * std::pow(x - 0.095, 2) / 2) +
+      0.015 / std::sqrt(2 * std::numbers::pi) * std::exp(-1e4 * std::pow(x - 0.11, 2) / 2);
   return 2000.0 * f;
 }
 
@@ -193,9 +195,10 @@ TEST(IdentifyReport, GaussiansCrossValidateBetterThanAQuarticOnTheClassicCurve) 
       std::string(MUSCLESIM_SOURCE_DIR) + "/data/ghj1966_sampled.csv", "length", "tension", 10);
   auto models = ReferenceFitters();
   models.insert(models.begin(), {"gaussians", [](const std::vector<DataPoint>& d) {
-    const ActiveIdentification fit = IdentifyActive(d, 3, true);
-    return std::function<double(double)>([fit](double x) { return fit.Evaluate(x); });
-  }});
+                                   const ActiveIdentification fit = IdentifyActive(d, 3, true);
+                                   return std::function<double(double)>(
+                                       [fit](double x) { return fit.Evaluate(x); });
+                                 }});
   const CurveComparison c = Compare("active", "um", data, models);
   ASSERT_EQ(c.models.size(), 4u);
   EXPECT_LT(c.models[0].loocv_rmse, c.models[3].loocv_rmse);  // against degree 4
@@ -235,8 +238,8 @@ void ExpectPrinted(double value, const std::string& printed, double data_scale,
   EXPECT_NEAR(value, number, half_unit * (1.0 + 1e-9)) << what << " printed " << printed;
 }
 
-void ExpectTable(const CurveComparison& c, std::size_t points,
-                 const std::vector<PrintedRow>& rows, const std::vector<DataPoint>& data) {
+void ExpectTable(const CurveComparison& c, std::size_t points, const std::vector<PrintedRow>& rows,
+                 const std::vector<DataPoint>& data) {
   EXPECT_EQ(c.points, points);
   ASSERT_EQ(c.models.size(), rows.size());
   double scale = 0.0;
@@ -261,27 +264,31 @@ std::vector<DataPoint> ShippedData(const std::string& file, const std::string& x
 CurveComparison ComparePassive(const std::vector<DataPoint>& data) {
   auto models = ReferenceFitters();
   models.insert(models.begin(), {"exponential (eq. 1)", [](const std::vector<DataPoint>& d) {
-    const PassiveIdentification fit = IdentifyPassive(d);
-    return std::function<double(double)>([fit](double x) { return fit.Evaluate(x); });
-  }});
+                                   const PassiveIdentification fit = IdentifyPassive(d);
+                                   return std::function<double(double)>(
+                                       [fit](double x) { return fit.Evaluate(x); });
+                                 }});
   return Compare("passive", "m", data, models);
 }
 
 CurveComparison CompareActive(const std::vector<DataPoint>& data) {  // 3 non-negative
   auto models = ReferenceFitters();
   models.insert(models.begin(), {"3 Gaussians (eqs. 3-4)", [](const std::vector<DataPoint>& d) {
-    const ActiveIdentification fit = IdentifyActive(d, 3, true);
-    return std::function<double(double)>([fit](double x) { return fit.Evaluate(x); });
-  }});
+                                   const ActiveIdentification fit = IdentifyActive(d, 3, true);
+                                   return std::function<double(double)>(
+                                       [fit](double x) { return fit.Evaluate(x); });
+                                 }});
   return Compare("active", "m", data, models);
 }
 
 CurveComparison CompareVelocity(const std::vector<DataPoint>& data) {
   auto models = ReferenceFitters();
   models.insert(models.begin(), {"power law (eq. 12)", [](const std::vector<DataPoint>& d) {
-    const VelocityIdentification fit = IdentifyVelocity(d, std::nullopt);
-    return std::function<double(double)>([fit](double v) { return fit.Evaluate(v); });
-  }});
+                                   const VelocityIdentification fit =
+                                       IdentifyVelocity(d, std::nullopt);
+                                   return std::function<double(double)>(
+                                       [fit](double v) { return fit.Evaluate(v); });
+                                 }});
   return Compare("velocity", "m/s", data, models);
 }
 
@@ -299,7 +306,8 @@ TEST(IdentifyReport, ReadmeTableSyntheticPassive) {
 // conversion): the README's prose quotes numbers to fewer digits than its tables.
 void ExpectRounded(double value, const std::string& printed, const std::string& what) {
   const std::size_t point = printed.find('.');
-  const int decimals = point == std::string::npos ? 0 : static_cast<int>(printed.size() - point - 1);
+  const int decimals =
+      point == std::string::npos ? 0 : static_cast<int>(printed.size() - point - 1);
   EXPECT_NEAR(value, std::stod(printed), 0.5 * std::pow(10.0, -decimals) * (1.0 + 1e-9))
       << what << " printed " << printed;
 }
@@ -390,7 +398,8 @@ std::string DataError(const std::string& text, std::size_t min_points = 4) {
 }
 
 TEST(IdentifyData, RejectsEveryBadDataRule) {
-  EXPECT_EQ(DataError("length,tension\n0.1,1\n0.2,2\n"), "FILE: too few points: 2, need at least 4");
+  EXPECT_EQ(DataError("length,tension\n0.1,1\n0.2,2\n"),
+            "FILE: too few points: 2, need at least 4");
   EXPECT_EQ(DataError("# source\nlength,tension\n0.1,1\n0.2,nan\n0.3,1\n0.4,1\n"),
             "FILE:4: length = 0.2, tension = nan: values must be finite");
   EXPECT_EQ(DataError("length,tension\n0.1,1\n0.3,2\n0.2,1\n0.4,1\n"),

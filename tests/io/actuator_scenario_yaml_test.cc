@@ -73,9 +73,9 @@ TEST(Scenario, ReadsEveryWaveformAndLoadType) {
   - {type: mass, mass: 2.0}
 )";
   const std::string valid = Valid();
-  const std::string path = testing::WriteTempFile(
-      "scenario_loads.yaml",
-      valid.substr(0, valid.find("load:")) + loads + valid.substr(valid.find("time: {")));
+  const std::string path =
+      testing::WriteTempFile("scenario_loads.yaml", valid.substr(0, valid.find("load:")) + loads +
+                                                        valid.substr(valid.find("time: {")));
   const Scenario s = LoadScenario(path);
   ASSERT_EQ(s.loads.size(), 8u);
   EXPECT_EQ(s.loads[6].load.kind, LoadKind::kSpring);
@@ -85,10 +85,10 @@ TEST(Scenario, ReadsEveryWaveformAndLoadType) {
 
 TEST(Scenario, SetOverridesAnyScalarByItsPath) {
   const std::string path = testing::FixturePath("actuator.yaml");
-  const Scenario s = LoadScenario(
-      path, {"model.velocity.n=4", "load[0].value=55", "solver.method=adams",
-             "model.active_length.optimal_range[1]=0.11", "output.interval=steps",
-             "model.active_length.sigma=2"});
+  const Scenario s =
+      LoadScenario(path, {"model.velocity.n=4", "load[0].value=55", "solver.method=adams",
+                          "model.active_length.optimal_range[1]=0.11", "output.interval=steps",
+                          "model.active_length.sigma=2"});
   const ModelParams& model = s.models.at("model").spec.params;
   EXPECT_EQ(model.velocity.n, 4);
   EXPECT_EQ(s.loads[0].load.force.value, 55.0);
@@ -103,7 +103,8 @@ TEST(Scenario, SetOverridesAnyScalarByItsPath) {
 TEST(Scenario, SetIsValidatedLikeTheFile) {
   EXPECT_EQ(ErrorFor("", "", {"model.velocity.n=0"}),
             "model.velocity.n = 0 (override): must be an integer >= 1 (at most 1000)");
-  EXPECT_THAT(ErrorFor("", "", {"model.velocity.m=3"}), HasSubstr("model.velocity.m (override): unknown key"));
+  EXPECT_THAT(ErrorFor("", "", {"model.velocity.m=3"}),
+              HasSubstr("model.velocity.m (override): unknown key"));
   EXPECT_EQ(ErrorFor("", "", {"model.speed.n=3"}),
             "override model.speed.n=3: model.speed does not exist in FILE");
   EXPECT_EQ(ErrorFor("", "", {"load[3].value=3"}),
@@ -146,45 +147,58 @@ TEST(Scenario, DuplicateKeysAreErrorsNamingBothPlaces) {
 
 TEST(Scenario, RejectsEveryBrokenRule) {
   const std::vector<std::tuple<std::string, std::string, std::string>> cases = {
-      {"mass: 0.1,", "mass: 0,", "actuator.mass = 0 (FILE:8:18): must be from 1e-09 to 1e+09 [kg]: a microgram"},
+      {"mass: 0.1,", "mass: 0,",
+       "actuator.mass = 0 (FILE:8:18): must be from 1e-09 to 1e+09 [kg]: a microgram"},
       {"damping: 0.0", "damping: -1", "actuator.damping = -1"},
       {"stiffness: 0.0", "stiffness: -5", "actuator.stiffness = -5"},
-      {"rest_length: 0.1}", "rest_length: 0.1, color: red}", "actuator.color (FILE:8:71): unknown key"},
+      {"rest_length: 0.1}", "rest_length: 0.1, color: red}",
+       "actuator.color (FILE:8:71): unknown key"},
       {"length: 0.1,", "length: 0,", "initial.length = 0 (FILE:9:19): must be > 0 and <= 1000 [m]"},
       {"lengthening_rate: 0.0", "lengthening_rate: x", "initial.lengthening_rate = x"},
-      {"after: 1.0}", "after: 1.2}", "activation.after = 1.2 (FILE:10:58): activation must stay within [0, 1]"},
+      {"after: 1.0}", "after: 1.2}",
+       "activation.after = 1.2 (FILE:10:58): activation must stay within [0, 1]"},
       {"before: 0.0,", "before: -0.5,", "activation.before = -0.5"},
-      {"{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: ramp, start: 0, end: 1, from: 0, to: 2}",
-       "activation.to = 2"},
+      {"{type: step, time: 0.05, before: 0.0, after: 1.0}",
+       "{type: ramp, start: 0, end: 1, from: 0, to: 2}", "activation.to = 2"},
       {"{type: step, time: 0.05, before: 0.0, after: 1.0}",
        "{type: sine, offset: 0.5, amplitude: 0.7, frequency: 1}", "activation.amplitude = 0.7"},
       {"{type: step, time: 0.05, before: 0.0, after: 1.0}",
-       "{type: pulses, start: 0, period: 0.1, width: 0.02, low: 0, high: 3}", "activation.high = 3"},
-      {"{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: table, points: [[0, 0], [1, 1.5]]}",
-       "activation.points[1][1] = 1.5"},
-      {"{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: table, points: [[0, 0], [1, 1], [0.5, 1]]}",
+       "{type: pulses, start: 0, period: 0.1, width: 0.02, low: 0, high: 3}",
+       "activation.high = 3"},
+      {"{type: step, time: 0.05, before: 0.0, after: 1.0}",
+       "{type: table, points: [[0, 0], [1, 1.5]]}", "activation.points[1][1] = 1.5"},
+      {"{type: step, time: 0.05, before: 0.0, after: 1.0}",
+       "{type: table, points: [[0, 0], [1, 1], [0.5, 1]]}",
        "activation.points[2][0] = 0.5 (FILE:10:53): table times must be strictly increasing"},
       {"{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: square, value: 1}",
-       "activation.type = square (FILE:10:20): must be one of constant, step, ramp, sine, pulses, table"},
+       "activation.type = square (FILE:10:20): must be one of constant, step, ramp, sine, pulses, "
+       "table"},
       {"{type: step, time: 0.05, before: 0.0, after: 1.0}", "{type: step, time: 0.05, after: 1.0}",
        "activation.before (FILE:10:13): missing required key"},
       {"{type: constant, value: 40.0}", "{type: spring, stiffness: -1, anchor: 0.1}",
        "load[0].stiffness = -1 (FILE:12:31): must be from 0 to 1e+12 [N/m]"},
       {"{type: constant, value: 40.0}", "{type: mass, mass: 0}", "load[0].mass = 0"},
       {"{type: constant, value: 40.0}", "{type: rocket, value: 1}",
-       "load[0].type = rocket (FILE:12:12): must be one of constant, step, ramp, sine, pulses, table, spring, mass"},
-      {"{type: constant, value: 40.0}", "{type: pulses, start: 0, period: 1.0e-8, width: 1.0e-9, low: 0, high: 1}",
+       "load[0].type = rocket (FILE:12:12): must be one of constant, step, ramp, sine, pulses, "
+       "table, spring, mass"},
+      {"{type: constant, value: 40.0}",
+       "{type: pulses, start: 0, period: 1.0e-8, width: 1.0e-9, low: 0, high: 1}",
        "load[0].period = 1e-08 (FILE:12:38): gives more than 5 million pulses"},
-      {"end: 1.0}", "end: 0.0}", "time.end = 0.0 (FILE:13:25): must be greater than time.start = 0 by at least 1e-09 s"},
+      {"end: 1.0}", "end: 0.0}",
+       "time.end = 0.0 (FILE:13:25): must be greater than time.start = 0 by at least 1e-09 s"},
       {"rtol: 1.0e-6", "rtol: 0", "solver.rtol = 0 (FILE:14:29)"},
       {"atol: 1.0e-9", "atol: -1", "solver.atol = -1"},
       {"method: bdf", "method: rk4", "solver.method = rk4 (FILE:14:18): must be bdf or adams"},
-      {"jacobian: analytic", "jacobian: exact", "solver.jacobian = exact (FILE:14:61): must be analytic or difference_quotient"},
+      {"jacobian: analytic", "jacobian: exact",
+       "solver.jacobian = exact (FILE:14:61): must be analytic or difference_quotient"},
       {"max_step: 0.0", "max_step: -1", "solver.max_step = -1"},
-      {"interval: 0.001", "interval: 0", "output.interval = 0 (FILE:15:35): must be `steps` or a time [s] giving at most 1e8 rows"},
+      {"interval: 0.001", "interval: 0",
+       "output.interval = 0 (FILE:15:35): must be `steps` or a time [s] giving at most 1e8 rows"},
       {"interval: 0.001", "interval: often", "output.interval = often"},
-      {"min_length: 0.05", "min_length: 0.15", "limits.min_length = 0.15 (FILE:16:22): must be >= 0 and below initial.length = 0.1"},
-      {"max_length: 0.2", "max_length: 0.1", "limits.max_length = 0.1 (FILE:16:40): must be above initial.length"},
+      {"min_length: 0.05", "min_length: 0.15",
+       "limits.min_length = 0.15 (FILE:16:22): must be >= 0 and below initial.length = 0.1"},
+      {"max_length: 0.2", "max_length: 0.1",
+       "limits.max_length = 0.1 (FILE:16:40): must be above initial.length"},
       {"time: {start", "tim: {start", "tim (FILE:13:1): unknown key"},
       {"time: {start: 0.0, end: 1.0}\n", "", "time (FILE:1:1): missing required key"},
   };

@@ -72,17 +72,16 @@ TEST_P(CanonicalNetworkFile, IsTheSystemItsTestsCheck) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Scenarios, CanonicalNetworkFile,
-    ::testing::Values(Canonical{"mass_spring_damper.yaml", Msd},
-                      Canonical{"antagonist_pair.yaml", Pair},
-                      Canonical{"musculotendon_isokinetic.yaml", Mtu},
-                      Canonical{"millard_benchmark.yaml", Millard},
-                      Canonical{"chain.yaml", Chain10}),
-    [](const ::testing::TestParamInfo<Canonical>& param) {
-      std::string name = param.param.file;
-      return name.substr(0, name.find('.'));
-    });
+INSTANTIATE_TEST_SUITE_P(Scenarios, CanonicalNetworkFile,
+                         ::testing::Values(Canonical{"mass_spring_damper.yaml", Msd},
+                                           Canonical{"antagonist_pair.yaml", Pair},
+                                           Canonical{"musculotendon_isokinetic.yaml", Mtu},
+                                           Canonical{"millard_benchmark.yaml", Millard},
+                                           Canonical{"chain.yaml", Chain10}),
+                         [](const ::testing::TestParamInfo<Canonical>& param) {
+                           std::string name = param.param.file;
+                           return name.substr(0, name.find('.'));
+                         });
 
 }  // namespace
 }  // namespace musclesim

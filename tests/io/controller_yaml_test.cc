@@ -126,8 +126,7 @@ TEST(ControllerYaml, DrivenActuatorRunsAndTheCsvRecordsTheLoop) {
     // each side a few roundoffs of 0.1 m
     EXPECT_NEAR(reference, ramp, 1e-15) << t;
     // the muscle's length from its nodes' positions: one subtraction's roundoff
-    EXPECT_NEAR(measured, Column(csv, r, "load.position") - Column(csv, r, "wall.position"),
-                1e-16)
+    EXPECT_NEAR(measured, Column(csv, r, "load.position") - Column(csv, r, "wall.position"), 1e-16)
         << t;
     EXPECT_NEAR(Column(csv, r, "hold.error"), reference - measured, 1e-16) << t;  // as above
     // without activation dynamics the output is the muscle's activation itself, in [0, 1]
@@ -163,8 +162,7 @@ TEST(ControllerYaml, CoContractionSteersThePairThroughActivationDynamics) {
     // the pair's excitations: level + c and level - c, each clamped to [0, 1]
     const double c = Column(csv, r, "steer.output");
     EXPECT_NEAR(Column(csv, r, "flexor.excitation"), std::clamp(0.3 + c, 0.0, 1.0), 1e-16) << t;
-    EXPECT_NEAR(Column(csv, r, "extensor.excitation"), std::clamp(0.3 - c, 0.0, 1.0), 1e-16)
-        << t;
+    EXPECT_NEAR(Column(csv, r, "extensor.excitation"), std::clamp(0.3 - c, 0.0, 1.0), 1e-16) << t;
   }
 }
 
@@ -174,11 +172,10 @@ TEST(ControllerYaml, SetReachesAControllersGains) {
       LoadScenario(path, {"controllers[0].gains.kp=-300", "controllers[0].reference.to=0.098"});
   EXPECT_EQ(s.controllers[0].gains.kp, -300.0);
   EXPECT_EQ(s.controllers[0].reference.to, 0.098);
-  EXPECT_THAT(InputErrorOf(path, [&] {
-                LoadScenario(path, {"controllers[0].measure.quantity=tension"});
-              }),
-              HasSubstr("controllers[0].gains.kd = -1 (" + At(kHold, "kd: ^-1.0") +
-                        "): must be 0 on a tension"));
+  EXPECT_THAT(
+      InputErrorOf(path, [&] { LoadScenario(path, {"controllers[0].measure.quantity=tension"}); }),
+      HasSubstr("controllers[0].gains.kd = -1 (" + At(kHold, "kd: ^-1.0") +
+                "): must be 0 on a tension"));
 }
 
 // The message of loading `text`, the file's path shown as FILE.
@@ -195,17 +192,20 @@ TEST(ControllerYaml, DrivenActuatorWithItsOwnActivationIsRefused) {
                         At(text, "{type: constant, value: 0.5}") +
                         "): actuator muscle is driven by controllers[0] (hold): it has no "
                         "activation of its own"));
-  const std::string excited = Edit(kPair, "initial_activation: 0.3}",
-                                   "initial_activation: 0.3, excitation: {type: constant, value: 1}}");
+  const std::string excited =
+      Edit(kPair, "initial_activation: 0.3}",
+           "initial_activation: 0.3, excitation: {type: constant, value: 1}}");
   EXPECT_THAT(ErrorOf(excited),
               HasSubstr("elements[0].excitation = {type: constant, value: 1} (" +
                         At(excited, "{type: constant, value: 1}") +
                         "): actuator flexor is driven by controllers[0] (steer): it has no "
                         "activation of its own"));
   // an initial activation needs the dynamics it starts
-  const std::string initial = Edit(kHold, "model: muscle}", "model: muscle, initial_activation: 0.2}");
+  const std::string initial =
+      Edit(kHold, "model: muscle}", "model: muscle, initial_activation: 0.2}");
   EXPECT_THAT(ErrorOf(initial), HasSubstr("elements[0].initial_activation = 0.2 (" +
-                                          At(initial, "initial_activation: ^0.2") + "): only with activation_dynamics"));
+                                          At(initial, "initial_activation: ^0.2") +
+                                          "): only with activation_dynamics"));
 }
 
 TEST(ControllerYaml, UndrivenActuatorWithoutActivationNamesWhatTheControllersDrive) {
@@ -226,18 +226,21 @@ TEST(ControllerYaml, EntryRefusalsNameFileLineAndKey) {
   const auto edit = [](const std::string& from, const std::string& to) {
     return Edit(kHold, from, to);
   };
-  const std::string tension = Edit(kHold, "{element: muscle, quantity: length}",
-                                   "{element: muscle, quantity: tension}");
-  const std::string second = "{name: again, type: pid, measure: {node: load, quantity: position}, "
-                             "reference: {type: constant, value: 0.1}, gains: {kp: 1}, drives: muscle}";
+  const std::string tension =
+      Edit(kHold, "{element: muscle, quantity: length}", "{element: muscle, quantity: tension}");
+  const std::string second =
+      "{name: again, type: pid, measure: {node: load, quantity: position}, "
+      "reference: {type: constant, value: 0.1}, gains: {kp: 1}, drives: muscle}";
   const std::vector<Case> cases = {
       {edit("type: pid", "type: lqr"), "lqr", "controllers[0].type = lqr (@): must be one of pid"},
-      {edit("drives: muscle", "drives: muscle\n    co_contraction: {actuators: [muscle, spring], "
-                              "level: {type: constant, value: 0}}"),
+      {edit("drives: muscle",
+            "drives: muscle\n    co_contraction: {actuators: [muscle, spring], "
+            "level: {type: constant, value: 0}}"),
        "name: hold", "controllers[0] = drives and co_contraction (@): give exactly one of drives"},
       {edit("    drives: muscle\n", ""), "name: hold",
        "controllers[0] = neither (@): give exactly one of drives"},
-      {edit("{element: muscle, quantity: length}", "{element: muscle, node: load, quantity: length}"),
+      {edit("{element: muscle, quantity: length}",
+            "{element: muscle, node: load, quantity: length}"),
        "{element: muscle, node",
        "controllers[0].measure = {element: muscle, node: load, quantity: length} (@): give exactly "
        "one of element"},
@@ -267,10 +270,12 @@ TEST(ControllerYaml, EntryRefusalsNameFileLineAndKey) {
        "controllers[0].measure.node = lod (@): names no node; the nodes are: wall, load, anchor"},
       {edit("{element: muscle, quantity: length}", "{node: wall, quantity: position}"),
        "wall, quantity",
-       "controllers[0].measure.node = wall (@): must name a free node (one with a mass): it is fixed"},
+       "controllers[0].measure.node = wall (@): must name a free node (one with a mass): it is "
+       "fixed"},
       {edit("    drives: muscle\n", "    drives: muscle\n  - " + second + "\n"), "drives: ^muscle}",
        "controllers[1].drives = muscle (@): is driven by controllers[0] already"},
-      {edit("    drives: muscle\n", "    drives: muscle\n  - " + Edit(second, "again", "hold") + "\n"),
+      {edit("    drives: muscle\n",
+            "    drives: muscle\n  - " + Edit(second, "again", "hold") + "\n"),
        "hold, type", "controllers[1].name = hold (@): must be unique: controllers[0] has it too"},
   };
   for (const Case& c : cases) {
@@ -288,15 +293,20 @@ TEST(ControllerYaml, CoContractionNamesAreResolved) {
            "     activation: {type: constant, value: 0.1}}\n  - {name: damper,");
   // extensor, now undriven, is refused first; give it an activation to reach the controller
   const std::string fixed =
-      Edit(text, "     activation_dynamics: {tau_activation: 0.015, tau_deactivation: 0.05}}\n  - {name: extensor2",
+      Edit(text,
+           "     activation_dynamics: {tau_activation: 0.015, tau_deactivation: 0.05}}\n  - {name: "
+           "extensor2",
            "     activation: {type: constant, value: 0.1}}\n  - {name: extensor2");
-  EXPECT_THAT(ErrorOf(fixed),
-              HasSubstr("controllers[0].co_contraction.actuators = extensr (" +
-                        At(fixed, "[flexor, extensr]") +
-                        "): names no element; the elements are: flexor, extensor, extensor2, damper"));
-  const std::string level = Edit(kPair, "level: {type: constant, value: 0.3}", "level: {type: constant, value: 1.5}");
-  EXPECT_THAT(ErrorOf(level), HasSubstr("controllers[0].co_contraction.level.value = 1.5 (" +
-                                        At(level, "1.5") + "): activation must stay within [0, 1]"));
+  EXPECT_THAT(
+      ErrorOf(fixed),
+      HasSubstr("controllers[0].co_contraction.actuators = extensr (" +
+                At(fixed, "[flexor, extensr]") +
+                "): names no element; the elements are: flexor, extensor, extensor2, damper"));
+  const std::string level =
+      Edit(kPair, "level: {type: constant, value: 0.3}", "level: {type: constant, value: 1.5}");
+  EXPECT_THAT(ErrorOf(level),
+              HasSubstr("controllers[0].co_contraction.level.value = 1.5 (" + At(level, "1.5") +
+                        "): activation must stay within [0, 1]"));
 }
 
 TEST(ControllerYaml, SensitivitiesOfAControlledNetworkAreRefused) {
@@ -307,9 +317,8 @@ TEST(ControllerYaml, SensitivitiesOfAControlledNetworkAreRefused) {
                         ": sensitivities[0] models.muscle.f_iso: sensitivities of a network with "
                         "controllers are not supported yet"));
   // and from the command line: an input error
-  const testing::CliOutcome r =
-      testing::RunMusclesim("run " + WriteTempFile("hold.yaml", kHold) +
-                            " -o - --sensitivity elements[1].stiffness");
+  const testing::CliOutcome r = testing::RunMusclesim("run " + WriteTempFile("hold.yaml", kHold) +
+                                                      " -o - --sensitivity elements[1].stiffness");
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_THAT(r.err, HasSubstr("--sensitivity elements[1].stiffness: sensitivities of a network "
                                "with controllers are not supported yet"));
@@ -319,13 +328,16 @@ TEST(ControllerYaml, SweepOfAControlledBaseReachesEachReference) {
   const std::string dir = testing::TempPath("sweep");
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  std::ofstream(dir + "/base.yaml") << Edit(Edit(kHold, "{type: ramp, start: 0.1, end: 0.3, from: 0.1, to: 0.097}",
-                                                 "{type: constant, value: 0.098}"),
-                                            "end: 0.5}", "end: 3.0}");
-  std::ofstream(dir + "/sweep.yaml") << "base: base.yaml\nmode: grid\nparameters:\n"
-                                        "  controllers[0].reference.value: [0.097, 0.099]\n"
-                                        "metrics: [final_length]\nmetric_options: {element: muscle}\n"
-                                        "output: " << dir << "/sweep.csv\n";
+  std::ofstream(dir + "/base.yaml")
+      << Edit(Edit(kHold, "{type: ramp, start: 0.1, end: 0.3, from: 0.1, to: 0.097}",
+                   "{type: constant, value: 0.098}"),
+              "end: 0.5}", "end: 3.0}");
+  std::ofstream(dir + "/sweep.yaml")
+      << "base: base.yaml\nmode: grid\nparameters:\n"
+         "  controllers[0].reference.value: [0.097, 0.099]\n"
+         "metrics: [final_length]\nmetric_options: {element: muscle}\n"
+         "output: "
+      << dir << "/sweep.csv\n";
   const testing::CliOutcome r = testing::RunMusclesim("sweep " + dir + "/sweep.yaml");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const CsvTable summary = ReadCsv(dir + "/sweep.csv");
@@ -346,7 +358,8 @@ TEST(ControllerYaml, PlotHasTheControllersPanels) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   std::ofstream(dir + "/hold.yaml") << kHold;
-  testing::CliOutcome r = testing::RunMusclesim("run " + dir + "/hold.yaml -o " + dir + "/hold.csv");
+  testing::CliOutcome r =
+      testing::RunMusclesim("run " + dir + "/hold.yaml -o " + dir + "/hold.csv");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const bool gnuplot = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
   r = testing::RunMusclesim("plot " + dir + "/hold.csv -o " + dir + "/hold.png --script " + dir +

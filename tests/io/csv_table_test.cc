@@ -15,8 +15,7 @@ using ::testing::ElementsAre;
 // Writes `text` to a file named after the running test under TEST_TMPDIR and reads it.
 std::string WriteCsv(const std::string& text) {
   const std::string path = ::testing::TempDir() + "csv_table_" +
-                           ::testing::UnitTest::GetInstance()->current_test_info()->name() +
-                           ".csv";
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".csv";
   std::ofstream(path, std::ios::binary) << text;
   return path;
 }
@@ -46,11 +45,11 @@ TEST(CsvTable, ReadsHeaderRowsAndTheirLineNumbers) {
 
 TEST(CsvTable, QuotedFieldsKeepCommasAndDoubledQuotes) {
   // RFC 4180: a quoted field may hold commas; "" inside it is one quote
-  const CsvTable table = ReadCsv(WriteCsv(
-      "index,message,status\n"
-      "0,\"CVODE failed at t = 0.1, flag \"\"CV_TOO_MUCH_WORK\"\"\",failed\n"
-      "1,\"\",ok\n"
-      "2,plain,\"ok\"\n"));
+  const CsvTable table =
+      ReadCsv(WriteCsv("index,message,status\n"
+                       "0,\"CVODE failed at t = 0.1, flag \"\"CV_TOO_MUCH_WORK\"\"\",failed\n"
+                       "1,\"\",ok\n"
+                       "2,plain,\"ok\"\n"));
   ASSERT_EQ(table.rows.size(), 3u);
   EXPECT_THAT(table.rows[0],
               ElementsAre("0", "CVODE failed at t = 0.1, flag \"CV_TOO_MUCH_WORK\"", "failed"));
@@ -59,14 +58,14 @@ TEST(CsvTable, QuotedFieldsKeepCommasAndDoubledQuotes) {
 }
 
 TEST(CsvTable, SkipsCommentsAndBlankLinesAndCarriageReturns) {
-  const CsvTable table = ReadCsv(WriteCsv(
-      "# source: a paper\n"
-      "\n"
-      "length,tension\r\n"
-      "# a comment between rows\n"
-      "0.1,1\r\n"
-      "\r\n"
-      "0.2,2\n"));
+  const CsvTable table =
+      ReadCsv(WriteCsv("# source: a paper\n"
+                       "\n"
+                       "length,tension\r\n"
+                       "# a comment between rows\n"
+                       "0.1,1\r\n"
+                       "\r\n"
+                       "0.2,2\n"));
   EXPECT_THAT(table.header, ElementsAre("length", "tension"));
   ASSERT_EQ(table.rows.size(), 2u);
   EXPECT_THAT(table.rows[0], ElementsAre("0.1", "1"));
@@ -128,9 +127,12 @@ TEST(CsvTable, NumberRejectsTextNamingFileLineAndColumn) {
 TEST(CsvTable, RequireNamesEveryMissingColumn) {
   const CsvTable table = ReadCsv(WriteCsv("t,length\n0,0.1\n"));
   EXPECT_NO_THROW(table.Require({"t", "length"}, "a trajectory"));
-  EXPECT_THAT([&] { table.Require({"t", "phase", "load"}, "a trajectory"); },
-              ::testing::ThrowsMessage<InputError>(
-                  ::testing::EndsWith(": missing columns: phase, load (a trajectory)")));
+  EXPECT_THAT(
+      [&] {
+        table.Require({"t", "phase", "load"}, "a trajectory");
+      },
+      ::testing::ThrowsMessage<InputError>(
+          ::testing::EndsWith(": missing columns: phase, load (a trajectory)")));
 }
 
 }  // namespace

@@ -106,9 +106,12 @@ TEST(CurvesCsv, AValueThatOverflowsIsAnErrorNotARow) {
   // T_p = k_p (exp(alpha (x - slack)) - 1) with alpha = 30 /m: exp overflows past
   // x = slack + 709.8 / 30 = 23.8 m, so the grid point 30 m has an infinite tension
   const TensionModel model(OneGaussianModel());
-  EXPECT_THAT([&] { FormatLengthCurvesCsv(model, {0.1, 30.0, 2}); },
-              ::testing::ThrowsMessage<ParameterError>(
-                  HasSubstr("length = 30: tension_passive = inf there")));
+  EXPECT_THAT(
+      [&] {
+        FormatLengthCurvesCsv(model, {0.1, 30.0, 2});
+      },
+      ::testing::ThrowsMessage<ParameterError>(
+          HasSubstr("length = 30: tension_passive = inf there")));
   EXPECT_NO_THROW(FormatLengthCurvesCsv(model, {0.1, 23.0, 2}));
 }
 

@@ -56,7 +56,8 @@ TEST(EccentricYaml, ReadsEachKeyAndLeavesTheOthersUnset) {
   EXPECT_EQ(all.v_max, 0.5);
   EXPECT_EQ(all.n, 2);
   EXPECT_EQ(all.limit, 1.8);
-  const EccentricParams limit_only = ModelWith(", eccentric: {limit: 1.5}").params.velocity.eccentric;
+  const EccentricParams limit_only =
+      ModelWith(", eccentric: {limit: 1.5}").params.velocity.eccentric;
   EXPECT_FALSE(limit_only.v_max.has_value());
   EXPECT_FALSE(limit_only.n.has_value());
   EXPECT_EQ(limit_only.limit, 1.5);
@@ -71,7 +72,8 @@ TEST(EccentricYaml, UnknownKeyListsTheAllowedOnes) {
   EXPECT_EQ(ModelError(typo), "model.velocity.eccentric.lim (" + At(typo, "lim") +
                                   "): unknown key; allowed here: v_max, n, limit");
   const std::string scalar = ", eccentric: 3";
-  EXPECT_THAT(ModelError(scalar), HasSubstr("model.velocity.eccentric = 3 (" + At(scalar, "3") + ")"));
+  EXPECT_THAT(ModelError(scalar),
+              HasSubstr("model.velocity.eccentric = 3 (" + At(scalar, "3") + ")"));
   const std::string fraction = ", eccentric: {n: 2.5}";
   EXPECT_EQ(ModelError(fraction), "model.velocity.eccentric.n = 2.5 (" + At(fraction, "2.5") +
                                       "): must be an integer >= 1 (at most 1000)");
@@ -104,28 +106,26 @@ TEST(EccentricYaml, WrittenModelReadsBackToTheSameParameters) {
     EXPECT_EQ(read.eccentric.v_max, e.v_max) << ReadFile(path);
     EXPECT_EQ(read.eccentric.n, e.n) << ReadFile(path);
     EXPECT_EQ(read.eccentric.limit, e.limit) << ReadFile(path);
-    EXPECT_EQ(ReadFile(path).find("eccentric") == std::string::npos,
-              !e.v_max && !e.n && !e.limit);
+    EXPECT_EQ(ReadFile(path).find("eccentric") == std::string::npos, !e.v_max && !e.n && !e.limit);
   }
 }
 
 TEST(EccentricYaml, SetCreatesTheBlockAFileLeavesOut) {
   const std::string scenario = testing::ScenarioPath("eccentric.yaml");
-  const Scenario read =
-      LoadScenario(scenario, {"model.velocity.eccentric.limit=1.5", "model.velocity.eccentric.n=2"});
+  const Scenario read = LoadScenario(
+      scenario, {"model.velocity.eccentric.limit=1.5", "model.velocity.eccentric.n=2"});
   const EccentricParams& eccentric = read.models.at("model").spec.params.velocity.eccentric;
   EXPECT_EQ(eccentric.limit, 1.5);
   EXPECT_EQ(eccentric.n, 2);
   EXPECT_FALSE(eccentric.v_max.has_value());
   // validated as the file's own value would be, placed at the override
-  EXPECT_THAT(testing::InputErrorOf(scenario, [&] {
-                LoadScenario(scenario, {"model.velocity.eccentric.limit=0.5"});
-              }),
-              HasSubstr("model.velocity.eccentric.limit = 0.5 (override): must be > 1"));
+  EXPECT_THAT(
+      testing::InputErrorOf(
+          scenario, [&] { LoadScenario(scenario, {"model.velocity.eccentric.limit=0.5"}); }),
+      HasSubstr("model.velocity.eccentric.limit = 0.5 (override): must be > 1"));
   // only an optional block is created: a misspelt one still does not exist
-  EXPECT_THAT(testing::InputErrorOf(scenario, [&] {
-                LoadScenario(scenario, {"model.velocity.eccentrc.limit=1.5"});
-              }),
+  EXPECT_THAT(testing::InputErrorOf(
+                  scenario, [&] { LoadScenario(scenario, {"model.velocity.eccentrc.limit=1.5"}); }),
               HasSubstr("model.velocity.eccentrc does not exist"));
 }
 
@@ -153,7 +153,9 @@ TEST(EccentricYaml, SweepAxisReachesTheEccentricKeys) {
 
 TEST(EccentricYaml, IdentifiedModelReadsBackAsIdentified) {
   const std::string out = ::testing::TempDir() + "identified_eccentric.yaml";
-  ASSERT_EQ(Musclesim("identify " + std::string(MUSCLESIM_SOURCE_DIR) + "/data/eccentric.yaml -o " + out), "0");
+  ASSERT_EQ(
+      Musclesim("identify " + std::string(MUSCLESIM_SOURCE_DIR) + "/data/eccentric.yaml -o " + out),
+      "0");
   const VelocityParams read = LoadModelSpec(out).params.velocity;
   const VelocityIdentification fit = IdentifyVelocity(
       ReadCurveCsv(std::string(MUSCLESIM_SOURCE_DIR) + "/data/eccentric_velocity.csv",
@@ -181,12 +183,13 @@ TEST(EccentricYaml, AnEstimateTheModelCannotTakeIsLeftOutWithTheReason) {
   }
   WriteTempFile("far.csv", csv);
   const std::string data = WriteTempFile(
-      "far.yaml", "velocity: {csv: " + std::string(::testing::UnitTest::GetInstance()
-                                                       ->current_test_info()->name()) +
+      "far.yaml", "velocity: {csv: " +
+                      std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
                       "_far.csv}\n");
   const std::string out = ::testing::TempDir() + "far_model.yaml";
   ASSERT_EQ(Musclesim("identify " + data + " -o " + out), "0");
-  EXPECT_THAT(ReadFile(out), HasSubstr("# eccentric branch left out: it gives velocity.eccentric.v_max = "));
+  EXPECT_THAT(ReadFile(out),
+              HasSubstr("# eccentric branch left out: it gives velocity.eccentric.v_max = "));
   const VelocityParams read = LoadModelSpec(out).params.velocity;  // and the model loads
   EXPECT_FALSE(read.eccentric.v_max || read.eccentric.n || read.eccentric.limit);
 }

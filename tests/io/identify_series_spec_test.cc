@@ -95,7 +95,8 @@ TEST(IdentifySeriesSpec, RejectsEachBrokenRuleNamingWhereAndWhy) {
   EXPECT_EQ(ErrorWith("start: 80", "start: 1001"),
             "parameters[0].start = 1001 (FILE:7:32): must lie within bounds [1, 1000]");
   EXPECT_THAT(ErrorWith("  - {path: model.f_iso, start: 80, bounds: [1, 1000]}\n"
-                        "  - {path: model.velocity.v_max}\n", ""),
+                        "  - {path: model.velocity.v_max}\n",
+                        ""),
               HasSubstr("parameters = ~ (FILE:7:1): must be a list of one or more parameters"));
   EXPECT_THAT(ErrorWith("start: 80", "stat: 80"),
               HasSubstr("parameters[0].stat (FILE:7:25): unknown key; allowed here: path, start, "
@@ -106,12 +107,11 @@ TEST(IdentifySeriesSpec, RejectsEachBrokenRuleNamingWhereAndWhy) {
 std::string SeriesError(const std::string& csv, const std::string& noise, bool design) {
   const std::string csv_path = WriteTempFile("lengths.csv", csv);
   const std::string name = std::filesystem::path(csv_path).filename().string();
-  const std::string data = WriteTempFile(
-      "data.yaml", "scenario: release.yaml\nseries:\n  - {csv: " + name + noise +
-                       "}\nparameters:\n  - {path: model.f_iso}\n");
-  std::string message = InputErrorOf(data, [&] {
-    ReadMeasuredSeries(LoadIdentifySeriesSpec(data), design);
-  });
+  const std::string data =
+      WriteTempFile("data.yaml", "scenario: release.yaml\nseries:\n  - {csv: " + name + noise +
+                                     "}\nparameters:\n  - {path: model.f_iso}\n");
+  std::string message =
+      InputErrorOf(data, [&] { ReadMeasuredSeries(LoadIdentifySeriesSpec(data), design); });
   for (auto at = message.find(csv_path); at != std::string::npos; at = message.find(csv_path)) {
     message.replace(at, csv_path.size(), "CSV");
   }
@@ -119,8 +119,8 @@ std::string SeriesError(const std::string& csv, const std::string& noise, bool d
 }
 
 TEST(ReadMeasuredSeries, ReadsTimesColumnsAndNoise) {
-  const std::string csv_path = WriteTempFile(
-      "lengths.csv", "# synthetic\nlength,t,tension_total\n0.1,0,5\n0.099,0.01,6\n");
+  const std::string csv_path =
+      WriteTempFile("lengths.csv", "# synthetic\nlength,t,tension_total\n0.1,0,5\n0.099,0.01,6\n");
   const std::string data = WriteTempFile(
       "data.yaml", "scenario: r.yaml\nseries:\n  - {csv: " +
                        std::filesystem::path(csv_path).filename().string() +

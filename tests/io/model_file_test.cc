@@ -54,9 +54,9 @@ TEST(ModelFile, ReadsAValidModel) {
 }
 
 TEST(ModelFile, RunsTheFitAtLoadTime) {
-  const ModelSpec m = LoadModelSpec(WriteTemp(Edited(
-      "gaussians:\n      - {amplitude: 0.05, width: 90.0, center: 0.097}",
-      "fit: {count: 2, target: indicator}")));
+  const ModelSpec m = LoadModelSpec(
+      WriteTemp(Edited("gaussians:\n      - {amplitude: 0.05, width: 90.0, center: 0.097}",
+                       "fit: {count: 2, target: indicator}")));
   ASSERT_TRUE(m.fit_result.has_value());
   EXPECT_EQ(m.params.active_length.gaussians.size(), 2u);
   EXPECT_GT(m.fit_result->relative_residual, 0.0);
@@ -93,7 +93,8 @@ TEST(ModelFile, RejectsEveryBrokenRule) {
       {Edited("model:", "modle:"), "modle (FILE:1:1): unknown key"},
       {Edited("  f_iso: 100.0\n", ""), "model.f_iso (FILE:2:3): missing required key"},
       {Edited("gaussians:\n      - {amplitude: 0.05, width: 90.0, center: 0.097}",
-              "gaussians:\n      - {amplitude: 0.05, width: 90.0, center: 0.097}\n    fit: {count: 2}"),
+              "gaussians:\n      - {amplitude: 0.05, width: 90.0, center: 0.097}\n    fit: {count: "
+              "2}"),
        "model.active_length = gaussians and fit (FILE:5:5): give exactly one of gaussians"},
       {Edited("gaussians:\n      - {amplitude: 0.05, width: 90.0, center: 0.097}", "sigma: 1"),
        "model.active_length = neither (FILE:5:5): give exactly one"},

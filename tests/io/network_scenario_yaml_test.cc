@@ -123,7 +123,8 @@ std::map<std::string, std::string> FirstRow(const std::string& csv) {
   std::getline(in, row);
   std::istringstream names(header), values(row);
   std::map<std::string, std::string> out;
-  for (std::string name, value; std::getline(names, name, ',') && std::getline(values, value, ',');) {
+  for (std::string name, value;
+       std::getline(names, name, ',') && std::getline(values, value, ',');) {
     out[name] = value;
   }
   return out;
@@ -152,21 +153,34 @@ TEST(NetworkScenario, FirstRowAgreesWithAHandComputation) {
   const double extensor_active = 0.3 * 80.0 * f_length * (1.0 - v);
   const std::map<std::string, double> expected = {
       {"t", t},
-      {"wall_a.position", 0.0}, {"wall_a.velocity", 0.0},
-      {"load.position", x}, {"load.velocity", v},
-      {"wall_b.position", 0.2}, {"wall_b.velocity", 0.0},
-      {"crank.position", crank}, {"crank.velocity", crank_rate},
-      {"flexor.length", x}, {"flexor.shortening_velocity", flexor_v},
-      {"flexor.activation", 0.4}, {"flexor.tension_passive", flexor_passive},
+      {"wall_a.position", 0.0},
+      {"wall_a.velocity", 0.0},
+      {"load.position", x},
+      {"load.velocity", v},
+      {"wall_b.position", 0.2},
+      {"wall_b.velocity", 0.0},
+      {"crank.position", crank},
+      {"crank.velocity", crank_rate},
+      {"flexor.length", x},
+      {"flexor.shortening_velocity", flexor_v},
+      {"flexor.activation", 0.4},
+      {"flexor.tension_passive", flexor_passive},
       {"flexor.tension_active", flexor_active},
       {"flexor.tension", flexor_passive + flexor_active},
-      {"extensor.length", 0.2 - x}, {"extensor.shortening_velocity", v},
-      {"extensor.activation", 0.3}, {"extensor.tension_passive", 0.0},
-      {"extensor.tension_active", extensor_active}, {"extensor.tension", extensor_active},
-      {"tendon.length", crank - x}, {"tendon.tension", 2.0e4 * (crank - x - 0.18)},
-      {"cable.length", x}, {"cable.tension", 3.0 * (std::exp(20.0 * (x - 0.05)) - 1.0)},
-      {"spring.length", x}, {"spring.tension", 50.0 * (x - 0.08)},
-      {"damper.length", x}, {"damper.tension", 2.0 * v},
+      {"extensor.length", 0.2 - x},
+      {"extensor.shortening_velocity", v},
+      {"extensor.activation", 0.3},
+      {"extensor.tension_passive", 0.0},
+      {"extensor.tension_active", extensor_active},
+      {"extensor.tension", extensor_active},
+      {"tendon.length", crank - x},
+      {"tendon.tension", 2.0e4 * (crank - x - 0.18)},
+      {"cable.length", x},
+      {"cable.tension", 3.0 * (std::exp(20.0 * (x - 0.05)) - 1.0)},
+      {"spring.length", x},
+      {"spring.tension", 50.0 * (x - 0.08)},
+      {"damper.length", x},
+      {"damper.tension", 2.0 * v},
       {"load.load", 5.0 + 0.2 * 9.81 + 100.0 * (0.12 - x)},
   };
   for (const auto& [column, value] : expected) {
@@ -182,8 +196,9 @@ TEST(NetworkScenario, FirstRowAgreesWithAHandComputation) {
 TEST(NetworkScenario, PhaseToleranceOfTheOutputOverridesEveryModels) {
   const std::string path = EveryPart();
   const std::string csv = ::testing::TempDir() + "network_phase.csv";
-  ASSERT_EQ(RunCli("run " + path + " -o " + csv + " --quiet --set output.phase_tolerance=0.1")
-                .exit_code, 0);
+  ASSERT_EQ(
+      RunCli("run " + path + " -o " + csv + " --quiet --set output.phase_tolerance=0.1").exit_code,
+      0);
   const std::map<std::string, std::string> row = FirstRow(ReadFile(csv));
   EXPECT_EQ(row.at("flexor.phase"), "eccentric");     // v = -0.2 < -0.1
   EXPECT_EQ(row.at("extensor.phase"), "concentric");  // v = 0.2 > 0.1
@@ -203,9 +218,8 @@ TEST(NetworkScenario, SetReachesNestedKeysOfListsAndModels) {
   EXPECT_EQ(s.loads[1].load.gravity, -9.81);
   EXPECT_EQ(*s.limits[1].max_length, 0.4);
   // an override is validated as the file's value, and named as one
-  EXPECT_THAT(testing::InputErrorOf(path, [&] {
-                LoadScenario(path, {"elements[1].activation.value=1.5"});
-              }),
+  EXPECT_THAT(testing::InputErrorOf(
+                  path, [&] { LoadScenario(path, {"elements[1].activation.value=1.5"}); }),
               HasSubstr("elements[1].activation.value = 1.5 (override): activation must stay "
                         "within [0, 1]"));
 }
@@ -231,14 +245,14 @@ TEST(NetworkScenario, IsNetworkScenarioLooksAtTopLevelKeysOnly) {
               HasSubstr("FILE: the file is empty"));
   EXPECT_THROW(IsNetworkScenario(::testing::TempDir() + "no_such_network.yaml"), InputError);
   // and the scenario read is of that form
-  EXPECT_EQ(LoadScenario(testing::ScenarioPath("concentric.yaml")).form,
-            ScenarioForm::kActuator);
+  EXPECT_EQ(LoadScenario(testing::ScenarioPath("concentric.yaml")).form, ScenarioForm::kActuator);
   EXPECT_EQ(LoadScenario(EveryPart()).form, ScenarioForm::kNetwork);
 }
 
 // A free node moving towards a fixed one at 1 m/s with nothing to stop it: the spring
 // between them (k = 0) reaches zero length at t = 0.1 s.
-constexpr const char* kCollapse = R"(nodes: [{name: wall, fixed: 0.0}, {name: a, mass: 1, position: 0.1, velocity: -1}]
+constexpr const char* kCollapse =
+    R"(nodes: [{name: wall, fixed: 0.0}, {name: a, mass: 1, position: 0.1, velocity: -1}]
 elements: [{name: gap, type: spring, from: wall, to: a, stiffness: 0, rest_length: 0.1}]
 time: {start: 0, end: 1}
 output: {interval: 0.01}

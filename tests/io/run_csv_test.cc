@@ -126,9 +126,9 @@ TEST(TrajectoryCsv, NumbersReadBackToTheSameDoubles) {
     ASSERT_EQ(fields.size(), 9u) << lines[i + 1];
     const NetworkSample& s = points[i].sample;
     const ElementSample& a = s.elements[kActuatorElement];
-    const double expected[8] = {points[i].t,    a.length,        -a.lengthening_rate,
-                                a.activation,   a.parts.passive, a.parts.active,
-                                a.parts.total,  s.load[kActuatorTipNode]};
+    const double expected[8] = {
+        points[i].t,     a.length,       -a.lengthening_rate, a.activation,
+        a.parts.passive, a.parts.active, a.parts.total,       s.load[kActuatorTipNode]};
     for (int k = 0; k < 8; ++k) {
       EXPECT_EQ(std::strtod(fields[k].c_str(), nullptr), expected[k]) << fields[k];
       // at most 17 significant digits (fewer when they end in zeros, as 0.75 does): the

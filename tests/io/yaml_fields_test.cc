@@ -29,7 +29,8 @@ std::string PositionOf(const std::string& needle) {
   const std::string text = kText;
   const std::size_t at = text.find(needle);
   const std::size_t line_start = text.rfind('\n', at);
-  const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + at, '\n'));
+  const std::size_t line =
+      1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + at, '\n'));
   const std::size_t column = line_start == std::string::npos ? at + 1 : at - line_start;
   return "f.yaml:" + std::to_string(line) + ":" + std::to_string(column);
 }
@@ -73,7 +74,9 @@ TEST_F(YamlFields, ABadValueNamesPathValuePositionAndRule) {
 }
 
 TEST_F(YamlFields, UnknownAndMissingKeysAreNamed) {
-  EXPECT_THAT(ErrorOf([&] { yaml::RequireMap(source, block, "block", {"number", "word"}); }),
+  EXPECT_THAT(ErrorOf([&] {
+                yaml::RequireMap(source, block, "block", {"number", "word"});
+              }),
               HasSubstr("block.count (" + PositionOf("count") + "): unknown key"));
   EXPECT_THAT(ErrorOf([&] { yaml::Required(source, block, "block", "missing"); }),
               HasSubstr("block.missing"));
@@ -84,7 +87,8 @@ TEST_F(YamlFields, UnknownAndMissingKeysAreNamed) {
 TEST_F(YamlFields, ANumberOutsideItsRangeSaysTheRangeAndWhy) {
   const InputRange range{0.0, 1.0, "m", "a test range", false};
   EXPECT_THAT(ErrorOf([&] { yaml::ReadNumberIn(source, block["number"], "block.number", range); }),
-              HasSubstr("block.number = 2.5 (" + PositionOf("2.5") + "): must be from 0 to 1 [m]: a test range"));
+              HasSubstr("block.number = 2.5 (" + PositionOf("2.5") +
+                        "): must be from 0 to 1 [m]: a test range"));
   const InputRange wide{0.0, 10.0, "m", "a test range", false};
   EXPECT_EQ(yaml::ReadNumberIn(source, block["number"], "block.number", wide), 2.5);
 }

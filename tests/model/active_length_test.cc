@@ -81,8 +81,8 @@ TEST(ActiveLength, DerivativesMatchFiniteDifferences) {
     const double h = 1e-5 * sum.NarrowestSpread();
     for (double x : {0.09, 0.097, 0.1, 0.104, 0.11}) {
       const double slope = (sum.Value(x + h) - sum.Value(x - h)) / (2 * h);
-      const double curvature = (sum.ValueAndSlope(x + h).slope -
-                                sum.ValueAndSlope(x - h).slope) / (2 * h);
+      const double curvature =
+          (sum.ValueAndSlope(x + h).slope - sum.ValueAndSlope(x - h).slope) / (2 * h);
       // O(h^2) truncation relative to the curve's own scale f / s^2
       const double scale = 1.0 + std::abs(sum.Value(x)) / sum.NarrowestSpread();
       EXPECT_NEAR(sum.ValueAndSlope(x).slope, slope, 1e-6 * scale);
@@ -104,7 +104,10 @@ double BruteMaximum(const ActiveLengthParams& p) {
   const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
   for (int it = 0; it < 200; ++it) {
     const double c = b - ratio * (b - a), d = a + ratio * (b - a);
-    if (SumOfGaussians(p, c) > SumOfGaussians(p, d)) b = d; else a = c;
+    if (SumOfGaussians(p, c) > SumOfGaussians(p, d))
+      b = d;
+    else
+      a = c;
   }
   return std::max(SumOfGaussians(p, 0.5 * (a + b)), SumOfGaussians(p, lo + best * step));
 }
@@ -141,8 +144,8 @@ TEST(ActiveLength, MaximumAtAnEndOfTheRange) {
 TEST(ActiveLength, NormalisedSlopeIsScaledSlope) {
   const ActiveLengthCurve curve(TwoBumps());
   for (double x : {0.09, 0.1, 0.107}) {
-    const double numeric = testing::CentralDifference(
-        [&](double y) { return curve.Evaluate(y).value; }, x, 1e-8);
+    const double numeric =
+        testing::CentralDifference([&](double y) { return curve.Evaluate(y).value; }, x, 1e-8);
     EXPECT_NEAR(curve.Evaluate(x).slope, numeric, 1e-5 * std::max(1.0, std::abs(numeric)));
   }
 }

@@ -16,8 +16,8 @@ namespace {
 
 using ::testing::HasSubstr;
 
-VelocityParams Asymmetric(double v_max_e, int n_e, std::optional<double> limit,
-                          double v_max = 1.0, int n = 3, double eps = 1e-3) {
+VelocityParams Asymmetric(double v_max_e, int n_e, std::optional<double> limit, double v_max = 1.0,
+                          int n = 3, double eps = 1e-3) {
   VelocityParams p{v_max, n, eps};
   p.eccentric = {v_max_e, n_e, limit};
   return p;
@@ -44,11 +44,13 @@ double IndependentG(const VelocityParams& p, double v) {
 }
 
 const std::vector<VelocityParams>& Cases() {
-  static const std::vector<VelocityParams> cases = {
-      Asymmetric(0.5, 2, 1.8),          Asymmetric(0.5, 2, std::nullopt),
-      Asymmetric(2.0, 1, 1.3),          Asymmetric(1.0, 3, 1.5),  // a limit only
-      Asymmetric(0.3, 5, 1e6),          Asymmetric(1.5, 1, std::nullopt, 0.7, 1, 1e-2),
-      Asymmetric(0.5, 4, 1.05, 1.0, 2, 1e-4)};
+  static const std::vector<VelocityParams> cases = {Asymmetric(0.5, 2, 1.8),
+                                                    Asymmetric(0.5, 2, std::nullopt),
+                                                    Asymmetric(2.0, 1, 1.3),
+                                                    Asymmetric(1.0, 3, 1.5),  // a limit only
+                                                    Asymmetric(0.3, 5, 1e6),
+                                                    Asymmetric(1.5, 1, std::nullopt, 0.7, 1, 1e-2),
+                                                    Asymmetric(0.5, 4, 1.05, 1.0, 2, 1e-4)};
   return cases;
 }
 
@@ -181,18 +183,18 @@ TEST(EccentricVelocity, KinkFlaggedExactlyWhenTheSlopesDiffer) {
   };
   const std::vector<Row> rows = {
       {VelocityParams{1.0, 3, eps}, false},
-      {Asymmetric(1.0, 3, 1.5), false},                      // a limit leaves the slope
-      {Asymmetric(0.5, 3, std::nullopt), true},              // v_max_e differs
-      {Asymmetric(1.0, 2, std::nullopt), true},              // n_e differs
-      {Asymmetric(matching, 2, 1.8), false},                 // both differ, slopes equal
-      {Asymmetric(matching * (1 + 1e-9), 2, 1.8), true},     // and a hair off
-      {Asymmetric(1.0, 2, std::nullopt, 1.0, 3, 1.0), false}, // eps = v_max = v_max_e = 1
+      {Asymmetric(1.0, 3, 1.5), false},                        // a limit leaves the slope
+      {Asymmetric(0.5, 3, std::nullopt), true},                // v_max_e differs
+      {Asymmetric(1.0, 2, std::nullopt), true},                // n_e differs
+      {Asymmetric(matching, 2, 1.8), false},                   // both differ, slopes equal
+      {Asymmetric(matching * (1 + 1e-9), 2, 1.8), true},       // and a hair off
+      {Asymmetric(1.0, 2, std::nullopt, 1.0, 3, 1.0), false},  // eps = v_max = v_max_e = 1
   };
   for (const Row& row : rows) {
     const VelocityParams& p = row.params;
     const double right = SlopeAtRest(p.epsilon, p.v_max, p.n);
-    const double left = SlopeAtRest(p.epsilon, p.eccentric.v_max.value_or(p.v_max),
-                                    p.eccentric.n.value_or(p.n));
+    const double left =
+        SlopeAtRest(p.epsilon, p.eccentric.v_max.value_or(p.v_max), p.eccentric.n.value_or(p.n));
     // the condition of section 9, evaluated here (1e-12: rounding of the pows above)
     const bool differ = std::abs(left - right) > 1e-12 * std::abs(right);
     EXPECT_EQ(differ, row.kink) << "the table row is wrong";
@@ -225,14 +227,21 @@ TEST(EccentricVelocity, ExtremeAllowedValuesGiveFiniteValuesAndSlopes) {
 
 TEST(EccentricVelocity, ValidateRejectsEachRule) {
   auto broken = [](VelocityParams p) { return testing::Rejection([&] { Validate(p); }); };
-  EXPECT_THAT(broken(Asymmetric(0.0, 2, 1.5)), HasSubstr("eccentric.v_max = 0: must be finite and > 0"));
-  EXPECT_THAT(broken(Asymmetric(INFINITY, 2, 1.5)), HasSubstr("eccentric.v_max = inf: must be finite"));
-  EXPECT_THAT(broken(Asymmetric(1e-4, 2, 1.5)),
-              HasSubstr("eccentric.v_max = 1e-04: must be between epsilon = 0.001 and 1e12 epsilon"));
-  EXPECT_THAT(broken(Asymmetric(2e9, 2, 1.5)), HasSubstr("eccentric.v_max = 2e+09: must be between"));
-  EXPECT_THAT(broken(Asymmetric(0.5, 0, 1.5)), HasSubstr("eccentric.n = 0: must be an integer >= 1"));
-  EXPECT_THAT(broken(Asymmetric(0.5, 1001, 1.5)), HasSubstr("eccentric.n = 1001: must be an integer"));
-  EXPECT_THAT(broken(Asymmetric(0.5, 2, 1.0)), HasSubstr("eccentric.limit = 1: must be > 1 and <= 1e6"));
+  EXPECT_THAT(broken(Asymmetric(0.0, 2, 1.5)),
+              HasSubstr("eccentric.v_max = 0: must be finite and > 0"));
+  EXPECT_THAT(broken(Asymmetric(INFINITY, 2, 1.5)),
+              HasSubstr("eccentric.v_max = inf: must be finite"));
+  EXPECT_THAT(
+      broken(Asymmetric(1e-4, 2, 1.5)),
+      HasSubstr("eccentric.v_max = 1e-04: must be between epsilon = 0.001 and 1e12 epsilon"));
+  EXPECT_THAT(broken(Asymmetric(2e9, 2, 1.5)),
+              HasSubstr("eccentric.v_max = 2e+09: must be between"));
+  EXPECT_THAT(broken(Asymmetric(0.5, 0, 1.5)),
+              HasSubstr("eccentric.n = 0: must be an integer >= 1"));
+  EXPECT_THAT(broken(Asymmetric(0.5, 1001, 1.5)),
+              HasSubstr("eccentric.n = 1001: must be an integer"));
+  EXPECT_THAT(broken(Asymmetric(0.5, 2, 1.0)),
+              HasSubstr("eccentric.limit = 1: must be > 1 and <= 1e6"));
   EXPECT_THAT(broken(Asymmetric(0.5, 2, 0.5)), HasSubstr("eccentric.limit = 0.5: must be > 1"));
   EXPECT_THAT(broken(Asymmetric(0.5, 2, 2e6)), HasSubstr("eccentric.limit = 2e+06: must be > 1"));
   EXPECT_THAT(broken(Asymmetric(0.5, 2, NAN)), HasSubstr("eccentric.limit = nan: must be > 1"));

@@ -140,9 +140,9 @@ TEST(FitTarget, NormSquaredIsTheTargetIntegral) {
   std::mt19937 rng(4);
   for (int trial = 0; trial < 10; ++trial) {
     const std::vector<TargetPoint> polygon = RandomPolygon(rng);
-    const double quadrature = testing::Integrate(
-        [&](double x) { return Polygon(polygon, x) * Polygon(polygon, x); },
-        polygon.front().x, polygon.back().x, {}, 1e-18);
+    const double quadrature =
+        testing::Integrate([&](double x) { return Polygon(polygon, x) * Polygon(polygon, x); },
+                           polygon.front().x, polygon.back().x, {}, 1e-18);
     EXPECT_NEAR(MakePiecewiseLinearTarget(polygon, 1.0)->NormSquared(), quadrature,
                 1e-12 * quadrature);
   }
@@ -246,9 +246,9 @@ TEST(FitTarget, PresetCostEqualsQuadrature) {
 TEST(FitTarget, PresetNormSquaredScalesWithTheOptimalLength) {
   for (const ForceLengthPreset preset : AllForceLengthPresets()) {
     const PresetPieces pieces = PiecesOf(preset);
-    const double normalised = testing::Integrate(
-        [&](double s) { return std::pow(EvaluatePreset(preset, s), 2); },
-        pieces.breaks.front(), pieces.breaks.back(), pieces.breaks, 1e-14, 64);
+    const double normalised =
+        testing::Integrate([&](double s) { return std::pow(EvaluatePreset(preset, s), 2); },
+                           pieces.breaks.front(), pieces.breaks.back(), pieces.breaks, 1e-14, 64);
     for (const double l_opt : {1.0, 0.062, 7.0}) {
       // integral of C(x / l_opt)^2 dx = l_opt * integral of C(s)^2 ds; 1e-12: quadrature
       EXPECT_NEAR(MakePresetTarget(preset, l_opt, 1.0)->NormSquared(), l_opt * normalised,

@@ -28,9 +28,8 @@ using ::testing::HasSubstr;
 
 // De Groote et al. 2016, supplement eq. S2 with the paper's constants (denominator squared)
 double DeGrootePublished(double l) {
-  const double terms[3][4] = {{0.815, 1.055, 0.162, 0.063},
-                              {0.433, 0.717, -0.030, 0.200},
-                              {0.100, 1.000, 0.354, 0.000}};
+  const double terms[3][4] = {
+      {0.815, 1.055, 0.162, 0.063}, {0.433, 0.717, -0.030, 0.200}, {0.100, 1.000, 0.354, 0.000}};
   double f = 0.0;
   for (const auto& b : terms) {
     const double width = b[2] + b[3] * l;
@@ -152,22 +151,21 @@ TEST(ForceLengthPresets, DeGrooteRescaledSoItsPublishedPeakIsOne) {
   EXPECT_NEAR(peak.value, 1.00047, 5e-6);
   // the preset at the paper's l = 1, which is s = 1 / l_peak, is f(1) / f_max: the golden
   // section locates l_peak to 1e-8, which moves f by at most its slope (< 4) times that
-  EXPECT_NEAR(EvaluatePreset(ForceLengthPreset::kDeGroote2016, 1.0 / peak.at),
-              at_one / peak.value, 1e-7);
+  EXPECT_NEAR(EvaluatePreset(ForceLengthPreset::kDeGroote2016, 1.0 / peak.at), at_one / peak.value,
+              1e-7);
 }
 
 TEST(ForceLengthPresets, PublishedValueAtOneMorePoint) {
   // Thelen: at s = 1 + sqrt(gamma) the exponent is -1
-  EXPECT_NEAR(EvaluatePreset(ForceLengthPreset::kThelen2003, 1.0 + std::sqrt(0.45)),
-              std::exp(-1.0), 1e-15);
+  EXPECT_NEAR(EvaluatePreset(ForceLengthPreset::kThelen2003, 1.0 + std::sqrt(0.45)), std::exp(-1.0),
+              1e-15);
   // MuJoCo: at the joins a = 0.75 and b = 1.3, x = 1 and the curve is 0.5
   EXPECT_NEAR(EvaluatePreset(ForceLengthPreset::kMuJoCo, 0.75), 0.5, 1e-15);
   EXPECT_NEAR(EvaluatePreset(ForceLengthPreset::kMuJoCo, 1.3), 0.5, 1e-15);
   // Gordon, Huxley and Julian: 0.84 at the kink, 1.67 um; at 3.0 um, 1 - 0.75 / 1.4 on the
   // descending limb from (2.25, 1) to (3.65, 0)
   EXPECT_NEAR(EvaluatePreset(ForceLengthPreset::kGordon1966, 1.67 / 2.125), 0.84, 1e-15);
-  EXPECT_NEAR(EvaluatePreset(ForceLengthPreset::kGordon1966, 3.0 / 2.125), 1.0 - 0.75 / 1.4,
-              1e-15);
+  EXPECT_NEAR(EvaluatePreset(ForceLengthPreset::kGordon1966, 3.0 / 2.125), 1.0 - 0.75 / 1.4, 1e-15);
   // De Groote: see DeGrooteRescaledSoItsPublishedPeakIsOne
 }
 
@@ -221,8 +219,7 @@ TEST(ForceLengthPresets, TableScaledToTheOptimalLength) {
   for (const Reference& r : References()) {
     SCOPED_TRACE(std::string(ToString(r.preset)));
     std::string header;
-    const auto rows =
-        ParseCsv(FormatPresetCurveCsv(r.preset, l_opt, {0.0, 0.08, 81}), &header);
+    const auto rows = ParseCsv(FormatPresetCurveCsv(r.preset, l_opt, {0.0, 0.08, 81}), &header);
     EXPECT_EQ(header, "length,normalized_length,f_L");
     ASSERT_EQ(rows.size(), 81u);
     for (const auto& row : rows) {

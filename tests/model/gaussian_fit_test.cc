@@ -129,7 +129,7 @@ TEST(GaussianFit, IndependentRandomStartsFindNoLowerCost) {
     if (std::abs(value - fit.cost) < 1e-9 * fit.cost) ++agreeing;
   }
   EXPECT_GE(lowest, fit.cost * (1.0 - 1e-9));  // as above: nothing lower beyond convergence
-  EXPECT_GE(agreeing, 5);  // the optimum is found again from independent starts
+  EXPECT_GE(agreeing, 5);                      // the optimum is found again from independent starts
 }
 
 TEST(GaussianFit, MoreGaussiansNeverFitWorse) {
@@ -328,8 +328,7 @@ double QuadratureResidual(const std::vector<Gaussian>& gaussians) {
   };
   // beyond 0.2 m of L_opt the Gaussians (spreads of a few mm) are below 1e-300
   // to 1e-14 m on a cost of 6e-4 m: far below the README's last digit
-  return testing::Integrate(squared_error, kL1 - 0.2, kL2 + 0.2, {kL1, kL2}, 1e-14) /
-         (kL2 - kL1);
+  return testing::Integrate(squared_error, kL1 - 0.2, kL2 + 0.2, {kL1, kL2}, 1e-14) / (kL2 - kL1);
 }
 
 // README "The closed-form fit": on scenarios/fit_indicator.yaml the two-Gaussian fit is
@@ -446,8 +445,8 @@ TEST(GaussianFit, PresetRulesRejected) {
 // b = 2 sigma / (gamma l_opt^2), d = l_opt: one Gaussian reproduces it.
 TEST(GaussianFit, ThelenIsOneGaussianFoundExactly) {
   const double l_opt = 0.1, sigma = 2.0, gamma = 0.45;
-  const FitResult fit = FitGaussians(Preset(ForceLengthPreset::kThelen2003, l_opt, 1), 0.0, 0.0,
-                                     sigma);
+  const FitResult fit =
+      FitGaussians(Preset(ForceLengthPreset::kThelen2003, l_opt, 1), 0.0, 0.0, sigma);
   ASSERT_EQ(fit.gaussians.size(), 1u);
   // the optimiser stops within ~1e-8 of the optimum in the shapes; the cut at 6 standard
   // deviations moves it by less
@@ -504,9 +503,9 @@ double PresetQuadratureResidual(ForceLengthPreset preset, const std::vector<Gaus
   const auto curve = [&](double x) { return EvaluatePreset(preset, x); };
   // to 1e-13 absolute: the smallest residual printed (2e-5 of a norm of about 0.5) is known
   // to 1e-8 of itself
-  const double error = testing::Integrate(
-      [&](double x) { return std::pow(SumOf(g, 1.0, x) - curve(x), 2); },
-      breaks.front() - 12 * spread, breaks.back() + 12 * spread, breaks, 1e-13);
+  const double error =
+      testing::Integrate([&](double x) { return std::pow(SumOf(g, 1.0, x) - curve(x), 2); },
+                         breaks.front() - 12 * spread, breaks.back() + 12 * spread, breaks, 1e-13);
   const double norm = testing::Integrate([&](double x) { return curve(x) * curve(x); },
                                          breaks.front(), breaks.back(), breaks, 1e-13);
   return error / norm;
@@ -532,8 +531,7 @@ TEST(GaussianFit, ReadmeTableOfPresetFits) {
   std::ifstream in(std::string(MUSCLESIM_SOURCE_DIR) + "/README.md");
   std::string line;
   while (std::getline(in, line) &&
-         line != "| preset | Gaussians | relative residual | max abs error |") {
-  }
+         line != "| preset | Gaussians | relative residual | max abs error |") {}
   ASSERT_TRUE(in) << "the README has no table of preset fits";
   std::getline(in, line);  // |---|---|...
   int rows = 0;

@@ -60,8 +60,7 @@ TEST(Passive, ValidateRejectsEachRule) {
   EXPECT_THAT(broken({1.0, 0.0, 0.1}), HasSubstr("alpha = 0: must be finite and > 0"));
   EXPECT_THAT(broken({1.0, 30.0, std::numeric_limits<double>::quiet_NaN()}),
               HasSubstr("slack_length = nan: must be finite"));
-  EXPECT_THAT(broken({std::numeric_limits<double>::infinity(), 30.0, 0.1}),
-              HasSubstr("k_p = inf"));
+  EXPECT_THAT(broken({std::numeric_limits<double>::infinity(), 30.0, 0.1}), HasSubstr("k_p = inf"));
   EXPECT_EQ(broken(kParams), "accepted");
 }
 

@@ -38,8 +38,8 @@ ModelParams SymmetricQuartic() {
   ModelParams p;
   p.f_iso = 25.0;
   p.passive = {0.8, 60.0, 0.104};
-  p.active_length = {0.09, 0.11, 0.6,
-                     {{0.02, 3e4, 0.097}, {0.012, 5e4, 0.106}, {-0.003, 2e4, 0.1}}};
+  p.active_length = {
+      0.09, 0.11, 0.6, {{0.02, 3e4, 0.097}, {0.012, 5e4, 0.106}, {-0.003, 2e4, 0.1}}};
   p.velocity = {0.5, 4, 0.01};
   return p;
 }
@@ -50,8 +50,8 @@ ModelParams PeakAtUpperEnd() {
   ModelParams p;
   p.f_iso = 60.0;
   p.passive = {2.0, 35.0, 0.098};
-  p.active_length = {0.09, 0.11, 1.0,
-                     {{0.02, 2e4, 0.115}, {0.01, 3e4, 0.125}, {0.005, 4e4, 0.092}}};
+  p.active_length = {
+      0.09, 0.11, 1.0, {{0.02, 2e4, 0.115}, {0.01, 3e4, 0.125}, {0.005, 4e4, 0.092}}};
   p.velocity = {0.6, 3, 0.02};
   return p;
 }
@@ -61,8 +61,8 @@ ModelParams PeakAtLowerEnd() {
   ModelParams p;
   p.f_iso = 30.0;
   p.passive = {1.0, 50.0, 0.102};
-  p.active_length = {0.09, 0.11, 1.3,
-                     {{0.02, 2e4, 0.085}, {0.01, 3e4, 0.075}, {0.005, 4e4, 0.108}}};
+  p.active_length = {
+      0.09, 0.11, 1.3, {{0.02, 2e4, 0.085}, {0.01, 3e4, 0.075}, {0.005, 4e4, 0.108}}};
   p.velocity = {0.3, 2, 0.01};
   return p;
 }
@@ -177,9 +177,9 @@ std::vector<State> StatesFor(const ModelParams& p) {
   const double eps = p.velocity.epsilon, v_max = p.velocity.v_max;
   std::vector<State> states;
   for (double dx : {-0.015, -0.006, -0.0015, 0.0015, 0.004, 0.009, 0.016}) {
-    for (double v : {-3.0 * v_max, -v_max, -0.25 * v_max, -0.05 * v_max, -3.0 * eps, -eps,
-                     -0.3 * eps, 0.0, 0.3 * eps, eps, 3.0 * eps, 0.05 * v_max, 0.25 * v_max,
-                     0.9 * v_max, 1.4 * v_max}) {
+    for (double v :
+         {-3.0 * v_max, -v_max, -0.25 * v_max, -0.05 * v_max, -3.0 * eps, -eps, -0.3 * eps, 0.0,
+          0.3 * eps, eps, 3.0 * eps, 0.05 * v_max, 0.25 * v_max, 0.9 * v_max, 1.4 * v_max}) {
       for (double u : {0.35, 1.0}) states.push_back({slack + dx, v, u});
     }
   }
@@ -381,8 +381,8 @@ TEST(TensionParameter, VelocityDerivativesVanishAtZeroVelocity) {
   // phi_eps(0) = 0 on both branches, so g(0) = 1 whatever v_max, eps and L are
   const ModelParams params = AsymmetricWithEccentricMax();
   const TensionModel model(params);
-  for (Kind k : {Kind::kMaxVelocity, Kind::kEpsilon, Kind::kEccentricMaxVelocity,
-                 Kind::kEccentricLimit}) {
+  for (Kind k :
+       {Kind::kMaxVelocity, Kind::kEpsilon, Kind::kEccentricMaxVelocity, Kind::kEccentricLimit}) {
     EXPECT_EQ(TensionPartialsAt(model, {k, 0}, 0.1, 0.0, 1.0).total, 0.0);
     EXPECT_EQ(TensionPartialsAt(model, {k, 0}, 0.1, -0.0, 1.0).total, 0.0);
   }
@@ -397,8 +397,7 @@ TEST(TensionParameter, LimitDerivativeKeepsItsPrecisionForSmallPsi) {
   const double v = -1e-9;
   const double eps = params.velocity.epsilon, v_max = params.velocity.v_max;
   const double alpha = 1.0 / 3.0;
-  const double psi =
-      -v * std::pow(v * v + eps * eps, (alpha - 1.0) / 2.0) / std::pow(v_max, alpha);
+  const double psi = -v * std::pow(v * v + eps * eps, (alpha - 1.0) / 2.0) / std::pow(v_max, alpha);
   const double z = psi / 0.5;
   const double series = 2.0 * z * z * z / 3.0 - 8.0 * std::pow(z, 5) / 15.0;
   const double active_scale =
@@ -441,22 +440,39 @@ TEST(TensionParameterParse, AcceptsTheSpellingsThatSetAccepts) {
   EXPECT_EQ(ParseTensionParameter("active_length.gaussians.[2].width"), width);
   EXPECT_EQ(ParseTensionParameter("active_length.gaussians[2]width"), width);
   EXPECT_EQ(ParseTensionParameter("active_length.gaussians[02].width"), width);
-  EXPECT_EQ(ParseTensionParameter("velocity.epsilon."),
-            (TensionParameter{Kind::kEpsilon, 0}));
+  EXPECT_EQ(ParseTensionParameter("velocity.epsilon."), (TensionParameter{Kind::kEpsilon, 0}));
 }
 
 TEST(TensionParameterParse, RejectsWhatIsNoContinuousParameter) {
-  for (const char* bad :
-       {"", ".", "model.f_iso", "f_iso.x", "F_ISO", "passive", "passive.k_p.x", "passive.kp",
-        "velocity.n", "velocity.eccentric.n", "velocity.eccentric", "velocity.v_max[0]",
-        "active_length", "active_length.optimal_range", "active_length.optimal_range[2]",
-        "active_length.optimal_range.min", "active_length.gaussians",
-        "active_length.gaussians[1]", "active_length.gaussians[1].precision",
-        "active_length.gaussians[].width", "active_length.gaussians[x].width",
-        "active_length.gaussians[-1].width", "active_length.gaussians[1.width",
-        "active_length.gaussians.1.width", "active_length.fit.widths[0]",
-        "active_length..sigma", "f_iso..", "velocity.epsilon[0]",
-        "active_length.gaussians[99999999999999999999999].width"}) {
+  for (const char* bad : {"",
+                          ".",
+                          "model.f_iso",
+                          "f_iso.x",
+                          "F_ISO",
+                          "passive",
+                          "passive.k_p.x",
+                          "passive.kp",
+                          "velocity.n",
+                          "velocity.eccentric.n",
+                          "velocity.eccentric",
+                          "velocity.v_max[0]",
+                          "active_length",
+                          "active_length.optimal_range",
+                          "active_length.optimal_range[2]",
+                          "active_length.optimal_range.min",
+                          "active_length.gaussians",
+                          "active_length.gaussians[1]",
+                          "active_length.gaussians[1].precision",
+                          "active_length.gaussians[].width",
+                          "active_length.gaussians[x].width",
+                          "active_length.gaussians[-1].width",
+                          "active_length.gaussians[1.width",
+                          "active_length.gaussians.1.width",
+                          "active_length.fit.widths[0]",
+                          "active_length..sigma",
+                          "f_iso..",
+                          "velocity.epsilon[0]",
+                          "active_length.gaussians[99999999999999999999999].width"}) {
     EXPECT_FALSE(ParseTensionParameter(bad).has_value()) << bad;
   }
 }

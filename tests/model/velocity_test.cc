@@ -82,8 +82,8 @@ TEST(Velocity, SlopeMatchesFiniteDifference) {
   for (int n : {1, 2, 3, 5}) {
     const VelocityCurve curve({0.7, n, 1e-2});
     for (double v : {-1.0, -0.05, -0.003, 0.0, 0.002, 0.01, 0.3, 0.7, 1.4}) {
-      const double numeric = testing::CentralDifference(
-          [&](double w) { return curve.Evaluate(w).value; }, v, 1e-7);
+      const double numeric =
+          testing::CentralDifference([&](double w) { return curve.Evaluate(w).value; }, v, 1e-7);
       EXPECT_NEAR(curve.Evaluate(v).slope, numeric, 1e-6 * std::max(1.0, std::abs(numeric)))
           << "n=" << n << " v=" << v;
     }

@@ -23,15 +23,16 @@ using ::testing::Not;
 using ::testing::ThrowsMessage;
 
 const char* const kHeader =
-    "t,length,shortening_velocity,activation,tension_passive,tension_active,tension_total,load,phase\n";
+    "t,length,shortening_velocity,activation,tension_passive,tension_active,tension_total,load,"
+    "phase\n";
 
 CsvTable Trajectory() {
-  const std::string path = testing::WriteTempFile("trajectory.csv",
-      std::string(kHeader) +
-      "0,0.1,0,0,0,0,0,0,isometric\n"
-      "0.1,0.099,0.02,1,0,60,60,40,concentric\n"
-      "0.2,0.097,0.02,1,0,58,58,40,concentric\n"
-      "0.3,0.098,-0.01,1,0,70,70,80,eccentric\n");
+  const std::string path =
+      testing::WriteTempFile("trajectory.csv", std::string(kHeader) +
+                                                   "0,0.1,0,0,0,0,0,0,isometric\n"
+                                                   "0.1,0.099,0.02,1,0,60,60,40,concentric\n"
+                                                   "0.2,0.097,0.02,1,0,58,58,40,concentric\n"
+                                                   "0.3,0.098,-0.01,1,0,70,70,80,eccentric\n");
   return ReadCsv(path);
 }
 
@@ -39,24 +40,31 @@ TEST(Plot, TrajectoryScriptHasEveryPanelAndPhase) {
   PlotOptions options;
   options.output = "run.png";
   const std::string script = TrajectoryPlotScript(Trajectory(), options);
-  EXPECT_THAT(script, HasSubstr("$trajectory << EOD\n0 0.1 0 0 0 0 0 0\n0.1 0.099 0.02 1 0 60 60 40\n"));
+  EXPECT_THAT(script,
+              HasSubstr("$trajectory << EOD\n0 0.1 0 0 0 0 0 0\n0.1 0.099 0.02 1 0 60 60 40\n"));
   EXPECT_THAT(script, HasSubstr("set multiplot layout 4,1"));
-  for (const char* label : {"length [m]", "shortening velocity [m/s]", "activation [-]", "tension [N]",
-                            "time [s]"}) {
+  for (const char* label :
+       {"length [m]", "shortening velocity [m/s]", "activation [-]", "tension [N]", "time [s]"}) {
     EXPECT_THAT(script, HasSubstr(label));
   }
-  for (const char* series : {"title 'length'", "title 'passive'", "title 'active'", "title 'total'",
-                             "title 'load'", "title 'concentric'", "title 'eccentric'",
-                             "title 'isometric'"}) {
+  for (const char* series :
+       {"title 'length'", "title 'passive'", "title 'active'", "title 'total'", "title 'load'",
+        "title 'concentric'", "title 'eccentric'", "title 'isometric'"}) {
     EXPECT_THAT(script, HasSubstr(series));
   }
   // three runs of phase: isometric [0, 0.1], concentric [0.1, 0.3], eccentric from 0.3 (empty)
-  EXPECT_THAT(script, HasSubstr("set object 1 rect from first 0, graph 0 to first 0.1, graph 1 fc rgb '#e5e5e5'"));
-  EXPECT_THAT(script, HasSubstr("set object 2 rect from first 0.1, graph 0 to first 0.3, graph 1 fc rgb '#9ecae1'"));
+  EXPECT_THAT(
+      script,
+      HasSubstr("set object 1 rect from first 0, graph 0 to first 0.1, graph 1 fc rgb '#e5e5e5'"));
+  EXPECT_THAT(
+      script,
+      HasSubstr(
+          "set object 2 rect from first 0.1, graph 0 to first 0.3, graph 1 fc rgb '#9ecae1'"));
 }
 
 CsvTable NetworkTrajectory() {
-  const std::string path = testing::WriteTempFile("network.csv",
+  const std::string path = testing::WriteTempFile(
+      "network.csv",
       "t,wall.position,wall.velocity,it's.position,it's.velocity,flexor.length,flexor.tension,"
       "flexor.shortening_velocity,flexor.activation,flexor.tension_passive,flexor.tension_active,"
       "flexor.phase,spring.length,spring.tension,it's.load\n"
@@ -73,20 +81,24 @@ TEST(Plot, NetworkScriptHasAPanelPerKindAndALinePerPart) {
   EXPECT_FALSE(IsNetworkTrajectory(Trajectory()));
   const std::string script = NetworkPlotScript(table, options);
   // the inline data: t, the positions, the lengths, the tensions, the activations
-  EXPECT_THAT(script, HasSubstr("$network << EOD\n0 0 0.1 0.1 0.1 0 0 0\n0.5 0 0.09 0.09 0.09 40 -1 1\n"));
+  EXPECT_THAT(script,
+              HasSubstr("$network << EOD\n0 0 0.1 0.1 0.1 0 0 0\n0.5 0 0.09 0.09 0.09 40 -1 1\n"));
   EXPECT_THAT(script, HasSubstr("set multiplot layout 4,1"));
   EXPECT_THAT(script, HasSubstr("$network using 1:2 with lines lw 2 title 'wall'"));
   // a quote in a node's name enters the script only through GnuplotString
-  EXPECT_THAT(script, HasSubstr("$network using 1:3 with lines lw 2 title 'it'.sprintf(\"%c\",39).'s'"));
+  EXPECT_THAT(script,
+              HasSubstr("$network using 1:3 with lines lw 2 title 'it'.sprintf(\"%c\",39).'s'"));
   EXPECT_THAT(script, HasSubstr("$network using 1:7 with lines lw 2 title 'spring'"));
   EXPECT_THAT(script, HasSubstr("$network using 1:8 with lines lw 2 title 'flexor'"));
-  for (const char* label : {"position [m]", "length [m]", "tension [N]", "activation [-]", "time [s]"}) {
+  for (const char* label :
+       {"position [m]", "length [m]", "tension [N]", "activation [-]", "time [s]"}) {
     EXPECT_THAT(script, HasSubstr(label));
   }
 }
 
 TEST(Plot, NetworkWithoutActuatorsHasThreePanels) {
-  const std::string path = testing::WriteTempFile("springs.csv",
+  const std::string path = testing::WriteTempFile(
+      "springs.csv",
       "t,m.position,m.velocity,s.length,s.tension,m.load\n0,0.1,0,0.1,0,0\n1,0.2,0,0.2,5,0\n");
   PlotOptions options;
   options.output = "springs.png";
@@ -94,8 +106,8 @@ TEST(Plot, NetworkWithoutActuatorsHasThreePanels) {
 }
 
 TEST(Plot, NetworkCellThatIsNotFiniteIsNamed) {
-  const std::string path = testing::WriteTempFile("nan.csv",
-      "t,m.position,m.velocity,s.length,s.tension\n0,0.1,0,0.1,0\n1,nan,0,0.2,5\n");
+  const std::string path = testing::WriteTempFile(
+      "nan.csv", "t,m.position,m.velocity,s.length,s.tension\n0,0.1,0,0.1,0\n1,nan,0,0.2,5\n");
   PlotOptions options;
   options.output = "nan.png";
   EXPECT_THAT([&] { NetworkPlotScript(ReadCsv(path), options); },
@@ -107,9 +119,9 @@ TEST(Plot, MissingColumnsAreNamed) {
   PlotOptions options;
   options.output = "run.png";
   EXPECT_THAT([&] { TrajectoryPlotScript(ReadCsv(path), options); },
-              ::testing::ThrowsMessage<InputError>(HasSubstr(
-                  ": missing columns: shortening_velocity, activation, tension_passive, "
-                  "tension_active, tension_total, phase")));
+              ::testing::ThrowsMessage<InputError>(
+                  HasSubstr(": missing columns: shortening_velocity, activation, tension_passive, "
+                            "tension_active, tension_total, phase")));
 }
 
 TEST(Plot, CurvesScriptDrawsEveryComponentAndMarksOptimalRange) {
@@ -128,7 +140,8 @@ TEST(Plot, CurvesScriptDrawsEveryComponentAndMarksOptimalRange) {
 }
 
 CsvTable Summary() {
-  return ReadCsv(testing::WriteTempFile("summary.csv",
+  return ReadCsv(testing::WriteTempFile(
+      "summary.csv",
       "index,load[0].after,model.velocity.n,status,work,steps,rhs_evals,wall_seconds,message\n"
       "0,10,1,ok,0.5,100,150,0.001,\n"
       "1,10,3,ok,0.4,120,170,0.001,\n"
@@ -139,8 +152,8 @@ CsvTable Summary() {
 TEST(Plot, SweepScriptDrawsALinePerColourGroupWithoutFailedRows) {
   PlotOptions options;
   options.output = "sweep.svg";
-  const std::string script =
-      SweepPlotScript(Summary(), "load[0].after", std::nullopt, std::string("model.velocity.n"), options);
+  const std::string script = SweepPlotScript(Summary(), "load[0].after", std::nullopt,
+                                             std::string("model.velocity.n"), options);
   EXPECT_THAT(script, HasSubstr("$group0 << EOD\n10 0.5\nEOD\n"));
   EXPECT_THAT(script, HasSubstr("$group1 << EOD\n10 0.4\n20 0.7\nEOD\n"));
   EXPECT_THAT(script, HasSubstr("title 'model.velocity.n = 1'"));
@@ -151,8 +164,8 @@ TEST(Plot, SweepScriptDrawsALinePerColourGroupWithoutFailedRows) {
 TEST(Plot, SweepOfTwoPathsWithoutColourIsAHeatMap) {
   PlotOptions options;
   options.output = "sweep.png";
-  const std::string script = SweepPlotScript(Summary(), "load[0].after", std::string("steps"),
-                                             std::nullopt, options);
+  const std::string script =
+      SweepPlotScript(Summary(), "load[0].after", std::string("steps"), std::nullopt, options);
   EXPECT_THAT(script, HasSubstr("with boxxyerror"));
   EXPECT_THAT(script, HasSubstr("set ylabel 'model.velocity.n'"));
   EXPECT_THAT(script, HasSubstr("$cells << EOD\n10 1 5 15 0 2 100\n"));
@@ -161,11 +174,14 @@ TEST(Plot, SweepOfTwoPathsWithoutColourIsAHeatMap) {
 TEST(Plot, SweepRejectsUnknownPaths) {
   PlotOptions options;
   options.output = "sweep.png";
-  EXPECT_THAT([&] { SweepPlotScript(Summary(), "mass", std::nullopt, std::nullopt, options); },
-              ::testing::ThrowsMessage<ParameterError>(HasSubstr(
-                  "x = mass: not a swept path of " )));
-  EXPECT_THAT([&] { SweepPlotScript(Summary(), "load[0].after", std::string("speed"), std::nullopt, options); },
-              ::testing::ThrowsMessage<ParameterError>(HasSubstr("y = speed: not a metric")));
+  EXPECT_THAT(
+      [&] { SweepPlotScript(Summary(), "mass", std::nullopt, std::nullopt, options); },
+      ::testing::ThrowsMessage<ParameterError>(HasSubstr("x = mass: not a swept path of ")));
+  EXPECT_THAT(
+      [&] {
+        SweepPlotScript(Summary(), "load[0].after", std::string("speed"), std::nullopt, options);
+      },
+      ::testing::ThrowsMessage<ParameterError>(HasSubstr("y = speed: not a metric")));
 }
 
 TEST(Plot, OptionsNeedAKnownFormatAndSize) {
@@ -175,8 +191,8 @@ TEST(Plot, OptionsNeedAKnownFormatAndSize) {
               ::testing::ThrowsMessage<ParameterError>(HasSubstr("must end in .png or .svg")));
   options.output = "figure.png";
   options.width = 20;
-  EXPECT_THAT([&] { Validate(options); },
-              ::testing::ThrowsMessage<ParameterError>(HasSubstr("size = 20x750: width and height")));
+  EXPECT_THAT([&] { Validate(options); }, ::testing::ThrowsMessage<ParameterError>(
+                                              HasSubstr("size = 20x750: width and height")));
 }
 
 // --- hostile text -----------------------------------------------------------------------
@@ -222,11 +238,12 @@ std::string CsvField(const std::string& text) {
 CsvTable SummaryNamed(const std::string& x_name, const std::string& color_name,
                       const std::string& color_value) {
   return ReadCsv(testing::WriteTempFile("named_summary.csv",
-      "index," + CsvField(x_name) + "," + CsvField(color_name) +
-      ",status,work,steps,rhs_evals,wall_seconds,message\n"
-      "0,10,1,ok,0.5,100,150,0.001,\n"
-      "1,20,1,ok,0.6,100,150,0.001,\n"
-      "2,10," + CsvField(color_value) + ",ok,0.7,100,150,0.001,\n"));
+                                        "index," + CsvField(x_name) + "," + CsvField(color_name) +
+                                            ",status,work,steps,rhs_evals,wall_seconds,message\n"
+                                            "0,10,1,ok,0.5,100,150,0.001,\n"
+                                            "1,20,1,ok,0.6,100,150,0.001,\n"
+                                            "2,10," +
+                                            CsvField(color_value) + ",ok,0.7,100,150,0.001,\n"));
 }
 
 TEST(GnuplotString, QuotesPiecesAndJoinsQuotesIn) {
@@ -254,9 +271,22 @@ TEST(GnuplotString, GnuplotReadsBackEveryString) {
   if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
   // gnuplot's own '' escape fails on the first five; with a quote inside double quotes,
   // its macro expander would lose track of the quotes and replace @GPVAL_PWD
-  const std::vector<std::string> texts = {
-      "'", "''", "'a", "a''b", "'''", "it's", "'@GPVAL_PWD", "\"'@GPVAL_PWD", "'\"@GPVAL_PWD'",
-      "@GPVAL_PWD", "\\", "a\\", "`echo x`", "# no comment", "a ; print 1", "\u00e9'\u20ac"};
+  const std::vector<std::string> texts = {"'",
+                                          "''",
+                                          "'a",
+                                          "a''b",
+                                          "'''",
+                                          "it's",
+                                          "'@GPVAL_PWD",
+                                          "\"'@GPVAL_PWD",
+                                          "'\"@GPVAL_PWD'",
+                                          "@GPVAL_PWD",
+                                          "\\",
+                                          "a\\",
+                                          "`echo x`",
+                                          "# no comment",
+                                          "a ; print 1",
+                                          "\u00e9'\u20ac"};
   std::string script = "set print '-'\n", expected;
   for (const std::string& text : texts) {
     script += "print " + GnuplotString(text, "--title") + "\n";
@@ -281,9 +311,10 @@ TEST(GnuplotString, RejectsEveryControlByteNamingTheSourceAndTheRule) {
     char hex[8];
     std::snprintf(hex, sizeof hex, "%02x", byte);
     EXPECT_THAT([&] { GnuplotString(text, "--title"); },
-                ThrowsMessage<InputError>(HasSubstr(
-                    std::string("--title 'a\\x") + hex + "b': must not contain control characters "
-                    "(bytes below 0x20, and 0x7f); byte 0x" + hex + " at offset 1")));
+                ThrowsMessage<InputError>(HasSubstr(std::string("--title 'a\\x") + hex +
+                                                    "b': must not contain control characters "
+                                                    "(bytes below 0x20, and 0x7f); byte 0x" +
+                                                    hex + " at offset 1")));
   }
 }
 
@@ -305,10 +336,10 @@ TEST(Plot, HostileTitlesAreQuotedInEveryScript) {
   options.output = "figure.png";
   const TensionModel model(LoadModelSpec(testing::ScenarioPath("concentric.yaml")).params);
   const auto scripts = [&] {
-    return std::vector<std::string>{
-        TrajectoryPlotScript(Trajectory(), options), CurvesPlotScript(model, options),
-        SweepPlotScript(Summary(), "load[0].after", std::nullopt, std::string("model.velocity.n"),
-                        options)};
+    return std::vector<std::string>{TrajectoryPlotScript(Trajectory(), options),
+                                    CurvesPlotScript(model, options),
+                                    SweepPlotScript(Summary(), "load[0].after", std::nullopt,
+                                                    std::string("model.velocity.n"), options)};
   };
   options.title = "plain";
   const std::vector<std::string> plain = scripts();
@@ -344,14 +375,14 @@ TEST(Plot, HostileColumnNamesAndValuesAreQuoted) {
     EXPECT_THAT(script, HasSubstr("set title " + SingleQuoted("work against " + x) + "\n"));
     EXPECT_THAT(script, HasSubstr(" title " + SingleQuoted(color + " = " + text)));
     // the same script as for plain names, but for the names: two groups, one line each
-    const std::string plain = SweepPlotScript(SummaryNamed("x", "c", "2"), "x", std::nullopt,
-                                              std::string("c"), options);
+    const std::string plain =
+        SweepPlotScript(SummaryNamed("x", "c", "2"), "x", std::nullopt, std::string("c"), options);
     EXPECT_EQ(Lines(script), Lines(plain)) << text.substr(0, 40);
   }
   // the heat map's axis and colour-box labels
   const std::string x = "x " + HostileTexts("F")[6], other = "o " + HostileTexts("F")[7];
-  const std::string heat = SweepPlotScript(SummaryNamed(x, other, "3"), x, std::nullopt,
-                                           std::nullopt, options);
+  const std::string heat =
+      SweepPlotScript(SummaryNamed(x, other, "3"), x, std::nullopt, std::nullopt, options);
   EXPECT_THAT(heat, HasSubstr("set ylabel " + SingleQuoted(other) + "\n"));
   EXPECT_THAT(heat, HasSubstr("set cblabel 'work'\n"));
 }
@@ -361,20 +392,19 @@ TEST(Plot, ControlCharactersFromTheCsvAreRejectedNamingWhere) {
   options.output = "sweep.png";
   const CsvTable tabbed = SummaryNamed("x", "c", "a\tb");
   EXPECT_THAT([&] { SweepPlotScript(tabbed, "x", std::nullopt, std::string("c"), options); },
-              ThrowsMessage<InputError>(HasSubstr(
-                  "named_summary.csv:4: the legend entry 'c = a\\x09b': must not contain "
-                  "control characters")));
+              ThrowsMessage<InputError>(
+                  HasSubstr("named_summary.csv:4: the legend entry 'c = a\\x09b': must not contain "
+                            "control characters")));
   const CsvTable escaped = SummaryNamed("x", "\x1b[31m", "2");
   EXPECT_THAT([&] { SweepPlotScript(escaped, "x", std::nullopt, std::nullopt, options); },
-              ThrowsMessage<InputError>(HasSubstr(
-                  "named_summary.csv: the other swept path '\\x1b[31m': must not contain "
-                  "control characters")));
+              ThrowsMessage<InputError>(
+                  HasSubstr("named_summary.csv: the other swept path '\\x1b[31m': must not contain "
+                            "control characters")));
   // the file's name is the trajectory's default title
-  const CsvTable named = ReadCsv(testing::WriteTempFile("tab\tname.csv", std::string(kHeader) +
-                                                       "0,0.1,0,0,0,0,0,0,isometric\n"));
+  const CsvTable named = ReadCsv(testing::WriteTempFile(
+      "tab\tname.csv", std::string(kHeader) + "0,0.1,0,0,0,0,0,0,isometric\n"));
   EXPECT_THAT([&] { TrajectoryPlotScript(named, options); },
-              ThrowsMessage<InputError>(HasSubstr(
-                  "the CSV file's name (the default title) '")));
+              ThrowsMessage<InputError>(HasSubstr("the CSV file's name (the default title) '")));
   options.title = "a title";
   EXPECT_NO_THROW(TrajectoryPlotScript(named, options));
 }
@@ -382,14 +412,14 @@ TEST(Plot, ControlCharactersFromTheCsvAreRejectedNamingWhere) {
 TEST(Plot, OptionsRejectControlCharactersInTheOutputAndTitle) {
   PlotOptions options;
   options.output = "a\nsystem(\"touch F\")\n#.png";
-  EXPECT_THAT([&] { Validate(options); },
-              ThrowsMessage<ParameterError>(HasSubstr("output = 'a\\x0asystem(\"touch F\")\\x0a#.png': "
-                                                  "must not contain control characters")));
+  EXPECT_THAT([&] { Validate(options); }, ThrowsMessage<ParameterError>(HasSubstr(
+                                              "output = 'a\\x0asystem(\"touch F\")\\x0a#.png': "
+                                              "must not contain control characters")));
   options.output = "a.png";
   options.title = "x\nsystem(\"touch F\")\n#";
   EXPECT_THAT([&] { Validate(options); },
               ThrowsMessage<ParameterError>(HasSubstr("title = 'x\\x0asystem(\"touch F\")\\x0a#': "
-                                                  "must not contain control characters")));
+                                                      "must not contain control characters")));
 }
 
 // --- malformed CSV files ----------------------------------------------------------------
@@ -402,9 +432,8 @@ TEST(Plot, SweepSummaryOfAnotherLayoutNamesWhatIsMissing) {
       "metrics, steps, rhs_evals, wall_seconds, message)";
   const auto error = [&](const std::string& header) {
     const std::string path = testing::WriteTempFile("layout.csv", header + "\n");
-    return testing::InputErrorOf(path, [&] {
-      SweepPlotScript(ReadCsv(path), "x", std::nullopt, std::nullopt, options);
-    });
+    return testing::InputErrorOf(
+        path, [&] { SweepPlotScript(ReadCsv(path), "x", std::nullopt, std::nullopt, options); });
   };
   EXPECT_EQ(error("index,steps,status,x"),
             "FILE: missing columns: rhs_evals, wall_seconds, message " + layout);
@@ -414,16 +443,18 @@ TEST(Plot, SweepSummaryOfAnotherLayoutNamesWhatIsMissing) {
             "FILE: index is not the first column " + layout);
   EXPECT_EQ(error("index,x,status,work,steps,rhs_evals,message,wall_seconds"),
             "FILE: steps, rhs_evals, wall_seconds, message are not the last columns, after "
-            "status " + layout);
-  EXPECT_EQ(error(std::string(kHeader, std::strlen(kHeader) - 1)),
-            "FILE: missing columns: index, status, steps, rhs_evals, wall_seconds, message " +
+            "status " +
                 layout);
+  EXPECT_EQ(
+      error(std::string(kHeader, std::strlen(kHeader) - 1)),
+      "FILE: missing columns: index, status, steps, rhs_evals, wall_seconds, message " + layout);
 }
 
 TEST(Plot, SweepWithoutMetricsPlotsSteps) {
   PlotOptions options;
   options.output = "sweep.png";
-  const CsvTable table = ReadCsv(testing::WriteTempFile("no_metric.csv",
+  const CsvTable table = ReadCsv(testing::WriteTempFile(
+      "no_metric.csv",
       "index,x,status,steps,rhs_evals,wall_seconds,message\n0,1,ok,100,150,0.001,\n"
       "1,2,ok,120,170,0.001,\n"));
   const std::string script = SweepPlotScript(table, "x", std::nullopt, std::nullopt, options);
@@ -436,25 +467,29 @@ TEST(Plot, CellsThatAreNotFiniteNumbersAreNamedByLineAndColumn) {
   PlotOptions options;
   options.output = "run.png";
   for (const char* cell : {"nan", "inf", "-inf", "NaN", "infinity"}) {
-    const std::string path = testing::WriteTempFile("nonfinite.csv", std::string(kHeader) +
-        "0,0.1,0,0,0,0,0,0,isometric\n0.1," + cell + ",0,0,0,0,0,0,isometric\n");
+    const std::string path = testing::WriteTempFile(
+        "nonfinite.csv", std::string(kHeader) + "0,0.1,0,0,0,0,0,0,isometric\n0.1," + cell +
+                             ",0,0,0,0,0,0,isometric\n");
     EXPECT_EQ(testing::InputErrorOf(path, [&] { TrajectoryPlotScript(ReadCsv(path), options); }),
               "FILE:3: column length = '" + std::string(cell) + "': must be a finite number");
   }
   for (const char* cell : {"abc", "", "1.5x", "\x1b[2J"}) {
-    const std::string path = testing::WriteTempFile("text.csv", std::string(kHeader) +
-        "0,0.1,0,0," + cell + ",0,0,0,isometric\n");
+    const std::string path = testing::WriteTempFile(
+        "text.csv", std::string(kHeader) + "0,0.1,0,0," + cell + ",0,0,0,isometric\n");
     EXPECT_THAT(testing::InputErrorOf(path, [&] { TrajectoryPlotScript(ReadCsv(path), options); }),
-                HasSubstr("FILE:2: column tension_passive = '")) << cell;
+                HasSubstr("FILE:2: column tension_passive = '"))
+        << cell;
   }
   // a swept value or a metric
-  const std::string summary = testing::WriteTempFile("summary_nan.csv",
+  const std::string summary = testing::WriteTempFile(
+      "summary_nan.csv",
       "index,x,status,work,steps,rhs_evals,wall_seconds,message\n0,1,ok,0.5,100,150,0.001,\n"
       "1,2,ok,nan,100,150,0.001,\n2,abc,ok,0.5,100,150,0.001,\n");
-  EXPECT_EQ(testing::InputErrorOf(summary, [&] {
-              SweepPlotScript(ReadCsv(summary), "x", std::nullopt, std::nullopt, options);
-            }),
-            "FILE:3: column work = 'nan': must be a finite number");
+  EXPECT_EQ(
+      testing::InputErrorOf(
+          summary,
+          [&] { SweepPlotScript(ReadCsv(summary), "x", std::nullopt, std::nullopt, options); }),
+      "FILE:3: column work = 'nan': must be a finite number");
 }
 
 TEST(Plot, TablesWithoutRowsAreRejected) {
@@ -463,19 +498,19 @@ TEST(Plot, TablesWithoutRowsAreRejected) {
   const std::string run = testing::WriteTempFile("header_only.csv", kHeader);
   EXPECT_EQ(testing::InputErrorOf(run, [&] { TrajectoryPlotScript(ReadCsv(run), options); }),
             "FILE: no rows to plot");
-  const std::string sweep = testing::WriteTempFile("summary_header_only.csv",
-      "index,x,status,work,steps,rhs_evals,wall_seconds,message\n");
-  EXPECT_EQ(testing::InputErrorOf(sweep, [&] {
-              SweepPlotScript(ReadCsv(sweep), "x", std::nullopt, std::nullopt, options);
-            }),
+  const std::string sweep = testing::WriteTempFile(
+      "summary_header_only.csv", "index,x,status,work,steps,rhs_evals,wall_seconds,message\n");
+  EXPECT_EQ(testing::InputErrorOf(
+                sweep,
+                [&] { SweepPlotScript(ReadCsv(sweep), "x", std::nullopt, std::nullopt, options); }),
             "FILE: no successful row with a value of work");
 }
 
 TEST(Plot, SingleRowTrajectoryIsOnePointWithoutShading) {
   PlotOptions options;
   options.output = "run.png";
-  const CsvTable one = ReadCsv(testing::WriteTempFile("one_row.csv", std::string(kHeader) +
-                                                      "0.5,0.1,0,1,0,60,60,40,concentric\n"));
+  const CsvTable one = ReadCsv(testing::WriteTempFile(
+      "one_row.csv", std::string(kHeader) + "0.5,0.1,0,1,0,60,60,40,concentric\n"));
   const std::string script = TrajectoryPlotScript(one, options);
   EXPECT_THAT(script, HasSubstr("$trajectory << EOD\n0.5 0.1 0 1 0 60 60 40\nEOD\n"));
   EXPECT_THAT(script, Not(HasSubstr("set object")));
@@ -563,8 +598,11 @@ TEST(Render, SingleRowsRender) {
   const std::string dir = FreshFolder();
   PlotOptions options;
   options.output = dir + "run.png";
-  Render(TrajectoryPlotScript(ReadCsv(testing::WriteTempFile("one_row.csv",
-             std::string(kHeader) + "0.5,0.1,0,1,0,60,60,40,concentric\n")), options), options);
+  Render(TrajectoryPlotScript(
+             ReadCsv(testing::WriteTempFile(
+                 "one_row.csv", std::string(kHeader) + "0.5,0.1,0,1,0,60,60,40,concentric\n")),
+             options),
+         options);
   options.output = dir + "line.png";
   const CsvTable one = SummaryNamed("x", "c", "1");  // three rows; keep one
   CsvTable single = one;

@@ -47,8 +47,8 @@ TEST(ResidualPlot, OtherTablesAreNotResidualsAndBrokenOnesAreRefused) {
   EXPECT_FALSE(IsResidualTable(Residuals("t,length,tension_total\n0,0.1,1\n")));
   PlotOptions options;
   options.output = "fit.png";
-  const std::string path = testing::WriteTempFile(
-      "residuals.csv", "series,t,measured,model,standardised\n0,0,1,1,0\n");
+  const std::string path =
+      testing::WriteTempFile("residuals.csv", "series,t,measured,model,standardised\n0,0,1,1,0\n");
   EXPECT_EQ(testing::InputErrorOf(path, [&] { ResidualPlotScript(ReadCsv(path), options); }),
             "FILE: missing columns: output (a residual CSV of a time-series identification: "
             "series, output, t, measured, model, residual, standardised)");

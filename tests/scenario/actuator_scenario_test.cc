@@ -65,9 +65,9 @@ testing::Experiment Everything() {
 testing::Experiment Excited() {
   const testing::Experiment e = testing::Concentric();
   ExcitationInput input{Waveform::Pulses(0.05, 0.1, 0.01, 0.0, 1.0), {}, 0.2};
-  return {ActuatorSystem(e.system.shared_model(), e.system.actuator(), input,
-                         e.system.loads().loads()),
-          e.request, e.options};
+  return {
+      ActuatorSystem(e.system.shared_model(), e.system.actuator(), input, e.system.loads().loads()),
+      e.request, e.options};
 }
 
 struct Case {
@@ -138,14 +138,14 @@ TEST_P(ActuatorScenario, RunsAsTheActuatorSystemDoesToTheLastBit) {
     const ActuatorSample& a = from_scenario[k].sample;
     const ActuatorSample& b = reference.trajectory[k].sample;
     ASSERT_EQ(from_scenario[k].t, reference.trajectory[k].t) << k;
-    const double mine[] = {a.length, a.shortening_velocity, a.activation, a.excitation,
-                           a.tension.passive, a.tension.active, a.tension.total, a.load};
-    const double theirs[] = {b.length, b.shortening_velocity, b.activation, b.excitation,
-                             b.tension.passive, b.tension.active, b.tension.total, b.load};
+    const double mine[] = {a.length,          a.shortening_velocity, a.activation,    a.excitation,
+                           a.tension.passive, a.tension.active,      a.tension.total, a.load};
+    const double theirs[] = {
+        b.length,          b.shortening_velocity, b.activation,    b.excitation,
+        b.tension.passive, b.tension.active,      b.tension.total, b.load};
     for (int i = 0; i < 8; ++i) {
-      ASSERT_TRUE(SameBits(mine[i], theirs[i]))
-          << "field " << i << " at t = " << from_scenario[k].t << ": " << mine[i] << " and "
-          << theirs[i];
+      ASSERT_TRUE(SameBits(mine[i], theirs[i])) << "field " << i << " at t = " << from_scenario[k].t
+                                                << ": " << mine[i] << " and " << theirs[i];
     }
   }
 }
@@ -153,9 +153,8 @@ TEST_P(ActuatorScenario, RunsAsTheActuatorSystemDoesToTheLastBit) {
 INSTANTIATE_TEST_SUITE_P(
     Experiments, ActuatorScenario,
     ::testing::Values(Case{"concentric", testing::Concentric},
-                      Case{"eccentric", testing::Eccentric},
-                      Case{"isometric", testing::Isometric}, Case{"everything", Everything},
-                      Case{"excited", Excited}),
+                      Case{"eccentric", testing::Eccentric}, Case{"isometric", testing::Isometric},
+                      Case{"everything", Everything}, Case{"excited", Excited}),
     [](const ::testing::TestParamInfo<Case>& param) { return std::string(param.param.name); });
 
 TEST(ActuatorScenarioFile, TheShippedFileIsTheScenarioBuiltInCode) {
@@ -219,8 +218,8 @@ TEST(ActuatorKeyPaths, KeysOutsideEitherVocabularyAreLeftAlone) {
     EXPECT_FALSE(NetworkKeyPath(path).has_value()) << path;
   }
   // a path into the network with no key of the form reads back unchanged
-  for (const char* path : {"nodes[0].fixed", "elements[3].stiffness", "controllers[0].gains.kp",
-                           "nodes[1].mass2"}) {
+  for (const char* path :
+       {"nodes[0].fixed", "elements[3].stiffness", "controllers[0].gains.kp", "nodes[1].mass2"}) {
     EXPECT_EQ(ActuatorKeyPath(path), path);
   }
 }

@@ -181,17 +181,16 @@ TEST(PositionTracking, FollowsTheSineAsTheLinearisedLoopPredicts) {
   std::vector<double> y(static_cast<std::size_t>(held.state_size()), 0.0);
   held.InitialState(0.0, y.data());  // the load at the midpoint, at rest, z = 0
   constexpr double h = 1e-6;
-  const Eigen::VectorXd b_r = (Rate(pair(Waveform::Constant(kMid + h)), 0.0, y) -
-                               Rate(held, 0.0, y)) / h;
+  const Eigen::VectorXd b_r =
+      (Rate(pair(Waveform::Constant(kMid + h)), 0.0, y) - Rate(held, 0.0, y)) / h;
   // a ramp through kMid at t = 0 with slope h: r' = h there
   const Eigen::VectorXd b_v =
       (Rate(pair(Waveform::Ramp(-1.0, 1.0, kMid - h, kMid + h)), 0.0, y) - Rate(held, 0.0, y)) / h;
   const Eigen::MatrixXcd a = Matrix(held, 0.0, y).cast<std::complex<double>>();
   const std::complex<double> jw(0.0, kOmega);
-  const Eigen::MatrixXcd shifted =
-      jw * Eigen::MatrixXcd::Identity(a.rows(), a.cols()) - a;
-  const Eigen::VectorXcd x = shifted.partialPivLu().solve(
-      b_r.cast<std::complex<double>>() + jw * b_v.cast<std::complex<double>>());
+  const Eigen::MatrixXcd shifted = jw * Eigen::MatrixXcd::Identity(a.rows(), a.cols()) - a;
+  const Eigen::VectorXcd x = shifted.partialPivLu().solve(b_r.cast<std::complex<double>>() +
+                                                          jw * b_v.cast<std::complex<double>>());
   const double predicted = std::abs(1.0 - x(0)) * kAmplitude;  // x(0): the load's position
   // the pair is nonlinear over the +-5 mm (f_L's slope changes along it), and the worst
   // error on the 1 ms grid misses the peak by (pi 1e-3)^2 / 2: 2 %

@@ -25,8 +25,8 @@
 namespace musclesim {
 namespace {
 
-using ::testing::HasSubstr;
 using testing::FixturePath;
+using ::testing::HasSubstr;
 using testing::SameRecordedRun;
 using testing::ScenarioPath;
 
@@ -57,43 +57,44 @@ TEST(Parameter, EverySingleActuatorKeyReadsItsPartOfTheNetwork) {
   const Element& damper = s.elements[kActuatorDamperElement];
   const Element& spring = s.elements[kActuatorSpringElement];
   const Gaussian& g = m.active_length.gaussians[0];
-  ExpectKeysRead(s, {
-      {"model.f_iso", m.f_iso},
-      {"model.passive.k_p", m.passive.k_p},
-      {"model.passive.alpha", m.passive.alpha},
-      {"model.passive.slack_length", m.passive.slack_length},
-      {"model.active_length.optimal_range[0]", m.active_length.optimal_min},
-      {"model.active_length.optimal_range[1]", m.active_length.optimal_max},
-      {"model.active_length.sigma", m.active_length.sigma},
-      {"model.active_length.gaussians[0].amplitude", g.amplitude},
-      {"model.active_length.gaussians[0].width", g.precision},
-      {"model.active_length.gaussians[0].center", g.center},
-      {"model.velocity.v_max", m.velocity.v_max},
-      {"model.velocity.n", static_cast<double>(m.velocity.n), false, true},
-      {"model.velocity.epsilon", m.velocity.epsilon},
-      // the eccentric branch's keys the file leaves out: the concentric ones, and no limit
-      {"model.velocity.eccentric.v_max", m.velocity.v_max},
-      {"model.velocity.eccentric.limit", std::numeric_limits<double>::infinity()},
-      {"actuator.mass", tip.mass},
-      {"actuator.damping", damper.damping},
-      {"actuator.stiffness", spring.stiffness},
-      {"actuator.rest_length", spring.rest_length},
-      {"initial.length", tip.position},
-      {"initial.lengthening_rate", tip.velocity},
-      {"activation.time", actuator.activation.time},
-      {"activation.before", actuator.activation.before},
-      {"activation.after", actuator.activation.after},
-      {"load[0].value", s.loads[0].load.force.value},
-      {"time.start", s.t_start, true},
-      {"time.end", s.t_end, true},
-      {"solver.rtol", s.solver.rtol, true},
-      {"solver.atol", s.solver.atol, true},
-      {"solver.max_step", s.solver.max_step, true},
-      {"solver.max_steps", static_cast<double>(s.solver.max_steps), true, true},
-      {"output.interval", s.output.interval, true},
-      {"limits.min_length", *s.limits[0].min_length, true},
-      {"limits.max_length", *s.limits[0].max_length, true},
-  });
+  ExpectKeysRead(
+      s, {
+             {"model.f_iso", m.f_iso},
+             {"model.passive.k_p", m.passive.k_p},
+             {"model.passive.alpha", m.passive.alpha},
+             {"model.passive.slack_length", m.passive.slack_length},
+             {"model.active_length.optimal_range[0]", m.active_length.optimal_min},
+             {"model.active_length.optimal_range[1]", m.active_length.optimal_max},
+             {"model.active_length.sigma", m.active_length.sigma},
+             {"model.active_length.gaussians[0].amplitude", g.amplitude},
+             {"model.active_length.gaussians[0].width", g.precision},
+             {"model.active_length.gaussians[0].center", g.center},
+             {"model.velocity.v_max", m.velocity.v_max},
+             {"model.velocity.n", static_cast<double>(m.velocity.n), false, true},
+             {"model.velocity.epsilon", m.velocity.epsilon},
+             // the eccentric branch's keys the file leaves out: the concentric ones, and no limit
+             {"model.velocity.eccentric.v_max", m.velocity.v_max},
+             {"model.velocity.eccentric.limit", std::numeric_limits<double>::infinity()},
+             {"actuator.mass", tip.mass},
+             {"actuator.damping", damper.damping},
+             {"actuator.stiffness", spring.stiffness},
+             {"actuator.rest_length", spring.rest_length},
+             {"initial.length", tip.position},
+             {"initial.lengthening_rate", tip.velocity},
+             {"activation.time", actuator.activation.time},
+             {"activation.before", actuator.activation.before},
+             {"activation.after", actuator.activation.after},
+             {"load[0].value", s.loads[0].load.force.value},
+             {"time.start", s.t_start, true},
+             {"time.end", s.t_end, true},
+             {"solver.rtol", s.solver.rtol, true},
+             {"solver.atol", s.solver.atol, true},
+             {"solver.max_step", s.solver.max_step, true},
+             {"solver.max_steps", static_cast<double>(s.solver.max_steps), true, true},
+             {"output.interval", s.output.interval, true},
+             {"limits.min_length", *s.limits[0].min_length, true},
+             {"limits.max_length", *s.limits[0].max_length, true},
+         });
   // and the file's own numbers, as written in tests/fixtures/actuator.yaml
   EXPECT_EQ(s.parameter("model.f_iso").Get(s), 100.0);
   EXPECT_EQ(s.parameter("actuator.mass").Get(s), 0.1);
@@ -119,43 +120,43 @@ TEST(Parameter, EveryNetworkKeyReadsItsPart) {
   const Waveform& crank = s.nodes[3].motion;
   const Waveform& flexor_activation = s.elements[0].activation;
   ExpectKeysRead(s, {
-      {"models.flexor.f_iso", flexor.f_iso},
-      {"models.flexor.passive.slack_length", flexor.passive.slack_length},
-      {"models.extensor.f_iso", s.models.at("extensor").spec.params.f_iso},
-      {"models.extensor.velocity.n", 1.0, false, true},
-      {"nodes[0].fixed", s.nodes[0].position},
-      {"nodes[1].mass", s.nodes[1].mass},
-      {"nodes[1].position", s.nodes[1].position},
-      {"nodes[1].velocity", s.nodes[1].velocity},
-      {"nodes[2].fixed", s.nodes[2].position},
-      {"nodes[3].prescribed.offset", crank.offset},
-      {"nodes[3].prescribed.amplitude", crank.amplitude},
-      {"nodes[3].prescribed.frequency", crank.frequency},
-      {"nodes[3].prescribed.phase", crank.phase},
-      {"elements[0].activation.time", flexor_activation.time},
-      {"elements[0].activation.before", flexor_activation.before},
-      {"elements[0].activation.after", flexor_activation.after},
-      {"elements[1].activation.value", s.elements[1].activation.value},
-      {"elements[2].slack_length", s.elements[2].slack_length},
-      {"elements[2].stiffness", s.elements[2].stiffness},
-      {"elements[3].slack_length", s.elements[3].slack_length},
-      {"elements[3].exponential.k", s.elements[3].k},
-      {"elements[3].exponential.alpha", s.elements[3].alpha},
-      {"elements[4].stiffness", s.elements[4].stiffness},
-      {"elements[4].rest_length", s.elements[4].rest_length},
-      {"elements[5].damping", s.elements[5].damping},
-      {"loads[0].value", s.loads[0].load.force.value},
-      {"loads[1].mass", s.loads[1].load.mass},
-      {"loads[1].gravity", s.loads[1].load.gravity},
-      {"loads[2].stiffness", s.loads[2].load.stiffness},
-      {"loads[2].anchor", s.loads[2].load.anchor},
-      {"time.start", s.t_start, true},
-      {"solver.rtol", s.solver.rtol, true},
-      {"output.interval", s.output.interval, true},
-      {"limits[0].min_length", *s.limits[0].min_length, true},
-      {"limits[0].max_length", *s.limits[0].max_length, true},
-      {"limits[1].max_length", *s.limits[1].max_length, true},
-  });
+                        {"models.flexor.f_iso", flexor.f_iso},
+                        {"models.flexor.passive.slack_length", flexor.passive.slack_length},
+                        {"models.extensor.f_iso", s.models.at("extensor").spec.params.f_iso},
+                        {"models.extensor.velocity.n", 1.0, false, true},
+                        {"nodes[0].fixed", s.nodes[0].position},
+                        {"nodes[1].mass", s.nodes[1].mass},
+                        {"nodes[1].position", s.nodes[1].position},
+                        {"nodes[1].velocity", s.nodes[1].velocity},
+                        {"nodes[2].fixed", s.nodes[2].position},
+                        {"nodes[3].prescribed.offset", crank.offset},
+                        {"nodes[3].prescribed.amplitude", crank.amplitude},
+                        {"nodes[3].prescribed.frequency", crank.frequency},
+                        {"nodes[3].prescribed.phase", crank.phase},
+                        {"elements[0].activation.time", flexor_activation.time},
+                        {"elements[0].activation.before", flexor_activation.before},
+                        {"elements[0].activation.after", flexor_activation.after},
+                        {"elements[1].activation.value", s.elements[1].activation.value},
+                        {"elements[2].slack_length", s.elements[2].slack_length},
+                        {"elements[2].stiffness", s.elements[2].stiffness},
+                        {"elements[3].slack_length", s.elements[3].slack_length},
+                        {"elements[3].exponential.k", s.elements[3].k},
+                        {"elements[3].exponential.alpha", s.elements[3].alpha},
+                        {"elements[4].stiffness", s.elements[4].stiffness},
+                        {"elements[4].rest_length", s.elements[4].rest_length},
+                        {"elements[5].damping", s.elements[5].damping},
+                        {"loads[0].value", s.loads[0].load.force.value},
+                        {"loads[1].mass", s.loads[1].load.mass},
+                        {"loads[1].gravity", s.loads[1].load.gravity},
+                        {"loads[2].stiffness", s.loads[2].load.stiffness},
+                        {"loads[2].anchor", s.loads[2].load.anchor},
+                        {"time.start", s.t_start, true},
+                        {"solver.rtol", s.solver.rtol, true},
+                        {"output.interval", s.output.interval, true},
+                        {"limits[0].min_length", *s.limits[0].min_length, true},
+                        {"limits[0].max_length", *s.limits[0].max_length, true},
+                        {"limits[1].max_length", *s.limits[1].max_length, true},
+                    });
   // the file's numbers, as tests/fixtures/every_part.yaml writes them
   EXPECT_EQ(s.parameter("nodes[3].prescribed.phase").Get(s), 0.5);
   EXPECT_EQ(s.parameter("elements[3].exponential.alpha").Get(s), 20.0);
@@ -171,27 +172,29 @@ TEST(Parameter, EveryNetworkKeyReadsItsPart) {
 TEST(Parameter, ActivationDynamicsControllersAndTablesReadTheirParts) {
   const Scenario twitches = LoadScenario(ScenarioPath("twitches.yaml"));
   const ExcitationInput& input = *twitches.elements[kActuatorElement].excitation;
-  ExpectKeysRead(twitches, {
-      {"excitation.start", input.signal.start},
-      {"excitation.period", input.signal.period},
-      {"excitation.width", input.signal.width},
-      {"excitation.high", input.signal.high},
-      {"activation_dynamics.tau_activation", input.dynamics.tau_activation},
-      {"activation_dynamics.tau_deactivation", input.dynamics.tau_deactivation},
-      // left out of the file: the excitation at the start
-      {"initial.activation", input.InitialActivation(twitches.t_start)},
-  });
+  ExpectKeysRead(twitches,
+                 {
+                     {"excitation.start", input.signal.start},
+                     {"excitation.period", input.signal.period},
+                     {"excitation.width", input.signal.width},
+                     {"excitation.high", input.signal.high},
+                     {"activation_dynamics.tau_activation", input.dynamics.tau_activation},
+                     {"activation_dynamics.tau_deactivation", input.dynamics.tau_deactivation},
+                     // left out of the file: the excitation at the start
+                     {"initial.activation", input.InitialActivation(twitches.t_start)},
+                 });
 
   const Scenario tracking = LoadScenario(ScenarioPath("position_tracking.yaml"));
   const Controller& c = tracking.controllers[0];
-  ExpectKeysRead(tracking, {
-      {"controllers[0].gains.kp", c.gains.kp},
-      {"controllers[0].gains.ki", c.gains.ki},
-      {"controllers[0].gains.kd", c.gains.kd},
-      {"controllers[0].reference.offset", c.reference.offset},
-      {"controllers[0].reference.amplitude", c.reference.amplitude},
-      {"controllers[0].co_contraction.level.value", c.co_contraction->level.value},
-  });
+  ExpectKeysRead(tracking,
+                 {
+                     {"controllers[0].gains.kp", c.gains.kp},
+                     {"controllers[0].gains.ki", c.gains.ki},
+                     {"controllers[0].gains.kd", c.gains.kd},
+                     {"controllers[0].reference.offset", c.reference.offset},
+                     {"controllers[0].reference.amplitude", c.reference.amplitude},
+                     {"controllers[0].co_contraction.level.value", c.co_contraction->level.value},
+                 });
   EXPECT_EQ(tracking.parameter("controllers[0].gains.kp").Get(tracking), 250.0);
 
   std::string text = testing::ReadFile(FixturePath("actuator.yaml"));
@@ -277,8 +280,9 @@ std::vector<double> Values(const Scenario& s, const std::vector<std::string>& pa
 
 TEST(Parameter, ARefusedSetLeavesTheScenarioAsItWas) {
   const std::vector<std::string> paths = {
-      "model.f_iso", "model.velocity.n", "model.velocity.epsilon", "actuator.mass",
-      "initial.length", "activation.after", "time.end", "limits.max_length"};
+      "model.f_iso",   "model.velocity.n", "model.velocity.epsilon",
+      "actuator.mass", "initial.length",   "activation.after",
+      "time.end",      "limits.max_length"};
   struct Case {
     std::string path;
     double value;
@@ -358,13 +362,13 @@ TEST(Parameter, ASingleActuatorsKeyAndItsNetworksKeyAreOneValue) {
     double value;  // a new value, valid
   };
   const std::vector<Case> cases = {
-      {"model.f_iso", 120.0},          {"model.velocity.v_max", 1.5},
-      {"actuator.mass", 0.2},          {"actuator.damping", 0.5},
-      {"actuator.stiffness", 10.0},    {"actuator.rest_length", 0.11},
-      {"initial.length", 0.11},        {"initial.lengthening_rate", -0.01},
-      {"activation.after", 0.9},       {"activation.time", 0.02},
-      {"load[0].value", 30.0},         {"limits.min_length", 0.06},
-      {"limits.max_length", 0.25},     {"time.end", 0.5},
+      {"model.f_iso", 120.0},       {"model.velocity.v_max", 1.5},
+      {"actuator.mass", 0.2},       {"actuator.damping", 0.5},
+      {"actuator.stiffness", 10.0}, {"actuator.rest_length", 0.11},
+      {"initial.length", 0.11},     {"initial.lengthening_rate", -0.01},
+      {"activation.after", 0.9},    {"activation.time", 0.02},
+      {"load[0].value", 30.0},      {"limits.min_length", 0.06},
+      {"limits.max_length", 0.25},  {"time.end", 0.5},
       {"solver.rtol", 1e-7},
   };
   for (const Case& c : cases) {
@@ -441,8 +445,8 @@ TEST(Parameter, ANetworksModelHandleChangesEveryActuatorOfTheBlock) {
   EXPECT_EQ(s.elements[0].model, s.elements[1].model);
   EXPECT_EQ(s.elements[0].model->params().velocity.v_max, 15.0);
   EXPECT_TRUE(SameRecordedRun(
-      RunScenario(s), RunScenario(LoadScenario(path, {"models.muscle.velocity.v_max=15",
-                                                      "time.end=0.5"}))));
+      RunScenario(s),
+      RunScenario(LoadScenario(path, {"models.muscle.velocity.v_max=15", "time.end=0.5"}))));
 }
 
 }  // namespace

@@ -55,8 +55,8 @@ TEST(RunColumns, SingleActuatorRunEqualsTheProgramsCsv) {
   const RecordedRun run = RunScenario(LoadScenario(path));
   EXPECT_EQ(run.columns.names(),
             (std::vector<std::string>{"t", "length", "shortening_velocity", "activation",
-                                      "tension_passive", "tension_active", "tension_total",
-                                      "load", "phase"}));
+                                      "tension_passive", "tension_active", "tension_total", "load",
+                                      "phase"}));
   ExpectRunIsTheProgramsCsv(run, ProgramCsv(path));
 }
 
@@ -91,8 +91,8 @@ TEST(RunColumns, ControlledNetworkRunEqualsTheProgramsCsv) {
   const RecordedRun run = RunScenario(LoadScenario(path, {"time.end=0.5"}));
   const std::vector<std::string>& names = run.columns.names();
   EXPECT_EQ(std::vector<std::string>(names.end() - 4, names.end()),
-            (std::vector<std::string>{"position.reference", "position.measured",
-                                      "position.error", "position.output"}));
+            (std::vector<std::string>{"position.reference", "position.measured", "position.error",
+                                      "position.output"}));
   ExpectRunIsTheProgramsCsv(run, ProgramCsv(path, {"time.end=0.5"}));
 }
 
@@ -137,12 +137,12 @@ TEST(RunColumns, ASingleActuatorSeenAsItsNetwork) {
   const Scenario scenario = LoadScenario(testing::ScenarioPath("concentric.yaml"));
   const RunColumns view(scenario, scenario.Build(), ScenarioForm::kNetwork);
   EXPECT_THAT(view.names(),
-              ::testing::ElementsAre(
-                  "t", "ground.position", "ground.velocity", "tip.position", "tip.velocity",
-                  "actuator.length", "actuator.tension", "actuator.shortening_velocity",
-                  "actuator.activation", "actuator.tension_passive", "actuator.tension_active",
-                  "actuator.phase", "damper.length", "damper.tension", "spring.length",
-                  "spring.tension", "tip.load"));
+              ::testing::ElementsAre("t", "ground.position", "ground.velocity", "tip.position",
+                                     "tip.velocity", "actuator.length", "actuator.tension",
+                                     "actuator.shortening_velocity", "actuator.activation",
+                                     "actuator.tension_passive", "actuator.tension_active",
+                                     "actuator.phase", "damper.length", "damper.tension",
+                                     "spring.length", "spring.tension", "tip.load"));
 }
 
 }  // namespace

@@ -22,7 +22,8 @@ using testing::ScenarioPath;
 // The trajectory CSV that the `musclesim run` program writes for `arguments`.
 CsvTable RunProgram(const std::string& arguments, const std::string& name) {
   const std::string out = testing::WriteTempFile(name, "");
-  const std::string command = std::string(MUSCLESIM_BINARY) + " run " + arguments + " --quiet -o " + out;
+  const std::string command =
+      std::string(MUSCLESIM_BINARY) + " run " + arguments + " --quiet -o " + out;
   EXPECT_EQ(std::system(command.c_str()), 0) << command;
   return ReadCsv(out);
 }
@@ -52,8 +53,8 @@ TEST(RunScenario, ValueChangedInCodeEqualsTheSameValueSetOnTheCommandLine) {
   // the step load's value after the switch-on, written into the network's load on the tip
   scenario.loads.at(0).load.force.after = 55.0;
   const RecordedRun result = RunScenario(scenario);
-  ExpectSameTrajectory(result, RunProgram(ScenarioPath("concentric.yaml") +
-                                              " --set load[0].after=55", "set.csv"));
+  ExpectSameTrajectory(
+      result, RunProgram(ScenarioPath("concentric.yaml") + " --set load[0].after=55", "set.csv"));
 }
 
 TEST(RunScenario, ABadOverrideIsAnInputError) {
@@ -64,8 +65,7 @@ TEST(RunScenario, ABadOverrideIsAnInputError) {
 TEST(RunScenario, CanonicalScenariosDoWhatTheReadmeSays) {
   // concentric: "a 40 N load [...] applied with full activation at 0.05 s: the actuator
   // shortens where T(x, v, 1) = 40 N, slowing as it leaves L_opt"
-  const RunResult concentric =
-      testing::RunActuator(LoadScenario(ScenarioPath("concentric.yaml")));
+  const RunResult concentric = testing::RunActuator(LoadScenario(ScenarioPath("concentric.yaml")));
   ASSERT_EQ(concentric.stats.status, RunStatus::kCompleted);
   double previous_v = INFINITY;
   for (const TrajectoryPoint& p : concentric.trajectory) {
@@ -82,8 +82,7 @@ TEST(RunScenario, CanonicalScenariosDoWhatTheReadmeSays) {
 
   // eccentric: "a 150 N load: it lengthens (v < 0) with the active tension above f_iso,
   // until the passive element holds the load"
-  const RunResult eccentric =
-      testing::RunActuator(LoadScenario(ScenarioPath("eccentric.yaml")));
+  const RunResult eccentric = testing::RunActuator(LoadScenario(ScenarioPath("eccentric.yaml")));
   ASSERT_EQ(eccentric.stats.status, RunStatus::kCompleted);
   // (when the passive element catches it, it rebounds for ~10 ms before settling)
   double peak_active = 0.0;

@@ -89,8 +89,8 @@ TEST(SensitivityElements, Damper) {
 }
 
 TEST(SensitivityElements, NodeMasses) {
-  ExpectSensitivitiesMatchDifferences(
-      Network(), {}, {At("nodes[1].mass", 0.02), At("nodes[2].mass", 0.1)});
+  ExpectSensitivitiesMatchDifferences(Network(), {},
+                                      {At("nodes[1].mass", 0.02), At("nodes[2].mass", 0.1)});
 }
 
 }  // namespace

@@ -36,9 +36,8 @@ constexpr const char* kModelBlock = R"(  f_iso: 100.0
 // 0.211 s, and the length passes the slack length at 0.190 s: rows every 25 ms are 5 ms or
 // more from each. Both sides at rtol 1e-12, atol 1e-14.
 std::string SingleActuator() {
-  return testing::WriteTempFile("single.yaml",
-                                std::string("name: initial_sensitivities\nmodel:\n") +
-                                    kModelBlock + R"(
+  return testing::WriteTempFile(
+      "single.yaml", std::string("name: initial_sensitivities\nmodel:\n") + kModelBlock + R"(
 actuator: {mass: 0.1, damping: 0.0, stiffness: 50.0, rest_length: 0.1}
 initial: {length: 0.1, lengthening_rate: 0.02, activation: 0.3}
 excitation: {type: sine, offset: 0.5, amplitude: 0.4, frequency: 5.0, phase: 0.0}
@@ -93,15 +92,13 @@ TEST(SensitivityInitialState, NetworkNodePositionAndVelocity) {
 }
 
 TEST(SensitivityInitialState, NetworkInitialActivation) {
-  ExpectSensitivitiesMatchDifferences(Network(), {},
-                                      {At("elements[0].initial_activation", 0.4)});
+  ExpectSensitivitiesMatchDifferences(Network(), {}, {At("elements[0].initial_activation", 0.4)});
 }
 
 TEST(SensitivityActuator, MassSpringAndRestLength) {
   ExpectSensitivitiesMatchDifferences(
       SingleActuator(), {},
-      {At("actuator.mass", 0.1), At("actuator.stiffness", 50.0),
-       At("actuator.rest_length", 0.1)});
+      {At("actuator.mass", 0.1), At("actuator.stiffness", 50.0), At("actuator.rest_length", 0.1)});
 }
 
 TEST(SensitivityActuator, DampingAtItsBoundOfZero) {
@@ -113,10 +110,9 @@ TEST(SensitivityActuator, DampingAtItsBoundOfZero) {
 }
 
 TEST(SensitivityActivationDynamics, SingleActuatorTimeConstants) {
-  ExpectSensitivitiesMatchDifferences(
-      SingleActuator(), {},
-      {At("activation_dynamics.tau_activation", 0.015),
-       At("activation_dynamics.tau_deactivation", 0.05)});
+  ExpectSensitivitiesMatchDifferences(SingleActuator(), {},
+                                      {At("activation_dynamics.tau_activation", 0.015),
+                                       At("activation_dynamics.tau_deactivation", 0.05)});
 }
 
 TEST(SensitivityActivationDynamics, SingleActuatorExcitationLevels) {

@@ -68,10 +68,9 @@ TEST(SensitivityLoads, RampLevels) {
 }
 
 TEST(SensitivityLoads, Sine) {
-  ExpectSensitivitiesMatchDifferences(
-      Scenario(), {},
-      {At("load[3].offset", 5.0), At("load[3].amplitude", 10.0), At("load[3].frequency", 4.0),
-       At("load[3].phase", 0.2)});
+  ExpectSensitivitiesMatchDifferences(Scenario(), {},
+                                      {At("load[3].offset", 5.0), At("load[3].amplitude", 10.0),
+                                       At("load[3].frequency", 4.0), At("load[3].phase", 0.2)});
 }
 
 TEST(SensitivityLoads, PulseLevels) {
@@ -87,8 +86,8 @@ TEST(SensitivityLoads, TableValues) {
 }
 
 TEST(SensitivityLoads, Spring) {
-  ExpectSensitivitiesMatchDifferences(
-      Scenario(), {}, {At("load[6].stiffness", 500.0), At("load[6].anchor", 0.1)});
+  ExpectSensitivitiesMatchDifferences(Scenario(), {},
+                                      {At("load[6].stiffness", 500.0), At("load[6].anchor", 0.1)});
 }
 
 TEST(SensitivityLoads, Mass) {

@@ -69,8 +69,8 @@ std::string SharedModelNetwork() {
     indented += "  " + model.substr(at, end - at + 1);
     at = end + 1;
   }
-  return testing::WriteTempFile(
-      "network.yaml", "name: shared_model\nmodels:\n  muscle:\n" + indented + R"(
+  return testing::WriteTempFile("network.yaml",
+                                "name: shared_model\nmodels:\n  muscle:\n" + indented + R"(
 nodes:
   - {name: wall_a, fixed: 0.0}
   - {name: load, mass: 0.1, position: 0.1036, velocity: 0.0}
@@ -108,10 +108,10 @@ const std::vector<std::pair<std::string, double>> kGaussians = {
     {"active_length.gaussians[2].width", 3009.3607405177986},
     {"active_length.gaussians[2].center", 0.1301541244400391}};
 const std::vector<std::pair<std::string, double>> kSigma = {{"active_length.sigma", 1.0}};
-const std::vector<std::pair<std::string, double>> kVelocity = {
-    {"velocity.v_max", 1.0}, {"velocity.epsilon", 1e-2}};
-const std::vector<std::pair<std::string, double>> kEccentric = {
-    {"velocity.eccentric.v_max", 0.5}, {"velocity.eccentric.limit", 1.8}};
+const std::vector<std::pair<std::string, double>> kVelocity = {{"velocity.v_max", 1.0},
+                                                               {"velocity.epsilon", 1e-2}};
+const std::vector<std::pair<std::string, double>> kEccentric = {{"velocity.eccentric.v_max", 0.5},
+                                                                {"velocity.eccentric.limit", 1.8}};
 
 // f_peak, the maximum of f over L_opt, is interior in the file (near 0.1006 m), where the
 // ends of L_opt do not move it. Two ranges put it at an end: [0.090, 0.098] below the
@@ -187,12 +187,14 @@ TEST(SensitivitySharedModel, Sigma) {
 }
 
 TEST(SensitivitySharedModel, OptimalRangeWithThePeakAtItsUpperEnd) {
-  ExpectSensitivitiesMatchDifferences(SharedModelNetwork(), RangeOverrides(kShared, kPeakAtUpperEnd),
+  ExpectSensitivitiesMatchDifferences(SharedModelNetwork(),
+                                      RangeOverrides(kShared, kPeakAtUpperEnd),
                                       RangeEnds(kShared, 0.090, 0.098));
 }
 
 TEST(SensitivitySharedModel, OptimalRangeWithThePeakAtItsLowerEnd) {
-  ExpectSensitivitiesMatchDifferences(SharedModelNetwork(), RangeOverrides(kShared, kPeakAtLowerEnd),
+  ExpectSensitivitiesMatchDifferences(SharedModelNetwork(),
+                                      RangeOverrides(kShared, kPeakAtLowerEnd),
                                       RangeEnds(kShared, 0.102, 0.110));
 }
 

@@ -18,9 +18,9 @@
 namespace musclesim {
 namespace {
 
-using ::testing::HasSubstr;
 using testing::At;
 using testing::ExpectSensitivitiesMatchDifferences;
+using ::testing::HasSubstr;
 using testing::RunFileWithSensitivities;
 
 // A concentric contraction without kinks: the symmetric velocity curve (no eccentric block,
@@ -118,9 +118,9 @@ TEST(SensitivityTable, NamesItsParametersValuesAndSources) {
   EXPECT_EQ(table.parameter_values, (std::vector<double>{100.0, 0.25}));
   EXPECT_EQ(table.sources, (std::vector<DerivativeSource>{DerivativeSource::kAnalytic,
                                                           DerivativeSource::kDifferenceQuotient}));
-  EXPECT_EQ(table.columns, (std::vector<std::string>{"length", "shortening_velocity",
-                                                     "tension_passive", "tension_active",
-                                                     "tension_total"}));
+  EXPECT_EQ(table.columns,
+            (std::vector<std::string>{"length", "shortening_velocity", "tension_passive",
+                                      "tension_active", "tension_total"}));
   // rows on the scenario's grid, every 20 ms from 0 to 0.2 s
   ASSERT_EQ(table.rows(), 11u);
   EXPECT_EQ(table.times.front(), 0.0);
@@ -134,8 +134,8 @@ TEST(SensitivityTable, TheActuatorsDamperAndSpringAreClosedForms) {
   // network's damper and spring elements (docs/model.md 7.4), whose df/dp has a closed form;
   // its mass, a node's, is a difference quotient
   const SensitivityTable table = RunWithSensitivities(
-      LoadScenario(Single()), {"actuator.damping", "actuator.stiffness", "actuator.rest_length",
-                               "actuator.mass"});
+      LoadScenario(Single()),
+      {"actuator.damping", "actuator.stiffness", "actuator.rest_length", "actuator.mass"});
   EXPECT_EQ(table.sources,
             (std::vector<DerivativeSource>{DerivativeSource::kAnalytic, DerivativeSource::kAnalytic,
                                            DerivativeSource::kAnalytic,

@@ -61,8 +61,7 @@ void ExpectTrajectory(const ActuatorSystem& system, double length, double rate, 
   for (const TrajectoryPoint& p : run.trajectory) {
     EXPECT_NEAR(p.sample.length, x(p.t), kAgreement * length_scale) << "t = " << p.t;
     // v = -xdot (section 1)
-    EXPECT_NEAR(p.sample.shortening_velocity, -xdot(p.t), kAgreement * rate_scale)
-        << "t = " << p.t;
+    EXPECT_NEAR(p.sample.shortening_velocity, -xdot(p.t), kAgreement * rate_scale) << "t = " << p.t;
   }
 }
 
@@ -70,11 +69,11 @@ void ExpectTrajectory(const ActuatorSystem& system, double length, double rate, 
 // l0 + y0. With omega0 = sqrt(k / m) and zeta = c / (2 sqrt(k m)), y = x - l0 obeys
 // y'' + 2 zeta omega0 y' + omega0^2 y = 0, y(0) = y0, y'(0) = 0.
 struct Oscillator {
-  double mass = 0.1;         // [kg]
+  double mass = 0.1;          // [kg]
   double stiffness = 1000.0;  // [N/m]: omega0 = 100 rad/s, a period of 63 ms
-  double damping = 0.0;      // [N s/m]
-  double rest_length = 0.1;  // [m]
-  double start = 0.11;       // x(0) [m], 1 cm from the rest length
+  double damping = 0.0;       // [N s/m]
+  double rest_length = 0.1;   // [m]
+  double start = 0.11;        // x(0) [m], 1 cm from the rest length
 
   ActuatorSystem System() const {
     return ActuatorSystem(SlackModel(), {mass, damping, stiffness, rest_length},
@@ -91,8 +90,8 @@ TEST(ClosedForm, UnderDampedSpringDamperOscillation) {
   const double wd = w0 * std::sqrt(1.0 - z * z), decay = z * w0;
   // y = y0 e^(-zeta w0 t) (cos wd t + (zeta w0 / wd) sin wd t)
   const auto x = [&](double t) {
-    return o.rest_length + y0 * std::exp(-decay * t) *
-                               (std::cos(wd * t) + decay / wd * std::sin(wd * t));
+    return o.rest_length +
+           y0 * std::exp(-decay * t) * (std::cos(wd * t) + decay / wd * std::sin(wd * t));
   };
   // y' = -y0 (w0^2 / wd) e^(-zeta w0 t) sin wd t
   const auto xdot = [&](double t) {

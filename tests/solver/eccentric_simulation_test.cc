@@ -84,8 +84,8 @@ double SteadyVelocity(double f_iso_f_l, double load) {
     const double eps = 1e-3;
     const double phi_c = v * std::pow(v * v + eps * eps, (1.0 / 3.0 - 1.0) / 2.0);
     if (v >= 0) return 1.0 - phi_c;  // v_max = 1 m/s, n = 3
-    const double psi = -v * std::pow(v * v + eps * eps, (1.0 / kNE - 1.0) / 2.0) /
-                       std::pow(kVMaxE, 1.0 / kNE);
+    const double psi =
+        -v * std::pow(v * v + eps * eps, (1.0 / kNE - 1.0) / 2.0) / std::pow(kVMaxE, 1.0 / kNE);
     return 1.0 + (kLimit - 1.0) * std::tanh(psi / (kLimit - 1.0));
   };
   double lo = -10.0, hi = 10.0;

@@ -64,10 +64,10 @@ bool Same(const std::vector<double>& a, const std::vector<double>& b) {
   for (std::size_t e = 0; e < a.elements.size(); ++e) {
     const ElementSample& x = a.elements[e];
     const ElementSample& y = b.elements[e];
-    if (!Same({x.length, x.lengthening_rate, x.tension, x.activation, x.excitation,
-               x.parts.passive, x.parts.active, x.parts.total},
-              {y.length, y.lengthening_rate, y.tension, y.activation, y.excitation,
-               y.parts.passive, y.parts.active, y.parts.total})) {
+    if (!Same({x.length, x.lengthening_rate, x.tension, x.activation, x.excitation, x.parts.passive,
+               x.parts.active, x.parts.total},
+              {y.length, y.lengthening_rate, y.tension, y.activation, y.excitation, y.parts.passive,
+               y.parts.active, y.parts.total})) {
       return ::testing::AssertionFailure() << "element " << e << " differs";
     }
   }
@@ -84,8 +84,8 @@ bool Same(const std::vector<double>& a, const std::vector<double>& b) {
 
 struct Case {
   const char* name;
-  const char* file;                 // in scenarios/
-  std::vector<std::string> sets;    // --set, to keep the runs short
+  const char* file;               // in scenarios/
+  std::vector<std::string> sets;  // --set, to keep the runs short
 };
 
 class OneAdvance : public ::testing::TestWithParam<Case> {};
@@ -219,9 +219,9 @@ TEST(IntegrationSession, EachPieceRecordsItsGridFromItsOwnStart) {
   // an interval: a row at the piece's start, every interval from there, the last at its end
   session.AdvanceTo(0.1, OutputGrid{0.03, {}});
   session.AdvanceTo(0.2, OutputGrid{0.03, {}});
-  EXPECT_THAT(rows.times, ::testing::ElementsAre(0.0, 0.03, 2 * 0.03, 3 * 0.03, 0.1,  //
-                                                 0.1, 0.1 + 0.03, 0.1 + 2 * 0.03,
-                                                 0.1 + 3 * 0.03, 0.2));
+  EXPECT_THAT(rows.times,
+              ::testing::ElementsAre(0.0, 0.03, 2 * 0.03, 3 * 0.03, 0.1,  //
+                                     0.1, 0.1 + 0.03, 0.1 + 2 * 0.03, 0.1 + 3 * 0.03, 0.2));
   // listed times: these rows only, the piece's start among them only if listed
   rows.times.clear();
   session.AdvanceTo(0.3, OutputGrid{0.0, {0.25, 0.3}});
@@ -236,14 +236,14 @@ TEST(IntegrationSession, EachPieceRecordsItsGridFromItsOwnStart) {
 // underdamped closed form about the equilibrium 0.12 m, as network_simulation_test has it.
 double MsdPosition(double t) {
   const double w = std::sqrt(testing::kMsdStiffness / testing::kMsdMass);
-  const double zeta = testing::kMsdDamping / (2.0 * std::sqrt(testing::kMsdStiffness *
-                                                               testing::kMsdMass));
+  const double zeta =
+      testing::kMsdDamping / (2.0 * std::sqrt(testing::kMsdStiffness * testing::kMsdMass));
   const double wd = w * std::sqrt(1.0 - zeta * zeta);
   const double equilibrium = testing::kMsdRestLength + testing::kMsdLoad / testing::kMsdStiffness;
   const double amplitude = testing::kMsdStart - equilibrium;
-  return equilibrium + amplitude * std::exp(-zeta * w * t) *
-                           (std::cos(wd * t) + zeta / std::sqrt(1.0 - zeta * zeta) *
-                                                   std::sin(wd * t));
+  return equilibrium +
+         amplitude * std::exp(-zeta * w * t) *
+             (std::cos(wd * t) + zeta / std::sqrt(1.0 - zeta * zeta) * std::sin(wd * t));
 }
 
 TEST(IntegrationSession, ALimitEndsItWhereTheClosedFormReachesIt) {

@@ -71,8 +71,8 @@ void ExpectClosedForm(double damping) {
   const NetworkRunResult run = RunCompleted(experiment);
   ASSERT_EQ(run.times.size(), 2001u);  // 2 s every 1 ms
   const int load = NodeIndex(experiment.system, "load");
-  const Oscillator exact{testing::kMsdMass, testing::kMsdStiffness, damping,
-                         testing::kMsdRestLength, testing::kMsdLoad, testing::kMsdStart};
+  const Oscillator exact{testing::kMsdMass,       testing::kMsdStiffness, damping,
+                         testing::kMsdRestLength, testing::kMsdLoad,      testing::kMsdStart};
   for (std::size_t i = 0; i < run.times.size(); ++i) {
     double x, xdot;
     exact.At(run.times[i], x, xdot);
@@ -180,8 +180,7 @@ TEST(NetworkSimulation, MusculotendonJunctionBalancesTendonMuscleAndInertia) {
     // rtol 1e-10 (3e-11 m of tendon at 1e4 N/m, 1e-11 m/s at dT/dv ~ 1e4 N s/m: 3e-7 N)
     const double third =
         (v(i + 2) - 2.0 * v(i + 1) + 2.0 * v(i - 1) - v(i - 2)) / (2.0 * h * h * h);
-    const double tolerance =
-        2.0 * testing::kJunctionMass * h * h / 6.0 * std::abs(third) + 1e-6;
+    const double tolerance = 2.0 * testing::kJunctionMass * h * h / 6.0 * std::abs(third) + 1e-6;
     EXPECT_NEAR(inertia, gap, tolerance) << t;
     largest_inertia = std::max(largest_inertia, std::abs(inertia));
     ++checked;
@@ -208,8 +207,8 @@ double EquilibriumLength(const TensionModel& model, double u, double force) {
 }
 
 // Every actuator's length in sample k of a chain's run, in the chain's order.
-std::vector<double> SegmentLengths(const NetworkExperiment& experiment,
-                                   const NetworkRunResult& run, std::size_t k) {
+std::vector<double> SegmentLengths(const NetworkExperiment& experiment, const NetworkRunResult& run,
+                                   std::size_t k) {
   std::vector<double> lengths;
   const std::vector<Element>& elements = experiment.system.elements();
   for (std::size_t e = 0; e < elements.size(); ++e) {

@@ -18,10 +18,10 @@ namespace musclesim {
 namespace {
 
 using testing::Experiment;
+using ::testing::HasSubstr;
 using testing::Outcome;
 using testing::ScenarioPath;
 using testing::Simulate;
-using ::testing::HasSubstr;
 
 using testing::FlatModel;
 
@@ -104,8 +104,9 @@ double LengthError(const RunResult& a, const RunResult& b) {
   double error = 0.0;
   for (std::size_t i = 0; i < std::min(a.trajectory.size(), b.trajectory.size()); ++i) {
     EXPECT_EQ(a.trajectory[i].t, b.trajectory[i].t);
-    error = std::max(error, std::abs(a.trajectory[i].sample.length - b.trajectory[i].sample.length) /
-                                std::abs(b.trajectory[i].sample.length));
+    error =
+        std::max(error, std::abs(a.trajectory[i].sample.length - b.trajectory[i].sample.length) /
+                            std::abs(b.trajectory[i].sample.length));
   }
   return error;
 }
@@ -148,9 +149,8 @@ TEST(Simulation, BdfAndAdamsAgree) {
 TEST(Simulation, AnalyticAndDifferenceQuotientJacobiansGiveOneTrajectory) {
   for (const Experiment& experiment : {testing::Concentric(), testing::Isometric()}) {
     const RunResult analytic = RunWith(experiment, 1e-8, 1e-11);
-    const RunResult quotient =
-        RunWith(experiment, 1e-8, 1e-11, IntegrationMethod::kBdf,
-                JacobianKind::kDifferenceQuotient);
+    const RunResult quotient = RunWith(experiment, 1e-8, 1e-11, IntegrationMethod::kBdf,
+                                       JacobianKind::kDifferenceQuotient);
     // the Jacobian only steers Newton's iteration: both runs meet rtol 1e-8, so they agree
     // to their global errors (3e-9 and 2e-10 apart here), bounded by 100 rtol = 1e-6
     EXPECT_LT(LengthError(analytic, quotient), 1e-6);
@@ -304,8 +304,14 @@ TEST(Simulation, ReuseAndThreadsGiveIdenticalRuns) {
   run(sim, eccentric);
   const std::vector<TrajectoryPoint> again = run(sim, concentric);  // CVodeReInit, same memory
   std::vector<TrajectoryPoint> threaded[2];
-  std::thread a([&] { Simulation s; threaded[0] = run(s, concentric); });
-  std::thread b([&] { Simulation s; threaded[1] = run(s, concentric); });
+  std::thread a([&] {
+    Simulation s;
+    threaded[0] = run(s, concentric);
+  });
+  std::thread b([&] {
+    Simulation s;
+    threaded[1] = run(s, concentric);
+  });
   a.join();
   b.join();
   const std::vector<TrajectoryPoint>* others[] = {&again, &threaded[0], &threaded[1]};

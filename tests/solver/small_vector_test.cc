@@ -88,9 +88,9 @@ TEST_P(SmallVectorOps, IsSmallVectorTellsOursAndClonesFromSerial) {
 
 TEST_P(SmallVectorOps, LinearSumMatchesSerialForEveryCaseAndAlias) {
   // serial singles out a or b = +-1, a = b and a = -b, and z aliasing x or y
-  const double coefficients[][2] = {{1, 1},  {1, -1},    {-1, 1},   {-1, -1},  {1, 0.3},
-                                    {0.3, 1}, {-1, 0.7}, {0.7, -1}, {0.4, 0.4}, {0.4, -0.4},
-                                    {2.5, -0.3}, {0, 0}};
+  const double coefficients[][2] = {{1, 1},     {1, -1},     {-1, 1},     {-1, -1},
+                                    {1, 0.3},   {0.3, 1},    {-1, 0.7},   {0.7, -1},
+                                    {0.4, 0.4}, {0.4, -0.4}, {2.5, -0.3}, {0, 0}};
   for (const auto& [a, b] : coefficients) {
     for (int alias = 0; alias < 3; ++alias) {
       VectorPair& x = Random(-2, 2);
@@ -253,7 +253,8 @@ TEST_P(SmallVectorOps, EmptyCloneWorksOnAMatrixColumnAsTheDifferenceJacobianUses
   EXPECT_EQ(N_VGetArrayPointer(column), SUNDenseMatrix_Column(matrix, j));
   N_VLinearSum(2.0, x.small, -2.0, y.small, column);
   for (int i = 0; i < n_; ++i) {
-    const double expected = 2.0 * (N_VGetArrayPointer(x.serial)[i] - N_VGetArrayPointer(y.serial)[i]);
+    const double expected =
+        2.0 * (N_VGetArrayPointer(x.serial)[i] - N_VGetArrayPointer(y.serial)[i]);
     EXPECT_DOUBLE_EQ(SM_ELEMENT_D(matrix, i, j), expected);
   }
   N_VDestroy(column);  // the column stays the matrix's
@@ -358,8 +359,8 @@ TEST_F(SmallDenseSolver, SingularMatrixGivesRecoverableFactorFailure) {
   Eigen::MatrixXd repeated_row = RandomMatrix(16);
   repeated_row.row(11) = repeated_row.row(5);
 
-  for (const Eigen::MatrixXd& a : {Eigen::MatrixXd(dependent_rows), Eigen::MatrixXd(zero_column),
-                                   repeated_row}) {
+  for (const Eigen::MatrixXd& a :
+       {Eigen::MatrixXd(dependent_rows), Eigen::MatrixXd(zero_column), repeated_row}) {
     ASSERT_LT(a.fullPivLu().rank(), a.rows());  // singular, says Eigen
     int flag = -1;
     sunindextype last_flag = 0;

@@ -29,12 +29,11 @@ constexpr double kMass = 0.1, kStiffness = 1000.0, kDamping = 10.0;
 constexpr ActivationDynamics kDynamics{0.015, 0.05};
 
 NetworkSystem Rig(Element muscle, std::vector<Controller> controllers = {}) {
-  return NetworkSystem({Node::Fixed("wall", 0.0), Node::Free("load", kMass, 0.1),
-                        Node::Fixed("wall_b", 0.2)},
-                       {std::move(muscle),
-                        Element::Spring("spring", "load", "wall_b", kStiffness, 0.1),
-                        Element::Damper("damper", "load", "wall_b", kDamping)},
-                       {}, std::move(controllers));
+  return NetworkSystem(
+      {Node::Fixed("wall", 0.0), Node::Free("load", kMass, 0.1), Node::Fixed("wall_b", 0.2)},
+      {std::move(muscle), Element::Spring("spring", "load", "wall_b", kStiffness, 0.1),
+       Element::Damper("damper", "load", "wall_b", kDamping)},
+      {}, std::move(controllers));
 }
 
 std::shared_ptr<const TensionModel> Model() {
@@ -112,15 +111,14 @@ void ExpectSameRun(const NetworkRunResult& reference, Stepper& stepper, double t
     ASSERT_EQ(stepper.time(), reference.times[row]);
     const NetworkSample& a = stepper.sample();
     const NetworkSample& b = reference.samples[row];
-    ASSERT_NEAR(a.position[1], b.position[1],
-                kAgreement * (o.rtol * scale.position + o.atol)) << "t = " << stepper.time();
-    ASSERT_NEAR(a.velocity[1], b.velocity[1],
-                kAgreement * (o.rtol * scale.velocity + o.atol)) << "t = " << stepper.time();
+    ASSERT_NEAR(a.position[1], b.position[1], kAgreement * (o.rtol * scale.position + o.atol))
+        << "t = " << stepper.time();
+    ASSERT_NEAR(a.velocity[1], b.velocity[1], kAgreement * (o.rtol * scale.velocity + o.atol))
+        << "t = " << stepper.time();
     // a tension is stiffness x position: its error scales with the position's
     ASSERT_NEAR(a.elements[1].tension, b.elements[1].tension,
                 kAgreement * kStiffness * (o.rtol * scale.position + o.atol));
-    ASSERT_NEAR(a.elements[0].activation, b.elements[0].activation,
-                kAgreement * (o.rtol + o.atol));
+    ASSERT_NEAR(a.elements[0].activation, b.elements[0].activation, kAgreement * (o.rtol + o.atol));
   }
 }
 
@@ -190,8 +188,7 @@ void ExpectSetActivationIsAStep(NetworkSystem (*rig)(Waveform)) {
         << "t = " << stepper.time();
     ASSERT_NEAR(a.velocity[1], b.velocity[1], kAgreement * (o.rtol * scale.velocity + o.atol))
         << "t = " << stepper.time();
-    ASSERT_NEAR(a.elements[0].activation, b.elements[0].activation,
-                kAgreement * (o.rtol + o.atol));
+    ASSERT_NEAR(a.elements[0].activation, b.elements[0].activation, kAgreement * (o.rtol + o.atol));
   }
   EXPECT_EQ(stepper.system().elements()[0].kind, ElementKind::kActuator);
 }

@@ -47,8 +47,8 @@ inline SolverOptions Tolerances(double rtol, double atol) {
 // length (0.02 m short of the equilibrium 0.12 m). `damping` [N s/m]: 0.5 in the file
 // (damping ratio 0.05, underdamped); 20 makes it overdamped (ratio 2). 2 s every 1 ms at
 // rtol 1e-12, atol 1e-14.
-inline constexpr double kMsdMass = 0.5, kMsdStiffness = 50.0, kMsdRestLength = 0.1,
-                        kMsdLoad = 1.0, kMsdStart = 0.1, kMsdDamping = 0.5;
+inline constexpr double kMsdMass = 0.5, kMsdStiffness = 50.0, kMsdRestLength = 0.1, kMsdLoad = 1.0,
+                        kMsdStart = 0.1, kMsdDamping = 0.5;
 
 inline NetworkExperiment MassSpringDamper(double damping = kMsdDamping) {
   return {NetworkSystem({Node::Fixed("wall", 0.0), Node::Free("load", kMsdMass, kMsdStart)},
@@ -105,10 +105,10 @@ inline NetworkSystem MusculotendonUnit(Waveform end_motion, double activation,
   if (fibre_damping > 0.0) {
     elements.push_back(Element::Damper("fibre_damping", "wall", "junction", fibre_damping));
   }
-  return NetworkSystem({Node::Fixed("wall", 0.0),
-                        Node::Free("junction", kJunctionMass, kJunctionStart),
-                        Node::Prescribed("end", std::move(end_motion))},
-                       std::move(elements));
+  return NetworkSystem(
+      {Node::Fixed("wall", 0.0), Node::Free("junction", kJunctionMass, kJunctionStart),
+       Node::Prescribed("end", std::move(end_motion))},
+      std::move(elements));
 }
 
 // scenarios/musculotendon_isokinetic.yaml: the unit fully active, its end held at 0.3 m
@@ -157,11 +157,10 @@ inline NetworkExperiment Chain(int n, LinearSolverKind linear_solver = LinearSol
   for (int i = 1; i <= n; ++i) {
     // 145 i / 1000 rounds once, to the double the file's decimal i * 0.145 reads as
     nodes.push_back(Node::Free(ChainNode(i), kChainMass, 145.0 * i / 1000.0));
-    elements.push_back(Element::Actuator(Numbered("muscle", i), ChainNode(i - 1),
-                                         ChainNode(i), model,
-                                         Waveform::Constant(kChainActivation)));
-    elements.push_back(Element::Damper(Numbered("damper", i), ChainNode(i - 1),
-                                       ChainNode(i), kChainDamping));
+    elements.push_back(Element::Actuator(Numbered("muscle", i), ChainNode(i - 1), ChainNode(i),
+                                         model, Waveform::Constant(kChainActivation)));
+    elements.push_back(
+        Element::Damper(Numbered("damper", i), ChainNode(i - 1), ChainNode(i), kChainDamping));
   }
   SolverOptions options = Tolerances(1e-8, 1e-12);
   options.linear_solver = linear_solver;

@@ -23,13 +23,13 @@ inline NetworkExperiment ForceRegulation(Waveform reference = Waveform::Step(0.0
   std::vector<Controller> controllers = {
       Controller::Pid("force", {"muscle", "", MeasuredQuantity::kTension}, std::move(reference),
                       {kForceKp, kForceKi, 0.0}, "muscle")};
-  return {NetworkSystem({Node::Fixed("wall", 0.0), Node::Free("tip", 0.05, 0.1),
-                         Node::Fixed("anchor", 0.2)},
-                        {Element::ControlledActuator("muscle", "wall", "tip",
-                                                     SharedCanonicalModel(), dynamics),
-                         Element::Spring("transducer", "tip", "anchor", 1e5, 0.1)},
-                        {}, std::move(controllers)),
-          Span(1.0, 1e-3), Tolerances(1e-10, 1e-12)};
+  return {
+      NetworkSystem(
+          {Node::Fixed("wall", 0.0), Node::Free("tip", 0.05, 0.1), Node::Fixed("anchor", 0.2)},
+          {Element::ControlledActuator("muscle", "wall", "tip", SharedCanonicalModel(), dynamics),
+           Element::Spring("transducer", "tip", "anchor", 1e5, 0.1)},
+          {}, std::move(controllers)),
+      Span(1.0, 1e-3), Tolerances(1e-10, 1e-12)};
 }
 
 // The antagonist pair of scenarios/{position_tracking, stiffness_modulation}.yaml: the
@@ -46,14 +46,14 @@ inline std::shared_ptr<const TensionModel> PairModel() {
 
 inline NetworkSystem ControlledPair(Waveform reference, PidGains gains, Waveform level,
                                     std::vector<NodeLoad> loads = {}) {
-  return NetworkSystem({Node::Fixed("wall_a", 0.0), Node::Free("load", 1.0, 0.07),
-                        Node::Fixed("wall_b", 0.14)},
-                       {Element::ControlledActuator("flexor", "wall_a", "load", PairModel()),
-                        Element::ControlledActuator("extensor", "load", "wall_b", PairModel())},
-                       std::move(loads),
-                       {Controller::CoContracting("position", {"", "load", MeasuredQuantity::kPosition},
-                                                  std::move(reference), gains,
-                                                  {"extensor", "flexor", std::move(level)})});
+  return NetworkSystem(
+      {Node::Fixed("wall_a", 0.0), Node::Free("load", 1.0, 0.07), Node::Fixed("wall_b", 0.14)},
+      {Element::ControlledActuator("flexor", "wall_a", "load", PairModel()),
+       Element::ControlledActuator("extensor", "load", "wall_b", PairModel())},
+      std::move(loads),
+      {Controller::CoContracting("position", {"", "load", MeasuredQuantity::kPosition},
+                                 std::move(reference), gains,
+                                 {"extensor", "flexor", std::move(level)})});
 }
 
 // scenarios/position_tracking.yaml: the load follows 0.07 + 0.005 sin(2 pi t) m under PID
@@ -73,10 +73,10 @@ inline NetworkExperiment PositionTracking() {
 inline constexpr double kStiffKp = 20.0, kStiffKd = 1.0, kStiffPulse = 2.0;
 
 inline NetworkExperiment StiffnessModulation() {
-  return {ControlledPair(Waveform::Constant(0.07), {kStiffKp, 0.0, kStiffKd},
-                         Waveform::Table({{0.0, 0.1}, {0.999, 0.1}, {1.0, 0.4}, {1.999, 0.4},
-                                          {2.0, 0.7}}),
-                         {{"load", Load::Force(Waveform::Pulses(0.5, 1.0, 0.4, 0.0, kStiffPulse))}}),
+  return {ControlledPair(
+              Waveform::Constant(0.07), {kStiffKp, 0.0, kStiffKd},
+              Waveform::Table({{0.0, 0.1}, {0.999, 0.1}, {1.0, 0.4}, {1.999, 0.4}, {2.0, 0.7}}),
+              {{"load", Load::Force(Waveform::Pulses(0.5, 1.0, 0.4, 0.0, kStiffPulse))}}),
           Span(3.0, 1e-3), Tolerances(1e-8, 1e-12)};
 }
 

@@ -81,8 +81,7 @@ inline void ExpectJacobianMatchesDifferences(const NetworkSystem& system, double
       if (in_pattern[Dense(n, i, j)]) continue;
       // f_i does not depend on y_j: both evaluations do the same operations on the same
       // numbers, so the difference is exactly zero
-      EXPECT_EQ(fd[Dense(n, i, j)], 0.0)
-          << "entry (" << i << ", " << j << ") outside the pattern";
+      EXPECT_EQ(fd[Dense(n, i, j)], 0.0) << "entry (" << i << ", " << j << ") outside the pattern";
     }
   }
 }

@@ -24,8 +24,8 @@ namespace musclesim::testing {
 // parallel processes, which must not share files) and `name`.
 inline std::string WriteTempFile(const std::string& name, const std::string& text) {
   const std::string path = ::testing::TempDir() +
-                           ::testing::UnitTest::GetInstance()->current_test_info()->name() +
-                           "_" + name;
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+                           name;
   std::ofstream(path) << text;
   return path;
 }
@@ -51,9 +51,8 @@ std::string InputErrorOf(const std::string& path, Load load) {
 // indented by `indent` spaces.
 inline std::string TestModelKeys(int indent) {
   const std::string pad(static_cast<std::size_t>(indent), ' ');
-  return pad + "f_iso: 100.0\n" + pad +
-         "passive: {k_p: 1.0, alpha: 100.0, slack_length: 0.105}\n" + pad + "active_length:\n" +
-         pad + "  optimal_range: [0.095, 0.105]\n" + pad +
+  return pad + "f_iso: 100.0\n" + pad + "passive: {k_p: 1.0, alpha: 100.0, slack_length: 0.105}\n" +
+         pad + "active_length:\n" + pad + "  optimal_range: [0.095, 0.105]\n" + pad +
          "  gaussians: [{amplitude: 2.0, width: 4000.0, center: 0.1}]\n" + pad +
          "velocity: {v_max: 1.0, n: 3, epsilon: 1.0e-3}\n";
 }

@@ -5,8 +5,8 @@
 // trajectories integrated at tight tolerance.
 //
 // The quotients are Richardson-extrapolated over steps h, h/2, h/4, at steps from 0.3 to
-// 2e-5 of the parameter; each column keeps the two extrapolations (from disjoint runs) that agree best,
-// and their difference is the reference's own uncertainty, checked and reported beside the
+// 2e-5 of the parameter; each column keeps the two extrapolations (from disjoint runs) that agree
+// best, and their difference is the reference's own uncertainty, checked and reported beside the
 // error (DifferenceReference).
 #pragma once
 
@@ -61,8 +61,7 @@ inline void AppendActuatorRow(FullTrajectory& out, const ActuatorSample& s, bool
   out.values.push_back(s.tension.total);
 }
 
-inline FullTrajectory FromNetworkRun(const Scenario& spec,
-                                     const NetworkRunResult& result) {
+inline FullTrajectory FromNetworkRun(const Scenario& spec, const NetworkRunResult& result) {
   FullTrajectory out;
   out.times = result.times;
   for (const Node& node : spec.nodes) {
@@ -168,9 +167,9 @@ inline constexpr int kHalvings = 14;
 struct Reference {
   std::vector<double> times;
   std::vector<std::string> columns;
-  std::vector<double> derivative;     // rows x columns
-  std::vector<double> uncertainty;    // its estimated error, rows x columns
-  std::vector<double> value_scale;    // per column, max |C| over the run
+  std::vector<double> derivative;   // rows x columns
+  std::vector<double> uncertainty;  // its estimated error, rows x columns
+  std::vector<double> value_scale;  // per column, max |C| over the run
 };
 
 namespace detail {
@@ -181,8 +180,7 @@ namespace detail {
 inline std::vector<double> Quotient(const std::string& scenario,
                                     const std::vector<std::string>& overrides,
                                     const Differentiated& p, double h,
-                                    const std::vector<double>& times,
-                                    const FullTrajectory& base) {
+                                    const std::vector<double>& times, const FullTrajectory& base) {
   std::vector<double> d(base.values.size());
   const double first = p.forward_only ? p.value + h : p.value - h;
   const double second = p.value + (p.forward_only ? 2.0 : 1.0) * h;
@@ -294,8 +292,8 @@ inline constexpr double kReferenceAccuracy = kRequiredAgreement / 3.0;
 
 // The worst disagreement of one parameter's sensitivity columns with the reference.
 struct Agreement {
-  double worst = 0.0;        // max over columns and rows of |s - ref| / scale
-  std::string column;        // where
+  double worst = 0.0;  // max over columns and rows of |s - ref| / scale
+  std::string column;  // where
   double time = 0.0;
   double uncertainty = 0.0;  // the reference's largest estimated error over its scale
   std::string uncertain;     // where
@@ -306,8 +304,7 @@ inline Agreement Compare(const SensitivityTable& table, const std::string& path,
                          const Reference& reference, double parameter_scale) {
   Agreement a;
   const std::size_t p = static_cast<std::size_t>(
-      std::find(table.parameters.begin(), table.parameters.end(), path) -
-      table.parameters.begin());
+      std::find(table.parameters.begin(), table.parameters.end(), path) - table.parameters.begin());
   EXPECT_LT(p, table.parameters.size()) << path;
   EXPECT_EQ(table.columns, reference.columns) << path;
   EXPECT_EQ(table.times, reference.times) << path;
@@ -331,8 +328,7 @@ inline Agreement Compare(const SensitivityTable& table, const std::string& path,
     if (scale == 0.0) scale = 1.0;  // a column 0 throughout (its derivative must be 0 too)
     for (std::size_t row = 0; row < table.rows(); ++row) {
       const double s = table.derivative(row, p, c);
-      const double error =
-          std::abs(flat ? s : s - reference.derivative[row * columns + c]) / scale;
+      const double error = std::abs(flat ? s : s - reference.derivative[row * columns + c]) / scale;
       if (!(error <= a.worst)) {  // NaN counts as the worst
         a.worst = error;
         a.column = table.columns[c];

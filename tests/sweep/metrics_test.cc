@@ -69,7 +69,7 @@ TEST(Metrics, AccumulatorGivesTheHandComputedValues) {
   // (0.095 - 0.085) / 0.5, each end interpolated between records: rounding of a few ulps
   EXPECT_NEAR(acc.Value(Metric::kMeanShorteningVelocity), 0.02, 1e-14);
   EXPECT_EQ(acc.Value(Metric::kFinalShorteningVelocity), 0.02);
-  EXPECT_NEAR(acc.Value(Metric::kWork), 1.0 + 0.06, 1e-14);  // eleven trapezoids' rounding
+  EXPECT_NEAR(acc.Value(Metric::kWork), 1.0 + 0.06, 1e-14);    // eleven trapezoids' rounding
   EXPECT_NEAR(acc.Value(Metric::kTimeToLength), 0.25, 1e-13);  // interpolated crossing
 }
 
@@ -92,10 +92,13 @@ TEST(Metrics, AccumulatorMatchesTheTrajectoryBitForBit) {
   struct Case {
     std::optional<double> w0, w1, target;
   };
-  const std::vector<Case> cases = {
-      {std::nullopt, std::nullopt, 0.105}, {0.05, 0.3, 0.095}, {tr[17].t, tr[30].t, 0.2},
-      {-1.0, end + 1.0, tr[5].sample.length}, {0.1, std::nullopt, 0.1}, {end + 1.0, end + 2.0, 0.09},
-      {std::nullopt, 0.0, std::nullopt}};
+  const std::vector<Case> cases = {{std::nullopt, std::nullopt, 0.105},
+                                   {0.05, 0.3, 0.095},
+                                   {tr[17].t, tr[30].t, 0.2},
+                                   {-1.0, end + 1.0, tr[5].sample.length},
+                                   {0.1, std::nullopt, 0.1},
+                                   {end + 1.0, end + 2.0, 0.09},
+                                   {std::nullopt, 0.0, std::nullopt}};
   for (std::size_t c = 0; c < cases.size(); ++c) {
     MetricOptions options;
     options.window_start = cases[c].w0;

@@ -137,9 +137,11 @@ TEST(NetworkSweep, MetricElementReadsTheElementItNames) {
   for (const auto& [element, rest, stiffness] :
        {std::tuple{"soft", 0.1, 100.0}, std::tuple{"stiff", 0.2, 400.0}}) {
     SCOPED_TRACE(element);
-    const SweepPlan plan = LoadSweep(WriteSweep(std::string("series_") + element, kSeries,
-        "parameters:\n  loads[0].value: [1.0, 2.0, 4.0]\nmetrics: [final_length]\n"
-        "metric_options: {element: " + std::string(element) + "}\n"));
+    const SweepPlan plan = LoadSweep(
+        WriteSweep(std::string("series_") + element, kSeries,
+                   "parameters:\n  loads[0].value: [1.0, 2.0, 4.0]\nmetrics: [final_length]\n"
+                   "metric_options: {element: " +
+                       std::string(element) + "}\n"));
     EXPECT_EQ(plan.spec.metric_options.element, element);
     const CsvTable summary = ReadCsv(RunInto(plan, std::string("series_") + element));
     ASSERT_EQ(summary.rows.size(), 3u);
@@ -153,15 +155,16 @@ TEST(NetworkSweep, MetricElementReadsTheElementItNames) {
 }
 
 TEST(NetworkSweep, TheOnlyActuatorIsTheDefaultElement) {
-  const std::string points = "parameters:\n  elements[0].activation.value: [0.5, 1.0]\n"
-                             "  time.end: [0.2]\nmetrics: [peak_tension, work, final_length]\n";
+  const std::string points =
+      "parameters:\n  elements[0].activation.value: [0.5, 1.0]\n"
+      "  time.end: [0.2]\nmetrics: [peak_tension, work, final_length]\n";
   const std::string text = testing::ReadFile(testing::ScenarioPath("millard_benchmark.yaml"));
   const SweepPlan by_default = LoadSweep(WriteSweep("default", text, points));
   EXPECT_EQ(by_default.spec.metric_options.element, "muscle");
-  const SweepPlan named = LoadSweep(
-      WriteSweep("named", text, points + "metric_options: {element: muscle}\n"));
-  const SweepPlan tendon = LoadSweep(
-      WriteSweep("tendon", text, points + "metric_options: {element: tendon}\n"));
+  const SweepPlan named =
+      LoadSweep(WriteSweep("named", text, points + "metric_options: {element: muscle}\n"));
+  const SweepPlan tendon =
+      LoadSweep(WriteSweep("tendon", text, points + "metric_options: {element: tendon}\n"));
   const std::string first = SummaryWithoutWallTime(RunInto(by_default, "default"));
   EXPECT_EQ(first, SummaryWithoutWallTime(RunInto(named, "named")));
   EXPECT_NE(first, SummaryWithoutWallTime(RunInto(tendon, "tendon")));
@@ -178,25 +181,28 @@ TEST(NetworkSweep, AMissingOrUnknownElementIsAnInputErrorSayingWhere) {
                         "damper"));
 
   // two actuators: placed at metric_options (line 5, column 17), naming them
-  const std::string two = WriteSweep("two_actuators", kAntagonists,
-      "parameters:\n  elements[0].activation.value: [0.5]\nmetrics: [final_length]\n"
-      "metric_options: {window: [0.0, 0.01]}\n");
+  const std::string two =
+      WriteSweep("two_actuators", kAntagonists,
+                 "parameters:\n  elements[0].activation.value: [0.5]\nmetrics: [final_length]\n"
+                 "metric_options: {window: [0.0, 0.01]}\n");
   EXPECT_THAT(InputErrorOf(two, [&] { LoadSweep(two); }),
               HasSubstr("metric_options.element (FILE:5:17): missing: the network "));
   EXPECT_THAT(InputErrorOf(two, [&] { LoadSweep(two); }),
               HasSubstr("has 2 actuators (flexor, extensor), so name the element"));
 
-  const std::string unknown = WriteSweep("unknown_element", kSpring,
-      points + "metrics: [final_length]\nmetric_options: {element: sprung}\n");
+  const std::string unknown =
+      WriteSweep("unknown_element", kSpring,
+                 points + "metrics: [final_length]\nmetric_options: {element: sprung}\n");
   EXPECT_THAT(InputErrorOf(unknown, [&] { LoadSweep(unknown); }),
               HasSubstr("metric_options.element = sprung (FILE:5:27): must name an element of "
                         "the network "));
   EXPECT_THAT(InputErrorOf(unknown, [&] { LoadSweep(unknown); }), HasSubstr(": spring, damper"));
 
   // an axis that renames the element makes its points invalid, saying which axis did it
-  const std::string renamed = WriteSweep("renamed_element", kSpring,
-      "parameters:\n  elements[0].name: [spring, coil]\nmetrics: [final_length]\n"
-      "metric_options: {element: spring}\n");
+  const std::string renamed =
+      WriteSweep("renamed_element", kSpring,
+                 "parameters:\n  elements[0].name: [spring, coil]\nmetrics: [final_length]\n"
+                 "metric_options: {element: spring}\n");
   EXPECT_THAT(InputErrorOf(renamed, [&] { LoadSweep(renamed); }),
               HasSubstr("FILE:3:3: axis elements[0].name = coil makes point 1 "
                         "(elements[0].name=coil) an invalid scenario: metric_options.element = "
@@ -238,8 +244,9 @@ TEST(NetworkSweep, KeptTrajectoriesAreNetworkCsvs) {
   const std::string header =
       "t,wall.position,wall.velocity,mass.position,mass.velocity,spring.length,"
       "spring.tension,damper.length,damper.tension,mass.load";
-  const std::string steps = "parameters:\n  solver.max_steps: [20, 10000000]\n"
-                            "metrics: [final_length]\nmetric_options: {element: spring}\n";
+  const std::string steps =
+      "parameters:\n  solver.max_steps: [20, 10000000]\n"
+      "metrics: [final_length]\nmetric_options: {element: spring}\n";
   const std::string folder = ::testing::TempDir() + "network_sweep_";
 
   // failed: only the point that ran out of steps
@@ -251,8 +258,8 @@ TEST(NetworkSweep, KeptTrajectoriesAreNetworkCsvs) {
   EXPECT_FALSE(std::filesystem::exists(folder + "failed_trajectories/1.csv"));
 
   // all: every point, its last row the state the summary's final_length comes from
-  const CsvTable summary = ReadCsv(RunInto(
-      LoadSweep(WriteSweep("kept_all", kSpring, steps + "trajectories: all\n")), "all"));
+  const CsvTable summary = ReadCsv(
+      RunInto(LoadSweep(WriteSweep("kept_all", kSpring, steps + "trajectories: all\n")), "all"));
   const CsvTable run = ReadCsv(folder + "all_trajectories/1.csv");
   EXPECT_EQ(ReadFile(folder + "all_trajectories/1.csv").substr(0, header.size() + 1),
             header + "\n");
@@ -277,10 +284,11 @@ class StopAfter : public SweepObserver {
 TEST(NetworkSweep, AResumedSweepGivesTheUninterruptedSummary) {
   // 24 points: the pool is handed 16 at a time (16 per thread), so the stop requested after
   // 3 rows lands before the last 8 are handed out, however the threads are scheduled
-  const std::string body = "parameters:\n  loads[0].value: {from: 1.0, to: 4.0, count: 8}\n"
-                           "  elements[1].stiffness: [300.0, 400.0, 500.0]\n"
-                           "metrics: [final_length, peak_tension, work]\n"
-                           "metric_options: {element: stiff}\n";
+  const std::string body =
+      "parameters:\n  loads[0].value: {from: 1.0, to: 4.0, count: 8}\n"
+      "  elements[1].stiffness: [300.0, 400.0, 500.0]\n"
+      "metrics: [final_length, peak_tension, work]\n"
+      "metric_options: {element: stiff}\n";
   const std::string path = WriteSweep("resume", kSeries, body);
   const SweepPlan plan = LoadSweep(path);
   const std::string whole = SummaryWithoutWallTime(RunInto(plan, "uninterrupted"));
@@ -315,7 +323,8 @@ TEST(NetworkSweep, AResumedSweepGivesTheUninterruptedSummary) {
 // be running its last ones, and rank 0 must wait for their rows (this lost a row in about one
 // run in three before rank 0 waited for every rank to say it was done).
 TEST(NetworkSweep, MpiRanksGiveTheThreadedSummary) {
-  const std::string sweep = WriteSweep("mpi", kSeries,
+  const std::string sweep = WriteSweep(
+      "mpi", kSeries,
       "parameters:\n  loads[0].value: {from: 1.0, to: 4.0, count: 10}\n"
       "  elements[0].stiffness: [100.0, 200.0]\nmetrics: [final_length, peak_tension, work]\n"
       "metric_options: {element: soft}\n");
@@ -349,8 +358,9 @@ TEST(NetworkSweep, MillardBenchmarkSweepRunsEveryActivation) {
   EXPECT_EQ(plan.spec.metric_options.element, "muscle");
   const CsvTable summary = ReadCsv(RunInto(plan, "millard", 2));
   ASSERT_EQ(summary.rows.size(), 11u);
-  summary.Require({"elements[0].activation.value", "status", "peak_tension", "work",
-                   "max_length", "wall_seconds"}, "the summary");
+  summary.Require({"elements[0].activation.value", "status", "peak_tension", "work", "max_length",
+                   "wall_seconds"},
+                  "the summary");
   for (std::size_t i = 0; i < 11; ++i) {
     const double u = summary.Number(i, summary.Find("elements[0].activation.value"));
     EXPECT_EQ(u, static_cast<double>(i) / 10.0);

@@ -35,10 +35,14 @@ using ::testing::HasSubstr;
 
 // The sweep of every test here: the concentric contraction (scenarios/concentric.yaml) under
 // three loads and at two maximum velocities, every metric.
-const std::vector<Metric> kMetrics = {
-    Metric::kFinalLength,   Metric::kMinLength, Metric::kMaxLength,
-    Metric::kPeakTension,   Metric::kMeanShorteningVelocity,
-    Metric::kFinalShorteningVelocity, Metric::kWork, Metric::kTimeToLength};
+const std::vector<Metric> kMetrics = {Metric::kFinalLength,
+                                      Metric::kMinLength,
+                                      Metric::kMaxLength,
+                                      Metric::kPeakTension,
+                                      Metric::kMeanShorteningVelocity,
+                                      Metric::kFinalShorteningVelocity,
+                                      Metric::kWork,
+                                      Metric::kTimeToLength};
 
 constexpr const char* kSweepBody = R"(parameters:
   load[0].after: {from: 20.0, to: 60.0, count: 3}
@@ -163,8 +167,7 @@ void ExpectSameSummary(const std::vector<SweepRow>& rows, const Summary& summary
     EXPECT_EQ(std::to_string(row.index), fields[0]);
     ASSERT_EQ(row.values.size(), 2u);
     EXPECT_EQ(row.values[0], fields[static_cast<std::size_t>(csv.Column("load[0].after"))]);
-    EXPECT_EQ(row.values[1],
-              fields[static_cast<std::size_t>(csv.Column("model.velocity.v_max"))]);
+    EXPECT_EQ(row.values[1], fields[static_cast<std::size_t>(csv.Column("model.velocity.v_max"))]);
     EXPECT_EQ(row.status, RowStatus::kOk);
     EXPECT_EQ(fields[static_cast<std::size_t>(csv.Column("status"))], "ok");
     ASSERT_EQ(row.metrics.size(), kMetrics.size());

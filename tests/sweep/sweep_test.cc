@@ -31,8 +31,8 @@ using ::testing::HasSubstr;
 // A sweep file next to a copy of a canonical scenario, so that `base` resolves.
 std::string WriteSweep(const std::string& name, const std::string& body,
                        const std::string& base = "concentric.yaml") {
-  const std::string scenario = testing::WriteTempFile(name + "_base.yaml",
-                                                      testing::ReadFile(testing::ScenarioPath(base)));
+  const std::string scenario =
+      testing::WriteTempFile(name + "_base.yaml", testing::ReadFile(testing::ScenarioPath(base)));
   return testing::WriteTempFile(
       name + ".yaml", "base: " + std::filesystem::path(scenario).filename().string() + "\n" + body);
 }
@@ -64,9 +64,9 @@ metrics: [final_length]
   for (long i = 1; i < 6; ++i) {
     // the values are printed with 17 significant digits: a ratio of two is exact to ~1e-16,
     // and pow/log rounding in the grid adds a few ulps
-    EXPECT_NEAR(std::stod(PointValues(plan.spec, i)[0]) /
-                    std::stod(PointValues(plan.spec, i - 1)[0]),
-                ratio, 1e-12 * ratio);
+    EXPECT_NEAR(
+        std::stod(PointValues(plan.spec, i)[0]) / std::stod(PointValues(plan.spec, i - 1)[0]),
+        ratio, 1e-12 * ratio);
   }
 }
 
@@ -79,15 +79,16 @@ metrics: [final_length]
 )"));
   ASSERT_EQ(PointCount(plan.spec), 3);
   EXPECT_THAT(PointValues(plan.spec, 2), ElementsAre("3", "30"));
-  EXPECT_THAT([] {
-    LoadSweep(WriteSweep("zip_bad", R"(mode: zip
+  EXPECT_THAT(
+      [] {
+        LoadSweep(WriteSweep("zip_bad", R"(mode: zip
 parameters:
   model.velocity.n: [1, 2, 3]
   load[0].after: [10, 20]
 metrics: [final_length]
 )"));
-  }, ::testing::ThrowsMessage<InputError>(HasSubstr(
-         "parameters.load[0].after = 2 values (")));
+      },
+      ::testing::ThrowsMessage<InputError>(HasSubstr("parameters.load[0].after = 2 values (")));
 }
 
 TEST(Sweep, RandomDrawsAreReproducibleAndInRange) {
@@ -131,25 +132,40 @@ metrics: [final_length]
 
 TEST(Sweep, EveryPointIsValidatedBeforeAnythingRunsNamingTheAxis) {
   // the axis is at line 3, column 3 of the sweep file (after `base:` and `parameters:`)
-  EXPECT_THAT([] {
-    LoadSweep(WriteSweep("bad_path", "parameters:\n  model.speed.n: [1, 2]\nmetrics: [work]\n"));
-  }, ::testing::ThrowsMessage<InputError>(HasSubstr(
-         "bad_path.yaml:3:3: axis model.speed.n = 1 makes point 0 (model.speed.n=1) an invalid "
-         "scenario: axis model.speed.n=1: model.speed does not exist")));
-  EXPECT_THAT([] {
-    LoadSweep(WriteSweep("bad_value", "parameters:\n  model.velocity.n: [3, fast]\nmetrics: [work]\n"));
-  }, ::testing::ThrowsMessage<InputError>(HasSubstr(
-         "bad_value.yaml:3:3: axis model.velocity.n = fast makes point 1 (model.velocity.n=fast) "
-         "an invalid scenario: model.velocity.n = fast (axis): must be a number")));
-  EXPECT_THAT([] {
-    LoadSweep(WriteSweep("bad_metric", "parameters:\n  model.velocity.n: [3]\nmetrics: [speed]\n"));
-  }, ::testing::ThrowsMessage<InputError>(HasSubstr("metrics[0] = speed (")));
-  EXPECT_THAT([] {
-    LoadSweep(WriteSweep("no_target", "parameters:\n  model.velocity.n: [3]\nmetrics: [time_to_length]\n"));
-  }, ::testing::ThrowsMessage<InputError>(HasSubstr("needs metric_options.target_length")));
-  EXPECT_THAT([] {
-    LoadSweep(WriteSweep("bad_mode", "mode: spiral\nparameters:\n  model.velocity.n: [3]\nmetrics: [work]\n"));
-  }, ::testing::ThrowsMessage<InputError>(HasSubstr("mode = spiral (")));
+  EXPECT_THAT(
+      [] {
+        LoadSweep(
+            WriteSweep("bad_path", "parameters:\n  model.speed.n: [1, 2]\nmetrics: [work]\n"));
+      },
+      ::testing::ThrowsMessage<InputError>(HasSubstr(
+          "bad_path.yaml:3:3: axis model.speed.n = 1 makes point 0 (model.speed.n=1) an invalid "
+          "scenario: axis model.speed.n=1: model.speed does not exist")));
+  EXPECT_THAT(
+      [] {
+        LoadSweep(WriteSweep("bad_value",
+                             "parameters:\n  model.velocity.n: [3, fast]\nmetrics: [work]\n"));
+      },
+      ::testing::ThrowsMessage<InputError>(HasSubstr(
+          "bad_value.yaml:3:3: axis model.velocity.n = fast makes point 1 (model.velocity.n=fast) "
+          "an invalid scenario: model.velocity.n = fast (axis): must be a number")));
+  EXPECT_THAT(
+      [] {
+        LoadSweep(
+            WriteSweep("bad_metric", "parameters:\n  model.velocity.n: [3]\nmetrics: [speed]\n"));
+      },
+      ::testing::ThrowsMessage<InputError>(HasSubstr("metrics[0] = speed (")));
+  EXPECT_THAT(
+      [] {
+        LoadSweep(WriteSweep("no_target",
+                             "parameters:\n  model.velocity.n: [3]\nmetrics: [time_to_length]\n"));
+      },
+      ::testing::ThrowsMessage<InputError>(HasSubstr("needs metric_options.target_length")));
+  EXPECT_THAT(
+      [] {
+        LoadSweep(WriteSweep(
+            "bad_mode", "mode: spiral\nparameters:\n  model.velocity.n: [3]\nmetrics: [work]\n"));
+      },
+      ::testing::ThrowsMessage<InputError>(HasSubstr("mode = spiral (")));
 }
 
 TEST(Sweep, AnAxisValueErrorNamesTheAxisValuePointAndTheAxisLine) {
@@ -179,13 +195,14 @@ TEST(Sweep, AnErrorInTheBaseScenarioNamesTheBaseFileLineAndColumn) {
   const long line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n');
   const std::size_t column = at - text.rfind('\n', at) + std::string("epsilon: ").size();
   const std::string base = testing::WriteTempFile("bad_base.yaml", text);
-  const std::string sweep = testing::WriteTempFile("bad_base_sweep.yaml",
-      "base: " + std::filesystem::path(base).filename().string() +
-      "\nparameters:\n  load[0].after: [10, 20]\nmetrics: [work]\n");
+  const std::string sweep = testing::WriteTempFile(
+      "bad_base_sweep.yaml", "base: " + std::filesystem::path(base).filename().string() +
+                                 "\nparameters:\n  load[0].after: [10, 20]\nmetrics: [work]\n");
   const std::string message = testing::InputErrorOf(sweep, [&] { LoadSweep(sweep); });
-  EXPECT_THAT(message, HasSubstr(base + " (the base scenario of the sweep FILE) is not a valid "
-                                 "scenario: model.velocity.epsilon = -0.001 (" + base + ":" +
-                                 std::to_string(line) + ":" + std::to_string(column) +
+  EXPECT_THAT(message, HasSubstr(base +
+                                 " (the base scenario of the sweep FILE) is not a valid "
+                                 "scenario: model.velocity.epsilon = -0.001 (" +
+                                 base + ":" + std::to_string(line) + ":" + std::to_string(column) +
                                  "): must be between 1e-12 v_max"));
   EXPECT_THAT(message, ::testing::Not(HasSubstr("FILE:1:1")));
 }
@@ -205,16 +222,21 @@ metrics: [work]
 }
 
 TEST(Sweep, SeedAndSamplesAreForRandomModeOnly) {
-  const std::string grid = WriteSweep("grid_seed", "seed: 3\nparameters:\n  model.velocity.n: [3]\nmetrics: [work]\n");
+  const std::string grid =
+      WriteSweep("grid_seed", "seed: 3\nparameters:\n  model.velocity.n: [3]\nmetrics: [work]\n");
   EXPECT_EQ(testing::InputErrorOf(grid, [&] { LoadSweep(grid); }),
             "seed = 3 (FILE:2:7): is for mode random only (this sweep is grid)");
-  const std::string zip = WriteSweep("zip_samples", "mode: zip\nsamples: 5\nparameters:\n  model.velocity.n: [3]\nmetrics: [work]\n");
+  const std::string zip =
+      WriteSweep("zip_samples",
+                 "mode: zip\nsamples: 5\nparameters:\n  model.velocity.n: [3]\nmetrics: [work]\n");
   EXPECT_EQ(testing::InputErrorOf(zip, [&] { LoadSweep(zip); }),
             "samples = 5 (FILE:3:10): is for mode random only (this sweep is zip)");
 }
 
 TEST(Sweep, RandomModeRequiresASeed) {
-  const std::string sweep = WriteSweep("no_seed", "mode: random\nsamples: 5\nparameters:\n  model.velocity.n: [3]\nmetrics: [work]\n");
+  const std::string sweep = WriteSweep(
+      "no_seed",
+      "mode: random\nsamples: 5\nparameters:\n  model.velocity.n: [3]\nmetrics: [work]\n");
   EXPECT_THAT(testing::InputErrorOf(sweep, [&] { LoadSweep(sweep); }),
               HasSubstr("seed (FILE:1:1): missing required key"));
 }
@@ -263,7 +285,7 @@ class ProgressLog : public SweepObserver {
   }
   std::vector<std::pair<long, long>> calls;  // (done, total) per call [points]
   std::vector<std::string> notices;
-  long stopped_at = -1;                      // rows in when it first asked to stop [points]
+  long stopped_at = -1;  // rows in when it first asked to stop [points]
 
  private:
   long stop_after_;
@@ -283,7 +305,8 @@ TEST(SweepRunner, OneAndTwoJobsGiveTheSameSummary) {
   EXPECT_EQ(one.points, 20);
   EXPECT_EQ(two.ran, 20);
   EXPECT_EQ(one.failed, 0);
-  EXPECT_EQ(testing::SummaryWithoutWallTime(first), testing::SummaryWithoutWallTime(options.output));
+  EXPECT_EQ(testing::SummaryWithoutWallTime(first),
+            testing::SummaryWithoutWallTime(options.output));
   EXPECT_FALSE(std::filesystem::exists(options.output + ".partial"));
 }
 
@@ -319,8 +342,11 @@ TEST(SweepRunner, ResumeFromAPartialSummaryGivesTheSameResult) {
   const std::vector<std::string> lines = LinesOf(options.output);
   const std::string resumed = testing::WriteTempFile("resumed.csv", "");
   std::filesystem::remove(resumed);
-  std::ofstream(resumed + ".partial") << SignatureLine(plan, "resume") << "\n" << lines[0] << "\n"
-                                      << lines[7] << "\n" << lines[2] << "\n" << lines[12] << "\n"
+  std::ofstream(resumed + ".partial") << SignatureLine(plan, "resume") << "\n"
+                                      << lines[0] << "\n"
+                                      << lines[7] << "\n"
+                                      << lines[2] << "\n"
+                                      << lines[12] << "\n"
                                       << lines[5].substr(0, 9);
   options.output = resumed;
   EXPECT_THAT([&] { RunSweep(plan, options); },  // no silent restart over it
@@ -358,14 +384,16 @@ TEST(SweepRunner, ResumeDropsMalformedRowsAndRunsTheirPointsAgain) {
   row5_beyond.replace(0, 1, "8");  // index 8 of 8 points
   const std::string partial = options.output = testing::WriteTempFile("malformed.csv", "");
   std::filesystem::remove(partial);
-  std::ofstream(partial + ".partial")
-      << SignatureLine(plan, "malformed") << "\n" << lines[0] << "\n"
-      << lines[1] << "\n"         // point 0, kept
-      << "1,zzz\n"                // too few fields
-      << "x" << lines[2] << "\n"  // an index that is not a number
-      << lines[1] << "\n"         // point 0 again
-      << row2_bad_status << "\n" << row3_other_value << "\n" << row5_beyond << "\n"
-      << lines[7] << "\n";        // point 6, kept
+  std::ofstream(partial + ".partial") << SignatureLine(plan, "malformed") << "\n"
+                                      << lines[0] << "\n"
+                                      << lines[1] << "\n"         // point 0, kept
+                                      << "1,zzz\n"                // too few fields
+                                      << "x" << lines[2] << "\n"  // an index that is not a number
+                                      << lines[1] << "\n"         // point 0 again
+                                      << row2_bad_status << "\n"
+                                      << row3_other_value << "\n"
+                                      << row5_beyond << "\n"
+                                      << lines[7] << "\n";  // point 6, kept
   options.resume = true;
   ProgressLog log;
   options.observer = &log;
@@ -373,8 +401,9 @@ TEST(SweepRunner, ResumeDropsMalformedRowsAndRunsTheirPointsAgain) {
   EXPECT_EQ(outcome.resumed, 2);
   EXPECT_EQ(outcome.ran, 6);
   ASSERT_EQ(log.notices.size(), 1u);
-  EXPECT_THAT(log.notices[0], HasSubstr("malformed.csv.partial: dropped 6 malformed rows (line 4: "
-                                        "2 fields, expected 16; line 5: index 'x1' is not a number"));
+  EXPECT_THAT(log.notices[0],
+              HasSubstr("malformed.csv.partial: dropped 6 malformed rows (line 4: "
+                        "2 fields, expected 16; line 5: index 'x1' is not a number"));
   EXPECT_THAT(log.notices[0], HasSubstr("line 6: a second row for point 0"));
   EXPECT_THAT(log.notices[0], HasSubstr("; ...); their points run again"));
   EXPECT_EQ(testing::SummaryWithoutWallTime(partial), full);
@@ -383,13 +412,13 @@ TEST(SweepRunner, ResumeDropsMalformedRowsAndRunsTheirPointsAgain) {
 
 TEST(SweepRunner, ResumeRefusesThePartialOfAnotherSweepSayingWhatChanged) {
   // a sweep of loads 5..95 N interrupted, then its range edited to 50..95 N
-  const std::string base = testing::WriteTempFile("edited_base.yaml",
-      testing::ReadFile(testing::ScenarioPath("concentric.yaml")));
+  const std::string base = testing::WriteTempFile(
+      "edited_base.yaml", testing::ReadFile(testing::ScenarioPath("concentric.yaml")));
   const auto sweep_file = [&](const std::string& range, const std::string& metrics) {
     return testing::WriteTempFile("edited.yaml",
-        "base: " + std::filesystem::path(base).filename().string() +
-        "\nparameters:\n  load[0].after: {from: " + range + ", to: 95.0, count: 19}\nmetrics: [" +
-        metrics + "]\n");
+                                  "base: " + std::filesystem::path(base).filename().string() +
+                                      "\nparameters:\n  load[0].after: {from: " + range +
+                                      ", to: 95.0, count: 19}\nmetrics: [" + metrics + "]\n");
   };
   SweepRunOptions options;
   options.output = testing::WriteTempFile("edited.csv", "");
@@ -400,21 +429,23 @@ TEST(SweepRunner, ResumeRefusesThePartialOfAnotherSweepSayingWhatChanged) {
   ASSERT_TRUE(RunSweep(LoadSweep(sweep_file("5.0", "work")), options).interrupted);
   options.observer = nullptr;
   options.resume = true;
-  const std::string refused = "edited.csv.partial belongs to a different sweep (base scenario, "
-                              "axes or metrics changed): ";
+  const std::string refused =
+      "edited.csv.partial belongs to a different sweep (base scenario, "
+      "axes or metrics changed): ";
   EXPECT_THAT([&] { RunSweep(LoadSweep(sweep_file("50.0", "work")), options); },
               ::testing::ThrowsMessage<InputError>(HasSubstr(refused + "the axes changed")));
   EXPECT_THAT([&] { RunSweep(LoadSweep(sweep_file("5.0", "peak_tension")), options); },
               ::testing::ThrowsMessage<InputError>(HasSubstr(refused + "the metrics changed")));
   std::ofstream(base, std::ios::app) << "# edited\n";
-  EXPECT_THAT([&] { RunSweep(LoadSweep(sweep_file("5.0", "work")), options); },
-              ::testing::ThrowsMessage<InputError>(HasSubstr(refused + "the base scenario changed")));
+  EXPECT_THAT(
+      [&] { RunSweep(LoadSweep(sweep_file("5.0", "work")), options); },
+      ::testing::ThrowsMessage<InputError>(HasSubstr(refused + "the base scenario changed")));
   // a partial file of an older musclesim, header first, has no signature
   const std::string header = LinesOf(options.output + ".partial")[1];
   std::ofstream(options.output + ".partial") << header << "\n";
   EXPECT_THAT([&] { RunSweep(LoadSweep(sweep_file("5.0", "work")), options); },
-              ::testing::ThrowsMessage<InputError>(HasSubstr(
-                  refused + "its first line is not a sweep's signature")));
+              ::testing::ThrowsMessage<InputError>(
+                  HasSubstr(refused + "its first line is not a sweep's signature")));
 }
 
 TEST(SweepRunner, ASecondSweepOnTheSameOutputIsRefusedWhileTheFirstRuns) {
@@ -460,7 +491,8 @@ TEST(SweepRunner, ASecondSweepOnTheSameOutputIsRefusedWhileTheFirstRuns) {
 }
 
 TEST(SweepRunner, AFailingPointIsMarkedAndTheRestGoesOn) {
-  const SweepPlan plan = LoadSweep(WriteSweep("failing",
+  const SweepPlan plan = LoadSweep(WriteSweep(
+      "failing",
       "parameters:\n  solver.max_steps: [10000000, 20, 10000000]\nmetrics: [final_length]\n",
       "isometric.yaml"));
   SweepRunOptions options;
@@ -548,8 +580,8 @@ std::string ShortBase(const std::string& name) {
 }
 
 std::string SweepOn(const std::string& base, const std::string& name, const std::string& body) {
-  return testing::WriteTempFile(name + ".yaml",
-      "base: " + std::filesystem::path(base).filename().string() + "\n" + body);
+  return testing::WriteTempFile(
+      name + ".yaml", "base: " + std::filesystem::path(base).filename().string() + "\n" + body);
 }
 
 TEST(SweepRunner, ASweepOfTheMaximumSizeStartsRunningAtOnce) {
@@ -576,9 +608,10 @@ metrics: [work]
   EXPECT_EQ(stop_after_five.calls.front(), std::make_pair(0L, 1000000000L));
   const std::vector<std::string> lines = LinesOf(options.output + ".partial");
   ASSERT_GE(lines.size(), 7u);  // signature, header, five rows or more
-  EXPECT_NE(std::find_if(lines.begin(), lines.end(), [](const std::string& line) {
-              return line.rfind("0,10,0.05,1e-04,ok,", 0) == 0;
-            }), lines.end());
+  EXPECT_NE(std::find_if(
+                lines.begin(), lines.end(),
+                [](const std::string& line) { return line.rfind("0,10,0.05,1e-04,ok,", 0) == 0; }),
+            lines.end());
   std::filesystem::remove(options.output + ".partial");
 }
 
@@ -679,7 +712,8 @@ TEST(SweepSortedSummary, RowsBeyondTheMemoryBudgetAreMergedFromSortedRuns) {
   // 5000 rows in a scrambled order, sorted with room for about 100 rows at a time
   const long n = 5000;
   std::vector<long> order(n);
-  for (long i = 0; i < n; ++i) order[static_cast<std::size_t>(i)] = (i * 2711) % n;  // 2711 is prime
+  // 2711 is prime
+  for (long i = 0; i < n; ++i) order[static_cast<std::size_t>(i)] = (i * 2711) % n;
   std::string text = "# first line\nindex,value\n";
   for (const long i : order) text += std::to_string(i) + ",row " + std::to_string(i) + "\n";
   const std::string partial = testing::WriteTempFile("rows.partial", text);
@@ -689,7 +723,8 @@ TEST(SweepSortedSummary, RowsBeyondTheMemoryBudgetAreMergedFromSortedRuns) {
   ASSERT_EQ(static_cast<long>(lines.size()), n + 1);
   EXPECT_EQ(lines[0], "index,value");
   for (long i = 0; i < n; ++i) {
-    EXPECT_EQ(lines[static_cast<std::size_t>(i + 1)], std::to_string(i) + ",row " + std::to_string(i));
+    EXPECT_EQ(lines[static_cast<std::size_t>(i + 1)],
+              std::to_string(i) + ",row " + std::to_string(i));
   }
   // no sorted run is left behind
   for (const auto& entry : std::filesystem::directory_iterator(::testing::TempDir())) {

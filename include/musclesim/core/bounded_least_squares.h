@@ -46,13 +46,13 @@ struct BoundedLeastSquaresProblem {
 };
 
 struct LeastSquaresOptions {
-  int max_evaluations = 200;         // model evaluations [-], each a simulation
-  double step_tolerance = 1e-10;     // stop when a step moves every parameter by less than
-                                     // this fraction of its magnitude [-]
-  double gradient_tolerance = 1e-12; // stop when every residual column is this close to
-                                     // orthogonal to the residual (cosine) [-]
-  double cost_tolerance = 1e-14;     // stop when a step lowers the cost by less than this
-                                     // fraction, and the model predicted no more [-]
+  int max_evaluations = 200;          // model evaluations [-], each a simulation
+  double step_tolerance = 1e-10;      // stop when a step moves every parameter by less than
+                                      // this fraction of its magnitude [-]
+  double gradient_tolerance = 1e-12;  // stop when every residual column is this close to
+                                      // orthogonal to the residual (cosine) [-]
+  double cost_tolerance = 1e-14;      // stop when a step lowers the cost by less than this
+                                      // fraction, and the model predicted no more [-]
   // stop when even the Gauss-Newton step would lower the cost by less than this fraction
   // (or a rejected step was predicted to): with noisy data the cost is about the number of
   // values N and a step of k standard errors lowers it by about k^2, so this is a step of

@@ -1,12 +1,11 @@
 // The range of every number the readers and the command line accept, each with the reason
-// for its bounds (README "Ranges"). Finite is not enough: 1e308 is finite, and 1e308 + 1e308 is not. The
-// bounds keep each sum and product of the dynamics (m_eff xddot = F_load - T - c xdot -
-// k (x - l0)) and of the time grid far inside double precision, and they lie beyond anything
-// a muscle-like actuator or its test rig does, so no sensible scenario meets them.
+// for its bounds (README "Ranges"). Finite is not enough: 1e308 is finite, and 1e308 + 1e308 is
+// not. The bounds keep each sum and product of the dynamics (m_eff xddot = F_load - T - c xdot - k
+// (x - l0)) and of the time grid far inside double precision, and they lie beyond anything a
+// muscle-like actuator or its test rig does, so no sensible scenario meets them.
 #pragma once
 
 #include <string>
-
 
 namespace musclesim {
 
@@ -46,15 +45,14 @@ double TimeScale(double t_start, double t_end);
 // Lengths [m]: the initial length (> 0), rest lengths and anchors, limits, fit points.
 inline constexpr InputRange kLengthRange{
     0.0, 1e3, "m",
-    "a kilometre is beyond any actuator, and keeps stiffness times length within range",
-    true};
+    "a kilometre is beyond any actuator, and keeps stiffness times length within range", true};
 inline constexpr InputRange kPositionRange{
     -1e3, 1e3, "m",
     "a kilometre is beyond any actuator, and keeps stiffness times length within range"};
 
 // Speeds [m/s]: the initial lengthening rate, the phase tolerance.
-inline constexpr InputRange kSpeedRange{
-    -1e3, 1e3, "m/s", "three times the speed of sound, beyond any actuator"};
+inline constexpr InputRange kSpeedRange{-1e3, 1e3, "m/s",
+                                        "three times the speed of sound, beyond any actuator"};
 inline constexpr InputRange kPhaseToleranceRange{
     0.0, 1e3, "m/s", "three times the speed of sound, beyond any actuator"};
 
@@ -78,12 +76,12 @@ inline constexpr InputRange kStiffnessRange{
     0.0, 1e12, "N/m",
     "stiffer than any rig (a steel bar 1 cm^2 by 1 mm is 2e10 N/m), and k (x - l0) stays "
     "below 1e15 N"};
-inline constexpr InputRange kDampingRange{
-    0.0, 1e12, "N s/m", "beyond any damper, and c xdot stays below 1e15 N"};
+inline constexpr InputRange kDampingRange{0.0, 1e12, "N s/m",
+                                          "beyond any damper, and c xdot stays below 1e15 N"};
 
 // Gravity [m/s^2] of a hanging mass.
-inline constexpr InputRange kGravityRange{
-    -1e3, 1e3, "m/s^2", "about 100 g, beyond any rig; m g stays finite"};
+inline constexpr InputRange kGravityRange{-1e3, 1e3, "m/s^2",
+                                          "about 100 g, beyond any rig; m g stays finite"};
 
 // The time constants accepted [s]: muscles take 5 to 60 ms; below 0.1 ms the lag is in effect
 // instantaneous (give the activation itself) and only makes the system stiff, and 10 s is
@@ -97,8 +95,8 @@ inline constexpr InputRange kActivationTimeConstantRange{
     kMinActivationTimeConstant, kMaxActivationTimeConstant, "s",
     "muscles take 5 to 60 ms; below 0.1 ms the lag is in effect instantaneous (give activation "
     "instead) and only makes the run stiff, and 10 s is slower than any muscle-like actuator"};
-inline constexpr InputRange kActivationRange{
-    0.0, 1.0, "-", "an activation is a fraction of the full activation"};
+inline constexpr InputRange kActivationRange{0.0, 1.0, "-",
+                                             "an activation is a fraction of the full activation"};
 
 // A controller's gains [per unit measured, times s for ki^-1 and kd]: beyond 1e9 an error of
 // a nanometre or a nanonewton already saturates the output (the loop is a switch), and the

@@ -12,8 +12,8 @@ namespace musclesim {
 
 // One step down a document: a map key, or a sequence index when `key` is empty.
 struct KeyPathStep {
-  std::string key;         // map key; empty for an index
-  std::size_t index = 0;   // sequence index (0-based) when `key` is empty
+  std::string key;        // map key; empty for an index
+  std::size_t index = 0;  // sequence index (0-based) when `key` is empty
 };
 
 // The largest index a path may hold [-]: no list in a file the program reads is longer (a

@@ -35,7 +35,7 @@ struct ActuatorSample {
   double activation = 0.0;           // u, dimensionless in [0, 1]: u(t), or the state's
   double excitation = 0.0;           // e(t) with activation dynamics; without them u(t)
   TensionSample tension;
-  double load = 0.0;                 // F_load [N]
+  double load = 0.0;  // F_load [N]
 };
 
 // The immutable system one run integrates. It shares its tension model (read-only), so many
@@ -63,7 +63,8 @@ class ActuatorSystem {
     assert(!excitation_);
     const TensionSample s = model_->Evaluate(x, -xdot, activation_.Evaluate(t));
     return (loads_.Force(t, x) - s.total - actuator_.damping * xdot -
-            actuator_.stiffness * (x - actuator_.rest_length)) * inverse_mass_;
+            actuator_.stiffness * (x - actuator_.rest_length)) *
+           inverse_mass_;
   }
 
   // d xddot / dx and d xddot / dxdot: the lower row of the Jacobian (the upper is [0, 1]).

@@ -43,14 +43,14 @@ struct CoContraction {
 struct Controller {
   std::string name;
   Measurement measure;
-  Waveform reference;                          // r(t) [unit measured]
+  Waveform reference;  // r(t) [unit measured]
   PidGains gains;
-  Waveform feedforward;                        // u_ff(t) [-]; by default 0
-  std::string drives;                          // the actuator driven; empty with co_contraction
+  Waveform feedforward;  // u_ff(t) [-]; by default 0
+  std::string drives;    // the actuator driven; empty with co_contraction
   std::optional<CoContraction> co_contraction;
 
-  static Controller Pid(std::string name, Measurement measure, Waveform reference,
-                        PidGains gains, std::string drives);
+  static Controller Pid(std::string name, Measurement measure, Waveform reference, PidGains gains,
+                        std::string drives);
   static Controller CoContracting(std::string name, Measurement measure, Waveform reference,
                                   PidGains gains, CoContraction pair);
 };

@@ -15,16 +15,16 @@ enum class LoadKind { kForce, kSpring, kMass };
 // One load. Make one with the factories (Load::Constant(40.0)), which validate.
 struct Load {
   LoadKind kind = LoadKind::kForce;
-  Waveform force;            // kForce: F(t) [N]
-  double stiffness = 0.0;    // kSpring: F = stiffness (anchor - x) [N/m], >= 0
-  double anchor = 0.0;       // kSpring: length where the spring pulls nothing [m]
-  double mass = 0.0;         // kMass: F = mass gravity, and mass joins m_eff [kg], > 0
-  double gravity = 9.81;     // kMass: acceleration along +x (longer) [m/s^2]
+  Waveform force;          // kForce: F(t) [N]
+  double stiffness = 0.0;  // kSpring: F = stiffness (anchor - x) [N/m], >= 0
+  double anchor = 0.0;     // kSpring: length where the spring pulls nothing [m]
+  double mass = 0.0;       // kMass: F = mass gravity, and mass joins m_eff [kg], > 0
+  double gravity = 9.81;   // kMass: acceleration along +x (longer) [m/s^2]
 
   // Validated factories; each throws ParameterError (paths named as the YAML keys).
-  static Load Force(Waveform force);           // F(t) [N]
-  static Load Constant(double force);          // a constant force [N]
-  static Load Spring(double stiffness, double anchor);  // [N/m], [m]
+  static Load Force(Waveform force);                     // F(t) [N]
+  static Load Constant(double force);                    // a constant force [N]
+  static Load Spring(double stiffness, double anchor);   // [N/m], [m]
   static Load Mass(double mass, double gravity = 9.81);  // [kg], [m/s^2]
 };
 
@@ -48,10 +48,10 @@ class LoadSet {
 
  private:
   std::vector<Load> loads_;
-  std::vector<Waveform> forces_;     // the kForce waveforms
-  double spring_stiffness_ = 0.0;    // sum of the springs
-  double spring_pull_ = 0.0;         // sum of stiffness * anchor
-  double weight_ = 0.0;              // sum of mass * gravity
+  std::vector<Waveform> forces_;   // the kForce waveforms
+  double spring_stiffness_ = 0.0;  // sum of the springs
+  double spring_pull_ = 0.0;       // sum of stiffness * anchor
+  double weight_ = 0.0;            // sum of mass * gravity
   double added_mass_ = 0.0;
 };
 

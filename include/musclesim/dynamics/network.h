@@ -4,8 +4,8 @@
 // given in order has a banded Jacobian; then the activation u_k of every actuator with
 // activation dynamics (docs/model.md section 8), in the order the elements are given; then
 // the integral z_j of every controller with an integral gain (section 11), in the order the
-// controllers are given. A network without either has exactly the node states. (An activation column
-// couples its actuator's nodes to the end of the state: such a network's Jacobian is not
+// controllers are given. A network without either has exactly the node states. (An activation
+// column couples its actuator's nodes to the end of the state: such a network's Jacobian is not
 // banded, and `auto` gives it the dense or the sparse solver.) Immutable once built;
 // evaluation allocates nothing, so one system may be integrated on many threads.
 #pragma once
@@ -118,8 +118,8 @@ class NetworkSystem {
   const std::vector<Element>& elements() const { return elements_; }
   const std::vector<NodeLoad>& loads() const { return loads_; }
   const std::vector<Controller>& controllers() const { return controllers_; }
-  int FindNode(std::string_view name) const;     // -1 if none
-  int FindElement(std::string_view name) const;  // -1 if none
+  int FindNode(std::string_view name) const;        // -1 if none
+  int FindElement(std::string_view name) const;     // -1 if none
   int FindController(std::string_view name) const;  // -1 if none
   // The state index of a node's position (its velocity follows), -1 unless free.
   int StateIndex(int node) const { return ends_[node].state; }
@@ -153,30 +153,31 @@ class NetworkSystem {
   // A node as the right-hand side sees it.
   struct End {
     NodeKind kind;
-    int state;            // free: index of x in y; else -1
-    double position;      // fixed
-    int node;             // index in nodes_ (prescribed: its motion; an index, so copies work)
+    int state;        // free: index of x in y; else -1
+    double position;  // fixed
+    int node;         // index in nodes_ (prescribed: its motion; an index, so copies work)
   };
   // An element as the right-hand side sees it: its ends and where its Jacobian goes.
   struct Link {
-    int from, to;              // node indices
-    int slot[2][4];            // entry of (row: accel from/to, column: x_from, v_from, x_to, v_to); -1 if none
-    int activation;            // actuator with activation dynamics: index of u in y; else -1
-    int slot_activation[2];    // entry of (row: accel from/to, column: u); -1 if none
-    int loop = -1;             // controlled actuator: index of its controller in loops_
-    int side = 0;              // controlled actuator: +1 takes level + c, -1 level - c
+    int from, to;  // node indices
+    // entry of (row: accel from/to, column: x_from, v_from, x_to, v_to); -1 if none
+    int slot[2][4];
+    int activation;          // actuator with activation dynamics: index of u in y; else -1
+    int slot_activation[2];  // entry of (row: accel from/to, column: u); -1 if none
+    int loop = -1;           // controlled actuator: index of its controller in loops_
+    int side = 0;            // controlled actuator: +1 takes level + c, -1 level - c
   };
   // A controller as the right-hand side sees it. The command c depends on at most the
   // states in `columns`: the measured element's ends (x_from, v_from, x_to, v_to; a node
   // measured as the `to` end), the measured actuator's activation state, the integral.
   static constexpr int kLoopColumns = 6;
   struct Loop {
-    int element = -1;                // measured element, or -1
-    int node = -1;                   // measured node, or -1
-    int integral = -1;               // index of z in y, or -1
-    int driven[2] = {-1, -1};        // the actuators driven (the second: co-contraction)
-    int columns[kLoopColumns];       // state indices, -1 where absent
-    int slot_integral[kLoopColumns]; // entries (z row, column)
+    int element = -1;                 // measured element, or -1
+    int node = -1;                    // measured node, or -1
+    int integral = -1;                // index of z in y, or -1
+    int driven[2] = {-1, -1};         // the actuators driven (the second: co-contraction)
+    int columns[kLoopColumns];        // state indices, -1 where absent
+    int slot_integral[kLoopColumns];  // entries (z row, column)
     // entries (row, column) of each driven actuator's rows: its ends' acceleration rows, or
     // with activation dynamics its activation row (row 0)
     int slot_driven[2][2][kLoopColumns];
@@ -184,23 +185,23 @@ class NetworkSystem {
   // What a controller computes at (t, y), with derivatives along its columns.
   struct Command {
     double reference, measured, error;
-    double value;                      // c
-    double by_state[kLoopColumns];     // dc/dy at the columns
+    double value;                   // c
+    double by_state[kLoopColumns];  // dc/dy at the columns
     double error_by_state[kLoopColumns];
-    double high, low;                  // c beyond which no actuator can respond further
+    double high, low;  // c beyond which no actuator can respond further
   };
   // An activation state (docs/model.md section 8).
   struct Activation {
-    int element;         // index in elements_
-    int state;           // index of u in y
-    int slot;            // entry (u row, u column): d(udot)/du
+    int element;  // index in elements_
+    int state;    // index of u in y
+    int slot;     // entry (u row, u column): d(udot)/du
   };
   struct FreeNode {
-    int node;            // index in nodes_
+    int node;  // index in nodes_
     LoadSet loads;
-    double inverse_mass; // 1 / (mass + mass loads) [1/kg]
-    int slot_rate;       // entry (x row, xdot column): 1
-    int slot_position;   // entry (xdot row, x column): the loads' slope
+    double inverse_mass;  // 1 / (mass + mass loads) [1/kg]
+    int slot_rate;        // entry (x row, xdot column): 1
+    int slot_position;    // entry (xdot row, x column): the loads' slope
   };
 
   double PositionOf(const End& end, double t, const double* y) const;

@@ -61,12 +61,12 @@ struct Element {
   Waveform activation;                        // actuator: u(t) in [0, 1]
   std::optional<ExcitationInput> excitation;  // actuator: set for activation dynamics
   bool controlled = false;                    // actuator: driven by a controller
-  double stiffness = 0.0;     // spring, linear tendon [N/m], >= 0
-  double rest_length = 0.0;   // spring [m]
-  double slack_length = 0.0;  // tendon [m]
-  double k = 0.0;             // exponential tendon [N], > 0 (0: the tendon is linear)
-  double alpha = 0.0;         // exponential tendon [1/m], > 0
-  double damping = 0.0;       // damper [N s/m], >= 0
+  double stiffness = 0.0;                     // spring, linear tendon [N/m], >= 0
+  double rest_length = 0.0;                   // spring [m]
+  double slack_length = 0.0;                  // tendon [m]
+  double k = 0.0;        // exponential tendon [N], > 0 (0: the tendon is linear)
+  double alpha = 0.0;    // exponential tendon [1/m], > 0
+  double damping = 0.0;  // damper [N s/m], >= 0
 
   static Element Actuator(std::string name, std::string from, std::string to,
                           std::shared_ptr<const TensionModel> model, Waveform activation);

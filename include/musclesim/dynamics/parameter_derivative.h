@@ -48,8 +48,7 @@ class DifferenceQuotientDerivative final : public ParameterDerivative {
   using Stencil = std::vector<Point>;
   explicit DifferenceQuotientDerivative(Stencil stencil);
   void RightHandSide(double t, const double* y, double* dfdp) const override;
-  void Elements(double t, const double* y,
-                NetworkSystem::ElementPartials* elements) const override;
+  void Elements(double t, const double* y, NetworkSystem::ElementPartials* elements) const override;
   bool analytic() const override { return false; }
   void RefineRate(double t, const double* y, const double* s, double* rate) const override;
 
@@ -57,7 +56,7 @@ class DifferenceQuotientDerivative final : public ParameterDerivative {
   Stencil stencil_;
   mutable std::vector<double> scratch_;  // one right-hand side (a run is single-threaded)
   mutable std::vector<double> shifted_;  // y + offset s
-  std::size_t elements_ = 0;  // the fewest elements among the systems
+  std::size_t elements_ = 0;             // the fewest elements among the systems
   mutable NetworkSample sample_;
 };
 

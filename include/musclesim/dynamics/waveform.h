@@ -31,22 +31,22 @@ struct TablePoint {
 // Values are in the signal's own unit: activation (dimensionless, [0, 1]) or force [N].
 struct Waveform {
   WaveformKind kind = WaveformKind::kConstant;
-  double value = 0.0;      // constant: the value
-  double time = 0.0;       // step: when it switches [s]
-  double before = 0.0;     // step: value before `time`
-  double after = 0.0;      // step: value from `time` on
-  double start = 0.0;      // ramp, pulses: start time [s]
-  double end = 0.0;        // ramp: end time [s], > start
-  double from = 0.0;       // ramp: value up to `start`
-  double to = 0.0;         // ramp: value from `end` on
-  double offset = 0.0;     // sine: mean value
-  double amplitude = 0.0;  // sine: amplitude
-  double frequency = 0.0;  // sine: [Hz], >= 0
-  double phase = 0.0;      // sine: [rad]
-  double period = 1.0;     // pulses: [s], > 0
-  double width = 0.5;      // pulses: length of the high part [s], in (0, period]
-  double low = 0.0;        // pulses: value between pulses
-  double high = 1.0;       // pulses: value during a pulse
+  double value = 0.0;              // constant: the value
+  double time = 0.0;               // step: when it switches [s]
+  double before = 0.0;             // step: value before `time`
+  double after = 0.0;              // step: value from `time` on
+  double start = 0.0;              // ramp, pulses: start time [s]
+  double end = 0.0;                // ramp: end time [s], > start
+  double from = 0.0;               // ramp: value up to `start`
+  double to = 0.0;                 // ramp: value from `end` on
+  double offset = 0.0;             // sine: mean value
+  double amplitude = 0.0;          // sine: amplitude
+  double frequency = 0.0;          // sine: [Hz], >= 0
+  double phase = 0.0;              // sine: [rad]
+  double period = 1.0;             // pulses: [s], > 0
+  double width = 0.5;              // pulses: length of the high part [s], in (0, period]
+  double low = 0.0;                // pulses: value between pulses
+  double high = 1.0;               // pulses: value during a pulse
   std::vector<TablePoint> points;  // table: (t [s], value), t strictly increasing
 
   // Validated factories: each throws ParameterError (paths named as the YAML keys).

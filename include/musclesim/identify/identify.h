@@ -68,13 +68,13 @@ struct PassiveIdentification {
 };
 
 struct ActiveIdentification {
-  ActiveLengthParams curve;  // f_L: amplitudes scaled so that max f = 1 on optimal_range
-  Estimate f_iso;            // [N], the fitted curve's maximum
+  ActiveLengthParams curve;          // f_L: amplitudes scaled so that max f = 1 on optimal_range
+  Estimate f_iso;                    // [N], the fitted curve's maximum
   std::vector<Estimate> amplitudes;  // a_k of `curve` [-], with standard errors
   std::vector<Estimate> precisions;  // b_k of `curve` [1/m^2] (YAML key `width`)
   std::vector<Estimate> centers;     // d_k of `curve` [m]
-  double rmse = 0.0;         // [N]
-  GaussianSum sum;           // f of `curve` [-], built once by IdentifyActive
+  double rmse = 0.0;                 // [N]
+  GaussianSum sum;                   // f of `curve` [-], built once by IdentifyActive
   // f_iso f(x) [N] at length x [m]; allocates nothing, so timing it times the curve.
   double Evaluate(double x) const { return f_iso.value * sum.Value(x); }
 };
@@ -90,11 +90,11 @@ struct VelocityCandidate {
 // One fit of the eccentric branch, T = f_iso (1 + psi) or f_iso (1 + (L - 1) tanh(psi /
 // (L - 1))), psi = (-v / v_max_e)^(1/n_e), to the points with v < 0.
 struct EccentricCandidate {
-  int n = 1;              // n_e [-]
-  Estimate v_max;         // v_max_e [m/s]
-  Estimate limit;         // L [-]; value infinity (and error NaN) for the unbounded form
-  double rmse = 0.0;      // over the eccentric points [N]
-  bool valid = false;     // false when the tension does not rise with lengthening speed
+  int n = 1;           // n_e [-]
+  Estimate v_max;      // v_max_e [m/s]
+  Estimate limit;      // L [-]; value infinity (and error NaN) for the unbounded form
+  double rmse = 0.0;   // over the eccentric points [N]
+  bool valid = false;  // false when the tension does not rise with lengthening speed
 };
 
 // The eccentric branch, when the data hold points with v < 0. f_iso is held at the
@@ -110,20 +110,20 @@ struct EccentricCandidate {
 //     full rank, q more than two standard errors above 0 (a sign of levelling off), a better
 //     fit than the unbounded form by the Bayesian information criterion, and L <= 1e6.
 struct EccentricIdentification {
-  std::size_t points = 0;                   // data points with v < 0 [-]
-  bool identified = false;                  // v_max_e and n_e determined
-  bool limit_identified = false;            // L determined (implies `identified`)
-  std::string why_not;                      // when !identified: the reason, one sentence
-  std::string why_no_limit;                 // when !limit_identified: the reason
-  EccentricCandidate best;                  // what the model takes: the bounded candidate
-                                            // when limit_identified, else the unbounded one
+  std::size_t points = 0;                     // data points with v < 0 [-]
+  bool identified = false;                    // v_max_e and n_e determined
+  bool limit_identified = false;              // L determined (implies `identified`)
+  std::string why_not;                        // when !identified: the reason, one sentence
+  std::string why_no_limit;                   // when !limit_identified: the reason
+  EccentricCandidate best;                    // what the model takes: the bounded candidate
+                                              // when limit_identified, else the unbounded one
   std::vector<EccentricCandidate> unbounded;  // n_e = 1..10, no limit
   std::vector<EccentricCandidate> bounded;    // n_e = 1..10, with a limit
 };
 
 struct VelocityIdentification {
-  VelocityCandidate best;                     // the valid candidate of least RMSE
-  std::vector<VelocityCandidate> candidates;  // n = 1..10
+  VelocityCandidate best;                            // the valid candidate of least RMSE
+  std::vector<VelocityCandidate> candidates;         // n = 1..10
   std::optional<EccentricIdentification> eccentric;  // when the data hold points v < 0
   // Unregularised f_iso g(v) [N] at shortening velocity v [m/s]: for v < 0 the identified
   // eccentric branch, or the concentric power law mirrored when there is none (the model
@@ -135,7 +135,8 @@ struct VelocityIdentification {
 // IdentifyPassive's `level` (0 < level < 1, else std::invalid_argument) is the slack length
 // interval's confidence level [-].
 PassiveIdentification IdentifyPassive(const std::vector<DataPoint>& data, double level = 0.95);
-ActiveIdentification IdentifyActive(const std::vector<DataPoint>& data, int count, bool nonnegative);
+ActiveIdentification IdentifyActive(const std::vector<DataPoint>& data, int count,
+                                    bool nonnegative);
 VelocityIdentification IdentifyVelocity(const std::vector<DataPoint>& data,
                                         std::optional<double> f_iso);
 

@@ -18,14 +18,14 @@ using Fitter = std::function<std::function<double(double)>(const std::vector<Dat
 
 // Tensions and errors below are in the CSV's tension unit, written [N].
 struct ModelScore {
-  std::string name;           // the model, as the report's row names it
-  double rmse = 0.0;          // on the data it was fitted to [N]
-  double loocv_rmse = 0.0;    // each point predicted by a fit without it [N]; NaN: a fit failed
-  double outside_min = 0.0;   // least value over the quarter-span beyond each end of the data [N]
-  double outside_max = 0.0;   // greatest value there [N]
-  bool nonnegative = false;   // outside_min >= 0 (to 1e-9 of the data's scale)
-  bool bounded = false;       // |value| <= 2 max|data| outside the data
-  double ns_per_eval = 0.0;   // [ns], measured through the same std::function call for every model
+  std::string name;          // the model, as the report's row names it
+  double rmse = 0.0;         // on the data it was fitted to [N]
+  double loocv_rmse = 0.0;   // each point predicted by a fit without it [N]; NaN: a fit failed
+  double outside_min = 0.0;  // least value over the quarter-span beyond each end of the data [N]
+  double outside_max = 0.0;  // greatest value there [N]
+  bool nonnegative = false;  // outside_min >= 0 (to 1e-9 of the data's scale)
+  bool bounded = false;      // |value| <= 2 max|data| outside the data
+  double ns_per_eval = 0.0;  // [ns], measured through the same std::function call for every model
 };
 
 struct CurveComparison {

@@ -47,14 +47,13 @@ std::vector<MeasuredSeries> ReadMeasuredSeries(const IdentifySeriesSpec& spec, b
 // A run with sensitivities as identification uses it: the scenario with `values[i]` set at
 // parameters[i] (key paths; `values` empty: the scenario as it is), its rows at `times`
 // (empty: its output grid), the derivatives with respect to `parameters`.
-using SensitivityRunner = std::function<SensitivityTable(
-    const std::vector<std::string>& parameters, const std::vector<double>& values,
-    const std::vector<double>& times)>;
+using SensitivityRunner = std::function<SensitivityTable(const std::vector<std::string>& parameters,
+                                                         const std::vector<double>& values,
+                                                         const std::vector<double>& times)>;
 
 // RunWithSensitivities on copies of `scenario`, the values set through the parameters'
 // handles (SetParameters: a value a handle refuses throws its ParameterError).
 SensitivityRunner ScenarioSensitivityRunner(Scenario scenario);
-
 
 // The verdict on one parameter (thresholds below, and in the README).
 enum class Identifiability {
@@ -92,41 +91,41 @@ struct WeakDirection {
 };
 
 struct SeriesParameterResult {
-  std::string path;                    // as the data file gives it [-]
-  double scenario_value = 0.0;         // in the scenario (with --set) [the parameter's unit]
-  double start = 0.0;                  // [the parameter's unit]
-  double estimate = 0.0;               // the fit's; the design's: the start
-  double standard_error = 0.0;         // [the parameter's unit]; infinite: not determined
+  std::string path;                      // as the data file gives it [-]
+  double scenario_value = 0.0;           // in the scenario (with --set) [the parameter's unit]
+  double start = 0.0;                    // [the parameter's unit]
+  double estimate = 0.0;                 // the fit's; the design's: the start
+  double standard_error = 0.0;           // [the parameter's unit]; infinite: not determined
   double relative_standard_error = 0.0;  // standard error / |estimate| (/ 1 at 0) [-]
-  double column_ratio = 0.0;           // its sensitivity column / the largest [-]
-  std::optional<double> lower, upper;  // the bounds [the parameter's unit]
+  double column_ratio = 0.0;             // its sensitivity column / the largest [-]
+  std::optional<double> lower, upper;    // the bounds [the parameter's unit]
   Identifiability verdict = Identifiability::kIdentifiable;
 };
 
 // One measured value beside the model's.
 struct ResidualRow {
-  std::size_t series = 0;  // index in the data file's list [-]
-  std::string output;      // the column [-]
-  double t = 0.0;          // [s]
-  double measured = 0.0;   // [the column's unit]
-  double model = 0.0;      // [the column's unit]
+  std::size_t series = 0;     // index in the data file's list [-]
+  std::string output;         // the column [-]
+  double t = 0.0;             // [s]
+  double measured = 0.0;      // [the column's unit]
+  double model = 0.0;         // [the column's unit]
   double standardised = 0.0;  // (measured - model) / noise, or / s without noise levels [-]
 };
 
 struct SeriesIdentification {
   std::string scenario;  // the scenario's path [-]
   std::vector<SeriesParameterResult> parameters;
-  Eigen::MatrixXd correlation;     // P x P [-]; NaN for a parameter not determined
-  Eigen::VectorXd singular_values; // of the scaled sensitivity matrix, descending [-]
+  Eigen::MatrixXd correlation;      // P x P [-]; NaN for a parameter not determined
+  Eigen::VectorXd singular_values;  // of the scaled sensitivity matrix, descending [-]
   std::vector<WeakDirection> weak_directions;
-  bool noise_given = false;        // covariance (J^T W J)^-1; else s^2 (J^T J)^-1
-  double variance_factor = 1.0;    // 1, or s^2 = RSS / dof [the values' unit squared]
-  std::size_t values = 0;          // measured values in the fit [-]
-  int degrees_of_freedom = 0;      // values - parameters not at a bound [-]
+  bool noise_given = false;      // covariance (J^T W J)^-1; else s^2 (J^T J)^-1
+  double variance_factor = 1.0;  // 1, or s^2 = RSS / dof [the values' unit squared]
+  std::size_t values = 0;        // measured values in the fit [-]
+  int degrees_of_freedom = 0;    // values - parameters not at a bound [-]
   // the fit only (the design leaves them at their defaults)
-  double weighted_rss = 0.0;       // sum of squared weighted residuals [-, or units^2]
-  int iterations = 0;              // accepted Levenberg-Marquardt steps [-]
-  int evaluations = 0;             // runs with sensitivities [-]
+  double weighted_rss = 0.0;  // sum of squared weighted residuals [-, or units^2]
+  int iterations = 0;         // accepted Levenberg-Marquardt steps [-]
+  int evaluations = 0;        // runs with sensitivities [-]
   bool converged = true;
   std::string stop_reason;
   std::vector<ResidualRow> residuals;

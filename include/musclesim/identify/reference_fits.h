@@ -37,8 +37,8 @@ class PolynomialFit {
   double operator()(double x) const;
 
  private:
-  double center_;      // middle of the data's x range [x unit]
-  double half_width_;  // half that range [x unit]; t = (x - center_) / half_width_
+  double center_;                 // middle of the data's x range [x unit]
+  double half_width_;             // half that range [x unit]; t = (x - center_) / half_width_
   Eigen::VectorXd coefficients_;  // of t^j [y unit], constant first
 };
 

@@ -9,10 +9,10 @@ namespace musclesim {
 
 // Numbers stay text until asked for (Number), so no field here has a physical unit: "[-]".
 struct CsvTable {
-  std::string source;                           // the file's path, for messages [-]
-  std::vector<std::string> header;              // column names [-]
-  std::vector<std::vector<std::string>> rows;   // fields as text, each row as long as header [-]
-  std::vector<std::size_t> lines;               // the file's line number of each row, 1-based [-]
+  std::string source;                          // the file's path, for messages [-]
+  std::vector<std::string> header;             // column names [-]
+  std::vector<std::vector<std::string>> rows;  // fields as text, each row as long as header [-]
+  std::vector<std::size_t> lines;              // the file's line number of each row, 1-based [-]
 
   // Index of `name` in the header, or -1.
   int Find(const std::string& name) const;

@@ -17,7 +17,7 @@ class Document {
 
   Document() = default;  // null
   static Document Bool(bool value);
-  static Document Number(double value);        // written as its shortest exact text
+  static Document Number(double value);  // written as its shortest exact text
   static Document Integer(long long value);
   static Document Text(std::string value);
   static Document List(std::vector<Document> items);
@@ -26,10 +26,10 @@ class Document {
   Kind kind() const { return kind_; }
   bool bool_value() const { return bool_; }
   double number() const { return number_; }
-  bool is_integer() const { return integer_; }   // a number written without a point
+  bool is_integer() const { return integer_; }  // a number written without a point
   const std::string& text() const { return text_; }
-  const std::vector<Document>& items() const { return items_; }       // a list's
-  const std::vector<std::string>& keys() const { return keys_; }      // a map's, in order
+  const std::vector<Document>& items() const { return items_; }   // a list's
+  const std::vector<std::string>& keys() const { return keys_; }  // a map's, in order
   // The value at `key` in a map, or nullptr.
   const Document* Find(const std::string& key) const;
   // A map with `key` set to `value` (added last when absent).

@@ -20,20 +20,20 @@ struct SeriesSpec {
   // the standard deviation of each column's noise, by column name, in the file's order
   // [the column's unit], > 0
   std::vector<std::pair<std::string, double>> noise;
-  std::string at;                  // where the series starts in the data file [-]
+  std::string at;  // where the series starts in the data file [-]
 };
 
 struct SeriesParameterSpec {
-  std::string path;              // a dotted path as `--set` takes it (model.f_iso) [-]
-  std::optional<double> start;   // [the parameter's unit]; none: the scenario's value
-  std::optional<double> lower;   // [the parameter's unit], < upper; both or neither
-  std::optional<double> upper;   // [the parameter's unit]
-  std::string at;                // where the entry is in the data file [-]
+  std::string path;             // a dotted path as `--set` takes it (model.f_iso) [-]
+  std::optional<double> start;  // [the parameter's unit]; none: the scenario's value
+  std::optional<double> lower;  // [the parameter's unit], < upper; both or neither
+  std::optional<double> upper;  // [the parameter's unit]
+  std::string at;               // where the entry is in the data file [-]
 };
 
 struct IdentifySeriesSpec {
-  std::string source;     // the data file's path, for messages [-]
-  std::string scenario;   // path, relative to the working directory [-]
+  std::string source;    // the data file's path, for messages [-]
+  std::string scenario;  // path, relative to the working directory [-]
   std::string scenario_at;
   std::vector<SeriesSpec> series;               // at least one
   std::vector<SeriesParameterSpec> parameters;  // at least one, paths distinct

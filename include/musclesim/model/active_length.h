@@ -23,11 +23,11 @@ struct Gaussian {
 inline constexpr long kMaxPeakSearchCells = 1000000;
 
 struct ActiveLengthParams {
-  double optimal_min = 0.0;          // l1, start of L_opt [m]
-  double optimal_max = 1.0;          // l2, end of L_opt [m], > l1
-  double sigma = 1.0;                // common scale of the b_k [-], > 0; only
-                                     // b_k / sigma [1/m^2] shapes the curve
-  std::vector<Gaussian> gaussians;   // the components psi_k, at least one
+  double optimal_min = 0.0;         // l1, start of L_opt [m]
+  double optimal_max = 1.0;         // l2, end of L_opt [m], > l1
+  double sigma = 1.0;               // common scale of the b_k [-], > 0; only
+                                    // b_k / sigma [1/m^2] shapes the curve
+  std::vector<Gaussian> gaussians;  // the components psi_k, at least one
 };
 
 // One component in the form it is evaluated in, psi(x) = scale * exp(-rate (x - center)^2):
@@ -99,7 +99,7 @@ class ActiveLengthCurve {
 
   const ActiveLengthParams& params() const { return params_; }
   const GaussianSum& sum() const { return sum_; }
-  double peak_value() const { return peak_value_; }      // max of f over L_opt [-]
+  double peak_value() const { return peak_value_; }       // max of f over L_opt [-]
   double optimal_length() const { return peak_length_; }  // where it is reached [m]
 
  private:

@@ -21,8 +21,9 @@ struct ModelSpec {
 // Runs spec.fit, when the block has one and fit_result is not yet set, over the optimal range
 // and sigma of spec.params.active_length, and puts its components into spec.params
 // (fit_result set too); then builds the tension model. A change of what the fit depends on
-// (the range, sigma, the fit's own settings) clears fit_result first. Throws ParameterError (paths relative to the block:
-// "velocity.n", "active_length.fit.count") for parameters the model or the fit refuses.
+// (the range, sigma, the fit's own settings) clears fit_result first. Throws ParameterError (paths
+// relative to the block: "velocity.n", "active_length.fit.count") for parameters the model or the
+// fit refuses.
 std::shared_ptr<const TensionModel> BuildModel(ModelSpec& spec);
 
 }  // namespace musclesim

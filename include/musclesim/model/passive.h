@@ -9,9 +9,9 @@
 namespace musclesim {
 
 struct PassiveParams {
-  double k_p = 0.0;            // tension scale [N], >= 0
-  double alpha = 1.0;          // exponential rate [1/m], > 0
-  double slack_length = 0.0;   // length where passive tension starts [m], finite
+  double k_p = 0.0;           // tension scale [N], >= 0
+  double alpha = 1.0;         // exponential rate [1/m], > 0
+  double slack_length = 0.0;  // length where passive tension starts [m], finite
 };
 
 // Throws ParameterError (paths "k_p", "alpha", "slack_length") for a broken rule.

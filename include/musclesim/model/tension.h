@@ -9,10 +9,10 @@
 namespace musclesim {
 
 struct ModelParams {
-  double f_iso = 1.0;                 // isometric active tension at optimal length [N], > 0
-  PassiveParams passive;              // T_p(x) [N] (eq. 1)
-  ActiveLengthParams active_length;   // f_L(x) [-] (eqs. 3-4, 13)
-  VelocityParams velocity;            // g_eps(v) [-] (eq. 12)
+  double f_iso = 1.0;                // isometric active tension at optimal length [N], > 0
+  PassiveParams passive;             // T_p(x) [N] (eq. 1)
+  ActiveLengthParams active_length;  // f_L(x) [-] (eqs. 3-4, 13)
+  VelocityParams velocity;           // g_eps(v) [-] (eq. 12)
 };
 
 // Throws ParameterError with paths such as "f_iso" or "velocity.n".
@@ -20,11 +20,11 @@ void Validate(const ModelParams& params);
 
 // Tension at one state, split into its parts, with derivatives.
 struct TensionSample {
-  double passive = 0.0;  // T_p [N]
-  double active = 0.0;   // T_a [N]
-  double total = 0.0;    // T [N]
-  double d_length = 0.0;    // dT/dx [N/m]
-  double d_velocity = 0.0;  // dT/dv, v the shortening velocity [N s/m]
+  double passive = 0.0;       // T_p [N]
+  double active = 0.0;        // T_a [N]
+  double total = 0.0;         // T [N]
+  double d_length = 0.0;      // dT/dx [N/m]
+  double d_velocity = 0.0;    // dT/dv, v the shortening velocity [N s/m]
   double d_activation = 0.0;  // dT/du [N]
 };
 
@@ -56,9 +56,9 @@ class TensionModel {
   const VelocityCurve& velocity() const { return velocity_; }
 
  private:
-  ModelParams params_;                // as validated (units as in ModelParams)
-  ActiveLengthCurve active_length_;   // f_L [-], built from params_.active_length
-  VelocityCurve velocity_;            // g_eps [-], built from params_.velocity
+  ModelParams params_;               // as validated (units as in ModelParams)
+  ActiveLengthCurve active_length_;  // f_L [-], built from params_.active_length
+  VelocityCurve velocity_;           // g_eps [-], built from params_.velocity
 };
 
 }  // namespace musclesim

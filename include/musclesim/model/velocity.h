@@ -29,9 +29,9 @@ struct EccentricParams {
 };
 
 struct VelocityParams {
-  double v_max = 1.0;      // maximum shortening velocity [m/s], > 0
-  int n = 1;               // curvature [-]: the power is 1/n, an integer >= 1
-  double epsilon = 1e-3;   // regularisation width [m/s], > 0
+  double v_max = 1.0;              // maximum shortening velocity [m/s], > 0
+  int n = 1;                       // curvature [-]: the power is 1/n, an integer >= 1
+  double epsilon = 1e-3;           // regularisation width [m/s], > 0
   EccentricParams eccentric = {};  // the lengthening branch; empty: symmetric (eq. 12)
 };
 
@@ -99,14 +99,14 @@ class VelocityCurve {
   };
 
   VelocityParams params_;
-  double alpha_;             // 1 / n [-]
-  double half_exponent_;     // (alpha - 1) / 2 [-]
-  double epsilon_squared_;   // eps^2 [m^2/s^2]
-  double inverse_scale_;     // v_max^-alpha [(s/m)^alpha]
-  bool linear_;              // n == 1: phi_eps(v) = v exactly
-  bool asymmetric_;          // v < 0 takes Lengthening: eccentric n, v_max or a limit differ
-  bool has_kink_;            // see has_kink()
-  Branch eccentric_;         // used only when asymmetric_
+  double alpha_;            // 1 / n [-]
+  double half_exponent_;    // (alpha - 1) / 2 [-]
+  double epsilon_squared_;  // eps^2 [m^2/s^2]
+  double inverse_scale_;    // v_max^-alpha [(s/m)^alpha]
+  bool linear_;             // n == 1: phi_eps(v) = v exactly
+  bool asymmetric_;         // v < 0 takes Lengthening: eccentric n, v_max or a limit differ
+  bool has_kink_;           // see has_kink()
+  Branch eccentric_;        // used only when asymmetric_
 };
 
 }  // namespace musclesim

@@ -17,10 +17,10 @@
 namespace musclesim {
 
 struct PlotOptions {
-  std::string output;   // file path, .png or .svg: the format follows the extension
-  int width = 1000;     // figure width [pixels], 100..10000
-  int height = 750;     // figure height [pixels], 100..10000
-  std::string title;    // text; empty: a title made from the input
+  std::string output;  // file path, .png or .svg: the format follows the extension
+  int width = 1000;    // figure width [pixels], 100..10000
+  int height = 750;    // figure height [pixels], 100..10000
+  std::string title;   // text; empty: a title made from the input
 };
 
 // `text` as a gnuplot string expression: pieces in single quotes, inside which gnuplot
@@ -39,8 +39,8 @@ void Validate(const PlotOptions& options);
 // A trajectory CSV of `musclesim run`: length, shortening velocity, activation (with the
 // excitation dashed, when the CSV has that column) and the tensions (with the load) against
 // time in stacked panels sharing the time axis, with the concentric, eccentric and isometric
-// intervals shaded; the title defaults to the file's name. Throws InputError naming missing columns, a table without rows, or the row and column
-// of a cell that is not a finite number.
+// intervals shaded; the title defaults to the file's name. Throws InputError naming missing
+// columns, a table without rows, or the row and column of a cell that is not a finite number.
 std::string TrajectoryPlotScript(const CsvTable& trajectory, const PlotOptions& options);
 
 // A network's trajectory CSV of `musclesim run` (columns <node>.position, <element>.length,

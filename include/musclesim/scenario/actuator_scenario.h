@@ -22,18 +22,18 @@ namespace musclesim {
 
 // The single actuator as a file's single-actuator form gives it (README "Scenario files").
 struct ActuatorScenarioSpec {
-  std::string name;                       // the scenario's name, for messages [-]
-  std::string source;                     // the file it came from [-]
-  ModelSpec model;                        // units as in ModelParams
-  ActuatorParams actuator;                // units as in ActuatorParams
-  double initial_length = 0.0;            // x(t_start) [m], > 0
-  double initial_lengthening_rate = 0.0;  // dx/dt at t_start [m/s]
-  Waveform activation;                    // u(t) [-], within [0, 1]; unused with excitation
-  std::optional<ExcitationInput> excitation;  // activation dynamics (docs/model.md 8)
-  std::vector<Load> loads;                // units as in Load
-  double t_start = 0.0, t_end = 1.0;      // the simulated interval [s], t_end > t_start
-  SolverOptions solver;                   // units as in SolverOptions
-  OutputRequest output;                   // units as in OutputRequest
+  std::string name;                              // the scenario's name, for messages [-]
+  std::string source;                            // the file it came from [-]
+  ModelSpec model;                               // units as in ModelParams
+  ActuatorParams actuator;                       // units as in ActuatorParams
+  double initial_length = 0.0;                   // x(t_start) [m], > 0
+  double initial_lengthening_rate = 0.0;         // dx/dt at t_start [m/s]
+  Waveform activation;                           // u(t) [-], within [0, 1]; unused with excitation
+  std::optional<ExcitationInput> excitation;     // activation dynamics (docs/model.md 8)
+  std::vector<Load> loads;                       // units as in Load
+  double t_start = 0.0, t_end = 1.0;             // the simulated interval [s], t_end > t_start
+  SolverOptions solver;                          // units as in SolverOptions
+  OutputRequest output;                          // units as in OutputRequest
   std::optional<double> min_length, max_length;  // stop when x leaves them [m]
   std::vector<std::string> sensitivities, sensitivities_at;  // as Scenario's
 };
@@ -65,8 +65,8 @@ std::string ActuatorKeyPath(const std::string& network_path);
 ActuatorSample ActuatorSampleOf(const NetworkSample& sample);
 
 // The indices of the network's parts.
-inline constexpr int kActuatorTipNode = 1;      // `tip`
-inline constexpr int kActuatorElement = 0;      // `actuator`
+inline constexpr int kActuatorTipNode = 1;        // `tip`
+inline constexpr int kActuatorElement = 0;        // `actuator`
 inline constexpr int kActuatorDamperElement = 1;  // `damper`
 inline constexpr int kActuatorSpringElement = 2;  // `spring`
 

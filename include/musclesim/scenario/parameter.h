@@ -68,7 +68,7 @@ class Parameter {
   std::string path_, network_path_;
   std::function<double(const Scenario&)> get_;
   std::function<void(Scenario&, double)> set_;  // writes, without checking
-  InputRange range_{};                           // [range_.min, range_.max] unless unbounded
+  InputRange range_{};                          // [range_.min, range_.max] unless unbounded
   bool bounded_ = false;
   bool integer_ = false;
   bool setting_ = false;

@@ -67,8 +67,23 @@ class RunColumns {
  private:
   // a node's or the time, an element's (kLength to kPhase), a controller's
   enum class Kind {
-    kTime, kPosition, kVelocity, kLoad, kLength, kTension, kShortening, kActivation, kExcitation,
-    kPassive, kActive, kTotal, kPhase, kReference, kMeasured, kError, kOutput,
+    kTime,
+    kPosition,
+    kVelocity,
+    kLoad,
+    kLength,
+    kTension,
+    kShortening,
+    kActivation,
+    kExcitation,
+    kPassive,
+    kActive,
+    kTotal,
+    kPhase,
+    kReference,
+    kMeasured,
+    kError,
+    kOutput,
   };
   static bool OfElement(Kind kind) { return kind >= Kind::kLength && kind <= Kind::kPhase; }
   struct Column {

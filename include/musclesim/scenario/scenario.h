@@ -31,9 +31,9 @@ enum class ScenarioForm {
 
 // The rows a run records.
 struct OutputRequest {
-  std::string file;          // CSV path [-], relative to the working directory; "-": stdout
-  double interval = 0.0;     // time between rows [s]; 0 with every_step
-  bool every_step = false;   // `interval: steps`: a row per internal step [-]
+  std::string file;         // CSV path [-], relative to the working directory; "-": stdout
+  double interval = 0.0;    // time between rows [s]; 0 with every_step
+  bool every_step = false;  // `interval: steps`: a row per internal step [-]
   std::optional<double> phase_tolerance;  // v_tol [m/s]; default: each actuator's model's
                                           // velocity epsilon
 };
@@ -50,10 +50,10 @@ struct Scenario {
   std::string source;  // the file it was read from, or a name for one built in code [-]
   ScenarioForm form = ScenarioForm::kNetwork;
   std::map<std::string, ScenarioModel> models;  // by name (the single actuator's: "model")
-  std::vector<Node> nodes;          // in the file's order, the CSV's column order
-  std::vector<Element> elements;    // in the file's order; an actuator's model is one of
-                                    // `models`' (AddModel, SetModel keep them so)
-  std::vector<NodeLoad> loads;      // in the file's order
+  std::vector<Node> nodes;                      // in the file's order, the CSV's column order
+  std::vector<Element> elements;        // in the file's order; an actuator's model is one of
+                                        // `models`' (AddModel, SetModel keep them so)
+  std::vector<NodeLoad> loads;          // in the file's order
   std::vector<Controller> controllers;  // in the file's order
   double t_start = 0.0, t_end = 1.0;    // the simulated interval [s], t_end > t_start
   SolverOptions solver;                 // units as in SolverOptions

@@ -41,13 +41,13 @@ struct SensitivityTable {
   // ACTUATOR.activation (with activation dynamics), ACTUATOR.tension_passive and
   // ACTUATOR.tension_active.
   std::vector<std::string> columns;
-  std::vector<std::string> parameters;         // the paths, written one way
-  std::vector<double> parameter_values;        // each parameter's value in the scenario
-  std::vector<DerivativeSource> sources;       // per parameter
-  std::vector<double> times;                   // [s], one per row
-  std::vector<double> values;                  // rows x columns, row-major
-  std::vector<double> derivatives;             // rows x parameters x columns, row-major
-  RunStats stats;                              // a solver failure is a status, not a throw
+  std::vector<std::string> parameters;    // the paths, written one way
+  std::vector<double> parameter_values;   // each parameter's value in the scenario
+  std::vector<DerivativeSource> sources;  // per parameter
+  std::vector<double> times;              // [s], one per row
+  std::vector<double> values;             // rows x columns, row-major
+  std::vector<double> derivatives;        // rows x parameters x columns, row-major
+  RunStats stats;                         // a solver failure is a status, not a throw
 
   std::size_t rows() const { return times.size(); }
   double value(std::size_t row, std::size_t column) const {
@@ -86,10 +86,10 @@ class SensitivityRun {
 
   const Scenario& scenario() const;
   const NetworkSystem& system() const;
-  const std::vector<std::string>& paths() const;       // written one way
-  const std::vector<double>& values() const;           // in the scenario
+  const std::vector<std::string>& paths() const;  // written one way
+  const std::vector<double>& values() const;      // in the scenario
   const std::vector<DerivativeSource>& sources() const;
-  const std::vector<std::string>& columns() const;     // the differentiated columns
+  const std::vector<std::string>& columns() const;  // the differentiated columns
 
   // Integrates on `simulation` with rows at `output_times` (strictly increasing, within the
   // run; empty: the scenario's output grid), each to `sink`. A solver failure is a status.

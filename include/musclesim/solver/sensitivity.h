@@ -12,9 +12,9 @@ namespace musclesim {
 // One parameter p of a run.
 struct SensitivityParameter {
   const ParameterDerivative* derivative = nullptr;  // df/dp and dT/dp; not null
-  std::vector<double> initial;  // dy(t_start)/dp, state_size values
-  double scale = 1.0;           // |p|, or 1 when p is 0: CVODES scales the sensitivity's
-                                // absolute tolerance by it (pbar, CVodeSetSensParams)
+  std::vector<double> initial;                      // dy(t_start)/dp, state_size values
+  double scale = 1.0;  // |p|, or 1 when p is 0: CVODES scales the sensitivity's
+                       // absolute tolerance by it (pbar, CVodeSetSensParams)
 };
 
 // Receives each recorded row: the state y and the sensitivities s[0..k-1] (each state_size

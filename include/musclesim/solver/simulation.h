@@ -58,11 +58,11 @@ inline constexpr double kMinTolerance = 1e-14;
 // How CVODE integrates a run.
 struct SolverOptions {
   IntegrationMethod method = IntegrationMethod::kBdf;
-  double rtol = 1e-6;            // relative tolerance, in [kMinTolerance, 1)
-  double atol = 1e-9;            // absolute tolerance on x [m] and xdot [m/s], in (0, 1)
+  double rtol = 1e-6;  // relative tolerance, in [kMinTolerance, 1)
+  double atol = 1e-9;  // absolute tolerance on x [m] and xdot [m/s], in (0, 1)
   JacobianKind jacobian = JacobianKind::kAnalytic;  // of the Newton iteration
-  double max_step = 0.0;         // largest internal step [s], >= 0; 0: no limit
-  long max_steps = 10000000;     // internal steps allowed in one run, >= 1 (a guard)
+  double max_step = 0.0;                            // largest internal step [s], >= 0; 0: no limit
+  long max_steps = 10000000;  // internal steps allowed in one run, >= 1 (a guard)
   LinearSolverKind linear_solver = LinearSolverKind::kAuto;
 };
 
@@ -71,13 +71,13 @@ void Validate(const SolverOptions& options);
 
 // What one run integrates: the time span, the initial state, the output grid, the limits.
 struct RunRequest {
-  double t_start = 0.0;               // [s], finite
-  double t_end = 1.0;                 // [s], finite, > t_start
-  double length = 0.1;                // x(t_start) [m], finite, > 0
-  double lengthening_rate = 0.0;      // xdot(t_start) [m/s], finite
-  double output_interval = 1e-3;      // [s], > 0, at most 1e8 rows; 0 records every internal step
-  std::optional<double> min_length;   // [m], in [0, length): reaching it ends the run (limit)
-  std::optional<double> max_length;   // [m], > length: reaching it ends the run (limit)
+  double t_start = 0.0;              // [s], finite
+  double t_end = 1.0;                // [s], finite, > t_start
+  double length = 0.1;               // x(t_start) [m], finite, > 0
+  double lengthening_rate = 0.0;     // xdot(t_start) [m/s], finite
+  double output_interval = 1e-3;     // [s], > 0, at most 1e8 rows; 0 records every internal step
+  std::optional<double> min_length;  // [m], in [0, length): reaching it ends the run (limit)
+  std::optional<double> max_length;  // [m], > length: reaching it ends the run (limit)
 };
 
 // Throws ParameterError ("t_end", "length", "output_interval", "min_length", ...).
@@ -88,24 +88,24 @@ std::string_view ToString(RunStatus status);
 
 // Solver counters summed over the whole run (CVODE resets its own at each re-init).
 struct RunStats {
-  long steps = 0;              // internal steps taken
-  long rhs_evals = 0;          // including those of a difference-quotient Jacobian
+  long steps = 0;      // internal steps taken
+  long rhs_evals = 0;  // including those of a difference-quotient Jacobian
   long jac_evals = 0;
   long linear_setups = 0;      // Newton matrix factorisations
   long newton_iters = 0;       // nonlinear (Newton) iterations
   long newton_conv_fails = 0;  // nonlinear convergence failures
   long error_test_fails = 0;   // steps rejected by the local error test
   // with forward sensitivities (staggered corrector): their counters, summed over them all
-  int sensitivities = 0;            // parameters
-  long sensitivity_rhs_evals = 0;   // calls of the sensitivity right-hand side
+  int sensitivities = 0;           // parameters
+  long sensitivity_rhs_evals = 0;  // calls of the sensitivity right-hand side
   long sensitivity_newton_iters = 0;
   long sensitivity_newton_conv_fails = 0;
   long sensitivity_error_test_fails = 0;
-  double wall_seconds = 0.0;   // [s] of wall-clock time for the whole run
-  double final_time = 0.0;     // [s], where the run ended
+  double wall_seconds = 0.0;  // [s] of wall-clock time for the whole run
+  double final_time = 0.0;    // [s], where the run ended
   LinearSolverKind linear_solver = LinearSolverKind::kDense;  // the one used (never auto)
   RunStatus status = RunStatus::kCompleted;
-  std::string message;         // why a run ended early (limit or failure)
+  std::string message;  // why a run ended early (limit or failure)
 };
 
 struct TrajectoryPoint {
@@ -129,15 +129,15 @@ struct RunResult {
 
 // A network's run: the time span, the output grid, the limits.
 struct LengthLimit {
-  std::string element;              // the element's name
-  std::optional<double> min_length; // [m], in [0, its initial length): reaching it ends the run
-  std::optional<double> max_length; // [m], above its initial length
+  std::string element;               // the element's name
+  std::optional<double> min_length;  // [m], in [0, its initial length): reaching it ends the run
+  std::optional<double> max_length;  // [m], above its initial length
 };
 
 struct NetworkRunRequest {
-  double t_start = 0.0;            // [s], finite
-  double t_end = 1.0;              // [s], finite, > t_start
-  double output_interval = 1e-3;   // [s], > 0, at most 1e8 rows; 0 records every internal step
+  double t_start = 0.0;           // [s], finite
+  double t_end = 1.0;             // [s], finite, > t_start
+  double output_interval = 1e-3;  // [s], > 0, at most 1e8 rows; 0 records every internal step
   std::vector<LengthLimit> limits;
   std::vector<double> initial_state;  // y(t_start) in NetworkSystem's state order; empty: the
                                       // nodes' own positions and velocities and the

@@ -51,11 +51,11 @@ class Stepper {
   // an element that is no actuator or is driven by a controller, a value outside [0, 1].
   void SetActivation(std::string_view actuator, double value);
 
-  double time() const { return time_; }                  // [s]
-  const std::vector<double>& state() const { return state_; }  // y(time())
-  const NetworkSample& sample() const { return sample_; }      // observed at time()
-  const NetworkSystem& system() const { return system_; }      // with the inputs held
-  const RunStats& stats() const { return stats_; }  // summed over every Advance
+  double time() const { return time_; }                          // [s]
+  const std::vector<double>& state() const { return state_; }    // y(time())
+  const NetworkSample& sample() const { return sample_; }        // observed at time()
+  const NetworkSystem& system() const { return system_; }        // with the inputs held
+  const RunStats& stats() const { return stats_; }               // summed over every Advance
   const std::string& message() const { return stats_.message; }  // the last Advance's
 
  private:
@@ -65,8 +65,8 @@ class Stepper {
   SolverOptions options_;
   std::vector<LengthLimit> limits_;
   std::unique_ptr<Simulation> simulation_;
-  std::unique_ptr<Recorder> recorder_;             // takes each piece's row
-  std::unique_ptr<IntegrationSession> session_;    // the integration under way
+  std::unique_ptr<Recorder> recorder_;           // takes each piece's row
+  std::unique_ptr<IntegrationSession> session_;  // the integration under way
   double time_;
   std::vector<double> state_;
   NetworkSample sample_;

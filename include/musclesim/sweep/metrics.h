@@ -44,7 +44,7 @@ Metric ParseMetric(std::string_view text);  // ParameterError("metrics", text, .
 const std::vector<Metric>& AllMetrics();
 
 struct MetricOptions {
-  std::optional<double> window_start;   // mean_shortening_velocity window [s]; default: the run
+  std::optional<double> window_start;  // mean_shortening_velocity window [s]; default: the run
   std::optional<double> window_end;
   std::optional<double> target_length;  // time_to_length [m]; required for that metric
   // The element whose trajectory the metrics read: a network's element name, or `actuator`
@@ -80,9 +80,9 @@ class MetricAccumulator final : public TrajectorySink {
   // x at `at` as ComputeMetric's linear interpolation between records finds it, tracked
   // while the points come (the record pair around it) and completed at the end.
   struct LengthProbe {
-    double at = 0.0;         // [s]
-    bool found = false;      // a pair of records around `at` was seen
-    double length = 0.0;     // [m], the interpolated value when found
+    double at = 0.0;      // [s]
+    bool found = false;   // a pair of records around `at` was seen
+    double length = 0.0;  // [m], the interpolated value when found
   };
   // What the metrics read of a recorded point.
   struct Mark {
@@ -98,7 +98,7 @@ class MetricAccumulator final : public TrajectorySink {
   double min_length_ = 0.0, max_length_ = 0.0, peak_tension_ = 0.0, work_sum_ = 0.0;
   LengthProbe window_start_, window_end_;  // used when window_ and the window's ends are given
   bool crossed_ = false;
-  double crossing_time_ = 0.0;             // [s], time_to_length once crossed_
+  double crossing_time_ = 0.0;  // [s], time_to_length once crossed_
 };
 
 }  // namespace musclesim

@@ -26,32 +26,32 @@ std::string_view ToString(TrajectoryPolicy policy);
 // so that a long axis costs no memory; random draws from it (uniform, or log-uniform with
 // `log_scale`), or picks uniformly among `values` when given a list.
 struct SweepAxis {
-  std::string path;                  // key path into the scenario, e.g. load[0].value [-]
-  std::vector<std::string> values;   // a list's values as written, the summary's text [-]
-  std::vector<double> numbers;       // the same as numbers, when every one is a number
-  double from = 0.0, to = 0.0;       // a range's ends, in the unit of the swept value
-  long count = 0;                    // grid and zip: values in the range; 0 for a list [-]
-  bool log_scale = false;            // geometric spacing (draws) in the range [-]
-  std::string location;              // "file:line:column" of the axis in the sweep file [-]
+  std::string path;                 // key path into the scenario, e.g. load[0].value [-]
+  std::vector<std::string> values;  // a list's values as written, the summary's text [-]
+  std::vector<double> numbers;      // the same as numbers, when every one is a number
+  double from = 0.0, to = 0.0;      // a range's ends, in the unit of the swept value
+  long count = 0;                   // grid and zip: values in the range; 0 for a list [-]
+  bool log_scale = false;           // geometric spacing (draws) in the range [-]
+  std::string location;             // "file:line:column" of the axis in the sweep file [-]
   bool is_range() const { return values.empty(); }
   // A range, or a list of numbers: the axis sets a number through a parameter handle.
   bool is_numeric() const { return is_range() || numbers.size() == values.size(); }
 };
 
 struct SweepSpec {
-  std::string source;                // the sweep file, or a name for a sweep made in code [-]
-  std::string base;                  // the base scenario: its file, resolved relative to the
-                                     // sweep file, or its name [-]
-  std::uint64_t base_digest = 0;     // a hash of the base (its file's bytes): resume checks it [-]
+  std::string source;             // the sweep file, or a name for a sweep made in code [-]
+  std::string base;               // the base scenario: its file, resolved relative to the
+                                  // sweep file, or its name [-]
+  std::uint64_t base_digest = 0;  // a hash of the base (its file's bytes): resume checks it [-]
   ScenarioForm form = ScenarioForm::kActuator;  // the base's form [-]
   SweepMode mode = SweepMode::kGrid;
-  long samples = 0;                  // random: number of points [-]
-  std::uint64_t seed = 0;            // random: the draws are a pure function of seed and index [-]
+  long samples = 0;        // random: number of points [-]
+  std::uint64_t seed = 0;  // random: the draws are a pure function of seed and index [-]
   std::vector<SweepAxis> axes;
   std::vector<Metric> metrics;
-  MetricOptions metric_options;      // units as in MetricOptions
+  MetricOptions metric_options;  // units as in MetricOptions
   TrajectoryPolicy trajectories = TrajectoryPolicy::kNone;
-  std::string output;                // summary CSV, relative to the working directory [-]
+  std::string output;  // summary CSV, relative to the working directory [-]
   // The validated scenarios of the points when all of them were validated up front (at most
   // kUpFrontPoints points: `kept`); otherwise each point is built and validated when it
   // runs, an invalid one becoming an `invalid` row of the summary. Under MPI each rank

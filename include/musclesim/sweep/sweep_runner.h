@@ -33,11 +33,11 @@ struct SweepRow {
   std::vector<std::string> values;  // its axis values, as the summary writes them [-]
   std::vector<double> numbers;      // the same as numbers (NaN for a word) [their units]
   RowStatus status = RowStatus::kOk;
-  std::vector<double> metrics;      // spec.metrics' values, NaN where there is none (a failed
-                                    // or invalid point, a length never reached) [their units]
-  long steps = 0, rhs_evals = 0;    // the run's counters [-]
-  double wall_seconds = 0.0;        // [s]
-  std::string message;              // why it failed or is invalid [-]
+  std::vector<double> metrics;    // spec.metrics' values, NaN where there is none (a failed
+                                  // or invalid point, a length never reached) [their units]
+  long steps = 0, rhs_evals = 0;  // the run's counters [-]
+  double wall_seconds = 0.0;      // [s]
+  std::string message;            // why it failed or is invalid [-]
 };
 
 // The summary's CSV line of `row` (without its newline): what PATH holds for it.
@@ -53,11 +53,11 @@ struct SweepRunOptions {
 };
 
 struct SweepOutcome {
-  long points = 0;      // in the sweep [-]
-  long resumed = 0;     // rows taken from PATH.partial [-]
-  long ran = 0;         // points run now [-]
-  long failed = 0;      // failed rows in the summary [-]
-  long invalid = 0;     // invalid rows in the summary (points not valid scenarios) [-]
+  long points = 0;   // in the sweep [-]
+  long resumed = 0;  // rows taken from PATH.partial [-]
+  long ran = 0;      // points run now [-]
+  long failed = 0;   // failed rows in the summary [-]
+  long invalid = 0;  // invalid rows in the summary (points not valid scenarios) [-]
   bool interrupted = false;
   std::vector<SweepRow> rows;  // the summary by index, when kept in memory (output empty) [-]
 };
@@ -67,7 +67,8 @@ struct SweepOutcome {
 class InterruptedSweepError : public InputError {
  public:
   explicit InterruptedSweepError(std::string partial_path)
-      : InputError(partial_path + " exists: an earlier sweep was interrupted. Resume the sweep "
+      : InputError(partial_path +
+                   " exists: an earlier sweep was interrupted. Resume the sweep "
                    "to continue it, or delete the file to start again"),
         partial_path_(std::move(partial_path)) {}
   const std::string& partial_path() const { return partial_path_; }
