@@ -16,6 +16,7 @@
 #include "musclesim/solver/stepper.h"
 #include "overrides.h"
 #include "py_scenario.h"
+#include "run_data.h"
 
 namespace musclesim::python {
 
@@ -107,21 +108,7 @@ class PyStepper {
 
   py::dict Stats() const {
     const auto lock = Exclusive();
-    const RunStats& s = stepper_->stats();
-    py::dict stats;
-    stats["status"] = std::string(ToString(s.status));
-    stats["steps"] = s.steps;
-    stats["rhs_evals"] = s.rhs_evals;
-    stats["jac_evals"] = s.jac_evals;
-    stats["linear_setups"] = s.linear_setups;
-    stats["newton_iters"] = s.newton_iters;
-    stats["newton_conv_fails"] = s.newton_conv_fails;
-    stats["error_test_fails"] = s.error_test_fails;
-    stats["wall_seconds"] = s.wall_seconds;
-    stats["final_time"] = s.final_time;
-    stats["linear_solver"] = std::string(ToString(s.linear_solver));
-    stats["message"] = s.message;
-    return stats;
+    return StatsDict(stepper_->stats());
   }
 
   std::string message() const {

@@ -22,4 +22,10 @@ std::string FormatNumber(double value) { return ToChars(value); }
 
 std::string FormatFull(double value) { return ToChars(value, std::chars_format::general, 17); }
 
+std::string CommaSeparated(const std::vector<std::string>& names) {
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i) text += (i ? ", " : "") + names[i];
+  return text;
+}
+
 }  // namespace musclesim

@@ -2,17 +2,9 @@
 
 #include <algorithm>
 
+#include "musclesim/core/number_format.h"
+
 namespace musclesim {
-
-namespace {
-
-std::string List(const std::vector<std::string>& names) {
-  std::string text;
-  for (std::size_t i = 0; i < names.size(); ++i) text += (i ? ", " : "") + names[i];
-  return text;
-}
-
-}  // namespace
 
 std::string ResolveMetricElement(const yaml::Source& src, const YAML::Node& root,
                                  const SweepSpec& spec, const MetricElements& elements) {
@@ -21,12 +13,12 @@ std::string ResolveMetricElement(const yaml::Source& src, const YAML::Node& root
     const YAML::Node given = options["element"];
     const std::string name = yaml::ReadString(src, given, "metric_options.element");
     if (std::find(elements.all.begin(), elements.all.end(), name) == elements.all.end()) {
-      yaml::Fail(
-          src, given, "metric_options.element", name,
-          spec.form == ScenarioForm::kNetwork
-              ? "must name an element of the network " + spec.base + ": " + List(elements.all)
-              : "the single-actuator scenario " + spec.base +
-                    " has one element, `actuator`: give that or leave element out");
+      yaml::Fail(src, given, "metric_options.element", name,
+                 spec.form == ScenarioForm::kNetwork
+                     ? "must name an element of the network " + spec.base + ": " +
+                           CommaSeparated(elements.all)
+                     : "the single-actuator scenario " + spec.base +
+                           " has one element, `actuator`: give that or leave element out");
     }
     return name;
   }
@@ -36,10 +28,11 @@ std::string ResolveMetricElement(const yaml::Source& src, const YAML::Node& root
   const std::string actuators = elements.actuators.empty()
                                     ? "no actuator"
                                     : std::to_string(elements.actuators.size()) + " actuators (" +
-                                          List(elements.actuators) + ")";
-  throw InputError("metric_options.element (" + yaml::Location(src, at) +
-                   "): missing: the network " + spec.base + " has " + actuators +
-                   ", so name the element the metrics read, one of: " + List(elements.all));
+                                          CommaSeparated(elements.actuators) + ")";
+  throw InputError(
+      "metric_options.element (" + yaml::Location(src, at) + "): missing: the network " +
+      spec.base + " has " + actuators +
+      ", so name the element the metrics read, one of: " + CommaSeparated(elements.all));
 }
 
 }  // namespace musclesim

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/core/number_format.h"
 #include "musclesim/scenario/parameter.h"
 #include "sweep/point_explanation.h"
 #include "sweep/sweep_base.h"
@@ -15,12 +16,6 @@
 namespace musclesim {
 
 namespace {
-
-std::string List(const std::vector<std::string>& names) {
-  std::string text;
-  for (std::size_t i = 0; i < names.size(); ++i) text += (i ? ", " : "") + names[i];
-  return text;
-}
 
 // "path=value, path=value" of a point, for messages.
 std::string Describe(const SweepSpec& spec, const std::vector<std::string>& values) {
@@ -173,7 +168,7 @@ std::string ResolveElementInMemory(const SweepSpec& spec, const MetricElements& 
   if (!given.empty()) {
     if (std::find(elements.all.begin(), elements.all.end(), given) == elements.all.end()) {
       throw InputError("metric_options.element = " + given + ": must name an element of " +
-                       spec.base + ": " + List(elements.all));
+                       spec.base + ": " + CommaSeparated(elements.all));
     }
     return given;
   }
@@ -181,7 +176,7 @@ std::string ResolveElementInMemory(const SweepSpec& spec, const MetricElements& 
   throw InputError(
       "metric_options.element: missing: " + spec.base + " has " +
       std::to_string(elements.actuators.size()) +
-      " actuators, so name the element the metrics read, one of: " + List(elements.all));
+      " actuators, so name the element the metrics read, one of: " + CommaSeparated(elements.all));
 }
 
 SweepPlan PlanSweep(SweepSpec spec, std::unique_ptr<PointFactory> points, int threads,

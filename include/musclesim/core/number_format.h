@@ -1,9 +1,10 @@
-// How numbers become text, for every layer: messages and YAML print the shortest exact form,
-// CSV and JSON columns a fixed 17 significant digits. Both read back to the same double;
-// they differ only in how many digits they spend.
+// How numbers (and lists of names) become text, for every layer: messages and YAML print the
+// shortest exact form, CSV and JSON columns a fixed 17 significant digits. Both read back to the
+// same double; they differ only in how many digits they spend.
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace musclesim {
 
@@ -14,5 +15,8 @@ std::string FormatNumber(double value);
 // Exactly as printf's %.17g ("0.10000000000000001"): for CSV and JSON columns, whose bytes
 // must not depend on how short a value happens to be.
 std::string FormatFull(double value);
+
+// "a, b, c": names listed in a message, in their order.
+std::string CommaSeparated(const std::vector<std::string>& names);
 
 }  // namespace musclesim
