@@ -17,6 +17,7 @@
 #include "musclesim/core/errors.h"
 #include "musclesim/io/csv_table.h"
 #include "musclesim/io/model_text.h"
+#include "musclesim/io/file_roles.h"
 #include "musclesim/io/output_file.h"
 #include "musclesim/core/number_format.h"
 #include "musclesim/model/tension.h"
@@ -119,6 +120,7 @@ CsvTable TableOf(const std::vector<std::string>& names, const std::vector<Column
 // Writes the script first when asked, as the CLI's --script does, then renders the figure.
 void Draw(const std::string& script, const PlotOptions& options,
           const std::optional<std::string>& script_path) {
+  RefuseOverlappingFiles({}, {{options.output, "output"}, {script_path.value_or(""), "script"}});
   if (script_path) WriteOutput(*script_path, script);
   Render(script, options);
 }

@@ -243,3 +243,11 @@ def test_missing_gnuplot_is_the_librarys_error(tmp_path, short_run, monkeypatch)
         musclesim.plot(short_run, tmp_path / "fig.png", script=tmp_path / "fig.gp")
     # the script is written first, as the CLI's --script is
     assert (tmp_path / "fig.gp").exists() and not (tmp_path / "fig.png").exists()
+
+
+def test_script_over_the_figure_is_refused_before_anything_is_written(tmp_path, short_run):
+    figure = tmp_path / "fig.png"
+    with pytest.raises(musclesim.InputError,
+                       match=r"script .*fig.png: output .*fig.png names the same file"):
+        musclesim.plot(short_run, figure, script=figure)
+    assert list(tmp_path.iterdir()) == []

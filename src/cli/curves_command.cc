@@ -8,6 +8,7 @@
 #include "musclesim/io/curves_csv.h"
 #include "musclesim/core/input_ranges.h"
 #include "musclesim/io/model_yaml.h"
+#include "musclesim/io/file_roles.h"
 #include "musclesim/io/output_file.h"
 
 namespace musclesim::cli {
@@ -75,6 +76,7 @@ int CurvesCommand(int argc, char** argv) {
   const std::string option = lengths ? "--length" : "--velocity";
   const UniformGrid grid =
       ParseGrid(option, args.Value(option), lengths ? kPositionRange : kSpeedRange);
+  RefuseOverlappingFiles({{args.positional[0], "the model file"}}, {{args.Value("-o", "-"), "-o"}});
   const TensionModel model(LoadModelSpec(args.positional[0]).params);
   std::string csv;
   try {

@@ -7,6 +7,7 @@
 #include "musclesim/core/errors.h"
 #include "musclesim/io/model_yaml.h"
 #include "musclesim/io/model_yaml_writer.h"
+#include "musclesim/io/file_roles.h"
 #include "musclesim/io/output_file.h"
 
 namespace musclesim::cli {
@@ -32,6 +33,7 @@ int FitCommand(int argc, char** argv) {
     return 0;
   }
   if (args.positional.size() != 1) throw UsageError("expected one model file (see --help)");
+  RefuseOverlappingFiles({{args.positional[0], "the model file"}}, {{args.Value("-o", "-"), "-o"}});
   const ModelSpec loaded = LoadModelFit(args.positional[0]);
   const FitResult& fit = *loaded.fit_result;
   std::ostringstream out;

@@ -7,6 +7,7 @@
 #include "musclesim/core/errors.h"
 #include "musclesim/io/identify_spec.h"
 #include "musclesim/io/model_yaml_writer.h"
+#include "musclesim/io/file_roles.h"
 #include "musclesim/io/output_file.h"
 #include "musclesim/identify/curve_data.h"
 #include "musclesim/identify/identified_model.h"
@@ -59,6 +60,15 @@ int IdentifyCommand(int argc, char** argv) {
   }
   if (args.positional.size() != 1) throw UsageError("expected one data file (see --help)");
   const IdentifySpec spec = LoadIdentifySpec(args.positional[0]);
+  std::vector<FileRole> inputs = {{args.positional[0], "the data file"}};
+  for (const auto& [csv, name] :
+       {std::pair{spec.passive_csv, "passive.csv"}, std::pair{spec.active_csv, "active.csv"},
+        std::pair{spec.velocity_csv, "velocity.csv"}}) {
+    if (csv) inputs.push_back({*csv, name});
+  }
+  RefuseOverlappingFiles(inputs,
+                         {{args.Value("-o", "-"), "-o"},
+                          {args.Has("--report") ? args.Value("--report") : "", "--report"}});
 
   std::optional<PassiveIdentification> passive;
   std::optional<ActiveIdentification> active;

@@ -1,6 +1,5 @@
 // musclesim identify DATA.yaml, for a data file of the time-series kind (a top-level
 // `scenario` key): the fit, or with --design the experiment's check.
-#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <system_error>
@@ -14,6 +13,7 @@
 #include "cli/exit_codes.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/io/identify_series_spec.h"
+#include "musclesim/io/file_roles.h"
 #include "musclesim/io/output_file.h"
 #include "musclesim/io/scenario_rewrite.h"
 #include "musclesim/io/scenario_yaml.h"
@@ -71,33 +71,16 @@ std::optional<std::string> DataFile(int argc, char** argv) {
 
 // Refuses (exit 2) an output that would overwrite an input of the fit, or another output.
 void CheckOutputs(const Arguments& args, const IdentifySeriesSpec& spec) {
-  std::vector<std::pair<std::string, std::string>> inputs = {{args.positional[0], "the data file"},
-                                                             {spec.scenario, "the scenario"}};
+  std::vector<FileRole> inputs = {{args.positional[0], "the data file"},
+                                  {spec.scenario, "the scenario"}};
   for (const SeriesSpec& series : spec.series) {
-    if (series.csv) inputs.emplace_back(*series.csv, "a measured series");
+    if (series.csv) inputs.push_back({*series.csv, "a measured series"});
   }
-  std::vector<std::pair<std::string, std::string>> seen;
+  std::vector<FileRole> outputs;
   for (const char* option : {"-o", "--report", "--residuals"}) {
-    if (!args.Has(option) || args.Value(option) == "-") continue;
-    const std::string path = args.Value(option);
-    std::error_code error;
-    const auto same = [&](const std::string& other) {
-      return std::filesystem::equivalent(path, other, error);
-    };
-    for (const auto& [input, what] : inputs) {
-      if (same(input)) {
-        throw InputError(std::string(option) + " " + path + ": is " + what + " (" + input +
-                         "), an input of the fit: write the output elsewhere");
-      }
-    }
-    for (const auto& [other, other_option] : seen) {
-      if (other == path || same(other)) {
-        throw InputError(std::string(option) + " " + path + ": " + other_option +
-                         " names the same file: give each output its own");
-      }
-    }
-    seen.emplace_back(path, option);
+    if (args.Has(option)) outputs.push_back({args.Value(option), option});
   }
+  RefuseOverlappingFiles(inputs, outputs);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "cli/exit_codes.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/io/model_yaml.h"
+#include "musclesim/io/file_roles.h"
 #include "musclesim/io/output_file.h"
 #include "musclesim/plot/plot.h"
 
@@ -95,6 +96,12 @@ int PlotCommand(int argc, char** argv) {
   if (args.Has("--size")) ParseSize(args.Value("--size"), options);
   try {
     Validate(options);
+    std::vector<FileRole> inputs;
+    for (const std::string& file : args.positional) inputs.push_back({file, "the plotted CSV"});
+    if (args.Has("--curves")) inputs.push_back({args.Value("--curves"), "the model file"});
+    RefuseOverlappingFiles(
+        inputs,
+        {{options.output, "-o"}, {args.Has("--script") ? args.Value("--script") : "", "--script"}});
     const std::string script = Script(args, options);
     if (args.Has("--script")) WriteOutput(args.Value("--script"), script);
     Render(script, options);

@@ -1,10 +1,10 @@
 #include "cli/run_report.h"
 
-#include <filesystem>
 #include <iostream>
 
 #include "cli/exit_codes.h"
 #include "musclesim/core/errors.h"
+#include "musclesim/io/file_roles.h"
 #include "musclesim/io/stats_json.h"
 
 namespace musclesim::cli {
@@ -15,16 +15,9 @@ std::string RunOutputPath(const Arguments& args, const std::string& file,
   if (output.empty()) {
     throw InputError(source + ": no output file: set output.file or pass -o PATH");
   }
-  // writing over the scenario would destroy the input the run came from
-  const auto refuse_input = [&](const std::string& path, const std::string& what) {
-    std::error_code error;
-    if (path != "-" && std::filesystem::equivalent(path, source, error)) {
-      throw InputError(what + " " + path + ": is the scenario file (" + source +
-                       "), the run's input: write the output elsewhere");
-    }
-  };
-  refuse_input(output, args.Has("-o") ? "-o" : "output.file");
-  if (args.Has("--stats")) refuse_input(args.Value("--stats"), "--stats");
+  std::vector<FileRole> outputs = {{output, args.Has("-o") ? "-o" : "output.file"}};
+  if (args.Has("--stats")) outputs.push_back({args.Value("--stats"), "--stats"});
+  RefuseOverlappingFiles({{source, "the scenario file"}}, outputs);
   return output;
 }
 

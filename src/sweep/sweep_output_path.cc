@@ -5,6 +5,7 @@
 #include <system_error>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/io/file_roles.h"
 
 namespace musclesim {
 
@@ -28,13 +29,8 @@ void CheckSummaryPath(const SweepSpec& spec, const std::string& path) {
     throw InputError(path + ": the directory " + directory.string() +
                      " does not exist: create it, or write the summary elsewhere");
   }
-  for (const auto& [input, what] :
-       {std::pair{spec.source, "the sweep file"}, std::pair{spec.base, "the base scenario"}}) {
-    if (!input.empty() && fs::equivalent(path, input, error)) {
-      throw InputError(path + ": is " + what + " (" + input +
-                       "), an input of the sweep: write the summary elsewhere");
-    }
-  }
+  RefuseOverlappingFiles({{spec.source, "the sweep file"}, {spec.base, "the base scenario"}},
+                         {{path, "the summary"}});
 }
 
 }  // namespace musclesim
