@@ -29,9 +29,16 @@ def table(results):
     ones), float64 or str like Result.columns. A run without a column has NaN there (float64)
     or '' (str). `pandas.DataFrame(musclesim.table(results))` is the same as a DataFrame, and
     `array[array["job"] == k]` one run's rows. SI units as in the CSV (s, m, m/s, N)."""
+    from . import Result  # the extension's type, imported late: this module loads first
+    if isinstance(results, (str, bytes, dict)) or not hasattr(results, "__iter__"):
+        raise TypeError("table(results): results must be an iterable of musclesim.Result, "
+                        "not %s" % type(results).__name__)
     results = list(results)
     names, text = [], {}
-    for result in results:
+    for k, result in enumerate(results):
+        if not isinstance(result, Result):
+            raise TypeError("table(results): results[%d] is %s, not a musclesim.Result "
+                            "(from Scenario.run or run_many)" % (k, type(result).__name__))
         for name, values in result.columns.items():
             if name not in text:
                 names.append(name)

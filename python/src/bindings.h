@@ -21,5 +21,7 @@ void BindIdentifyCurves(pybind11::module_& m);
 void BindIdentifySeries(pybind11::module_& m);
 // Figures drawn by gnuplot, as `musclesim plot` draws them.
 void BindPlot(pybind11::module_& m);
+// Last: every bound type raises TypeError when used without its constructor having run.
+void RefuseUninitialisedObjects(pybind11::module_& m);
 
 }  // namespace musclesim::python

@@ -16,4 +16,5 @@ PYBIND11_MODULE(_musclesim, m) {
   musclesim::python::BindIdentifyCurves(m);
   musclesim::python::BindIdentifySeries(m);
   musclesim::python::BindPlot(m);
+  musclesim::python::RefuseUninitialisedObjects(m);
 }

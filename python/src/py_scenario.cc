@@ -21,6 +21,20 @@ bool IsNumber(const py::handle& value) {
   return py::isinstance(value, numpy.attr("number")) && !py::isinstance(value, numpy.attr("bool_"));
 }
 
+// `text` ("key=value") among `overrides`, in place of an earlier value of `key`.
+void Record(std::vector<std::string>& overrides, const std::string& key, const std::string& text) {
+  // a key set again replaces its earlier value: overrides set single values, so the document
+  // they make is the same, and a loop of set() stays linear in its length
+  const std::string prefix = key + "=";
+  for (std::string& earlier : overrides) {
+    if (earlier.compare(0, prefix.size(), prefix) == 0) {
+      earlier = text;
+      return;
+    }
+  }
+  overrides.push_back(text);
+}
+
 }  // namespace
 
 Scenario PyScenario::Read(const std::vector<std::string>& more) const {
@@ -67,7 +81,7 @@ void PyScenario::Set(const std::string& key, const py::object& value) {
         }
       }
       scenario = std::move(changed);
-      overrides.push_back(text);
+      Record(overrides, key, text);
       return;
     }
   }
@@ -78,7 +92,7 @@ void PyScenario::Set(const std::string& key, const py::object& value) {
     changed = Read({text});
   }
   scenario = std::move(changed);
-  overrides.push_back(text);
+  Record(overrides, key, text);
 }
 
 PyScenario LoadPyScenario(const py::object& given, const py::object& set) {

@@ -19,13 +19,14 @@ struct PyScenario {
   std::string path;                          // the file read, absolute; "" for a document
   std::shared_ptr<const Document> document;  // a dict's document; null for a file
   std::string display;                       // its name in messages
-  std::vector<std::string> overrides;        // "key=value" since reading, in order
+  std::vector<std::string> overrides;        // "key=value" since reading, one per key
 
   // The source read again with `more` overrides after the scenario's own (without the GIL).
   Scenario Read(const std::vector<std::string>& more) const;
   // The scenario as YAML text, its set() values written in (without the GIL).
   std::string ToYaml() const;
   // Sets `key` to `value` as set() does (with the GIL: it converts `value`).
+  // All or nothing: a refused value leaves the scenario as it was.
   void Set(const std::string& key, const pybind11::object& value);
 };
 

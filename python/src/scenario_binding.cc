@@ -232,7 +232,9 @@ void DefineScenarioProperties(py::class_<PyScenario>& scenario_class) {
           "The scenario's `name:` ('' if none).")
       .def_property_readonly(
           "overrides", [](const PyScenario& s) { return s.overrides; },
-          "The 'key=value' values set since the file or dict was read, in order.")
+          "The 'key=value' values set since the file or dict was read: one per key, its last "
+          "value, in "
+          "the order the keys were first set.")
       .def_property_readonly(
           "solver", [](const PyScenario& s) { return s.scenario.solver; },
           "A copy of the solver's options (SolverOptions).")
@@ -311,11 +313,7 @@ void DefineScenarioUse(py::class_<PyScenario>& scenario_class) {
       .def(
           "set",
           [](PyScenario& s, const std::string& key, const py::object& value) -> PyScenario& {
-            // changed on a copy, taken on only if valid: a rejected value leaves the scenario
-            // as it was, and no other thread sees it half changed
-            PyScenario changed = s;
-            changed.Set(key, value);
-            s = std::move(changed);
+            s.Set(key, value);  // all or nothing: a rejected value leaves it as it was
             return s;
           },
           py::arg("key"), py::arg("value"), py::return_value_policy::reference_internal,

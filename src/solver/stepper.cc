@@ -5,6 +5,8 @@
 #include <utility>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/core/input_ranges.h"
+#include "musclesim/core/number_format.h"
 #include "musclesim/solver/integration_session.h"
 #include "run_roots.h"
 
@@ -67,8 +69,13 @@ RunStatus Stepper::Advance(double t_next) {
                            " s (" + std::string(ToString(stats_.status)) + ": " + stats_.message +
                            "): a new stepper starts again");
   }
-  Require(std::isfinite(t_next) && t_next > time_, "t_next", t_next,
-          "must be finite and after time() = " + FormatNumber(time_) + " [s]");
+  Require(std::isfinite(t_next) && kTimeRange.Contains(t_next), "t_next", t_next,
+          "must be finite and at most " + FormatNumber(kTimeRange.max) + " [s]: " + kTimeRange.why);
+  // a step CVODE can take: many roundoffs of the time scale (as an output interval)
+  const double shortest = kMinIntervalRelative * TimeScale(time_, t_next);
+  Require(t_next - time_ >= shortest, "t_next", t_next,
+          "must be after time() = " + FormatNumber(time_) + " [s] by at least " +
+              FormatNumber(shortest) + " [s], 1e-12 of the time scale max(1 s, |t|)");
   if (restart_) {
     // a new integration from here: the inputs changed, or this is the first piece
     NetworkRunRequest start;

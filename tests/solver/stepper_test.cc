@@ -246,7 +246,13 @@ TEST(Stepper, RefusesATimeNotAfterItsOwn) {
   EXPECT_THROW(stepper.Advance(-1e-3), ParameterError);
   EXPECT_THROW(stepper.Advance(std::nan("")), ParameterError);
   EXPECT_THROW(stepper.Advance(HUGE_VAL), ParameterError);
+  // finite but beyond what a step of CVODE resolves: past the time range, or a step of a
+  // few roundoffs (which CVODE refuses as a tstop behind t)
+  EXPECT_THROW(stepper.Advance(1e300), ParameterError);
+  EXPECT_THROW(stepper.Advance(5e-324), ParameterError);
+  EXPECT_THROW(stepper.Advance(1e-13), ParameterError);
   ASSERT_EQ(stepper.Advance(1e-3), RunStatus::kCompleted);
+  EXPECT_THROW(stepper.Advance(1e-3 + 1e-16), ParameterError);
   EXPECT_THROW(stepper.Advance(1e-3), ParameterError);
   EXPECT_EQ(stepper.time(), 1e-3);  // a refusal changes nothing
   EXPECT_EQ(stepper.Advance(2e-3), RunStatus::kCompleted);
