@@ -18,6 +18,7 @@ namespace {
 
 using identify_series_detail::AnalyseJacobian;
 using identify_series_detail::JacobianAnalysis;
+using identify_series_detail::ParameterScales;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
@@ -311,7 +312,8 @@ SeriesIdentification FitSeries(const IdentifySeriesSpec& spec,
   }
 
   const JacobianAnalysis a =
-      AnalyseJacobian(Weighted(setup, solved.at_solution.jacobian), solved.parameters,
+      AnalyseJacobian(Weighted(setup, solved.at_solution.jacobian),
+                      ParameterScales(solved.parameters, setup.start, setup.lower, setup.upper),
                       setup.noise_given, solved.cost, solved.at_bound);
   SeriesIdentification result = Result(spec, setup, solved.parameters, a);
   result.weighted_rss = solved.cost;
@@ -340,8 +342,9 @@ SeriesIdentification DesignSeries(const IdentifySeriesSpec& spec,
     throw std::runtime_error(spec.source +
                              ": the scenario's run at the start values fails: " + e.what());
   }
-  const JacobianAnalysis a =
-      AnalyseJacobian(Weighted(setup, point.jacobian), setup.start, true, 0.0, {});
+  const JacobianAnalysis a = AnalyseJacobian(
+      Weighted(setup, point.jacobian),
+      ParameterScales(setup.start, setup.start, setup.lower, setup.upper), true, 0.0, {});
   return Result(spec, setup, setup.start, a);
 }
 

@@ -132,8 +132,8 @@ void SingularValueTable(std::ostringstream& s, const SeriesIdentification& r) {
   s << "Each column of the scaled sensitivity matrix is the outputs' change, in noise standard "
        "deviations"
     << (r.noise_given ? "" : " (s)")
-    << ", for a relative change of its "
-       "parameter (an absolute one for a parameter at 0). A singular value below "
+    << ", for a change of its parameter by its size (the larger of |estimate| and |start|; "
+       "for a parameter at 0 in both, its larger bound, else 1). A singular value below "
     << Short(kDependentSingularValueRatio, 1) << " of the largest, or a column below "
     << Short(kNegligibleColumnRatio, 1) << " of the largest, is not resolved.\n\n"
     << "| | singular value | relative to the largest |\n|---|---|---|\n";

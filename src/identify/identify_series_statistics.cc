@@ -1,5 +1,6 @@
 #include "identify/identify_series_statistics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -135,8 +136,23 @@ Eigen::MatrixXd Correlation(const Eigen::MatrixXd& covariance) {
 
 }  // namespace
 
+Eigen::VectorXd ParameterScales(const Eigen::VectorXd& estimate, const Eigen::VectorXd& start,
+                                const Eigen::VectorXd& lower, const Eigen::VectorXd& upper) {
+  Eigen::VectorXd scales(estimate.size());
+  for (Eigen::Index j = 0; j < estimate.size(); ++j) {
+    double scale = std::max(std::abs(estimate[j]), std::abs(start[j]));
+    for (const double bound : {lower[j], upper[j]}) {
+      if (std::isfinite(bound) && estimate[j] == 0.0 && start[j] == 0.0) {
+        scale = std::max(scale, std::abs(bound));
+      }
+    }
+    scales[j] = scale > 0.0 ? scale : 1.0;
+  }
+  return scales;
+}
+
 JacobianAnalysis AnalyseJacobian(const Eigen::MatrixXd& weighted_jacobian,
-                                 const Eigen::VectorXd& parameters, bool noise_given,
+                                 const Eigen::VectorXd& scales, bool noise_given,
                                  double weighted_rss, const std::vector<bool>& at_bound) {
   const Eigen::Index n = weighted_jacobian.rows(), p = weighted_jacobian.cols();
   JacobianAnalysis a;
@@ -147,10 +163,7 @@ JacobianAnalysis AnalyseJacobian(const Eigen::MatrixXd& weighted_jacobian,
                       : a.degrees_of_freedom > 0 ? weighted_rss / a.degrees_of_freedom
                                                  : kNaN;
 
-  a.scales.resize(p);
-  for (Eigen::Index j = 0; j < p; ++j) {
-    a.scales[j] = parameters[j] != 0.0 ? std::abs(parameters[j]) : 1.0;
-  }
+  a.scales = scales;
   const Eigen::MatrixXd s =
       weighted_jacobian * a.scales.asDiagonal() / std::sqrt(a.variance_factor);
   const Eigen::VectorXd norms = s.colwise().norm().transpose();

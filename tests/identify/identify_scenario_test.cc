@@ -37,7 +37,7 @@ Scenario Concentric(double f_iso, double v_max) {
 
 // The truth's lengths, every 5 ms from 0.05 s (the step) on, from a plain run; `noise`
 // [m] the standard deviation stated, and with `seed` > 0 added to the values.
-MeasuredSeries Lengths(double noise, std::uint64_t seed) {
+MeasuredSeries Lengths(double noise, std::uint64_t seed, std::size_t first_row = 50) {
   const RecordedRun truth = RunScenario(Concentric(kTrueFIso, kTrueVMax));
   EXPECT_EQ(truth.stats.status, RunStatus::kCompleted) << truth.stats.message;
   const std::vector<double>& t = testing::ColumnOf(truth, "t");
@@ -46,7 +46,7 @@ MeasuredSeries Lengths(double noise, std::uint64_t seed) {
   MeasuredSeries s;
   s.columns = {"length"};
   s.noise = {noise};
-  for (std::size_t r = 50; r < t.size(); r += 5) {
+  for (std::size_t r = first_row; r < t.size(); r += 5) {
     s.times.push_back(t[r]);
     s.values.push_back(length[r] + (seed > 0 ? noise * normal() : 0.0));
     s.lines.push_back(s.lines.size() + 1);  // values in memory: rows by their index
@@ -114,6 +114,27 @@ TEST(IdentifyScenario, NoisySeriesGiveTheTruthWithinTheirStandardErrors) {
   // (chi-squared with ~50 degrees of freedom: within a factor of 2 but for a 1e-4 chance)
   EXPECT_GT(fit.weighted_rss, 0.5 * fit.degrees_of_freedom);
   EXPECT_LT(fit.weighted_rss, 2.0 * fit.degrees_of_freedom);
+}
+
+TEST(IdentifyScenario, AParameterWhoseTruthIsZeroIsIdentifiedAndCalledSo) {
+  // the initial lengthening rate, 0 in the truth, started at 0.01 m/s: the fit finds 0 to
+  // roundoff, and an estimate of 0 must not make its sensitivity vanish (it is relative to
+  // the start's size, as in the design at that start, which says the same)
+  IdentifySeriesSpec spec = Spec();
+  spec.parameters.push_back({"initial.lengthening_rate", 0.01, -1.0, 1.0, "parameters[2]"});
+  const MeasuredSeries lengths = Lengths(1e-5, 0, 0);
+  const SensitivityRunner run = ScenarioSensitivityRunner(Concentric(90.0, 1.2));
+  const SeriesIdentification fit = FitSeries(spec, {lengths}, run);
+  ASSERT_TRUE(fit.converged) << fit.stop_reason;
+  const SeriesParameterResult& rate = fit.parameters[2];
+  EXPECT_NEAR(rate.estimate, 0.0, 1e-9);  // [m/s], against a start of 0.01
+  EXPECT_EQ(rate.verdict, Identifiability::kIdentifiable) << rate.estimate;
+  const SeriesIdentification design = DesignSeries(spec, {lengths}, run);
+  EXPECT_EQ(design.parameters[2].verdict, Identifiability::kIdentifiable);
+  // both judge it at the start's size: their column ratios agree to the change of the
+  // Jacobian between start and estimate, far from the 1e-6 that makes a column negligible
+  EXPECT_GT(rate.column_ratio, 1e-3);
+  EXPECT_NEAR(rate.column_ratio / design.parameters[2].column_ratio, 1.0, 0.5);
 }
 
 TEST(IdentifyScenario, TheRunnerSetsValuesThroughHandlesOnCopies) {

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "musclesim/core/bounded_least_squares.h"
 #include "support/normal_noise.h"
@@ -39,7 +40,7 @@ TEST(AnalyseJacobian, CovarianceWithNoiseIsTheInverseFisherInformation) {
   }
   const double det = s0 * s2 - s1 * s1;
   const JacobianAnalysis a =
-      AnalyseJacobian(w.asDiagonal() * x, Eigen::Vector2d(3.0, -2.0), true, 123.0, {});
+      AnalyseJacobian(w.asDiagonal() * x, Eigen::Vector2d(3.0, 2.0), true, 123.0, {});
   EXPECT_EQ(a.variance_factor, 1.0);  // the residuals do not enter with the noise given
   // a 2 x 2 inverse and an SVD of 12 rows: rounding, 1e-12 relative
   EXPECT_NEAR(a.covariance(0, 0), s2 / det, 1e-12 * s2 / det);
@@ -195,6 +196,17 @@ TEST(AnalyseJacobian, AParameterAtABoundIsLeftOutOfTheStatistics) {
   EXPECT_EQ(a.degrees_of_freedom, 9);  // one parameter estimated
   // the intercept alone: s^2 / n, s^2 = 1 / 9
   EXPECT_NEAR(a.standard_errors[0], std::sqrt(1.0 / 9.0 / 10.0), 1e-14);  // rounding
+}
+
+TEST(ParameterScales, DoNotVanishWithTheEstimate) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const Eigen::Vector4d estimate(1e-14, 250.0, 0.0, 0.0), start(0.01, 100.0, 0.0, 0.0);
+  const Eigen::Vector4d lower(-1.0, 1.0, -0.5, -inf), upper(1.0, 1e3, 0.2, inf);
+  const Eigen::VectorXd scales = ParameterScales(estimate, start, lower, upper);
+  EXPECT_EQ(scales[0], 0.01);   // the start's size, not the estimate's
+  EXPECT_EQ(scales[1], 250.0);  // the estimate's, when larger
+  EXPECT_EQ(scales[2], 0.5);    // both 0: the larger bound's size
+  EXPECT_EQ(scales[3], 1.0);    // nothing to go by: 1 in the parameter's unit
 }
 
 }  // namespace

@@ -96,7 +96,7 @@ struct SeriesParameterResult {
   double start = 0.0;                    // [the parameter's unit]
   double estimate = 0.0;                 // the fit's; the design's: the start
   double standard_error = 0.0;           // [the parameter's unit]; infinite: not determined
-  double relative_standard_error = 0.0;  // standard error / |estimate| (/ 1 at 0) [-]
+  double relative_standard_error = 0.0;  // standard error / max(|estimate|, |start|) [-]
   double column_ratio = 0.0;             // its sensitivity column / the largest [-]
   std::optional<double> lower, upper;    // the bounds [the parameter's unit]
   Identifiability verdict = Identifiability::kIdentifiable;
