@@ -120,7 +120,7 @@ CsvTable TableOf(const std::vector<std::string>& names, const std::vector<Column
 // Writes the script first when asked, as the CLI's --script does, then renders the figure.
 void Draw(const std::string& script, const PlotOptions& options,
           const std::optional<std::string>& script_path) {
-  RefuseOverlappingFiles({}, {{options.output, "output"}, {script_path.value_or(""), "script"}});
+  CheckOutputFiles({}, {{options.output, "output"}, {script_path.value_or(""), "script"}});
   if (script_path) WriteOutput(*script_path, script);
   Render(script, options);
 }

@@ -76,7 +76,7 @@ int CurvesCommand(int argc, char** argv) {
   const std::string option = lengths ? "--length" : "--velocity";
   const UniformGrid grid =
       ParseGrid(option, args.Value(option), lengths ? kPositionRange : kSpeedRange);
-  RefuseOverlappingFiles({{args.positional[0], "the model file"}}, {{args.Value("-o", "-"), "-o"}});
+  CheckOutputFiles({{args.positional[0], "the model file"}}, {{args.Value("-o", "-"), "-o"}});
   const TensionModel model(LoadModelSpec(args.positional[0]).params);
   std::string csv;
   try {

@@ -33,7 +33,7 @@ int FitCommand(int argc, char** argv) {
     return 0;
   }
   if (args.positional.size() != 1) throw UsageError("expected one model file (see --help)");
-  RefuseOverlappingFiles({{args.positional[0], "the model file"}}, {{args.Value("-o", "-"), "-o"}});
+  CheckOutputFiles({{args.positional[0], "the model file"}}, {{args.Value("-o", "-"), "-o"}});
   const ModelSpec loaded = LoadModelFit(args.positional[0]);
   const FitResult& fit = *loaded.fit_result;
   std::ostringstream out;

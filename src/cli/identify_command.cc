@@ -66,9 +66,8 @@ int IdentifyCommand(int argc, char** argv) {
         std::pair{spec.velocity_csv, "velocity.csv"}}) {
     if (csv) inputs.push_back({*csv, name});
   }
-  RefuseOverlappingFiles(inputs,
-                         {{args.Value("-o", "-"), "-o"},
-                          {args.Has("--report") ? args.Value("--report") : "", "--report"}});
+  CheckOutputFiles(inputs, {{args.Value("-o", "-"), "-o"},
+                            {args.Has("--report") ? args.Value("--report") : "", "--report"}});
 
   std::optional<PassiveIdentification> passive;
   std::optional<ActiveIdentification> active;

@@ -80,7 +80,7 @@ void CheckOutputs(const Arguments& args, const IdentifySeriesSpec& spec) {
   for (const char* option : {"-o", "--report", "--residuals"}) {
     if (args.Has(option)) outputs.push_back({args.Value(option), option});
   }
-  RefuseOverlappingFiles(inputs, outputs);
+  CheckOutputFiles(inputs, outputs);
 }
 
 }  // namespace

@@ -99,9 +99,8 @@ int PlotCommand(int argc, char** argv) {
     std::vector<FileRole> inputs;
     for (const std::string& file : args.positional) inputs.push_back({file, "the plotted CSV"});
     if (args.Has("--curves")) inputs.push_back({args.Value("--curves"), "the model file"});
-    RefuseOverlappingFiles(
-        inputs,
-        {{options.output, "-o"}, {args.Has("--script") ? args.Value("--script") : "", "--script"}});
+    CheckOutputFiles(inputs, {{options.output, "-o"},
+                              {args.Has("--script") ? args.Value("--script") : "", "--script"}});
     const std::string script = Script(args, options);
     if (args.Has("--script")) WriteOutput(args.Value("--script"), script);
     Render(script, options);

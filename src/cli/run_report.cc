@@ -17,7 +17,7 @@ std::string RunOutputPath(const Arguments& args, const std::string& file,
   }
   std::vector<FileRole> outputs = {{output, args.Has("-o") ? "-o" : "output.file"}};
   if (args.Has("--stats")) outputs.push_back({args.Value("--stats"), "--stats"});
-  RefuseOverlappingFiles({{source, "the scenario file"}}, outputs);
+  CheckOutputFiles({{source, "the scenario file"}}, outputs);
   return output;
 }
 

@@ -33,12 +33,21 @@ std::string Partial(const std::string& path) { return path + ".partial"; }
 
 }  // namespace
 
-void RefuseOverlappingFiles(const std::vector<FileRole>& inputs,
-                            const std::vector<FileRole>& outputs) {
+void CheckOutputFiles(const std::vector<FileRole>& inputs, const std::vector<FileRole>& outputs) {
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     const FileRole& out = outputs[i];
-    if (Skipped(out.path) || IsExistingNonRegular(out.path)) continue;
+    if (Skipped(out.path)) continue;
     const std::string said = out.name + " " + out.path + ": ";
+    std::error_code error;
+    if (fs::is_directory(out.path, error)) {
+      throw InputError(said + "is a directory: name a file in it");
+    }
+    const fs::path directory = fs::path(out.path).parent_path();
+    if (!directory.empty() && !fs::is_directory(directory, error)) {
+      throw InputError(said + "the directory " + directory.string() +
+                       " does not exist: create it, or write elsewhere");
+    }
+    if (IsExistingNonRegular(out.path)) continue;
     for (const FileRole& in : inputs) {
       if (Skipped(in.path)) continue;
       if (SameFile(out.path, in.path)) {

@@ -29,8 +29,8 @@ void CheckSummaryPath(const SweepSpec& spec, const std::string& path) {
     throw InputError(path + ": the directory " + directory.string() +
                      " does not exist: create it, or write the summary elsewhere");
   }
-  RefuseOverlappingFiles({{spec.source, "the sweep file"}, {spec.base, "the base scenario"}},
-                         {{path, "the summary"}});
+  CheckOutputFiles({{spec.source, "the sweep file"}, {spec.base, "the base scenario"}},
+                   {{path, "the summary"}});
 }
 
 }  // namespace musclesim

@@ -569,6 +569,12 @@ const std::vector<Case> kCases = {
     // --- outputs that would overwrite an input or another output (one guard for every verb) ----
     {"RunOutputOverTheScenario", "run {file} -o {file}", Scenario("", ""), 2,
      {"-o {file}: is the scenario file ({file}), an input: write the output elsewhere"}},
+    {"RunOutputIsADirectory", "run {file} -o {dir}", Scenario("", ""), 2,
+     {"-o {dir}: is a directory: name a file in it"}},
+    {"RunStatsInAMissingDirectory", "run {file} -o {dir}/out.csv --stats {dir}/none/s.json", Scenario("", ""), 2,
+     {"--stats {dir}/none/s.json: the directory {dir}/none does not exist: create it, or write elsewhere"}},
+    {"CurvesOutputIsADirectory", "curves {file} --length 0:1:3 -o {dir}/sub", Scenario("", ""), 2,
+     {"-o {dir}/sub: is a directory: name a file in it"}},
     {"RunStatsOverTheCsv", "run {file} -o {dir}/out.csv --stats {dir}/out.csv", Scenario("", ""), 2,
      {"--stats {dir}/out.csv: -o {dir}/out.csv names the same file: give each output its own"}},
     {"RunStatsOverTheScenario", "run {file} -o {dir}/out.csv --stats {file}", Scenario("", ""), 2,

@@ -35,7 +35,7 @@ std::string Touch(const std::string& path) {
 // The message of the InputError the guard throws, or "" when it lets the files through.
 std::string Refusal(const std::vector<FileRole>& inputs, const std::vector<FileRole>& outputs) {
   try {
-    RefuseOverlappingFiles(inputs, outputs);
+    CheckOutputFiles(inputs, outputs);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -65,6 +65,7 @@ TEST(FileRoles, RefusesAnOutputWrittenThroughAnInput) {
 TEST(FileRoles, RefusesTwoOutputsOfOneFileExistingOrNot) {
   const std::string dir = FreshDirectory();
   const std::string later = dir + "/not_yet.csv";
+  fs::create_directories(dir + "/sub");
   EXPECT_THAT(Refusal({}, {{later, "-o"}, {dir + "/sub/../not_yet.csv", "--report"}}),
               HasSubstr("-o " + later + " names the same file"));
   EXPECT_THAT(Refusal({}, {{later, "-o"}, {later + ".partial", "--report"}}),
@@ -73,6 +74,13 @@ TEST(FileRoles, RefusesTwoOutputsOfOneFileExistingOrNot) {
   fs::create_symlink(existing, dir + "/link.csv");
   EXPECT_THAT(Refusal({}, {{existing, "-o"}, {dir + "/link.csv", "--stats"}}),
               HasSubstr("--stats " + dir + "/link.csv: -o " + existing + " names the same file"));
+}
+
+TEST(FileRoles, RefusesADirectoryAndAMissingOne) {
+  const std::string dir = FreshDirectory();
+  EXPECT_THAT(Refusal({}, {{dir, "-o"}}), HasSubstr("-o " + dir + ": is a directory"));
+  EXPECT_THAT(Refusal({}, {{dir + "/none/out.csv", "-o"}}),
+              HasSubstr("the directory " + dir + "/none does not exist"));
 }
 
 TEST(FileRoles, LetsDistinctFilesStandardStreamsAndDevicesThrough) {
