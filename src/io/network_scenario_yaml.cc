@@ -1,5 +1,6 @@
 // Reads network scenario files: the top-level blocks in order, the parts checked one by one,
 // then as a whole by building the system, whose ParameterErrors are put back at their keys.
+#include <algorithm>
 #include <initializer_list>
 #include <memory>
 #include <optional>
@@ -9,6 +10,7 @@
 #include "io/network_parts_yaml.h"
 #include "io/scenario_fields.h"
 #include "io/scenario_readers.h"
+#include "musclesim/core/number_format.h"
 
 namespace musclesim {
 
@@ -38,6 +40,44 @@ NamedModels ReadModels(const yaml::Source& src, const YAML::Node& node, Scenario
   return models;
 }
 
+// The actuators' names in the file's elements list, as written (the elements are read later).
+std::vector<std::string> ActuatorNames(const YAML::Node& elements) {
+  std::vector<std::string> names;
+  if (!elements || !elements.IsSequence()) return names;
+  for (const YAML::Node& item : elements) {
+    if (!item.IsMap() || !item["type"] || !item["name"]) continue;
+    if (!item["type"].IsScalar() || item["type"].Scalar() != "actuator") continue;
+    if (item["name"].IsScalar()) names.push_back(item["name"].Scalar());
+  }
+  return names;
+}
+
+// A controller driving no actuator of the network (a misspelt name) is told at its own key,
+// before the actuator it meant is blamed for lacking an input.
+void RequireDrivenActuators(const yaml::Source& src, const YAML::Node& controllers,
+                            const std::vector<Controller>& read, const YAML::Node& elements) {
+  const std::vector<std::string> actuators = ActuatorNames(elements);
+  const auto require = [&](const YAML::Node& at, const std::string& path, const std::string& name) {
+    if (std::find(actuators.begin(), actuators.end(), name) != actuators.end()) return;
+    yaml::Fail(src, at, path, name,
+               actuators.empty()
+                   ? "must name an actuator, and the network has none"
+                   : "must name an actuator of the network: " + CommaSeparated(actuators));
+  };
+  for (std::size_t k = 0; k < read.size(); ++k) {
+    const YAML::Node item = controllers[k];
+    const std::string path = "controllers[" + std::to_string(k) + "]";
+    if (read[k].co_contraction) {
+      const YAML::Node pair = item["co_contraction"]["actuators"];
+      const std::string list = path + ".co_contraction.actuators";
+      require(pair[0], list + "[0]", read[k].co_contraction->first);
+      require(pair[1], list + "[1]", read[k].co_contraction->second);
+    } else {
+      require(item["drives"], path + ".drives", read[k].drives);
+    }
+  }
+}
+
 }  // namespace
 
 Scenario ReadNetworkScenario(const yaml::Source& src, const YAML::Node& root) {
@@ -56,6 +96,7 @@ Scenario ReadNetworkScenario(const yaml::Source& src, const YAML::Node& root) {
   // before the elements: an actuator a controller drives has no activation of its own
   if (const YAML::Node node = root["controllers"]) {
     s.controllers = ReadControllers(src, node, s.t_start, s.t_end);
+    RequireDrivenActuators(src, node, s.controllers, root["elements"]);
   }
   s.elements = ReadElements(src, Required(src, root, "", "elements"), models,
                             DrivenActuatorsOf(s.controllers), s.t_start, s.t_end);

@@ -1,6 +1,7 @@
 #include "sweep/sweep_base.h"
 
 #include "musclesim/core/errors.h"
+#include "musclesim/core/number_format.h"
 #include "musclesim/io/run_csv.h"
 #include "musclesim/scenario/actuator_scenario.h"
 #include "sweep/sweep_share.h"
@@ -57,6 +58,18 @@ class Recorder final : public NetworkSink {
   ColumnRecorder* trajectory_;  // null: the trajectory is not kept
 };
 
+// A metric window outside the run would leave its metric empty (NaN) at every point: refused
+// as the file's error instead.
+void RequireWindowWithin(const SweepSpec& spec, long index, const Scenario& scenario) {
+  const MetricOptions& o = spec.metric_options;
+  if (!o.window_start || !o.window_end) return;
+  if (*o.window_start >= scenario.t_start && *o.window_end <= scenario.t_end) return;
+  throw InputError(spec.source + ": metric_options.window = [" + FormatNumber(*o.window_start) +
+                   ", " + FormatNumber(*o.window_end) + "]: must lie within the run's time [" +
+                   FormatNumber(scenario.t_start) + ", " + FormatNumber(scenario.t_end) +
+                   "] [s] (of point " + std::to_string(index) + ")");
+}
+
 }  // namespace
 
 int MetricElementIndex(const Scenario& scenario, const std::string& element) {
@@ -72,6 +85,7 @@ int MetricElementIndex(const Scenario& scenario, const std::string& element) {
 MetricElements SweepBase::Validate(const SweepSpec& spec, long index, const std::string& element,
                                    SweepSpec* keep, long slot) const {
   Scenario scenario = points_->Make(spec, index);
+  RequireWindowWithin(spec, index, scenario);
   MetricElements elements;
   if (scenario.form == ScenarioForm::kActuator) {
     elements = {{"actuator"}, {"actuator"}};

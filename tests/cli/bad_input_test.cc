@@ -544,6 +544,8 @@ const std::vector<Case> kCases = {
      // a numeric axis sets its number through the parameter handle: the rule is the
      // handle's, with no "(--set)"
      {"{at}: axis actuator.mass = -0.2 makes point 3 (actuator.mass=-0.2, model.velocity.n=2) an invalid scenario: actuator.mass = -0.2: must be from 1e-09"}},
+    {"SweepWindowOutsideTheRun", "sweep {file} --quiet", Sweep("metrics: [final_length]", "metrics: [mean_shortening_velocity]\nmetric_options: {window: [1.5, 2.0]}"), 2,
+     {"{file}: metric_options.window = [1.5, 2]: must lie within the run's time [0, 1] [s] (of point 0)"}},
     {"SweepJobsZero", "sweep {file} --jobs 0", Sweep("mode: grid", "mode: grid"), 2, {"--jobs 0: must be an integer from 1 to 4096"}},
     {"SweepFlagWithValue", "sweep {file} --resume=no", Sweep("mode: grid", "mode: grid"), 2,
      {"--resume=no: --resume is a flag and takes no value"}},
@@ -560,6 +562,8 @@ const std::vector<Case> kCases = {
     // --- network controllers ----------------------------------------------------------------
     {"NetworkDrivenActuatorWithActivation", "run {file} -o -", Edit(Network("time: {start: 0.0, end: 1.0}\n", "time: {start: 0.0, end: 1.0}\ncontrollers:\n  - {name: hold, type: pid, measure: {element: muscle, quantity: length}, reference: {type: constant, value: 0.1}, gains: {kp: -100}, drives: muscle}\n"), "activation: {type: step", "activation: @{type: step"), 2,
      {"elements[0].activation = {type: step, time: 0.05, before: 0.0, after: 1.0} ({at}): actuator muscle is driven by controllers[0] (hold): it has no activation of its own"}},
+    {"NetworkControllerDrivesAMisspeltActuator", "run {file} -o -", Edit(Edit(Network("time: {start: 0.0, end: 1.0}\n", "time: {start: 0.0, end: 1.0}\ncontrollers:\n  - {name: hold, type: pid, measure: {element: muscle, quantity: length}, reference: {type: constant, value: 0.1}, gains: {kp: -100}, drives: musle}\n"), "drives: musle", "drives: @musle"), "     activation: {type: step, time: 0.05, before: 0.0, after: 1.0}}", "}"), 2,
+     {"controllers[0].drives = musle ({at}): must name an actuator of the network: muscle"}},
     {"NetworkControllerTypeUnknown", "run {file} -o -", Edit(Edit(Network("time: {start: 0.0, end: 1.0}\n", "time: {start: 0.0, end: 1.0}\ncontrollers:\n  - {name: hold, type: pid, measure: {element: muscle, quantity: length}, reference: {type: constant, value: 0.1}, gains: {kp: -100}, drives: muscle}\n"), "type: pid", "type: @lqr"), "     activation: {type: step, time: 0.05, before: 0.0, after: 1.0}}", "}"), 2,
      {"controllers[0].type = lqr ({at}): must be one of pid"}},
     {"NetworkControllerGainBeyondASwitch", "run {file} -o -", Edit(Edit(Network("time: {start: 0.0, end: 1.0}\n", "time: {start: 0.0, end: 1.0}\ncontrollers:\n  - {name: hold, type: pid, measure: {element: muscle, quantity: length}, reference: {type: constant, value: 0.1}, gains: {kp: -100}, drives: muscle}\n"), "kp: -100", "kp: @-1e306"), "     activation: {type: step, time: 0.05, before: 0.0, after: 1.0}}", "}"), 2,

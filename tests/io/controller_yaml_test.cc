@@ -208,15 +208,13 @@ TEST(ControllerYaml, DrivenActuatorWithItsOwnActivationIsRefused) {
                                           "): only with activation_dynamics"));
 }
 
-TEST(ControllerYaml, UndrivenActuatorWithoutActivationNamesWhatTheControllersDrive) {
-  // a misspelt `drives` leaves the actuator with no input at all
+TEST(ControllerYaml, AMisspeltDrivesIsToldAtTheControllerNotTheActuator) {
+  // a misspelt `drives` leaves the actuator with no input at all: the controller's key is at
+  // fault, and is named before the actuator could be blamed
   const std::string text = Edit(kHold, "drives: muscle", "drives: spring");
   EXPECT_THAT(ErrorOf(text),
-              HasSubstr("elements[0].activation (" + At(text, "{name: muscle") +
-                        "): missing required key: give activation (u(t) itself) or "
-                        "excitation (e(t), driving u through activation_dynamics), or name "
-                        "muscle in a controller's drives or co_contraction.actuators (the "
-                        "controllers drive: spring)"));
+              HasSubstr("controllers[0].drives = spring (" + At(text, "drives: ^spring") +
+                        "): must name an actuator of the network: muscle"));
 }
 
 TEST(ControllerYaml, EntryRefusalsNameFileLineAndKey) {
@@ -291,17 +289,11 @@ TEST(ControllerYaml, CoContractionNamesAreResolved) {
       Edit(Edit(kPair, "[flexor, extensor]", "[flexor, extensr]"), "{name: damper,",
            "{name: extensor2, type: actuator, from: load, to: anchor, model: muscle,\n"
            "     activation: {type: constant, value: 0.1}}\n  - {name: damper,");
-  // extensor, now undriven, is refused first; give it an activation to reach the controller
-  const std::string fixed =
-      Edit(text,
-           "     activation_dynamics: {tau_activation: 0.015, tau_deactivation: 0.05}}\n  - {name: "
-           "extensor2",
-           "     activation: {type: constant, value: 0.1}}\n  - {name: extensor2");
+  // the misspelt name is told at its entry, before extensor (now undriven) lacks an input
   EXPECT_THAT(
-      ErrorOf(fixed),
-      HasSubstr("controllers[0].co_contraction.actuators = extensr (" +
-                At(fixed, "[flexor, extensr]") +
-                "): names no element; the elements are: flexor, extensor, extensor2, damper"));
+      ErrorOf(text),
+      HasSubstr("controllers[0].co_contraction.actuators[1] = extensr (" + At(text, "extensr]") +
+                "): must name an actuator of the network: flexor, extensor, extensor2"));
   const std::string level =
       Edit(kPair, "level: {type: constant, value: 0.3}", "level: {type: constant, value: 1.5}");
   EXPECT_THAT(ErrorOf(level),
