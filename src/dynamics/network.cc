@@ -311,7 +311,7 @@ void NetworkSystem::InitialState(double t_start, double* y) const {
   }
 }
 
-void NetworkSystem::CheckLengths(double t, const double* y) const {
+void NetworkSystem::CheckInitialState(double t, const double* y) const {
   for (std::size_t e = 0; e < elements_.size(); ++e) {
     const double l = Length(static_cast<int>(e), t, y);
     if (!(l > 0.0)) {
@@ -319,6 +319,18 @@ void NetworkSystem::CheckLengths(double t, const double* y) const {
       throw ParameterError("elements[" + std::to_string(e) + "]", element.name,
                            "must be longer than 0 at the start: its length x(" + element.to +
                                ") - x(" + element.from + ") is " + FormatNumber(l) + " m");
+    }
+  }
+  ElementSample sample;
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    ObserveElement(static_cast<int>(e), t, y, sample);
+    if (!std::isfinite(sample.tension)) {
+      const Element& element = elements_[e];
+      throw ParameterError("elements[" + std::to_string(e) + "]", element.name,
+                           "its tension at the start is " + FormatNumber(sample.tension) +
+                               " N (length " + FormatNumber(sample.length) +
+                               " m): its law overflows there; an exponential's alpha times its "
+                               "stretch must stay below about 700");
     }
   }
 }

@@ -109,7 +109,7 @@ Scenario ReadNetworkScenario(const yaml::Source& src, const YAML::Node& root) {
     system.emplace(s.Build());
     std::vector<double> y(static_cast<std::size_t>(system->state_size()));
     system->InitialState(s.t_start, y.data());
-    system->CheckLengths(s.t_start, y.data());
+    system->CheckInitialState(s.t_start, y.data());
   });
 
   if (const YAML::Node node = root["solver"]) {

@@ -96,7 +96,7 @@ void ValidateNetwork(const Scenario& s) {
   const NetworkSystem system = s.Build();
   std::vector<double> y(static_cast<std::size_t>(system.state_size()));
   system.InitialState(s.t_start, y.data());
-  system.CheckLengths(s.t_start, y.data());
+  system.CheckInitialState(s.t_start, y.data());
   // the single actuator's element starts at its initial.length
   const std::string initial =
       s.form == ScenarioForm::kActuator ? "initial.length" : "the element's initial length";

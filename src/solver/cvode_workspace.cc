@@ -16,7 +16,7 @@ constexpr double kNewtonConvergenceCoefficient = 0.03;
 constexpr long kJacobianEvaluationFrequency = 10;  // steps
 
 int RightHandSide(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
-  const auto* cb = static_cast<const Callbacks*>(data);
+  auto* cb = static_cast<Callbacks*>(data);
   double* rate = N_VGetArrayPointer(ydot);
   cb->system->RightHandSide(cb->InputTime(t), N_VGetArrayPointer(y), rate);
   // a non-finite value is a recoverable error: CVODE retries with a smaller step. A
@@ -24,13 +24,12 @@ int RightHandSide(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
   // the activation and integral rates after the nodes' states are computed
   const sunindextype n = N_VGetLength(ydot);
   const sunindextype node_states = cb->system->node_state_count();
-  for (sunindextype i = 1; i < node_states; i += 2) {
-    if (!std::isfinite(rate[i])) return 1;
-  }
-  for (sunindextype i = node_states; i < n; ++i) {
-    if (!std::isfinite(rate[i])) return 1;
-  }
-  return 0;
+  bool finite = true;
+  for (sunindextype i = 1; i < node_states; i += 2) finite = finite && std::isfinite(rate[i]);
+  for (sunindextype i = node_states; i < n; ++i) finite = finite && std::isfinite(rate[i]);
+  if (finite) return 0;
+  cb->NoteNonFinite(cb->InputTime(t), N_VGetArrayPointer(y), static_cast<std::size_t>(n));
+  return 1;
 }
 
 int AnalyticJacobian(sunrealtype t, N_Vector y, N_Vector, SUNMatrix jacobian, void* data, N_Vector,

@@ -8,6 +8,7 @@
 #include <sundials/sundials_context.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,6 +25,14 @@ struct Callbacks {
   const NetworkSystem* system = nullptr;
   LinearSystem* linear = nullptr;
   std::string last_error;
+  // the last right-hand side that was not finite: its time (NaN: none yet) and state, kept
+  // so that a run failing on it can say which quantity it was
+  double non_finite_time = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> non_finite_state;
+  void NoteNonFinite(double t, const double* y, std::size_t n) {
+    non_finite_time = t;
+    non_finite_state.assign(y, y + n);
+  }
   // The inputs (activation, excitation, loads) jump only at the stop times, and a step's
   // right-hand sides belong to the segment it is in: an implicit step ending on a stop
   // must see the input before the jump, a restart the input after it, whichever side of

@@ -17,6 +17,16 @@ namespace musclesim {
 
 namespace {
 
+// For a failure on a right-hand side that was not finite: which quantity made it so, and when.
+std::string NonFiniteNote(int flag, const Callbacks& cb, const NetworkSystem& system) {
+  const bool right_hand_side = flag == CV_RHSFUNC_FAIL || flag == CV_FIRST_RHSFUNC_ERR ||
+                               flag == CV_REPTD_RHSFUNC_ERR || flag == CV_UNREC_RHSFUNC_ERR ||
+                               flag == CV_CONV_FAILURE || flag == CV_ERR_FAILURE;
+  if (!right_hand_side || std::isnan(cb.non_finite_time)) return "";
+  return "; the right-hand side was not finite: " +
+         system.NonFiniteCause(cb.non_finite_time, cb.non_finite_state.data());
+}
+
 // Times a rounding error apart (a pulse edge computed as start + k period + width and an
 // output time k interval, say) are one time: CVODE refuses to step over less than a few
 // ulps (CV_TOO_CLOSE), so nothing closer than this is integrated over.
@@ -109,7 +119,7 @@ void IntegrationSession::Impl::Prepare(const NetworkRunRequest& start) {
   } else {
     initial = start.initial_state;
   }
-  system.CheckLengths(start.t_start, initial.data());
+  system.CheckInitialState(start.t_start, initial.data());
   roots.Watch(system, RootsOf(system, start, initial.data()));
 
   kind = options.linear_solver == LinearSolverKind::kAuto
@@ -140,6 +150,7 @@ void IntegrationSession::Impl::Prepare(const NetworkRunRequest& start) {
   Callbacks& cb = ws.callbacks();
   cb.system = &system;
   cb.last_error.clear();
+  cb.non_finite_time = std::numeric_limits<double>::quiet_NaN();
   cb.parameters = parameters;
   if (sensitivity_count > 0) {
     ws.FitSensitivities(sensitivity_count);
@@ -295,7 +306,8 @@ std::optional<RunStatus> IntegrationSession::Impl::Segment(double stop) {
     if (flag < 0) {
       return Finish(RunStatus::kFailed, t,
                     "CVODE failed at t = " + FormatNumber(t) + " s with " + FlagName(flag) +
-                        (cb.last_error.empty() ? "" : " (" + cb.last_error + ")"));
+                        (cb.last_error.empty() ? "" : " (" + cb.last_error + ")") +
+                        NonFiniteNote(flag, cb, system));
     }
     const int hit = roots.Step(cb, t_before, t, y, [&](double at) { return Interpolate(at); });
     if (hit >= 0) {

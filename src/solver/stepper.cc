@@ -51,7 +51,7 @@ Stepper::Stepper(NetworkSystem system, SolverOptions options, StepperStart start
     }
     state_ = std::move(start.initial_state);
   }
-  system_.CheckLengths(time_, state_.data());
+  system_.CheckInitialState(time_, state_.data());
   // the limits as a run checks them: elements named, bracketing the initial lengths
   NetworkRunRequest request;
   request.t_start = time_;

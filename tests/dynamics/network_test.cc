@@ -121,6 +121,23 @@ void ExpectRightHandSideByHand(const State& s) {
   }
 }
 
+TEST(Network, NonFiniteCauseNamesTheElementItsTensionAndTheTime) {
+  // b 20 m behind the crank: the sheath's exp(60 (l - 0.14)) overflows, and with it b's
+  // acceleration; the diagnosis names the sheath, not a node or a load
+  const NetworkSystem system = EveryKind();
+  const double y[6] = {0.1, 0.0, -20.0, 0.0, 0.5, 0.0};
+  double ydot[6];
+  system.RightHandSide(0.25, y, ydot);
+  ASSERT_FALSE(std::isfinite(ydot[3]));
+  const std::string cause = system.NonFiniteCause(0.25, y);
+  const std::string sheath = std::to_string(system.FindElement("sheath"));
+  EXPECT_EQ(cause.find("elements[" + sheath + "] (sheath)'s tension is inf N at length "), 0u)
+      << cause;
+  EXPECT_NE(cause.find(" at t = 0.25 s: its law's parameters overflow at that length"),
+            std::string::npos)
+      << cause;
+}
+
 TEST(Network, RightHandSideIsSection72ByHandWithTendonSlackAndSheathTaut) {
   const State s{0.13, 0.1, 0.02, 0.235, -0.03, 0.53, 0.01};
   // the sides of the kinks this state is meant to cover

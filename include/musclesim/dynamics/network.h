@@ -73,8 +73,9 @@ class NetworkSystem {
   // The same at t_start = 0.
   void InitialState(double* y) const { InitialState(0.0, y); }
   // Throws ParameterError("elements[i]", ...) unless every element is longer than zero at
-  // (t, y).
-  void CheckLengths(double t, const double* y) const;
+  // (t, y) and its tension there is finite (an exponential law whose alpha overflows at the
+  // element's initial stretch is refused before the run, not by CVODE at its first step).
+  void CheckInitialState(double t, const double* y) const;
 
   // ydot = f(t, y).
   void RightHandSide(double t, const double* y, double* ydot) const;
@@ -113,6 +114,9 @@ class NetworkSystem {
   double NodePosition(int i, double t, const double* y) const { return PositionOf(ends_[i], t, y); }
   double NodeVelocity(int i, double t, const double* y) const { return VelocityOf(ends_[i], t, y); }
   double LoadOn(int i, double t, const double* y) const;
+  // What made the right-hand side at (t, y) non-finite, for a failed run's message: the first
+  // node, element tension or load that is not finite, with its values and the time.
+  std::string NonFiniteCause(double t, const double* y) const;
 
   const std::vector<Node>& nodes() const { return nodes_; }
   const std::vector<Element>& elements() const { return elements_; }

@@ -1,0 +1,41 @@
+// NonFiniteCause (network.h): which quantity of the network made its right-hand side
+// non-finite, so that a failed run names the element, the quantity and the time rather than
+// only CVODE's flag.
+#include <cmath>
+#include <string>
+
+#include "musclesim/core/number_format.h"
+#include "musclesim/dynamics/network.h"
+
+namespace musclesim {
+
+std::string NetworkSystem::NonFiniteCause(double t, const double* y) const {
+  const std::string at = " at t = " + FormatNumber(t) + " s";
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    const int node = static_cast<int>(i);
+    const double position = NodePosition(node, t, y), velocity = NodeVelocity(node, t, y);
+    if (!std::isfinite(position) || !std::isfinite(velocity)) {
+      return "node " + nodes_[i].name + "'s position " + FormatNumber(position) + " m, velocity " +
+             FormatNumber(velocity) + " m/s" + at;
+    }
+  }
+  ElementSample sample;
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    ObserveElement(static_cast<int>(e), t, y, sample);
+    if (!std::isfinite(sample.tension)) {
+      return "elements[" + std::to_string(e) + "] (" + elements_[e].name + ")'s tension is " +
+             FormatNumber(sample.tension) + " N at length " + FormatNumber(sample.length) +
+             " m and lengthening rate " + FormatNumber(sample.lengthening_rate) + " m/s" + at +
+             ": its law's parameters overflow at that length";
+    }
+  }
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    const double load = LoadOn(static_cast<int>(i), t, y);
+    if (!std::isfinite(load)) {
+      return "the load on node " + nodes_[i].name + " is " + FormatNumber(load) + " N" + at;
+    }
+  }
+  return "a rate of the state (an activation or a controller's integral) is not finite" + at;
+}
+
+}  // namespace musclesim
