@@ -5,14 +5,14 @@
 # exception other than InputError/ParameterError, a timeout or a memory blow-up; the inputs
 # that did are kept in BUILD/findings/<reader>/.
 #   scripts/fuzz.sh [SECONDS] [READER...]     readers: scenario model sweep identify
-#                                             identify_series network
+#                                             identify_series network controller sensitivity
 # BUILD is build-fuzz/ beside the sources, or $MUSCLESIM_FUZZ_BUILD.
 set -euo pipefail
 
 seconds=${1:-60}
 shift || true
 readers=("$@")
-[ ${#readers[@]} -eq 0 ] && readers=(scenario model sweep identify identify_series network)
+[ ${#readers[@]} -eq 0 ] && readers=(scenario model sweep identify identify_series network controller sensitivity)
 if ! [[ "$seconds" =~ ^[0-9]+$ ]] || [ "$seconds" -lt 1 ]; then
   echo "fuzz.sh: SECONDS must be a whole number >= 1, not '$seconds'" >&2
   exit 2

@@ -1,8 +1,11 @@
 #include "io/network_parts_yaml.h"
 
+#include <cmath>
+
 #include "io/controller_yaml.h"
 #include "io/scenario_fields.h"
 #include "musclesim/core/input_ranges.h"
+#include "musclesim/scenario/element_limits.h"
 
 namespace musclesim {
 
@@ -286,6 +289,14 @@ std::vector<LengthLimit> ReadLengthLimits(const yaml::Source& src, const YAML::N
       if (!(value > length && value <= kLengthRange.max)) {
         yaml::Fail(src, max, Join(path, "max_length"), yaml::Describe(max),
                    "must be above " + initial + " and at most 1000 [m]: " + kLengthRange.why);
+      }
+      // the run may reach this length: its law must stay finite up to it
+      const double tension = TensionAtRest(system.elements()[static_cast<std::size_t>(e)], value);
+      if (!std::isfinite(tension)) {
+        yaml::Fail(src, max, Join(path, "max_length"), yaml::Describe(max),
+                   "is a length the run may reach, and there the tension of " + limit.element +
+                       " overflows (" + FormatNumber(tension) +
+                       " N): an exponential's alpha times its stretch must stay below about 700");
       }
       limit.max_length = value;
     }

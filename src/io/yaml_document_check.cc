@@ -1,5 +1,6 @@
 #include "io/yaml_document_check.h"
 
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/core/printable_text.h"
 
 namespace musclesim::yaml {
 
@@ -58,6 +60,7 @@ class DocumentChecker : public YAML::EventHandler {
     if (!open_.empty() && open_.back().is_map && open_.back().expecting_key) {
       Collection& map = open_.back();
       if (value == nullptr) KeyNotAName(mark, "empty or an alias");
+      RequirePrintable(Join(map.path, *value), mark, *value);
       const auto [seen, inserted] = map.keys.emplace(*value, mark);
       if (!inserted) {
         throw InputError(Join(map.path, *value) + " (" + Place(path_, mark) +
@@ -69,7 +72,20 @@ class DocumentChecker : public YAML::EventHandler {
       map.expecting_key = false;
       return;
     }
-    ChildPath();
+    const std::string at = ChildPath();
+    if (value != nullptr) RequirePrintable(at, mark, *value);
+  }
+
+  // Names and values end up in messages and on the terminal: a control character (an escape
+  // sequence that recolours or clears the screen, a bell) is refused where it is read.
+  void RequirePrintable(const std::string& at, const YAML::Mark& mark,
+                        const std::string& text) const {
+    const std::size_t i = FirstControlCharacter(text);
+    if (i == std::string::npos) return;
+    throw InputError((at.empty() ? std::string("(top level)") : at) + " = " + text + " (" +
+                     Place(path_, mark) + "): holds the control character " +
+                     PrintableText(text.substr(i, 1)) + " at byte " + std::to_string(i + 1) +
+                     "; names and values are printable text (a tab or a newline is allowed)");
   }
 
   void Open(const YAML::Mark& mark, bool is_map) {
@@ -127,6 +143,12 @@ class DocumentCounter : public YAML::EventHandler {
 
 }  // namespace
 
+std::string TooDeep(int depth) {
+  return "YAML nesting " + std::to_string(depth) +
+         " levels deep, past the reader's limit: a musclesim file nests a few levels (a list "
+         "of maps of maps)";
+}
+
 void CheckDocument(const std::string& path, const std::string& text) {
   std::istringstream stream(text);
   YAML::Parser parser(stream);
@@ -139,6 +161,8 @@ void CheckDocument(const std::string& path, const std::string& text) {
       throw InputError(Place(path, counter.start) +
                        ": a second YAML document (after ---); a file holds one document");
     }
+  } catch (const YAML::DeepRecursion& e) {
+    throw InputError(Place(path, e.mark) + ": " + TooDeep(e.depth()));
   } catch (const YAML::ParserException& e) {
     throw InputError(Place(path, e.mark) + ": YAML syntax error: " + e.msg);
   }

@@ -10,8 +10,11 @@ namespace musclesim::yaml {
 
 // Walks the parse events of `text` (the file `path`, for messages) and throws InputError for
 // a key given twice in one map (naming both places), a map key that is not a plain name (a
-// list, a map, an alias or nothing) or a second document. `text` must parse: call it after
-// YAML::Load succeeded.
+// list, a map, an alias or nothing), a key or value holding a control character, or a second
+// document. `text` must parse: call it after YAML::Load succeeded.
 void CheckDocument(const std::string& path, const std::string& text);
+
+// The message for nesting past yaml-cpp's depth limit (YAML::DeepRecursion), `depth` levels.
+std::string TooDeep(int depth);
 
 }  // namespace musclesim::yaml

@@ -1,5 +1,7 @@
 #include "io/yaml_fields.h"
 
+#include <yaml-cpp/depthguard.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -194,6 +196,9 @@ YAML::Node Parse(const std::string& path, const std::string& text) {
     if (!root.IsDefined() || root.IsNull()) throw InputError(path + ": the file is empty");
     CheckDocument(path, text);
     return root;
+  } catch (const YAML::DeepRecursion& e) {
+    throw InputError(path + ":" + std::to_string(e.mark.line + 1) + ":" +
+                     std::to_string(e.mark.column + 1) + ": " + TooDeep(e.depth()));
   } catch (const YAML::ParserException& e) {
     throw InputError(path + ":" + std::to_string(e.mark.line + 1) + ":" +
                      std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);

@@ -1,9 +1,11 @@
 #include "musclesim/scenario/scenario.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "musclesim/core/errors.h"
 #include "musclesim/scenario/actuator_scenario.h"
+#include "musclesim/scenario/element_limits.h"
 
 namespace musclesim {
 
@@ -114,6 +116,13 @@ void ValidateNetwork(const Scenario& s) {
     if (limit.max_length) {
       Require(*limit.max_length > length, at + ".max_length", *limit.max_length,
               "must be above " + initial + " = " + FormatNumber(length) + " [m]");
+      // the run may reach this length: its law must stay finite up to it
+      const double tension =
+          TensionAtRest(system.elements()[static_cast<std::size_t>(e)], *limit.max_length);
+      Require(std::isfinite(tension), at + ".max_length", *limit.max_length,
+              "is a length the run may reach, and there the tension of " + limit.element +
+                  " overflows (" + FormatNumber(tension) +
+                  " N): an exponential's alpha times its stretch must stay below about 700");
     }
   }
   ForEachWaveform(s, [&](const std::string& path, const Waveform& w) {

@@ -24,6 +24,8 @@ namespace musclesim {
 struct Callbacks {
   const NetworkSystem* system = nullptr;
   LinearSystem* linear = nullptr;
+  void* cvode = nullptr;        // for the error weights of a sparse difference quotient
+  long quotient_rhs_evals = 0;  // the right-hand sides that quotient has evaluated
   std::string last_error;
   // the last right-hand side that was not finite: its time (NaN: none yet) and state, kept
   // so that a run failing on it can say which quantity it was

@@ -8,6 +8,8 @@
 #include <stdexcept>
 
 #include "cvode_workspace.h"
+#include "stall_watch.h"
+#include "stiffness_note.h"
 #include "musclesim/core/errors.h"
 #include "output_rows.h"
 #include "root_watch.h"
@@ -25,6 +27,16 @@ std::string NonFiniteNote(int flag, const Callbacks& cb, const NetworkSystem& sy
   if (!right_hand_side || std::isnan(cb.non_finite_time)) return "";
   return "; the right-hand side was not finite: " +
          system.NonFiniteCause(cb.non_finite_time, cb.non_finite_state.data());
+}
+
+// For a failure of the corrector or the error test at a finite right-hand side: the stiffest
+// part of the system where the last step began.
+std::string StiffnessFailureNote(int flag, void* cvode, const Callbacks& cb,
+                                 const NetworkSystem& system, double t, const double* y) {
+  if (flag != CV_CONV_FAILURE && flag != CV_ERR_FAILURE) return "";
+  double step = 0.0;
+  CVodeGetCurrentStep(cvode, &step);
+  return StiffnessNote(system, cb.InputTime(t), y, step);
 }
 
 // Times a rounding error apart (a pulse edge computed as start + k period + width and an
@@ -101,7 +113,9 @@ struct IntegrationSession::Impl {
   std::vector<const double*> rows_sensitivities;
   // the piece under way
   RunStats stats;
-  long calls = 0;      // CVode calls, one internal step each: the max_steps guard
+  long calls = 0;        // CVode calls, one internal step each: the max_steps guard
+  double run_end = 0.0;  // [s]: the time this Advance integrates to
+  StallWatch stall;
   double merge = 0.0;  // [s]: times closer than this are one
   std::chrono::steady_clock::time_point wall_start;
 };
@@ -123,7 +137,7 @@ void IntegrationSession::Impl::Prepare(const NetworkRunRequest& start) {
   roots.Watch(system, RootsOf(system, start, initial.data()));
 
   kind = options.linear_solver == LinearSolverKind::kAuto
-             ? ChooseLinearSolver(system.jacobian_pattern(), options.jacobian)
+             ? ChooseLinearSolver(system.jacobian_pattern())
              : options.linear_solver;
   if (kind == LinearSolverKind::kSmall && n > kSmallSystemMaxSize) {
     throw ParameterError("linear_solver", "small",
@@ -248,6 +262,7 @@ std::optional<RunStatus> IntegrationSession::Impl::Crossed(int hit, double stop)
   const double* at_crossing = Interpolate(t);
   std::copy(at_crossing, at_crossing + n, y);
   const Root& root = roots.root(hit);
+  if (root.kind == Root::kKink) stall.Crossed(root.element);
   RecordRows(t, y, root.kind == Root::kKink);
   if (root.kind != Root::kKink) {
     const std::string& name = system.elements()[root.element].name;
@@ -294,6 +309,14 @@ std::optional<RunStatus> IntegrationSession::Impl::Segment(double stop) {
     const double toward =
         fresh && !rows.every_step() && rows.pending() ? std::min(rows.next_time(), stop) : stop;
     fresh = false;
+    bool explained = false;
+    if (std::string stalled = stall.Check(system, t, calls, run_end, options.max_steps, explained);
+        !stalled.empty()) {
+      double step = 0.0;
+      CVodeGetCurrentStep(ws.cvode(), &step);
+      if (!explained) stalled += StiffnessNote(system, cb.InputTime(t), y, step);
+      return Finish(RunStatus::kFailed, t, std::move(stalled));
+    }
     if (calls == options.max_steps) {
       // CVODE's own name for the condition, which the driver checks itself: one step per call
       return Finish(RunStatus::kFailed, t,
@@ -307,7 +330,10 @@ std::optional<RunStatus> IntegrationSession::Impl::Segment(double stop) {
       return Finish(RunStatus::kFailed, t,
                     "CVODE failed at t = " + FormatNumber(t) + " s with " + FlagName(flag) +
                         (cb.last_error.empty() ? "" : " (" + cb.last_error + ")") +
-                        NonFiniteNote(flag, cb, system));
+                        NonFiniteNote(flag, cb, system) +
+                        (std::isnan(cb.non_finite_time)
+                             ? StiffnessFailureNote(flag, ws.cvode(), cb, system, t, y)
+                             : ""));
     }
     const int hit = roots.Step(cb, t_before, t, y, [&](double at) { return Interpolate(at); });
     if (hit >= 0) {
@@ -331,6 +357,8 @@ RunStats IntegrationSession::Impl::Advance(double until, const OutputGrid& grid)
   stats.linear_solver = kind;
   stats.sensitivities = sensitivity_count;
   calls = 0;
+  run_end = until;
+  stall.Start(t, calls);
   merge = MergeDistance(t, until);
   std::vector<double> stops;
   for (double b : system.Breakpoints(t, until)) {

@@ -7,17 +7,64 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
-#include <algorithm>
-#include <stdexcept>
+#include <sys/resource.h>
+#include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "musclesim/core/errors.h"
+#include "musclesim/core/number_format.h"
 #include "small_linear_solver.h"
 
 namespace musclesim {
+
+double MatrixBytes(LinearSolverKind kind, const JacobianPattern& pattern) {
+  const double n = pattern.size;
+  const double per_matrix =
+      kind == LinearSolverKind::kBand
+          ? n * (2.0 * pattern.lower_bandwidth + pattern.upper_bandwidth + 1.0) * sizeof(double)
+      : kind == LinearSolverKind::kSparse
+          ? pattern.entries() * (sizeof(double) + sizeof(sunindextype)) + n * sizeof(sunindextype)
+          : n * n * sizeof(double);
+  return 2.0 * per_matrix;
+}
+
+double AllocatableBytes() {
+  double bytes = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * ::sysconf(_SC_PAGE_SIZE);
+  for (int resource : {RLIMIT_AS, RLIMIT_DATA}) {
+    rlimit limit{};
+    if (::getrlimit(resource, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+      bytes = std::min(bytes, static_cast<double>(limit.rlim_cur));
+    }
+  }
+  return bytes;
+}
+
+void RequireRoomFor(LinearSolverKind kind, const JacobianPattern& pattern, double allowed) {
+  const double needed = MatrixBytes(kind, pattern);
+  if (needed <= allowed) return;
+  constexpr double kMiB = 1024.0 * 1024.0;
+  throw ParameterError(
+      "linear_solver", std::string(ToString(kind)),
+      "needs " + FormatNumber(std::ceil(needed / kMiB)) +
+          " MiB for the matrices of this system's " + std::to_string(pattern.size) +
+          " states (bandwidths " + std::to_string(pattern.lower_bandwidth) + " below, " +
+          std::to_string(pattern.upper_bandwidth) + " above), more than the " +
+          FormatNumber(std::floor(allowed / kMiB)) +
+          " MiB this process may allocate: use auto or sparse, which store only the "
+          "structural entries (" +
+          std::to_string(pattern.entries()) + ")");
+}
 
 LinearSystem::LinearSystem(LinearSolverKind kind, const JacobianPattern& pattern, N_Vector state,
                            SUNContext context)
     : kind_(kind), pattern_(pattern), values_(pattern.rows.size()) {
   for (int k = 0; k < pattern.entries(); ++k) columns_.push_back(pattern.ColumnOf(k));
+  // CVODE's interface holds the Newton matrix and a saved Jacobian of the same shape
+  RequireRoomFor(kind, pattern, AllocatableBytes());
   const sunindextype n = pattern.size;
   switch (kind) {
     case LinearSolverKind::kDense:
@@ -32,6 +79,7 @@ LinearSystem::LinearSystem(LinearSolverKind kind, const JacobianPattern& pattern
     case LinearSolverKind::kSparse:
       matrix_ = SUNSparseMatrix(n, n, pattern.entries(), CSC_MAT, context);
       if (matrix_ != nullptr) solver_ = SUNLinSol_KLU(state, matrix_, context);
+      quotient_.emplace(pattern_);
       break;
     case LinearSolverKind::kSmall:
       matrix_ = SUNDenseMatrix(n, n, context);

@@ -8,12 +8,24 @@
 #include <sundials/sundials_matrix.h>
 #include <sundials/sundials_nvector.h>
 
+#include <optional>
 #include <vector>
 
+#include "coloured_difference_quotient.h"
 #include "musclesim/dynamics/jacobian_pattern.h"
 #include "musclesim/solver/simulation.h"
 
 namespace musclesim {
+
+// Bytes of the matrices a solver of `kind` keeps for `pattern` (the Newton matrix and CVODE's
+// saved Jacobian), and what this process may allocate (the machine's memory, or less under a
+// limit such as ulimit -v).
+double MatrixBytes(LinearSolverKind kind, const JacobianPattern& pattern);
+double AllocatableBytes();
+// Throws ParameterError("linear_solver") naming the size needed when the matrices of `kind`
+// exceed `allowed` bytes: SUNDIALS does not check every allocation of a matrix, so one too
+// large must be refused before it is asked for, or it ends in a signal rather than an error.
+void RequireRoomFor(LinearSolverKind kind, const JacobianPattern& pattern, double allowed);
 
 class LinearSystem {
  public:
@@ -38,12 +50,15 @@ class LinearSystem {
   SUNLinearSolver solver() const { return solver_; }
   // A buffer for the Jacobian's values, one per pattern entry.
   std::vector<double>& values() { return values_; }
+  // The sparse solver's difference quotient (the other kinds use CVODE's own).
+  const ColouredDifferenceQuotient& quotient() const { return *quotient_; }
 
  private:
   LinearSolverKind kind_;
   JacobianPattern pattern_;
   std::vector<int> columns_;  // the column of every entry
   std::vector<double> values_;
+  std::optional<ColouredDifferenceQuotient> quotient_;  // sparse only
   SUNMatrix matrix_ = nullptr;
   SUNLinearSolver solver_ = nullptr;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -45,12 +46,11 @@ std::vector<Root> RootsOf(const NetworkSystem& system, const NetworkRunRequest& 
       roots.push_back({Root::kMaxLength, e, *limit.max_length});
     }
   }
-  std::vector<std::pair<std::string_view, std::string_view>> pairs;
+  std::set<std::pair<std::string_view, std::string_view>> pairs;  // a set: a large network
   for (std::size_t e = 0; e < system.elements().size(); ++e) {
     const Element& element = system.elements()[e];
     const std::pair<std::string_view, std::string_view> ends(element.from, element.to);
-    if (std::find(pairs.begin(), pairs.end(), ends) != pairs.end()) continue;
-    pairs.push_back(ends);
+    if (!pairs.insert(ends).second) continue;
     roots.push_back({Root::kZeroLength, static_cast<int>(e), 0.0});
   }
   return roots;

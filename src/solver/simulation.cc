@@ -44,16 +44,19 @@ LinearSolverKind ParseLinearSolverKind(std::string_view text) {
   return Parse(kLinearSolverNames, "linear_solver", text);
 }
 
-LinearSolverKind ChooseLinearSolver(const JacobianPattern& pattern, JacobianKind jacobian) {
+LinearSolverKind ChooseLinearSolver(const JacobianPattern& pattern) {
   // up to a few dozen states a dense LU costs less than band or sparse bookkeeping, and a
   // fixed-size one with its own vector least (docs/solver.md)
-  // a band this narrow (a chain has 3 + 2) factors in O(n) with less overhead than KLU
+  // a band this narrow (a chain has 3 + 2) factors in O(n) with less overhead than KLU; a
+  // wider one (nodes listed out of order) grows as n times its width, the sparse structure
+  // as the entries, and its difference quotient needs a few right-hand sides per Jacobian
+  // (coloured_difference_quotient.h) where the band's needs one per column of the band
   constexpr int kNarrowBand = 8;
   if (pattern.size <= kSmallSystemMaxSize) return LinearSolverKind::kSmall;
   if (pattern.lower_bandwidth + pattern.upper_bandwidth <= kNarrowBand) {
     return LinearSolverKind::kBand;
   }
-  return jacobian == JacobianKind::kAnalytic ? LinearSolverKind::kSparse : LinearSolverKind::kBand;
+  return LinearSolverKind::kSparse;
 }
 
 constexpr EnumName<RunStatus> kStatusNames[] = {
@@ -75,11 +78,6 @@ void Validate(const SolverOptions& o) {
   Require(std::isfinite(o.max_step) && o.max_step >= 0.0, "max_step", o.max_step,
           "must be finite and >= 0 (0: no limit) [s]");
   Require(o.max_steps >= 1, "max_steps", static_cast<double>(o.max_steps), "must be >= 1");
-  if (o.linear_solver == LinearSolverKind::kSparse && o.jacobian != JacobianKind::kAnalytic) {
-    throw ParameterError("linear_solver", "sparse",
-                         "needs jacobian: analytic (CVODE's difference-quotient Jacobian is "
-                         "for dense and band matrices only)");
-  }
 }
 
 namespace {

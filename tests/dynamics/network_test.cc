@@ -206,7 +206,7 @@ TEST(Network, ChainGivenInOrderHasBandwidthsThreeBelowAndTwoAbove) {
   EXPECT_EQ(pattern.lower_bandwidth, 3);
   EXPECT_EQ(pattern.upper_bandwidth, 2);
   // and auto takes the band solver for it
-  EXPECT_EQ(ChooseLinearSolver(pattern, JacobianKind::kAnalytic), LinearSolverKind::kBand);
+  EXPECT_EQ(ChooseLinearSolver(pattern), LinearSolverKind::kBand);
 }
 
 TEST(Network, AutoTakesTheSmallPathUpToSixteenStates) {
@@ -214,11 +214,9 @@ TEST(Network, AutoTakesTheSmallPathUpToSixteenStates) {
     const testing::NetworkExperiment chain = testing::Chain(n);
     const JacobianPattern& pattern = chain.system.jacobian_pattern();
     EXPECT_EQ(pattern.size, 2 * n);
-    for (JacobianKind jacobian : {JacobianKind::kAnalytic, JacobianKind::kDifferenceQuotient}) {
-      EXPECT_EQ(ChooseLinearSolver(pattern, jacobian),
-                n <= 8 ? LinearSolverKind::kSmall : LinearSolverKind::kBand)
-          << n;
-    }
+    EXPECT_EQ(ChooseLinearSolver(pattern),
+              n <= 8 ? LinearSolverKind::kSmall : LinearSolverKind::kBand)
+        << n;
   }
 }
 

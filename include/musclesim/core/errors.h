@@ -13,7 +13,8 @@
 
 namespace musclesim {
 
-// A parameter value that breaks a rule. `path` is relative to the validated struct.
+// A parameter value that breaks a rule. `path` is relative to the validated struct. what()
+// quotes the path and value with their control characters written as \xHH.
 class ParameterError : public std::invalid_argument {
  public:
   ParameterError(std::string path, std::string value, std::string rule);
@@ -28,10 +29,11 @@ class ParameterError : public std::invalid_argument {
   std::string rule_;
 };
 
-// Invalid user input, already located: the message is complete and printable as is.
+// Invalid user input, already located: the message is complete and printable as is (its
+// control characters, quoted from a file, written as \xHH: core/printable_text.h).
 class InputError : public std::runtime_error {
  public:
-  explicit InputError(const std::string& message) : std::runtime_error(message) {}
+  explicit InputError(const std::string& message);
 };
 
 // Throws ParameterError(path, value, rule) unless the condition holds.

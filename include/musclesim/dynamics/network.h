@@ -10,7 +10,9 @@
 // evaluation allocates nothing, so one system may be integrated on many threads.
 #pragma once
 
+#include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "musclesim/dynamics/controller.h"
@@ -265,6 +267,8 @@ class NetworkSystem {
   std::vector<Element> elements_;
   std::vector<NodeLoad> loads_;
   std::vector<Controller> controllers_;
+  // each part's index by its name
+  std::unordered_map<std::string, int> node_index_, element_index_, controller_index_;
   std::vector<Loop> loops_;  // one per controller
   int integral_count_ = 0;
   std::vector<End> ends_;

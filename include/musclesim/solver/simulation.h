@@ -47,10 +47,10 @@ LinearSolverKind ParseLinearSolverKind(std::string_view text);  // ParameterErro
 // The largest system the `small` linear solver serves.
 inline constexpr int kSmallSystemMaxSize = 16;
 
-// What `auto` picks for a system of `pattern` (small for a few states, band for a narrow band,
-// else sparse; never sparse with a difference-quotient Jacobian, which CVODE has only for dense
-// and band matrices).
-LinearSolverKind ChooseLinearSolver(const JacobianPattern& pattern, JacobianKind jacobian);
+// What `auto` picks for a system of `pattern`, whichever the Jacobian: small for a few states,
+// band for a narrow band, else sparse (with a difference-quotient Jacobian, a coloured one on
+// the sparse structure).
+LinearSolverKind ChooseLinearSolver(const JacobianPattern& pattern);
 
 // The smallest relative tolerance double precision can meet (about 100 ulps).
 inline constexpr double kMinTolerance = 1e-14;
