@@ -16,7 +16,15 @@ std::string Checked(std::string text, const std::string& where) {
 
 }  // namespace
 
-Document DocumentFrom(const py::handle& given, const std::string& where) {
+Document DocumentFrom(const py::handle& given, const std::string& where, int depth) {
+  // a scenario nests a few levels; a dict or list that holds itself would never end
+  constexpr int kMaxDepth = 100;
+  if (depth > kMaxDepth) {
+    throw py::value_error(where.substr(0, 200) + "...: nested deeper than " +
+                          std::to_string(kMaxDepth) +
+                          " levels (a scenario nests a few; a dict or list holding itself "
+                          "never ends)");
+  }
   py::object value = py::reinterpret_borrow<py::object>(given);
   if (value.is_none()) return Document();
   if (py::hasattr(value, "tolist") && !py::isinstance<py::str>(value)) {
@@ -45,7 +53,8 @@ Document DocumentFrom(const py::handle& given, const std::string& where) {
                              py::repr(key).cast<std::string>());
       }
       const std::string name = Checked(key.cast<std::string>(), where);
-      entries.emplace_back(name, DocumentFrom(item, where.empty() ? name : where + "." + name));
+      entries.emplace_back(
+          name, DocumentFrom(item, where.empty() ? name : where + "." + name, depth + 1));
     }
     return Document::Map(std::move(entries));
   }
@@ -53,7 +62,7 @@ Document DocumentFrom(const py::handle& given, const std::string& where) {
     std::vector<Document> items;
     std::size_t i = 0;
     for (const py::handle item : value) {
-      items.push_back(DocumentFrom(item, where + "[" + std::to_string(i++) + "]"));
+      items.push_back(DocumentFrom(item, where + "[" + std::to_string(i++) + "]", depth + 1));
     }
     return Document::List(std::move(items));
   }

@@ -14,6 +14,6 @@ namespace musclesim::python {
 // int, float and str as themselves, a NumPy scalar or array as the Python number or list it
 // holds, an os.PathLike as its path. `where` names it in a TypeError for any other type, or
 // a str holding a NUL character (ValueError).
-Document DocumentFrom(const pybind11::handle& value, const std::string& where);
+Document DocumentFrom(const pybind11::handle& value, const std::string& where, int depth = 0);
 
 }  // namespace musclesim::python

@@ -131,3 +131,16 @@ def test_hostile_arguments_raise_a_clear_python_exception():
             except Exception as error:  # noqa: BLE001 - anything else is the failure
                 pytest.fail("%s%r raised %s: %s" % (name, tuple(arguments),
                                                     type(error).__name__, error))
+
+
+def test_values_nested_past_the_limit_or_holding_themselves_raise_value_error():
+    deep = "x"
+    for _ in range(5000):
+        deep = {"a": deep}
+    cyclic = {}
+    cyclic["x"] = cyclic
+    loop = []
+    loop.append(loop)
+    for value in (deep, cyclic, {"name": "n", "nodes": loop}):
+        with pytest.raises(ValueError, match="nested deeper than 100 levels"):
+            musclesim.scenario_from_dict(value)

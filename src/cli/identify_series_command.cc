@@ -133,6 +133,7 @@ int IdentifySeriesCommand(int argc, char** argv) {
     if (args.Has("--report") || args.Has("--residuals")) {
       throw UsageError("--report and --residuals go with a fit, not --design");
     }
+    CheckOutputs(args, spec);
     const SeriesIdentification design = DesignSeries(spec, ReadMeasuredSeries(spec, true), run);
     WriteOutput(args.Value("-o", "-"), FormatDesignReport(design, data_file));
     return kExitSuccess;

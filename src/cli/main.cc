@@ -8,6 +8,7 @@
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "musclesim/core/errors.h"
+#include "musclesim/core/printable_text.h"
 
 namespace {
 
@@ -54,10 +55,11 @@ int main(int argc, char** argv) {
     if (verb == "identify") return cli::IdentifyCommand(argc, argv);
     if (verb == "curves") return cli::CurvesCommand(argc, argv);
     if (verb == "fit") return cli::FitCommand(argc, argv);
-    std::cerr << "musclesim: unknown verb '" << verb << "' (see musclesim --help)\n";
+    std::cerr << "musclesim: unknown verb '" << PrintableText(verb) << "' (see musclesim --help)\n";
     return kExitInvalidInput;
   } catch (const cli::UsageError& e) {
-    std::cerr << "musclesim " << verb << ": " << e.what() << "\n";
+    // a usage error quotes the command line as given: its control characters escaped
+    std::cerr << "musclesim " << PrintableText(verb) << ": " << PrintableText(e.what()) << "\n";
     return kExitInvalidInput;
   } catch (const InputError& e) {
     std::cerr << "musclesim " << verb << ": " << e.what() << "\n";
@@ -66,7 +68,7 @@ int main(int argc, char** argv) {
     std::cerr << "musclesim " << verb << ": " << e.what() << "\n";
     return kExitInvalidInput;
   } catch (const std::exception& e) {
-    std::cerr << "musclesim " << verb << ": error: " << e.what() << "\n";
+    std::cerr << "musclesim " << verb << ": error: " << PrintableText(e.what()) << "\n";
     return kExitFailure;
   }
 }

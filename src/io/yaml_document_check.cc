@@ -82,10 +82,12 @@ class DocumentChecker : public YAML::EventHandler {
                         const std::string& text) const {
     const std::size_t i = FirstControlCharacter(text);
     if (i == std::string::npos) return;
-    throw InputError((at.empty() ? std::string("(top level)") : at) + " = " + text + " (" +
-                     Place(path_, mark) + "): holds the control character " +
-                     PrintableText(text.substr(i, 1)) + " at byte " + std::to_string(i + 1) +
-                     "; names and values are printable text (a tab or a newline is allowed)");
+    throw InputError(
+        (at.empty() ? std::string("(top level)") : at) + " = " + text + " (" + Place(path_, mark) +
+        "): holds the control character " +
+        PrintableText(text.substr(i, static_cast<unsigned char>(text[i]) == 0xc2 ? 2 : 1)) +
+        " at byte " + std::to_string(i + 1) +
+        "; names and values are printable text (a tab or a newline is allowed)");
   }
 
   void Open(const YAML::Mark& mark, bool is_map) {

@@ -2,6 +2,7 @@
 
 #include "musclesim/core/key_path.h"
 #include "musclesim/core/errors.h"
+#include "musclesim/core/printable_text.h"
 
 namespace musclesim::yaml {
 
@@ -30,6 +31,11 @@ void ApplyOverride(YAML::Node root, const std::string& text, const std::string& 
   }
   const std::string path = text.substr(0, eq);
   const std::string value = text.substr(eq + 1);
+  // names and values reach messages and the terminal, as a file's do (yaml_document_check.h)
+  if (const std::size_t at = FirstControlCharacter(text); at != std::string::npos) {
+    throw InputError(head + "holds a control character at byte " + std::to_string(at + 1) +
+                     "; names and values are printable text");
+  }
   const auto split = SplitKeyPath(path);
   if (!split || split->empty()) {
     throw InputError(head + "'" + path +

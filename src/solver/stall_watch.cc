@@ -15,9 +15,9 @@ int ControllerDriving(const NetworkSystem& system, int element) {
   const std::vector<Controller>& controllers = system.controllers();
   for (std::size_t k = 0; k < controllers.size(); ++k) {
     const Controller& c = controllers[k];
-    const bool drives = c.co_contraction ? c.co_contraction->first == name ||
-                                               c.co_contraction->second == name
-                                         : c.drives == name;
+    const bool drives = c.co_contraction
+                            ? c.co_contraction->first == name || c.co_contraction->second == name
+                            : c.drives == name;
     if (drives) return static_cast<int>(k);
   }
   return -1;
@@ -35,7 +35,8 @@ std::string CrossingCause(const NetworkSystem& system, const std::map<int, long>
   if (most < 0 || count * 100 < steps) return "";
   const NetworkSystem::Kink& kink = system.kinks()[static_cast<std::size_t>(most)];
   const std::string& element = system.elements()[static_cast<std::size_t>(kink.element)].name;
-  const std::string times = std::string(" ").append(std::to_string(count)) + " times in those steps";
+  const std::string times =
+      std::string(" ").append(std::to_string(count)) + " times in those steps";
   if (kink.kind == NetworkSystem::Kink::kCommand) {
     const int k = ControllerDriving(system, kink.element);
     if (k >= 0) {
@@ -73,8 +74,8 @@ std::string StallWatch::Check(const NetworkSystem& system, double t, long calls,
     reason = "the integration stalled at t = " + FormatNumber(t) + " s: its last " +
              std::to_string(steps) + " steps advanced " + FormatNumber(advanced) +
              " s, and at that pace reaching t = " + FormatNumber(until) + " s needs " +
-             FormatNumber(std::round(needed)) + " more, beyond max_steps = " +
-             std::to_string(max_steps);
+             FormatNumber(std::round(needed)) +
+             " more, beyond max_steps = " + std::to_string(max_steps);
     const std::string cause = CrossingCause(system, crossings_, steps);
     explained = !cause.empty();
     reason += cause;

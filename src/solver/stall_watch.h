@@ -30,8 +30,8 @@ class StallWatch {
   // After a step: the reason the run cannot reach `until` within `max_steps` at the pace of
   // the last window, or "" (always "" within a window). `explained` tells whether the reason
   // names what the steps kept crossing.
-  std::string Check(const NetworkSystem& system, double t, long calls, double until,
-                    long max_steps, bool& explained);
+  std::string Check(const NetworkSystem& system, double t, long calls, double until, long max_steps,
+                    bool& explained);
 
  private:
   double window_start_time_ = 0.0;

@@ -35,7 +35,8 @@ std::string StiffnessNote(const NetworkSystem& system, double t, const double* y
     const double by_velocity = std::abs(Entry(pattern, values, x + 1, x + 1));
     const double by_position = std::sqrt(std::abs(Entry(pattern, values, x + 1, x)));
     const double node_rate = std::max(by_velocity, by_position);
-    if (std::isfinite(node_rate) && node_rate > rate) fastest = static_cast<int>(i), rate = node_rate;
+    if (std::isfinite(node_rate) && node_rate > rate)
+      fastest = static_cast<int>(i), rate = node_rate;
   }
   if (fastest < 0) return "";
   // the element attached to it whose tension changes most with its velocity
@@ -65,8 +66,9 @@ std::string StiffnessNote(const NetworkSystem& system, double t, const double* y
   note += ", from " + element.name + ", whose tension changes by " + FormatNumber(slope) +
           " N per m/s at a lengthening rate of " + FormatNumber(before.lengthening_rate) + " m/s";
   if (element.kind == ElementKind::kActuator) {
-    note += " (its tension-velocity curve this steep: a velocity.epsilon small for its n makes "
-            "it nearly a step at v = 0; a larger epsilon or mass smooths it)";
+    note +=
+        " (its tension-velocity curve this steep: a velocity.epsilon small for its n makes "
+        "it nearly a step at v = 0; a larger epsilon or mass smooths it)";
   }
   return note;
 }

@@ -2,6 +2,7 @@
 #include "musclesim/sweep/sweep_runner.h"
 
 #include <filesystem>
+#include <utility>
 #include <system_error>
 
 #include "musclesim/core/errors.h"
@@ -31,6 +32,21 @@ void CheckSummaryPath(const SweepSpec& spec, const std::string& path) {
   }
   CheckOutputFiles({{spec.source, "the sweep file"}, {spec.base, "the base scenario"}},
                    {{path, "the summary"}});
+  if (spec.trajectories == TrajectoryPolicy::kNone) return;
+  // each run's trajectory goes to FOLDER/INDEX.csv (PointRunner): no input may lie there
+  const fs::path folder =
+      fs::weakly_canonical(directory / (fs::path(path).stem().string() + "_trajectories"), error);
+  for (const auto& [input, name] :
+       {std::pair{spec.source, "the sweep file"}, std::pair{spec.base, "the base scenario"}}) {
+    if (input.empty()) continue;
+    const fs::path at = fs::weakly_canonical(input, error).parent_path();
+    if (!error && at == folder) {
+      throw InputError(path + ": trajectories: " + std::string(ToString(spec.trajectories)) +
+                       " writes each run's trajectory into " + folder.string() + "/, where " +
+                       name + " " + input +
+                       " lies and would be overwritten: move it, or name the summary otherwise");
+    }
+  }
 }
 
 }  // namespace musclesim

@@ -564,6 +564,8 @@ const std::vector<Case> kCases = {
      {"limits[0].max_length = 0.15 ({at}): is a length the run may reach, and there the tension of muscle overflows (inf N)"}},
     {"ControlCharacterInAValue", "run {file} -o -", Network("name: bad_network", "name: @bad\x1b[2Jnetwork\x07"), 2,
      {"name = bad\\x1B[2Jnetwork\\x07 ({at}): holds the control character \\x1B at byte 4; names and values are printable text"}},
+    {"SetValueWithAControlCharacter", "run {file} -o - --set 'name=a\x1b[2Jb'", Scenario(), 2,
+     {"--set name=a\\x1B[2Jb: holds a control character at byte 7; names and values are printable text"}},
     {"ControlCharacterInAKey", "run {file} -o -", Network("loads:\n", "@lo\x1b" "ads:\n"), 2,
      {"lo\\x1Bads = lo\\x1Bads ({at}): holds the control character \\x1B at byte 3"}},
     {"YamlNestedPastTheLimit", "run {file} -o -", Network("name: bad_network", "name: bad_network") + "extra: " + std::string(3000, '[') + std::string(3000, ']') + "\n", 2,

@@ -114,6 +114,28 @@ TEST(IdentifySeriesCli, BadInputExitsTwoNamingWhereAndWhy) {
   EXPECT_THAT(r.err, HasSubstr("YAML syntax error"));
 }
 
+// --design -o names an input (the scenario, a measured series, the data file): refused before
+// anything is written, as the fit's outputs are. Run on copies, so a regression cannot touch
+// the repository's files.
+TEST(IdentifySeriesCli, TheDesignReportNeverOverwritesAnInput) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(::testing::TempDir()) / "design_over_inputs";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy(std::string(MUSCLESIM_SOURCE_DIR) + "/data", dir / "data", fs::copy_options::recursive);
+  fs::copy(std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios", dir / "scenarios",
+           fs::copy_options::recursive);
+  const std::string data = (dir / "data" / "quick_release.yaml").string();
+  for (const fs::path& input : {dir / "scenarios" / "quick_release.yaml",
+                                dir / "data" / "quick_release_length.csv", fs::path(data)}) {
+    const auto before = fs::file_size(input);
+    const Outcome r = RunCli("identify " + data + " --design -o " + input.string());
+    EXPECT_EQ(r.exit_code, 2) << input;
+    EXPECT_THAT(r.err, HasSubstr("-o")) << r.err;
+    EXPECT_EQ(fs::file_size(input), before) << input;
+  }
+}
+
 TEST(IdentifySeriesCli, SetChangesTheScenarioBeforeTheFit) {
   // with the load halved the recorded lengths no longer fit f_iso = 100 N: the estimate
   // halves too (only force ratios matter without passive tension), as the header shows

@@ -17,7 +17,9 @@ TEST(PrintableText, EscapesControlCharactersOnly) {
   EXPECT_EQ(PrintableText(std::string("a\0b", 3)), "a\\x00b");
   EXPECT_EQ(PrintableText("del\x7f"), "del\\x7F");
   // U+009B (CSI) in UTF-8; U+00B0 (degree sign) shares its first byte and stays
-  EXPECT_EQ(PrintableText("\xc2\x9b" "2J 20\xc2\xb0"), "\\xC2\\x9B2J 20\xc2\xb0");
+  EXPECT_EQ(PrintableText("\xc2\x9b"
+                          "2J 20\xc2\xb0"),
+            "\\xC2\\x9B2J 20\xc2\xb0");
   EXPECT_EQ(PrintableText("tab\there\nline \xce\xb1"), "tab\there\nline \xce\xb1");
 }
 

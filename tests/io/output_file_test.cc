@@ -225,3 +225,39 @@ TEST(OutputFile, StreamedOutputReplacesAStalePartialFile) {
 
 }  // namespace
 }  // namespace musclesim
+
+namespace musclesim {
+namespace {
+
+// A symbolic link named as the output is written through: its target gets the text and the
+// link stays a link (a rename onto the link's name would have replaced it, leaving the
+// target as it was).
+TEST(OutputFileLinks, AnOutputNamedByASymbolicLinkWritesItsTarget) {
+  const std::string dir = FreshDirectory();
+  std::ofstream(dir + "/target.json") << "old\n";
+  fs::create_symlink("target.json", dir + "/link.json");
+  WriteOutput(dir + "/link.json", "written\n");
+  EXPECT_TRUE(fs::is_symlink(dir + "/link.json"));
+  EXPECT_EQ(ReadFile(dir + "/target.json"), "written\n");
+
+  fs::create_symlink("streamed.csv", dir + "/streamed_link.csv");  // a dangling link
+  StreamedOutput streamed(dir + "/streamed_link.csv");
+  streamed.Write("rows\n");
+  streamed.Commit();
+  EXPECT_TRUE(fs::is_symlink(dir + "/streamed_link.csv"));
+  EXPECT_EQ(ReadFile(dir + "/streamed.csv"), "rows\n");
+  EXPECT_FALSE(fs::exists(dir + "/streamed.csv.partial"));
+}
+
+// /dev/stdout is a link into /proc: written in place, never replaced by a file of its own.
+TEST(OutputFileLinks, ALinkIntoProcIsWrittenInPlace) {
+  const std::string dir = FreshDirectory();
+  fs::create_symlink("/proc/self/fd/1", dir + "/stdout_link");
+  StreamedOutput streamed(dir + "/stdout_link");
+  EXPECT_TRUE(streamed.in_place());
+  streamed.Commit();
+  EXPECT_TRUE(fs::is_symlink(dir + "/stdout_link"));
+}
+
+}  // namespace
+}  // namespace musclesim

@@ -31,9 +31,9 @@ NetworkExperiment ShuffledChain(int n, JacobianKind jacobian) {
   std::vector<Node> nodes = in_order.system.nodes();
   std::mt19937 generator(2026);
   std::shuffle(nodes.begin() + 1, nodes.end(), generator);  // the wall stays first
-  NetworkExperiment shuffled{NetworkSystem(nodes, in_order.system.elements(),
-                                           in_order.system.loads()),
-                             in_order.request, in_order.options};
+  NetworkExperiment shuffled{
+      NetworkSystem(nodes, in_order.system.elements(), in_order.system.loads()), in_order.request,
+      in_order.options};
   shuffled.options.jacobian = jacobian;
   return shuffled;
 }
@@ -124,8 +124,8 @@ TEST(LinearSolverChoice, MatricesTooLargeForMemoryAreRefusedWithTheirSize) {
   // the band's storage is SUNDIALS' own: its columns of ldata entries
   SUNContext context = nullptr;
   ASSERT_EQ(SUNContext_Create(nullptr, &context), 0);
-  SUNMatrix band = SUNBandMatrix(pattern.size, pattern.upper_bandwidth, pattern.lower_bandwidth,
-                                 context);
+  SUNMatrix band =
+      SUNBandMatrix(pattern.size, pattern.upper_bandwidth, pattern.lower_bandwidth, context);
   EXPECT_DOUBLE_EQ(MatrixBytes(LinearSolverKind::kBand, pattern),
                    2.0 * SUNBandMatrix_LDim(band) * pattern.size * sizeof(double));
   SUNMatDestroy(band);
@@ -135,8 +135,9 @@ TEST(LinearSolverChoice, MatricesTooLargeForMemoryAreRefusedWithTheirSize) {
     ADD_FAILURE() << "accepted";
   } catch (const ParameterError& e) {
     EXPECT_EQ(e.path(), "linear_solver");
-    EXPECT_NE(std::string(e.what()).find("needs 3 MiB for the matrices of this system's 400 states"),
-              std::string::npos)
+    EXPECT_NE(
+        std::string(e.what()).find("needs 3 MiB for the matrices of this system's 400 states"),
+        std::string::npos)
         << e.what();
   }
   EXPECT_NO_THROW(RequireRoomFor(LinearSolverKind::kSparse, pattern, dense - 1.0));

@@ -252,5 +252,29 @@ TEST(SweepPoints, ASummaryInMemoryKeepsNoTrajectories) {
   EXPECT_NO_THROW(CheckSummaryPath(spec, ""));
 }
 
+// Each run's trajectory goes to SUMMARY_trajectories/INDEX.csv: an input lying there (the base
+// scenario, or the sweep file itself) would be overwritten by a point's rows.
+TEST(SweepPoints, NoInputMayLieWhereTheTrajectoriesGo) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(::testing::TempDir()) / "sweep_trajectory_inputs";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "t_trajectories");
+  std::ofstream(dir / "t_trajectories" / "0.csv") << "name: base\n";
+  SweepSpec spec = SpecInCode("concentric in code");
+  spec.trajectories = TrajectoryPolicy::kAll;
+  spec.base = (dir / "t_trajectories" / "0.csv").string();
+  EXPECT_THAT([&] { CheckSummaryPath(spec, (dir / "t.csv").string()); },
+              ::testing::ThrowsMessage<InputError>(
+                  HasSubstr("where the base scenario " + spec.base + " lies")));
+  spec.base.clear();
+  spec.source = (dir / "t_trajectories" / "1.csv").string();
+  EXPECT_THAT([&] { CheckSummaryPath(spec, (dir / "t.csv").string()); },
+              ::testing::ThrowsMessage<InputError>(HasSubstr("where the sweep file")));
+  // elsewhere, or with no trajectories written, nothing is refused
+  EXPECT_NO_THROW(CheckSummaryPath(spec, (dir / "other.csv").string()));
+  spec.trajectories = TrajectoryPolicy::kNone;
+  EXPECT_NO_THROW(CheckSummaryPath(spec, (dir / "t.csv").string()));
+}
+
 }  // namespace
 }  // namespace musclesim

@@ -35,11 +35,14 @@ class StreamedOutput {
   // Where the text is until Commit(): PATH.partial, or PATH itself for "-" and devices.
   const std::string& written_path() const { return written_path_; }
   bool in_place() const { return written_path_ == path_; }
+  // The file the output replaces when committed: the path, or a symbolic link's target.
+  const std::string& destination() const { return destination_; }
 
  private:
   void Close();
   std::string path_;
   std::string written_path_;
+  std::string destination_;
   std::FILE* file_ = nullptr;
   bool owns_file_ = false;  // false for standard output
 };
