@@ -3,6 +3,7 @@
 // only CVODE's flag.
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "musclesim/core/number_format.h"
 #include "musclesim/dynamics/network.h"
@@ -33,6 +34,18 @@ std::string NetworkSystem::NonFiniteCause(double t, const double* y) const {
     const double load = LoadOn(static_cast<int>(i), t, y);
     if (!std::isfinite(load)) {
       return "the load on node " + nodes_[i].name + " is " + FormatNumber(load) + " N" + at;
+    }
+  }
+  // every part finite, the sum over a node's mass is not: its acceleration overflowed
+  std::vector<double> rate(static_cast<std::size_t>(state_size()));
+  RightHandSide(t, y, rate.data());
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    const int x = ends_[i].state;
+    if (x >= 0 && !std::isfinite(rate[static_cast<std::size_t>(x) + 1])) {
+      return "node " + nodes_[i].name + "'s acceleration is " +
+             FormatNumber(rate[static_cast<std::size_t>(x) + 1]) +
+             " m/s^2: the forces on it, each finite, over its mass of " +
+             FormatNumber(nodes_[i].mass) + " kg overflow" + at;
     }
   }
   return "a rate of the state (an activation or a controller's integral) is not finite" + at;

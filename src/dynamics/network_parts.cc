@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/core/input_ranges.h"
 #include "musclesim/core/enum_names.h"
 
 namespace musclesim {
@@ -103,7 +104,8 @@ void Validate(const Element& e) {
       Require(std::isfinite(e.slack_length) && e.slack_length >= 0.0, "slack_length",
               e.slack_length, "must be finite and >= 0 [m]");
       if (e.exponential()) {
-        Require(std::isfinite(e.k), "exponential.k", e.k, "must be finite and > 0 [N]");
+        Require(std::isfinite(e.k) && e.k > 0.0 && e.k <= kPositiveForceRange.max, "exponential.k",
+                e.k, "must be > 0 and at most 1e9 [N]: " + std::string(kPositiveForceRange.why));
         Require(std::isfinite(e.alpha) && e.alpha > 0.0, "exponential.alpha", e.alpha,
                 "must be finite and > 0 [1/m]");
       } else {

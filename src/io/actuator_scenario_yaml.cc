@@ -1,5 +1,8 @@
 // Reads the single-actuator form of a scenario file into its network (docs/model.md 7.4).
+#include <cmath>
+
 #include "musclesim/core/input_ranges.h"
+#include "musclesim/model/passive.h"
 #include "io/model_yaml_node.h"
 #include "io/scenario_fields.h"
 #include "io/scenario_readers.h"
@@ -28,6 +31,14 @@ void ReadLimits(const yaml::Source& src, const YAML::Node& limits, ActuatorScena
       yaml::Fail(src, max, "limits.max_length", yaml::Describe(max),
                  "must be above initial.length = " + FormatNumber(s.initial_length) +
                      " and at most 1000 [m]: " + kLengthRange.why);
+    }
+    // the run may reach this length: the passive exponential must stay finite up to it
+    const double passive = PassiveTension(s.model.params.passive, value).value;
+    if (!std::isfinite(passive)) {
+      yaml::Fail(src, max, "limits.max_length", yaml::Describe(max),
+                 "is a length the run may reach, and there the passive tension overflows (" +
+                     FormatNumber(passive) +
+                     " N): model.passive.alpha times the stretch must stay below about 700");
     }
     s.max_length = value;
   }

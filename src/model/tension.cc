@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/core/input_ranges.h"
 
 namespace musclesim {
 
@@ -21,8 +22,11 @@ void WithPrefix(const char* block, Check check) {
 }  // namespace
 
 void Validate(const ModelParams& params) {
-  Require(std::isfinite(params.f_iso) && params.f_iso > 0.0, "f_iso", params.f_iso,
-          "must be finite and > 0 [N]");
+  // as every force (input_ranges.h): the tension and its sums stay finite
+  Require(
+      std::isfinite(params.f_iso) && params.f_iso > 0.0 && params.f_iso <= kPositiveForceRange.max,
+      "f_iso", params.f_iso,
+      "must be > 0 and at most 1e9 [N]: " + std::string(kPositiveForceRange.why));
   WithPrefix("passive", [&] { Validate(params.passive); });
   WithPrefix("active_length", [&] { Validate(params.active_length); });
   WithPrefix("velocity", [&] { Validate(params.velocity); });

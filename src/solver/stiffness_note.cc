@@ -39,6 +39,15 @@ std::string StiffnessNote(const NetworkSystem& system, double t, const double* y
       fastest = static_cast<int>(i), rate = node_rate;
   }
   if (fastest < 0) return "";
+  // a time scale far above the step the integrator was cut to: stiffness does not explain it
+  constexpr double kExplainingRatio = 1e3;
+  if (!(1.0 / rate < kExplainingRatio * std::abs(step))) {
+    return "; no rate of the system explains steps this short (the fastest: node " +
+           system.nodes()[static_cast<std::size_t>(fastest)].name + ", a time scale of " +
+           FormatNumber(1.0 / rate) + " s, against CVODE's last step of " + FormatNumber(step) +
+           " s): a kink in a law's slope near this state (a slack length, where a passive or "
+           "tendon stiffness starts) or a discontinuity the integrator cannot step over";
+  }
   // the element attached to it whose tension changes most with its velocity
   const Node& node = system.nodes()[static_cast<std::size_t>(fastest)];
   const int v = system.StateIndex(fastest) + 1;

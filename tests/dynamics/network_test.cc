@@ -138,6 +138,18 @@ TEST(Network, NonFiniteCauseNamesTheElementItsTensionAndTheTime) {
       << cause;
 }
 
+TEST(Network, NonFiniteCauseNamesANodeWhoseFiniteForcesOverflowOverItsMass) {
+  // 1e300 N/m stretched 10 m is 1e301 N, finite; over 1e-10 kg it is not
+  const NetworkSystem system({Node::Fixed("wall", 0.0), Node::Free("light", 1e-10, 10.1)},
+                             {Element::Spring("spring", "wall", "light", 1e300, 0.1)}, {});
+  const double y[2] = {10.1, 0.0};
+  const std::string cause = system.NonFiniteCause(0.5, y);
+  EXPECT_EQ(cause,
+            "node light's acceleration is -inf m/s^2: the forces on it, each finite, over "
+            "its mass of 1e-10 kg overflow at t = 0.5 s")
+      << cause;
+}
+
 TEST(Network, RightHandSideIsSection72ByHandWithTendonSlackAndSheathTaut) {
   const State s{0.13, 0.1, 0.02, 0.235, -0.03, 0.53, 0.01};
   // the sides of the kinks this state is meant to cover

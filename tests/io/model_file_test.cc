@@ -66,12 +66,16 @@ TEST(ModelFile, ErrorsNameKeyValueLocationAndRule) {
   EXPECT_EQ(LoadError(Edited("n: 3", "n: 0")),
             "model.velocity.n = 0 (FILE:8:29): must be an integer >= 1 (at most 1000)");
   EXPECT_EQ(LoadError(Edited("k_p: 2.0", "k_p: -2.0")),
-            "model.passive.k_p = -2 (FILE:3:18): must be finite and >= 0 [N]");
+            "model.passive.k_p = -2 (FILE:3:18): must be >= 0 and at most 1e9 [N]: 1e9 N "
+            "(100,000 tonnes-force) is beyond any actuator or rig, and sums of loads stay finite");
 }
 
 TEST(ModelFile, RejectsEveryBrokenRule) {
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {Edited("f_iso: 100.0", "f_iso: 0"), "model.f_iso = 0 (FILE:2:10): must be finite and > 0"},
+      {Edited("f_iso: 100.0", "f_iso: 0"),
+       "model.f_iso = 0 (FILE:2:10): must be > 0 and at most 1e9 [N]"},
+      {Edited("f_iso: 100.0", "f_iso: 2e9"),
+       "model.f_iso = 2e+09 (FILE:2:10): must be > 0 and at most 1e9 [N]"},
       {Edited("f_iso: 100.0", "f_iso: .nan"), "model.f_iso = nan"},
       {Edited("f_iso: 100.0", "f_iso: lots"), "model.f_iso = lots (FILE:2:10): must be a number"},
       {Edited("alpha: 30.0", "alpha: 0.0"), "model.passive.alpha = 0"},

@@ -56,7 +56,8 @@ TEST(Passive, SlopeMatchesFiniteDifference) {
 
 TEST(Passive, ValidateRejectsEachRule) {
   auto broken = [](PassiveParams p) { return testing::Rejection([&] { Validate(p); }); };
-  EXPECT_THAT(broken({-1.0, 30.0, 0.1}), HasSubstr("k_p = -1: must be finite and >= 0"));
+  EXPECT_THAT(broken({-1.0, 30.0, 0.1}), HasSubstr("k_p = -1: must be >= 0 and at most 1e9 [N]"));
+  EXPECT_THAT(broken({2e9, 30.0, 0.1}), HasSubstr("k_p = 2e+09: must be >= 0 and at most 1e9 [N]"));
   EXPECT_THAT(broken({1.0, 0.0, 0.1}), HasSubstr("alpha = 0: must be finite and > 0"));
   EXPECT_THAT(broken({1.0, 30.0, std::numeric_limits<double>::quiet_NaN()}),
               HasSubstr("slack_length = nan: must be finite"));

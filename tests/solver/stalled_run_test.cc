@@ -11,6 +11,8 @@
 #include "musclesim/io/scenario_yaml.h"
 #include "musclesim/solver/simulation.h"
 #include "support/control_networks.h"
+#include "solver/stiffness_note.h"
+#include "support/canonical_networks.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {
@@ -55,6 +57,20 @@ TEST(StalledRun, ATensionVelocityCurveNearAStepIsNamedAsTheStiffestPart) {
     EXPECT_TRUE(Says(message, "from actuator, whose tension changes by")) << message;
     EXPECT_TRUE(Says(message, "velocity.epsilon")) << message;
   }
+}
+
+// The note names the stiffest part only when its time scale is near the step CVODE was cut
+// to; far above it, stiffness explains nothing and the note says so rather than blaming the
+// fastest element. The mass-spring-damper's rates are sqrt(k / m) = 10 1/s and c / m = 1 1/s.
+TEST(StalledRun, StiffnessThatDoesNotExplainTheStepIsNotBlamed) {
+  const testing::NetworkExperiment msd = testing::MassSpringDamper(0.5);
+  std::vector<double> y(static_cast<std::size_t>(msd.system.state_size()));
+  msd.system.InitialState(0.0, y.data());
+  const std::string tiny_step = StiffnessNote(msd.system, 0.0, y.data(), 1e-12);
+  EXPECT_TRUE(Says(tiny_step, "no rate of the system explains steps this short")) << tiny_step;
+  EXPECT_TRUE(Says(tiny_step, "node load, a time scale of 0.1 s")) << tiny_step;
+  const std::string near_step = StiffnessNote(msd.system, 0.0, y.data(), 0.01);
+  EXPECT_TRUE(Says(near_step, "the stiffest part at t = 0 s: node load, rate 10 1/s")) << near_step;
 }
 
 }  // namespace
