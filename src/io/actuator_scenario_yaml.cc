@@ -75,6 +75,14 @@ ActuatorScenarioSpec ReadActuatorScenarioSpec(const yaml::Source& src, const YAM
                                         "initial.length", kLengthRange);
   s.initial_lengthening_rate =
       yaml::ReadOptionalNumberIn(src, initial, "initial", "lengthening_rate", kSpeedRange, 0.0);
+  // the passive exponential must be finite where the run starts
+  if (const double passive = PassiveTension(s.model.params.passive, s.initial_length).value;
+      !std::isfinite(passive)) {
+    yaml::Fail(src, initial["length"], "initial.length", yaml::Describe(initial["length"]),
+               "there the passive tension overflows (" + FormatNumber(passive) +
+                   " N): model.passive.alpha times the stretch beyond slack_length must stay "
+                   "below about 700");
+  }
 
   ActuatorDrive drive = ReadActuatorDrive(src, root, "", initial["activation"],
                                           "initial.activation", s.t_start, s.t_end);

@@ -280,6 +280,8 @@ const std::vector<Case> kCases = {
      {"limits.max_length = 0.1 ({at}): must be above initial.length = 0.1"}},
     {"LimitMaxWhereThePassiveTensionOverflows", "run {file} -o -", Edit(Scenario("max_length: 0.2", "max_length: @0.2"), "alpha: 100.0", "alpha: 8000.0"), 2,
      {"limits.max_length = 0.2 ({at}): is a length the run may reach, and there the passive tension overflows (inf N)"}},
+    {"InitialLengthWhereThePassiveTensionOverflows", "run {file} -o -", Edit(Scenario("{length: 0.1,", "{length: @0.1,"), "slack_length: 0.105", "slack_length: -10.0"), 2,
+     {"initial.length = 0.1 ({at}): there the passive tension overflows (inf N)"}},
     {"SetFIsoBeyondEveryForce", "run {file} -o - --set model.f_iso=1e308", Scenario(), 2,
      {"model.f_iso = 1e+308 (--set): must be > 0 and at most 1e9 [N]"}},
     {"SetPassiveKpBeyondEveryForce", "run {file} -o - --set model.passive.k_p=1e10", Scenario(), 2,
