@@ -9,7 +9,7 @@
 #   stiffness.md         largest Jacobian eigenvalue against BDF and Adams steps, by eps and n
 #   work_precision.csv   error against wall time for musclesim, Boost.Odeint and SciPy
 #   work_precision.md    wall time at equal error, as ratios to musclesim's default
-#   work_precision_<scenario>.png   the work-precision plots (gnuplot)
+#   docs/figures/work_precision_<scenario>.png   the work-precision plots (gnuplot), on the site
 #   sweep_throughput.md  runs per second of a 10,000-point sweep
 #   chain_scaling.txt    cost per step of a chain of N actuators against N, per linear solver and
 #                        against Boost.Odeint (and docs/figures/chain_scaling.png)
@@ -80,7 +80,7 @@ for s in isometric concentric eccentric twitches sine_load activation_ramp hangi
       file = dir "/" $2 "_" $3 ".dat"; print $5, $8 > file }' "$rows"
   {
     echo "set terminal pngcairo size 1000,700 noenhanced font 'sans,10'"
-    echo "set output '$out/work_precision_$s.png'"
+    echo "set output 'docs/figures/work_precision_$s.png'"
     echo "set logscale xy; set grid; set format x '%g'; set format y '%g'"
     echo "set xlabel 'achieved error (max relative error of length and tension)'"
     echo "set ylabel 'wall time per run [s] (median)'"

@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Runs every command block of the README as written, so that its examples keep working.
+# Runs every command block of the README and of the documentation site's pages (docs/, every
+# page but the generated reports in docs/reports/) as written, so that their examples keep
+# working.
 #   tests/readme_commands.sh SOURCE_DIR MUSCLESIM_BINARY [--with-mpi]
 #
 # What it runs: every fenced block whose info string is `sh`. Other fences (```text,
@@ -28,7 +30,10 @@ source_dir=$(cd "$1" && pwd)
 binary=$(cd "$(dirname "$2")" && pwd)/$(basename "$2")
 with_mpi=no
 [ $# -eq 3 ] && with_mpi=yes
-readme=$source_dir/README.md
+# the README first, then the site's pages in a fixed order; `file NAME` blocks are shared
+documents=(README.md)
+while IFS= read -r page; do documents+=("$page"); done < <(
+  cd "$source_dir" && find docs -name '*.md' -not -path 'docs/reports/*' | LC_ALL=C sort)
 [ -x "$binary" ] || { echo "not an executable: $binary" >&2; exit 2; }
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/readme_commands.XXXXXX")
@@ -40,19 +45,20 @@ ln -s "$binary" "$work/bin/musclesim"
 # of "N first_line last_line needs" lines for the command blocks
 manifest=$work/manifest
 : >"$manifest"
+count=0
+errors=0
+for doc in "${documents[@]}"; do
 line_no=0
 marker=""
 marker_line=0
 in_block=no
-count=0
-errors=0
 while IFS= read -r line || [ -n "$line" ]; do
   line_no=$((line_no + 1))
   if [ "$in_block" = yes ]; then
     if [[ "$line" =~ ^\`\`\`[[:space:]]*$ ]]; then
       in_block=no
       if [ "$kind" = run ]; then
-        echo "$count $first $((line_no - 1)) $needs" >>"$manifest"
+        echo "$count $first $((line_no - 1)) $needs $doc" >>"$manifest"
       fi
     else
       printf '%s\n' "$line" >>"$target"
@@ -79,7 +85,7 @@ while IFS= read -r line || [ -n "$line" ]; do
       file\ *)
         name=${marker#file }
         if [[ ! "$name" =~ ^[A-Za-z0-9_.-]+$ ]]; then
-          echo "README.md:$marker_line: bad file name in marker: $name" >&2
+          echo "$doc:$marker_line: bad file name in marker: $name" >&2
           errors=$((errors + 1))
         else
           target=$work/files/$name
@@ -87,13 +93,13 @@ while IFS= read -r line || [ -n "$line" ]; do
         fi
         info=file ;;
       *)
-        echo "README.md:$marker_line: unknown marker: $marker" >&2
+        echo "$doc:$marker_line: unknown marker: $marker" >&2
         errors=$((errors + 1)) ;;
     esac
     marker=""
     case "$info" in
       "")
-        echo "README.md:$line_no: a fence without an info string (sh to run it, text if not)" >&2
+        echo "$doc:$line_no: a fence without an info string (sh to run it, text if not)" >&2
         errors=$((errors + 1)) ;;
       sh)
         count=$((count + 1))
@@ -105,17 +111,18 @@ while IFS= read -r line || [ -n "$line" ]; do
   fi
   # a marker applies to the fence right below it and to nothing else
   if [ -n "$marker" ]; then
-    echo "README.md:$marker_line: marker not followed by a fence" >&2
+    echo "$doc:$marker_line: marker not followed by a fence" >&2
     errors=$((errors + 1))
     marker=""
   fi
-done <"$readme"
+done <"$source_dir/$doc"
 if [ "$in_block" = yes ]; then
-  echo "README.md:$((first - 1)): a fence that is never closed" >&2
+  echo "$doc:$((first - 1)): a fence that is never closed" >&2
   errors=$((errors + 1))
 fi
+done
 [ "$errors" -eq 0 ] || exit 1
-[ "$count" -gt 0 ] || { echo "README.md: no sh block found" >&2; exit 1; }
+[ "$count" -gt 0 ] || { echo "no sh block found" >&2; exit 1; }
 
 have_gnuplot=no
 command -v gnuplot >/dev/null && have_gnuplot=yes
@@ -123,8 +130,8 @@ command -v gnuplot >/dev/null && have_gnuplot=yes
 # --- run each command block in its own directory
 failed=0
 ran=0
-while read -r n from to needs; do
-  where="README.md lines $from-$to (sh block $n)"
+while read -r n from to needs doc; do
+  where="$doc lines $from-$to (sh block $n)"
   if [ "$needs" = mpi ] && [ "$with_mpi" = no ]; then
     echo "skipped  $where: needs MPI (MUSCLESIM_WITH_MPI=OFF)"
     continue
@@ -153,7 +160,7 @@ while read -r n from to needs; do
     if [ -s "$work/failed_at" ]; then
       at=$(($(cat "$work/failed_at") + from - 2))
       echo "FAILED   $where: line $at exited with $status:"
-      echo "    $(sed -n "${at}p" "$readme")"
+      echo "    $(sed -n "${at}p" "$source_dir/$doc")"
     else
       echo "FAILED   $where: exited with $status (timed out or killed)"
     fi
@@ -162,5 +169,5 @@ while read -r n from to needs; do
   rm -f "$work/failed_at"
 done <"$manifest"
 
-echo "README command blocks: $ran ran, $failed failed, $((count - ran - failed)) skipped"
+echo "README and site command blocks: $ran ran, $failed failed, $((count - ran - failed)) skipped"
 [ "$failed" -eq 0 ]

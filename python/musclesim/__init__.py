@@ -5,6 +5,7 @@ velocity is positive when the actuator shortens. See help() on each function and
 """
 from ._musclesim import *  # noqa: F401,F403
 from ._musclesim import __doc__ as _extension_doc  # noqa: F401
+from ._musclesim import __version__  # noqa: F401
 from .scenario import scenario_from_dict  # noqa: F401,E402
 from .sweeps import sweep  # noqa: F401,E402
 from .tables import table  # noqa: F401,E402

@@ -8,6 +8,8 @@ PYBIND11_MODULE(_musclesim, m) {
       "SI units throughout: lengths in m, speeds in m/s, forces in N, times in s; activations "
       "and excitations in [0, 1]. A shortening velocity v is positive when the actuator "
       "shortens.";
+  // the CMake project's version, as `musclesim --version` prints it
+  m.attr("__version__") = MUSCLESIM_VERSION;
   musclesim::python::BindErrors(m);
   musclesim::python::BindModel(m);
   musclesim::python::BindScenario(m);

@@ -1,5 +1,6 @@
-"""The README's Python examples run as written: every ```python block of README.md is executed
-in a fresh directory holding links to scenarios/ and data/, with matplotlib drawing off-screen."""
+"""The README's and the documentation site's Python examples run as written: every ```python
+block of README.md and of docs/ (but the generated reports) is executed in a fresh directory
+holding links to scenarios/ and data/, with matplotlib drawing off-screen."""
 import os
 import pathlib
 import re
@@ -10,11 +11,15 @@ import pytest
 from conftest import SOURCE
 
 ROOT = SOURCE
-BLOCKS = re.findall(r"```python\n(.*?)```", (ROOT / "README.md").read_text(), re.S)
+DOCUMENTS = [ROOT / "README.md"] + sorted(
+    p for p in (ROOT / "docs").rglob("*.md") if "reports" not in p.relative_to(ROOT).parts)
+BLOCKS = [block for document in DOCUMENTS
+          for block in re.findall(r"```python\n(.*?)```", document.read_text(), re.S)]
 
 
-def test_the_readme_has_python_examples():
-    assert BLOCKS, "README.md has no ```python block"
+def test_the_readme_and_the_site_have_python_examples():
+    assert re.search(r"```python\n", (ROOT / "README.md").read_text()), "README.md: no ```python"
+    assert len(BLOCKS) > 1
 
 
 @pytest.mark.parametrize("code", BLOCKS, ids=[f"block{i}" for i in range(len(BLOCKS))])

@@ -313,7 +313,7 @@ void ExpectRounded(double value, const std::string& printed, const std::string& 
 }
 
 // README "What this shows", synthetic passive data: the numbers quoted from the report's notes
-// and docs/identify_synthetic.yaml, as printed there
+// and docs/reports/identify_synthetic.yaml, as printed there
 TEST(IdentifyReport, ReadmeSlackLengthSyntheticPassive) {
   const auto data = ShippedData("synthetic_passive.csv", "length");
   const PassiveIdentification fit = IdentifyPassive(data);
@@ -387,7 +387,7 @@ TEST(IdentifyReport, ReadmeTableHill) {
   const VelocityIdentification fit = IdentifyVelocity(moving, std::nullopt);
   EXPECT_EQ(fit.best.n, 10);
   EXPECT_NEAR(fit.best.f_iso.value, 312.0, 0.5);  // printed to the newton
-  // with it, n = 3 and f_iso = 108.7 N (docs/identify_hill.yaml): the run-off is the
+  // with it, n = 3 and f_iso = 108.7 N (docs/reports/identify_hill.yaml): the run-off is the
   // missing point's doing
   EXPECT_EQ(IdentifyVelocity(data, std::nullopt).best.n, 3);
 }

@@ -525,14 +525,14 @@ void ExpectReadmeFigure(const std::string& printed, double value, const std::str
   EXPECT_NEAR(value, number, 0.5 * unit + 1e-9 * number) << what << " printed " << printed;
 }
 
-// README "The closed-form fit": the table scripts/preset_fit_table.sh prints. Each row's fit
+// docs/guide/model.md "The closed-form fit": the table scripts/preset_fit_table.sh prints. Each row's fit
 // is run again and its relative residual and max abs error recomputed here independently.
 TEST(GaussianFit, ReadmeTableOfPresetFits) {
-  std::ifstream in(std::string(MUSCLESIM_SOURCE_DIR) + "/README.md");
+  std::ifstream in(std::string(MUSCLESIM_SOURCE_DIR) + "/docs/guide/model.md");
   std::string line;
   while (std::getline(in, line) &&
          line != "| preset | Gaussians | relative residual | max abs error |") {}
-  ASSERT_TRUE(in) << "the README has no table of preset fits";
+  ASSERT_TRUE(in) << "docs/guide/model.md has no table of preset fits";
   std::getline(in, line);  // |---|---|...
   int rows = 0;
   while (std::getline(in, line) && line.rfind("| ", 0) == 0) {
