@@ -151,7 +151,7 @@ while read -r n from to needs doc; do
   } >"$work/blocks/$n.run"
   start=$SECONDS
   if (cd "$dir" && PATH="$work/bin:$PATH" README_TEST_FAILED_AT="$work/failed_at" \
-        timeout 120 bash -e -o pipefail "$work/blocks/$n.run") </dev/null >"$work/log" 2>&1; then
+        timeout 300 bash -e -o pipefail "$work/blocks/$n.run") </dev/null >"$work/log" 2>&1; then
     echo "ok       $where ($((SECONDS - start)) s)"
     ran=$((ran + 1))
   else
