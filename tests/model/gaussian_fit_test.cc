@@ -525,8 +525,8 @@ void ExpectReadmeFigure(const std::string& printed, double value, const std::str
   EXPECT_NEAR(value, number, 0.5 * unit + 1e-9 * number) << what << " printed " << printed;
 }
 
-// docs/guide/model.md "The closed-form fit": the table scripts/preset_fit_table.sh prints. Each row's fit
-// is run again and its relative residual and max abs error recomputed here independently.
+// docs/guide/model.md "The closed-form fit": the table scripts/preset_fit_table.sh prints. Each
+// row's fit is run again and its relative residual and max abs error recomputed here independently.
 TEST(GaussianFit, ReadmeTableOfPresetFits) {
   std::ifstream in(std::string(MUSCLESIM_SOURCE_DIR) + "/docs/guide/model.md");
   std::string line;
