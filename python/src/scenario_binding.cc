@@ -77,7 +77,7 @@ void BindResult(py::module_& m) {
           "('concentric', 'eccentric', 'isometric'), which are NumPy str arrays. With "
           "sensitivities, d_<column>/d_<path> after them.")
       .def_property_readonly(
-          "times", [](const Result& r) { return r.columns[py::str("t")]; },
+          "times", [](const Result& r) -> py::object { return r.columns[py::str("t")]; },
           "columns['t']: the rows' times [s], float64, shape (len(result),).")
       .def_property_readonly(
           "stats", [](const Result& r) { return r.stats; },
@@ -88,7 +88,7 @@ void BindResult(py::module_& m) {
           "each).")
       .def_readonly("run_stats", &Result::run_stats, "The counters as a RunStats.")
       .def_property_readonly(
-          "status", [](const Result& r) { return r.stats["status"]; },
+          "status", [](const Result& r) -> py::str { return r.stats["status"]; },
           "'completed', 'limit' (stopped at a length limit) or 'failed' (the solver failed; "
           "the rows up to the failure are kept).")
       .def("to_dataframe", &ToDataFrame,
@@ -385,8 +385,10 @@ void BindScenarioFunctions(py::module_& m) {
 }  // namespace
 
 void BindScenario(py::module_& m) {
-  BindResult(m);
+  // RunStats before Result, whose run_stats returns one: signatures (and the .pyi stubs made
+  // from them) name the Python type, not the C++ one
   BindSolverTypes(m);
+  BindResult(m);
   BindParameter(m);
   BindScenarioClass(m);
   BindScenarioFunctions(m);
