@@ -17,6 +17,7 @@ packages=(
   clang libclang-rt-14-dev   # scripts/fuzz.sh: libFuzzer, ASan and UBSan runtimes
   libomp-14-dev         # clang's OpenMP, which SUNDIALS' CMake package asks for (the fuzz build)
   clang-format-14       # scripts/format.sh: the code's layout (.clang-format), checked in CI
+  doxygen               # scripts/docs.sh: the C++ API reference of the site (Doxyfile)
   python3-dev pybind11-dev python3-numpy   # the Python module (python/, MUSCLESIM_PYTHON)
   python3-pytest        # its tests
   python3-matplotlib    # the README's Python example plots with it
