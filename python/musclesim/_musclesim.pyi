@@ -5,8 +5,9 @@ from __future__ import annotations
 from musclesim import InputError
 from musclesim import ParameterError
 import numpy
+import numpy.typing
 import typing
-__all__ = ['InputError', 'Model', 'Parameter', 'ParameterError', 'Result', 'RunStats', 'Scenario', 'SeriesIdentification', 'SeriesParameterEstimate', 'SolverOptions', 'Stepper', 'fit_gaussians', 'force_length_preset', 'load_model', 'load_scenario', 'run_many']
+__all__ = ['InputError', 'Model', 'Parameter', 'ParameterError', 'Result', 'RunStats', 'Scenario', 'SeriesIdentification', 'SeriesParameterEstimate', 'SolverOptions', 'Stepper', 'fit_gaussians', 'force_length_preset', 'load_model', 'load_scenario']
 class Model:
     """
     The tension model of one actuator (docs/model.md):
@@ -17,15 +18,18 @@ class Model:
     arguments against each other as NumPy does; it returns float64 arrays of the broadcast shape,
     or a numpy.float64 (a subclass of float) when every argument is a scalar or 0-d. Immutable.
     """
-    def __init__(self, params: dict) -> None:
+    def __init__(self, params: dict[str, typing.Any]) -> None:
         """
-        A model from a dict with the keys of a scenario's `model:` block (README "The model
-        block", docs/model.md): f_iso [N]; passive {k_p [N], alpha [1/m], slack_length [m]};
-        active_length {optimal_range [l1, l2] [m], sigma (optional), and gaussians [{amplitude,
-        width, center}] or fit {count, target, ...}}; velocity {v_max [m/s], n, epsilon [m/s],
-        eccentric {v_max, n, limit} (optional)}. The block is read by the same reader as a file
-        (the dict is written as JSON, which is YAML): the same rules, and the same error, naming
-        "<model dict>:line:column" and the key path, for a value that breaks one.
+        A model from a dict with the keys of a scenario's `model:` block (docs/guide/model.md,
+        docs/model.md): f_iso [N]; passive {k_p [N], alpha [1/m], slack_length [m]}; active_length
+        {optimal_range [l1, l2] [m], sigma (optional), and gaussians [{amplitude, width, center}] or
+        fit {count, target, ...}}; velocity {v_max [m/s], n, epsilon [m/s], eccentric {v_max, n,
+        limit} (optional)}. The dict is read by the same reader as a file, as a document in memory
+        (no text in between; NumPy numbers and arrays as Python numbers and lists): the same rules,
+        and an InputError for a value that breaks one, naming the key path and "<model dict>" in
+        place of the file (a dict has no lines: location None), e.g. "model.passive.k_p = abc
+        (<model dict>): must be a number". A value of a type no file holds (not a number, bool, str,
+        None, list or dict) is a TypeError naming its key path.
         """
     def __repr__(self) -> str:
         ...
@@ -53,7 +57,7 @@ class Model:
         """
         Total tension T [N] at length x [m], shortening velocity v [m/s] (> 0 shortening) and activation u [-] in [0, 1] (ParameterError outside, NaN included).
         """
-    def tension_parts(self, x: typing.Any, v: typing.Any, u: typing.Any) -> dict:
+    def tension_parts(self, x: typing.Any, v: typing.Any, u: typing.Any) -> dict[str, typing.Any]:
         """
         The tension and its parts at (x [m], v [m/s], u [-]), as a dict of arrays:
         total T [N], passive T_p [N], active T_a = u f_iso f_L g [N], d_length dT/dx [N/m],
@@ -62,7 +66,7 @@ class Model:
         passive slope is the left one (0).
         """
     @property
-    def fit_result(self) -> typing.Any:
+    def fit_result(self) -> dict[str, typing.Any] | None:
         """
         The fit the block asked for (a dict as fit_gaussians returns), or None when the block gave its Gaussians.
         """
@@ -72,7 +76,7 @@ class Model:
         Where f_L peaks on optimal_range [m] (f_L = 1 there).
         """
     @property
-    def params(self) -> dict:
+    def params(self) -> dict[str, typing.Any]:
         """
         The parameters as a dict with the `model:` block's keys (units as there), the Gaussians always explicit (a fit's result in its place): Model(model.params) is the same model.
         """
@@ -99,11 +103,11 @@ class Result:
     """
     One run's trajectory and solver counters, as `musclesim run` writes them (its CSV and its --stats JSON), recorded straight into NumPy arrays. Rows are the output grid's times (output.interval) or every internal step (interval: steps). SI units: t in s, lengths and positions in m, velocities in m/s (shortening_velocity positive when the actuator shortens), tensions and loads in N, activations and excitations in [0, 1].
     """
-    def __getitem__(self, column: str) -> typing.Any:
+    def __getitem__(self, column: str) -> numpy.typing.NDArray[typing.Any]:
         """
         result['column'] is result.columns['column'].
         """
-    def __getstate__(self) -> tuple:
+    def __getstate__(self) -> tuple[typing.Any, ...]:
         ...
     def __len__(self) -> int:
         """
@@ -111,14 +115,14 @@ class Result:
         """
     def __repr__(self) -> str:
         ...
-    def __setstate__(self, arg0: tuple) -> None:
+    def __setstate__(self, arg0: tuple[typing.Any, ...]) -> None:
         ...
     def to_dataframe(self) -> typing.Any:
         """
         The columns as a pandas.DataFrame (pandas imported only here; ImportError naming python3-pandas if it is missing).
         """
     @property
-    def columns(self) -> dict:
+    def columns(self) -> dict[str, numpy.typing.NDArray[typing.Any]]:
         """
         dict {name: 1-D NumPy array of len(result)}, exactly the CLI CSV's columns in its order: float64, except the text columns `phase` and `<actuator>.phase` ('concentric', 'eccentric', 'isometric'), which are NumPy str arrays. With sensitivities, d_<column>/d_<path> after them.
         """
@@ -128,7 +132,7 @@ class Result:
         The counters as a RunStats.
         """
     @property
-    def stats(self) -> dict:
+    def stats(self) -> dict[str, typing.Any]:
         """
         dict of the run's counters, as `musclesim run --stats` writes them: steps, rhs_evals, jac_evals, linear_setups, newton_iters, newton_conv_fails, error_test_fails, wall_seconds [s], final_time [s], linear_solver, status, message (and with sensitivities their counters and `sensitivities`, one {path, derivative} each).
         """
@@ -138,7 +142,7 @@ class Result:
         'completed', 'limit' (stopped at a length limit) or 'failed' (the solver failed; the rows up to the failure are kept).
         """
     @property
-    def times(self) -> typing.Any:
+    def times(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         columns['t']: the rows' times [s], float64, shape (len(result),).
         """
@@ -146,9 +150,9 @@ class RunStats:
     """
     A run's solver counters (Result.run_stats; the same as the dict Result.stats): steps, rhs_evals, jac_evals, linear_setups, newton_iters, newton_conv_fails, error_test_fails, wall_seconds [s], final_time [s], linear_solver, status, message.
     """
-    def __getstate__(self) -> tuple:
+    def __getstate__(self) -> tuple[typing.Any, ...]:
         ...
-    def __setstate__(self, arg0: tuple) -> None:
+    def __setstate__(self, arg0: tuple[typing.Any, ...]) -> None:
         ...
     @property
     def error_test_fails(self) -> int:
@@ -212,17 +216,17 @@ class RunStats:
         """
 class Scenario:
     """
-    A validated scenario in memory (a single actuator, or a network on a line, README "Scenario files"), read from a file or a dict, with the values set() since. SI units as in the files.
+    A validated scenario in memory (a single actuator, docs/guide/scenarios.md, or a network on a line, docs/guide/networks.md), read from a file or a dict, with the values set() since. SI units as in the files.
     """
     def __copy__(self) -> Scenario:
         ...
     def __deepcopy__(self, memo: typing.Any) -> Scenario:
         ...
-    def __getstate__(self) -> tuple:
+    def __getstate__(self) -> tuple[typing.Any, ...]:
         ...
     def __repr__(self) -> str:
         ...
-    def __setstate__(self, arg0: tuple) -> None:
+    def __setstate__(self, arg0: tuple[typing.Any, ...]) -> None:
         ...
     def copy(self) -> Scenario:
         """
@@ -276,7 +280,7 @@ class Scenario:
         """
 class SeriesIdentification:
     """
-    The result of identify_series: a weighted least-squares fit of scenario parameters to measured time series (or, with design=True, the experiment's check at the start values), with what the Jacobian of forward sensitivities says about the parameters: standard errors, correlations, the singular values of the scaled sensitivity matrix and a verdict. As `musclesim identify DATA.yaml` (README "From time series"). Values in the units of the scenario's parameters and of the measured columns (SI: m, m/s, N, s).
+    The result of identify_series: a weighted least-squares fit of scenario parameters to measured time series (or, with design=True, the experiment's check at the start values), with what the Jacobian of forward sensitivities says about the parameters: standard errors, correlations, the singular values of the scaled sensitivity matrix and a verdict. As `musclesim identify DATA.yaml` (docs/guide/identification.md, "From time series"). Values in the units of the scenario's parameters and of the measured columns (SI: m, m/s, N, s).
     """
     def __repr__(self) -> str:
         ...
@@ -286,7 +290,7 @@ class SeriesIdentification:
         Whether the fit converged (True for the design). A fit that did not is returned with its last point and a RuntimeWarning.
         """
     @property
-    def correlation(self) -> numpy.ndarray[numpy.float64]:
+    def correlation(self) -> numpy.ndarray[typing.Any, numpy.dtype[numpy.float64]]:
         """
         P x P float64 array of the estimates' correlations [-]; NaN in the row and column of a parameter the experiment does not determine.
         """
@@ -301,7 +305,7 @@ class SeriesIdentification:
         True for the design check (no fit: the start values, Cramer-Rao standard errors).
         """
     @property
-    def estimates(self) -> dict:
+    def estimates(self) -> dict[str, float]:
         """
         dict {path: estimate} in the parameters' order and units (the design: the starts).
         """
@@ -331,7 +335,7 @@ class SeriesIdentification:
         Markdown, as `musclesim identify --report` (a fit) or `--design` writes it.
         """
     @property
-    def residuals(self) -> dict:
+    def residuals(self) -> dict[str, numpy.typing.NDArray[typing.Any]]:
         """
         dict of 1-D arrays, one entry per measured value (the columns of `musclesim identify --residuals`): series (int64, the index in `series`), output (str, the column), t [s], measured, model, residual (measured - model) [the column's unit], standardised (residual / noise, or / s without noise levels) [-]. Empty for the design.
         """
@@ -341,7 +345,7 @@ class SeriesIdentification:
         The estimated Scenario (the given one with 'path=estimate' overrides after its own), ready to run(); None for the design.
         """
     @property
-    def singular_values(self) -> numpy.ndarray[numpy.float64]:
+    def singular_values(self) -> numpy.ndarray[typing.Any, numpy.dtype[numpy.float64]]:
         """
         The singular values of the scaled sensitivity matrix (each column the outputs' change, in noise standard deviations, for a relative change of its parameter), descending, float64 [-].
         """
@@ -371,7 +375,7 @@ class SeriesIdentification:
         The warnings identify_series issued (a fit that did not converge, weighted residuals far above the stated noise), as texts; [] when none.
         """
     @property
-    def weak_directions(self) -> list:
+    def weak_directions(self) -> list[dict[str, typing.Any]]:
         """
         The combinations the experiment does not determine: a list of dicts {ratio: its singular value over the largest [-], components: float64 array, one per parameter, unit length, relative changes d p_j / |p_j| that leave the outputs unchanged}.
         """
@@ -493,11 +497,11 @@ class Stepper:
         """
         Integrates from `time` to `t` [s] (GIL released) and returns "completed" (time is then t), "limit" (a length limit was reached; no further advance) or "failed" (see `message`). Raises ValueError unless t is finite and after time.
         """
-    def advance_each(self, times: numpy.ndarray[numpy.float64]) -> str:
+    def advance_each(self, times: numpy.ndarray[typing.Any, numpy.dtype[numpy.float64]]) -> str:
         """
         advance(t) for every t of the 1-D array `times` [s], looped in C++ with the GIL released; stops at the first that does not complete and returns its status.
         """
-    def sample(self) -> dict:
+    def sample(self) -> dict[str, float]:
         """
         What the network CSV would record at `time`: a dict {column: float} with the CSV's column names (t, <node>.position, <node>.velocity, <element>.length, <element>.tension, <actuator>.shortening_velocity, .activation, .excitation, .tension_passive, .tension_active, <node>.load, <controller>.reference, .measured, .error, .output), without the text column <actuator>.phase.
         """
@@ -506,7 +510,7 @@ class Stepper:
         Holds the activation of `actuator` (with activation dynamics, its excitation) at `u` in [0, 1] from `time` on (zero-order hold); the next advance restarts the integrator. Raises ValueError for an unknown name, a non-actuator, an actuator a controller drives, or u outside [0, 1].
         """
     @property
-    def columns(self) -> list:
+    def columns(self) -> list[str]:
         """
         The keys of sample() after "t", in the CSV's order.
         """
@@ -516,12 +520,12 @@ class Stepper:
         Why the last advance ended early (empty if it completed).
         """
     @property
-    def state(self) -> numpy.ndarray[numpy.float64]:
+    def state(self) -> numpy.ndarray[typing.Any, numpy.dtype[numpy.float64]]:
         """
         A copy of the state y(time) as a 1-D float64 array, in the network's state order (positions [m] and velocities [m/s] of the free nodes, then activations of actuators with dynamics).
         """
     @property
-    def stats(self) -> dict:
+    def stats(self) -> dict[str, typing.Any]:
         """
         Solver counters summed over every advance (steps, rhs_evals, ...), wall_seconds [s], final_time [s], status and message.
         """
@@ -534,7 +538,7 @@ def _cpp_run_seconds(scenario: Scenario, repeats: int) -> list[float]:
     """
     The reference for Scenario.run()'s overhead (bench/python_run_overhead.py): the same run, recorded in memory by C++ alone `repeats` times; each one's wall time [s].
     """
-def _identify_curves(passive: typing.Any, active: typing.Any, velocity: typing.Any, active_count: int, nonnegative: bool, f_iso: float | None, report: bool, source: str) -> dict:
+def _identify_curves(passive: typing.Any, active: typing.Any, velocity: typing.Any, active_count: int, nonnegative: bool, f_iso: float | None, report: bool, source: str) -> dict[str, typing.Any]:
     """
     The engine of musclesim.identify_curves (use that): each curve None or a pair of 1-d
     arrays (x, tension), x a length [m] (passive, active) or a shortening velocity [m/s]
@@ -544,21 +548,25 @@ def _identify_curves(passive: typing.Any, active: typing.Any, velocity: typing.A
     musclesim.Model), passive, active, velocity (the estimates, or None) and report (the
     Markdown of --report, or None). Raises InputError naming the argument and row for bad data.
     """
-def _identify_series(scenario: typing.Any, spec: typing.Any, spec_name: str, series: list, design: bool, max_evaluations: int) -> SeriesIdentification:
+def _identify_series(scenario: typing.Any, spec: typing.Any, spec_name: str, series: list[typing.Any], design: bool, max_evaluations: int) -> SeriesIdentification:
     """
     identify_series's C++ half: `spec` a data file's keys as a dict without csv keys (messages name it `spec_name`), `series` one list of (column, array) pairs per entry of its series. identify_series is the public way.
     """
-def _plot_columns(names: list[str], columns: list, output: str, title: str, width: int, height: int, x: str | None, y: str | None, color: str | None, script: str | None) -> None:
+def _plot_columns(names: list[str], columns: list[typing.Any], output: str, title: str, width: int, height: int, x: str | None, y: str | None, color: str | None, script: str | None) -> None:
     """
     The figure `musclesim plot` draws of a CSV with these columns (each a 1-D float64 array or a list of str), with the GIL released: with x a sweep summary's, else a residual table's, a network trajectory's or a trajectory's. musclesim.plot is the public way.
     """
-def _plot_model(params: dict, output: str, title: str, width: int, height: int, script: str | None) -> None:
+def _plot_model(params: dict[str, typing.Any], output: str, title: str, width: int, height: int, script: str | None) -> None:
     """
     The curves figure (`musclesim plot --curves`) of the model block given as a dict, with the GIL released. musclesim.plot is the public way.
     """
 def _require(condition: bool, path: str, value: float, rule: str) -> None:
     """
     The library's Require: raises ParameterError(path, value, rule) unless `condition`.
+    """
+def _run_many(jobs: list[typing.Any], threads: int, sensitivities: list[str]) -> list[Result]:
+    """
+    run_many's C++ half: every job, a Scenario or a (path, overrides) pair (overrides: None, a list of "key=value" strings as --set takes them, or a dict), run on `threads` C++ threads (0: every core) with the GIL released, each recorded in memory; one Result per job, in order. A bad job raises (the first in the list's order) after every job has run. musclesim.run_many is the public way.
     """
 def _scenario_from_dict(dict: typing.Any, name: str) -> Scenario:
     """
@@ -568,7 +576,7 @@ def _sweep(spec: typing.Any, threads: int, output: typing.Any, resume: bool, nam
     """
     Runs the sweep `spec` (a sweep file's path, or a dict of its keys whose base may be a Scenario) as `musclesim sweep` does (threads 0: every core), GIL released, Ctrl-C stopping it. With `output`, the summary is that file (and `resume` continues an interrupted one) and None is returned; without, it is kept in memory and returned as (header, columns). musclesim.sweep() makes the structured array.
     """
-def fit_gaussians(x: typing.Any = None, f: typing.Any = None, n: int = 3, *, target: str | None = None, preset: str | None = None, optimal_length: float = 1.0, optimal_range: tuple[float, float] | None = None, sigma: float = 1.0, nonnegative: bool = False, widths: typing.Any = None, centers: typing.Any = None) -> dict:
+def fit_gaussians(x: typing.Any = None, f: typing.Any = None, n: int = 3, *, target: str | None = None, preset: str | None = None, optimal_length: float = 1.0, optimal_range: tuple[float, float] | None = None, sigma: float = 1.0, nonnegative: bool = False, widths: typing.Any = None, centers: typing.Any = None) -> dict[str, typing.Any]:
     """
     Least-squares fit of n Gaussians (1..12) to a force-length target (docs/model.md
     section 3.2; the `fit:` block of a model). Each component is
@@ -600,7 +608,7 @@ def force_length_preset(preset: str, x: typing.Any, optimal_length: float = 1.0)
     A standard active force-length curve f_L [-] at lengths x [m], scaled so that its peak
     is 1 at `optimal_length` [m] (default 1: x is then the normalised length l / L), as `musclesim
     curves --preset NAME` tabulates it: preset degroote2016, thelen2003, gordon1966 or mujoco
-    (README "The closed-form fit"). fit_gaussians(preset=...) fits Gaussians to it.
+    (docs/guide/model.md, "Standard curves"). fit_gaussians(preset=...) fits Gaussians to it.
     """
 def load_model(path: typing.Any) -> Model:
     """
@@ -611,9 +619,5 @@ def load_model(path: typing.Any) -> Model:
 def load_scenario(path: typing.Any, set: typing.Any = None) -> Scenario:
     """
     Reads and validates the scenario file `path` (single actuator or network), applying `set` first: a list of 'key=value' texts as `musclesim run --set` takes them, or a dict {key: value}. InputError (with .key and .location 'file:line:column') for bad input.
-    """
-def run_many(jobs: list, threads: int = 0, sensitivities: list[str] = []) -> list:
-    """
-    Runs every job, a Scenario or a (path, overrides) pair (overrides: None, a list of "key=value" strings as --set takes them, or a dict), on `threads` C++ threads (0: every core) with the GIL released, each run recorded in memory. Returns, in the jobs' order, one Result each, as Scenario.run() gives: .columns exactly `musclesim run`'s CSV columns (float64; the phase columns str), .stats its --stats dict, .status 'completed', 'limit' or 'failed'; `sensitivities` (dotted paths) adds the d_<column>/d_<path> columns to every run, as Scenario.run does. SI units. A bad job raises (the first in the list's order) after every job has run; musclesim.table() stacks the results into one structured array.
     """
 __version__: str = '0.2.0'

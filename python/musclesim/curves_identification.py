@@ -1,20 +1,32 @@
 """Identification from measured curves: `musclesim identify DATA.yaml` on arrays.
 
-The same checks, fits, `model:` block and report as the command (README "Identification:
-`musclesim identify`"), with the curves given as arrays rather than as CSV files. SI units:
-lengths in m, shortening velocities in m/s (> 0 when the actuator shortens), tensions in N.
+The same checks, fits, `model:` block and report as the command
+(docs/guide/identification.md), with the curves given as arrays rather than as CSV files. SI
+units: lengths in m, shortening velocities in m/s (> 0 when the actuator shortens), tensions
+in N.
 """
+from __future__ import annotations
+
 import numbers as _numbers
+from typing import Any, Mapping, NoReturn, Tuple, Union
 
 import numpy as _np
+import numpy.typing as _npt
 
-from ._musclesim import InputError, Model
+from ._errors import InputError
+from ._musclesim import Model
 from ._musclesim import _identify_curves
+from ._types import ColumnTable as _ColumnTable
 
 __all__ = ["identify_curves", "CurvesIdentification"]
 
 # The arguments an error on them is keyed by.
 _ARGUMENTS = ("passive", "active", "velocity", "active_count", "f_iso")
+
+# A measured curve: a pair (x, tension) of 1-d array-likes, or a dict or DataFrame of columns.
+_Curve = Union[Tuple[_npt.ArrayLike, _npt.ArrayLike], _ColumnTable]
+# A curve as _identify_curves takes it.
+_Columns = Tuple[_npt.NDArray[_np.float64], _npt.NDArray[_np.float64]]
 
 # The columns a curve's CSV holds, which a dict or DataFrame names alike.
 _COLUMNS = {
@@ -24,27 +36,29 @@ _COLUMNS = {
 }
 
 
-def _columns(argument, curve):
+def _columns(argument: str, curve: _Curve | None) -> _Columns | None:
     """(x, tension) of one curve as float64 arrays, from a pair or a dict / DataFrame."""
     if curve is None:
         return None
     x_name, y_name = _COLUMNS[argument]
-    if hasattr(curve, "keys"):  # a dict or a pandas DataFrame: the CSV's column names
-        missing = [name for name in (x_name, y_name) if name not in curve.keys()]
+    given: Any = curve  # whatever it is, checked here
+    if hasattr(given, "keys"):  # a dict or a pandas DataFrame: the CSV's column names
+        missing = [name for name in (x_name, y_name) if name not in given.keys()]
         if missing:
             raise InputError(f"{argument}: no column {', '.join(missing)}: a dict or DataFrame "
                              f"needs columns {x_name},{y_name}")
-        x, tension = curve[x_name], curve[y_name]
+        x, tension = given[x_name], given[y_name]
     else:
         try:
-            x, tension = curve
+            x, tension = given
         except (TypeError, ValueError):
             raise InputError(f"{argument}: give a pair ({x_name}, tension) of 1-d arrays, or a "
                              f"dict or DataFrame with columns {x_name},{y_name}") from None
     return (_as_column(argument, x_name, x), _as_column(argument, y_name, tension))
 
 
-def _as_column(argument, name, values):
+def _as_column(argument: str, name: str,
+               values: _npt.ArrayLike) -> _npt.NDArray[_np.float64]:
     try:
         array = _np.asarray(values, dtype=_np.float64)
     except (TypeError, ValueError) as error:
@@ -91,24 +105,33 @@ class CurvesIdentification:
     """
 
     __slots__ = ("model_yaml", "model", "params", "passive", "active", "velocity", "report")
+    model_yaml: str
+    model: Model
+    params: dict[str, Any]
+    passive: dict[str, Any] | None
+    active: dict[str, Any] | None
+    velocity: dict[str, Any] | None
+    report: str | None
 
-    def __init__(self, found):
+    def __init__(self, found: Mapping[str, Any]) -> None:
         values = dict(found)
         object.__setattr__(self, "model", Model(values.pop("params")))
         object.__setattr__(self, "params", self.model.params)
         for name in ("model_yaml", "passive", "active", "velocity", "report"):
             object.__setattr__(self, name, values[name])
 
-    def __setattr__(self, name, value):
+    def __setattr__(self, name: str, value: object) -> NoReturn:
         raise AttributeError("CurvesIdentification is read-only")
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         fitted = [name for name in ("passive", "active", "velocity") if getattr(self, name)]
         return f"<musclesim.CurvesIdentification of {', '.join(fitted)}>"
 
 
-def identify_curves(passive=None, active=None, velocity=None, active_count=3, nonnegative=False,
-                    f_iso=None, report=False, *, source="Python arrays"):
+def identify_curves(passive: _Curve | None = None, active: _Curve | None = None,
+                    velocity: _Curve | None = None, active_count: int = 3,
+                    nonnegative: bool = False, f_iso: float | None = None, report: bool = False,
+                    *, source: str = "Python arrays") -> CurvesIdentification:
     """The model's parameters fitted to measured curves, as `musclesim identify DATA.yaml`.
 
     Each curve is a pair (x, tension) of 1-d array-likes of equal length, or a dict or pandas

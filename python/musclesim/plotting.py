@@ -4,18 +4,26 @@ plot() picks the figure from the data's type and hands its columns to the librar
 builders as the table the CLI would read from their CSV: numbers as float64 (the CLI's CSV
 prints 17 significant digits, which read back to the same double), text columns as text.
 """
+from __future__ import annotations
+
 import operator as _operator
 import os as _os
+from typing import Any, Iterable, List, Union
 
 import numpy as _np
+import numpy.typing as _npt
 
 from . import _musclesim
-from ._musclesim import InputError as _InputError
+from ._errors import InputError as _InputError
+from ._types import PathLike as _PathLike
+
+# A column as _plot_columns takes it.
+_Column = Union[_npt.NDArray[_np.float64], List[str]]
 
 __all__ = ["plot"]
 
 
-def _column(name, values):
+def _column(name: str, values: _npt.ArrayLike) -> _Column:
     """One column as _plot_columns takes it: a 1-D float64 array, or a list of str."""
     array = _np.asarray(values)
     if array.ndim != 1:
@@ -27,11 +35,12 @@ def _column(name, values):
     if kind in "iu":  # counts (index, steps, series) exactly as the CLI prints them
         return [str(v) for v in array.tolist()]
     if kind == "U":
-        return array.tolist()
+        texts: list[str] = array.tolist()
+        return texts
     if kind == "S":
         return [v.decode("utf-8") for v in array.tolist()]
     if kind == "O":  # pandas' text columns, or Python numbers
-        items = array.tolist()
+        items: list[Any] = array.tolist()
         if all(isinstance(v, str) for v in items):
             return items
         try:
@@ -42,8 +51,9 @@ def _column(name, values):
                       % (name, array.dtype))
 
 
-def _columns(data):
+def _columns(data: object) -> tuple[list[str], list[_Column]] | None:
     """(names, columns) of a table-like `data`, or None for another type."""
+    pairs: Iterable[tuple[Any, Any]]
     if isinstance(data, _musclesim.Result):
         pairs = data.columns.items()
     elif isinstance(data, _musclesim.SeriesIdentification):
@@ -51,17 +61,19 @@ def _columns(data):
     elif isinstance(data, _np.ndarray) and data.dtype.names:
         pairs = ((name, data[name]) for name in data.dtype.names)
     elif hasattr(data, "keys") and hasattr(data, "__getitem__"):  # dict, DataFrame, mapping
-        pairs = ((key, data[key]) for key in data.keys())
+        table: Any = data
+        pairs = ((key, table[key]) for key in table.keys())
     else:
         return None
-    names, columns = [], []
+    names: list[str] = []
+    columns: list[_Column] = []
     for key, values in pairs:
         names.append(str(key))
         columns.append(_column(str(key), values))
     return names, columns
 
 
-def _pixels(size):
+def _pixels(size: tuple[int, int]) -> tuple[int, int]:
     try:
         width, height = size
         width, height = _operator.index(width), _operator.index(height)
@@ -74,7 +86,9 @@ def _pixels(size):
     return width, height
 
 
-def plot(data, output, title=None, size=(1000, 750), x=None, y=None, color=None, script=None):
+def plot(data: object, output: _PathLike, title: str | None = None,
+         size: tuple[int, int] = (1000, 750), x: str | None = None, y: str | None = None,
+         color: str | None = None, script: _PathLike | None = None) -> str:
     """Draws the figure `musclesim plot` draws of `data`, with gnuplot, to `output`.
 
     No CSV file and no subprocess of the CLI: the data's columns go to the library's script

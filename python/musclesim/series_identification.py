@@ -1,13 +1,18 @@
 """Identification of a scenario's parameters from measured time series, in memory.
 
-What `musclesim identify DATA.yaml` does for a data file with a `scenario:` key (README "From
-time series"), with the data file's parts given as Python values: the arguments are read by
-the data file's own reader as a document in memory, so the same rules and messages apply
-(key paths such as "parameters[0].bounds", the place "identify_series").
+What `musclesim identify DATA.yaml` does for a data file with a `scenario:` key
+(docs/guide/identification.md, "From time series"), with the data file's parts given as Python
+values: the arguments are read by the data file's own reader as a document in memory, so the
+same rules and messages apply (key paths such as "parameters[0].bounds", the place
+"identify_series").
 """
+from __future__ import annotations
+
 import warnings as _warnings
+from typing import Any, Iterable, Mapping
 
 from . import _musclesim
+from ._types import ColumnTable as _ColumnTable
 
 __all__ = ["identify_series"]
 
@@ -15,13 +20,15 @@ __all__ = ["identify_series"]
 _SPEC_NAME = "identify_series"
 
 
-def _series_entry(index, given):
+def _series_entry(index: int,
+                  given: _ColumnTable) -> tuple[dict[str, Any], list[tuple[str, Any]]]:
     """The data file's entry of one series (its noise levels) and its (column, values) pairs."""
     if not hasattr(given, "keys") or isinstance(given, (str, bytes)):
         raise TypeError("series[%d] must be a dict (or a pandas DataFrame) of 1-D arrays keyed "
                         "by column name, with 't' among them, not %s"
                         % (index, type(given).__name__))
-    entry, columns = {}, []
+    entry: dict[str, Any] = {}
+    columns: list[tuple[str, Any]] = []
     for key in given.keys():
         if key == "noise":
             entry["noise"] = given[key]
@@ -30,7 +37,9 @@ def _series_entry(index, given):
     return entry, columns
 
 
-def identify_series(scenario, series, parameters, design=False, max_evaluations=200):
+def identify_series(scenario: _musclesim.Scenario, series: Iterable[_ColumnTable],
+                    parameters: Iterable[str | Mapping[str, Any]], design: bool = False,
+                    max_evaluations: int = 200) -> _musclesim.SeriesIdentification:
     """Estimates scenario parameters from measured time series, or checks the experiment.
 
     As `musclesim identify DATA.yaml [--design]` for a data file with a `scenario:` key, with
@@ -75,7 +84,8 @@ def identify_series(scenario, series, parameters, design=False, max_evaluations=
     if isinstance(parameters, (str, bytes)) or hasattr(parameters, "keys"):
         raise TypeError("parameters must be a list of paths or {path, start, bounds} dicts, "
                         "not one; write [parameter] for a single one")
-    entries, columns = [], []
+    entries: list[dict[str, Any]] = []
+    columns: list[list[tuple[str, Any]]] = []
     for index, given in enumerate(series):
         entry, pairs = _series_entry(index, given)
         entries.append(entry)

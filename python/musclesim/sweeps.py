@@ -1,10 +1,15 @@
 """Sweeps from Python: musclesim.sweep runs a sweep file or dict, its summary as a table."""
+from __future__ import annotations
+
 import csv
 import os
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from ._musclesim import _sweep
+from ._types import PathLike
 from .tables import structured
 
 # summary columns that are counts rather than measurements
@@ -13,7 +18,7 @@ _INTEGER_COLUMNS = ("index", "steps", "rhs_evals")
 _TEXT_COLUMNS = ("status", "message")
 
 
-def _column_array(name, texts):
+def _column_array(name: str, texts: list[str]) -> npt.NDArray[Any]:
     if name in _TEXT_COLUMNS:
         return np.array(texts, dtype=object)
     if name in _INTEGER_COLUMNS:
@@ -25,7 +30,7 @@ def _column_array(name, texts):
         return np.array(texts, dtype=object)
 
 
-def _read_summary(path):
+def _read_summary(path: str) -> tuple[list[str], list[npt.NDArray[Any]]]:
     """The summary CSV the sweep wrote where it was asked to, as columns."""
     with open(path, newline="") as file:
         rows = list(csv.reader(file))
@@ -34,8 +39,9 @@ def _read_summary(path):
                     for c, column in enumerate(header)]
 
 
-def sweep(spec, threads=0, output=None, resume=False, name="<dict>"):
-    """Runs a sweep (README "Sweeps") with the GIL released and returns its summary.
+def sweep(spec: PathLike | dict[str, Any], threads: int = 0, output: PathLike | None = None,
+          resume: bool = False, name: str = "<dict>") -> npt.NDArray[np.void]:
+    """Runs a sweep (docs/guide/sweeps.md) with the GIL released and returns its summary.
 
     `spec` is a sweep file's path, or a dict with a sweep file's keys (base, mode, parameters,
     metrics, metric_options, trajectories, ...) read by the same reader as a document in

@@ -1,13 +1,22 @@
 """Results as one NumPy structured array (pandas.DataFrame(array) makes a DataFrame of it)."""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any, Iterable, Sequence
+
 import numpy as np
+import numpy.typing as npt
+
+if TYPE_CHECKING:
+    from ._musclesim import Result
 
 __all__ = ["table"]
 
 
-def structured(names, columns):
+def structured(names: Sequence[str],
+               columns: Sequence[npt.NDArray[Any]]) -> npt.NDArray[np.void]:
     """A structured array of len(columns[0]) records from 1-D arrays named `names`; a str
     column gets the width of its longest value."""
-    fields = []
+    fields: list[tuple[str, Any]] = []
     for name, values in zip(names, columns):
         values = np.asarray(values)
         if values.dtype.kind in "OU":
@@ -22,7 +31,7 @@ def structured(names, columns):
     return array
 
 
-def table(results):
+def table(results: Iterable[Result]) -> npt.NDArray[np.void]:
     """The trajectories of run_many's (or Scenario.run's) Results stacked into one NumPy
     structured array, one record per row of each run: the field `job` (int64, the result's
     index in `results`), then every column of the runs (the first run's order, then any new
@@ -34,7 +43,8 @@ def table(results):
         raise TypeError("table(results): results must be an iterable of musclesim.Result, "
                         "not %s" % type(results).__name__)
     results = list(results)
-    names, text = [], {}
+    names: list[str] = []
+    text: dict[str, bool] = {}
     for k, result in enumerate(results):
         if not isinstance(result, Result):
             raise TypeError("table(results): results[%d] is %s, not a musclesim.Result "
@@ -45,9 +55,9 @@ def table(results):
                 text[name] = np.asarray(values).dtype.kind in "OU"
     job = np.concatenate([np.full(len(r), k, dtype=np.int64) for k, r in enumerate(results)]
                          or [np.empty(0, dtype=np.int64)])
-    columns = []
+    columns: list[npt.NDArray[Any]] = []
     for name in names:
-        parts = []
+        parts: list[npt.NDArray[Any]] = []
         for result in results:
             if name in result.columns:
                 parts.append(np.asarray(result.columns[name]))

@@ -1,5 +1,6 @@
-// musclesim.InputError and musclesim.ParameterError: the library's exceptions raised in
-// Python with their message, plus the parts a program wants without parsing it.
+// musclesim.InputError and musclesim.ParameterError (musclesim/_errors.py): the library's
+// exceptions raised in Python with their message, plus the parts a program wants without
+// parsing it.
 #include <regex>
 #include <optional>
 #include <string>
@@ -13,7 +14,7 @@ namespace musclesim::python {
 
 namespace {
 
-// The Python types, made once by BindErrors and kept for the interpreter's life.
+// The Python types, looked up once by BindErrors and kept for the interpreter's life.
 PyObject* input_error_type = nullptr;
 PyObject* parameter_error_type = nullptr;
 
@@ -84,35 +85,11 @@ void RaiseParameterError(const ParameterError& e) {
 }  // namespace
 
 void BindErrors(py::module_& m) {
-  input_error_type = PyErr_NewExceptionWithDoc(
-      "musclesim.InputError",
-      "Invalid input (a scenario file, a dict, an override), with a complete message naming "
-      "the key path, the value, where it was given and the rule broken.\n\n"
-      "Attributes:\n"
-      "  key: the dotted key path, e.g. 'elements[0].activation' or 'load[0].value', or None "
-      "when the message names none (a file that cannot be read).\n"
-      "  location: 'file:line:column' (1-based) where the value was written, or None (a "
-      "value given by set() or an override, or no position known). A scenario made by "
-      "scenario_from_dict names its file '<dict>'.",
-      PyExc_Exception, nullptr);
-  parameter_error_type = PyErr_NewExceptionWithDoc(
-      "musclesim.ParameterError",
-      "A parameter value that breaks a rule (a ValueError).\n\n"
-      "Attributes:\n"
-      "  path: the parameter's dotted path inside the block validated, e.g. 'velocity.n'.\n"
-      "  value: the value as text.\n"
-      "  rule: the rule it breaks, e.g. 'must be an integer >= 1'.",
-      PyExc_ValueError, nullptr);
-  if (input_error_type == nullptr || parameter_error_type == nullptr) {
-    throw py::error_already_set();
-  }
-  // instances made in Python (raise InputError("...")) have the attributes too
-  for (const char* name : {"key", "location"}) {
-    PyObject_SetAttrString(input_error_type, name, Py_None);
-  }
-  for (const char* name : {"path", "value", "rule"}) {
-    PyObject_SetAttrString(parameter_error_type, name, Py_None);
-  }
+  // Python classes (musclesim/_errors.py, with their docstrings and attributes), so that the
+  // type stubs describe them
+  const py::module_ errors = py::module_::import("musclesim._errors");
+  input_error_type = py::object(errors.attr("InputError")).release().ptr();
+  parameter_error_type = py::object(errors.attr("ParameterError")).release().ptr();
   m.add_object("InputError", py::reinterpret_borrow<py::object>(input_error_type));
   m.add_object("ParameterError", py::reinterpret_borrow<py::object>(parameter_error_type));
 

@@ -21,6 +21,7 @@
 #include "musclesim/identify/identify.h"
 #include "musclesim/identify/identify_comparisons.h"
 #include "musclesim/identify/identify_report.h"
+#include "typed_objects.h"
 
 namespace py = pybind11;
 
@@ -130,9 +131,9 @@ struct Outcome {
   std::optional<std::string> report;
 };
 
-py::dict IdentifyCurves(const py::object& passive_curve, const py::object& active_curve,
-                        const py::object& velocity_curve, int active_count, bool nonnegative,
-                        std::optional<double> f_iso, bool report, const std::string& source) {
+AnyDict IdentifyCurves(const py::object& passive_curve, const py::object& active_curve,
+                       const py::object& velocity_curve, int active_count, bool nonnegative,
+                       std::optional<double> f_iso, bool report, const std::string& source) {
   if (source.find_first_of("\r\n") != std::string::npos) {
     throw py::value_error("source must be one line: it is written in a YAML comment");
   }

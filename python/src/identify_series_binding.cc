@@ -23,6 +23,7 @@
 #include "musclesim/identify/identify_series_columns.h"
 #include "musclesim/identify/identify_series_warnings.h"
 #include "py_scenario.h"
+#include "typed_objects.h"
 
 namespace py = pybind11;
 
@@ -67,7 +68,7 @@ py::array_t<double> ToArray(const Eigen::MatrixXd& matrix) {
 
 // The columns of every series as float64 vectors; a column that is not a 1-D array of
 // numbers is an InputError at the series' entry.
-std::vector<SeriesColumns> ColumnsOf(const py::list& series, const IdentifySeriesSpec& spec) {
+std::vector<SeriesColumns> ColumnsOf(const AnyList& series, const IdentifySeriesSpec& spec) {
   std::vector<SeriesColumns> all;
   for (std::size_t i = 0; i < py::len(series); ++i) {
     const std::string label = "series[" + std::to_string(i) + "]";
@@ -103,7 +104,7 @@ struct Identification {
 };
 
 Identification Identify(const py::object& scenario, const py::object& spec_dict,
-                        const std::string& spec_name, const py::list& series, bool design,
+                        const std::string& spec_name, const AnyList& series, bool design,
                         int max_evaluations) {
   if (max_evaluations < 1) {
     throw py::value_error(
@@ -155,7 +156,7 @@ Identification Identify(const py::object& scenario, const py::object& spec_dict,
   return out;
 }
 
-py::dict Residuals(const SeriesIdentification& r) {
+ArrayDict Residuals(const SeriesIdentification& r) {
   const std::size_t n = r.residuals.size();
   py::array_t<std::int64_t> series(static_cast<py::ssize_t>(n));
   std::vector<std::string> outputs;
@@ -170,7 +171,7 @@ py::dict Residuals(const SeriesIdentification& r) {
     residual.push_back(row.measured - row.model);
     standardised.push_back(row.standardised);
   }
-  py::dict columns;
+  ArrayDict columns;
   columns["series"] = series;
   columns["output"] = py::module_::import("numpy").attr("array")(outputs, py::arg("dtype") = "str");
   columns["t"] = ToArray(t);
@@ -244,7 +245,7 @@ void DefineEstimates(py::class_<Identification>& identification) {
       .def_property_readonly(
           "estimates",
           [](const Identification& r) {
-            py::dict estimates;
+            FloatDict estimates;
             for (const auto& p : r.result.parameters) estimates[py::str(p.path)] = p.estimate;
             return estimates;
           },
@@ -265,7 +266,7 @@ void DefineEstimates(py::class_<Identification>& identification) {
       .def_property_readonly(
           "weak_directions",
           [](const Identification& r) {
-            py::list directions;
+            DictList directions;
             for (const WeakDirection& w : r.result.weak_directions) {
               py::dict d;
               d["ratio"] = w.ratio;
@@ -357,9 +358,9 @@ void BindSeriesIdentification(py::module_& m) {
       "measured time series (or, with design=True, the experiment's check at the start "
       "values), with what the Jacobian of forward sensitivities says about the parameters: "
       "standard errors, correlations, the singular values of the scaled sensitivity matrix "
-      "and a verdict. As `musclesim identify DATA.yaml` (README \"From time series\"). "
-      "Values in the units of the scenario's parameters and of the measured columns (SI: m, "
-      "m/s, N, s).");
+      "and a verdict. As `musclesim identify DATA.yaml` (docs/guide/identification.md, \"From "
+      "time series\"). Values in the units of the scenario's parameters and of the measured "
+      "columns (SI: m, m/s, N, s).");
   DefineEstimates(identification);
   DefineFitStatistics(identification);
   DefineOutcome(identification);

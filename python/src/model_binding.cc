@@ -14,6 +14,7 @@
 #include "document.h"
 #include "model_values.h"
 #include "overrides.h"
+#include "typed_objects.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/core/input_ranges.h"
 #include "musclesim/io/model_text.h"
@@ -116,7 +117,7 @@ Model FromSpec(const ModelSpec& spec) {
   return {std::make_shared<const TensionModel>(spec.params), spec.fit_result};
 }
 
-Model FromDict(const py::dict& params) {
+Model FromDict(const AnyDict& params) {
   // the block goes through the file reader as a document, with its rules and messages
   const Document block = DocumentFrom(params, "model");
   ModelSpec spec;
@@ -127,7 +128,7 @@ Model FromDict(const py::dict& params) {
   return FromSpec(spec);
 }
 
-py::dict FitDict(const FitResult& fit) {
+AnyDict FitDict(const FitResult& fit) {
   const auto column = [&](auto field) {
     py::array_t<double> out(static_cast<py::ssize_t>(fit.gaussians.size()));
     for (std::size_t k = 0; k < fit.gaussians.size(); ++k) {
@@ -152,10 +153,10 @@ std::vector<double> Vector(const py::object& values, const char* name) {
   return {array.data(), array.data() + array.size()};
 }
 
-py::dict Fit(const py::object& x, const py::object& f, int n, std::optional<std::string> target,
-             std::optional<std::string> preset, double optimal_length,
-             std::optional<std::pair<double, double>> optimal_range, double sigma, bool nonnegative,
-             const py::object& widths, const py::object& centers) {
+AnyDict Fit(const py::object& x, const py::object& f, int n, std::optional<std::string> target,
+            std::optional<std::string> preset, double optimal_length,
+            std::optional<std::pair<double, double>> optimal_range, double sigma, bool nonnegative,
+            const py::object& widths, const py::object& centers) {
   FitSpec spec;
   spec.count = n;
   spec.nonnegative = nonnegative;
@@ -206,13 +207,16 @@ py::dict Fit(const py::object& x, const py::object& f, int n, std::optional<std:
 void DefineTension(py::class_<Model>& model_class) {
   model_class
       .def(py::init(&FromDict), py::arg("params"),
-           R"(A model from a dict with the keys of a scenario's `model:` block (README "The model
-block", docs/model.md): f_iso [N]; passive {k_p [N], alpha [1/m], slack_length [m]};
-active_length {optimal_range [l1, l2] [m], sigma (optional), and gaussians [{amplitude,
-width, center}] or fit {count, target, ...}}; velocity {v_max [m/s], n, epsilon [m/s],
-eccentric {v_max, n, limit} (optional)}. The block is read by the same reader as a file
-(the dict is written as JSON, which is YAML): the same rules, and the same error, naming
-"<model dict>:line:column" and the key path, for a value that breaks one.)")
+           R"(A model from a dict with the keys of a scenario's `model:` block (docs/guide/model.md,
+docs/model.md): f_iso [N]; passive {k_p [N], alpha [1/m], slack_length [m]}; active_length
+{optimal_range [l1, l2] [m], sigma (optional), and gaussians [{amplitude, width, center}] or
+fit {count, target, ...}}; velocity {v_max [m/s], n, epsilon [m/s], eccentric {v_max, n,
+limit} (optional)}. The dict is read by the same reader as a file, as a document in memory
+(no text in between; NumPy numbers and arrays as Python numbers and lists): the same rules,
+and an InputError for a value that breaks one, naming the key path and "<model dict>" in
+place of the file (a dict has no lines: location None), e.g. "model.passive.k_p = abc
+(<model dict>): must be a number". A value of a type no file holds (not a number, bool, str,
+None, list or dict) is a TypeError naming its key path.)")
       .def(
           "tension",
           [](const Model& self, const py::object& x, const py::object& v, const py::object& u) {
@@ -239,7 +243,7 @@ eccentric {v_max, n, limit} (optional)}. The block is read by the same reader as
                   out[4][i] = s.d_velocity;
                   out[5][i] = s.d_activation;
                 });
-            py::dict result;
+            AnyDict result;
             const char* names[] = {"total",    "passive",    "active",
                                    "d_length", "d_velocity", "d_activation"};
             for (int k = 0; k < 6; ++k) result[names[k]] = Finish(parts[k]);
@@ -302,7 +306,7 @@ void DefineCurves(py::class_<Model>& model_class) {
 void DefineModelProperties(py::class_<Model>& model_class) {
   model_class
       .def_property_readonly(
-          "params", [](const Model& self) { return ParamsDict(self.tension->params()); },
+          "params", [](const Model& self) { return AnyDict(ParamsDict(self.tension->params())); },
           "The parameters as a dict with the `model:` block's keys (units as there), the "
           "Gaussians always explicit (a fit's result in its place): Model(model.params) is the "
           "same model.")
@@ -312,8 +316,8 @@ void DefineModelProperties(py::class_<Model>& model_class) {
           "Where f_L peaks on optimal_range [m] (f_L = 1 there).")
       .def_property_readonly(
           "fit_result",
-          [](const Model& self) -> py::object {
-            if (!self.fit_result) return py::none();
+          [](const Model& self) -> std::optional<AnyDict> {
+            if (!self.fit_result) return std::nullopt;
             return FitDict(*self.fit_result);
           },
           "The fit the block asked for (a dict as fit_gaussians returns), or None when the "
@@ -376,7 +380,7 @@ void BindForceLengthPreset(py::module_& m) {
       R"(A standard active force-length curve f_L [-] at lengths x [m], scaled so that its peak
 is 1 at `optimal_length` [m] (default 1: x is then the normalised length l / L), as `musclesim
 curves --preset NAME` tabulates it: preset degroote2016, thelen2003, gordon1966 or mujoco
-(README "The closed-form fit"). fit_gaussians(preset=...) fits Gaussians to it.)");
+(docs/guide/model.md, "Standard curves"). fit_gaussians(preset=...) fits Gaussians to it.)");
 }
 
 void BindFitGaussians(py::module_& m) {

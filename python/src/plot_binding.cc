@@ -22,6 +22,7 @@
 #include "musclesim/core/number_format.h"
 #include "musclesim/model/tension.h"
 #include "musclesim/plot/plot.h"
+#include "typed_objects.h"
 
 namespace py = pybind11;
 
@@ -61,7 +62,7 @@ PlotOptions Options(const std::string& output, const std::string& title, int wid
 
 // The columns copied out of Python (the GIL is needed only here); every column as long as
 // the first.
-std::vector<Column> ReadColumns(const std::vector<std::string>& names, const py::list& given) {
+std::vector<Column> ReadColumns(const std::vector<std::string>& names, const AnyList& given) {
   if (names.size() != py::len(given)) {
     throw std::invalid_argument("_plot_columns: as many names as columns are needed");
   }
@@ -125,7 +126,7 @@ void Draw(const std::string& script, const PlotOptions& options,
   Render(script, options);
 }
 
-void PlotColumns(const std::vector<std::string>& names, const py::list& columns,
+void PlotColumns(const std::vector<std::string>& names, const AnyList& columns,
                  const std::string& output, const std::string& title, int width, int height,
                  const std::optional<std::string>& x, const std::optional<std::string>& y,
                  const std::optional<std::string>& color,
@@ -156,7 +157,7 @@ void PlotColumns(const std::vector<std::string>& names, const py::list& columns,
   });
 }
 
-void PlotModel(const py::dict& params, const std::string& output, const std::string& title,
+void PlotModel(const AnyDict& params, const std::string& output, const std::string& title,
                int width, int height, const std::optional<std::string>& script_path) {
   const PlotOptions options = Options(output, title, width, height);
   const Document block = DocumentFrom(params, "model");

@@ -14,6 +14,7 @@
 #include "musclesim/io/scenario_yaml.h"
 #include "py_scenario.h"
 #include "run_data.h"
+#include "typed_objects.h"
 
 namespace py = pybind11;
 
@@ -71,16 +72,16 @@ void BindResult(py::module_& m) {
       "lengths and positions in m, velocities in m/s (shortening_velocity positive when the "
       "actuator shortens), tensions and loads in N, activations and excitations in [0, 1].")
       .def_property_readonly(
-          "columns", [](const Result& r) { return r.columns; },
+          "columns", [](const Result& r) { return ArrayDict(r.columns); },
           "dict {name: 1-D NumPy array of len(result)}, exactly the CLI CSV's columns in its "
           "order: float64, except the text columns `phase` and `<actuator>.phase` "
           "('concentric', 'eccentric', 'isometric'), which are NumPy str arrays. With "
           "sensitivities, d_<column>/d_<path> after them.")
       .def_property_readonly(
-          "times", [](const Result& r) -> py::object { return r.columns[py::str("t")]; },
+          "times", [](const Result& r) { return FloatArray(r.columns[py::str("t")]); },
           "columns['t']: the rows' times [s], float64, shape (len(result),).")
       .def_property_readonly(
-          "stats", [](const Result& r) { return r.stats; },
+          "stats", [](const Result& r) { return AnyDict(r.stats); },
           "dict of the run's counters, as `musclesim run --stats` writes them: steps, "
           "rhs_evals, jac_evals, linear_setups, newton_iters, newton_conv_fails, "
           "error_test_fails, wall_seconds [s], final_time [s], linear_solver, status, message "
@@ -97,17 +98,19 @@ void BindResult(py::module_& m) {
       .def(
           "__len__", [](const Result& r) { return r.rows; }, "The number of rows.")
       .def(py::pickle(  // for multiprocessing and joblib: the columns and stats as they are
-          [](const Result& r) { return py::make_tuple(r.columns, r.stats, r.rows, r.run_stats); },
-          [](const py::tuple& state) {
+          [](const Result& r) {
+            return AnyTuple(py::make_tuple(r.columns, r.stats, r.rows, r.run_stats));
+          },
+          [](const AnyTuple& state) {
             if (state.size() != 4) throw std::runtime_error("not a pickled musclesim.Result");
             return Result{state[0].cast<py::dict>(), state[1].cast<py::dict>(),
                           state[2].cast<py::ssize_t>(), state[3].cast<RunStats>()};
           }))
       .def(
           "__getitem__",
-          [](const Result& r, const std::string& name) -> py::object {
+          [](const Result& r, const std::string& name) {
             if (!r.columns.contains(name)) throw py::key_error("no column '" + name + "'");
-            return r.columns[py::str(name)];
+            return AnyArray(r.columns[py::str(name)]);
           },
           py::arg("column"), "result['column'] is result.columns['column'].")
       .def("__repr__", [](const Result& r) {
@@ -173,12 +176,12 @@ void BindSolverTypes(py::module_& m) {
                     "Why the run ended early (a limit or a failure); '' when it completed.")
       .def(py::pickle(
           [](const RunStats& s) {
-            return py::make_tuple(s.steps, s.rhs_evals, s.jac_evals, s.linear_setups,
-                                  s.newton_iters, s.newton_conv_fails, s.error_test_fails,
-                                  s.wall_seconds, s.final_time, static_cast<int>(s.linear_solver),
-                                  static_cast<int>(s.status), s.message);
+            return AnyTuple(py::make_tuple(
+                s.steps, s.rhs_evals, s.jac_evals, s.linear_setups, s.newton_iters,
+                s.newton_conv_fails, s.error_test_fails, s.wall_seconds, s.final_time,
+                static_cast<int>(s.linear_solver), static_cast<int>(s.status), s.message));
           },
-          [](const py::tuple& t) {
+          [](const AnyTuple& t) {
             if (t.size() != 12) throw std::runtime_error("not a pickled musclesim.RunStats");
             RunStats s;
             s.steps = t[0].cast<long>();
@@ -261,7 +264,7 @@ void DefineScenarioCopies(py::class_<PyScenario>& scenario_class) {
   scenario_class
       .def(py::pickle(
           // a file's scenario as its path and values; a dict's as its YAML text
-          [](const PyScenario& s) {
+          [](const PyScenario& s) -> AnyTuple {
             if (s.document) {
               const PyScenario fixed = s;  // taken with the GIL
               std::string text;
@@ -273,7 +276,7 @@ void DefineScenarioCopies(py::class_<PyScenario>& scenario_class) {
             }
             return py::make_tuple(s.path, s.display, s.overrides, py::none());
           },
-          [](const py::tuple& state) {
+          [](const AnyTuple& state) {
             if (state.size() != 4) throw std::runtime_error("not a pickled musclesim.Scenario");
             const std::string display = state[1].cast<std::string>();
             if (!state[3].is_none()) {
@@ -340,9 +343,9 @@ void DefineScenarioUse(py::class_<PyScenario>& scenario_class) {
 void BindScenarioClass(py::module_& m) {
   py::class_<PyScenario> scenario_class(
       m, "Scenario",
-      "A validated scenario in memory (a single actuator, or a network on a line, README "
-      "\"Scenario files\"), read from a file or a dict, with the values set() since. SI units "
-      "as in the files.");
+      "A validated scenario in memory (a single actuator, docs/guide/scenarios.md, or a "
+      "network on a line, docs/guide/networks.md), read from a file or a dict, with the values "
+      "set() since. SI units as in the files.");
   DefineScenarioProperties(scenario_class);
   DefineScenarioCopies(scenario_class);
   DefineScenarioUse(scenario_class);

@@ -17,6 +17,7 @@
 #include "overrides.h"
 #include "py_scenario.h"
 #include "run_data.h"
+#include "typed_objects.h"
 
 namespace musclesim::python {
 
@@ -97,16 +98,16 @@ class PyStepper {
     return py::array_t<double>(static_cast<py::ssize_t>(y.size()), y.data());
   }
 
-  py::dict Sample() const {
+  FloatDict Sample() const {
     const auto lock = Exclusive();
     layout_->Fill(stepper_->time(), stepper_->sample(), row_.data());
-    py::dict sample;
+    FloatDict sample;
     sample["t"] = stepper_->time();
     for (std::size_t k = 0; k < numeric_.size(); ++k) sample[columns_[k]] = row_[numeric_[k]];
     return sample;
   }
 
-  py::dict Stats() const {
+  AnyDict Stats() const {
     const auto lock = Exclusive();
     return StatsDict(stepper_->stats());
   }
@@ -115,7 +116,7 @@ class PyStepper {
     const auto lock = Exclusive();
     return stepper_->message();
   }
-  py::list columns() const { return columns_; }
+  StrList columns() const { return columns_; }
 
  private:
   // The stepper to this thread alone: advance() runs without the GIL, so two Python threads
@@ -128,7 +129,7 @@ class PyStepper {
 
   mutable std::mutex mutex_;
   std::unique_ptr<Stepper> stepper_;
-  py::list columns_;                  // names of sample()'s values after t, in the CSV's order
+  StrList columns_;                   // names of sample()'s values after t, in the CSV's order
   std::vector<std::size_t> numeric_;  // their columns in layout_
   std::optional<RunColumns> layout_;  // the network's columns
   py::str statuses_[3];               // by RunStatus

@@ -1,6 +1,7 @@
-// musclesim.run_many (many scenarios on C++ threads) and musclesim._sweep (a sweep file or
-// dict, its summary in memory or written where asked); the GIL is released while anything
-// runs, and nothing goes through a file the caller did not ask for.
+// musclesim._run_many (many scenarios on C++ threads, for musclesim.run_many) and
+// musclesim._sweep (a sweep file or dict, its summary in memory or written where asked); the
+// GIL is released while anything runs, and nothing goes through a file the caller did not ask
+// for.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -26,6 +27,7 @@
 #include "overrides.h"
 #include "py_scenario.h"
 #include "run_data.h"
+#include "typed_objects.h"
 
 namespace musclesim::python {
 
@@ -53,7 +55,7 @@ int ThreadCount(int threads, std::size_t jobs) {
   return std::max(1, std::min(wanted, static_cast<int>(jobs)));
 }
 
-std::vector<Job> JobsFrom(const py::list& given) {
+std::vector<Job> JobsFrom(const AnyList& given) {
   std::vector<Job> jobs;
   for (std::size_t k = 0; k < given.size(); ++k) {
     const py::handle item = given[k];
@@ -109,8 +111,8 @@ bool RunOnThreads(std::size_t count, int workers, Work work) {
   return stop;
 }
 
-py::list RunMany(const py::list& given, int threads,
-                 const std::vector<std::string>& sensitivities) {
+std::vector<Result> RunMany(const AnyList& given, int threads,
+                            const std::vector<std::string>& sensitivities) {
   const std::vector<Job> jobs = JobsFrom(given);
   std::vector<Outcome> outcomes(jobs.size());
   const bool interrupted =
@@ -130,8 +132,8 @@ py::list RunMany(const py::list& given, int threads,
   for (const Outcome& outcome : outcomes) {
     if (outcome.error) std::rethrow_exception(outcome.error);
   }
-  py::list results;
-  for (Outcome& outcome : outcomes) results.append(py::cast(MakeResult(std::move(outcome.data))));
+  std::vector<Result> results;
+  for (Outcome& outcome : outcomes) results.push_back(MakeResult(std::move(outcome.data)));
   return results;
 }
 
@@ -262,17 +264,12 @@ py::object Sweep(const py::object& spec, int threads, const py::object& output, 
 }  // namespace
 
 void BindSweep(py::module_& m) {
-  m.def("run_many", &RunMany, py::arg("jobs"), py::arg("threads") = 0,
-        py::arg("sensitivities") = std::vector<std::string>{},
-        "Runs every job, a Scenario or a (path, overrides) pair (overrides: None, a list of "
-        "\"key=value\" strings as --set takes them, or a dict), on `threads` C++ threads (0: "
-        "every core) with the GIL released, each run recorded in memory. Returns, in the jobs' "
-        "order, one Result each, as Scenario.run() gives: .columns exactly `musclesim run`'s "
-        "CSV columns (float64; the phase columns str), .stats its --stats dict, .status "
-        "'completed', 'limit' or 'failed'; `sensitivities` (dotted paths) adds the "
-        "d_<column>/d_<path> columns to every run, as Scenario.run does. SI units. A bad job "
-        "raises (the first in the list's order) after every job has run; musclesim.table() "
-        "stacks the results into one structured array.");
+  m.def("_run_many", &RunMany, py::arg("jobs"), py::arg("threads"), py::arg("sensitivities"),
+        "run_many's C++ half: every job, a Scenario or a (path, overrides) pair (overrides: "
+        "None, a list of \"key=value\" strings as --set takes them, or a dict), run on "
+        "`threads` C++ threads (0: every core) with the GIL released, each recorded in memory; "
+        "one Result per job, in order. A bad job raises (the first in the list's order) after "
+        "every job has run. musclesim.run_many is the public way.");
   m.def("_sweep", &Sweep, py::arg("spec"), py::arg("threads"), py::arg("output"), py::arg("resume"),
         py::arg("name"),
         "Runs the sweep `spec` (a sweep file's path, or a dict of its keys whose base may be a "

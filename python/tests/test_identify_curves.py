@@ -63,7 +63,7 @@ def run_cli(*args, check=True):
                           text=True, check=check)
 
 
-# --- (a) the same model block as the program, for each data set the README identifies ----
+# --- (a) the program's model block, for each data set docs/guide/identification.md fits ---
 
 @pytest.mark.parametrize("name,as_dicts", [("synthetic", True), ("ghj1966", False),
                                            ("hill", False), ("eccentric", False)])

@@ -2,19 +2,16 @@
 block of README.md and of docs/ (but the generated reports) is executed in a fresh directory
 holding links to scenarios/ and data/, with matplotlib drawing off-screen."""
 import os
-import pathlib
 import re
 import subprocess
 import sys
 
 import pytest
 from conftest import SOURCE
+from doc_examples import python_blocks
 
 ROOT = SOURCE
-DOCUMENTS = [ROOT / "README.md"] + sorted(
-    p for p in (ROOT / "docs").rglob("*.md") if "reports" not in p.relative_to(ROOT).parts)
-BLOCKS = [block for document in DOCUMENTS
-          for block in re.findall(r"```python\n(.*?)```", document.read_text(), re.S)]
+BLOCKS = [block.code for block in python_blocks(ROOT)]
 
 
 def test_the_readme_and_the_site_have_python_examples():

@@ -1,8 +1,9 @@
 """The checked-in type stubs (musclesim/_musclesim.pyi, made by pybind11-stubgen 2.5.1 from
-the built module: `pybind11-stubgen musclesim._musclesim -o DIR`) describe the module as it is:
-every public name of the extension and of each of its classes is in the stubs, and the stubs
-name nothing the module lacks. A binding added or removed without regenerating them fails
-here."""
+the built module: `pybind11-stubgen musclesim._musclesim --numpy-array-use-type-var -o DIR`,
+the flag writing NumPy arrays as numpy.ndarray[Any, numpy.dtype[...]] as type checkers take
+them) describe the module as it is: every public name of the extension and of each of its
+classes is in the stubs, and the stubs name nothing the module lacks. A binding added or
+removed without regenerating them fails here."""
 import ast
 import inspect
 import pathlib
@@ -41,7 +42,7 @@ def test_the_stubs_name_every_public_function_and_class_of_the_module():
     top, members = stub_names()
     module = public(n for n, v in vars(_musclesim).items()
                     if inspect.isclass(v) or callable(v))
-    # the exceptions are re-exported from the package, not defined in the stubs
+    # the exceptions are Python classes (musclesim/_errors.py): the stubs import them
     module -= {"InputError", "ParameterError"}
     assert module == top
     for name, cls in vars(_musclesim).items():
