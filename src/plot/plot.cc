@@ -1,8 +1,5 @@
 #include "musclesim/plot/plot.h"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,13 +10,11 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
-#include <memory>
 #include <sstream>
 
 #include "musclesim/core/errors.h"
+#include "plot/gnuplot_process.h"
 #include "plot/plot_text.h"
-
-extern char** environ;
 
 namespace musclesim {
 
@@ -471,70 +466,6 @@ class TemporaryFile {
   bool kept_ = false;
 };
 
-// The script in a new file of the system's temporary folder.
-std::unique_ptr<TemporaryFile> WriteScript(const std::string& script) {
-  std::string name = (std::filesystem::temp_directory_path() / "musclesim_plot_XXXXXX.gp").string();
-  const int fd = ::mkstemps(name.data(), 3);
-  if (fd < 0) {
-    throw std::runtime_error(name + ": cannot create the gnuplot script (" + std::strerror(errno) +
-                             ")");
-  }
-  auto file = std::make_unique<TemporaryFile>(name);
-  std::size_t written = 0;
-  while (written < script.size()) {
-    const ssize_t n = ::write(fd, script.data() + written, script.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const std::string reason = std::strerror(errno);
-      ::close(fd);
-      throw std::runtime_error(name + ": cannot write the gnuplot script (" + reason + ")");
-    }
-    written += static_cast<std::size_t>(n);
-  }
-  ::close(fd);
-  return file;
-}
-
-// Runs `gnuplot script_path` (no shell between: no name is ever parsed as a command) with
-// standard input from /dev/null; returns whether it exited with 0, and what it printed.
-bool RunGnuplot(const std::string& script_path, std::string& messages) {
-  int out[2];
-  if (::pipe2(out, O_CLOEXEC) != 0) {
-    throw std::runtime_error(std::string("cannot start gnuplot (") + std::strerror(errno) + ")");
-  }
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_adddup2(&actions, out[1], 1);
-  posix_spawn_file_actions_adddup2(&actions, out[1], 2);
-  std::string program = "gnuplot", script = script_path;
-  char* argv[] = {program.data(), script.data(), nullptr};
-  pid_t pid = 0;
-  const int spawned = ::posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
-  posix_spawn_file_actions_destroy(&actions);
-  ::close(out[1]);
-  if (spawned != 0) {
-    ::close(out[0]);
-    if (spawned == ENOENT) {
-      throw std::runtime_error(
-          "gnuplot is not installed (or not on PATH): install the Debian package gnuplot-nox "
-          "(scripts/install-deps.sh does)");
-    }
-    throw std::runtime_error(std::string("cannot start gnuplot (") + std::strerror(spawned) + ")");
-  }
-  char buffer[4096];
-  for (;;) {
-    const ssize_t n = ::read(out[0], buffer, sizeof buffer);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    messages.append(buffer, static_cast<std::size_t>(n));
-  }
-  ::close(out[0]);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
-  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
-}
-
 }  // namespace
 
 void Render(const std::string& script, const PlotOptions& options) {
@@ -556,12 +487,10 @@ void Render(const std::string& script, const PlotOptions& options) {
                 std::to_string(options.height) + " noenhanced font 'sans,12' background '#ffffff'\n"
           : "set terminal pngcairo size " + std::to_string(options.width) + "," +
                 std::to_string(options.height) + " noenhanced font 'sans,10'\n";
-  const auto script_file =
-      WriteScript(terminal + "set output " + OptionString(figure.path(), "output") + "\n" + script +
-                  "unset output\n");
-
   std::string messages;
-  const bool ran = RunGnuplot(script_file->path(), messages);
+  const bool ran = RunGnuplot(terminal + "set output " + OptionString(figure.path(), "output") +
+                                  "\n" + script + "unset output\n",
+                              messages);
   std::error_code error;
   if (!ran || std::filesystem::file_size(figure.path(), error) == 0 || error) {
     throw std::runtime_error("gnuplot failed: " + messages);

@@ -236,10 +236,12 @@ TEST(PlotCli, SingleRowsAndSummariesWithoutMetricsArePlotted) {
 
 // A stand-in for gnuplot that writes into the file the script's `set output` names, logs
 // that name, and exits with `code`.
+// A gnuplot that reads the script from its standard input, writes half a figure where the
+// script says, logs that name and exits with `code`.
 std::string FakeGnuplot(const std::string& bin, int code) {
   std::filesystem::create_directories(bin);
   std::ofstream(bin + "gnuplot") << "#!/bin/sh\n"
-                                    "out=$(sed -n \"s/^set output '\\(.*\\)'$/\\1/p\" \"$1\")\n"
+                                    "out=$(sed -n \"s/^set output '\\(.*\\)'$/\\1/p\")\n"
                                     "printf 'half a figure' > \"$out\"\n"
                                     "printf '%s\\n' \"$out\" >> '"
                                  << bin
@@ -272,6 +274,32 @@ TEST(PlotCli, FailingGnuplotKeepsTheEarlierFigureAndNoTemporary) {
   EXPECT_THAT(missing.err, HasSubstr("gnuplot is not installed (or not on PATH): install the "
                                      "Debian package gnuplot-nox"));
   EXPECT_EQ(testing::ReadFile(dir + "a.png"), "earlier figure");
+  EXPECT_EQ(Entries(dir), std::set<std::string>{"a.png"});
+}
+
+TEST(PlotCli, AGnuplotEndingBeforeReadingALongScriptIsAFailureNotASignal) {
+  const std::string dir = FreshFolder(), bin = FreshFolder("bin");
+  std::ofstream(bin + "gnuplot") << "#!/bin/sh\necho 'gave up at once' >&2\nexit 1\n";
+  std::filesystem::permissions(bin + "gnuplot", std::filesystem::perms::owner_all);
+  // 200,000 rows: a script of megabytes, far more than a pipe holds
+  std::string csv = kHeader;
+  for (int i = 0; i < 200000; ++i) {
+    csv += std::to_string(i * 1e-4) + ",0.1,0.01,1,0,50,50,40,concentric\n";
+  }
+  const std::string run = testing::WriteTempFile("long_run.csv", csv);
+  const Outcome r =
+      RunIn(dir, {run, "-o", "a.png"}, {"PATH=" + bin + ":" + std::string(std::getenv("PATH"))});
+  EXPECT_EQ(r.exit_code, 1) << r.err;  // 141 would be SIGPIPE
+  EXPECT_THAT(r.err, HasSubstr("gnuplot failed: gave up at once"));
+  EXPECT_EQ(Entries(dir), std::set<std::string>{});
+}
+
+TEST(PlotCli, TheScriptReachesGnuplotWithoutATemporaryFile) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  // no temporary folder to write into: the figure is still drawn
+  const std::string dir = FreshFolder(), run = Trajectory();
+  const Outcome r = RunIn(dir, {run, "-o", "a.png"}, {"TMPDIR=" + dir + "no_such_folder"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(Entries(dir), std::set<std::string>{"a.png"});
 }
 

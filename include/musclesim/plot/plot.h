@@ -1,6 +1,7 @@
-// Figures drawn by gnuplot (Debian's gnuplot-nox): musclesim writes a gnuplot script with
-// the data inline and runs gnuplot on it. The script builders are pure functions, so what
-// a figure contains can be checked as text; Render runs gnuplot.
+// Figures drawn by gnuplot (Debian's gnuplot-nox): musclesim builds a gnuplot script with
+// the data inline, in memory, and gives it to gnuplot on its standard input. The script
+// builders are pure functions, so what a figure contains can be checked as text; Render runs
+// gnuplot.
 //
 // Titles, labels, column names and file names come from the user and from CSV files, and a
 // gnuplot script is a program: every such string enters the script only through
