@@ -19,7 +19,7 @@ class MpiSession {
   int size() const { return size_; }
 
  private:
-  bool initialised_ = false;
+  [[maybe_unused]] bool initialised_ = false;  // read and set only in an MPI build
   int rank_ = 0;
   int size_ = 1;
 };

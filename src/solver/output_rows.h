@@ -20,12 +20,17 @@ class OutputRows {
     explicit_ = !grid.times.empty();
     every_step_ = !explicit_ && grid.interval == 0.0;
     row_at_start_ = !explicit_ || grid.times.front() == start;
-    count_ = every_step_ ? 0 : static_cast<long>(std::ceil((end - start) / interval_ - 1e-9));
-    // far from t = 0 the span itself carries rounding errors: a grid time within `merge` of
-    // the end is the end, which the last row is anyway
-    while (count_ > 1 && start + (count_ - 1) * interval_ >= end - merge) --count_;
     skipped_ = row_at_start_ && explicit_ ? 1 : 0;  // a listed start: recorded first
-    if (explicit_) count_ = static_cast<long>(grid.times.size()) - skipped_;
+    if (explicit_) {
+      count_ = static_cast<long>(grid.times.size()) - skipped_;
+    } else if (every_step_) {
+      count_ = 0;
+    } else {
+      count_ = static_cast<long>(std::ceil((end - start) / interval_ - 1e-9));
+      // far from t = 0 the span itself carries rounding errors: a grid time within `merge` of
+      // the end is the end, which the last row is anyway
+      while (count_ > 1 && start + (count_ - 1) * interval_ >= end - merge) --count_;
+    }
     next_ = 1;
   }
 
