@@ -5,7 +5,7 @@
 # installed package and its `musclesim` command, not against a build tree.
 #   scripts/check_wheel.sh            PYTHON=python3.12 scripts/check_wheel.sh
 # Needs the C++ libraries of scripts/install-deps.sh; pip fetches the build tools (pinned in
-# pyproject.toml) and the test's NumPy and pytest from PyPI.
+# pyproject.toml) and the test environment's packages (pinned below) from PyPI.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 python=${PYTHON:-python3}
@@ -16,9 +16,14 @@ trap 'rm -rf "$work"' EXIT
 venv="$work/venv/bin"
 "$venv/python" -m pip install -q --upgrade pip
 "$venv/python" -m pip wheel -q --no-deps -w "$work/dist" .
-"$venv/python" -m pip install -q "$work"/dist/musclesim-*.whl "pytest>=7"
+wheel=$(echo "$work"/dist/musclesim-*.whl)
+# the package with its extras, the test tools, and NumPy, pinned: the versions it is tested with
+"$venv/python" -m pip install -q "$wheel[plot,pandas,test]" "numpy==2.4.6" "matplotlib==3.11.2" \
+  "pandas==3.1.1" "pytest==9.2.0" "mypy==2.4.1"
 # outside the repository, so `import musclesim` can only find the installed package
 cd "$work"
 PATH="$venv:$PATH" MUSCLESIM_SOURCE_DIR="$OLDPWD" MUSCLESIM_CLI="$venv/musclesim" \
   "$venv/python" -m pytest -q -p no:cacheprovider "$OLDPWD/python/tests"
-echo "check_wheel: the wheel installs and passes the Python tests in a fresh venv"
+# mypy --strict on the Python examples of the README and the documentation site
+MUSCLESIM_SOURCE_DIR="$OLDPWD" "$venv/python" "$OLDPWD/python/tests/typecheck_examples.py"
+echo "check_wheel: the wheel installs, passes the Python tests and types its examples in a fresh venv"

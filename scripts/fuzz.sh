@@ -6,7 +6,7 @@
 # that did are kept in BUILD/findings/<reader>/.
 #   scripts/fuzz.sh [SECONDS] [READER...]     readers: scenario model sweep identify
 #                                             identify_series network controller sensitivity
-# BUILD is build-fuzz/ beside the sources, or $MUSCLESIM_FUZZ_BUILD.
+# BUILD is build-fuzz/ beside the sources, or $MUSCLESIM_FUZZ_BUILD (CI: build-sanitize/).
 set -euo pipefail
 
 seconds=${1:-60}
@@ -22,10 +22,14 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${MUSCLESIM_FUZZ_BUILD:-$root/build-fuzz}
 source "$root/scripts/toolchain.sh"
 
-"$cmake" -S "$root" -B "$build" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMUSCLESIM_FUZZ=ON -DMUSCLESIM_BUILD_TESTS=OFF \
-  -DMUSCLESIM_BUILD_BENCHMARKS=OFF -DMUSCLESIM_BUILD_EXAMPLES=OFF -DMUSCLESIM_BUILD_CLI=OFF \
-  >/dev/null
+# a build directory already configured for fuzzing (as `scripts/test.sh --sanitize` makes
+# build-sanitize/) is used as it is: only the fuzz targets are compiled
+if ! grep -qx 'MUSCLESIM_FUZZ:BOOL=ON' "$build/CMakeCache.txt" 2>/dev/null; then
+  "$cmake" -S "$root" -B "$build" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMUSCLESIM_FUZZ=ON -DMUSCLESIM_BUILD_TESTS=OFF \
+    -DMUSCLESIM_BUILD_BENCHMARKS=OFF -DMUSCLESIM_BUILD_EXAMPLES=OFF -DMUSCLESIM_BUILD_CLI=OFF \
+    >/dev/null
+fi
 "$cmake" --build "$build" -j2 --target "${readers[@]/#/fuzz_}"
 
 # the fuzzers' own files (inputs written for the readers) stay in the build directory

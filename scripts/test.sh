@@ -13,10 +13,12 @@ source scripts/toolchain.sh
 case "${1:-}" in
   "") dir=build; options=(-DMUSCLESIM_WITH_MPI=ON) ;;
   --sanitize)
+    # clang, with libFuzzer's coverage as well (MUSCLESIM_FUZZ): the same objects serve
+    # scripts/fuzz.sh's targets, which then compile only themselves. The Python module stays
+    # out: an ASan-built extension cannot load into an uninstrumented interpreter
     dir=build-sanitize
-    # the Python module stays out: an ASan-built extension cannot load into an uninstrumented
-    # interpreter
-    options=(-DCMAKE_BUILD_TYPE=Debug -DMUSCLESIM_SANITIZE=ON -DMUSCLESIM_BUILD_BENCHMARKS=OFF
+    options=(-DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug
+             -DMUSCLESIM_SANITIZE=ON -DMUSCLESIM_FUZZ=ON -DMUSCLESIM_BUILD_BENCHMARKS=OFF
              -DMUSCLESIM_PYTHON=OFF) ;;
   *) echo "usage: scripts/test.sh [--sanitize]" >&2; exit 2 ;;
 esac
