@@ -121,7 +121,11 @@ std::string TrajectoryPlotScript(const CsvTable& table, const PlotOptions& optio
     const double t0 = FiniteValue(table, r, columns[0]);
     const double t1 = FiniteValue(table, end < table.rows.size() ? end : end - 1, columns[0]);
     const auto color = shade.find(label);
-    if (color != shade.end() && t1 > t0) {
+    if (color == shade.end()) {
+      throw InputError(table.source + ":" + std::to_string(table.lines[r]) + ": column phase = '" +
+                       Printable(label) + "': must be concentric, eccentric or isometric");
+    }
+    if (t1 > t0) {
       s << "set object " << object++ << " rect from first " << Number(t0) << ", graph 0 to first "
         << Number(t1) << ", graph 1 fc rgb '" << color->second
         << "' fs solid 0.45 noborder behind\n";

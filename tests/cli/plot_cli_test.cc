@@ -174,6 +174,11 @@ TEST(PlotCli, MalformedCsvIsInvalidInputAndKeepsTheEarlierFigure) {
        "tension_total,load\n0,0.1,0,0,0,0,0,0\n",
        {},
        "no_phase.csv: missing columns: phase (a trajectory CSV of musclesim run)"},
+      {"unknown_phase.csv",
+       std::string(kHeader) + "0,0.1,0,0,0,0,0,0,isometric\n0.1,0.1,0,0,0,0,0,0,sideways\n",
+       {},
+       "unknown_phase.csv:3: column phase = 'sideways': must be concentric, eccentric or "
+       "isometric"},
       {"short_row.csv",
        std::string(kHeader) + "0,0.1,0\n",
        {},
