@@ -6,9 +6,8 @@
 namespace musclesim {
 
 double PathGeometry::shortest_segment() const {
-  return segment_length.empty()
-             ? std::numeric_limits<double>::infinity()
-             : *std::min_element(segment_length.begin(), segment_length.end());
+  return segment_length.empty() ? std::numeric_limits<double>::infinity()
+                                : *std::min_element(segment_length.begin(), segment_length.end());
 }
 
 double PathGeometry::length_rate(std::span<const Point> velocities) const {

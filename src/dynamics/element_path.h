@@ -18,7 +18,7 @@ using Point = Eigen::Vector3d;
 
 // The segments of one path at one instant.
 struct PathGeometry {
-  double length = 0.0;               // l = sum_k L_k [m]
+  double length = 0.0;                 // l = sum_k L_k [m]
   std::vector<double> segment_length;  // L_k = |q_(k+1) - q_k| [m]
   std::vector<Point> direction;        // e_k, the unit vector of segment k
   std::vector<Point> gradient;         // G_j = dl/dq_j, one per point [-]
