@@ -14,6 +14,7 @@
 #include <set>
 
 #include "support/scenario_files.h"
+#include "support/fresh_directory.h"
 
 extern char** environ;
 
@@ -70,12 +71,7 @@ Outcome RunIn(const std::string& dir, const std::vector<std::string>& args,
 
 // An empty folder of its own for the running test, and `name` beside it.
 std::string FreshFolder(const std::string& name = "work") {
-  const std::string dir = ::testing::TempDir() + "plot_cli_" +
-                          ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
-                          name + "/";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
+  return testing::FreshDirectory("plot_cli_", "_" + name) + "/";
 }
 
 std::set<std::string> Entries(const std::string& dir) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "musclesim/core/errors.h"
+#include "support/fresh_directory.h"
 
 namespace musclesim {
 namespace {
@@ -18,14 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-std::string FreshDirectory() {
-  const fs::path dir = fs::path(::testing::TempDir()) /
-                       (std::string("file_roles_") +
-                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
+std::string FreshDirectory() { return testing::FreshDirectory("file_roles_"); }
 
 std::string Touch(const std::string& path) {
   std::ofstream(path) << "x\n";

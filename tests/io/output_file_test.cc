@@ -1,4 +1,5 @@
 #include "musclesim/io/output_file.h"
+#include "support/fresh_directory.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -20,16 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-// A fresh directory for the running test under TEST_TMPDIR (build/tests/tmp), so that its
-// listing shows every file a writer leaves behind.
-std::string FreshDirectory() {
-  const fs::path dir = fs::path(::testing::TempDir()) /
-                       (std::string("output_file_") +
-                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
+std::string FreshDirectory() { return testing::FreshDirectory("output_file_"); }
 
 std::string ReadFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

@@ -14,6 +14,7 @@
 #include "musclesim/core/errors.h"
 #include "musclesim/io/model_yaml.h"
 #include "support/scenario_files.h"
+#include "support/fresh_directory.h"
 
 namespace musclesim {
 namespace {
@@ -518,14 +519,7 @@ TEST(Plot, SingleRowTrajectoryIsOnePointWithoutShading) {
 
 // --- rendering ----------------------------------------------------------------------------
 
-// An empty folder of its own for the running test.
-std::string FreshFolder() {
-  const std::string dir = ::testing::TempDir() + "render_" +
-                          ::testing::UnitTest::GetInstance()->current_test_info()->name() + "/";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+std::string FreshFolder() { return testing::FreshDirectory("render_") + "/"; }
 
 std::set<std::string> Entries(const std::string& dir) {
   std::set<std::string> names;
