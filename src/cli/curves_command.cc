@@ -30,7 +30,7 @@ Numbers carry 17 significant digits.
 
 With --preset, no FILE: a standard active force-length curve, scaled so that its peak is 1
 at the optimal length L (--optimal-length, in m, default 1: lengths are then normalised).
-  --preset NAME      degroote2016, thelen2003, gordon1966 or mujoco (README "The closed-form fit")
+  --preset NAME      degroote2016, thelen2003, gordon1966 or mujoco (docs/guide/model.md)
   --length A:B:N     CSV columns length,normalized_length,f_L   (m, l / L, -); default
                      0:2L:201, from zero to twice the optimal length in steps of L / 100
 )";

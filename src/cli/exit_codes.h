@@ -1,4 +1,4 @@
-// Documented exit codes of the `musclesim` command (README "Exit codes").
+// Documented exit codes of the `musclesim` command (docs/guide/other-commands.md).
 #pragma once
 
 namespace musclesim {

@@ -41,7 +41,7 @@ adding .shortening_velocity, .activation (.excitation with activation dynamics),
                    numeric dotted path as --set takes it (model.f_iso, actuator.mass,
                    load[0].value, initial.length, nodes[1].mass, models.NAME.velocity.v_max):
                    after the CSV's columns, d_COLUMN/d_PATH for every state column and
-                   tension (README "Sensitivities"); repeatable, before the scenario's own
+                   tension (docs/guide/sensitivities.md); repeatable, before the scenario's own
                    `sensitivities:` list
   --stats PATH     writes solver counters, wall time, final time and status as JSON (with
                    sensitivities: their counters and how each df/dp is computed)

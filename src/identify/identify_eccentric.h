@@ -1,5 +1,5 @@
 // Private: the eccentric branch of the velocity identification (docs/model.md section 9),
-// fitted to the points with v < 0 (README "Identification: `musclesim identify`").
+// fitted to the points with v < 0 (docs/guide/identification.md).
 #pragma once
 
 #include <vector>

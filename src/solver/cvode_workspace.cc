@@ -203,7 +203,7 @@ void CvodeWorkspace::Configure(const SolverOptions& options, double t, int count
   Check(CVodeSetMaxStep(cvode_, options.max_step), "CVodeSetMaxStep");
   // A tighter Newton test (CVODE's default 0.1) and a fresher Jacobian (default every 51
   // steps): on this stiff, strongly nonlinear problem fewer steps fail, and each costs
-  // little next to a step (README "Work-precision")
+  // little next to a step (docs/performance.md)
   Check(CVodeSetNonlinConvCoef(cvode_, kNewtonConvergenceCoefficient), "CVodeSetNonlinConvCoef");
   Check(CVodeSetJacEvalFrequency(cvode_, kJacobianEvaluationFrequency), "CVodeSetJacEvalFrequency");
   ConfigureSensitivities(count);

@@ -92,7 +92,7 @@ std::string Excited() {
 }
 std::string Network() { return testing::WriteTempFile("network.yaml", kNetwork); }
 
-// The columns the CSV documents for a single actuator (README "Scenarios").
+// The columns the CSV documents for a single actuator (docs/guide/scenarios.md).
 constexpr const char* kPlainHeader =
     "t,length,shortening_velocity,activation,tension_passive,tension_active,tension_total,load,"
     "phase";

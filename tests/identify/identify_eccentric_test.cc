@@ -204,7 +204,7 @@ void ExpectPrinted(double value, double printed, double last_digit) {
 }
 
 TEST(IdentifyEccentric, ShippedDataAsTheReadmeSays) {
-  // README "Identification": on the synthetic curve (symmetric, unbounded) the symmetric curve
+  // docs/guide/identification.md: on the synthetic curve (symmetric, unbounded) the symmetric curve
   // fitted to every point wins by the information criterion, and is the one kept
   const std::vector<DataPoint> symmetric_data = Shipped("synthetic_velocity.csv");
   const VelocityIdentification synthetic = IdentifyVelocity(symmetric_data, std::nullopt);

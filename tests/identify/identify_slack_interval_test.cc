@@ -281,7 +281,7 @@ TEST(SlackLengthInterval, CoversTheTruthAtItsLevel) {
   }
   EXPECT_GE(covered, 180);
   EXPECT_LE(covered, 198);
-  // README "Identification" quotes these three counts
+  // docs/guide/identification.md quotes these three counts
   EXPECT_EQ(covered, 195);
   EXPECT_EQ(unbounded_below, 185);
   EXPECT_EQ(by_standard_error, 130);

@@ -209,7 +209,7 @@ TEST(IdentifyReport, GaussiansCrossValidateBetterThanAQuarticOnTheClassicCurve) 
   EXPECT_THAT(FormatReport({c}), HasSubstr("| gaussians | "));
 }
 
-// README "Identification": the tables of `musclesim identify DATA --report`, made here as
+// docs/guide/identification.md: the tables of `musclesim identify DATA --report`, made here as
 // the program makes them (the model, then the spline and the two polynomials).
 
 // One row of a README table, each number as printed there (4 significant digits).
@@ -312,7 +312,7 @@ void ExpectRounded(double value, const std::string& printed, const std::string& 
       << what << " printed " << printed;
 }
 
-// README "What this shows", synthetic passive data: the numbers quoted from the report's notes
+// docs/guide/identification.md, synthetic passive data: the numbers quoted from the report's notes
 // and docs/reports/identify_synthetic.yaml, as printed there
 TEST(IdentifyReport, ReadmeSlackLengthSyntheticPassive) {
   const auto data = ShippedData("synthetic_passive.csv", "length");

@@ -89,7 +89,7 @@ std::vector<std::string> Split(const std::string& text, char separator) {
 }
 
 TEST(TrajectoryCsv, HeaderIsTheDocumentedOne) {
-  // README "Scenarios": the header is exactly this
+  // docs/guide/scenarios.md: the header is exactly this
   EXPECT_EQ(FormatRunCsv(Recorded(ActuatorColumns(), {})),
             "t,length,shortening_velocity,activation,tension_passive,tension_active,"
             "tension_total,load,phase\n");

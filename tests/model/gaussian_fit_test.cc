@@ -331,7 +331,7 @@ double QuadratureResidual(const std::vector<Gaussian>& gaussians) {
   return testing::Integrate(squared_error, kL1 - 0.2, kL2 + 0.2, {kL1, kL2}, 1e-14) / (kL2 - kL1);
 }
 
-// README "The closed-form fit": on scenarios/fit_indicator.yaml the two-Gaussian fit is
+// docs/guide/model.md: on scenarios/fit_indicator.yaml the two-Gaussian fit is
 // symmetric about the middle of L_opt with relative residual 0.0606, and three Gaussians
 // reach 0.0360. Both are printed to 4 decimals: +-5e-5.
 TEST(GaussianFit, ReadmeFiguresOfThePapersIndicatorFit) {

@@ -61,7 +61,7 @@ TEST(RunScenario, ABadOverrideIsAnInputError) {
   EXPECT_THROW(LoadScenario(ScenarioPath("concentric.yaml"), {"model.velocity.n=0"}), InputError);
 }
 
-// README "The canonical scenarios": what each run shows, checked on the shipped files.
+// docs/guide/scenarios.md: what each run shows, checked on the shipped files.
 TEST(RunScenario, CanonicalScenariosDoWhatTheReadmeSays) {
   // concentric: "a 40 N load [...] applied with full activation at 0.05 s: the actuator
   // shortens where T(x, v, 1) = 40 N, slowing as it leaves L_opt"

@@ -93,7 +93,7 @@ TEST(Simulation, IsometricTransducerReadsTheIsometricTension) {
   EXPECT_NEAR(transducer, isometric, 1e-8 * isometric);
   // settled: 1e-12 m/s here; 1e-9 m/s is ten times atol, still at rest
   EXPECT_NEAR(run.trajectory.back().sample.shortening_velocity, 0.0, 1e-9);
-  // README "The canonical scenarios": "holds while the length moves 1 mm" (printed to
+  // docs/guide/scenarios.md: "holds while the length moves 1 mm" (printed to
   // the millimetre: within half of one)
   EXPECT_NEAR(0.1 - x, 1e-3, 0.5e-3);
 }
@@ -160,7 +160,7 @@ TEST(Simulation, AnalyticAndDifferenceQuotientJacobiansGiveOneTrajectory) {
 TEST(Simulation, AnalyticJacobianNeedsFewerRightHandSides) {
   // with two states a difference-quotient Jacobian costs only two extra right-hand sides,
   // and single runs differ by more than that through their step sequences; summed over
-  // a tolerance sweep the analytic Jacobian needs fewer (README "Step cost")
+  // a tolerance sweep the analytic Jacobian needs fewer (docs/performance.md)
   for (const Experiment& experiment : {testing::Concentric(), testing::Eccentric()}) {
     long analytic_total = 0, quotient_total = 0;
     for (double rtol : {1e-4, 1e-6, 1e-8, 1e-10}) {

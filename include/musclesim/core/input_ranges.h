@@ -1,5 +1,5 @@
 // The range of every number the readers and the command line accept, each with the reason
-// for its bounds (README "Ranges"). Finite is not enough: 1e308 is finite, and 1e308 + 1e308 is
+// for its bounds (docs/tests.md). Finite is not enough: 1e308 is finite, and 1e308 + 1e308 is
 // not. The bounds keep each sum and product of the dynamics (m_eff xddot = F_load - T - c xdot - k
 // (x - l0)) and of the time grid far inside double precision, and they lie beyond anything a
 // muscle-like actuator or its test rig does, so no sensible scenario meets them.

@@ -1,4 +1,4 @@
-// The `model:` block that `musclesim identify` prints for curves (README "Identification"):
+// The `model:` block that `musclesim identify` prints for curves (docs/guide/identification.md):
 // each part the data determined, with its standard errors and RMSE in comments, or the part's
 // neutral stand-in with the reason. Shared by the command and the Python module, so that both
 // write the same block for the same data.

@@ -1,4 +1,4 @@
-// The comparisons of `musclesim identify --report` (README "Identification"): each curve's
+// The comparisons of `musclesim identify --report` (docs/guide/identification.md): each curve's
 // model fit against the reference fitters (a natural cubic spline, polynomials of degree 3
 // and 4), with the notes the report prints under it. Shared by the command and the Python
 // module, so that both report the same for the same data.

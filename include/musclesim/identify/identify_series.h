@@ -1,12 +1,12 @@
-// Identification of a scenario's parameters from measured time series (README "From time
-// series"): the scenario holds the experiment's known inputs, the measured series its
-// outputs at some times, and a weighted least-squares fit (Levenberg-Marquardt inside box
-// bounds) with the exact Jacobian of forward sensitivities (docs/model.md section 10)
-// estimates the listed parameters. What the Jacobian says about them comes with the fit:
-// standard errors and correlations from the Fisher information, the singular values of the
-// scaled sensitivity matrix and a verdict on which parameters this experiment determines.
-// The same analysis at the start values with the stated noise, without data, is the
-// experiment's design check (`identify --design`).
+// Identification of a scenario's parameters from measured time series
+// (docs/guide/identification.md): the scenario holds the experiment's known inputs, the measured
+// series its outputs at some times, and a weighted least-squares fit (Levenberg-Marquardt inside
+// box bounds) with the exact Jacobian of forward sensitivities (docs/model.md section 10) estimates
+// the listed parameters. What the Jacobian says about them comes with the fit: standard errors and
+// correlations from the Fisher information, the singular values of the scaled sensitivity matrix
+// and a verdict on which parameters this experiment determines. The same analysis at the start
+// values with the stated noise, without data, is the experiment's design check (`identify
+// --design`).
 #pragma once
 
 #include <Eigen/Dense>

@@ -1,4 +1,4 @@
-// The data file of `musclesim identify` on time series (README "From time series"): a
+// The data file of `musclesim identify` on time series (docs/guide/identification.md): a
 // scenario holding the experiment's known inputs, the measured series, and the parameters to
 // estimate, read and validated into plain structs. A data file with a top-level `scenario`
 // key is of this kind; one without is the measured curves' (io/identify_spec.h).

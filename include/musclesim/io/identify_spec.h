@@ -1,4 +1,4 @@
-// The data file of `musclesim identify` (README "Identification"): which measured curves
+// The data file of `musclesim identify` (docs/guide/identification.md): which measured curves
 // to fit, read and validated into a plain struct.
 #pragma once
 
@@ -7,7 +7,7 @@
 
 namespace musclesim {
 
-// What `musclesim identify` reads (README "Identification"): any subset of the curves.
+// What `musclesim identify` reads (docs/guide/identification.md): any subset of the curves.
 struct IdentifySpec {
   std::string source;                       // the data file's path, for messages [-]
   std::optional<std::string> passive_csv;   // path; columns length [m], tension [N]

@@ -1,4 +1,4 @@
-// Reading the `model:` block of a scenario file (README "The model block"): validated
+// Reading the `model:` block of a scenario file (docs/guide/model.md): validated
 // parameters, with the Gaussian fit run at load time when the block asks for one.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Writing a `model:` block (README "The model block") that LoadModelSpec reads back to the
+// Writing a `model:` block (docs/guide/model.md) that LoadModelSpec reads back to the
 // same parameters, with comments beside each part: how `musclesim identify` reports what the
 // data determined and what it could not.
 #pragma once

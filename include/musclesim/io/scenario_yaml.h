@@ -1,4 +1,4 @@
-// Reading scenario files (README "Scenario files") into a Scenario (scenario/scenario.h),
+// Reading scenario files (docs/guide/scenarios.md) into a Scenario (scenario/scenario.h),
 // validated before anything runs. A file with a top-level `nodes:` key is a network
 // (docs/model.md 7); any other is the single actuator, read as the network of section 7.4.
 #pragma once

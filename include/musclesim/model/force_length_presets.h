@@ -1,6 +1,6 @@
-// Standard normalised active force-length curves from the literature (README "The closed-form
-// fit"): what a fit of Gaussians can take as its target (`fit: {target: preset, ...}`) and what
-// `musclesim curves --preset` tabulates.
+// Standard normalised active force-length curves from the literature (docs/guide/model.md): what a
+// fit of Gaussians can take as its target (`fit: {target: preset, ...}`) and what `musclesim curves
+// --preset` tabulates.
 //
 // Every preset is a function f(s) of the normalised length s = l / l_opt, scaled so that its
 // peak is exactly 1 at s = 1, and exactly 0 outside its support [breaks.front(), breaks.back()].

@@ -1,4 +1,4 @@
-// A model block as written (README "The model block"): the tension model's parameters and, when
+// A model block as written (docs/guide/model.md): the tension model's parameters and, when
 // the block asks for one, the closed-form fit of its Gaussians, run again whenever the
 // parameters it depends on change.
 #pragma once

@@ -20,7 +20,7 @@
 
 namespace musclesim {
 
-// The single actuator as a file's single-actuator form gives it (README "Scenario files").
+// The single actuator as a file's single-actuator form gives it (docs/guide/scenarios.md).
 struct ActuatorScenarioSpec {
   std::string name;                              // the scenario's name, for messages [-]
   std::string source;                            // the file it came from [-]

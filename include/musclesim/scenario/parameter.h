@@ -1,5 +1,5 @@
 // Handles on the numbers of a Scenario, each named by the key path its file form writes it
-// at (README "Parameters"):
+// at (docs/guide/cpp.md):
 //   single actuator  model.f_iso, actuator.mass, initial.length, activation.after,
 //                    load[0].value, excitation.high, activation_dynamics.tau_activation
 //   network          models.muscle.velocity.v_max, nodes[1].mass, elements[0].activation.value,

@@ -1,4 +1,4 @@
-// The columns a scenario's run records, in the order of its CSV (README "Output"), as the
+// The columns a scenario's run records, in the order of its CSV (docs/guide/scenarios.md), as the
 // scenario's form chooses them: one list, which the CSV writer (io/run_csv.h) turns into text
 // and the Python module into NumPy arrays, so both hold the same numbers.
 //

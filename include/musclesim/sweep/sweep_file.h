@@ -1,4 +1,4 @@
-// Reading sweep files (README "Sweeps"): the axes, the metrics and the base scenario file,
+// Reading sweep files (docs/guide/sweeps.md): the axes, the metrics and the base scenario file,
 // into a SweepPlan whose points are the base read once and changed through parameter
 // handles (sweep_points.h). An axis whose values are not all numbers (a solver's method, an
 // element's name), or whose path names no number of the base, is applied to the base file's
