@@ -8,6 +8,7 @@
 # pyproject.toml) and the test environment's packages (pinned below) from PyPI.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
 python=${PYTHON:-python3}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

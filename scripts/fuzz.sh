@@ -25,7 +25,8 @@ source "$root/scripts/toolchain.sh"
 # a build directory already configured for fuzzing (as `scripts/test.sh --sanitize` makes
 # build-sanitize/) is used as it is: only the fuzz targets are compiled
 if ! grep -qx 'MUSCLESIM_FUZZ:BOOL=ON' "$build/CMakeCache.txt" 2>/dev/null; then
-  "$cmake" -S "$root" -B "$build" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+  # --fresh: a cache made by another compiler would lose every option below
+  "$cmake" --fresh -S "$root" -B "$build" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMUSCLESIM_FUZZ=ON -DMUSCLESIM_BUILD_TESTS=OFF \
     -DMUSCLESIM_BUILD_BENCHMARKS=OFF -DMUSCLESIM_BUILD_EXAMPLES=OFF -DMUSCLESIM_BUILD_CLI=OFF \
     >/dev/null

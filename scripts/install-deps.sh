@@ -20,6 +20,7 @@ packages=(
   doxygen               # scripts/docs.sh: the C++ API reference of the site (Doxyfile)
   python3-dev pybind11-dev python3-numpy   # the Python module (python/, MUSCLESIM_PYTHON)
   python3-pytest        # its tests
+  python3-venv          # the virtual environments of scripts/docs.sh and scripts/check_wheel.sh
   python3-matplotlib    # the README's Python example plots with it
   python3-pandas        # its tests turn results into DataFrames (the module does not need it)
 )

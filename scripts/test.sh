@@ -19,7 +19,12 @@ case "${1:-}" in
     dir=build-sanitize
     options=(-DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug
              -DMUSCLESIM_SANITIZE=ON -DMUSCLESIM_FUZZ=ON -DMUSCLESIM_BUILD_BENCHMARKS=OFF
-             -DMUSCLESIM_PYTHON=OFF) ;;
+             -DMUSCLESIM_PYTHON=OFF -DMUSCLESIM_BUILD_CLI=ON -DMUSCLESIM_BUILD_EXAMPLES=ON)
+    # a directory configured before with another compiler (GCC, as this build once was):
+    # CMake would drop its cache and every option with it, so it starts afresh
+    if [ -f "$dir/CMakeCache.txt" ] && ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang++' "$dir/CMakeCache.txt"; then
+      options+=(--fresh)
+    fi ;;
   *) echo "usage: scripts/test.sh [--sanitize]" >&2; exit 2 ;;
 esac
 

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -17,6 +18,8 @@ extern char** environ;
 namespace musclesim {
 
 namespace {
+
+constexpr std::size_t kMessageLimit = 16384;  // [bytes] of gnuplot's messages kept
 
 std::runtime_error StartFailure(int error) {
   return std::runtime_error(std::string("cannot start gnuplot (") + std::strerror(error) + ")");
@@ -50,7 +53,11 @@ void Exchange(int in, int out, const std::string& script, std::string& messages)
       const ssize_t n = ::read(out, buffer, sizeof buffer);
       if (n < 0 && errno == EINTR) continue;
       if (n <= 0) return;  // gnuplot closed its output: it has ended
-      messages.append(buffer, static_cast<std::size_t>(n));
+      // the first messages say what went wrong; what follows them is kept out of memory
+      if (messages.size() < kMessageLimit) {
+        messages.append(buffer,
+                        std::min(static_cast<std::size_t>(n), kMessageLimit - messages.size()));
+      }
     }
   }
 }
@@ -70,7 +77,10 @@ bool RunGnuplot(const std::string& script, std::string& messages) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, in[1], 0);
-  posix_spawn_file_actions_adddup2(&actions, out[1], 1);
+  // gnuplot reading a script from its standard input goes on after an error: a `set output`
+  // it could not open leaves the plot to go to standard output, so that goes nowhere; its
+  // messages (errors, warnings, print) are on standard error
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
   posix_spawn_file_actions_adddup2(&actions, out[1], 2);
   std::string program = "gnuplot";
   char* argv[] = {program.data(), nullptr};

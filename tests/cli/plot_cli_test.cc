@@ -304,5 +304,18 @@ TEST(PlotCli, TheScriptReachesGnuplotWithoutATemporaryFile) {
   EXPECT_EQ(Entries(dir), std::set<std::string>{"a.png"});
 }
 
+TEST(PlotCli, WhatGnuplotPlotsToItsStandardOutputStaysOutOfTheMessage) {
+  // gnuplot going on after a `set output` it could not open plots to its standard output
+  const std::string dir = FreshFolder(), bin = FreshFolder("bin"), run = Trajectory();
+  std::ofstream(bin + "gnuplot") << "#!/bin/sh\ncat > /dev/null\nprintf 'PNGDATA'\n"
+                                    "echo 'cannot open file' >&2\nexit 1\n";
+  std::filesystem::permissions(bin + "gnuplot", std::filesystem::perms::owner_all);
+  const Outcome r =
+      RunIn(dir, {run, "-o", "a.png"}, {"PATH=" + bin + ":" + std::string(std::getenv("PATH"))});
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("gnuplot failed: cannot open file"));
+  EXPECT_THAT(r.err, Not(HasSubstr("PNGDATA")));
+}
+
 }  // namespace
 }  // namespace musclesim
