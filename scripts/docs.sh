@@ -8,6 +8,8 @@
 # by the test suite (tests/readme_commands.sh, python/tests/test_readme.py), not here.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Doxygen and python3-venv are Debian packages, installed with the others when missing
+bash scripts/install-deps.sh >/dev/null
 
 # MkDocs, mkdocstrings with its Python handler, and Griffe (griffelib), the handler's loader
 requirements=(mkdocs==1.6.1 mkdocstrings==1.0.8 mkdocstrings-python==2.0.11 griffelib==2.4.1)
@@ -17,16 +19,6 @@ if [ "$(cat "$venv/requirements.txt" 2>/dev/null)" != "$(printf '%s\n' "${requir
   python3 -m venv "$venv"
   "$venv/bin/python" -m pip install -q "${requirements[@]}"
   printf '%s\n' "${requirements[@]}" >"$venv/requirements.txt"
-fi
-
-# Doxygen, Debian's package (as scripts/install-deps.sh installs it), when it is missing
-if ! dpkg-query -W -f='${Status}' doxygen 2>/dev/null | grep -q 'install ok installed'; then
-  echo "docs.sh: installing doxygen"
-  sudo_cmd=()
-  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
-  export DEBIAN_FRONTEND=noninteractive
-  "${sudo_cmd[@]}" apt-get update -qq
-  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends doxygen
 fi
 
 "$venv/bin/mkdocs" build --strict --clean --site-dir site
