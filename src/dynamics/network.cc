@@ -75,11 +75,14 @@ std::vector<bool> AnchoredNodes(const std::vector<Node>& nodes, Components& join
 }  // namespace
 
 NetworkSystem::NetworkSystem(std::vector<Node> nodes, std::vector<Element> elements,
-                             std::vector<NodeLoad> loads, std::vector<Controller> controllers)
+                             std::vector<NodeLoad> loads, std::vector<Controller> controllers,
+                             Space space)
     : nodes_(std::move(nodes)),
       elements_(std::move(elements)),
       loads_(std::move(loads)),
-      controllers_(std::move(controllers)) {
+      controllers_(std::move(controllers)),
+      space_(space) {
+  Validate(space_);
   for (std::size_t i = 0; i < nodes_.size(); ++i) ValidateEntry(nodes_[i], "nodes", i);
   for (std::size_t i = 0; i < elements_.size(); ++i) ValidateEntry(elements_[i], "elements", i);
   for (std::size_t i = 0; i < controllers_.size(); ++i) {

@@ -2,6 +2,7 @@
 
 #include <cassert>
 #include <cmath>
+#include <string>
 
 #include "musclesim/core/errors.h"
 #include "musclesim/core/input_ranges.h"
@@ -30,19 +31,61 @@ ElementKind ParseElementKind(std::string_view text) {
   return Parse(kElementKindNames, "type", text);
 }
 
+namespace {
+
+// key + "[i]", built by appending (GCC 12 warns falsely on "[" + std::to_string(i)).
+std::string Indexed(std::string key, std::size_t i) {
+  key.append("[").append(std::to_string(i)).append("]");
+  return key;
+}
+
+}  // namespace
+
+void Validate(const Space& space) {
+  Require(space.dimensions >= 1 && space.dimensions <= 3, "dimensions", space.dimensions,
+          "must be 1, 2 or 3");
+  for (int c = 0; c < 3; ++c) {
+    const std::string path = Indexed("gravity", static_cast<std::size_t>(c));
+    Require(std::isfinite(space.gravity[c]), path, space.gravity[c], "must be finite [m/s^2]");
+    Require(c < space.dimensions || space.gravity[c] == 0.0, path, space.gravity[c],
+            "must be 0: the network has " + std::to_string(space.dimensions) + " dimension(s)");
+  }
+  Require(space.dimensions > 1 || space.gravity[0] == 0.0, "gravity[0]", space.gravity[0],
+          "must be 0 on a line: hang a weight with a load of type mass (docs/guide/networks.md)");
+}
+
+namespace {
+
+// A prescribed coordinate's motion, its errors at `key` ("prescribed", "prescribed[1]").
+void ValidateMotion(const Waveform& motion, const std::string& key) {
+  try {
+    Validate(motion);
+  } catch (const ParameterError& e) {
+    throw ParameterError(key + "." + e.path(), e.value(), e.rule());
+  }
+  // a jump in position would move the node at infinite speed
+  if (motion.kind == WaveformKind::kStep || motion.kind == WaveformKind::kPulses) {
+    throw ParameterError(key + ".type", std::string(ToString(motion.kind)),
+                         "must be continuous in time: constant, ramp, sine or table");
+  }
+}
+
+}  // namespace
+
 void Validate(const Node& node) {
   switch (node.kind) {
     case NodeKind::kFixed:
       Require(std::isfinite(node.position), "fixed", node.position, "must be finite [m]");
-      break;
-    case NodeKind::kPrescribed: try { Validate(node.motion);
-      } catch (const ParameterError& e) {
-        throw ParameterError("prescribed." + e.path(), e.value(), e.rule());
+      for (int c = 0; c < 2; ++c) {
+        Require(std::isfinite(node.position_yz[c]),
+                Indexed("fixed", static_cast<std::size_t>(c) + 1), node.position_yz[c],
+                "must be finite [m]");
       }
-      // a jump in position would move the node at infinite speed
-      if (node.motion.kind == WaveformKind::kStep || node.motion.kind == WaveformKind::kPulses) {
-        throw ParameterError("prescribed.type", std::string(ToString(node.motion.kind)),
-                             "must be continuous in time: constant, ramp, sine or table");
+      break;
+    case NodeKind::kPrescribed:
+      ValidateMotion(node.motion, "prescribed");
+      for (int c = 0; c < 2; ++c) {
+        ValidateMotion(node.motion_yz[c], Indexed("prescribed", static_cast<std::size_t>(c) + 1));
       }
       break;
     case NodeKind::kFree:
@@ -50,6 +93,14 @@ void Validate(const Node& node) {
               "must be finite and > 0 [kg]");
       Require(std::isfinite(node.position), "position", node.position, "must be finite [m]");
       Require(std::isfinite(node.velocity), "velocity", node.velocity, "must be finite [m/s]");
+      for (int c = 0; c < 2; ++c) {
+        Require(std::isfinite(node.position_yz[c]),
+                Indexed("position", static_cast<std::size_t>(c) + 1), node.position_yz[c],
+                "must be finite [m]");
+        Require(std::isfinite(node.velocity_yz[c]),
+                Indexed("velocity", static_cast<std::size_t>(c) + 1), node.velocity_yz[c],
+                "must be finite [m/s]");
+      }
       break;
   }
 }
@@ -68,6 +119,49 @@ Node Node::Prescribed(std::string name, Waveform motion) {
   node.kind = NodeKind::kPrescribed;
   node.motion = std::move(motion);
   return Validated(std::move(node));
+}
+
+Node Node::Fixed(std::string name, const Coordinates& position) {
+  Node node;
+  node.name = std::move(name);
+  node.kind = NodeKind::kFixed;
+  node.position = position[0];
+  node.position_yz = {position[1], position[2]};
+  return Validated(std::move(node));
+}
+
+Node Node::Prescribed(std::string name, std::array<Waveform, 3> motion) {
+  Node node;
+  node.name = std::move(name);
+  node.kind = NodeKind::kPrescribed;
+  node.motion = std::move(motion[0]);
+  node.motion_yz = {std::move(motion[1]), std::move(motion[2])};
+  return Validated(std::move(node));
+}
+
+Node Node::Free(std::string name, double mass, const Coordinates& position,
+                const Coordinates& velocity) {
+  Node node;
+  node.name = std::move(name);
+  node.kind = NodeKind::kFree;
+  node.mass = mass;
+  node.position = position[0];
+  node.position_yz = {position[1], position[2]};
+  node.velocity = velocity[0];
+  node.velocity_yz = {velocity[1], velocity[2]};
+  return Validated(std::move(node));
+}
+
+ViaPoint ViaPoint::Node(std::string name) {
+  ViaPoint via;
+  via.node = std::move(name);
+  return via;
+}
+
+ViaPoint ViaPoint::Fixed(const Coordinates& position) {
+  ViaPoint via;
+  via.position = position;
+  return via;
 }
 
 Node Node::Free(std::string name, double mass, double position, double velocity) {
@@ -118,6 +212,14 @@ void Validate(const Element& e) {
       Require(std::isfinite(e.damping) && e.damping >= 0.0, "damping", e.damping,
               "must be finite and >= 0 [N s/m]");
       break;
+  }
+  for (std::size_t v = 0; v < e.via.size(); ++v) {
+    if (!e.via[v].node.empty()) continue;
+    for (int c = 0; c < 3; ++c) {
+      Require(std::isfinite(e.via[v].position[c]),
+              Indexed(Indexed("via", v), static_cast<std::size_t>(c)), e.via[v].position[c],
+              "must be finite [m]");
+    }
   }
 }
 

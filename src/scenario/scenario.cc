@@ -31,7 +31,9 @@ const std::string* Scenario::ModelName(const TensionModel* model) const {
   return nullptr;
 }
 
-NetworkSystem Scenario::Build() const { return NetworkSystem(nodes, elements, loads, controllers); }
+NetworkSystem Scenario::Build() const {
+  return NetworkSystem(nodes, elements, loads, controllers, space);
+}
 
 NetworkRunRequest Scenario::Request() const {
   NetworkRunRequest r;

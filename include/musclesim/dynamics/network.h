@@ -59,8 +59,12 @@ class NetworkSystem {
   // by elements to a fixed or prescribed node; every controller's measure and actuators
   // resolved ("controllers[0].drives"), every controlled actuator driven by one controller,
   // no algebraic loop (docs/model.md 11).
+  // In 2 or 3 dimensions (`space`, docs/model.md 12) also: via points resolved ("elements[1]
+  // .via[0]"), no node twice on one path, two fixed via points never in the same place, load
+  // directions not zero, no controller (not yet).
   NetworkSystem(std::vector<Node> nodes, std::vector<Element> elements,
-                std::vector<NodeLoad> loads = {}, std::vector<Controller> controllers = {});
+                std::vector<NodeLoad> loads = {}, std::vector<Controller> controllers = {},
+                Space space = {});
 
   int state_size() const { return node_state_count() + activation_count() + integral_count(); }
   // The free nodes' positions and velocities: the first this many states.
@@ -124,6 +128,8 @@ class NetworkSystem {
   const std::vector<Element>& elements() const { return elements_; }
   const std::vector<NodeLoad>& loads() const { return loads_; }
   const std::vector<Controller>& controllers() const { return controllers_; }
+  const Space& space() const { return space_; }
+  int dimensions() const { return space_.dimensions; }
   int FindNode(std::string_view name) const;        // -1 if none
   int FindElement(std::string_view name) const;     // -1 if none
   int FindController(std::string_view name) const;  // -1 if none
@@ -267,6 +273,7 @@ class NetworkSystem {
   std::vector<Element> elements_;
   std::vector<NodeLoad> loads_;
   std::vector<Controller> controllers_;
+  Space space_;
   // each part's index by its name
   std::unordered_map<std::string, int> node_index_, element_index_, controller_index_;
   std::vector<Loop> loops_;  // one per controller

@@ -1,12 +1,15 @@
-// The parts of a network on a line (docs/model.md section 7): nodes, the elements joining
-// them and the loads on free nodes. Make them with the validating factories
-// (Element::Spring("spring", "wall", "load", 50.0, 0.1)); NetworkSystem checks how they fit.
+// The parts of a network (docs/model.md section 7; in the plane or in space, section 12):
+// nodes, the elements joining them and the loads on free nodes. Make them with the validating
+// factories (Element::Spring("spring", "wall", "load", 50.0, 0.1)); NetworkSystem checks how
+// they fit.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "musclesim/dynamics/activation_dynamics.h"
 #include "musclesim/dynamics/loads.h"
@@ -15,35 +18,76 @@
 
 namespace musclesim {
 
+// A point or vector of a network's space: x, y, z; a planar network's z is 0, a line's y and
+// z are.
+using Coordinates = std::array<double, 3>;
+
+// The space a network lives in (docs/model.md 12): `dimensions` 1 (a line, section 7
+// exactly), 2 (the x-y plane) or 3, and the acceleration of gravity on every free node's mass.
+struct Space {
+  int dimensions = 1;
+  Coordinates gravity{};  // [m/s^2]; only the first `dimensions` entries may be nonzero,
+                          // and none on a line (a hanging mass there is a `mass` load)
+};
+
+// Throws ParameterError ("dimensions", "gravity").
+void Validate(const Space& space);
+
 enum class NodeKind { kFixed, kPrescribed, kFree };
 std::string_view ToString(NodeKind kind);
 
-// A point on the axis. Only the fields of its kind are used:
+// A point of the network. Only the fields of its kind are used:
 //   fixed:      position
 //   prescribed: motion, a continuous waveform x(t) (its velocity is the waveform's slope)
 //   free:       mass, and position and velocity at the start
+// In 2 or 3 dimensions `position`, `velocity` and `motion` are the x coordinate's and the
+// `_yz` fields hold y and z (z unused in 2).
 struct Node {
   std::string name;
   NodeKind kind = NodeKind::kFree;
-  double position = 0.0;  // fixed: x; free: x(t_start) [m]
-  double velocity = 0.0;  // free: xdot(t_start) [m/s]
-  double mass = 1.0;      // free: [kg], > 0 (mass loads add to it)
-  Waveform motion;        // prescribed: x(t) [m]; constant, ramp, sine or table
+  double position = 0.0;                // fixed: x; free: x(t_start) [m]
+  double velocity = 0.0;                // free: xdot(t_start) [m/s]
+  double mass = 1.0;                    // free: [kg], > 0 (mass loads add to it)
+  Waveform motion;                      // prescribed: x(t) [m]; constant, ramp, sine or table
+  std::array<double, 2> position_yz{};  // fixed, free: y, z [m]
+  std::array<double, 2> velocity_yz{};  // free: ydot, zdot at t_start [m/s]
+  std::array<Waveform, 2> motion_yz;    // prescribed: y(t), z(t) [m]
+
+  // (x, y, z) of the position and velocity fields.
+  Coordinates PositionCoordinates() const { return {position, position_yz[0], position_yz[1]}; }
+  Coordinates VelocityCoordinates() const { return {velocity, velocity_yz[0], velocity_yz[1]}; }
 
   static Node Fixed(std::string name, double position);
   static Node Prescribed(std::string name, Waveform motion);
   static Node Free(std::string name, double mass, double position, double velocity = 0.0);
+  // In the plane or in space.
+  static Node Fixed(std::string name, const Coordinates& position);
+  static Node Prescribed(std::string name, std::array<Waveform, 3> motion);
+  static Node Free(std::string name, double mass, const Coordinates& position,
+                   const Coordinates& velocity = {});
 };
 
 // Throws ParameterError (paths as the YAML keys of a node: "mass", "prescribed.type").
 void Validate(const Node& node);
+
+// A point an element's path passes through between its ends (docs/model.md 12.1): a node of
+// the network (a free one carries the pulley's force), or fixed coordinates.
+struct ViaPoint {
+  std::string node;        // a node's name; empty: the fixed point `position`
+  Coordinates position{};  // [m]
+
+  static ViaPoint Node(std::string name);
+  static ViaPoint Fixed(const Coordinates& position);
+};
 
 enum class ElementKind { kActuator, kSpring, kTendon, kDamper };
 std::string_view ToString(ElementKind kind);
 ElementKind ParseElementKind(std::string_view text);  // ParameterError("type")
 
 // A two-node element: length l = x_to - x_from, a tension T pulling its nodes together
-// (+T on `from`, -T on `to`). Only the fields of its kind are used:
+// (+T on `from`, -T on `to`). In 2 or 3 dimensions its length is its path's, from `from`
+// over its `via` points to `to`, and T acts along each segment (docs/model.md 12.2). Only the
+// fields of its kind are used:
 //   actuator: T(l, v, u) of the model, v = -dl/dt, u = activation(t); or, with activation
 //             dynamics (`excitation` set, docs/model.md section 8), u a state of the ODE
 //             driven by excitation->signal, and `activation` unused; or, `controlled`, u (or
@@ -64,9 +108,10 @@ struct Element {
   double stiffness = 0.0;                     // spring, linear tendon [N/m], >= 0
   double rest_length = 0.0;                   // spring [m]
   double slack_length = 0.0;                  // tendon [m]
-  double k = 0.0;        // exponential tendon [N], > 0 (0: the tendon is linear)
-  double alpha = 0.0;    // exponential tendon [1/m], > 0
-  double damping = 0.0;  // damper [N s/m], >= 0
+  double k = 0.0;             // exponential tendon [N], > 0 (0: the tendon is linear)
+  double alpha = 0.0;         // exponential tendon [1/m], > 0
+  double damping = 0.0;       // damper [N s/m], >= 0
+  std::vector<ViaPoint> via;  // in 2 or 3 dimensions: the points between from and to, in order
 
   static Element Actuator(std::string name, std::string from, std::string to,
                           std::shared_ptr<const TensionModel> model, Waveform activation);
@@ -96,10 +141,12 @@ struct Element {
 // "excitation.high", "activation_dynamics.tau_activation", "initial_activation").
 void Validate(const Element& element);
 
-// A load (dynamics/loads.h) on a free node.
+// A load (dynamics/loads.h) on a free node. In 2 or 3 dimensions it acts along `direction`
+// (made a unit vector): its x is the node's position along it, its force points along it.
 struct NodeLoad {
   std::string node;
   Load load;
+  Coordinates direction{1.0, 0.0, 0.0};  // [-], not zero
 };
 
 }  // namespace musclesim

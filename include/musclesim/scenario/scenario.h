@@ -49,6 +49,7 @@ struct Scenario {
   std::string name;    // for messages [-]
   std::string source;  // the file it was read from, or a name for one built in code [-]
   ScenarioForm form = ScenarioForm::kNetwork;
+  Space space;  // `dimensions` and `gravity` (docs/model.md 12); a line by default
   std::map<std::string, ScenarioModel> models;  // by name (the single actuator's: "model")
   std::vector<Node> nodes;                      // in the file's order, the CSV's column order
   std::vector<Element> elements;        // in the file's order; an actuator's model is one of
