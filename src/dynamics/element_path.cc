@@ -6,13 +6,14 @@
 namespace musclesim {
 
 double PathGeometry::shortest_segment() const {
-  return segment_length.empty() ? std::numeric_limits<double>::infinity()
-                                : *std::min_element(segment_length.begin(), segment_length.end());
+  double shortest = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < segments(); ++k) shortest = std::min(shortest, segment_length[k]);
+  return shortest;
 }
 
 double PathGeometry::length_rate(std::span<const Point> velocities) const {
   double rate = 0.0;
-  for (std::size_t j = 0; j < gradient.size(); ++j) rate += gradient[j].dot(velocities[j]);
+  for (std::size_t j = 0; j < count; ++j) rate += gradient[j].dot(velocities[j]);
   return rate;
 }
 
@@ -23,7 +24,7 @@ Eigen::Matrix3d PathGeometry::hessian(std::size_t j, std::size_t k) const {
     return (Eigen::Matrix3d::Identity() - direction[s] * direction[s].transpose()) /
            segment_length[s];
   };
-  const std::size_t segments = segment_length.size();
+  const std::size_t segments = this->segments();
   Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
   if (j == k) {
     if (j > 0) h += block(j - 1);
@@ -38,10 +39,9 @@ Eigen::Matrix3d PathGeometry::hessian(std::size_t j, std::size_t k) const {
 
 PathGeometry MeasurePath(std::span<const Point> points) {
   PathGeometry path;
+  path.count = points.size();
   const std::size_t segments = points.size() - 1;
-  path.segment_length.resize(segments);
-  path.direction.resize(segments);
-  path.gradient.assign(points.size(), Point::Zero());
+  for (std::size_t j = 0; j < path.count; ++j) path.gradient[j].setZero();
   for (std::size_t k = 0; k < segments; ++k) {
     const Point s = points[k + 1] - points[k];
     path.segment_length[k] = s.norm();
@@ -54,28 +54,43 @@ PathGeometry MeasurePath(std::span<const Point> points) {
   return path;
 }
 
+std::array<Point, kMaxPathPoints> RateGradient(const PathGeometry& path,
+                                               std::span<const Point> velocities) {
+  // H is symmetric (H_ik = H_ki^T) and nonzero for |i - k| <= 1 only
+  const std::size_t n = path.points();
+  std::array<Point, kMaxPathPoints> rate_gradient;
+  for (std::size_t k = 0; k < n; ++k) {
+    rate_gradient[k].setZero();
+    for (std::size_t i = (k == 0 ? 0 : k - 1); i <= std::min(k + 1, n - 1); ++i) {
+      rate_gradient[k] += path.hessian(i, k).transpose() * velocities[i];
+    }
+  }
+  return rate_gradient;
+}
+
+Eigen::Matrix3d PositionBlock(const PathGeometry& path, std::span<const Point> rate_gradient,
+                              const PathTension& tension, std::size_t j, std::size_t k) {
+  return -tension.d_length * path.gradient[j] * path.gradient[k].transpose() -
+         tension.d_rate * path.gradient[j] * rate_gradient[k].transpose() -
+         tension.tension * path.hessian(j, k);
+}
+
+Eigen::Matrix3d VelocityBlock(const PathGeometry& path, const PathTension& tension, std::size_t j,
+                              std::size_t k) {
+  return -tension.d_rate * path.gradient[j] * path.gradient[k].transpose();
+}
+
 PathForceJacobian ForceJacobian(const PathGeometry& path, std::span<const Point> velocities,
                                 const PathTension& tension) {
   const std::size_t n = path.points();
   PathForceJacobian jacobian;
   jacobian.points = n;
-  jacobian.d_position.assign(n * n, Eigen::Matrix3d::Zero());
-  jacobian.d_velocity.assign(n * n, Eigen::Matrix3d::Zero());
-  // d ldot / dq_k = sum_i qdot_i^T H_ik (H is symmetric: H_ik = H_ki^T)
-  std::vector<Point> rate_gradient(n, Point::Zero());
-  for (std::size_t k = 0; k < n; ++k) {
-    for (std::size_t i = (k == 0 ? 0 : k - 1); i <= std::min(k + 1, n - 1); ++i) {
-      rate_gradient[k] += path.hessian(i, k).transpose() * velocities[i];
-    }
-  }
+  const std::array<Point, kMaxPathPoints> rate_gradient = RateGradient(path, velocities);
   for (std::size_t j = 0; j < n; ++j) {
     for (std::size_t k = 0; k < n; ++k) {
-      const Eigen::Matrix3d outer = path.gradient[j] * path.gradient[k].transpose();
-      jacobian.d_position[j * n + k] =
-          -tension.d_length * outer -
-          tension.d_rate * path.gradient[j] * rate_gradient[k].transpose() -
-          tension.tension * path.hessian(j, k);
-      jacobian.d_velocity[j * n + k] = -tension.d_rate * outer;
+      jacobian.d_position.push_back(
+          PositionBlock(path, std::span(rate_gradient.data(), n), tension, j, k));
+      jacobian.d_velocity.push_back(VelocityBlock(path, tension, j, k));
     }
   }
   return jacobian;

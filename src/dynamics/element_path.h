@@ -9,6 +9,8 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <array>
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -16,14 +18,20 @@ namespace musclesim {
 
 using Point = Eigen::Vector3d;
 
+// The most points a path may have: its two ends and up to 14 via points. A fixed capacity,
+// so that measuring a path allocates nothing in the right-hand side.
+constexpr std::size_t kMaxPathPoints = 16;
+
 // The segments of one path at one instant.
 struct PathGeometry {
-  double length = 0.0;                 // l = sum_k L_k [m]
-  std::vector<double> segment_length;  // L_k = |q_(k+1) - q_k| [m]
-  std::vector<Point> direction;        // e_k, the unit vector of segment k
-  std::vector<Point> gradient;         // G_j = dl/dq_j, one per point [-]
+  std::size_t count = 0;                                  // points, at most kMaxPathPoints
+  double length = 0.0;                                    // l = sum_k L_k [m]
+  std::array<double, kMaxPathPoints - 1> segment_length;  // L_k = |q_(k+1) - q_k| [m]
+  std::array<Point, kMaxPathPoints - 1> direction;        // e_k, the unit vector of segment k
+  std::array<Point, kMaxPathPoints> gradient;             // G_j = dl/dq_j, one per point [-]
 
-  std::size_t points() const { return gradient.size(); }
+  std::size_t points() const { return count; }
+  std::size_t segments() const { return count - 1; }
   // The shortest segment: a path whose segment reaches zero length has no direction there.
   double shortest_segment() const;
   // ldot = sum_j G_j . qdot_j [m/s] for the points' velocities.
@@ -32,9 +40,22 @@ struct PathGeometry {
   Eigen::Matrix3d hessian(std::size_t j, std::size_t k) const;
 };
 
-// The geometry of the path through `points` (at least two; every segment of nonzero length,
-// which the caller ensures: the run stops at a root before a segment closes).
+// The geometry of the path through `points` (two to kMaxPathPoints; every segment of nonzero
+// length, which the caller ensures: the run stops at a root before a segment closes).
 PathGeometry MeasurePath(std::span<const Point> points);
+
+// d ldot / dq_k = sum_i qdot_i^T H_ik for every point k: how the lengthening rate changes
+// as the points move (the directions turn).
+std::array<Point, kMaxPathPoints> RateGradient(const PathGeometry& path,
+                                               std::span<const Point> velocities);
+
+struct PathTension;
+// Blocks (j, k) of the Jacobian below, one at a time (no allocation), with `rate_gradient`
+// RateGradient's.
+Eigen::Matrix3d PositionBlock(const PathGeometry& path, std::span<const Point> rate_gradient,
+                              const PathTension& tension, std::size_t j, std::size_t k);
+Eigen::Matrix3d VelocityBlock(const PathGeometry& path, const PathTension& tension, std::size_t j,
+                              std::size_t k);
 
 // The Jacobian of the forces F_j = -T G_j on the path's points, for a tension T(l, ldot) with
 // partial derivatives dT/dl and dT/dldot (docs/model.md 12.4):
@@ -60,6 +81,7 @@ struct PathTension {
   double d_rate = 0.0;    // dT/dldot [N s/m] (the rate of lengthening, -v)
 };
 
+// Every block at once (for tests and diagnostics: it allocates).
 PathForceJacobian ForceJacobian(const PathGeometry& path, std::span<const Point> velocities,
                                 const PathTension& tension);
 

@@ -118,9 +118,17 @@ void NetworkSystem::Resolve() {
   Components joined(nodes_.size());
   for (const Link& link : links_) {
     joined.Join(static_cast<std::size_t>(link.from), static_cast<std::size_t>(link.to));
+    // a via node is on the path: the element's tension acts on it too
+    for (int p = link.path_begin; p < link.path_end; ++p) {
+      if (path_points_[p].node >= 0) {
+        joined.Join(static_cast<std::size_t>(link.from),
+                    static_cast<std::size_t>(path_points_[p].node));
+      }
+    }
   }
   std::vector<std::vector<Load>> node_loads = LoadsByNode();
   AddFreeNodes(std::move(node_loads), AnchoredNodes(nodes_, joined));
+  if (space_.dimensions > 1) ResolveSpace();
   ResolveControllers(states);
   FindSingleNode();
 }
@@ -136,10 +144,11 @@ int NetworkSystem::NodeNamed(const std::string& name, const std::string& path) c
 int NetworkSystem::NumberEnds() {
   int states = 0;
   for (const Node& node : nodes_) {
-    End end{node.kind, -1, node.position, static_cast<int>(ends_.size())};
+    End end{node.kind, -1, node.position, static_cast<int>(ends_.size()),
+            node.PositionCoordinates()};
     if (node.kind == NodeKind::kFree) {
       end.state = states;
-      states += 2;
+      states += 2 * space_.dimensions;  // d coordinates, d velocities
     }
     ends_.push_back(end);
   }
@@ -157,6 +166,11 @@ void NetworkSystem::AddLink(std::size_t e, int& states) {
     throw ParameterError(Entry("elements", e, "to"), element.to,
                          "must differ from `from`: an element joins two nodes");
   }
+  if (space_.dimensions == 1 && !element.via.empty()) {
+    throw ParameterError(Entry("elements", e, "via"),
+                         std::to_string(element.via.size()) + " points",
+                         "via points need dimensions 2 or 3: on a line an element is straight");
+  }
   if (element.kind == ElementKind::kActuator && element.excitation) {
     // after every node's states (the nodes were numbered first)
     link.activation = states++;
@@ -164,6 +178,7 @@ void NetworkSystem::AddLink(std::size_t e, int& states) {
     kinks_.push_back({Kink::kExcitation, static_cast<int>(e), 0.0});
   }
   links_.push_back(link);
+  if (space_.dimensions > 1) AddPath(e);
   const bool inert = (element.kind == ElementKind::kDamper && element.damping == 0.0) ||
                      (element.kind == ElementKind::kSpring && element.stiffness == 0.0);
   if (!inert) active_links_.push_back(static_cast<int>(e));
@@ -208,7 +223,7 @@ void NetworkSystem::AddFreeNodes(std::vector<std::vector<Load>> node_loads,
     }
     LoadSet set(std::move(node_loads[i]));
     const double inverse_mass = 1.0 / (nodes_[i].mass + set.AddedMass());
-    free_nodes_.push_back({static_cast<int>(i), std::move(set), inverse_mass, -1, -1});
+    free_nodes_.push_back({static_cast<int>(i), std::move(set), inverse_mass, {}, {}, {}});
   }
   if (free_nodes_.empty()) {
     throw ParameterError("nodes", std::to_string(nodes_.size()) + " nodes",
@@ -217,7 +232,9 @@ void NetworkSystem::AddFreeNodes(std::vector<std::vector<Load>> node_loads,
 }
 
 void NetworkSystem::FindSingleNode() {
-  if (free_nodes_.size() != 1 || !activations_.empty() || !controllers_.empty()) return;
+  if (space_.dimensions > 1 || free_nodes_.size() != 1 || !activations_.empty() ||
+      !controllers_.empty())
+    return;
   const int free = free_nodes_.front().node;
   for (const int e : active_links_) {
     const Link& link = links_[e];
@@ -231,13 +248,16 @@ void NetworkSystem::FindSingleNode() {
 void NetworkSystem::BuildPattern() {
   // every (row, column) pair that can be nonzero, then compressed-column order
   std::vector<std::pair<int, int>> pairs;  // (column, row)
+  const int d = space_.dimensions;
   for (const FreeNode& f : free_nodes_) {
     const int s = ends_[f.node].state;
-    for (int r = s; r < s + 2; ++r) {
-      for (int c = s; c < s + 2; ++c) pairs.emplace_back(c, r);
+    for (int r = s; r < s + 2 * d; ++r) {
+      for (int c = s; c < s + 2 * d; ++c) pairs.emplace_back(c, r);
     }
   }
+  if (d > 1) AddSpacePattern(pairs);
   for (const Link& link : links_) {
+    if (d > 1) break;  // AddSpacePattern's
     for (int row_end : {link.from, link.to}) {
       for (int col_end : {link.from, link.to}) {
         const int r = ends_[row_end].state, c = ends_[col_end].state;
@@ -275,19 +295,24 @@ void NetworkSystem::BuildPattern() {
 
   for (FreeNode& node : free_nodes_) {
     const int s = ends_[node.node].state;
-    node.slot_rate = slot(s, s + 1);
-    node.slot_position = slot(s + 1, s);
+    for (int r = 0; r < d; ++r) {
+      node.slot_rate[r] = slot(s + r, s + d + r);
+      for (int c = 0; c < d; ++c) node.slot_position[3 * r + c] = slot(s + d + r, s + c);
+    }
   }
-  // an entry in a velocity row (odd: free node f has states 2f, 2f + 1) is scaled by 1/m_f;
-  // the activation rows after the nodes' are not
-  const int node_states = 2 * static_cast<int>(free_nodes_.size());
+  // an entry in a velocity row (free node f has states 2df .. 2df + 2d - 1, its velocities
+  // the last d) is scaled by 1/m_f; the activation rows after the nodes' are not
+  const int node_states = node_state_count();
   row_scale_.assign(pairs.size(), -1);
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const int r = pattern_.rows[k];
-    if (r < node_states && r % 2 == 1) row_scale_[k] = r / 2;
+    if (r < node_states && r % (2 * d) >= d) row_scale_[k] = r / (2 * d);
   }
   for (Activation& a : activations_) a.slot = slot(a.state, a.state);
+  if (d > 1) FindSpaceSlots(slot);
   for (Link& link : links_) {
+    if (d > 1) break;  // FindSpaceSlots'
+
     const int ends[2] = {link.from, link.to};
     for (int r = 0; r < 2; ++r) {
       for (int c = 0; c < 2; ++c) {
@@ -305,10 +330,15 @@ void NetworkSystem::BuildPattern() {
 }
 
 void NetworkSystem::InitialState(double t_start, double* y) const {
+  const int d = space_.dimensions;
   for (const FreeNode& f : free_nodes_) {
     const int s = ends_[f.node].state;
-    y[s] = nodes_[f.node].position;
-    y[s + 1] = nodes_[f.node].velocity;
+    const Coordinates position = nodes_[f.node].PositionCoordinates();
+    const Coordinates velocity = nodes_[f.node].VelocityCoordinates();
+    for (int c = 0; c < d; ++c) {
+      y[s + c] = position[c];
+      y[s + d + c] = velocity[c];
+    }
   }
   for (const Activation& a : activations_) {
     y[a.state] = elements_[a.element].excitation->InitialActivation(t_start);
@@ -316,7 +346,8 @@ void NetworkSystem::InitialState(double t_start, double* y) const {
 }
 
 void NetworkSystem::CheckInitialState(double t, const double* y) const {
-  for (std::size_t e = 0; e < elements_.size(); ++e) {
+  if (space_.dimensions > 1) CheckInitialPaths(t, y);
+  for (std::size_t e = 0; e < elements_.size() && space_.dimensions == 1; ++e) {
     const double l = Length(static_cast<int>(e), t, y);
     if (!(l > 0.0)) {
       const Element& element = elements_[e];
@@ -358,11 +389,13 @@ double NetworkSystem::VelocityOf(const End& end, double t, const double* y) cons
 }
 
 double NetworkSystem::Length(int e, double t, const double* y) const {
+  if (space_.dimensions > 1) return SegmentLength(e, -1, t, y);
   const Link& link = links_[e];
   return PositionOf(ends_[link.to], t, y) - PositionOf(ends_[link.from], t, y);
 }
 
 double NetworkSystem::LengtheningRate(int e, double t, const double* y) const {
+  if (space_.dimensions > 1) return SpaceLengtheningRate(e, t, y);
   const Link& link = links_[e];
   return VelocityOf(ends_[link.to], t, y) - VelocityOf(ends_[link.from], t, y);
 }
@@ -400,6 +433,7 @@ void NetworkSystem::SingleNodeRightHandSide(double t, const double* y, double* y
 
 void NetworkSystem::RightHandSide(double t, const double* y, double* ydot) const {
   if (single_node_) return SingleNodeRightHandSide(t, y, ydot);
+  if (space_.dimensions > 1) return SpaceRightHandSide(t, y, ydot);
   for (const FreeNode& f : free_nodes_) {
     const int s = ends_[f.node].state;
     ydot[s] = y[s + 1];
@@ -425,10 +459,11 @@ void NetworkSystem::RightHandSide(double t, const double* y, double* ydot) const
 }
 
 void NetworkSystem::Jacobian(double t, const double* y, double* values) const {
+  if (space_.dimensions > 1) return SpaceJacobian(t, y, values);
   std::fill(values, values + pattern_.entries(), 0.0);
   for (const FreeNode& f : free_nodes_) {
-    values[f.slot_rate] = 1.0;
-    values[f.slot_position] = f.loads.ForceSlope();
+    values[f.slot_rate[0]] = 1.0;
+    values[f.slot_position[0]] = f.loads.ForceSlope();
   }
   for (const int e : active_links_) {
     const Link& link = links_[e];
@@ -485,8 +520,13 @@ std::vector<double> NetworkSystem::Breakpoints(double t0, double t1) const {
 
 void NetworkSystem::ObserveElement(int e, double t, const double* y, ElementSample& out) const {
   const Link& link = links_[e];
-  out.length = PositionOf(ends_[link.to], t, y) - PositionOf(ends_[link.from], t, y);
-  out.lengthening_rate = VelocityOf(ends_[link.to], t, y) - VelocityOf(ends_[link.from], t, y);
+  if (space_.dimensions > 1) {
+    out.length = Length(e, t, y);
+    out.lengthening_rate = LengtheningRate(e, t, y);
+  } else {
+    out.length = PositionOf(ends_[link.to], t, y) - PositionOf(ends_[link.from], t, y);
+    out.lengthening_rate = VelocityOf(ends_[link.to], t, y) - VelocityOf(ends_[link.from], t, y);
+  }
   const Element& element = elements_[e];
   if (element.kind == ElementKind::kActuator) {
     if (element.excitation) {
@@ -511,10 +551,15 @@ double NetworkSystem::LoadOn(int i, double t, const double* y) const {
   const auto f = std::lower_bound(free_nodes_.begin(), free_nodes_.end(), i,
                                   [](const FreeNode& free, int node) { return free.node < node; });
   if (f == free_nodes_.end() || f->node != i) return 0.0;
+  if (space_.dimensions > 1) {
+    const Coordinates load = DirectedLoad(*f, t, y);
+    return std::sqrt(load[0] * load[0] + load[1] * load[1] + load[2] * load[2]);
+  }
   return f->loads.Force(t, PositionOf(ends_[i], t, y));
 }
 
 void NetworkSystem::Observe(double t, const double* y, NetworkSample& sample) const {
+  if (space_.dimensions > 1) return ObserveSpace(t, y, sample);
   sample.position.resize(nodes_.size());
   sample.velocity.resize(nodes_.size());
   sample.load.assign(nodes_.size(), 0.0);

@@ -14,10 +14,13 @@ std::string NetworkSystem::NonFiniteCause(double t, const double* y) const {
   const std::string at = " at t = " + FormatNumber(t) + " s";
   for (std::size_t i = 0; i < nodes_.size(); ++i) {
     const int node = static_cast<int>(i);
-    const double position = NodePosition(node, t, y), velocity = NodeVelocity(node, t, y);
-    if (!std::isfinite(position) || !std::isfinite(velocity)) {
-      return "node " + nodes_[i].name + "'s position " + FormatNumber(position) + " m, velocity " +
-             FormatNumber(velocity) + " m/s" + at;
+    for (int c = 0; c < space_.dimensions; ++c) {
+      const double position = NodeCoordinate(node, c, t, y);
+      const double velocity = NodeCoordinateRate(node, c, t, y);
+      if (!std::isfinite(position) || !std::isfinite(velocity)) {
+        return "node " + nodes_[i].name + "'s position " + FormatNumber(position) +
+               " m, velocity " + FormatNumber(velocity) + " m/s" + at;
+      }
     }
   }
   ElementSample sample;
@@ -41,9 +44,10 @@ std::string NetworkSystem::NonFiniteCause(double t, const double* y) const {
   RightHandSide(t, y, rate.data());
   for (std::size_t i = 0; i < nodes_.size(); ++i) {
     const int x = ends_[i].state;
-    if (x >= 0 && !std::isfinite(rate[static_cast<std::size_t>(x) + 1])) {
-      return "node " + nodes_[i].name + "'s acceleration is " +
-             FormatNumber(rate[static_cast<std::size_t>(x) + 1]) +
+    // the first velocity's rate: free node states are d positions, then d velocities
+    const std::size_t a = static_cast<std::size_t>(x + space_.dimensions);
+    if (x >= 0 && !std::isfinite(rate[a])) {
+      return "node " + nodes_[i].name + "'s acceleration is " + FormatNumber(rate[a]) +
              " m/s^2: the forces on it, each finite, over its mass of " +
              FormatNumber(nodes_[i].mass) + " kg overflow" + at;
     }

@@ -53,10 +53,23 @@ void RunColumns::AddActuatorView(const Scenario& scenario, const NetworkSystem& 
 void RunColumns::AddNetworkView(const Scenario& scenario, const NetworkSystem& system) {
   Add("t", Kind::kTime);
   const std::vector<Node>& nodes = system.nodes();
+  const int d = system.dimensions();
+  // in 2 or 3 dimensions: a column per coordinate, at its index in the sample (node-major)
+  static constexpr const char* kAxes[] = {"x", "y", "z"};
   for (std::size_t i = 0; i < nodes.size(); ++i) {
-    Add(nodes[i].name + ".position", Kind::kPosition, static_cast<int>(i));
-    Add(nodes[i].name + ".velocity", Kind::kVelocity, static_cast<int>(i));
+    const int node = static_cast<int>(i);
+    if (d == 1) {
+      Add(nodes[i].name + ".position", Kind::kPosition, node);
+      Add(nodes[i].name + ".velocity", Kind::kVelocity, node);
+      continue;
+    }
+    for (int c = 0; c < d; ++c) Add(nodes[i].name + "." + kAxes[c], Kind::kPosition, node * d + c);
+    for (int c = 0; c < d; ++c) {
+      Add(nodes[i].name + ".v" + kAxes[c], Kind::kVelocity, node * d + c);
+    }
   }
+  // Observe's sample holds the coordinates (FillFromState reads single values)
+  whole_sample_ = whole_sample_ || d > 1;
   for (std::size_t k = 0; k < system.elements().size(); ++k) {
     const Element& element = system.elements()[k];
     const int e = static_cast<int>(k);
@@ -71,8 +84,15 @@ void RunColumns::AddNetworkView(const Scenario& scenario, const NetworkSystem& s
     Add(element.name + ".phase", Kind::kPhase, e, scenario.PhaseTolerance(e));
   }
   for (std::size_t i = 0; i < nodes.size(); ++i) {
-    if (nodes[i].kind == NodeKind::kFree)
-      Add(nodes[i].name + ".load", Kind::kLoad, static_cast<int>(i));
+    if (nodes[i].kind != NodeKind::kFree) continue;
+    const int node = static_cast<int>(i);
+    if (d == 1) {
+      Add(nodes[i].name + ".load", Kind::kLoad, node);
+      continue;
+    }
+    for (int c = 0; c < d; ++c) {
+      Add(nodes[i].name + ".load_" + kAxes[c], Kind::kLoad, node * d + c);
+    }
   }
   for (std::size_t k = 0; k < system.controllers().size(); ++k) {
     const std::string& name = system.controllers()[k].name;

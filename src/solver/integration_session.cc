@@ -267,6 +267,13 @@ std::optional<RunStatus> IntegrationSession::Impl::Crossed(int hit, double stop)
   if (root.kind != Root::kKink) {
     const std::string& name = system.elements()[root.element].name;
     Record(t, y);
+    if (root.kind == Root::kShortSegment) {
+      return Finish(
+          RunStatus::kLimit, t,
+          "segment " + std::to_string(root.segment) + " of " + name + "'s path shortened to " +
+              FormatNumber(root.level) + " m at t = " + FormatNumber(t) +
+              " s: its direction is undefined at 0, the run ends " + "there (docs/model.md 12.5)");
+    }
     if (root.kind == Root::kZeroLength) {
       return Finish(
           RunStatus::kFailed, t,

@@ -46,6 +46,15 @@ std::vector<Root> RootsOf(const NetworkSystem& system, const NetworkRunRequest& 
       roots.push_back({Root::kMaxLength, e, *limit.max_length});
     }
   }
+  if (system.dimensions() > 1) {
+    for (std::size_t e = 0; e < system.elements().size(); ++e) {
+      const int element = static_cast<int>(e);
+      for (int k = 0; k < system.SegmentCount(element); ++k) {
+        roots.push_back({Root::kShortSegment, element, NetworkSystem::kMinSegmentLength, k});
+      }
+    }
+    return roots;
+  }
   std::set<std::pair<std::string_view, std::string_view>> pairs;  // a set: a large network
   for (std::size_t e = 0; e < system.elements().size(); ++e) {
     const Element& element = system.elements()[e];

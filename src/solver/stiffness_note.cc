@@ -32,8 +32,10 @@ std::string StiffnessNote(const NetworkSystem& system, double t, const double* y
   for (std::size_t i = 0; i < system.nodes().size(); ++i) {
     const int x = system.StateIndex(static_cast<int>(i));
     if (x < 0) continue;
-    const double by_velocity = std::abs(Entry(pattern, values, x + 1, x + 1));
-    const double by_position = std::sqrt(std::abs(Entry(pattern, values, x + 1, x)));
+    // its first velocity and its acceleration's row (d positions come before)
+    const int v = x + system.dimensions();
+    const double by_velocity = std::abs(Entry(pattern, values, v, v));
+    const double by_position = std::sqrt(std::abs(Entry(pattern, values, v, x)));
     const double node_rate = std::max(by_velocity, by_position);
     if (std::isfinite(node_rate) && node_rate > rate)
       fastest = static_cast<int>(i), rate = node_rate;
@@ -50,7 +52,7 @@ std::string StiffnessNote(const NetworkSystem& system, double t, const double* y
   }
   // the element attached to it whose tension changes most with its velocity
   const Node& node = system.nodes()[static_cast<std::size_t>(fastest)];
-  const int v = system.StateIndex(fastest) + 1;
+  const int v = system.StateIndex(fastest) + system.dimensions();
   std::vector<double> moved(y, y + pattern.size);
   const double dv = 1e-7 * std::max(std::abs(y[v]), 1e-9);
   moved[static_cast<std::size_t>(v)] += dv;

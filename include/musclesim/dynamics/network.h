@@ -1,7 +1,9 @@
-// A network on a line (docs/model.md section 7) as a first-order system. The state is
+// A network on a line (docs/model.md section 7), in the plane or in space (section 12) as a
+// first-order system. The state is
 //   y = (x_1, xdot_1, x_2, xdot_2, ..., u_1, u_2, ..., z_1, z_2, ...):
 // (x_i, xdot_i) of every free node, in the order the nodes are given, interleaved, so a chain
-// given in order has a banded Jacobian; then the activation u_k of every actuator with
+// given in order has a banded Jacobian (in d dimensions x_i and xdot_i are d coordinates each:
+// (x, y, xdot, ydot) in the plane); then the activation u_k of every actuator with
 // activation dynamics (docs/model.md section 8), in the order the elements are given; then
 // the integral z_j of every controller with an integral gain (section 11), in the order the
 // controllers are given. A network without either has exactly the node states. (An activation
@@ -10,6 +12,7 @@
 // evaluation allocates nothing, so one system may be integrated on many threads.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -43,10 +46,13 @@ struct ControllerSample {
 };
 
 // Everything the state observes at one instant: what a network's CSV records.
+// In d dimensions the nodes' vectors hold d numbers per node, node after node (x, y of node 0,
+// x, y of node 1, ...).
 struct NetworkSample {
   std::vector<double> position;  // of every node [m]
   std::vector<double> velocity;  // of every node [m/s]
-  std::vector<double> load;      // the sum of the loads on every node [N] (0 off free nodes)
+  std::vector<double> load;      // the sum of the loads on every node [N] (0 off free nodes;
+                                 // gravity not included)
   std::vector<ElementSample> elements;
   std::vector<ControllerSample> controllers;
 };
@@ -68,7 +74,9 @@ class NetworkSystem {
 
   int state_size() const { return node_state_count() + activation_count() + integral_count(); }
   // The free nodes' positions and velocities: the first this many states.
-  int node_state_count() const { return 2 * static_cast<int>(free_nodes_.size()); }
+  int node_state_count() const {
+    return 2 * space_.dimensions * static_cast<int>(free_nodes_.size());
+  }
   // How many actuators have activation dynamics: the states after the nodes' are theirs.
   int activation_count() const { return static_cast<int>(activations_.size()); }
   // How many controllers have an integral state: the last this many states are theirs.
@@ -92,6 +100,12 @@ class NetworkSystem {
   // The length of element e at (t, y) [m], and its rate of change [m/s].
   double Length(int e, double t, const double* y) const;
   double LengtheningRate(int e, double t, const double* y) const;
+  // In 2 or 3 dimensions: how many segments element e's path has (its via points + 1), and
+  // the length of segment k at (t, y) [m] (on a line: 1, and the element's length).
+  int SegmentCount(int e) const;
+  double SegmentLength(int e, int k, double t, const double* y) const;
+  // The shortest a segment may become: a run stops there, as its direction is lost at 0.
+  static constexpr double kMinSegmentLength = 1e-6;  // [m]
   // Where an element's tension has a kink, as the zero of a scalar function of (t, y): the
   // integrator restarts there. kLength: the length at `level` (an actuator's passive slack
   // length, a tendon's slack length); kLengtheningRate: dl/dt at `level` (an actuator whose
@@ -117,8 +131,17 @@ class NetworkSystem {
   // sample, node i's position [m] and velocity [m/s], and the sum of the loads on node i [N]
   // (0 unless it is free). Each equals Observe's to the last bit.
   void ObserveElement(int e, double t, const double* y, ElementSample& out) const;
-  double NodePosition(int i, double t, const double* y) const { return PositionOf(ends_[i], t, y); }
-  double NodeVelocity(int i, double t, const double* y) const { return VelocityOf(ends_[i], t, y); }
+  // (In 2 or 3 dimensions: the x coordinate; NodeCoordinate has them all.)
+  double NodePosition(int i, double t, const double* y) const {
+    return space_.dimensions == 1 ? PositionOf(ends_[i], t, y) : NodeCoordinate(i, 0, t, y);
+  }
+  double NodeVelocity(int i, double t, const double* y) const {
+    return space_.dimensions == 1 ? VelocityOf(ends_[i], t, y) : NodeCoordinateRate(i, 0, t, y);
+  }
+  // Coordinate c (0: x, 1: y, 2: z) of node i's position [m] and velocity [m/s].
+  double NodeCoordinate(int i, int c, double t, const double* y) const;
+  double NodeCoordinateRate(int i, int c, double t, const double* y) const;
+  // (In 2 or 3 dimensions: the load's magnitude; Observe has its coordinates.)
   double LoadOn(int i, double t, const double* y) const;
   // What made the right-hand side at (t, y) non-finite, for a failed run's message: the first
   // node, element tension or load that is not finite, with its values and the time.
@@ -165,9 +188,10 @@ class NetworkSystem {
   // A node as the right-hand side sees it.
   struct End {
     NodeKind kind;
-    int state;        // free: index of x in y; else -1
-    double position;  // fixed
-    int node;         // index in nodes_ (prescribed: its motion; an index, so copies work)
+    int state;            // free: index of x in y; else -1
+    double position;      // fixed
+    int node;             // index in nodes_ (prescribed: its motion; an index, so copies work)
+    Coordinates point{};  // fixed, in 2 or 3 dimensions
   };
   // An element as the right-hand side sees it: its ends and where its Jacobian goes.
   struct Link {
@@ -178,6 +202,14 @@ class NetworkSystem {
     int slot_activation[2];  // entry of (row: accel from/to, column: u); -1 if none
     int loop = -1;           // controlled actuator: index of its controller in loops_
     int side = 0;            // controlled actuator: +1 takes level + c, -1 level - c
+    // in 2 or 3 dimensions: its path's points in path_points_[path_begin, path_end), and its
+    // Jacobian entries from path_slots_[slot_begin] (space_jacobian.cc)
+    int path_begin = 0, path_end = 0, slot_begin = 0;
+  };
+  // A point of a path in 2 or 3 dimensions: a node, or fixed coordinates.
+  struct PathPoint {
+    int node;  // index in nodes_, or -1
+    Coordinates position;
   };
   // A controller as the right-hand side sees it. The command c depends on at most the
   // states in `columns`: the measured element's ends (x_from, v_from, x_to, v_to; a node
@@ -208,12 +240,20 @@ class NetworkSystem {
     int state;    // index of u in y
     int slot;     // entry (u row, u column): d(udot)/du
   };
-  struct FreeNode {
-    int node;  // index in nodes_
+  // Loads along one direction, in 2 or 3 dimensions.
+  struct DirectedLoads {
+    Coordinates direction;  // unit
     LoadSet loads;
+  };
+  struct FreeNode {
+    int node;             // index in nodes_
+    LoadSet loads;        // on a line
     double inverse_mass;  // 1 / (mass + mass loads) [1/kg]
-    int slot_rate;        // entry (x row, xdot column): 1
-    int slot_position;    // entry (xdot row, x column): the loads' slope
+    // entries (x row, xdot column): 1, per coordinate; (xdot row, x column): the loads'
+    // slope, per pair of coordinates (row * 3 + column)
+    int slot_rate[3] = {-1, -1, -1};
+    int slot_position[9] = {-1, -1, -1, -1, -1, -1, -1, -1, -1};
+    std::vector<DirectedLoads> directed;  // in 2 or 3 dimensions
   };
 
   double PositionOf(const End& end, double t, const double* y) const;
@@ -296,6 +336,26 @@ class NetworkSystem {
   bool single_node_ = false;
   std::vector<Anchored> anchored_;
   void SingleNodeRightHandSide(double t, const double* y, double* ydot) const;
+
+  // In 2 or 3 dimensions (network_space.cc, space_jacobian.cc).
+  std::vector<PathPoint> path_points_;
+  std::vector<int> path_slots_;
+  void AddPath(std::size_t e);
+  void ResolveSpace();
+  // Element e's path at (t, y): its points' positions and velocities, measured.
+  struct PathState;
+  void MeasureLink(int e, double t, const double* y, PathState& state) const;
+  void SpaceRightHandSide(double t, const double* y, double* ydot) const;
+  void SpaceJacobian(double t, const double* y, double* values) const;
+  void AddSpacePattern(std::vector<std::pair<int, int>>& pairs) const;
+  // The state index of each point of the link's path (-1 unless a free node), in order.
+  void PathStates(const Link& link, std::vector<int>& states) const;
+  void FindSpaceSlots(const std::function<int(int, int)>& slot);
+  void ObserveSpace(double t, const double* y, NetworkSample& sample) const;
+  void CheckInitialPaths(double t, const double* y) const;
+  double SpaceLengtheningRate(int e, double t, const double* y) const;
+  // The sum of free node f's loads, each along its direction [N].
+  Coordinates DirectedLoad(const FreeNode& f, double t, const double* y) const;
   std::vector<FreeNode> free_nodes_;
   std::vector<Activation> activations_;  // in element order, their states after the nodes'
   std::vector<int> row_scale_;  // per Jacobian entry: the free node whose 1/m scales it, or -1
