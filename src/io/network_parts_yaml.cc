@@ -19,6 +19,57 @@ std::string Item(const char* list, std::size_t i) {
   return std::string(list) + "[" + std::to_string(i) + "]";
 }
 
+// path + "[i]", built by appending (GCC 12 warns falsely on "[" + std::to_string(i)).
+std::string Indexed(std::string path, std::size_t i) {
+  path.append("[").append(std::to_string(i)).append("]");
+  return path;
+}
+
+// What a rule of the space says it follows from: "the scenario has dimensions: 2".
+std::string HasDimensions(int dimensions) {
+  return "the scenario has dimensions: " + std::to_string(dimensions);
+}
+
+// The coordinates of a list in messages, each name after `prefix`: "[x, y]", "[vx, vy, vz]".
+std::string CoordinateNames(int dimensions, const char* prefix) {
+  std::string names = "[";
+  for (int c = 0; c < dimensions; ++c) {
+    names.append(c == 0 ? "" : ", ").append(prefix).push_back("xyz"[c]);
+  }
+  return names + "]";
+}
+
+// A list of exactly `dimensions` numbers (2 or 3) at `node`, each within `range`; the
+// coordinates past them 0. `prefix` names them in messages (CoordinateNames).
+Coordinates ReadCoordinateList(const yaml::Source& src, const YAML::Node& node,
+                               const std::string& path, int dimensions, const InputRange& range,
+                               const char* prefix) {
+  const auto d = static_cast<std::size_t>(dimensions);
+  if (!node.IsSequence() || node.size() != d) {
+    yaml::Fail(src, node, path, yaml::Describe(node),
+               "must be a list of " + std::to_string(d) + " numbers " +
+                   CoordinateNames(dimensions, prefix) + ": " + HasDimensions(dimensions));
+  }
+  Coordinates x{};
+  for (std::size_t c = 0; c < d; ++c) {
+    x[c] = yaml::ReadNumberIn(src, node[c], Indexed(path, c), range);
+  }
+  return x;
+}
+
+// A node's point (its `fixed`, `position` or `velocity`): one number, x, on a line, a list
+// of `dimensions` numbers otherwise.
+Coordinates ReadPoint(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                      int dimensions, const InputRange& range, const char* prefix) {
+  if (dimensions > 1) return ReadCoordinateList(src, node, path, dimensions, range, prefix);
+  if (node.IsSequence()) {
+    yaml::Fail(src, node, path, yaml::Describe(node),
+               "must be a number in 1 dimension: a list of coordinates needs dimensions: 2 or 3 "
+               "at the top level");
+  }
+  return {yaml::ReadNumberIn(src, node, path, range), 0.0, 0.0};
+}
+
 Waveform ReadMotion(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
   const std::string type = ReadType(src, node, path);
   WaveformKind kind{};
@@ -31,7 +82,34 @@ Waveform ReadMotion(const yaml::Source& src, const YAML::Node& node, const std::
   return ReadWaveform(src, node, path, kind, &kPositionRange);
 }
 
-Node ReadNode(const yaml::Source& src, const YAML::Node& item, const std::string& path) {
+// A prescribed node's motion: one waveform on a line, a list of one per coordinate otherwise.
+void ReadPrescribed(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                    int dimensions, Node& out) {
+  if (dimensions == 1) {
+    if (node.IsSequence()) {
+      yaml::Fail(src, node, path, yaml::Describe(node),
+                 "must be one motion (a waveform) in 1 dimension: a list of motions, one per "
+                 "coordinate, needs dimensions: 2 or 3 at the top level");
+    }
+    out.motion = ReadMotion(src, node, path);
+    return;
+  }
+  const auto d = static_cast<std::size_t>(dimensions);
+  if (!node.IsSequence() || node.size() != d) {
+    yaml::Fail(
+        src, node, path, yaml::Describe(node),
+        "must be a list of " + std::to_string(d) + " motions " +
+            (d == 2 ? "[x(t), y(t)]" : "[x(t), y(t), z(t)]") +
+            ", each a waveform (constant, ramp, sine or table): " + HasDimensions(dimensions));
+  }
+  out.motion = ReadMotion(src, node[0], Indexed(path, 0));
+  for (std::size_t c = 1; c < d; ++c) {
+    out.motion_yz[c - 1] = ReadMotion(src, node[c], Indexed(path, c));
+  }
+}
+
+Node ReadNode(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+              int dimensions) {
   if (!item.IsMap()) {
     yaml::Fail(src, item, path, yaml::Describe(item),
                "must be a map: a name and one of fixed, prescribed or mass");
@@ -49,21 +127,32 @@ Node ReadNode(const yaml::Source& src, const YAML::Node& item, const std::string
                "give exactly one of fixed (its position [m]), prescribed (its motion) or mass "
                "(a free node [kg], with position and velocity)");
   }
+  // x in position, velocity and motion, y and z in their _yz fields
+  const auto set_position = [&node](const Coordinates& x) {
+    node.position = x[0];
+    node.position_yz = {x[1], x[2]};
+  };
   if (item["fixed"]) {
     yaml::RequireMap(src, item, path, {"name", "fixed"});
     node.kind = NodeKind::kFixed;
-    node.position = yaml::ReadNumberIn(src, item["fixed"], Join(path, "fixed"), kPositionRange);
+    set_position(
+        ReadPoint(src, item["fixed"], Join(path, "fixed"), dimensions, kPositionRange, ""));
   } else if (item["prescribed"]) {
     yaml::RequireMap(src, item, path, {"name", "prescribed"});
     node.kind = NodeKind::kPrescribed;
-    node.motion = ReadMotion(src, item["prescribed"], Join(path, "prescribed"));
+    ReadPrescribed(src, item["prescribed"], Join(path, "prescribed"), dimensions, node);
   } else {
     yaml::RequireMap(src, item, path, {"name", "mass", "position", "velocity"});
     node.kind = NodeKind::kFree;
     node.mass = yaml::ReadNumberIn(src, item["mass"], Join(path, "mass"), kMassRange);
-    node.position = yaml::ReadNumberIn(src, Required(src, item, path, "position"),
-                                       Join(path, "position"), kPositionRange);
-    node.velocity = yaml::ReadOptionalNumberIn(src, item, path, "velocity", kSpeedRange, 0.0);
+    set_position(ReadPoint(src, Required(src, item, path, "position"), Join(path, "position"),
+                           dimensions, kPositionRange, ""));
+    if (const YAML::Node velocity = item["velocity"]) {
+      const Coordinates v =
+          ReadPoint(src, velocity, Join(path, "velocity"), dimensions, kSpeedRange, "v");
+      node.velocity = v[0];
+      node.velocity_yz = {v[1], v[2]};
+    }
   }
   ValidateAt(src, item, path, [&] { Validate(node); });
   return node;
@@ -85,23 +174,26 @@ std::shared_ptr<const TensionModel> FindModel(const yaml::Source& src, const YAM
 }
 
 // The keys an element of `kind` may have: a misspelt one is an error before any is read.
+// `via` comes last, so that the messages of files on a line read as they always have.
 void RequireElementKeys(const yaml::Source& src, const YAML::Node& item, const std::string& path,
                         ElementKind kind) {
   switch (kind) {
     case ElementKind::kActuator:
       yaml::RequireMap(src, item, path,
                        {"name", "type", "from", "to", "model", "activation", "excitation",
-                        "activation_dynamics", "initial_activation"});
+                        "activation_dynamics", "initial_activation", "via"});
       break;
     case ElementKind::kSpring:
-      yaml::RequireMap(src, item, path, {"name", "type", "from", "to", "stiffness", "rest_length"});
+      yaml::RequireMap(src, item, path,
+                       {"name", "type", "from", "to", "stiffness", "rest_length", "via"});
       break;
     case ElementKind::kTendon:
-      yaml::RequireMap(src, item, path,
-                       {"name", "type", "from", "to", "slack_length", "stiffness", "exponential"});
+      yaml::RequireMap(
+          src, item, path,
+          {"name", "type", "from", "to", "slack_length", "stiffness", "exponential", "via"});
       break;
     case ElementKind::kDamper:
-      yaml::RequireMap(src, item, path, {"name", "type", "from", "to", "damping"});
+      yaml::RequireMap(src, item, path, {"name", "type", "from", "to", "damping", "via"});
       break;
   }
 }
@@ -158,9 +250,69 @@ void ReadTendon(const yaml::Source& src, const YAML::Node& item, const std::stri
   }
 }
 
+// An element's `via` points: each a node's name (NetworkSystem resolves it) or a fixed
+// point, a list of `dimensions` coordinates.
+std::vector<ViaPoint> ReadVia(const yaml::Source& src, const YAML::Node& node,
+                              const std::string& path, int dimensions) {
+  if (dimensions == 1) {
+    yaml::Fail(src, node, path, yaml::Describe(node),
+               "via points need dimensions: 2 or 3 at the top level (on a line an element runs "
+               "straight from `from` to `to`)");
+  }
+  const std::string point = "a fixed point, a list of " + std::to_string(dimensions) + " numbers " +
+                            CoordinateNames(dimensions, "");
+  if (!node.IsSequence()) {
+    yaml::Fail(src, node, path, yaml::Describe(node),
+               "must be a list of via points, each a node's name or " + point);
+  }
+  std::vector<ViaPoint> via;
+  for (std::size_t k = 0; k < node.size(); ++k) {
+    const YAML::Node entry = node[k];
+    const std::string at = Indexed(path, k);
+    if (entry.IsSequence()) {
+      via.push_back(
+          ViaPoint::Fixed(ReadCoordinateList(src, entry, at, dimensions, kPositionRange, "")));
+    } else if (entry.IsScalar() && !entry.Scalar().empty()) {
+      via.push_back(ViaPoint::Node(entry.Scalar()));
+    } else {
+      yaml::Fail(src, entry, at, entry.IsScalar() ? "\"\"" : yaml::Describe(entry),
+                 "must be a node's name or " + point);
+    }
+  }
+  return via;
+}
+
+// A load's `direction` in the map `item`: on a line x (the key refused), otherwise a list of
+// `dimensions` numbers, not all zero (the system makes it a unit vector).
+Coordinates ReadDirection(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+                          int dimensions) {
+  const std::string at = Join(path, "direction");
+  if (dimensions == 1) {
+    if (const YAML::Node node = item["direction"]) {
+      yaml::Fail(src, node, at, yaml::Describe(node),
+                 "needs dimensions: 2 or 3 at the top level (on a line a load acts along x)");
+    }
+    return {1.0, 0.0, 0.0};
+  }
+  if (!item["direction"]) {
+    throw InputError(at + " (" + yaml::Location(src, item) + "): missing required key: in " +
+                     std::to_string(dimensions) +
+                     " dimensions a load acts along a direction, a list of " +
+                     std::to_string(dimensions) + " numbers " + CoordinateNames(dimensions, "d"));
+  }
+  const YAML::Node node = item["direction"];
+  const Coordinates d = ReadCoordinateList(src, node, at, dimensions, kDirectionRange, "d");
+  // a length that underflows would make no unit vector either
+  if (!(std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) > 0.0)) {
+    yaml::Fail(src, node, at, yaml::Describe(node),
+               "must not be zero: the load acts along it, made a unit vector");
+  }
+  return d;
+}
+
 Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::string& path,
-                    const NamedModels& models, const DrivenActuators& driven, double t_start,
-                    double t_end) {
+                    const NamedModels& models, const DrivenActuators& driven, int dimensions,
+                    double t_start, double t_end) {
   const std::string type = ReadType(src, item, path);
   Element e;
   ValidateAt(src, item, path, [&] { e.kind = ParseElementKind(type); });
@@ -168,6 +320,9 @@ Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::
   e.name = ReadName(src, item, path);
   e.from = yaml::ReadString(src, Required(src, item, path, "from"), Join(path, "from"));
   e.to = yaml::ReadString(src, Required(src, item, path, "to"), Join(path, "to"));
+  // read before the kind's fields, kept after them: a controlled actuator is made afresh
+  std::vector<ViaPoint> via;
+  if (const YAML::Node node = item["via"]) via = ReadVia(src, node, Join(path, "via"), dimensions);
   switch (e.kind) {
     case ElementKind::kActuator:
       ReadActuator(src, item, path, models, driven, t_start, t_end, e);
@@ -181,6 +336,7 @@ Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::
       e.damping = NumberIn(src, item, path, "damping", kDampingRange);
       break;
   }
+  e.via = std::move(via);
   ValidateAt(src, item, path, [&] { Validate(e); });
   return e;
 }
@@ -210,37 +366,60 @@ std::string ReadName(const yaml::Source& src, const YAML::Node& item, const std:
   return name;
 }
 
-std::vector<Node> ReadNodes(const yaml::Source& src, const YAML::Node& node) {
+Space ReadSpace(const yaml::Source& src, const YAML::Node& root) {
+  Space space;
+  if (const YAML::Node node = root["dimensions"]) {
+    const int d = yaml::ReadInteger(src, node, "dimensions");
+    if (d < 1 || d > 3) {
+      yaml::Fail(src, node, "dimensions", yaml::Describe(node),
+                 "must be 1 (a line, the default), 2 (the x-y plane) or 3 (space)");
+    }
+    space.dimensions = d;
+  }
+  if (const YAML::Node node = root["gravity"]) {
+    if (space.dimensions == 1) {
+      yaml::Fail(src, node, "gravity", yaml::Describe(node),
+                 "needs dimensions: 2 or 3 at the top level; on a line hang a weight with a "
+                 "load of type mass (docs/guide/networks.md)");
+    }
+    space.gravity = ReadCoordinateList(src, node, "gravity", space.dimensions, kGravityRange, "g");
+  }
+  ValidateAt(src, root, "", [&] { Validate(space); });
+  return space;
+}
+
+std::vector<Node> ReadNodes(const yaml::Source& src, const YAML::Node& node, int dimensions) {
   RequireList(src, node, "nodes", "nodes, each a name and one of fixed, prescribed or mass");
   std::vector<Node> nodes;
   for (std::size_t i = 0; i < node.size(); ++i) {
-    nodes.push_back(ReadNode(src, node[i], Item("nodes", i)));
+    nodes.push_back(ReadNode(src, node[i], Item("nodes", i), dimensions));
   }
   return nodes;
 }
 
 std::vector<Element> ReadElements(const yaml::Source& src, const YAML::Node& node,
                                   const NamedModels& models, const DrivenActuators& driven,
-                                  double t_start, double t_end) {
+                                  int dimensions, double t_start, double t_end) {
   RequireList(src, node, "elements", "elements, each {name, type, from, to, ...}");
   std::vector<Element> elements;
   for (std::size_t i = 0; i < node.size(); ++i) {
     elements.push_back(
-        ReadElement(src, node[i], Item("elements", i), models, driven, t_start, t_end));
+        ReadElement(src, node[i], Item("elements", i), models, driven, dimensions, t_start, t_end));
   }
   return elements;
 }
 
-std::vector<NodeLoad> ReadNodeLoads(const yaml::Source& src, const YAML::Node& node, double t_start,
-                                    double t_end) {
+std::vector<NodeLoad> ReadNodeLoads(const yaml::Source& src, const YAML::Node& node, int dimensions,
+                                    double t_start, double t_end) {
   RequireList(src, node, "loads", "loads, each {node, type, ...}");
   std::vector<NodeLoad> loads;
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string path = Item("loads", i);
     const YAML::Node item = node[i];
     NodeLoad load;
-    load.load = ReadLoad(src, item, path, "node");
+    load.load = ReadLoad(src, item, path, {"node", "direction"});
     load.node = yaml::ReadString(src, Required(src, item, path, "node"), Join(path, "node"));
+    load.direction = ReadDirection(src, item, path, dimensions);
     if (load.load.kind == LoadKind::kForce) {
       CheckPulses(src, item, path, load.load.force, t_start, t_end);
     }

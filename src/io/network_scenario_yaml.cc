@@ -4,6 +4,7 @@
 #include <initializer_list>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "io/controller_yaml.h"
 #include "io/model_yaml_node.h"
@@ -18,10 +19,19 @@ namespace {
 
 using yaml::Required;
 
-// The top-level keys of a network scenario file.
+// The top-level keys of a network scenario file; those of the plane and space come last, so
+// that the messages of files on a line read as they always have.
 constexpr std::initializer_list<const char*> kNetworkKeys = {
-    "name",   "models", "nodes",  "elements",      "loads",      "time",
-    "solver", "output", "limits", "sensitivities", "controllers"};
+    "name",   "models", "nodes",         "elements",    "loads",      "time",   "solver",
+    "output", "limits", "sensitivities", "controllers", "dimensions", "gravity"};
+
+// The key node of `key` in the map `root` (for a message placed at the key, not its value).
+YAML::Node KeyOf(const YAML::Node& root, const char* key) {
+  for (const auto& entry : root) {
+    if (entry.first.Scalar() == key) return entry.first;
+  }
+  return root;
+}
 
 NamedModels ReadModels(const yaml::Source& src, const YAML::Node& node, Scenario& s) {
   if (!node.IsMap()) {
@@ -85,6 +95,9 @@ Scenario ReadNetworkScenario(const yaml::Source& src, const YAML::Node& root) {
   Scenario s;
   s.source = src.file;
   if (root["name"]) s.name = yaml::ReadString(src, root["name"], "name");
+  // before the parts: the dimensions say what a coordinate is
+  s.space = ReadSpace(src, root);
+  const int dimensions = s.space.dimensions;
   // before what needs it: the shortest interval, step and pulse are measured against it
   const TimeSpan time = ReadTime(src, Required(src, root, "", "time"));
   s.t_start = time.start;
@@ -92,15 +105,23 @@ Scenario ReadNetworkScenario(const yaml::Source& src, const YAML::Node& root) {
 
   NamedModels models;
   if (const YAML::Node node = root["models"]) models = ReadModels(src, node, s);
-  s.nodes = ReadNodes(src, Required(src, root, "", "nodes"));
+  s.nodes = ReadNodes(src, Required(src, root, "", "nodes"), dimensions);
   // before the elements: an actuator a controller drives has no activation of its own
   if (const YAML::Node node = root["controllers"]) {
+    if (dimensions > 1) {
+      yaml::Fail(src, KeyOf(root, "controllers"), "controllers", yaml::Describe(node),
+                 "controllers in 2 or 3 dimensions are not supported yet: the scenario has "
+                 "dimensions: " +
+                     std::to_string(dimensions));
+    }
     s.controllers = ReadControllers(src, node, s.t_start, s.t_end);
     RequireDrivenActuators(src, node, s.controllers, root["elements"]);
   }
   s.elements = ReadElements(src, Required(src, root, "", "elements"), models,
-                            DrivenActuatorsOf(s.controllers), s.t_start, s.t_end);
-  if (const YAML::Node node = root["loads"]) s.loads = ReadNodeLoads(src, node, s.t_start, s.t_end);
+                            DrivenActuatorsOf(s.controllers), dimensions, s.t_start, s.t_end);
+  if (const YAML::Node node = root["loads"]) {
+    s.loads = ReadNodeLoads(src, node, dimensions, s.t_start, s.t_end);
+  }
 
   // how the parts fit: the system's paths ("elements[2].to", "controllers[0].drives") are the
   // file's key paths

@@ -45,7 +45,8 @@ std::vector<TablePoint> ReadTablePoints(const yaml::Source& src, const YAML::Nod
 }  // namespace
 
 Waveform ReadWaveform(const yaml::Source& src, const YAML::Node& node, const std::string& path,
-                      WaveformKind kind, const InputRange* values, const char* extra) {
+                      WaveformKind kind, const InputRange* values,
+                      std::initializer_list<const char*> extra) {
   Waveform w;
   w.kind = kind;
   const auto value = [&](const char* key) {
@@ -180,7 +181,7 @@ ActuatorDrive ReadActuatorDrive(const yaml::Source& src, const YAML::Node& owner
 }
 
 Load ReadLoad(const yaml::Source& src, const YAML::Node& node, const std::string& path,
-              const char* extra) {
+              std::initializer_list<const char*> extra) {
   const std::string type = ReadType(src, node, path);
   Load load;
   if (type == "spring") {

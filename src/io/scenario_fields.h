@@ -4,6 +4,7 @@
 // naming file:line:column, key path, value and rule.
 #pragma once
 
+#include <initializer_list>
 #include <optional>
 #include <string>
 
@@ -20,10 +21,11 @@ namespace musclesim {
 std::string ReadType(const yaml::Source& src, const YAML::Node& node, const std::string& path);
 
 // Reads one waveform of `kind`. `values` bounds its values (a force's, a position's); nullptr
-// leaves them to ValidateActivation, which keeps an activation within [0, 1]. `extra` is
-// one more key the map may hold besides the waveform's (nullptr: none), read by the caller.
+// leaves them to ValidateActivation, which keeps an activation within [0, 1]. `extra` are
+// more keys the map may hold besides the waveform's, read by the caller.
 Waveform ReadWaveform(const yaml::Source& src, const YAML::Node& node, const std::string& path,
-                      WaveformKind kind, const InputRange* values, const char* extra = nullptr);
+                      WaveformKind kind, const InputRange* values,
+                      std::initializer_list<const char*> extra = {});
 
 // An activation u(t): any waveform kind, validated within [0, 1].
 Waveform ReadActivation(const yaml::Source& src, const YAML::Node& node, const std::string& path);
@@ -46,7 +48,7 @@ ActuatorDrive ReadActuatorDrive(const yaml::Source& src, const YAML::Node& owner
 
 // One load: a force waveform, a spring or a mass. `extra` as for ReadWaveform.
 Load ReadLoad(const yaml::Source& src, const YAML::Node& node, const std::string& path,
-              const char* extra = nullptr);
+              std::initializer_list<const char*> extra = {});
 
 // A pulse train's edges become stop times: its period and width must be resolved at the
 // run's times, and the run may hold at most kMaxBreakpoints edges. Nothing for other kinds.

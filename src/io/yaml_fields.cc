@@ -41,12 +41,8 @@ std::string Join(const std::string& path, const std::string& key) {
 }
 
 void RequireMap(const Source& source, const YAML::Node& node, const std::string& path,
-                std::initializer_list<const char*> allowed) {
-  RequireMap(source, node, path, allowed, nullptr);
-}
-
-void RequireMap(const Source& source, const YAML::Node& node, const std::string& path,
-                std::initializer_list<const char*> allowed, const char* extra) {
+                std::initializer_list<const char*> allowed,
+                std::initializer_list<const char*> extra) {
   if (!node.IsMap()) {
     Fail(source, node, path.empty() ? "(top level)" : path, Describe(node),
          "must be a map of keys");
@@ -63,9 +59,9 @@ void RequireMap(const Source& source, const YAML::Node& node, const std::string&
       known = known || key == name;
       list += (list.empty() ? "" : ", ") + std::string(name);
     }
-    if (extra != nullptr) {
-      known = known || key == extra;
-      list += ", " + std::string(extra);
+    for (const char* name : extra) {
+      known = known || key == name;
+      list += ", " + std::string(name);
     }
     if (!known) {
       throw InputError(Join(path, key) + " (" + Location(source, entry.first) +

@@ -33,13 +33,12 @@ std::string Location(const Source& source, const YAML::Node& node);
 // 120 characters, a longer one cut with "...".
 std::string Describe(const YAML::Node& node);
 
-// Requires `node` to be a map whose keys are all in `allowed`.
+// Requires `node` to be a map whose keys are all in `allowed` or `extra`, the keys listed
+// after them: a block read by a shared reader inside a map that adds keys of its own (a
+// network load's `node` and `direction`).
 void RequireMap(const Source& source, const YAML::Node& node, const std::string& path,
-                std::initializer_list<const char*> allowed);
-// The same with one more allowed key, `extra`, listed after them (nullptr: none): a block
-// read by a shared reader inside a map that adds a key of its own (a load's `node`).
-void RequireMap(const Source& source, const YAML::Node& node, const std::string& path,
-                std::initializer_list<const char*> allowed, const char* extra);
+                std::initializer_list<const char*> allowed,
+                std::initializer_list<const char*> extra = {});
 
 // A key that must be present in a map.
 YAML::Node Required(const Source& source, const YAML::Node& map, const std::string& path,

@@ -109,10 +109,14 @@ class ParameterResolver {
   void EccentricField(std::size_t i);
   void ActiveLengthField(std::size_t i);
   void GaussianField(std::size_t i);
+  // The coordinate step i names of a node's `key` (fixed, prescribed, position, velocity):
+  // none on a line (0), an index below the dimensions in 2 or 3.
+  std::size_t Coordinate(std::size_t i, const std::string& key) const;
   void Node(std::size_t i);
   void Element(std::size_t i);
   void Load(std::size_t i);
   void Controller(std::size_t i);
+  void Gravity(std::size_t i);
   void Setting(std::size_t i);
   // A waveform's field at step i (the waveform at `at`); `values` bounds its values
   // (nullptr: an activation's [0, 1], which the scenario's validation checks).
@@ -132,10 +136,20 @@ void ParameterResolver::Top() {
   if (top == "elements") return Element(1);
   if (top == "loads") return Load(1);
   if (top == "controllers") return Controller(1);
+  if (top == "gravity") return Gravity(1);
   if (top == "time" || top == "solver" || top == "output" || top == "limits") return Setting(0);
   Fail(
       "names no numeric value of the scenario (a model, node, element, load, controller, "
-      "time, solver, output or limits key)");
+      "gravity, time, solver, output or limits key)");
+}
+
+void ParameterResolver::Gravity(std::size_t i) {
+  if (scenario_.space.dimensions == 1) {
+    Fail("names nothing in 1 dimension: on a line a weight is a load of type mass");
+  }
+  const std::size_t c = Coordinate(i, "gravity");
+  End(i + 1);
+  Number([c](Scenario& s) -> double& { return s.space.gravity[c]; }, &kGravityRange);
 }
 
 void ParameterResolver::Model(std::size_t i) {
@@ -287,28 +301,69 @@ void ParameterResolver::GaussianField(std::size_t i) {
       [k, member](ModelSpec& m) -> double& { return m.params.active_length.gaussians[k].*member; });
 }
 
+std::size_t ParameterResolver::Coordinate(std::size_t i, const std::string& key) const {
+  const int d = scenario_.space.dimensions;
+  const bool indexed = i < steps_.size() && steps_[i].key.empty();
+  if (d == 1) {
+    if (indexed) Fail("takes no index: " + key + " is one number, x, in 1 dimension");
+    return 0;
+  }
+  const std::string last = std::to_string(d - 1);
+  if (!indexed) {
+    Fail("needs a coordinate's index in " + std::to_string(d) + " dimensions: " + key +
+         "[0] (x) to " + key + "[" + last + "]");
+  }
+  if (steps_[i].index >= static_cast<std::size_t>(d)) {
+    Fail("indexes past the " + std::to_string(d) + " coordinates of " + key + " (0 to " + last +
+         ")");
+  }
+  return steps_[i].index;
+}
+
 void ParameterResolver::Node(std::size_t i) {
   const std::size_t n = Index(i, scenario_.nodes.size(), "nodes");
   const std::string& key = Key(i + 1);
   const NodeKind kind = scenario_.nodes[n].kind;
   const Locate<musclesim::Node> node = [n](Scenario& s) -> musclesim::Node& { return s.nodes[n]; };
+  // in 2 or 3 dimensions a coordinate is indexed (nodes[1].position[1] is y): x is the
+  // scalar field, y and z the _yz ones
+  const bool coordinates = (kind == NodeKind::kFixed && key == "fixed") ||
+                           (kind == NodeKind::kPrescribed && key == "prescribed") ||
+                           (kind == NodeKind::kFree && (key == "position" || key == "velocity"));
+  const std::size_t c = coordinates ? Coordinate(i + 2, key) : 0;
+  const std::size_t next = scenario_.space.dimensions > 1 && coordinates ? i + 3 : i + 2;
   if (kind == NodeKind::kPrescribed && key == "prescribed") {
     return WaveformField(
-        i + 2, [node](Scenario& s) -> Waveform& { return node(s).motion; }, &kPositionRange);
+        next,
+        [node, c](Scenario& s) -> Waveform& {
+          return c == 0 ? node(s).motion : node(s).motion_yz[c - 1];
+        },
+        &kPositionRange);
   }
-  End(i + 2);
+  End(next);
   if (kind == NodeKind::kFixed && key == "fixed") {
-    return Number([node](Scenario& s) -> double& { return node(s).position; }, &kPositionRange);
+    return Number(
+        [node, c](Scenario& s) -> double& {
+          return c == 0 ? node(s).position : node(s).position_yz[c - 1];
+        },
+        &kPositionRange);
   }
   if (kind == NodeKind::kFree) {
     if (key == "mass")
       return Number([node](Scenario& s) -> double& { return node(s).mass; }, &kMassRange);
     if (key == "position") {
-      return Number([node](Scenario& s) -> double& { return node(s).position; },
-                    scenario_.form == ScenarioForm::kActuator ? &kLengthRange : &kPositionRange);
+      return Number(
+          [node, c](Scenario& s) -> double& {
+            return c == 0 ? node(s).position : node(s).position_yz[c - 1];
+          },
+          scenario_.form == ScenarioForm::kActuator ? &kLengthRange : &kPositionRange);
     }
     if (key == "velocity") {
-      return Number([node](Scenario& s) -> double& { return node(s).velocity; }, &kSpeedRange);
+      return Number(
+          [node, c](Scenario& s) -> double& {
+            return c == 0 ? node(s).velocity : node(s).velocity_yz[c - 1];
+          },
+          &kSpeedRange);
     }
   }
   Fail("names no number of this " + std::string(ToString(kind)) + " node");

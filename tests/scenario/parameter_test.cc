@@ -241,6 +241,51 @@ TEST(Parameter, PathsThatNameNoNumberAreRefused) {
   EXPECT_THAT(Refusal(network, "colour"), HasSubstr("names no numeric value of the scenario"));
 }
 
+// In 2 or 3 dimensions a node's coordinate is indexed, nodes[i].position[1] its y, and the
+// gravity is gravity[c]; on a line neither takes an index. (Built in code: Get and Assign
+// check nothing of the network, so this holds whatever the engine does in the plane.)
+TEST(Parameter, InAPlaneACoordinateIsIndexed) {
+  Scenario s;
+  s.space.dimensions = 2;
+  s.space.gravity = {0.0, -9.81, 0.0};
+  s.nodes = {Node::Fixed("wall", Coordinates{0.0, 0.5, 0.0}),
+             Node::Prescribed("arm", {Waveform::Constant(0.1), Waveform::Sine(0.2, 0.01, 2.0),
+                                      Waveform::Constant(0.0)}),
+             Node::Free("load", 2.0, Coordinates{0.4, 0.1, 0.0}, Coordinates{0.0, -0.5, 0.0})};
+  ExpectKeysRead(s, {{"nodes[0].fixed[0]", 0.0},
+                     {"nodes[0].fixed[1]", 0.5},
+                     {"nodes[1].prescribed[0].value", 0.1},
+                     {"nodes[1].prescribed[1].amplitude", 0.01},
+                     {"nodes[2].mass", 2.0},
+                     {"nodes[2].position[0]", 0.4},
+                     {"nodes[2].position[1]", 0.1},
+                     {"nodes[2].velocity[1]", -0.5},
+                     {"gravity[1]", -9.81}});
+  // a handle writes the field it reads
+  Scenario copy = s;
+  FindParameter(s, "nodes[2].position[1]").Assign(copy, 0.3);
+  FindParameter(s, "nodes[1].prescribed[1].offset").Assign(copy, 0.25);
+  FindParameter(s, "gravity[0]").Assign(copy, 1.5);
+  EXPECT_EQ(copy.nodes[2].position_yz[0], 0.3);
+  EXPECT_EQ(copy.nodes[2].position, 0.4);
+  EXPECT_EQ(copy.nodes[1].motion_yz[0].offset, 0.25);
+  EXPECT_EQ(copy.space.gravity[0], 1.5);
+  EXPECT_THAT(Refusal(s, "nodes[2].position"),
+              HasSubstr("nodes[2].position: needs a coordinate's index in 2 dimensions: "
+                        "position[0] (x) to position[1]"));
+  EXPECT_THAT(Refusal(s, "nodes[0].fixed[2]"),
+              HasSubstr("indexes past the 2 coordinates of fixed (0 to 1)"));
+  EXPECT_THAT(Refusal(s, "nodes[1].prescribed.value"), HasSubstr("needs a coordinate's index"));
+  EXPECT_THAT(Refusal(s, "gravity"), HasSubstr("needs a coordinate's index"));
+  EXPECT_THAT(Refusal(s, "nodes[2].position[1].x"), HasSubstr("names a block, not one number"));
+
+  const Scenario line = LoadScenario(FixturePath("every_part.yaml"));
+  EXPECT_THAT(Refusal(line, "nodes[1].position[0]"),
+              HasSubstr("nodes[1].position[0]: takes no index: position is one number, x, in 1 "
+                        "dimension"));
+  EXPECT_THAT(Refusal(line, "gravity[1]"), HasSubstr("names nothing in 1 dimension"));
+}
+
 TEST(Parameter, OneLoadWrittenAsAMapIsLoad0) {
   // the README: a single load may be written as a map, and is load[0]: the same number
   // under either name

@@ -83,6 +83,11 @@ inline constexpr InputRange kDampingRange{0.0, 1e12, "N s/m",
 inline constexpr InputRange kGravityRange{-1e3, 1e3, "m/s^2",
                                           "about 100 g, beyond any rig; m g stays finite"};
 
+// The components of a direction [-] (a network load's in 2 or 3 dimensions): it is made a
+// unit vector, so only their ratios matter.
+inline constexpr InputRange kDirectionRange{
+    -1e3, 1e3, "-", "a direction is made a unit vector: only its components' ratios matter"};
+
 // The time constants accepted [s]: muscles take 5 to 60 ms; below 0.1 ms the lag is in effect
 // instantaneous (give the activation itself) and only makes the system stiff, and 10 s is
 // slower than any muscle-like actuator.

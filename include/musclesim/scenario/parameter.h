@@ -3,7 +3,9 @@
 //   single actuator  model.f_iso, actuator.mass, initial.length, activation.after,
 //                    load[0].value, excitation.high, activation_dynamics.tau_activation
 //   network          models.muscle.velocity.v_max, nodes[1].mass, elements[0].activation.value,
-//                    elements[2].exponential.alpha, loads[0].value, controllers[0].gains.kp
+//                    elements[2].exponential.alpha, loads[0].value, controllers[0].gains.kp;
+//                    in 2 or 3 dimensions a coordinate by its index: nodes[1].position[1] (y),
+//                    nodes[0].fixed[2], nodes[2].prescribed[1].amplitude, gravity[1]
 //   either           time.end, solver.rtol, output.interval, limits (limits.max_length in the
 //                    single-actuator form, limits[0].max_length in a network's)
 // A handle is found once in a scenario and then reads and writes that value in any scenario
