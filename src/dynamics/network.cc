@@ -1,6 +1,7 @@
 #include "musclesim/dynamics/network.h"
 
 #include "dynamics/element_tension.h"
+#include "dynamics/network_space.h"
 
 #include <algorithm>
 #include <cmath>
@@ -521,8 +522,10 @@ std::vector<double> NetworkSystem::Breakpoints(double t0, double t1) const {
 void NetworkSystem::ObserveElement(int e, double t, const double* y, ElementSample& out) const {
   const Link& link = links_[e];
   if (space_.dimensions > 1) {
-    out.length = Length(e, t, y);
-    out.lengthening_rate = LengtheningRate(e, t, y);
+    PathState path;  // measured once for both
+    MeasureLink(e, t, y, path);
+    out.length = path.geometry.length;
+    out.lengthening_rate = path.length_rate;
   } else {
     out.length = PositionOf(ends_[link.to], t, y) - PositionOf(ends_[link.from], t, y);
     out.lengthening_rate = VelocityOf(ends_[link.to], t, y) - VelocityOf(ends_[link.from], t, y);
