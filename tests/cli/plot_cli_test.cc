@@ -1,18 +1,23 @@
 // End-to-end tests of `musclesim plot` on hostile and malformed input: text that would run
 // commands if pasted into the gnuplot script, file names gnuplot would read as pipes, CSV
-// files that are not what plot expects, and a gnuplot that fails.
+// files that are not what plot expects, a gnuplot that fails; and a run in the plane, its
+// path and frames, with the frames' data against the run's CSV.
 #include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <sstream>
+#include <utility>
 
+#include "musclesim/io/csv_table.h"
 #include "support/scenario_files.h"
 #include "support/fresh_directory.h"
 
@@ -315,6 +320,127 @@ TEST(PlotCli, WhatGnuplotPlotsToItsStandardOutputStaysOutOfTheMessage) {
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_THAT(r.err, HasSubstr("gnuplot failed: cannot open file"));
   EXPECT_THAT(r.err, Not(HasSubstr("PNGDATA")));
+}
+
+// --- networks in the plane ---------------------------------------------------------------
+
+// A pendulum in the plane: a 0.1 kg bob on a stiff spring (1e4 N/m, 0.1 m) from a fixed
+// pivot, released level, under gravity; rows every 5 ms for 0.3 s.
+const char* const kPendulum =
+    "dimensions: 2\n"
+    "gravity: [0.0, -9.81]\n"
+    "nodes:\n"
+    "  - {name: pivot, fixed: [0.0, 0.0]}\n"
+    "  - {name: bob, mass: 0.1, position: [0.1, 0.0]}\n"
+    "elements:\n"
+    "  - {name: link, type: spring, from: pivot, to: bob, stiffness: 1.0e4, rest_length: 0.1}\n"
+    "time: {start: 0.0, end: 0.3}\n"
+    "output: {interval: 0.005}\n";
+
+// The pendulum's run: its scenario and its CSV, in `dir`.
+void RunPendulum(const std::string& dir) {
+  std::ofstream(dir + "pendulum.yaml") << kPendulum;
+  const std::string command = std::string(MUSCLESIM_BINARY) + " run " + dir + "pendulum.yaml -o " +
+                              dir + "pendulum.csv --quiet";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+}
+
+// The (x, y) rows of data set `index` of inline block `name` in `script`.
+std::vector<std::pair<double, double>> FramePoints(const std::string& script,
+                                                   const std::string& name, int index) {
+  std::istringstream in(script.substr(script.find(name + " << EOD\n") + name.size() + 8));
+  std::vector<std::pair<double, double>> points;
+  int set = 0, blank = 0;
+  for (std::string line; std::getline(in, line) && line != "EOD";) {
+    if (line.empty()) {
+      if (++blank == 2) ++set;
+      continue;
+    }
+    blank = 0;
+    double x = 0.0, y = 0.0;
+    std::istringstream(line) >> x >> y;
+    if (set == index) points.emplace_back(x, y);
+  }
+  return points;
+}
+
+TEST(PlotCli, APendulumInThePlaneIsPlottedWithItsPathAndFrames) {
+  const std::string dir = FreshFolder(), inputs = FreshFolder("inputs");
+  RunPendulum(inputs);
+  const std::string csv = inputs + "pendulum.csv";
+  // the frames' script: written even where gnuplot is missing (then the run fails after it)
+  const Outcome frames =
+      RunIn(dir, {csv, "--frames", "0,0.1,0.2,0.3", "--scenario", inputs + "pendulum.yaml",
+                  "--script", "frames.gp", "-o", "frames.png"});
+  const std::string script = testing::ReadFile(dir + "frames.gp");
+  const CsvTable table = ReadCsv(csv);
+  const int t = table.Find("t"), x = table.Find("bob.x"), y = table.Find("bob.y");
+  for (int f = 0; f < 4; ++f) {
+    SCOPED_TRACE("frame " + std::to_string(f));
+    // the row of the time asked for (rows every 5 ms: the frame's own time)
+    std::size_t row = 0;
+    while (row < table.rows.size() && std::abs(table.Number(row, t) - 0.1 * f) > 1e-9) ++row;
+    ASSERT_LT(row, table.rows.size());
+    const std::pair<double, double> bob{table.Number(row, x), table.Number(row, y)};
+    const auto nodes = FramePoints(script, "$frame" + std::to_string(f), 0);
+    ASSERT_EQ(nodes.size(), 2u);
+    EXPECT_EQ(nodes[0], (std::pair<double, double>{0.0, 0.0}));
+    EXPECT_EQ(nodes[1], bob);
+    // the link from the pivot to the bob, about its rest length (a stiff spring: its stretch
+    // under at most 3 m g is 0.3 mm), and the bob swings down from level
+    const auto link = FramePoints(script, "$frame" + std::to_string(f), 1);
+    EXPECT_EQ(link, nodes);
+    EXPECT_NEAR(std::hypot(bob.first, bob.second), 0.1, 1e-3);
+    if (f > 0) {
+      EXPECT_LT(bob.second, -0.01);
+    }
+  }
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  EXPECT_EQ(frames.exit_code, 0) << frames.err;
+  const Outcome path = RunIn(dir, {csv, "-o", "path.svg"});
+  EXPECT_EQ(path.exit_code, 0) << path.err;
+  const Outcome counted = RunIn(dir, {csv, "--frame-count", "6", "-o", "six.png"});
+  EXPECT_EQ(counted.exit_code, 0) << counted.err;
+  EXPECT_EQ(Entries(dir),
+            (std::set<std::string>{"frames.gp", "frames.png", "path.svg", "six.png"}));
+}
+
+TEST(PlotCli, FramesOfTheWrongRunTimeOrScenarioAreInvalidInput) {
+  const std::string dir = FreshFolder(), inputs = FreshFolder("inputs");
+  RunPendulum(inputs);
+  const std::string csv = inputs + "pendulum.csv";
+  // the same pendulum whose bob is called weight
+  std::string other = kPendulum;
+  for (std::size_t at; (at = other.find("bob")) != std::string::npos;)
+    other.replace(at, 3, "weight");
+  std::ofstream(inputs + "other.yaml") << other;
+  struct Case {
+    std::vector<std::string> args;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {{Trajectory(), "--frames", "0"},
+       "--frames: " + Trajectory() +
+           " is not the run of a network in the plane or in space (frames need NODE.x and "
+           "NODE.y columns, written by a run with dimensions: 2 or 3)"},
+      {{csv, "--frames", "0,0.5"},
+       "--frames 0.5: outside the run's times: " + csv + " holds t = 0 to 0.3 s"},
+      {{csv, "--frames", "0,x"}, "--frames 0,x: expected times in seconds separated by commas"},
+      {{csv, "--frame-count", "40"}, "--frame-count 40: must be 1 to 36"},
+      {{csv, "--frame-count", "3", "--frames", "0"}, "give --frames (the times) or"},
+      {{csv, "--scenario", inputs + "pendulum.yaml"}, "--scenario goes with --frames"},
+      {{csv, "--frames", "0", "--scenario", inputs + "other.yaml"},
+       inputs + "other.yaml does not match " + csv +
+           ": nodes[1] 'weight' has no columns weight.x, weight.y in the CSV"},
+  };
+  for (const Case& c : cases) {
+    std::vector<std::string> args = c.args;
+    args.insert(args.end(), {"-o", "a.png"});
+    const Outcome r = RunIn(dir, args);
+    EXPECT_EQ(r.exit_code, 2) << c.message << ": " << r.err;
+    EXPECT_THAT(r.err, HasSubstr(c.message));
+    EXPECT_EQ(Entries(dir), std::set<std::string>{}) << c.message;
+  }
 }
 
 }  // namespace

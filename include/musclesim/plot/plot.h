@@ -11,9 +11,11 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "musclesim/io/csv_table.h"
 #include "musclesim/model/tension.h"
+#include "musclesim/scenario/scenario.h"
 
 namespace musclesim {
 
@@ -55,6 +57,39 @@ std::string NetworkPlotScript(const CsvTable& trajectory, const PlotOptions& opt
 
 // Whether `table` is a network's trajectory (it has a <node>.position column).
 bool IsNetworkTrajectory(const CsvTable& table);
+
+// Whether `table` is the run of a network in the plane or in space: it has a NODE.x column
+// with NODE.y beside it (and in space NODE.z for every such node).
+bool IsSpatialTrajectory(const CsvTable& table);
+
+// A spatial network's run (columns NODE.x, NODE.y [, NODE.z], ELEMENT.length, .tension,
+// .activation, ...): on the left every node's path in the x-y plane (x across, y up, equal
+// scales; a 3-D run's x-y projection), a line per node keyed by its name (no key beyond 20
+// nodes); on the right, sharing the time axis, the panels of NetworkPlotScript but the
+// positions: lengths, tensions and activations (with excitations dashed). Throws InputError
+// as NetworkPlotScript does.
+std::string SpatialPathPlotScript(const CsvTable& trajectory, const PlotOptions& options);
+
+// The most frames SpatialFramesPlotScript draws.
+inline constexpr int kMaxFrames = 36;
+
+// `count` times (1..kMaxFrames) evenly spaced from the first row's time to the last's (the
+// first alone for 1). Throws ParameterError("frame-count") for another count, InputError
+// for a table without rows or a time that is not a finite number.
+std::vector<double> EvenlySpacedFrameTimes(const CsvTable& trajectory, int count);
+
+// A spatial network's shape at each of `times` (1..kMaxFrames, each within the run's first
+// and last row's times): a panel per time, side by side in rows of up to 4, all on the same
+// x-y axes with equal scales, each titled with the time of the row drawn, the row nearest
+// the time asked for (the earlier of two as near; no interpolation). The nodes are points;
+// with `scenario` (the one the run ran; may be null) each element is a polyline from its
+// `from` node over its via points (fixed ones at their coordinates, nodes where the row has
+// them) to its `to` node. A 3-D run is drawn in its x-y projection. Throws
+// ParameterError("frames") for a time outside the run or too many times, InputError when the
+// scenario's dimensions or nodes differ from the CSV's (naming both files and the node) and
+// as NetworkPlotScript does.
+std::string SpatialFramesPlotScript(const CsvTable& trajectory, const std::vector<double>& times,
+                                    const Scenario* scenario, const PlotOptions& options);
 
 // The residual CSV of `musclesim identify --residuals` (columns series, output, t, measured,
 // model, residual, standardised): a panel per measured series and output, the measured

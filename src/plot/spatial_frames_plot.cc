@@ -1,0 +1,180 @@
+// A spatial network's shape at chosen times: a strip of frames on common x-y axes.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "musclesim/core/errors.h"
+#include "musclesim/plot/plot.h"
+#include "plot/plot_text.h"
+#include "plot/spatial_columns.h"
+
+namespace musclesim {
+
+using namespace plot_text;  // the script pieces every figure shares
+
+namespace {
+
+constexpr int kFramesPerRow = 4;
+constexpr std::size_t kMostKeyedElements = 12;  // beyond, a key would hide the frame
+
+// The row whose time is nearest `t` (the earlier of two as near).
+std::size_t NearestRow(const std::vector<double>& row_times, double t) {
+  std::size_t best = 0;
+  for (std::size_t r = 1; r < row_times.size(); ++r) {
+    if (std::abs(row_times[r] - t) < std::abs(row_times[best] - t)) best = r;
+  }
+  return best;
+}
+
+// A frame's points: the nodes at its row, then each element's path.
+struct FramePoints {
+  std::vector<std::pair<double, double>> nodes;
+  std::vector<std::vector<std::pair<double, double>>> paths;
+};
+
+FramePoints PointsAt(const CsvTable& table, std::size_t row, const SpatialColumns& columns,
+                     const std::vector<ElementPath>& paths) {
+  FramePoints f;
+  for (const SpatialNode& node : columns.nodes) {
+    f.nodes.emplace_back(FiniteValue(table, row, node.x), FiniteValue(table, row, node.y));
+  }
+  for (const ElementPath& path : paths) {
+    std::vector<std::pair<double, double>> points;
+    for (const PathPoint& p : path.points) {
+      points.push_back(p.node < 0 ? std::make_pair(p.x, p.y)
+                                  : f.nodes[static_cast<std::size_t>(p.node)]);
+    }
+    f.paths.push_back(std::move(points));
+  }
+  return f;
+}
+
+// "[lo:hi]" around `values`, padded by `pad` on each side.
+std::string Range(double lo, double hi, double pad) {
+  std::string range = "[";
+  range.append(Number(lo - pad)).append(":").append(Number(hi + pad)).append("]");
+  return range;
+}
+
+// A tick step of 1, 2 or 5 times a power of ten giving about four ticks over `span`: narrow
+// frames side by side have no room for gnuplot's own choice.
+double TickStep(double span) {
+  const double rough = span / 4.0;
+  const double decade = std::pow(10.0, std::floor(std::log10(rough)));
+  for (double m : {1.0, 2.0, 5.0}) {
+    if (m * decade >= rough) return m * decade;
+  }
+  return 10.0 * decade;
+}
+
+}  // namespace
+
+std::vector<double> EvenlySpacedFrameTimes(const CsvTable& table, int count) {
+  if (count < 1 || count > kMaxFrames) {
+    throw ParameterError("frame-count", std::to_string(count),
+                         std::string("must be 1 to ").append(std::to_string(kMaxFrames)));
+  }
+  table.Require({"t"}, "a spatial network's trajectory CSV of musclesim run");
+  if (table.rows.empty()) throw InputError(table.source + ": no rows to plot");
+  const int t = table.Find("t");
+  const double first = FiniteValue(table, 0, t);
+  const double last = FiniteValue(table, table.rows.size() - 1, t);
+  std::vector<double> times = {first};
+  for (int k = 1; k < count; ++k) {
+    times.push_back(k + 1 == count ? last : first + (last - first) * k / (count - 1));
+  }
+  return times;
+}
+
+std::string SpatialFramesPlotScript(const CsvTable& table, const std::vector<double>& times,
+                                    const Scenario* scenario, const PlotOptions& options) {
+  table.Require({"t"}, "a spatial network's trajectory CSV of musclesim run");
+  const SpatialColumns columns = FindSpatialColumns(table);
+  if (columns.nodes.empty()) {
+    throw InputError(table.source +
+                     ": a spatial network's trajectory CSV of musclesim run needs NODE.x and "
+                     "NODE.y columns; found none");
+  }
+  if (table.rows.empty()) throw InputError(table.source + ": no rows to plot");
+  if (times.empty() || times.size() > static_cast<std::size_t>(kMaxFrames)) {
+    throw ParameterError(
+        "frames", std::to_string(times.size()) + " times",
+        std::string("give 1 to ").append(std::to_string(kMaxFrames)).append(" times"));
+  }
+  const std::vector<ElementPath> paths =
+      scenario ? ElementPaths(*scenario, columns, table.source) : std::vector<ElementPath>{};
+  std::vector<double> row_times;
+  const int t_column = table.Find("t");
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    row_times.push_back(FiniteValue(table, r, t_column));
+  }
+  const double first = row_times.front(), last = row_times.back();
+  std::vector<std::size_t> rows;
+  for (double t : times) {
+    if (!std::isfinite(t) || t < first || t > last) {
+      throw ParameterError("frames", Number(t),
+                           "outside the run's times: " + table.source +
+                               " holds t = " + Number(first) + " to " + Number(last) + " s");
+    }
+    rows.push_back(NearestRow(row_times, t));
+  }
+
+  std::ostringstream s;
+  s << kFrame;
+  // every frame's block: index 0 the nodes, index 1 + k element k's path
+  double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
+  const auto extend = [&](const std::pair<double, double>& p) {
+    x_lo = std::min(x_lo, p.first);
+    x_hi = std::max(x_hi, p.first);
+    y_lo = std::min(y_lo, p.second);
+    y_hi = std::max(y_hi, p.second);
+  };
+  for (std::size_t f = 0; f < rows.size(); ++f) {
+    const FramePoints points = PointsAt(table, rows[f], columns, paths);
+    s << "$frame" << f << " << EOD\n";
+    for (const auto& p : points.nodes) {
+      extend(p);
+      s << Number(p.first) << " " << Number(p.second) << "\n";
+    }
+    for (const auto& path : points.paths) {
+      s << "\n\n";
+      for (const auto& p : path) {
+        extend(p);
+        s << Number(p.first) << " " << Number(p.second) << "\n";
+      }
+    }
+    s << "EOD\n";
+  }
+  // common axes, a margin of 5% of the wider span (1 cm when every point coincides)
+  const double span = std::max(x_hi - x_lo, y_hi - y_lo);
+  const double pad = span > 0.0 ? 0.05 * span : 0.01;
+  const int per_row = std::min(kFramesPerRow, static_cast<int>(rows.size()));
+  const int row_count = (static_cast<int>(rows.size()) + per_row - 1) / per_row;
+  s << "set multiplot layout " << row_count << "," << per_row << " title "
+    << TitleOf(options, table.source, "the CSV file's name (the default title)") << "\n"
+    << "set size ratio -1\nset xrange " << Range(x_lo, x_hi, pad) << "\nset yrange "
+    << Range(y_lo, y_hi, pad) << "\nset xtics " << Number(TickStep(x_hi - x_lo + 2 * pad))
+    << "\nset ytics " << Number(TickStep(y_hi - y_lo + 2 * pad)) << "\n"
+    << (columns.dimensions == 3 ? "set xlabel 'x [m] (x-y projection)'\n" : "set xlabel 'x [m]'\n")
+    << "set ylabel 'y [m]'\n"
+    << (paths.size() > kMostKeyedElements ? "set key off\n"
+                                          : "set key inside top right opaque box\n");
+  for (std::size_t f = 0; f < rows.size(); ++f) {
+    s << "set title 't = " << Number(row_times[rows[f]]) << " s'\nplot ";
+    for (std::size_t k = 0; k < paths.size(); ++k) {
+      s << "$frame" << f << " index " << k + 1 << " using 1:2 with lines lw 2 lc " << k % 8 + 1
+        << (f == 0 ? std::string(" title ").append(
+                         GnuplotString(paths[k].name, scenario->source + ": an element's name"))
+                   : std::string(" notitle"))
+        << ", \\\n  ";
+    }
+    s << "$frame" << f << " index 0 using 1:2 with points pt 7 ps 1.2 lc rgb '#000000' "
+      << (f == 0 ? "title 'nodes'\nset key off" : "notitle") << "\n";
+  }
+  s << "unset multiplot\n";
+  return s.str();
+}
+
+}  // namespace musclesim
