@@ -11,6 +11,7 @@ packages=(
   libyaml-cpp-dev       # scenario files
   libgtest-dev libgmock-dev googletest   # tests
   libnlopt-cxx-dev      # gradient-based minimiser of the Gaussian fit
+  coinor-libipopt-dev   # IPOPT: the nonlinear programs of optimal control (musclesim optimize)
   libbenchmark-dev      # bench/
   libopenmpi-dev openmpi-bin   # sweeps across machines (-DMUSCLESIM_WITH_MPI=ON)
   gnuplot-nox           # musclesim plot draws its figures with gnuplot
