@@ -20,7 +20,7 @@ class ElementDerivative final : public ParameterDerivative {
 
   void RightHandSide(double t, const double* y, double* dfdp) const override {
     std::fill(dfdp, dfdp + system_.state_size(), 0.0);
-    system_.AddTension(element_, Partial(t, y), dfdp);
+    system_.AddTension(element_, t, y, Partial(t, y), dfdp);
   }
 
   void Elements(double t, const double* y,

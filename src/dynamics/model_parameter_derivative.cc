@@ -24,7 +24,7 @@ class ModelDerivative final : public ParameterDerivative {
 
   void RightHandSide(double t, const double* y, double* dfdp) const override {
     std::fill(dfdp, dfdp + system_.state_size(), 0.0);
-    for (int e : actuators_) system_.AddTension(e, Partial(e, t, y).total, dfdp);
+    for (int e : actuators_) system_.AddTension(e, t, y, Partial(e, t, y).total, dfdp);
   }
 
   void Elements(double t, const double* y,

@@ -582,6 +582,7 @@ void NetworkSystem::Observe(double t, const double* y, NetworkSample& sample) co
 
 NetworkSystem::ElementPartials NetworkSystem::Along(int e, double t, const double* y,
                                                     const double* s) const {
+  if (space_.dimensions > 1) return SpaceAlong(e, t, y, s);
   const Link& link = links_[e];
   const End& a = ends_[link.from];
   const End& b = ends_[link.to];
@@ -605,7 +606,9 @@ NetworkSystem::ElementPartials NetworkSystem::Along(int e, double t, const doubl
   return out;
 }
 
-void NetworkSystem::AddTension(int e, double tension, double* ydot) const {
+void NetworkSystem::AddTension(int e, double t, const double* y, double tension,
+                               double* ydot) const {
+  if (space_.dimensions > 1) return AddSpaceTension(e, t, y, tension, ydot);
   const Link& link = links_[e];
   const End& a = ends_[link.from];
   const End& b = ends_[link.to];

@@ -25,7 +25,7 @@ double ControlValueDerivative::TensionSlope(double t, const double* y) const {
 
 void ControlValueDerivative::RightHandSide(double t, const double* y, double* dfdp) const {
   std::fill(dfdp, dfdp + system_.state_size(), 0.0);
-  system_.AddTension(element_, TensionSlope(t, y), dfdp);
+  system_.AddTension(element_, t, y, TensionSlope(t, y), dfdp);
 }
 
 void ControlValueDerivative::Elements(double t, const double* y,

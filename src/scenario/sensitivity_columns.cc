@@ -20,9 +20,14 @@ SensitivityColumns::SensitivityColumns(ScenarioForm form, const NetworkSystem& s
     add("tension_active", Kind::kActive, 0);
     add("tension_total", Kind::kTension, 0);
   } else {
+    const int d = system.dimensions();
     for (std::size_t i = 0; i < system.nodes().size(); ++i) {
       const int state = system.StateIndex(static_cast<int>(i));
       if (state < 0) continue;
+      if (d > 1) {
+        AddCoordinates(system.nodes()[i].name, d, state);
+        continue;
+      }
       add(system.nodes()[i].name + ".position", Kind::kPosition, state);
       add(system.nodes()[i].name + ".velocity", Kind::kVelocity, state + 1);
     }
@@ -39,6 +44,20 @@ SensitivityColumns::SensitivityColumns(ScenarioForm form, const NetworkSystem& s
     }
   }
   partials_.resize(system.elements().size());
+}
+
+void SensitivityColumns::AddCoordinates(const std::string& node, int d, int state) {
+  // named as the run's own columns (RunColumns): NODE.x, NODE.y (NODE.z), then NODE.vx ...;
+  // the free node's states are its d coordinates, then their d rates
+  static constexpr const char* kAxes[] = {"x", "y", "z"};
+  for (int c = 0; c < d; ++c) {
+    names_.push_back(std::string(node).append(".").append(kAxes[c]));
+    columns_.push_back({Kind::kPosition, state + c});
+  }
+  for (int c = 0; c < d; ++c) {
+    names_.push_back(std::string(node).append(".v").append(kAxes[c]));
+    columns_.push_back({Kind::kVelocity, state + d + c});
+  }
 }
 
 void SensitivityColumns::Evaluate(double t, const double* y, const double* const* s, double* values,

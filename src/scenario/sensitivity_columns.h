@@ -42,6 +42,9 @@ class SensitivityColumns {
     Kind kind;
     int index;  // a state (position, velocity, shortening, activation) or an element
   };
+  // A free node's columns in 2 or 3 dimensions, its states from `state` on.
+  void AddCoordinates(const std::string& node, int d, int state);
+
   const NetworkSystem& system_;
   const std::vector<SensitivityParameter>& parameters_;
   std::vector<std::string> names_;

@@ -88,14 +88,6 @@ SensitivityRun::SensitivityRun(const Scenario& scenario,
                      scenario.source + " has controllers[0] " + scenario.controllers.front().name +
                      "); run it without sensitivities");
   }
-  if (scenario.space.dimensions > 1 && !requests.empty()) {
-    // the path terms of the sensitivity equations (docs/model.md 10 with 12) are not derived
-    const SensitivityRequest& first = requests.front();
-    throw InputError((first.where.empty() ? "" : first.where + " ") + first.path +
-                     ": sensitivities of a network in " +
-                     std::to_string(scenario.space.dimensions) +
-                     " dimensions are not supported yet; run it without sensitivities");
-  }
   for (const SensitivityRequest& request : requests) {
     std::string where;
     const Parameter parameter = HandleOf(scenario, request, where);

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -244,6 +245,74 @@ TEST(SensitivityCli, PlainColumnsMatchAPlainRunWithActivationDynamics) {
 
 TEST(SensitivityCli, PlainColumnsMatchAPlainRunNetwork) {
   ExpectPlainColumnsMatch(Network(), "'nodes[1].position'");
+}
+
+// A network in the plane listing its own sensitivities: a cable from a wall over a free
+// pulley node (a spring holds it to a fixed point above) to a free tip pulled along x, under
+// gravity; the cable stays taut throughout (0.122 m or longer against its 0.12 m slack
+// length) and no segment shorter than 0.02 m.
+constexpr const char* kPlanar = R"(name: cli_planar
+dimensions: 2
+gravity: [0.0, -9.81]
+nodes:
+  - {name: wall, fixed: [0.0, 0.0]}
+  - {name: top, fixed: [0.05, 0.1]}
+  - {name: pulley, mass: 0.05, position: [0.05, 0.03], velocity: [0.0, 0.0]}
+  - {name: tip, mass: 0.2, position: [0.1, -0.02], velocity: [0.0, 0.0]}
+elements:
+  - {name: cable, type: tendon, from: wall, to: tip, via: [pulley], slack_length: 0.12, stiffness: 2000.0}
+  - {name: holder, type: spring, from: top, to: pulley, stiffness: 500.0, rest_length: 0.05}
+loads:
+  - {node: tip, type: constant, value: 20.0, direction: [1.0, 0.0]}
+time: {start: 0.0, end: 0.2}
+solver: {rtol: 1.0e-12, atol: 1.0e-14}
+output: {file: planar.csv, interval: 0.01}
+)";
+
+// The plain run's columns, then d_<column>/d_<path> with a free node's named as its run
+// columns (NODE.x, NODE.y, NODE.vx, NODE.vy); each derivative column against a central
+// difference of two plain runs at p +- 1e-4 |p| (--set), to 1e-5 of the column's scale (the
+// quotient's truncation, ~1e-7, and its share of the runs' errors at rtol 1e-12, ~1e-7, well
+// within): the program end to end, the finer check being
+// tests/scenario/spatial_sensitivity_test.cc.
+TEST(SensitivityCli, PlanarNetworkFromItsOwnList) {
+  const std::string scenario = testing::WriteTempFile(
+      "planar.yaml",
+      std::string(kPlanar) + "sensitivities: ['elements[1].stiffness', 'gravity[1]']\n");
+  const std::string without = testing::WriteTempFile("plain.yaml", kPlanar);
+  const CsvText plain = RunToCsv(without, TempPath("plain.csv"));
+  const CsvText csv = RunToCsv(scenario, TempPath("out.csv"));
+  const std::vector<std::string> columns = {
+      "pulley.x", "pulley.y", "pulley.vx",    "pulley.vy",     "tip.x",         "tip.y",
+      "tip.vx",   "tip.vy",   "cable.length", "cable.tension", "holder.length", "holder.tension"};
+  const std::vector<std::string> paths = {"elements[1].stiffness", "gravity[1]"};
+  EXPECT_EQ(csv.header, plain.header + DerivativeColumns(paths, columns));
+  ASSERT_EQ(csv.rows.size(), plain.rows.size());
+  const std::vector<double> values = {500.0, -9.81};
+  for (std::size_t p = 0; p < paths.size(); ++p) {
+    const double h = 1e-4 * std::abs(values[p]);
+    const auto run_at = [&](double value, const std::string& name) {
+      char set[96];
+      std::snprintf(set, sizeof set, "--set '%s=%.17g'", paths[p].c_str(), value);
+      return RunToCsv(without, TempPath(name), set);
+    };
+    const CsvText below = run_at(values[p] - h, "below.csv");
+    const CsvText above = run_at(values[p] + h, "above.csv");
+    for (const std::string& column : columns) {
+      const int d = csv.Column("d_" + column + "/d_" + paths[p]);
+      const int c = plain.Column(column);
+      ASSERT_GE(d, 0) << column;
+      ASSERT_GE(c, 0) << column;
+      double scale = 0.0;
+      for (const auto& row : csv.rows) scale = std::max(scale, std::abs(std::stod(row[d])));
+      for (std::size_t r = 0; r < csv.rows.size(); ++r) {
+        const double difference =
+            (std::stod(above.rows[r][c]) - std::stod(below.rows[r][c])) / (2.0 * h);
+        EXPECT_NEAR(std::stod(csv.rows[r][d]), difference, 1e-5 * scale)
+            << "d_" << column << "/d_" << paths[p] << " at t = " << csv.rows[r][0];
+      }
+    }
+  }
 }
 
 // Each refusal exits 2, naming the path and the rule.

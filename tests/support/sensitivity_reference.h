@@ -61,11 +61,20 @@ inline void AppendActuatorRow(FullTrajectory& out, const ActuatorSample& s, bool
   out.values.push_back(s.tension.total);
 }
 
+// In 2 or 3 dimensions a free node's columns are its coordinates, NODE.x, NODE.y (NODE.z),
+// then their rates NODE.vx ..., read from the sample's d numbers per node.
 inline FullTrajectory FromNetworkRun(const Scenario& spec, const NetworkRunResult& result) {
   FullTrajectory out;
   out.times = result.times;
+  const std::size_t d = static_cast<std::size_t>(spec.space.dimensions);
+  const char* const axes[] = {"x", "y", "z"};
   for (const Node& node : spec.nodes) {
     if (node.kind != NodeKind::kFree) continue;
+    if (d > 1) {
+      for (std::size_t c = 0; c < d; ++c) out.columns.push_back(node.name + "." + axes[c]);
+      for (std::size_t c = 0; c < d; ++c) out.columns.push_back(node.name + ".v" + axes[c]);
+      continue;
+    }
     out.columns.push_back(node.name + ".position");
     out.columns.push_back(node.name + ".velocity");
   }
@@ -80,6 +89,11 @@ inline FullTrajectory FromNetworkRun(const Scenario& spec, const NetworkRunResul
   for (const NetworkSample& sample : result.samples) {
     for (std::size_t i = 0; i < spec.nodes.size(); ++i) {
       if (spec.nodes[i].kind != NodeKind::kFree) continue;
+      if (d > 1) {
+        for (std::size_t c = 0; c < d; ++c) out.values.push_back(sample.position[i * d + c]);
+        for (std::size_t c = 0; c < d; ++c) out.values.push_back(sample.velocity[i * d + c]);
+        continue;
+      }
       out.values.push_back(sample.position[i]);
       out.values.push_back(sample.velocity[i]);
     }

@@ -178,11 +178,15 @@ class NetworkSystem {
     double total = 0.0, passive = 0.0, active = 0.0;  // of T [N per unit]
   };
   // The derivatives of element e's length and tension along the state direction s at (t, y):
-  // dl/dy s and dT/dy s. (Networks without controllers.)
+  // dl/dy s and dT/dy s. (Networks without controllers.) In 2 or 3 dimensions dl/dy s sums
+  // G_j . s_q over the free points of the path, and d(ldot)/dy s adds the turning of the
+  // directions, (d ldot/dq_j) . s_q (docs/model.md 12).
   ElementPartials Along(int e, double t, const double* y, const double* s) const;
-  // Adds to `ydot` what a tension `tension` [N] of element e adds to the right-hand side (its
-  // nodes' accelerations), the way a change of that element's tension enters df/dp.
-  void AddTension(int e, double tension, double* ydot) const;
+  // Adds to `ydot` what a tension `tension` [N] of element e at (t, y) adds to the right-hand
+  // side (its nodes' accelerations), the way a change of that element's tension enters df/dp:
+  // on a line +-T on its ends; in 2 or 3 dimensions -T G_j on every free point of its path
+  // (G_j at (t, y)).
+  void AddTension(int e, double t, const double* y, double tension, double* ydot) const;
 
  private:
   // A node as the right-hand side sees it.
@@ -354,6 +358,9 @@ class NetworkSystem {
   void ObserveSpace(double t, const double* y, NetworkSample& sample) const;
   void CheckInitialPaths(double t, const double* y) const;
   double SpaceLengtheningRate(int e, double t, const double* y) const;
+  // Along and AddTension in 2 or 3 dimensions (space_sensitivity.cc).
+  ElementPartials SpaceAlong(int e, double t, const double* y, const double* s) const;
+  void AddSpaceTension(int e, double t, const double* y, double tension, double* ydot) const;
   // The sum of free node f's loads, each along its direction [N].
   Coordinates DirectedLoad(const FreeNode& f, double t, const double* y) const;
   std::vector<FreeNode> free_nodes_;

@@ -37,8 +37,9 @@ struct SensitivityTable {
   // The differentiated columns, by their CSV names. A single actuator: length,
   // shortening_velocity, activation (only with activation dynamics, where it is a state),
   // tension_passive, tension_active, tension_total. A network: NODE.position and
-  // NODE.velocity of every free node, ELEMENT.length and ELEMENT.tension of every element,
-  // ACTUATOR.activation (with activation dynamics), ACTUATOR.tension_passive and
+  // NODE.velocity of every free node (in 2 or 3 dimensions NODE.x, NODE.y (NODE.z), NODE.vx,
+  // NODE.vy (NODE.vz), as the run's columns), ELEMENT.length and ELEMENT.tension of every
+  // element, ACTUATOR.activation (with activation dynamics), ACTUATOR.tension_passive and
   // ACTUATOR.tension_active.
   std::vector<std::string> columns;
   std::vector<std::string> parameters;    // the paths, written one way
