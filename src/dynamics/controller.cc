@@ -22,6 +22,18 @@ MeasuredQuantity ParseMeasuredQuantity(std::string_view text) {
   return Parse(kMeasuredQuantityNames, "quantity", text);
 }
 
+std::string_view CoordinateName(int coordinate) {
+  constexpr std::string_view kNames[] = {"x", "y", "z"};
+  return coordinate >= 0 && coordinate < 3 ? kNames[coordinate] : "none";
+}
+
+int ParseCoordinate(std::string_view text) {
+  for (int c = 0; c < 3; ++c) {
+    if (text == CoordinateName(c)) return c;
+  }
+  throw ParameterError("coordinate", std::string(text), "must be one of x, y, z");
+}
+
 namespace {
 
 // Validate(waveform) with its path put under `key`.
@@ -46,6 +58,16 @@ void ValidateMeasurement(const Measurement& m) {
   if (!m.element.empty() && m.quantity == MeasuredQuantity::kPosition) {
     throw ParameterError("measure.quantity", "position",
                          "an element's measured quantity is its length or its tension");
+  }
+  if (m.coordinate == Measurement::kNoCoordinate) return;
+  if (m.coordinate < 0 || m.coordinate > 2) {
+    throw ParameterError("measure.coordinate", std::to_string(m.coordinate),
+                         "must be x, y or z (0, 1 or 2)");
+  }
+  if (!m.element.empty()) {
+    throw ParameterError("measure.coordinate", std::string(CoordinateName(m.coordinate)),
+                         "only a node's position has coordinates: an element's length and "
+                         "tension are numbers");
   }
 }
 

@@ -72,8 +72,26 @@ NetworkSystem::Loop NetworkSystem::MeasuredLoop(std::size_t k) const {
                            "must name a free node (one with a mass): it is " +
                                std::string(ToString(nodes_[loop.node].kind)));
     }
+    RequireCoordinate(k);
   }
   return loop;
+}
+
+void NetworkSystem::RequireCoordinate(std::size_t k) const {
+  const int c = controllers_[k].measure.coordinate, d = space_.dimensions;
+  const std::string path = Entry("controllers", k, "measure.coordinate");
+  if (c == Measurement::kNoCoordinate) {
+    if (d == 1) return;  // on a line the position is x
+    throw ParameterError(path, "none",
+                         "is required in " + std::to_string(d) +
+                             " dimensions: the coordinate of the node's position measured (" +
+                             (d == 2 ? "x or y" : "x, y or z") + ")");
+  }
+  if (c >= d) {
+    throw ParameterError(path, std::string(CoordinateName(c)),
+                         std::string("is beyond the network's coordinates: ") +
+                             (d == 1 ? "x, on a line" : "x and y, in the plane"));
+  }
 }
 
 int NetworkSystem::DrivableActuator(std::size_t k, const char* key, const std::string& name,
@@ -135,6 +153,7 @@ void NetworkSystem::RequireNoAlgebraicLoop(std::size_t k, const std::vector<int>
 }
 
 void NetworkSystem::PlaceLoopColumns(std::size_t k) {
+  if (space_.dimensions > 1) return PlaceSpaceLoopColumns(k);
   Loop& loop = loops_[k];
   const int m = loop.element;
   const auto place = [&](int node, int column) {
@@ -156,6 +175,7 @@ void NetworkSystem::PlaceLoopColumns(std::size_t k) {
 }
 
 void NetworkSystem::AddControlPattern(std::vector<std::pair<int, int>>& pairs) const {
+  if (space_.dimensions > 1) return AddSpaceControlPattern(pairs);
   for (const Loop& loop : loops_) {
     const auto add_row = [&](int row) {
       if (row < 0) return;
@@ -179,6 +199,7 @@ void NetworkSystem::AddControlPattern(std::vector<std::pair<int, int>>& pairs) c
 }
 
 void NetworkSystem::FindControlSlots(const std::vector<std::pair<int, int>>& pairs) {
+  if (space_.dimensions > 1) return FindSpaceControlSlots(pairs);
   const auto slot = [&](int row, int column) {
     if (row < 0 || column < 0) return -1;
     const auto it = std::lower_bound(pairs.begin(), pairs.end(), std::make_pair(column, row));
@@ -218,7 +239,10 @@ NetworkSystem::Command NetworkSystem::CommandOf(int k, double t, const double* y
   double measured_by[kLoopColumns] = {};
   double rate_by[kLoopColumns] = {};
   double rate = 0.0;  // ydot
-  if (loop.node >= 0) {
+  if (space_.dimensions > 1) {
+    // its derivatives are SpaceControlJacobian's: measured_by and rate_by stay 0 here
+    out.measured = MeasureInSpace(k, t, y, rate);
+  } else if (loop.node >= 0) {
     const int s = ends_[loop.node].state;
     out.measured = y[s];
     rate = y[s + 1];
@@ -284,25 +308,30 @@ double NetworkSystem::ExcitationOf(int e, double t, const double* y) const {
   return links_[e].loop >= 0 ? ControlOutput(e, t, y) : elements_[e].excitation->signal.Evaluate(t);
 }
 
-double NetworkSystem::IntegralRate(const Command& command, double ki, double* by_state) const {
+NetworkSystem::IntegralFade NetworkSystem::FadeOf(const Command& command, double ki) {
   // the integral moves c toward `high` when ki err > 0, toward `low` when ki err < 0; within
   // kIntegralFadeBand of that bound it fades out linearly, beyond it stops (no wind-up)
   const double push = ki * command.error;
-  double weight = 1.0, weight_by_value = 0.0;
+  IntegralFade fade{1.0, 0.0};
   const double room = push > 0.0   ? command.high - command.value
                       : push < 0.0 ? command.value - command.low
                                    : std::numeric_limits<double>::infinity();
   if (room <= 0.0) {
-    weight = 0.0;
+    fade.weight = 0.0;
   } else if (room < kIntegralFadeBand) {
-    weight = room / kIntegralFadeBand;
-    weight_by_value = (push > 0.0 ? -1.0 : 1.0) / kIntegralFadeBand;
+    fade.weight = room / kIntegralFadeBand;
+    fade.by_value = (push > 0.0 ? -1.0 : 1.0) / kIntegralFadeBand;
   }
+  return fade;
+}
+
+double NetworkSystem::IntegralRate(const Command& command, double ki, double* by_state) const {
+  const IntegralFade fade = FadeOf(command, ki);
   for (int i = 0; i < kLoopColumns; ++i) {
-    by_state[i] =
-        weight * command.error_by_state[i] + command.error * weight_by_value * command.by_state[i];
+    by_state[i] = fade.weight * command.error_by_state[i] +
+                  command.error * fade.by_value * command.by_state[i];
   }
-  return weight * command.error;
+  return fade.weight * command.error;
 }
 
 void NetworkSystem::ControlRightHandSide(double t, const double* y, double* ydot) const {

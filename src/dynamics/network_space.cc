@@ -74,10 +74,6 @@ void NetworkSystem::AddPath(std::size_t e) {
 }
 
 void NetworkSystem::ResolveSpace() {
-  if (!controllers_.empty()) {
-    throw ParameterError("controllers", std::to_string(controllers_.size()) + " controllers",
-                         "are not supported yet in 2 or 3 dimensions");
-  }
   for (std::size_t l = 0; l < loads_.size(); ++l) {
     Coordinates n = loads_[l].direction;
     for (int c = space_.dimensions; c < 3; ++c) n[c] = 0.0;
@@ -234,6 +230,7 @@ void NetworkSystem::SpaceRightHandSide(double t, const double* y, double* ydot) 
     ydot[a.state] =
         EvaluateActivationRate(input.dynamics, ExcitationOf(a.element, t, y), y[a.state]).value;
   }
+  ControlRightHandSide(t, y, ydot);
 }
 
 void NetworkSystem::ObserveSpace(double t, const double* y, NetworkSample& sample) const {

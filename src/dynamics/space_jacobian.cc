@@ -127,6 +127,7 @@ void NetworkSystem::SpaceJacobian(double t, const double* y, double* values) con
         EvaluateActivationRate(input.dynamics, ExcitationOf(a.element, t, y), y[a.state])
             .by_activation;
   }
+  SpaceControlJacobian(t, y, values);
   for (int k = 0; k < pattern_.entries(); ++k) {
     if (row_scale_[k] >= 0) values[k] *= free_nodes_[row_scale_[k]].inverse_mass;
   }

@@ -29,11 +29,37 @@ Waveform ReadSignal(const yaml::Source& src, const YAML::Node& node, const std::
   return w;
 }
 
+// A node's measured coordinate, `coordinate: x` (y, z): optional on a line, where it can
+// only be x, required in 2 or 3 `dimensions`.
+int ReadCoordinate(const yaml::Source& src, const YAML::Node& node, const std::string& at,
+                   int dimensions) {
+  const std::string path = Join(at, "coordinate");
+  const YAML::Node coordinate = node["coordinate"];
+  const std::string names = dimensions == 1 ? "x" : dimensions == 2 ? "x or y" : "x, y or z";
+  if (!coordinate) {
+    if (dimensions == 1) return Measurement::kNoCoordinate;
+    // told as Required tells a missing key, at the map that lacks it
+    throw InputError(
+        path + " (" + yaml::Location(src, node) + "): missing required key: in " +
+        std::to_string(dimensions) +
+        " dimensions a node's measured position is one coordinate (coordinate: " + names + ")");
+  }
+  const std::string text = yaml::ReadString(src, coordinate, path);
+  int c = Measurement::kNoCoordinate;
+  ValidateAt(src, node, at, [&] { c = ParseCoordinate(text); });
+  if (c >= dimensions) {
+    yaml::Fail(src, coordinate, path, text,
+               "is beyond the scenario's coordinates (" + names +
+                   "): the scenario has dimensions: " + std::to_string(dimensions));
+  }
+  return c;
+}
+
 Measurement ReadMeasurement(const yaml::Source& src, const YAML::Node& item,
-                            const std::string& path) {
+                            const std::string& path, int dimensions) {
   const YAML::Node node = Required(src, item, path, "measure");
   const std::string at = Join(path, "measure");
-  yaml::RequireMap(src, node, at, {"element", "node", "quantity"});
+  yaml::RequireMap(src, node, at, {"element", "node", "quantity", "coordinate"});
   if (static_cast<bool>(node["element"]) == static_cast<bool>(node["node"])) {
     yaml::Fail(src, node, at, yaml::Describe(node),
                "give exactly one of element (its quantity length or tension) or node (its "
@@ -42,8 +68,14 @@ Measurement ReadMeasurement(const yaml::Source& src, const YAML::Node& item,
   Measurement m;
   if (node["element"]) {
     m.element = yaml::ReadString(src, node["element"], Join(at, "element"));
+    if (const YAML::Node coordinate = node["coordinate"]) {
+      yaml::Fail(src, coordinate, Join(at, "coordinate"), yaml::Describe(coordinate),
+                 "only a node's position has coordinates: an element's length and tension are "
+                 "numbers");
+    }
   } else {
     m.node = yaml::ReadString(src, node["node"], Join(at, "node"));
+    m.coordinate = ReadCoordinate(src, node, at, dimensions);
   }
   const YAML::Node quantity = Required(src, node, at, "quantity");
   const std::string text = yaml::ReadString(src, quantity, Join(at, "quantity"));
@@ -82,7 +114,7 @@ CoContraction ReadCoContraction(const yaml::Source& src, const YAML::Node& node,
 }
 
 Controller ReadController(const yaml::Source& src, const YAML::Node& item, const std::string& path,
-                          double t_start, double t_end) {
+                          int dimensions, double t_start, double t_end) {
   if (!item.IsMap()) {
     yaml::Fail(src, item, path, yaml::Describe(item),
                "must be a map: {name, type: pid, measure, reference, gains, drives or "
@@ -99,7 +131,7 @@ Controller ReadController(const yaml::Source& src, const YAML::Node& item, const
     yaml::Fail(src, type, Join(path, "type"), kind,
                std::string("must be one of ") + kControllerTypes);
   }
-  c.measure = ReadMeasurement(src, item, path);
+  c.measure = ReadMeasurement(src, item, path, dimensions);
   // a reference in the measured quantity's unit
   const InputRange* unit =
       c.measure.quantity == MeasuredQuantity::kTension ? &kForceRange : &kPositionRange;
@@ -129,14 +161,14 @@ Controller ReadController(const yaml::Source& src, const YAML::Node& item, const
 }  // namespace
 
 std::vector<Controller> ReadControllers(const yaml::Source& src, const YAML::Node& node,
-                                        double t_start, double t_end) {
+                                        int dimensions, double t_start, double t_end) {
   RequireList(src, node, "controllers",
               "controllers, each {name, type: pid, measure, reference, gains, drives or "
               "co_contraction}");
   std::vector<Controller> controllers;
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string path = "controllers[" + std::to_string(i) + "]";
-    controllers.push_back(ReadController(src, node[i], path, t_start, t_end));
+    controllers.push_back(ReadController(src, node[i], path, dimensions, t_start, t_end));
   }
   return controllers;
 }

@@ -29,8 +29,10 @@ struct ControllerRef {
 using DrivenActuators = std::map<std::string, ControllerRef>;
 
 // `node` is the value of `controllers` (a list); pulses are checked against [t_start, t_end].
+// A measured node's `coordinate` (x, y, z) is required in 2 or 3 `dimensions` and optional on
+// a line, where it can only be x; an element's measure has none.
 std::vector<Controller> ReadControllers(const yaml::Source& src, const YAML::Node& node,
-                                        double t_start, double t_end);
+                                        int dimensions, double t_start, double t_end);
 
 DrivenActuators DrivenActuatorsOf(const std::vector<Controller>& controllers);
 

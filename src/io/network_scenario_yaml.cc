@@ -25,14 +25,6 @@ constexpr std::initializer_list<const char*> kNetworkKeys = {
     "name",   "models", "nodes",         "elements",    "loads",      "time",   "solver",
     "output", "limits", "sensitivities", "controllers", "dimensions", "gravity"};
 
-// The key node of `key` in the map `root` (for a message placed at the key, not its value).
-YAML::Node KeyOf(const YAML::Node& root, const char* key) {
-  for (const auto& entry : root) {
-    if (entry.first.Scalar() == key) return entry.first;
-  }
-  return root;
-}
-
 NamedModels ReadModels(const yaml::Source& src, const YAML::Node& node, Scenario& s) {
   if (!node.IsMap()) {
     yaml::Fail(src, node, "models", yaml::Describe(node),
@@ -108,13 +100,7 @@ Scenario ReadNetworkScenario(const yaml::Source& src, const YAML::Node& root) {
   s.nodes = ReadNodes(src, Required(src, root, "", "nodes"), dimensions);
   // before the elements: an actuator a controller drives has no activation of its own
   if (const YAML::Node node = root["controllers"]) {
-    if (dimensions > 1) {
-      yaml::Fail(src, KeyOf(root, "controllers"), "controllers", yaml::Describe(node),
-                 "controllers in 2 or 3 dimensions are not supported yet: the scenario has "
-                 "dimensions: " +
-                     std::to_string(dimensions));
-    }
-    s.controllers = ReadControllers(src, node, s.t_start, s.t_end);
+    s.controllers = ReadControllers(src, node, dimensions, s.t_start, s.t_end);
     RequireDrivenActuators(src, node, s.controllers, root["elements"]);
   }
   s.elements = ReadElements(src, Required(src, root, "", "elements"), models,

@@ -301,6 +301,108 @@ TEST(ControllerYaml, CoContractionNamesAreResolved) {
                         "): activation must stay within [0, 1]"));
 }
 
+// ---- in the plane (docs/guide/networks.md "In the plane and in space") --------------------
+
+// A 2 kg mass in the plane under gravity, hung from `ceiling` by an actuator whose controller
+// holds the mass's y coordinate, held sideways by a spring; a second actuator over a fixed via
+// point holds its own path's length.
+const std::string kPlanarHold = std::string("name: planar\n") + kModels + R"(dimensions: 2
+gravity: [0.0, -9.81]
+nodes:
+  - {name: ceiling, fixed: [0.04, 0.09]}
+  - {name: wall, fixed: [-0.1, 0.0]}
+  - {name: load, mass: 2.0, position: [0.0, -0.005]}
+elements:
+  - {name: lift, type: actuator, from: load, to: ceiling, model: muscle}
+  - {name: brace, type: actuator, from: wall, to: load, model: muscle, via: [[-0.05, -0.03]]}
+  - {name: spring, type: spring, from: wall, to: load, stiffness: 500.0, rest_length: 0.1}
+controllers:
+  - name: height
+    type: pid
+    measure: {node: load, quantity: position, coordinate: y}
+    reference: {type: constant, value: 0.0}
+    gains: {kp: 200.0, ki: 400.0}
+    drives: lift
+  - name: stretch
+    type: pid
+    measure: {element: brace, quantity: length}
+    reference: {type: constant, value: 0.113}
+    gains: {kp: -50.0, kd: -0.5}
+    feedforward: {type: constant, value: 0.1}
+    drives: brace
+time: {start: 0.0, end: 0.3}
+solver: {method: bdf, rtol: 1.0e-8, atol: 1.0e-12, jacobian: analytic}
+output: {file: planar.csv, interval: 0.01}
+)";
+
+TEST(ControllerYaml, InThePlaneAControllerMeasuresACoordinateOrAPathsLength) {
+  const Scenario spec = LoadScenario(WriteTempFile("planar.yaml", kPlanarHold));
+  ASSERT_EQ(spec.controllers.size(), 2u);
+  EXPECT_EQ(spec.controllers[0].measure.node, "load");
+  EXPECT_EQ(spec.controllers[0].measure.coordinate, 1);
+  EXPECT_EQ(spec.controllers[1].measure.coordinate, Measurement::kNoCoordinate);
+
+  const CsvTable csv = RunToCsv("planar", kPlanarHold);
+  ASSERT_EQ(csv.rows.size(), 31u);
+  for (std::size_t r = 0; r < csv.rows.size(); ++r) {
+    const double t = Column(csv, r, "t");
+    // the measured coordinate is the node's y column, the measured length the path's
+    EXPECT_EQ(Column(csv, r, "height.measured"), Column(csv, r, "load.y")) << t;
+    EXPECT_EQ(Column(csv, r, "height.error"), -Column(csv, r, "load.y")) << t;
+    EXPECT_EQ(Column(csv, r, "stretch.measured"), Column(csv, r, "brace.length")) << t;
+    // the path's length from the node's coordinates, over the via point (-0.05, -0.03):
+    // a few roundoffs of 0.1 m
+    const double x = Column(csv, r, "load.x"), y = Column(csv, r, "load.y");
+    EXPECT_NEAR(Column(csv, r, "brace.length"),
+                std::hypot(0.05, 0.03) + std::hypot(x + 0.05, y + 0.03), 1e-15)
+        << t;
+    EXPECT_EQ(Column(csv, r, "height.output"), Column(csv, r, "lift.activation")) << t;
+  }
+}
+
+TEST(ControllerYaml, AMeasuredCoordinateIsRequiredInThePlaneAndRefusedAtItsKey) {
+  struct Case {
+    std::string text, marker, message;
+  };
+  const auto edit = [](const std::string& from, const std::string& to) {
+    return Edit(kPlanarHold, from, to);
+  };
+  const std::vector<Case> cases = {
+      {edit(", coordinate: y}", "}"), "{node: load",
+       "controllers[0].measure.coordinate (@): missing required key: in 2 dimensions a node's "
+       "measured position is one coordinate "
+       "(coordinate: x or y)"},
+      {edit("coordinate: y}", "coordinate: z}"), "z}",
+       "controllers[0].measure.coordinate = z (@): is beyond the scenario's coordinates (x or "
+       "y): the scenario has dimensions: 2"},
+      {edit("coordinate: y}", "coordinate: up}"), "up}",
+       "controllers[0].measure.coordinate = up (@): must be one of x, y, z"},
+      {edit("{element: brace, quantity: length}",
+            "{element: brace, quantity: length, "
+            "coordinate: x}"),
+       "x}", "controllers[1].measure.coordinate = x (@): only a node's position has coordinates"},
+      // on a line the only coordinate is x
+      {Edit(kPair, "{node: load, quantity: position}",
+            "{node: load, quantity: position, coordinate: y}"),
+       "y}",
+       "controllers[0].measure.coordinate = y (@): is beyond the scenario's coordinates (x): the "
+       "scenario has dimensions: 1"},
+  };
+  for (const Case& c : cases) {
+    std::string expected = c.message;
+    expected.replace(expected.find('@'), 1, At(c.text, c.marker));
+    EXPECT_THAT(ErrorOf(c.text), HasSubstr(expected)) << c.message;
+  }
+}
+
+TEST(ControllerYaml, OnALineCoordinateXIsThePositionItself) {
+  // the same run, to the last digit of the CSV
+  const std::string with_x = Edit(kPair, "{node: load, quantity: position}",
+                                  "{node: load, quantity: position, coordinate: x}");
+  EXPECT_EQ(FormatRunCsv(RunScenario(LoadScenario(WriteTempFile("with_x.yaml", with_x)))),
+            FormatRunCsv(RunScenario(LoadScenario(WriteTempFile("pair.yaml", kPair)))));
+}
+
 TEST(ControllerYaml, SensitivitiesOfAControlledNetworkAreRefused) {
   const std::string text = kHold + "sensitivities: [models.muscle.f_iso]\n";
   const std::string path = WriteTempFile("sensitive.yaml", text);

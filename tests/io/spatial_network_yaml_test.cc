@@ -396,19 +396,6 @@ TEST(SpatialNetworkYaml, TheSystemsErrorsAtCoordinatesAndViaPointsFindTheirEntry
             "loads[0].direction = [0.0, -2.0] (" + At(kPlanar, "[0.0, -2.0]") + "): the rule");
 }
 
-TEST(SpatialNetworkYaml, ControllersInAPlaneOrSpaceAreRefusedAtTheirKey) {
-  const std::string text =
-      "dimensions: 2\n"
-      "nodes: [{name: wall, fixed: [0.0, 0.0]}]\n"
-      "controllers: [{name: c}]\n"
-      "elements: []\n"
-      "time: {start: 0.0, end: 1.0}\n";
-  const std::string path = WriteTempFile("controllers.yaml", text);
-  EXPECT_THAT(testing::InputErrorOf(path, [&] { LoadScenario(path); }),
-              HasSubstr("controllers = [{name: c}] (FILE:3:1): controllers in 2 or 3 dimensions "
-                        "are not supported yet: the scenario has dimensions: 2"));
-}
-
 TEST(SpatialNetworkYaml, TheNewTopLevelKeysAreNetworkKeys) {
   // a misspelt one is an unknown key, and the list of allowed keys names them
   const std::string path = WriteTempFile(

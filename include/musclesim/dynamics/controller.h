@@ -1,9 +1,10 @@
 // A feedback controller of a network (docs/model.md section 11): a PID law computing an
 // actuator's activation (or, with activation dynamics, its excitation) from the state,
 //   err = r(t) - y(state),   c = u_ff(t) + kp err + ki z + kd d(err)/dt,   zdot = err,
-// y an element's length or tension or a free node's position. One actuator takes u = clamp(c,
-// 0, 1); an antagonist pair under co-contraction takes u_first = clamp(level + c, 0, 1) and
-// u_second = clamp(level - c, 0, 1), so c steers the pair while the level (the paper's
+// y an element's length or tension or a free node's position (in 2 or 3 dimensions one
+// coordinate of it, and an element's length and tension its path's). One actuator takes u =
+// clamp(c, 0, 1); an antagonist pair under co-contraction takes u_first = clamp(level + c, 0, 1)
+// and u_second = clamp(level - c, 0, 1), so c steers the pair while the level (the paper's
 // co-activation) sets how stiff it is. Make one with the validating factories; NetworkSystem
 // checks how it fits the network.
 #pragma once
@@ -25,7 +26,15 @@ struct Measurement {
   std::string element;  // an element's name, or empty when `node` is set
   std::string node;     // a free node's name, or empty when `element` is set
   MeasuredQuantity quantity = MeasuredQuantity::kLength;
+  // A node's measured coordinate: 0 (x), 1 (y) or 2 (z); kNoCoordinate leaves it unnamed,
+  // which on a line means x and in 2 or 3 dimensions is refused (NetworkSystem).
+  int coordinate = kNoCoordinate;
+  static constexpr int kNoCoordinate = -1;
 };
+
+// "x", "y", "z"; and its inverse, throwing ParameterError("coordinate") for any other text.
+std::string_view CoordinateName(int coordinate);
+int ParseCoordinate(std::string_view text);
 
 struct PidGains {
   double kp = 0.0;  // [1/unit measured]; negative where more activation lowers the error
@@ -60,7 +69,7 @@ struct Controller {
 inline constexpr double kMaxGain = 1e9;
 
 // Throws ParameterError with paths as the YAML keys of a controller ("gains.kd",
-// "measure.element", "co_contraction.level.value", "drives").
+// "measure.element", "measure.coordinate", "co_contraction.level.value", "drives").
 void Validate(const Controller& controller);
 
 // The width of the band below an output's bound over which the integral fades out [-]: the

@@ -67,7 +67,8 @@ class NetworkSystem {
   // no algebraic loop (docs/model.md 11).
   // In 2 or 3 dimensions (`space`, docs/model.md 12) also: via points resolved ("elements[1]
   // .via[0]"), no node twice on one path, two fixed via points never in the same place, load
-  // directions not zero, no controller (not yet).
+  // directions not zero, a coordinate named for every node a controller measures
+  // ("controllers[0].measure.coordinate"), within the dimensions.
   NetworkSystem(std::vector<Node> nodes, std::vector<Element> elements,
                 std::vector<NodeLoad> loads = {}, std::vector<Controller> controllers = {},
                 Space space = {});
@@ -229,8 +230,13 @@ class NetworkSystem {
     // entries (row, column) of each driven actuator's rows: its ends' acceleration rows, or
     // with activation dynamics its activation row (row 0)
     int slot_driven[2][2][kLoopColumns];
+    // in 2 or 3 dimensions, in place of `columns` and the slots above: its columns in
+    // loop_columns_[column_begin, column_end), and its Jacobian entries from
+    // loop_slots_[slot_begin] (space_control.cc)
+    int column_begin = 0, column_end = 0, slot_begin = 0;
   };
-  // What a controller computes at (t, y), with derivatives along its columns.
+  // What a controller computes at (t, y), with derivatives along its columns (on a line; in
+  // 2 or 3 dimensions they are SpaceControlJacobian's, and these stay 0).
   struct Command {
     double reference, measured, error;
     double value;                   // c
@@ -287,6 +293,8 @@ class NetworkSystem {
   // their drivers noted in `driver`; the refusal of a tension measured through a
   // controller's output; the loop's state columns.
   Loop MeasuredLoop(std::size_t k) const;
+  // The measured node's coordinate: named in 2 or 3 dimensions, within the dimensions.
+  void RequireCoordinate(std::size_t k) const;
   int DrivableActuator(std::size_t k, const char* key, const std::string& name,
                        const std::vector<int>& driver) const;
   void AttachDriven(std::size_t k, Loop& loop, std::vector<int>& driver);
@@ -305,6 +313,12 @@ class NetworkSystem {
   // udot's excitation e of an actuator with activation dynamics: its signal's, or its
   // controller's output.
   double ExcitationOf(int e, double t, const double* y) const;
+  // zdot = weight err: the weight of the integral's fade near the bounds, and its derivative
+  // by c.
+  struct IntegralFade {
+    double weight, by_value;
+  };
+  static IntegralFade FadeOf(const Command& command, double ki);
   // zdot with its fade near the bounds, and its derivatives along the loop's columns.
   double IntegralRate(const Command& command, double ki, double* by_state) const;
   void ControlRightHandSide(double t, const double* y, double* ydot) const;
@@ -312,6 +326,22 @@ class NetworkSystem {
   // 1/m scaling).
   void ControlJacobian(double t, const double* y, double* values) const;
   void ObserveControllers(double t, const double* y, NetworkSample& sample) const;
+
+  // Feedback control in 2 or 3 dimensions (space_control.cc): a loop's columns (the free
+  // points of the measured element's path, or the measured node's coordinate and its rate,
+  // then an activation state and the integral); the rows a driven actuator's output reaches
+  // (its activation row, or the acceleration rows of its path's free points); their pattern
+  // and entries; the measured quantity and its rate, with (unless nullptr) their derivatives
+  // along the loop's columns; the feedback terms of the Jacobian (before the rows' 1/m).
+  std::vector<int> loop_columns_;
+  std::vector<int> loop_slots_;
+  void PlaceSpaceLoopColumns(std::size_t k);
+  void DrivenRows(int e, std::vector<int>& rows) const;
+  void AddSpaceControlPattern(std::vector<std::pair<int, int>>& pairs) const;
+  void FindSpaceControlSlots(const std::vector<std::pair<int, int>>& pairs);
+  double MeasureInSpace(int k, double t, const double* y, double& rate,
+                        double* measured_by = nullptr, double* rate_by = nullptr) const;
+  void SpaceControlJacobian(double t, const double* y, double* values) const;
 
   std::vector<Node> nodes_;
   std::vector<Element> elements_;
