@@ -112,7 +112,7 @@ NetworkSystem CheckProblem(const OptimalControlProblem& problem, std::vector<int
       throw InputError(path + ": '" + control.actuator + "' is no actuator of the scenario");
     }
     const Element& element = system.elements()[static_cast<std::size_t>(e)];
-    if (element.excitation || system.ActivationStateIndex(e) >= 0) {
+    if (element.excitation || element.controlled || system.ActivationStateIndex(e) >= 0) {
       throw InputError(path + ": '" + control.actuator +
                        "' has activation dynamics or a controller; controlling its excitation "
                        "is not supported yet");
