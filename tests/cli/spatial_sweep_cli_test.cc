@@ -44,8 +44,8 @@ output: {file: hanging.csv, interval: 0.01}
                                 "metrics: [final_length, min_length]\n"
                                 "metric_options: {element: spring}\n");
   const std::string out = ::testing::TempDir() + "hanging_sweep.csv";
-  const std::string command = std::string(MUSCLESIM_BINARY) + " sweep '" + sweep + "' -o '" +
-                              out + "' --jobs 1 > /dev/null 2>&1";
+  const std::string command = std::string(MUSCLESIM_BINARY) + " sweep '" + sweep + "' -o '" + out +
+                              "' --jobs 1 > /dev/null 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0);
   std::stringstream rows(testing::ReadFile(out));
   std::string line;
