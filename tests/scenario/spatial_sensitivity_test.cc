@@ -41,7 +41,7 @@ constexpr const char* kModel = R"(models:
 // 10 +- 10 N, 4 Hz load on the tip along (1, -0.5). No segment of the muscle's path gets
 // shorter than 3 cm (a closing one would end a reference's run early); the path stays longer
 // than its passive slack length (0.05 m) and the velocity curve is symmetric: no kink in the
-// run. Both sides at rtol 1e-12, atol 1e-14; rows every 25 ms.
+// run. Both sides at rtol 1e-12, atol 1e-14; rows every 20 ms over 0.12 s.
 constexpr const char* kPlane = R"(name: planar_sensitivities
 dimensions: 2
 gravity: [0.0, -9.81]
@@ -58,9 +58,9 @@ elements:
   - {name: damper, type: damper, from: anchor, to: tip, damping: 5.0}
 loads:
   - {node: tip, type: sine, offset: 10.0, amplitude: 10.0, frequency: 4.0, phase: 0.0, direction: [1.0, -0.5]}
-time: {start: 0.0, end: 0.25}
+time: {start: 0.0, end: 0.12}
 solver: {rtol: 1.0e-12, atol: 1.0e-14}
-output: {file: plane.csv, interval: 0.025}
+output: {file: plane.csv, interval: 0.02}
 )";
 
 // In space, under a slanted gravity: the actuator through activation dynamics (excitation 0.6
@@ -85,9 +85,9 @@ elements:
   - {name: damper, type: damper, from: hook, to: tip, damping: 20.0}
 loads:
   - {node: tip, type: spring, stiffness: 100.0, anchor: 0.0, direction: [0.0, 1.0, 1.0]}
-time: {start: 0.0, end: 0.25}
+time: {start: 0.0, end: 0.12}
 solver: {rtol: 1.0e-12, atol: 1.0e-14}
-output: {file: space.csv, interval: 0.025}
+output: {file: space.csv, interval: 0.02}
 )";
 
 std::string Plane() { return testing::WriteTempFile("plane.yaml", std::string(kPlane) + kModel); }
