@@ -63,13 +63,15 @@ void BindOptimize(py::module_& m) {
         out["controls"] = values;
         // the optimum: the given scenario's document (its set() values in) with each
         // control's activation its table, so that to_yaml() and pickling write it
-        PyScenario optimum = [&] {
+        Document document;
+        {
           py::gil_scoped_release released;
-          Document document =
-              WithControlTables(ParseDocument(given.display, given.ToYaml()), problem, result);
-          return DocumentPyScenario(std::move(document), given.display + " (optimum)");
-        }();
-        out["scenario"] = py::cast(std::move(optimum));
+          document = WithControlTables(ParseDocument(given.display, given.ToYaml()), problem,
+                                       result);
+        }
+        // DocumentPyScenario keeps the document as Python sees it: with the GIL
+        out["scenario"] =
+            py::cast(DocumentPyScenario(std::move(document), given.display + " (optimum)"));
         return out;
       },
       py::arg("scenario"), py::arg("controls"), py::arg("final_values"), py::arg("intervals"),
