@@ -66,8 +66,8 @@ void BindOptimize(py::module_& m) {
         Document document;
         {
           py::gil_scoped_release released;
-          document = WithControlTables(ParseDocument(given.display, given.ToYaml()), problem,
-                                       result);
+          document =
+              WithControlTables(ParseDocument(given.display, given.ToYaml()), problem, result);
         }
         // DocumentPyScenario keeps the document as Python sees it: with the GIL
         out["scenario"] =
