@@ -17,6 +17,7 @@ from ._types import Overrides as _Overrides
 from ._types import PathLike as _PathLike
 from .scenario import scenario_from_dict as scenario_from_dict  # noqa: F401,E402
 from .sweeps import sweep as sweep  # noqa: F401,E402
+from .optimization import optimize as optimize  # noqa: F401,E402
 from .tables import table as table  # noqa: F401,E402
 
 # A job of run_many: a Scenario, or a scenario file's path with the values to set first.

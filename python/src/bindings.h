@@ -15,6 +15,8 @@ void BindScenario(pybind11::module_& m);
 void BindStepper(pybind11::module_& m);
 // Many scenarios, or a sweep file, on every core with the GIL released.
 void BindSweep(pybind11::module_& m);
+// musclesim._optimize (optimize_binding.cc)
+void BindOptimize(pybind11::module_& m);
 // Model parameters identified from measured curves (`musclesim identify` on curves).
 void BindIdentifyCurves(pybind11::module_& m);
 // Scenario parameters identified from measured time series (`musclesim identify` on series).

@@ -15,6 +15,7 @@ PYBIND11_MODULE(_musclesim, m) {
   musclesim::python::BindScenario(m);
   musclesim::python::BindStepper(m);
   musclesim::python::BindSweep(m);
+  musclesim::python::BindOptimize(m);
   musclesim::python::BindIdentifyCurves(m);
   musclesim::python::BindIdentifySeries(m);
   musclesim::python::BindPlot(m);

@@ -26,6 +26,8 @@ verbs:
   curves   tabulate f_L and passive tension over length, g over velocity, or a standard
            force-length curve (--preset NAME), as CSV
   fit      fit the sum of Gaussians that a model file asks for; print the components
+  optimize the activations that reach a problem's final values with the least effort
+           (multiple shooting, IPOPT); write the optimum as a scenario, a summary and a CSV
 
 exit codes: 0 success, 1 other failure, 2 invalid input, 3 solver failure,
             130 sweep interrupted
@@ -55,6 +57,7 @@ int main(int argc, char** argv) {
     if (verb == "identify") return cli::IdentifyCommand(argc, argv);
     if (verb == "curves") return cli::CurvesCommand(argc, argv);
     if (verb == "fit") return cli::FitCommand(argc, argv);
+    if (verb == "optimize") return cli::OptimizeCommand(argc, argv);
     std::cerr << "musclesim: unknown verb '" << PrintableText(verb) << "' (see musclesim --help)\n";
     return kExitInvalidInput;
   } catch (const cli::UsageError& e) {

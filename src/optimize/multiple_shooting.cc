@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 #include "musclesim/core/errors.h"
 #include "musclesim/dynamics/parameter_derivative.h"
@@ -21,7 +22,8 @@ struct MultipleShooting::Impl {
   std::vector<double> initial;    // s_0
   int n = 0;                      // the state's size
   int intervals = 0;
-  Simulation simulation;
+  // one CVODE memory per worker thread: the intervals are integrated in parallel
+  std::vector<std::unique_ptr<Simulation>> simulations;
 
   // The last point integrated: its x, whether every interval completed, and per interval
   // Phi_i and dPhi_i/d(s_i, U_(j,i), U_(j,i+1)) (column-major, n rows).
@@ -52,7 +54,7 @@ struct MultipleShooting::Impl {
   }
 
   // Integrates interval i of `system` from s_i (read from x) with the sensitivities.
-  bool Integrate(const NetworkSystem& system, int i, const double* x) {
+  bool Integrate(const NetworkSystem& system, int i, const double* x, Simulation& simulation) {
     const double t0 = times[static_cast<std::size_t>(i)];
     const double t1 = times[static_cast<std::size_t>(i) + 1];
     NetworkRunRequest request;
@@ -90,12 +92,28 @@ struct MultipleShooting::Impl {
     if (!evaluated.empty() && std::equal(point, point + count, evaluated.begin())) return ok;
     evaluated.assign(point, point + count);
     ok = false;
-    const NetworkSystem system = BuildAt(point);
-    for (int i = 0; i < intervals; ++i) {
-      if (!Integrate(system, i, point)) return false;
-    }
-    ok = true;
-    return true;
+    const NetworkSystem system = BuildAt(point);  // immutable: shared by the workers
+    const int workers = static_cast<int>(simulations.size());
+    std::vector<char> completed(static_cast<std::size_t>(intervals), 0);
+    const auto work = [&](int w) {
+      // interval i to worker i mod workers: neighbouring intervals cost alike
+      for (int i = w; i < intervals; i += workers) {
+        try {
+          completed[static_cast<std::size_t>(i)] =
+              Integrate(system, i, point, *simulations[static_cast<std::size_t>(w)]) ? 1 : 0;
+        } catch (const std::exception&) {
+          // a trial point the run refuses (a state that collapses an element): IPOPT steps
+          // back from a point it cannot evaluate
+          completed[static_cast<std::size_t>(i)] = 0;
+        }
+      }
+    };
+    std::vector<std::thread> threads;
+    for (int w = 1; w < workers; ++w) threads.emplace_back(work, w);
+    work(0);
+    for (std::thread& thread : threads) thread.join();
+    ok = std::all_of(completed.begin(), completed.end(), [](char c) { return c != 0; });
+    return ok;
   }
 
   // Visits the constraint Jacobian's nonzeros in one fixed order, visit(row, column, value),
@@ -146,6 +164,10 @@ MultipleShooting::MultipleShooting(const OptimalControlProblem& problem)
                                        : problem.scenario.t_start + span * i / p.intervals);
   }
   p.ends.resize(static_cast<std::size_t>(p.intervals));
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  for (int w = 0; w < std::min(cores, p.intervals); ++w) {
+    p.simulations.push_back(std::make_unique<Simulation>());
+  }
   p.sensitivities.resize(static_cast<std::size_t>(p.intervals));
 }
 
@@ -196,7 +218,8 @@ std::vector<double> MultipleShooting::StartingPoint() {
   // one run through the grid: each interval starts where the one before ended
   const NetworkSystem system = p.BuildAt(x.data());
   for (int i = 0; i + 1 < p.intervals; ++i) {
-    if (!p.Integrate(system, i, x.data())) break;  // IPOPT starts from what there is
+    if (!p.Integrate(system, i, x.data(), *p.simulations.front()))
+      break;  // IPOPT starts from what there is
     std::copy(p.ends[static_cast<std::size_t>(i)].begin(),
               p.ends[static_cast<std::size_t>(i)].end(), x.begin() + p.StateIndex(i + 1, 0));
   }

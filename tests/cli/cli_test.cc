@@ -400,7 +400,7 @@ TEST(Cli, IdentifyRejectsBadDataWithExitTwo) {
 }
 
 TEST(Cli, HelpForEveryVerb) {
-  for (const char* verb : {"run", "sweep", "plot", "identify", "curves", "fit"}) {
+  for (const char* verb : {"run", "sweep", "plot", "identify", "curves", "fit", "optimize"}) {
     const Outcome r = RunCli(std::string(verb) + " --help");
     EXPECT_EQ(r.exit_code, 0) << verb;
     EXPECT_THAT(r.out, HasSubstr("usage: musclesim " + std::string(verb)));

@@ -1,0 +1,124 @@
+#include "musclesim/optimize/optimum_files.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "musclesim/core/errors.h"
+#include "musclesim/core/number_format.h"
+#include "io/yaml_fields.h"
+#include "musclesim/io/scenario_rewrite.h"
+
+namespace musclesim {
+
+namespace {
+
+// A JSON string of `text` (names are plain; quotes and backslashes escaped all the same).
+std::string Quoted(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string Numbers(const std::vector<double>& values) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i > 0) out += ", ";
+    out += FormatNumber(values[i]);
+  }
+  return out + "]";
+}
+
+}  // namespace
+
+Document WithControlTables(Document base, const OptimalControlProblem& problem,
+                           const OptimalControlResult& result) {
+  const Document* listed = base.Find("elements");
+  if (listed == nullptr || listed->kind() != Document::Kind::kList) {
+    throw InputError("the scenario has no elements list to write the controls into");
+  }
+  std::vector<Document> elements = listed->items();
+  const std::vector<Element>& built = problem.scenario.elements;
+  for (std::size_t j = 0; j < result.controls.size(); ++j) {
+    const std::string& name = problem.controls[j].actuator;
+    const auto found =
+        std::find_if(built.begin(), built.end(), [&](const Element& e) { return e.name == name; });
+    const auto e = static_cast<std::size_t>(found - built.begin());
+    if (e >= elements.size()) throw InputError(name + ": no such element in the document");
+    std::vector<Document> points;
+    for (std::size_t i = 0; i < result.times.size(); ++i) {
+      points.push_back(
+          Document::List({Document::Number(result.times[i]),
+                          Document::Number(std::clamp(result.controls[j][i], 0.0, 1.0))}));
+    }
+    elements[e].Set("activation", Document::Map({{"type", Document::Text("table")},
+                                                 {"points", Document::List(std::move(points))}}));
+  }
+  base.Set("elements", Document::List(std::move(elements)));
+  return base;
+}
+
+std::string OptimumScenarioText(const ProblemFile& file, const OptimalControlResult& result) {
+  const Document base = ParseDocument(file.base, yaml::ReadText(file.base));
+  return RewriteScenario(
+      WithControlTables(base, file.problem, result), file.base, Overrides(),
+      {"The optimum of " + file.path + " (musclesim optimize): " + file.base + " with the",
+       "optimal activations as tables; `musclesim run` re-simulates it. IPOPT: " + result.status});
+}
+
+std::vector<FinalCheck> CheckFinalValues(const ProblemFile& file, const RecordedRun& run) {
+  std::vector<FinalCheck> checks;
+  const std::vector<std::string>& names = run.columns.names();
+  for (const FinalValue& final : file.problem.final_values) {
+    FinalCheck check{final.column, 0.0, final.lower, final.upper, 0.0};
+    const auto found = std::find(names.begin(), names.end(), final.column);
+    if (found == names.end() || run.values.empty()) {
+      throw InputError(final.column + ": the re-simulation has no such column");
+    }
+    const std::vector<double>& column = run.values[static_cast<std::size_t>(found - names.begin())];
+    if (column.empty()) throw InputError(final.column + ": the re-simulation recorded no row");
+    check.value = column.back();
+    check.violation = std::max({0.0, final.lower - check.value, check.value - final.upper});
+    checks.push_back(check);
+  }
+  return checks;
+}
+
+std::string OptimumSummaryJson(const ProblemFile& file, const OptimalControlResult& result,
+                               const RecordedRun& run, const std::vector<FinalCheck>& finals,
+                               double wall_seconds) {
+  std::string json = "{\n";
+  json += "  \"problem\": " + Quoted(file.path) + ",\n";
+  json += "  \"base\": " + Quoted(file.base) + ",\n";
+  json += "  \"status\": " + Quoted(result.status) + ",\n";
+  json += std::string("  \"solved\": ") + (result.solved ? "true" : "false") + ",\n";
+  json += "  \"objective\": " + FormatNumber(result.objective) + ",\n";
+  json += "  \"constraint_violation\": " + FormatNumber(result.constraint_violation) + ",\n";
+  json += "  \"iterations\": " + std::to_string(result.iterations) + ",\n";
+  json += "  \"intervals\": " + std::to_string(file.problem.intervals) + ",\n";
+  json += "  \"wall_seconds\": " + FormatNumber(wall_seconds) + ",\n";
+  json += "  \"times\": " + Numbers(result.times) + ",\n";
+  json += "  \"controls\": {";
+  for (std::size_t j = 0; j < result.controls.size(); ++j) {
+    json += (j > 0 ? ", " : "") + Quoted(file.problem.controls[j].actuator) + ": " +
+            Numbers(result.controls[j]);
+  }
+  json += "},\n";
+  json += "  \"resimulation\": {\"status\": " + Quoted(std::string(ToString(run.stats.status))) +
+          ", \"final_values\": [";
+  double worst = 0.0;
+  for (std::size_t k = 0; k < finals.size(); ++k) {
+    const FinalCheck& f = finals[k];
+    json += (k > 0 ? ", " : "") + std::string("{\"column\": ") + Quoted(f.column) +
+            ", \"value\": " + FormatNumber(f.value) + ", \"lower\": " + FormatNumber(f.lower) +
+            ", \"upper\": " + FormatNumber(f.upper) +
+            ", \"violation\": " + FormatNumber(f.violation) + "}";
+    worst = std::max(worst, f.violation);
+  }
+  json += "], \"largest_violation\": " + FormatNumber(worst) + "}\n}\n";
+  return json;
+}
+
+}  // namespace musclesim

@@ -1,0 +1,101 @@
+// musclesim optimize end to end: the antagonist pair's rest-to-rest move solved, its optimum
+// written as a scenario that `musclesim run` (a separate run of the file) takes to the asked
+// final values; bad problem files refused with the place and the rule.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/scenario_files.h"
+
+namespace musclesim {
+namespace {
+
+using ::testing::HasSubstr;
+
+int Shell(const std::string& command) {
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// The last row of a CSV as name -> value.
+double LastValue(const std::string& csv, const std::string& column) {
+  std::stringstream in(testing::ReadFile(csv));
+  std::string header, line, last;
+  std::getline(in, header);
+  while (std::getline(in, line)) last = line;
+  std::stringstream names(header), cells(last);
+  std::string name, cell;
+  while (std::getline(names, name, ',') && std::getline(cells, cell, ',')) {
+    if (name == column) return std::stod(cell);
+  }
+  ADD_FAILURE() << "no column " << column << " in " << csv;
+  return NAN;
+}
+
+std::string Directory(const std::string& name) {
+  const std::string dir = ::testing::TempDir() + name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+TEST(OptimizeCli, MovesThePairRestToRestAndItsOptimumReRuns) {
+  const std::string dir = Directory("optimize_pair");
+  for (const char* file : {"antagonist_move.yaml", "antagonist_move_problem.yaml"}) {
+    std::filesystem::copy_file(testing::ScenarioPath(file), dir + "/" + file);
+  }
+  ASSERT_EQ(Shell("cd '" + dir + "' && '" + MUSCLESIM_BINARY +
+                  "' optimize antagonist_move_problem.yaml --quiet"),
+            0);
+  const std::string summary = testing::ReadFile(dir + "/antagonist_move_optimum.json");
+  EXPECT_THAT(summary, HasSubstr("\"solved\": true"));
+  // the written optimum, run again as any scenario: it ends at rest at 0.075 m
+  ASSERT_EQ(Shell("cd '" + dir + "' && '" + MUSCLESIM_BINARY +
+                  "' run antagonist_move_optimum.yaml -o check.csv --quiet"),
+            0);
+  EXPECT_NEAR(LastValue(dir + "/check.csv", "load.position"), 0.075, 1e-7);
+  EXPECT_NEAR(LastValue(dir + "/check.csv", "load.velocity"), 0.0, 1e-6);
+  // and it is the trajectory the command wrote
+  EXPECT_EQ(LastValue(dir + "/check.csv", "load.position"),
+            LastValue(dir + "/antagonist_move_optimum.csv", "load.position"));
+}
+
+TEST(OptimizeCli, BadProblemsExitTwoNamingThePlace) {
+  const std::string dir = Directory("optimize_bad");
+  std::filesystem::copy_file(testing::ScenarioPath("antagonist_move.yaml"),
+                             dir + "/antagonist_move.yaml");
+  struct Case {
+    const char* text;
+    const char* expected;
+  };
+  const Case cases[] = {
+      {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: biceps}\n",
+       "controls[0].actuator: 'biceps' is no actuator"},
+      {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor, bounds: [0.5, 0.2]}\n",
+       "must be [lower, upper] with lower <= upper"},
+      {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\nfinal_values:\n"
+       "  - {column: load.x, value: 0.1}\n",
+       "final_values[0].column: 'load.x' is no node column"},
+      {"base: antagonist_move.yaml\nintervals: 0\ncontrols:\n  - {actuator: flexor}\n",
+       "problem.yaml:2:12"},
+  };
+  for (const Case& c : cases) {
+    std::ofstream(dir + "/problem.yaml") << c.text;
+    const std::string err = dir + "/err.txt";
+    EXPECT_EQ(
+        Shell("cd '" + dir + "' && '" + MUSCLESIM_BINARY + "' optimize problem.yaml 2> err.txt"), 2)
+        << c.text;
+    EXPECT_THAT(testing::ReadFile(err), HasSubstr(c.expected)) << c.text;
+  }
+}
+
+}  // namespace
+}  // namespace musclesim
