@@ -19,6 +19,12 @@ def _pair(value: Any, where: str) -> tuple[float, float]:
         raise ValueError(f"{where} = {value!r}: must be [lower, upper]") from None
 
 
+def _check_keys(entry: Mapping[str, Any], known: set[str], where: str) -> None:
+    unknown = set(entry) - known
+    if unknown:
+        raise ValueError(f"{where}: unknown keys {sorted(unknown)}; known: {sorted(known)}")
+
+
 def optimize(scenario: Scenario, controls: Sequence[Mapping[str, Any]],
              final_values: Sequence[Mapping[str, Any]] = (), intervals: int = 20,
              tolerance: float = 1e-8, max_iterations: int = 500) -> dict[str, Any]:
@@ -35,10 +41,7 @@ def optimize(scenario: Scenario, controls: Sequence[Mapping[str, Any]],
     control_tuples = []
     for i, control in enumerate(controls):
         where = f"controls[{i}]"
-        unknown = set(control) - _CONTROL_KEYS
-        if unknown:
-            raise ValueError(f"{where}: unknown keys {sorted(unknown)}; known: "
-                             f"{sorted(_CONTROL_KEYS)}")
+        _check_keys(control, _CONTROL_KEYS, where)
         if "actuator" not in control:
             raise ValueError(f"{where}: missing 'actuator', the name of an actuator")
         lower, upper = _pair(control.get("bounds", (0.0, 1.0)), where + ".bounds")
@@ -48,10 +51,7 @@ def optimize(scenario: Scenario, controls: Sequence[Mapping[str, Any]],
     final_tuples = []
     for k, final in enumerate(final_values):
         where = f"final_values[{k}]"
-        unknown = set(final) - _FINAL_KEYS
-        if unknown:
-            raise ValueError(f"{where}: unknown keys {sorted(unknown)}; known: "
-                             f"{sorted(_FINAL_KEYS)}")
+        _check_keys(final, _FINAL_KEYS, where)
         if "column" not in final or ("value" in final) == ("bounds" in final):
             raise ValueError(f"{where}: give 'column' and either 'value' or 'bounds'")
         if "value" in final:

@@ -81,4 +81,16 @@ std::vector<ElementPath> ElementPaths(const Scenario& scenario, const SpatialCol
   return paths;
 }
 
+SpatialColumns RequireSpatialTrajectory(const CsvTable& table) {
+  table.Require({"t"}, "a spatial network's trajectory CSV of musclesim run");
+  SpatialColumns columns = FindSpatialColumns(table);
+  if (columns.nodes.empty()) {
+    throw InputError(table.source +
+                     ": a spatial network's trajectory CSV of musclesim run needs NODE.x and "
+                     "NODE.y columns; found none");
+  }
+  if (table.rows.empty()) throw InputError(table.source + ": no rows to plot");
+  return columns;
+}
+
 }  // namespace musclesim::plot_text

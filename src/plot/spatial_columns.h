@@ -24,6 +24,9 @@ struct SpatialColumns {
 // The nodes of `table`: a NODE.x column with NODE.y beside it; in space when they all have
 // NODE.z. Throws InputError when only some have NODE.z.
 SpatialColumns FindSpatialColumns(const CsvTable& table);
+// FindSpatialColumns of a trajectory to plot: InputError without a `t` column, without a
+// node's NODE.x and NODE.y, or without rows.
+SpatialColumns RequireSpatialTrajectory(const CsvTable& table);
 
 // A point of an element's path: a node (index into SpatialColumns::nodes) or fixed (x, y).
 struct PathPoint {

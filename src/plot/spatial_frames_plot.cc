@@ -90,14 +90,7 @@ std::vector<double> EvenlySpacedFrameTimes(const CsvTable& table, int count) {
 
 std::string SpatialFramesPlotScript(const CsvTable& table, const std::vector<double>& times,
                                     const Scenario* scenario, const PlotOptions& options) {
-  table.Require({"t"}, "a spatial network's trajectory CSV of musclesim run");
-  const SpatialColumns columns = FindSpatialColumns(table);
-  if (columns.nodes.empty()) {
-    throw InputError(table.source +
-                     ": a spatial network's trajectory CSV of musclesim run needs NODE.x and "
-                     "NODE.y columns; found none");
-  }
-  if (table.rows.empty()) throw InputError(table.source + ": no rows to plot");
+  const SpatialColumns columns = RequireSpatialTrajectory(table);
   if (times.empty() || times.size() > static_cast<std::size_t>(kMaxFrames)) {
     throw ParameterError(
         "frames", std::to_string(times.size()) + " times",

@@ -29,14 +29,7 @@ const char* PlaneLabels(int dimensions) {
 bool IsSpatialTrajectory(const CsvTable& table) { return !FindSpatialColumns(table).nodes.empty(); }
 
 std::string SpatialPathPlotScript(const CsvTable& table, const PlotOptions& options) {
-  table.Require({"t"}, "a spatial network's trajectory CSV of musclesim run");
-  const SpatialColumns columns = FindSpatialColumns(table);
-  if (columns.nodes.empty()) {
-    throw InputError(table.source +
-                     ": a spatial network's trajectory CSV of musclesim run needs NODE.x and "
-                     "NODE.y columns; found none");
-  }
-  if (table.rows.empty()) throw InputError(table.source + ": no rows to plot");
+  const SpatialColumns columns = RequireSpatialTrajectory(table);
   // the plane: t, then x and y of every node
   std::vector<int> plane = {table.Find("t")};
   for (const SpatialNode& node : columns.nodes) {
