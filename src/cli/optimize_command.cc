@@ -1,5 +1,6 @@
 // musclesim optimize PROBLEM.yaml [--quiet]
 #include <chrono>
+#include <csignal>
 #include <iostream>
 
 #include "cli/arguments.h"
@@ -19,19 +20,30 @@ constexpr const char* kHelp =
     R"(usage: musclesim optimize PROBLEM.yaml [--quiet]
 
 Finds the activations of the problem's controls, piecewise linear on a grid of `intervals`
-over the base scenario's time span, that reach its final values with the least effort
-(integral of u^2 or |u|^3 per control), by direct multiple shooting with exact derivatives
-(CVODES sensitivities) and IPOPT (docs/guide/optimize.md). Then re-simulates the optimum as
-one run and writes, at the problem's `output` paths (by default next to the working
+over the base scenario's time span, with its free parameters and (if free) its final time,
+that meet its final values and path bounds at the least weighted sum of effort (integral of
+u^2 or |u|^3 per control), tracking (integral of (column - reference)^2), terminal
+((column(T) - target)^2) and final-time terms, by direct multiple shooting with exact
+derivatives (CVODES sensitivities) and IPOPT (docs/guide/optimize.md). Then re-simulates the
+optimum as one run and writes, at the problem's `output` paths (by default in the working
 directory, named after the problem file):
-  scenario    the base scenario with the optimal activations as tables: `musclesim run` it
-  summary     JSON: IPOPT's status, the objective, iterations, the constraint violation,
-              the grid, the controls, and the re-simulation's final values against their bounds
-  trajectory  the re-simulation's CSV, as `musclesim run` writes it
-  --quiet     no report on standard error
+  scenario    the base scenario with the optimal activations as tables, the parameters and
+              the final time at their optimal values: `musclesim run` it
+  summary     JSON: IPOPT's status, the objective and its terms, iterations, the constraint
+              violation, the gradient check, the grid, the controls, the parameters, and the
+              re-simulation's deviation from the shooting states and its final values
+  trajectory  the re-simulation's CSV, as `musclesim run` writes it (`musclesim plot` it)
+  --quiet     no progress or report on standard error
+SIGINT or SIGTERM stop IPOPT after its current iteration; the files are written with the
+point reached.
 Exit codes: 0 solved (IPOPT's tolerance met), 3 not solved (IPOPT's status in the summary;
-the files are written with the last point), 2 invalid input, 1 anything else.
+the files are written with the last point), 130 stopped by a signal (files written), 2 invalid
+input, 1 anything else.
 )";
+
+volatile std::sig_atomic_t stop_signal = 0;
+
+extern "C" void OnOptimizeStop(int) { stop_signal = 1; }
 
 }  // namespace
 
@@ -43,8 +55,22 @@ int OptimizeCommand(int argc, char** argv) {
   }
   if (args.positional.size() != 1) throw UsageError("optimize takes one PROBLEM.yaml");
   const auto start = std::chrono::steady_clock::now();
-  const ProblemFile file = LoadProblemFile(args.positional[0]);
+  ProblemFile file = LoadProblemFile(args.positional[0]);
+  const bool quiet = args.Has("--quiet");
+  stop_signal = 0;
+  std::signal(SIGINT, OnOptimizeStop);
+  std::signal(SIGTERM, OnOptimizeStop);
+  file.options.progress = [quiet](const OptimizeProgress& p) {
+    if (!quiet) {
+      std::cerr << "\rmusclesim optimize: iteration " << p.iteration << ", objective "
+                << p.objective << ", infeasibility " << p.infeasibility << "   " << std::flush;
+    }
+    return stop_signal == 0;
+  };
   const OptimalControlResult result = SolveOptimalControl(file.problem, file.options);
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  if (!quiet) std::cerr << "\n";
   const std::string scenario_text = OptimumScenarioText(file, result);
   WriteOutput(file.outputs.scenario, scenario_text);
   // the re-simulation runs the file just written, as `musclesim run` would
@@ -54,14 +80,16 @@ int OptimizeCommand(int argc, char** argv) {
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   WriteOutput(file.outputs.summary, OptimumSummaryJson(file, result, run, finals, wall));
-  if (!args.Has("--quiet")) {
+  if (!quiet) {
     std::cerr << "musclesim optimize: " << result.status << " after " << result.iterations
               << " iterations, objective " << result.objective << ", constraint violation "
-              << result.constraint_violation << "; re-simulated: ";
+              << result.constraint_violation << "; re-simulated (deviation "
+              << result.resimulation_deviation << "): ";
     for (const FinalCheck& f : finals) std::cerr << f.column << " = " << f.value << " ";
     std::cerr << "-> " << file.outputs.scenario << ", " << file.outputs.summary << ", "
               << file.outputs.trajectory << std::endl;
   }
+  if (stop_signal != 0) return kExitInterrupted;
   return result.solved ? kExitSuccess : kExitSolverFailure;
 }
 

@@ -5,9 +5,12 @@
 #include <IpTNLP.hpp>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <random>
 
 #include "musclesim/core/errors.h"
 #include "musclesim/optimize/multiple_shooting.h"
+#include "musclesim/solver/simulation.h"
 #include "optimize/shooting_parts.h"
 
 namespace musclesim {
@@ -37,8 +40,12 @@ std::string StatusName(Ipopt::SolverReturn status) {
 
 class ShootingProgram final : public Ipopt::TNLP {
  public:
-  ShootingProgram(MultipleShooting& shooting, OptimalControlResult& result)
-      : shooting_(shooting), result_(result), start_(shooting.StartingPoint()) {}
+  ShootingProgram(MultipleShooting& shooting, OptimalControlResult& result,
+                  std::function<bool(const OptimizeProgress&)> progress)
+      : shooting_(shooting),
+        result_(result),
+        progress_(std::move(progress)),
+        start_(shooting.StartingPoint()) {}
 
   bool get_nlp_info(Index& n, Index& m, Index& nnz_jac_g, Index& nnz_h_lag,
                     IndexStyleEnum& index_style) override {
@@ -60,12 +67,10 @@ class ShootingProgram final : public Ipopt::TNLP {
     return true;
   }
   bool eval_f(Index, const Number* x, bool, Number& objective) override {
-    objective = shooting_.Objective(x);
-    return true;
+    return shooting_.Objective(x, objective);
   }
   bool eval_grad_f(Index, const Number* x, bool, Number* gradient) override {
-    shooting_.ObjectiveGradient(x, gradient);
-    return true;
+    return shooting_.ObjectiveGradient(x, gradient);
   }
   bool eval_g(Index, const Number* x, bool, Index, Number* g) override {
     return shooting_.Constraints(x, g);
@@ -77,6 +82,14 @@ class ShootingProgram final : public Ipopt::TNLP {
       return true;
     }
     return shooting_.ConstraintJacobian(x, values);
+  }
+  bool intermediate_callback(Ipopt::AlgorithmMode, Index iteration, Number objective,
+                             Number infeasibility, Number dual_infeasibility, Number, Number,
+                             Number, Number, Number, Index, const Ipopt::IpoptData*,
+                             Ipopt::IpoptCalculatedQuantities*) override {
+    result_.dual_infeasibility = dual_infeasibility;
+    if (!progress_) return true;
+    return progress_({iteration, objective, infeasibility, dual_infeasibility});
   }
   void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number*,
                          const Number*, Index m, const Number* g, const Number*, Number objective,
@@ -100,9 +113,79 @@ class ShootingProgram final : public Ipopt::TNLP {
  private:
   MultipleShooting& shooting_;
   OptimalControlResult& result_;
+  std::function<bool(const OptimizeProgress&)> progress_;
   std::vector<double> start_;
   std::vector<double> solution_;
 };
+
+// The objective's derivative at x along a pseudo-random direction (variables within a step of
+// a bound left out: the controls are clamped there) by central differences, against the
+// gradient's: their relative difference (0 when the direction is empty).
+double GradientCheck(MultipleShooting& shooting, const std::vector<double>& x) {
+  const auto count = x.size();
+  std::vector<double> lower(count), upper(count), gradient(count), direction(count, 0.0);
+  shooting.VariableBounds(lower.data(), upper.data());
+  if (!shooting.ObjectiveGradient(x.data(), gradient.data())) return -1.0;
+  std::mt19937 random(20261128);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  constexpr double kStep = 1e-6;
+  double exact = 0.0;
+  for (std::size_t k = 0; k < count; ++k) {
+    const double step = kStep * std::max(1.0, std::abs(x[k]));
+    if (x[k] - 2.0 * step < lower[k] || x[k] + 2.0 * step > upper[k]) continue;
+    direction[k] = step * unit(random);
+    exact += gradient[k] * direction[k];
+  }
+  std::vector<double> plus(x), minus(x);
+  for (std::size_t k = 0; k < count; ++k) {
+    plus[k] += direction[k];
+    minus[k] -= direction[k];
+  }
+  double above = 0.0, below = 0.0;
+  if (!shooting.Objective(plus.data(), above) || !shooting.Objective(minus.data(), below)) {
+    return -1.0;
+  }
+  const double differenced = 0.5 * (above - below);
+  const double scale = std::max(std::abs(exact), std::abs(differenced));
+  return scale > 0.0 ? std::abs(differenced - exact) / scale : 0.0;
+}
+
+// Keeps every row's state.
+class StateRows final : public NetworkSink {
+ public:
+  void Record(double, const NetworkSample&) override {}
+  bool RecordState(double, const double* y) override {
+    rows.emplace_back(y, y + size);
+    return true;
+  }
+  std::size_t size = 0;
+  std::vector<std::vector<double>> rows;
+};
+
+// The optimum's scenario run once from s_0 with rows at the grid's points, against the
+// shooting states; infinity when the run does not complete.
+double ResimulationDeviation(const OptimalControlResult& result) {
+  if (result.states.empty()) return std::numeric_limits<double>::infinity();
+  const NetworkSystem system = result.scenario.Build();
+  NetworkRunRequest request;
+  request.t_start = result.times.front();
+  request.t_end = result.times.back();
+  request.output_times.assign(result.times.begin() + 1, result.times.end());
+  StateRows rows;
+  rows.size = static_cast<std::size_t>(result.state_size);
+  Simulation simulation;
+  const RunStats stats = simulation.Run(system, result.scenario.solver, request, rows);
+  if (stats.status != RunStatus::kCompleted || rows.rows.size() + 1 != result.times.size()) {
+    return std::numeric_limits<double>::infinity();
+  }
+  double worst = 0.0;
+  for (std::size_t i = 0; i < rows.rows.size(); ++i) {
+    for (std::size_t k = 0; k < rows.size; ++k) {
+      worst = std::max(worst, std::abs(rows.rows[i][k] - result.states[(i + 1) * rows.size + k]));
+    }
+  }
+  return worst;
+}
 
 }  // namespace
 
@@ -111,7 +194,8 @@ OptimalControlResult SolveOptimalControl(const OptimalControlProblem& problem,
   MultipleShooting shooting(problem);
   OptimalControlResult result;
   result.status = "not_run";
-  Ipopt::SmartPtr<ShootingProgram> program = new ShootingProgram(shooting, result);
+  Ipopt::SmartPtr<ShootingProgram> program =
+      new ShootingProgram(shooting, result, options.progress);
   Ipopt::SmartPtr<Ipopt::IpoptApplication> ipopt = IpoptApplicationFactory();
   ipopt->Options()->SetNumericValue("tol", options.tolerance);
   ipopt->Options()->SetIntegerValue("max_iter", options.max_iterations);
@@ -124,21 +208,21 @@ OptimalControlResult SolveOptimalControl(const OptimalControlProblem& problem,
     throw InputError("IPOPT could not be initialised");
   }
   ipopt->OptimizeTNLP(program);
-  result.times = shooting.times();
-  result.scenario = problem.scenario;
   const std::vector<double>& x = program->solution();
-  if (!x.empty()) {
-    for (std::size_t j = 0; j < problem.controls.size(); ++j) {
-      result.controls.push_back(shooting.ControlValues(x.data(), static_cast<int>(j)));
-      std::vector<TablePoint> points;
-      for (std::size_t i = 0; i < result.times.size(); ++i) {
-        points.push_back({result.times[i], std::clamp(result.controls.back()[i], 0.0, 1.0)});
-      }
-      const int e = result.scenario.Build().FindElement(problem.controls[j].actuator);
-      result.scenario.elements[static_cast<std::size_t>(e)].activation =
-          Waveform::Table(std::move(points));
-    }
+  result.scenario = problem.scenario;
+  if (x.empty()) return result;  // IPOPT stopped before its first point
+  result.times = shooting.Times(x.data());
+  result.final_time = result.times.back();
+  for (std::size_t j = 0; j < problem.controls.size(); ++j) {
+    result.controls.push_back(shooting.ControlValues(x.data(), static_cast<int>(j)));
   }
+  result.parameter_values = shooting.ParameterValues(x.data());
+  result.scenario = shooting.ScenarioAt(x.data());
+  shooting.Terms(x.data(), result.terms);
+  result.states = shooting.States(x.data());
+  result.state_size = shooting.state_size();
+  result.gradient_check = GradientCheck(shooting, x);
+  result.resimulation_deviation = ResimulationDeviation(result);
   return result;
 }
 

@@ -8,83 +8,196 @@
 #include "musclesim/dynamics/parameter_derivative.h"
 #include "musclesim/solver/sensitivity.h"
 #include "musclesim/solver/simulation.h"
+#include "optimize/interval_recorder.h"
+#include "optimize/problem_checks.h"
 #include "optimize/shooting_parts.h"
+#include "scenario/sensitivity_derivatives.h"
 
 namespace musclesim {
 
 struct MultipleShooting::Impl {
-  Scenario scenario;  // its controls' activations rewritten per point
-  std::vector<ControlSpec> controls;
-  std::vector<int> elements;  // each control's actuator
-  std::vector<FinalValue> finals;
-  std::vector<int> final_states;  // each final value's state index
-  std::vector<double> times;      // t_0 .. t_N
-  std::vector<double> initial;    // s_0
-  int n = 0;                      // the state's size
+  OptimalControlProblem problem;
+  ProblemIndex index;
+  Scenario scenario;  // the problem's, set to the point being evaluated
+  int n = 0;          // the state's size
   int intervals = 0;
   // one CVODE memory per worker thread: the intervals are integrated in parallel
   std::vector<std::unique_ptr<Simulation>> simulations;
 
-  // The last point integrated: its x, whether every interval completed, and per interval
-  // Phi_i and dPhi_i/d(s_i, U_(j,i), U_(j,i+1)) (column-major, n rows).
+  // The point last built: its system, initial state, resolved parameters and grid.
+  struct Built {
+    std::shared_ptr<const NetworkSystem> system;
+    std::vector<double> initial;  // s_0
+    std::vector<ResolvedParameter> parameters;
+    std::vector<double> times;
+    std::vector<IntervalPlan> plans;
+  } built;
+
+  // The last point integrated: its x, whether every interval completed, and per interval its
+  // results and, with a free final time, the derivatives of Phi_i and of the columns in T.
   std::vector<double> evaluated;
   bool ok = false;
-  std::vector<std::vector<double>> ends, sensitivities;
+  std::vector<IntervalResult> results;
+  std::vector<std::vector<double>> state_by_time, columns_by_time;
 
-  int control_count() const { return static_cast<int>(controls.size()); }
+  int controls() const { return static_cast<int>(problem.controls.size()); }
+  int parameters() const { return static_cast<int>(problem.parameters.size()); }
+  bool free_time() const { return problem.final_time.has_value(); }
   int ControlIndex(int j, int i) const { return j * (intervals + 1) + i; }
   int StateIndex(int i, int k) const {  // s_i, i >= 1
-    return control_count() * (intervals + 1) + (i - 1) * n + k;
+    return controls() * (intervals + 1) + (i - 1) * n + k;
   }
-  int variables() const { return control_count() * (intervals + 1) + (intervals - 1) * n; }
-  int sensitivity_count() const { return n + 2 * control_count(); }
+  int ParameterIndex(int q) const { return controls() * (intervals + 1) + (intervals - 1) * n + q; }
+  int TimeIndex() const { return ParameterIndex(parameters()); }
+  int variables() const { return TimeIndex() + (free_time() ? 1 : 0); }
+  // K: an interval's sensitivity parameters, s_i's components, its control values (start,
+  // end per control), the free parameters
+  int sensitivity_count() const { return n + 2 * controls() + parameters(); }
+  // The variable interval i's sensitivity parameter k is, or -1 (s_0 is no variable).
+  int VariableOf(int i, int k) const {
+    if (k < n) return i >= 1 ? StateIndex(i, k) : -1;
+    if (k < n + 2 * controls()) return ControlIndex((k - n) / 2, i + (k - n) % 2);
+    return ParameterIndex(k - n - 2 * controls());
+  }
 
-  NetworkSystem BuildAt(const double* x) {
-    for (int j = 0; j < control_count(); ++j) {
+  double FinalTime(const double* x) const {
+    return free_time() ? x[TimeIndex()] : problem.scenario.t_end;
+  }
+  std::vector<double> Grid(double end) const {
+    const double start = problem.scenario.t_start;
+    std::vector<double> times;
+    for (int i = 0; i <= intervals; ++i) {
+      times.push_back(i == intervals ? end : start + (end - start) * i / intervals);
+    }
+    return times;
+  }
+
+  // `target` with x's controls as tables, its parameters and its final time (ParameterError
+  // for parameters the scenario refuses).
+  void Apply(const double* x, Scenario& target) const {
+    const std::vector<double> times = Grid(FinalTime(x));
+    if (parameters() > 0) {
+      SetParameters(target, index.parameters,
+                    std::vector<double>(x + ParameterIndex(0), x + ParameterIndex(parameters())));
+    }
+    target.t_end = times.back();
+    for (int j = 0; j < controls(); ++j) {
       std::vector<TablePoint> points;
       for (int i = 0; i <= intervals; ++i) {
         // IPOPT keeps to the bounds; the clamp only guards the activation's range
-        const double u = std::clamp(x[ControlIndex(j, i)], 0.0, 1.0);
-        points.push_back({times[static_cast<std::size_t>(i)], u});
+        points.push_back(
+            {times[static_cast<std::size_t>(i)], std::clamp(x[ControlIndex(j, i)], 0.0, 1.0)});
       }
-      scenario.elements[static_cast<std::size_t>(elements[static_cast<std::size_t>(j)])]
+      target.elements[static_cast<std::size_t>(index.elements[static_cast<std::size_t>(j)])]
           .activation = Waveform::Table(std::move(points));
     }
-    return scenario.Build();
   }
 
-  // Integrates interval i of `system` from s_i (read from x) with the sensitivities.
-  bool Integrate(const NetworkSystem& system, int i, const double* x, Simulation& simulation) {
-    const double t0 = times[static_cast<std::size_t>(i)];
-    const double t1 = times[static_cast<std::size_t>(i) + 1];
+  // The system at x, its initial state, its parameters resolved, its grid. False for a point
+  // the scenario refuses.
+  bool Build(const double* x) {
+    try {
+      Apply(x, scenario);
+      BuiltScenario made = BuildScenario(scenario);
+      built.system = made.system;
+      built.initial = made.initial;
+      built.parameters.clear();
+      for (int q = 0; q < parameters(); ++q) {
+        built.parameters.push_back(ResolveParameter(scenario, made,
+                                                    index.parameters[static_cast<std::size_t>(q)],
+                                                    "parameters[" + std::to_string(q) + "].path"));
+      }
+    } catch (const std::invalid_argument&) {  // ParameterError, InputError
+      return false;
+    }
+    std::vector<double> times = Grid(FinalTime(x));
+    if (times != built.times || built.plans.empty()) {
+      built.plans = PlanIntervals(times, problem.tracking);
+      built.times = std::move(times);
+    }
+    return true;
+  }
+
+  // Integrates interval i from s_i (read from x) with the sensitivities into results[i].
+  bool Integrate(int i, const double* x, Simulation& simulation) {
+    const NetworkSystem& system = *built.system;
+    const double t0 = built.times[static_cast<std::size_t>(i)];
+    const double t1 = built.times[static_cast<std::size_t>(i) + 1];
     NetworkRunRequest request;
     request.t_start = t0;
     request.t_end = t1;
-    request.output_times = {t1};
+    request.output_times = built.plans[static_cast<std::size_t>(i)].times;
     request.initial_state =
-        i == 0 ? initial : std::vector<double>(x + StateIndex(i, 0), x + StateIndex(i, 0) + n);
+        i == 0 ? built.initial
+               : std::vector<double>(x + StateIndex(i, 0), x + StateIndex(i, 0) + n);
     std::vector<std::unique_ptr<ParameterDerivative>> derivatives;
-    std::vector<SensitivityParameter> parameters;
+    std::vector<SensitivityParameter> sensitivity;
+    const std::vector<double> zero(static_cast<std::size_t>(n), 0.0);
     for (int k = 0; k < n; ++k) {
       derivatives.push_back(std::make_unique<InitialStateDerivative>(n));
-      std::vector<double> unit(static_cast<std::size_t>(n), 0.0);
+      std::vector<double> unit = zero;
       unit[static_cast<std::size_t>(k)] = 1.0;
-      parameters.push_back({derivatives.back().get(), std::move(unit), 1.0});
+      sensitivity.push_back({derivatives.back().get(), std::move(unit), 1.0});
     }
-    for (int j = 0; j < control_count(); ++j) {
+    for (int j = 0; j < controls(); ++j) {
       for (const bool at_end : {false, true}) {
         derivatives.push_back(std::make_unique<ControlValueDerivative>(
-            system, elements[static_cast<std::size_t>(j)], t0, t1, at_end));
-        parameters.push_back(
-            {derivatives.back().get(), std::vector<double>(static_cast<std::size_t>(n), 0.0), 1.0});
+            system, index.elements[static_cast<std::size_t>(j)], t0, t1, at_end));
+        sensitivity.push_back({derivatives.back().get(), zero, 1.0});
       }
     }
-    IntervalEnd sink(n, sensitivity_count());
-    const RunStats stats = simulation.Run(system, scenario.solver, request, parameters, sink);
-    if (stats.status != RunStatus::kCompleted || !sink.recorded()) return false;
-    ends[static_cast<std::size_t>(i)] = sink.state();
-    sensitivities[static_cast<std::size_t>(i)] = sink.sensitivities();
-    return true;
+    for (const ResolvedParameter& p : built.parameters) {
+      // the parameter moves s_0 (a node's start, say), not a later s_i: that is a variable
+      sensitivity.push_back({p.derivative.get(), i == 0 ? p.initial : zero,
+                             p.value != 0.0 ? std::abs(p.value) : 1.0});
+    }
+    SensitivityColumns columns(problem.scenario.form, system, sensitivity);
+    IntervalRecorder recorder(built.plans[static_cast<std::size_t>(i)], columns, index, n,
+                              sensitivity_count(), results[static_cast<std::size_t>(i)]);
+    const RunStats stats = simulation.Run(system, scenario.solver, request, sensitivity, recorder);
+    return stats.status == RunStatus::kCompleted && recorder.complete();
+  }
+
+  // d Phi_i / dT and the columns' by the grid's stretch (docs/model.md 13.2): the end moves
+  // by (i + 1) / N, the start by i / N, and the controls' kinks with them.
+  void TimeDerivatives(const double* x) {
+    const NetworkSystem& system = *built.system;
+    const double T = built.times.back();
+    const double h = (T - built.times.front()) / intervals;
+    const auto sn = static_cast<std::size_t>(n);
+    std::vector<double> f_end(sn), f_start(sn);
+    state_by_time.assign(static_cast<std::size_t>(intervals), std::vector<double>(sn, 0.0));
+    columns_by_time.assign(static_cast<std::size_t>(intervals),
+                           std::vector<double>(index.columns.size(), 0.0));
+    for (int i = 0; i < intervals; ++i) {
+      const IntervalResult& r = results[static_cast<std::size_t>(i)];
+      const double a = static_cast<double>(i) / intervals,
+                   b = static_cast<double>(i + 1) / intervals;
+      system.RightHandSide(built.times[static_cast<std::size_t>(i) + 1], r.state.data(),
+                           f_end.data());
+      if (i >= 1)
+        system.RightHandSide(built.times[static_cast<std::size_t>(i)], x + StateIndex(i, 0),
+                             f_start.data());
+      const auto S = [&](int parameter, int k) {
+        return r.sensitivities[static_cast<std::size_t>(parameter * n + k)];
+      };
+      std::vector<double>& d = state_by_time[static_cast<std::size_t>(i)];
+      for (int k = 0; k < n; ++k) {
+        double value = b * f_end[static_cast<std::size_t>(k)];
+        if (i >= 1) {
+          for (int q = 0; q < n; ++q) value -= a * S(q, k) * f_start[static_cast<std::size_t>(q)];
+        }
+        for (int j = 0; j < controls(); ++j) {
+          const double slope = (x[ControlIndex(j, i + 1)] - x[ControlIndex(j, i)]) / h;
+          value -= slope * (a * S(n + 2 * j, k) + b * S(n + 2 * j + 1, k));
+        }
+        d[static_cast<std::size_t>(k)] = value;
+      }
+      for (std::size_t u = 0; u < index.columns.size(); ++u) {
+        columns_by_time[static_cast<std::size_t>(i)][u] =
+            index.column_signs[u] * d[static_cast<std::size_t>(index.column_states[u])];
+      }
+    }
   }
 
   bool Evaluate(const double* point) {
@@ -92,7 +205,7 @@ struct MultipleShooting::Impl {
     if (!evaluated.empty() && std::equal(point, point + count, evaluated.begin())) return ok;
     evaluated.assign(point, point + count);
     ok = false;
-    const NetworkSystem system = BuildAt(point);  // immutable: shared by the workers
+    if (!Build(point)) return false;
     const int workers = static_cast<int>(simulations.size());
     std::vector<char> completed(static_cast<std::size_t>(intervals), 0);
     const auto work = [&](int w) {
@@ -100,7 +213,7 @@ struct MultipleShooting::Impl {
       for (int i = w; i < intervals; i += workers) {
         try {
           completed[static_cast<std::size_t>(i)] =
-              Integrate(system, i, point, *simulations[static_cast<std::size_t>(w)]) ? 1 : 0;
+              Integrate(i, point, *simulations[static_cast<std::size_t>(w)]) ? 1 : 0;
         } catch (const std::exception&) {
           // a trial point the run refuses (a state that collapses an element): IPOPT steps
           // back from a point it cannot evaluate
@@ -113,62 +226,74 @@ struct MultipleShooting::Impl {
     work(0);
     for (std::thread& thread : threads) thread.join();
     ok = std::all_of(completed.begin(), completed.end(), [](char c) { return c != 0; });
+    if (ok && free_time()) TimeDerivatives(point);
     return ok;
+  }
+
+  // Visits interval i's derivatives of one quantity: visit(variable, value) for each of its
+  // sensitivity parameters that is a variable, `of(k)` the derivative by parameter k, and
+  // `by_time` the one by T (with a free final time).
+  template <typename Of, typename Visit>
+  void VisitInterval(int i, Of of, double by_time, Visit visit) const {
+    for (int k = 0; k < sensitivity_count(); ++k) {
+      const int variable = VariableOf(i, k);
+      if (variable >= 0) visit(variable, of(k));
+    }
+    if (free_time()) visit(TimeIndex(), by_time);
   }
 
   // Visits the constraint Jacobian's nonzeros in one fixed order, visit(row, column, value),
   // the values from the intervals' sensitivities when `with_values` (else 0).
   template <typename Visit>
   void WalkJacobian(bool with_values, Visit visit) const {
-    const auto s = [&](int i, int parameter, int k) {
-      if (!with_values) return 0.0;
-      return sensitivities[static_cast<std::size_t>(i)]
-                          [static_cast<std::size_t>(parameter * n + k)];
-    };
-    // the row of Phi_i's component k: by s_i (i >= 1) and the interval's two control values
-    const auto interval_row = [&](int i, int row, int k) {
-      if (i >= 1) {
-        for (int q = 0; q < n; ++q) visit(row, StateIndex(i, q), s(i, q, k));
-      }
-      for (int j = 0; j < control_count(); ++j) {
-        visit(row, ControlIndex(j, i), s(i, n + 2 * j, k));
-        visit(row, ControlIndex(j, i + 1), s(i, n + 2 * j + 1, k));
-      }
+    const auto U = index.columns.size();
+    const auto column_row = [&](int i, int row, int u) {
+      const IntervalResult* r = with_values ? &results[static_cast<std::size_t>(i)] : nullptr;
+      const auto su = static_cast<std::size_t>(u);
+      VisitInterval(
+          i,
+          [&](int k) {
+            return r != nullptr ? r->column_gradients[static_cast<std::size_t>(k) * U + su] : 0.0;
+          },
+          with_values && free_time() ? columns_by_time[static_cast<std::size_t>(i)][su] : 0.0,
+          [&](int column, double value) { visit(row, column, value); });
     };
     int row = 0;
     for (int i = 0; i + 1 < intervals; ++i) {
+      const IntervalResult* r = with_values ? &results[static_cast<std::size_t>(i)] : nullptr;
       for (int k = 0; k < n; ++k, ++row) {
-        interval_row(i, row, k);
+        VisitInterval(
+            i,
+            [&](int q) {
+              return r != nullptr ? r->sensitivities[static_cast<std::size_t>(q * n + k)] : 0.0;
+            },
+            with_values && free_time()
+                ? state_by_time[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)]
+                : 0.0,
+            [&](int column, double value) { visit(row, column, value); });
         visit(row, StateIndex(i + 1, k), -1.0);
       }
     }
-    for (const int state : final_states) interval_row(intervals - 1, row++, state);
+    for (const int u : index.finals) column_row(intervals - 1, row++, u);
+    for (const int u : index.paths) {
+      for (int i = 0; i < intervals; ++i) column_row(i, row++, u);
+    }
   }
 };
 
 MultipleShooting::MultipleShooting(const OptimalControlProblem& problem)
     : impl_(std::make_unique<Impl>()) {
   Impl& p = *impl_;
+  p.index = CheckProblem(problem);
+  p.problem = problem;
   p.scenario = problem.scenario;
-  p.controls = problem.controls;
-  p.finals = problem.final_values;
   p.intervals = problem.intervals;
-  const NetworkSystem system = CheckProblem(problem, p.elements, p.final_states);
-  p.n = system.state_size();
-  p.initial.resize(static_cast<std::size_t>(p.n));
-  system.InitialState(problem.scenario.t_start, p.initial.data());
-  const double span = problem.scenario.t_end - problem.scenario.t_start;
-  for (int i = 0; i <= p.intervals; ++i) {
-    // the last point exactly t_end
-    p.times.push_back(i == p.intervals ? problem.scenario.t_end
-                                       : problem.scenario.t_start + span * i / p.intervals);
-  }
-  p.ends.resize(static_cast<std::size_t>(p.intervals));
+  p.n = problem.scenario.Build().state_size();
+  p.results.resize(static_cast<std::size_t>(p.intervals));
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   for (int w = 0; w < std::min(cores, p.intervals); ++w) {
     p.simulations.push_back(std::make_unique<Simulation>());
   }
-  p.sensitivities.resize(static_cast<std::size_t>(p.intervals));
 }
 
 MultipleShooting::~MultipleShooting() = default;
@@ -176,87 +301,158 @@ MultipleShooting::~MultipleShooting() = default;
 int MultipleShooting::variable_count() const { return impl_->variables(); }
 
 int MultipleShooting::constraint_count() const {
-  return (impl_->intervals - 1) * impl_->n + static_cast<int>(impl_->finals.size());
+  const Impl& p = *impl_;
+  return (p.intervals - 1) * p.n + static_cast<int>(p.index.finals.size()) +
+         static_cast<int>(p.index.paths.size()) * p.intervals;
 }
 
 void MultipleShooting::VariableBounds(double* lower, double* upper) const {
   const Impl& p = *impl_;
   std::fill(lower, lower + p.variables(), -kNoBound);
   std::fill(upper, upper + p.variables(), kNoBound);
-  for (int j = 0; j < p.control_count(); ++j) {
+  for (int j = 0; j < p.controls(); ++j) {
     for (int i = 0; i <= p.intervals; ++i) {
-      lower[p.ControlIndex(j, i)] = p.controls[static_cast<std::size_t>(j)].lower;
-      upper[p.ControlIndex(j, i)] = p.controls[static_cast<std::size_t>(j)].upper;
+      lower[p.ControlIndex(j, i)] = p.problem.controls[static_cast<std::size_t>(j)].lower;
+      upper[p.ControlIndex(j, i)] = p.problem.controls[static_cast<std::size_t>(j)].upper;
     }
+  }
+  for (int q = 0; q < p.parameters(); ++q) {
+    lower[p.ParameterIndex(q)] = p.problem.parameters[static_cast<std::size_t>(q)].lower;
+    upper[p.ParameterIndex(q)] = p.problem.parameters[static_cast<std::size_t>(q)].upper;
+  }
+  if (p.free_time()) {
+    lower[p.TimeIndex()] = p.problem.final_time->lower;
+    upper[p.TimeIndex()] = p.problem.final_time->upper;
   }
 }
 
 void MultipleShooting::ConstraintBounds(double* lower, double* upper) const {
   const Impl& p = *impl_;
-  const int continuity = (p.intervals - 1) * p.n;
-  std::fill(lower, lower + continuity, 0.0);
-  std::fill(upper, upper + continuity, 0.0);
-  for (std::size_t r = 0; r < p.finals.size(); ++r) {
-    lower[continuity + static_cast<int>(r)] = p.finals[r].lower;
-    upper[continuity + static_cast<int>(r)] = p.finals[r].upper;
+  int row = (p.intervals - 1) * p.n;
+  std::fill(lower, lower + row, 0.0);
+  std::fill(upper, upper + row, 0.0);
+  for (const FinalValue& final : p.problem.final_values) {
+    lower[row] = final.lower;
+    upper[row++] = final.upper;
+  }
+  for (const PathBound& bound : p.problem.path_bounds) {
+    for (int i = 0; i < p.intervals; ++i) {
+      lower[row] = bound.lower;
+      upper[row++] = bound.upper;
+    }
   }
 }
 
 std::vector<double> MultipleShooting::StartingPoint() {
   Impl& p = *impl_;
   std::vector<double> x(static_cast<std::size_t>(p.variables()), 0.0);
-  for (int j = 0; j < p.control_count(); ++j) {
-    const ControlSpec& control = p.controls[static_cast<std::size_t>(j)];
-    const Waveform& given =
-        p.scenario.elements[static_cast<std::size_t>(p.elements[static_cast<std::size_t>(j)])]
+  const Scenario& given = p.problem.scenario;
+  if (p.free_time()) {
+    x[static_cast<std::size_t>(p.TimeIndex())] =
+        std::clamp(given.t_end, p.problem.final_time->lower, p.problem.final_time->upper);
+  }
+  const std::vector<double> times = p.Grid(p.FinalTime(x.data()));
+  for (int j = 0; j < p.controls(); ++j) {
+    const ControlSpec& control = p.problem.controls[static_cast<std::size_t>(j)];
+    const Waveform& activation =
+        given.elements[static_cast<std::size_t>(p.index.elements[static_cast<std::size_t>(j)])]
             .activation;
     for (int i = 0; i <= p.intervals; ++i) {
       x[static_cast<std::size_t>(p.ControlIndex(j, i))] = std::clamp(
-          given.Evaluate(p.times[static_cast<std::size_t>(i)]), control.lower, control.upper);
+          activation.Evaluate(times[static_cast<std::size_t>(i)]), control.lower, control.upper);
     }
   }
-  // one run through the grid: each interval starts where the one before ended
-  const NetworkSystem system = p.BuildAt(x.data());
-  for (int i = 0; i + 1 < p.intervals; ++i) {
-    if (!p.Integrate(system, i, x.data(), *p.simulations.front()))
-      break;  // IPOPT starts from what there is
-    std::copy(p.ends[static_cast<std::size_t>(i)].begin(),
-              p.ends[static_cast<std::size_t>(i)].end(), x.begin() + p.StateIndex(i + 1, 0));
+  for (int q = 0; q < p.parameters(); ++q) {
+    const FreeParameter& free = p.problem.parameters[static_cast<std::size_t>(q)];
+    x[static_cast<std::size_t>(p.ParameterIndex(q))] = std::clamp(
+        p.index.parameters[static_cast<std::size_t>(q)].Get(given), free.lower, free.upper);
   }
+  // one run through the grid: each interval starts where the one before ended
+  if (!p.Build(x.data())) return x;
+  for (int i = 0; i + 1 < p.intervals; ++i) {
+    try {
+      if (!p.Integrate(i, x.data(), *p.simulations.front())) break;
+    } catch (const std::exception&) {
+      break;  // IPOPT starts from what there is
+    }
+    const std::vector<double>& end = p.results[static_cast<std::size_t>(i)].state;
+    std::copy(end.begin(), end.end(), x.begin() + p.StateIndex(i + 1, 0));
+  }
+  p.evaluated.clear();  // the results are of a partly filled point
   return x;
 }
 
-double MultipleShooting::Objective(const double* x) const {
-  const Impl& p = *impl_;
-  double total = 0.0;
-  for (int j = 0; j < p.control_count(); ++j) {
-    const ControlSpec& control = p.controls[static_cast<std::size_t>(j)];
+bool MultipleShooting::Terms(const double* x, ObjectiveTerms& terms) {
+  Impl& p = *impl_;
+  terms = {};
+  const double T = p.FinalTime(x);
+  const double h = (T - p.problem.scenario.t_start) / p.intervals;
+  for (int j = 0; j < p.controls(); ++j) {
+    const ControlSpec& control = p.problem.controls[static_cast<std::size_t>(j)];
     for (int i = 0; i < p.intervals; ++i) {
-      const double h =
-          p.times[static_cast<std::size_t>(i) + 1] - p.times[static_cast<std::size_t>(i)];
-      total +=
+      terms.effort +=
           control.effort_weight * h *
           SegmentEffort(x[p.ControlIndex(j, i)], x[p.ControlIndex(j, i + 1)], control.effort_power)
               .value;
     }
   }
-  return total;
+  if (p.free_time()) terms.final_time = p.problem.final_time->weight * T;
+  if (p.problem.tracking.empty() && p.problem.terminal.empty()) return true;
+  if (!p.Evaluate(x)) return false;
+  for (const IntervalResult& r : p.results) terms.tracking += r.tracking;
+  const IntervalResult& last = p.results.back();
+  for (std::size_t k = 0; k < p.problem.terminal.size(); ++k) {
+    const TerminalTerm& term = p.problem.terminal[k];
+    const double miss = last.columns[static_cast<std::size_t>(p.index.terminals[k])] - term.target;
+    terms.terminal += term.weight * miss * miss;
+  }
+  return true;
 }
 
-void MultipleShooting::ObjectiveGradient(const double* x, double* gradient) const {
-  const Impl& p = *impl_;
+bool MultipleShooting::Objective(const double* x, double& value) {
+  ObjectiveTerms terms;
+  if (!Terms(x, terms)) return false;
+  value = terms.effort + terms.tracking + terms.terminal + terms.final_time;
+  return true;
+}
+
+bool MultipleShooting::ObjectiveGradient(const double* x, double* gradient) {
+  Impl& p = *impl_;
   std::fill(gradient, gradient + p.variables(), 0.0);
-  for (int j = 0; j < p.control_count(); ++j) {
-    const ControlSpec& control = p.controls[static_cast<std::size_t>(j)];
+  const double T = p.FinalTime(x);
+  const double h = (T - p.problem.scenario.t_start) / p.intervals;
+  for (int j = 0; j < p.controls(); ++j) {
+    const ControlSpec& control = p.problem.controls[static_cast<std::size_t>(j)];
     for (int i = 0; i < p.intervals; ++i) {
-      const double h =
-          p.times[static_cast<std::size_t>(i) + 1] - p.times[static_cast<std::size_t>(i)];
       const Effort e =
           SegmentEffort(x[p.ControlIndex(j, i)], x[p.ControlIndex(j, i + 1)], control.effort_power);
       gradient[p.ControlIndex(j, i)] += control.effort_weight * h * e.by_start;
       gradient[p.ControlIndex(j, i + 1)] += control.effort_weight * h * e.by_end;
+      if (p.free_time()) gradient[p.TimeIndex()] += control.effort_weight * e.value / p.intervals;
     }
   }
+  if (p.free_time()) gradient[p.TimeIndex()] += p.problem.final_time->weight;
+  if (p.problem.tracking.empty() && p.problem.terminal.empty()) return true;
+  if (!p.Evaluate(x)) return false;
+  const auto add = [&](int variable, double value) { gradient[variable] += value; };
+  for (int i = 0; i < p.intervals; ++i) {
+    const IntervalResult& r = p.results[static_cast<std::size_t>(i)];
+    // tracking needs a fixed final time: no derivative in T
+    p.VisitInterval(
+        i, [&](int k) { return r.tracking_gradient[static_cast<std::size_t>(k)]; }, 0.0, add);
+  }
+  const IntervalResult& last = p.results.back();
+  const std::size_t U = p.index.columns.size();
+  for (std::size_t k = 0; k < p.problem.terminal.size(); ++k) {
+    const TerminalTerm& term = p.problem.terminal[k];
+    const auto u = static_cast<std::size_t>(p.index.terminals[k]);
+    const double slope = 2.0 * term.weight * (last.columns[u] - term.target);
+    p.VisitInterval(
+        p.intervals - 1,
+        [&](int q) { return slope * last.column_gradients[static_cast<std::size_t>(q) * U + u]; },
+        p.free_time() ? slope * p.columns_by_time.back()[u] : 0.0, add);
+  }
+  return true;
 }
 
 bool MultipleShooting::Constraints(const double* x, double* g) {
@@ -265,12 +461,15 @@ bool MultipleShooting::Constraints(const double* x, double* g) {
   int row = 0;
   for (int i = 0; i + 1 < p.intervals; ++i) {
     for (int k = 0; k < p.n; ++k) {
-      g[row++] = p.ends[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)] -
+      g[row++] = p.results[static_cast<std::size_t>(i)].state[static_cast<std::size_t>(k)] -
                  x[p.StateIndex(i + 1, k)];
     }
   }
-  const std::vector<double>& last = p.ends.back();
-  for (const int state : p.final_states) g[row++] = last[static_cast<std::size_t>(state)];
+  for (const int u : p.index.finals)
+    g[row++] = p.results.back().columns[static_cast<std::size_t>(u)];
+  for (const int u : p.index.paths) {
+    for (const IntervalResult& r : p.results) g[row++] = r.columns[static_cast<std::size_t>(u)];
+  }
   return true;
 }
 
@@ -296,12 +495,37 @@ bool MultipleShooting::ConstraintJacobian(const double* x, double* values) {
   return true;
 }
 
-const std::vector<double>& MultipleShooting::times() const { return impl_->times; }
+std::vector<double> MultipleShooting::Times(const double* x) const {
+  return impl_->Grid(impl_->FinalTime(x));
+}
 
 std::vector<double> MultipleShooting::ControlValues(const double* x, int j) const {
   std::vector<double> values;
   for (int i = 0; i <= impl_->intervals; ++i) values.push_back(x[impl_->ControlIndex(j, i)]);
   return values;
+}
+
+std::vector<double> MultipleShooting::ParameterValues(const double* x) const {
+  return std::vector<double>(x + impl_->ParameterIndex(0),
+                             x + impl_->ParameterIndex(impl_->parameters()));
+}
+
+std::vector<double> MultipleShooting::States(const double* x) {
+  Impl& p = *impl_;
+  if (!p.Evaluate(x)) return {};
+  std::vector<double> states = p.built.initial;
+  states.insert(states.end(), x + p.StateIndex(1, 0), x + p.StateIndex(p.intervals, 0));
+  const std::vector<double>& last = p.results.back().state;
+  states.insert(states.end(), last.begin(), last.end());
+  return states;
+}
+
+int MultipleShooting::state_size() const { return impl_->n; }
+
+Scenario MultipleShooting::ScenarioAt(const double* x) const {
+  Scenario scenario = impl_->problem.scenario;
+  impl_->Apply(x, scenario);
+  return scenario;
 }
 
 }  // namespace musclesim

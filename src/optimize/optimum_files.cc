@@ -31,6 +31,9 @@ std::string Numbers(const std::vector<double>& values) {
   return out + "]";
 }
 
+// A JSON number, or null for one that is not finite (a re-simulation that failed).
+std::string JsonNumber(double value) { return std::isfinite(value) ? FormatNumber(value) : "null"; }
+
 }  // namespace
 
 Document WithControlTables(Document base, const OptimalControlProblem& problem,
@@ -62,8 +65,17 @@ Document WithControlTables(Document base, const OptimalControlProblem& problem,
 
 std::string OptimumScenarioText(const ProblemFile& file, const OptimalControlResult& result) {
   const Document base = ParseDocument(file.base, yaml::ReadText(file.base));
+  // the free parameters and a free final time at their optimal values, exactly
+  Overrides chosen({}, "optimum");
+  for (std::size_t q = 0; q < result.parameter_values.size(); ++q) {
+    chosen.texts.push_back(file.problem.parameters[q].path + "=" +
+                           FormatNumber(result.parameter_values[q]));
+  }
+  if (file.problem.final_time && !result.times.empty()) {
+    chosen.texts.push_back("time.end=" + FormatNumber(result.final_time));
+  }
   return RewriteScenario(
-      WithControlTables(base, file.problem, result), file.base, Overrides(),
+      WithControlTables(base, file.problem, result), file.base, chosen,
       {"The optimum of " + file.path + " (musclesim optimize): " + file.base + " with the",
        "optimal activations as tables; `musclesim run` re-simulates it. IPOPT: " + result.status});
 }
@@ -94,12 +106,25 @@ std::string OptimumSummaryJson(const ProblemFile& file, const OptimalControlResu
   json += "  \"base\": " + Quoted(file.base) + ",\n";
   json += "  \"status\": " + Quoted(result.status) + ",\n";
   json += std::string("  \"solved\": ") + (result.solved ? "true" : "false") + ",\n";
-  json += "  \"objective\": " + FormatNumber(result.objective) + ",\n";
-  json += "  \"constraint_violation\": " + FormatNumber(result.constraint_violation) + ",\n";
+  json += "  \"objective\": " + JsonNumber(result.objective) + ",\n";
+  json += "  \"terms\": {\"effort\": " + JsonNumber(result.terms.effort) +
+          ", \"tracking\": " + JsonNumber(result.terms.tracking) +
+          ", \"terminal\": " + JsonNumber(result.terms.terminal) +
+          ", \"final_time\": " + JsonNumber(result.terms.final_time) + "},\n";
+  json += "  \"dual_infeasibility\": " + JsonNumber(result.dual_infeasibility) + ",\n";
+  json += "  \"gradient_check\": " + JsonNumber(result.gradient_check) + ",\n";
+  json += "  \"constraint_violation\": " + JsonNumber(result.constraint_violation) + ",\n";
   json += "  \"iterations\": " + std::to_string(result.iterations) + ",\n";
   json += "  \"intervals\": " + std::to_string(file.problem.intervals) + ",\n";
-  json += "  \"wall_seconds\": " + FormatNumber(wall_seconds) + ",\n";
+  json += "  \"wall_seconds\": " + JsonNumber(wall_seconds) + ",\n";
+  json += "  \"final_time\": " + JsonNumber(result.final_time) + ",\n";
   json += "  \"times\": " + Numbers(result.times) + ",\n";
+  json += "  \"parameters\": {";
+  for (std::size_t q = 0; q < result.parameter_values.size(); ++q) {
+    json += (q > 0 ? ", " : "") + Quoted(file.problem.parameters[q].path) + ": " +
+            JsonNumber(result.parameter_values[q]);
+  }
+  json += "},\n";
   json += "  \"controls\": {";
   for (std::size_t j = 0; j < result.controls.size(); ++j) {
     json += (j > 0 ? ", " : "") + Quoted(file.problem.controls[j].actuator) + ": " +
@@ -107,17 +132,18 @@ std::string OptimumSummaryJson(const ProblemFile& file, const OptimalControlResu
   }
   json += "},\n";
   json += "  \"resimulation\": {\"status\": " + Quoted(std::string(ToString(run.stats.status))) +
+          ", \"state_deviation\": " + JsonNumber(result.resimulation_deviation) +
           ", \"final_values\": [";
   double worst = 0.0;
   for (std::size_t k = 0; k < finals.size(); ++k) {
     const FinalCheck& f = finals[k];
     json += (k > 0 ? ", " : "") + std::string("{\"column\": ") + Quoted(f.column) +
-            ", \"value\": " + FormatNumber(f.value) + ", \"lower\": " + FormatNumber(f.lower) +
-            ", \"upper\": " + FormatNumber(f.upper) +
-            ", \"violation\": " + FormatNumber(f.violation) + "}";
+            ", \"value\": " + JsonNumber(f.value) + ", \"lower\": " + JsonNumber(f.lower) +
+            ", \"upper\": " + JsonNumber(f.upper) + ", \"violation\": " + JsonNumber(f.violation) +
+            "}";
     worst = std::max(worst, f.violation);
   }
-  json += "], \"largest_violation\": " + FormatNumber(worst) + "}\n}\n";
+  json += "], \"largest_violation\": " + JsonNumber(worst) + "}\n}\n";
   return json;
 }
 

@@ -4,6 +4,9 @@
 #include <filesystem>
 
 #include "io/yaml_fields.h"
+#include "musclesim/core/errors.h"
+#include "optimize/problem_checks.h"
+#include "musclesim/io/csv_table.h"
 #include "musclesim/io/scenario_yaml.h"
 
 namespace musclesim {
@@ -81,13 +84,146 @@ FinalValue ReadFinal(const yaml::Source& src, const YAML::Node& node, const std:
   return final;
 }
 
+const InputRange kWeights{0.0, 1e12, "", "a weight of the objective"};
+const InputRange kAnyValue{-1e12, 1e12, "", "a column's value"};
+
+// `entries` as a list of maps, each read by `read(node, path)`.
+template <typename Read>
+void ReadList(const yaml::Source& src, const YAML::Node& entries, const char* key, const char* form,
+              Read read) {
+  if (!entries.IsSequence()) {
+    yaml::Fail(src, entries, key, yaml::Describe(entries),
+               std::string("must be a list of ") + form);
+  }
+  for (std::size_t k = 0; k < entries.size(); ++k) read(entries[k], Item(key, k));
+}
+
+PathBound ReadPathBound(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+  yaml::RequireMap(src, node, path, {"column", "bounds"});
+  PathBound bound;
+  bound.column =
+      yaml::ReadString(src, yaml::Required(src, node, path, "column"), yaml::Join(path, "column"));
+  std::tie(bound.lower, bound.upper) = ReadBounds(src, yaml::Required(src, node, path, "bounds"),
+                                                  yaml::Join(path, "bounds"), kAnyValue);
+  return bound;
+}
+
+// A tracking term's reference: `points: [[t, r], ...]`, or `csv: FILE` (relative to the
+// problem file) with `column: NAME` and the time column `time: NAME` (default t).
+std::vector<TablePoint> ReadReference(const yaml::Source& src, const YAML::Node& node,
+                                      const std::string& path) {
+  yaml::RequireMap(src, node, path, {"points", "csv", "column", "time"});
+  std::vector<TablePoint> points;
+  if (node["points"] && node["csv"]) {
+    yaml::Fail(src, node["csv"], yaml::Join(path, "csv"), yaml::Describe(node["csv"]),
+               "give either points or csv, not both");
+  }
+  if (const YAML::Node listed = node["points"]) {
+    const std::string at = yaml::Join(path, "points");
+    if (!listed.IsSequence()) {
+      yaml::Fail(src, listed, at, yaml::Describe(listed), "must be a list of [t, value] pairs");
+    }
+    for (std::size_t i = 0; i < listed.size(); ++i) {
+      const std::vector<double> pair = yaml::ReadNumbers(src, listed[i], Item(at.c_str(), i), 2);
+      points.push_back({pair[0], pair[1]});
+    }
+    return points;
+  }
+  const std::string file =
+      yaml::ReadString(src, yaml::Required(src, node, path, "csv"), yaml::Join(path, "csv"));
+  const std::string resolved =
+      (std::filesystem::path(src.file).parent_path() / file).lexically_normal().string();
+  const std::string value =
+      yaml::ReadString(src, yaml::Required(src, node, path, "column"), yaml::Join(path, "column"));
+  const std::string time =
+      node["time"] ? yaml::ReadString(src, node["time"], yaml::Join(path, "time")) : "t";
+  const CsvTable table = ReadCsv(resolved);
+  table.Require({time, value}, path + " (" + yaml::Location(src, node) + ")");
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    points.push_back({table.Number(r, table.Find(time)), table.Number(r, table.Find(value))});
+  }
+  return points;
+}
+
+TrackingTerm ReadTracking(const yaml::Source& src, const YAML::Node& node,
+                          const std::string& path) {
+  yaml::RequireMap(src, node, path, {"column", "reference", "weight"});
+  TrackingTerm term;
+  term.column =
+      yaml::ReadString(src, yaml::Required(src, node, path, "column"), yaml::Join(path, "column"));
+  term.reference = ReadReference(src, yaml::Required(src, node, path, "reference"),
+                                 yaml::Join(path, "reference"));
+  term.weight = yaml::ReadOptionalNumberIn(src, node, path, "weight", kWeights, 1.0);
+  return term;
+}
+
+TerminalTerm ReadTerminal(const yaml::Source& src, const YAML::Node& node,
+                          const std::string& path) {
+  yaml::RequireMap(src, node, path, {"column", "target", "weight"});
+  TerminalTerm term;
+  term.column =
+      yaml::ReadString(src, yaml::Required(src, node, path, "column"), yaml::Join(path, "column"));
+  term.target = yaml::ReadNumberIn(src, yaml::Required(src, node, path, "target"),
+                                   yaml::Join(path, "target"), kAnyValue);
+  term.weight = yaml::ReadOptionalNumberIn(src, node, path, "weight", kWeights, 1.0);
+  return term;
+}
+
+FreeParameter ReadParameter(const yaml::Source& src, const YAML::Node& node,
+                            const std::string& path) {
+  yaml::RequireMap(src, node, path, {"path", "bounds"});
+  FreeParameter free;
+  free.path =
+      yaml::ReadString(src, yaml::Required(src, node, path, "path"), yaml::Join(path, "path"));
+  std::tie(free.lower, free.upper) = ReadBounds(src, yaml::Required(src, node, path, "bounds"),
+                                                yaml::Join(path, "bounds"), kAnyValue);
+  return free;
+}
+
+FreeFinalTime ReadFinalTime(const yaml::Source& src, const YAML::Node& node) {
+  yaml::RequireMap(src, node, "final_time", {"bounds", "weight"});
+  FreeFinalTime time;
+  const InputRange times{-1e9, 1e9, "s", "a time"};
+  std::tie(time.lower, time.upper) = ReadBounds(
+      src, yaml::Required(src, node, "final_time", "bounds"), "final_time.bounds", times);
+  time.weight = yaml::ReadOptionalNumberIn(src, node, "final_time", "weight", kWeights, 0.0);
+  return time;
+}
+
+// The node at `path` ("final_values[0].column", "effort.weight") below `root`, or its
+// deepest ancestor present (a key given by default has no node of its own).
+YAML::Node NodeAt(const YAML::Node& root, const std::string& path) {
+  YAML::Node node = root;
+  std::size_t at = 0;
+  while (at < path.size()) {
+    const std::size_t end = path.find_first_of(".[", at);
+    const std::string key = path.substr(at, end == std::string::npos ? end : end - at);
+    YAML::Node next;
+    if (!key.empty() && node.IsMap() && node[key]) next = node[key];
+    if (!key.empty() && !next.IsDefined()) return node;
+    if (!key.empty()) node = next;
+    at = end == std::string::npos ? path.size() : end + 1;
+    if (end != std::string::npos && path[end] == '[') {
+      const std::size_t close = path.find(']', at);
+      if (close == std::string::npos) return node;
+      const std::size_t i = std::stoul(path.substr(at, close - at));
+      if (!node.IsSequence() || i >= node.size()) return node;
+      node = node[i];
+      at = close + 1;
+      if (at < path.size() && path[at] == '.') ++at;
+    }
+  }
+  return node;
+}
+
 }  // namespace
 
 ProblemFile LoadProblemFile(const std::string& path) {
   const yaml::Source src{path};
   const YAML::Node root = yaml::LoadFile(path);
   yaml::RequireMap(src, root, "",
-                   {"base", "intervals", "controls", "final_values", "optimizer", "output"});
+                   {"base", "intervals", "controls", "final_values", "path_bounds", "tracking",
+                    "terminal", "parameters", "final_time", "optimizer", "output"});
   ProblemFile file;
   file.path = path;
   const std::string base = yaml::ReadString(src, yaml::Required(src, root, "", "base"), "base");
@@ -117,6 +253,32 @@ ProblemFile LoadProblemFile(const std::string& path) {
       file.problem.final_values.push_back(ReadFinal(src, finals[k], Item("final_values", k)));
     }
   }
+  OptimalControlProblem& problem = file.problem;
+  if (const YAML::Node bounds = root["path_bounds"]) {
+    ReadList(src, bounds, "path_bounds", "{column: NAME, bounds: [lower, upper]}",
+             [&](const YAML::Node& n, const std::string& at) {
+               problem.path_bounds.push_back(ReadPathBound(src, n, at));
+             });
+  }
+  if (const YAML::Node terms = root["tracking"]) {
+    ReadList(src, terms, "tracking", "{column: NAME, reference: {...}, weight: W}",
+             [&](const YAML::Node& n, const std::string& at) {
+               problem.tracking.push_back(ReadTracking(src, n, at));
+             });
+  }
+  if (const YAML::Node terms = root["terminal"]) {
+    ReadList(src, terms, "terminal", "{column: NAME, target: X, weight: W}",
+             [&](const YAML::Node& n, const std::string& at) {
+               problem.terminal.push_back(ReadTerminal(src, n, at));
+             });
+  }
+  if (const YAML::Node free = root["parameters"]) {
+    ReadList(src, free, "parameters", "{path: KEY.PATH, bounds: [lower, upper]}",
+             [&](const YAML::Node& n, const std::string& at) {
+               problem.parameters.push_back(ReadParameter(src, n, at));
+             });
+  }
+  if (const YAML::Node time = root["final_time"]) problem.final_time = ReadFinalTime(src, time);
   if (const YAML::Node optimizer = root["optimizer"]) {
     yaml::RequireMap(src, optimizer, "optimizer", {"tolerance", "max_iterations"});
     const InputRange tolerances{1e-14, 1.0, "", "IPOPT's tol"};
@@ -143,6 +305,17 @@ ProblemFile LoadProblemFile(const std::string& path) {
     }
   }
   file.problem.scenario = LoadScenario(file.base);
+  // the problem against its scenario (an actuator, a column, a parameter it lacks): the
+  // message's entry placed in this file
+  try {
+    CheckProblem(file.problem);
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    const std::size_t colon = message.find_first_of(" :");
+    const std::string entry = message.substr(0, colon);
+    const YAML::Node node = NodeAt(root, entry);
+    throw InputError(entry + " (" + yaml::Location(src, node) + ")" + message.substr(colon));
+  }
   return file;
 }
 

@@ -1,6 +1,6 @@
 // The pieces multiple shooting is made of: the sensitivity parameters of an interval (its
-// initial state's components and its two control values), the sink that keeps the interval's
-// end, the closed-form effort of a linear control segment and the problem's checks.
+// initial state's components and its two control values) and the closed-form effort of a
+// linear control segment.
 #pragma once
 
 #include <vector>
@@ -48,31 +48,10 @@ class ControlValueDerivative final : public ParameterDerivative {
   bool at_end_;
 };
 
-// Keeps the one row an interval records, its end: the state and the sensitivities.
-class IntervalEnd final : public SensitivitySink {
- public:
-  IntervalEnd(int state_size, int parameters) : n_(state_size), parameters_(parameters) {}
-  void Record(double t, const double* y, const double* const* s) override;
-  bool recorded() const { return recorded_; }
-  const std::vector<double>& state() const { return state_; }
-  // column-major: parameter p's sensitivity in entries [p n, (p + 1) n)
-  const std::vector<double>& sensitivities() const { return sensitivities_; }
-
- private:
-  int n_, parameters_;
-  bool recorded_ = false;
-  std::vector<double> state_, sensitivities_;
-};
-
 // integral over [0, 1] of u^q for u linear from a to b (a, b >= 0), and its derivatives.
 struct Effort {
   double value, by_start, by_end;
 };
 Effort SegmentEffort(double a, double b, int power);
-
-// Checks `problem` (InputError naming the entry and the rule) and returns its system, each
-// control's actuator element and each final value's state index.
-NetworkSystem CheckProblem(const OptimalControlProblem& problem, std::vector<int>& elements,
-                           std::vector<int>& final_states);
 
 }  // namespace musclesim

@@ -60,6 +60,12 @@ void SensitivityColumns::AddCoordinates(const std::string& node, int d, int stat
   }
 }
 
+int SensitivityColumns::StateOf(std::size_t c, double& sign) const {
+  const Column& column = columns_[c];
+  sign = column.kind == Kind::kShortening ? -1.0 : 1.0;
+  return column.kind < Kind::kLength ? column.index : -1;
+}
+
 void SensitivityColumns::Evaluate(double t, const double* y, const double* const* s, double* values,
                                   double* derivatives) {
   const NetworkSystem& system = system_;

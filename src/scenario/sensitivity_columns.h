@@ -24,6 +24,9 @@ class SensitivityColumns {
   // (parameters x columns) d column / d parameter, s[p] the state's sensitivity to p.
   void Evaluate(double t, const double* y, const double* const* s, double* values,
                 double* derivatives);
+  // The state component column c reads, and the sign it reads it with (-1 for a shortening
+  // velocity); -1 for a column that is a function of the state rather than one of it.
+  int StateOf(std::size_t c, double& sign) const;
   // The sample observed at the last Evaluate's (t, y).
   const NetworkSample& sample() const { return sample_; }
 

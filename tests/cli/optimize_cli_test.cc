@@ -78,12 +78,24 @@ TEST(OptimizeCli, BadProblemsExitTwoNamingThePlace) {
   };
   const Case cases[] = {
       {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: biceps}\n",
-       "controls[0].actuator: 'biceps' is no actuator"},
+       "controls[0].actuator (problem.yaml:3:16): 'biceps' is no actuator"},
       {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor, bounds: [0.5, 0.2]}\n",
        "must be [lower, upper] with lower <= upper"},
       {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\nfinal_values:\n"
        "  - {column: load.x, value: 0.1}\n",
-       "final_values[0].column: 'load.x' is no node column"},
+       "final_values[0].column (problem.yaml:5:14): 'load.x' is no differentiated column"},
+      {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\ntracking:\n"
+       "  - {column: load.position, reference: {points: [[0, 0.07], [0.5, 0.07]]}}\n",
+       "tracking[0].reference (problem.yaml:5:40): covers [0, 0.5] s but must cover the span"},
+      {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\nparameters:\n"
+       "  - {path: \"nodes[1].stiffness\", bounds: [0, 1]}\n",
+       "parameters[0].path (problem.yaml:5:12)"},
+      {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\n"
+       "final_time: {bounds: [0.5, 2.0]}\nfinal_values:\n  - {column: flexor.tension, value: 1}\n",
+       "with a free final time, a column must be a state"},
+      {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\n"
+       "final_time: {bounds: [-1.0, 2.0]}\n",
+       "final_time.bounds (problem.yaml:4:22) = [-1, 2]: must be finite and after the start"},
       {"base: antagonist_move.yaml\nintervals: 0\ncontrols:\n  - {actuator: flexor}\n",
        "problem.yaml:2:12"},
   };

@@ -1,0 +1,216 @@
+#include "optimize/problem_checks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "musclesim/core/errors.h"
+#include "musclesim/core/number_format.h"
+#include "scenario/sensitivity_columns.h"
+
+namespace musclesim {
+
+namespace {
+
+std::string Entry(const char* list, std::size_t i, const char* key) {
+  std::string path = list;
+  path.append("[").append(std::to_string(i)).append("].").append(key);
+  return path;
+}
+
+std::string Range(double lower, double upper) {
+  std::string text = "[";
+  text.append(FormatNumber(lower)).append(", ").append(FormatNumber(upper)).append("]");
+  return text;
+}
+
+void CheckWeight(double weight, const std::string& path) {
+  if (!(std::isfinite(weight) && weight >= 0.0)) {
+    throw InputError(path + " = " + FormatNumber(weight) + ": must be a finite number >= 0");
+  }
+}
+
+void CheckBounds(double lower, double upper, const std::string& path) {
+  if (std::isnan(lower) || std::isnan(upper) || lower > upper) {
+    throw InputError(path + " = " + Range(lower, upper) + ": must be numbers with lower <= upper");
+  }
+}
+
+// The differentiated columns of the problem's scenario, and the entry of `column` among the
+// problem's columns (added on first use).
+class ColumnResolver {
+ public:
+  ColumnResolver(const OptimalControlProblem& problem, const NetworkSystem& system,
+                 ProblemIndex& index)
+      : columns_(problem.scenario.form, system, no_parameters_),
+        free_time_(problem.final_time.has_value()),
+        index_(index) {}
+
+  int Resolve(const std::string& column, const std::string& path) {
+    const std::vector<std::string>& names = columns_.names();
+    const auto found = std::find(names.begin(), names.end(), column);
+    if (found == names.end()) {
+      std::string known;
+      for (std::size_t c = 0; c < names.size() && c < 12; ++c) {
+        known.append(c > 0 ? ", " : "").append(names[c]);
+      }
+      if (names.size() > 12) known += ", ...";
+      throw InputError(path + ": '" + column +
+                       "' is no differentiated column of the scenario (a free node's "
+                       "coordinate or velocity, an element's length or tension, ...): " +
+                       known);
+    }
+    const int c = static_cast<int>(found - names.begin());
+    double sign = 1.0;
+    const int state = columns_.StateOf(static_cast<std::size_t>(c), sign);
+    if (free_time_ && state < 0) {
+      throw InputError(path + ": '" + column +
+                       "': with a free final time, a column must be a state (a free node's "
+                       "coordinate or velocity, an activation with dynamics)");
+    }
+    const auto known = std::find(index_.columns.begin(), index_.columns.end(), c);
+    if (known != index_.columns.end()) return static_cast<int>(known - index_.columns.begin());
+    index_.columns.push_back(c);
+    index_.column_states.push_back(state);
+    index_.column_signs.push_back(sign);
+    return static_cast<int>(index_.columns.size()) - 1;
+  }
+
+ private:
+  std::vector<SensitivityParameter> no_parameters_;
+  SensitivityColumns columns_;
+  bool free_time_;
+  ProblemIndex& index_;
+};
+
+void CheckControls(const OptimalControlProblem& problem, const NetworkSystem& system,
+                   ProblemIndex& index) {
+  if (problem.controls.empty()) throw InputError("controls: at least one control is needed");
+  for (std::size_t j = 0; j < problem.controls.size(); ++j) {
+    const ControlSpec& control = problem.controls[j];
+    const std::string path = Entry("controls", j, "actuator");
+    const int e = system.FindElement(control.actuator);
+    if (e < 0 || system.elements()[static_cast<std::size_t>(e)].kind != ElementKind::kActuator) {
+      throw InputError(path + ": '" + control.actuator + "' is no actuator of the scenario");
+    }
+    const Element& element = system.elements()[static_cast<std::size_t>(e)];
+    if (element.excitation || element.controlled || system.ActivationStateIndex(e) >= 0) {
+      throw InputError(path + ": '" + control.actuator +
+                       "' has activation dynamics or a controller; controlling its excitation "
+                       "is not supported yet");
+    }
+    if (std::find(index.elements.begin(), index.elements.end(), e) != index.elements.end()) {
+      throw InputError(path + ": '" + control.actuator + "' is controlled twice");
+    }
+    if (!(0.0 <= control.lower && control.lower <= control.upper && control.upper <= 1.0)) {
+      throw InputError(Entry("controls", j, "bounds") + " = " +
+                       Range(control.lower, control.upper) +
+                       ": must satisfy 0 <= lower <= upper <= 1");
+    }
+    CheckWeight(control.effort_weight, Entry("controls", j, "effort.weight"));
+    if (control.effort_power != 2 && control.effort_power != 3) {
+      throw InputError(Entry("controls", j, "effort.power") + " = " +
+                       std::to_string(control.effort_power) + ": must be 2 or 3");
+    }
+    index.elements.push_back(e);
+  }
+}
+
+void CheckTracking(const OptimalControlProblem& problem, ColumnResolver& columns,
+                   ProblemIndex& index) {
+  for (std::size_t k = 0; k < problem.tracking.size(); ++k) {
+    const TrackingTerm& term = problem.tracking[k];
+    if (problem.final_time) {
+      throw InputError(Entry("tracking", k, "column") +
+                       ": a tracking term needs a fixed final time (its reference is a "
+                       "record over a fixed span)");
+    }
+    index.tracked.push_back(columns.Resolve(term.column, Entry("tracking", k, "column")));
+    CheckWeight(term.weight, Entry("tracking", k, "weight"));
+    const std::vector<TablePoint>& r = term.reference;
+    const std::string at = Entry("tracking", k, "reference");
+    if (r.size() < 2) throw InputError(at + ": needs at least 2 points (t, value)");
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      if (!std::isfinite(r[i].t) || !std::isfinite(r[i].value) || (i > 0 && r[i].t <= r[i - 1].t)) {
+        throw InputError(at + ", point " + std::to_string(i) + " (t = " + FormatNumber(r[i].t) +
+                         "): times must be finite and strictly increasing, values finite");
+      }
+    }
+    if (r.front().t > problem.scenario.t_start || r.back().t < problem.scenario.t_end) {
+      throw InputError(at + ": covers " + Range(r.front().t, r.back().t) +
+                       " s but must cover the span " +
+                       Range(problem.scenario.t_start, problem.scenario.t_end) + " s");
+    }
+  }
+}
+
+void CheckParameters(const OptimalControlProblem& problem, ProblemIndex& index) {
+  for (std::size_t k = 0; k < problem.parameters.size(); ++k) {
+    const FreeParameter& free = problem.parameters[k];
+    const std::string path = Entry("parameters", k, "path");
+    Parameter handle = [&] {
+      try {
+        return FindParameter(problem.scenario, free.path);
+      } catch (const ParameterError& e) {
+        throw InputError(path + ": " + e.what());
+      }
+    }();
+    if (handle.is_setting() || handle.is_integer()) {
+      throw InputError(path + ": '" + free.path +
+                       "' is a setting of the run or an integer, not a number the optimiser "
+                       "can move");
+    }
+    CheckBounds(free.lower, free.upper, Entry("parameters", k, "bounds"));
+    for (const Parameter& other : index.parameters) {
+      if (other.network_path() == handle.network_path()) {
+        throw InputError(path + ": '" + free.path + "' is free twice");
+      }
+    }
+    index.parameters.push_back(std::move(handle));
+  }
+}
+
+}  // namespace
+
+ProblemIndex CheckProblem(const OptimalControlProblem& problem) {
+  if (problem.intervals < 1 || problem.intervals > 100000) {
+    throw InputError("intervals = " + std::to_string(problem.intervals) +
+                     ": must be an integer in [1, 100000]");
+  }
+  const NetworkSystem system = problem.scenario.Build();
+  ProblemIndex index;
+  CheckControls(problem, system, index);
+  if (const std::optional<FreeFinalTime>& time = problem.final_time) {
+    CheckBounds(time->lower, time->upper, "final_time.bounds");
+    if (!(std::isfinite(time->upper) && time->lower > problem.scenario.t_start)) {
+      throw InputError("final_time.bounds = " + Range(time->lower, time->upper) +
+                       ": must be finite and after the start, " +
+                       FormatNumber(problem.scenario.t_start) + " s");
+    }
+    CheckWeight(time->weight, "final_time.weight");
+  }
+  ColumnResolver columns(problem, system, index);
+  for (std::size_t k = 0; k < problem.final_values.size(); ++k) {
+    const FinalValue& final = problem.final_values[k];
+    index.finals.push_back(columns.Resolve(final.column, Entry("final_values", k, "column")));
+    CheckBounds(final.lower, final.upper, Entry("final_values", k, "bounds"));
+  }
+  for (std::size_t k = 0; k < problem.path_bounds.size(); ++k) {
+    const PathBound& bound = problem.path_bounds[k];
+    index.paths.push_back(columns.Resolve(bound.column, Entry("path_bounds", k, "column")));
+    CheckBounds(bound.lower, bound.upper, Entry("path_bounds", k, "bounds"));
+  }
+  CheckTracking(problem, columns, index);
+  for (std::size_t k = 0; k < problem.terminal.size(); ++k) {
+    const TerminalTerm& term = problem.terminal[k];
+    index.terminals.push_back(columns.Resolve(term.column, Entry("terminal", k, "column")));
+    CheckWeight(term.weight, Entry("terminal", k, "weight"));
+    if (!std::isfinite(term.target)) {
+      throw InputError(Entry("terminal", k, "target") + ": must be a finite number");
+    }
+  }
+  CheckParameters(problem, index);
+  return index;
+}
+
+}  // namespace musclesim
