@@ -3,6 +3,8 @@
 #include <csignal>
 #include <iostream>
 
+#include <unistd.h>
+
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
@@ -58,19 +60,21 @@ int OptimizeCommand(int argc, char** argv) {
   ProblemFile file = LoadProblemFile(args.positional[0]);
   const bool quiet = args.Has("--quiet");
   stop_signal = 0;
+  // installed until the command ends: a second signal must not cut the files' writing short
   std::signal(SIGINT, OnOptimizeStop);
   std::signal(SIGTERM, OnOptimizeStop);
-  file.options.progress = [quiet](const OptimizeProgress& p) {
-    if (!quiet) {
-      std::cerr << "\rmusclesim optimize: iteration " << p.iteration << ", objective "
-                << p.objective << ", infeasibility " << p.infeasibility << "   " << std::flush;
+  // on a terminal one line redrawn per iteration; into a file or a pipe a line every 25
+  const bool terminal = isatty(STDERR_FILENO) != 0;
+  file.options.progress = [quiet, terminal](const OptimizeProgress& p) {
+    if (!quiet && (terminal || p.iteration % 25 == 0)) {
+      std::cerr << (terminal ? "\r" : "") << "musclesim optimize: iteration " << p.iteration
+                << ", objective " << p.objective << ", infeasibility " << p.infeasibility
+                << (terminal ? "   " : "\n") << std::flush;
     }
     return stop_signal == 0;
   };
   const OptimalControlResult result = SolveOptimalControl(file.problem, file.options);
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
-  if (!quiet) std::cerr << "\n";
+  if (!quiet && terminal) std::cerr << "\n";
   const std::string scenario_text = OptimumScenarioText(file, result);
   WriteOutput(file.outputs.scenario, scenario_text);
   // the re-simulation runs the file just written, as `musclesim run` would

@@ -36,8 +36,27 @@ std::string JsonNumber(double value) { return std::isfinite(value) ? FormatNumbe
 
 }  // namespace
 
+namespace {
+
+Document Table(const std::vector<double>& times, const std::vector<double>& values) {
+  std::vector<Document> points;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    points.push_back(Document::List(
+        {Document::Number(times[i]), Document::Number(std::clamp(values[i], 0.0, 1.0))}));
+  }
+  return Document::Map(
+      {{"type", Document::Text("table")}, {"points", Document::List(std::move(points))}});
+}
+
+}  // namespace
+
 Document WithControlTables(Document base, const OptimalControlProblem& problem,
                            const OptimalControlResult& result) {
+  if (problem.scenario.form == ScenarioForm::kActuator) {
+    // the single actuator's own activation, at the top (its one control)
+    if (!result.controls.empty()) base.Set("activation", Table(result.times, result.controls[0]));
+    return base;
+  }
   const Document* listed = base.Find("elements");
   if (listed == nullptr || listed->kind() != Document::Kind::kList) {
     throw InputError("the scenario has no elements list to write the controls into");
@@ -50,14 +69,7 @@ Document WithControlTables(Document base, const OptimalControlProblem& problem,
         std::find_if(built.begin(), built.end(), [&](const Element& e) { return e.name == name; });
     const auto e = static_cast<std::size_t>(found - built.begin());
     if (e >= elements.size()) throw InputError(name + ": no such element in the document");
-    std::vector<Document> points;
-    for (std::size_t i = 0; i < result.times.size(); ++i) {
-      points.push_back(
-          Document::List({Document::Number(result.times[i]),
-                          Document::Number(std::clamp(result.controls[j][i], 0.0, 1.0))}));
-    }
-    elements[e].Set("activation", Document::Map({{"type", Document::Text("table")},
-                                                 {"points", Document::List(std::move(points))}}));
+    elements[e].Set("activation", Table(result.times, result.controls[j]));
   }
   base.Set("elements", Document::List(std::move(elements)));
   return base;
