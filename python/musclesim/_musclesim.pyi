@@ -560,9 +560,9 @@ def _plot_model(params: dict[str, typing.Any], output: str, title: str, width: i
     """
     The curves figure (`musclesim plot --curves`) of the model block given as a dict, with the GIL released. musclesim.plot is the public way.
     """
-def _optimize(scenario: typing.Any, controls: list[tuple[str, float, float, float, int]], final_values: list[tuple[str, float, float]], intervals: int, tolerance: float, max_iterations: int) -> dict[str, typing.Any]:
+def _optimize(scenario: typing.Any, controls: list[tuple[str, float, float, float, int]], final_values: list[tuple[str, float, float]], intervals: int, tolerance: float, max_iterations: int, path_bounds: list[tuple[str, float, float]], tracking: list[tuple[str, list[float], list[float], float]], terminal: list[tuple[str, float, float]], parameters: list[tuple[str, float, float]], final_time: tuple[float, float, float] | None) -> dict[str, typing.Any]:
     """
-    optimize's C++ half: controls as (actuator, lower, upper, weight, power), final values as (column, lower, upper); returns a dict of the result with the optimum as a Scenario. musclesim.optimize is the public way.
+    optimize's C++ half: controls as (actuator, lower, upper, weight, power), final values and path bounds as (column, lower, upper), tracking as (column, times, values, weight), terminal as (column, target, weight), parameters as (path, lower, upper), final_time None or (lower, upper, weight); returns a dict of the result with the optimum as a Scenario. musclesim.optimize is the public way.
     """
 def _require(condition: bool, path: str, value: float, rule: str) -> None:
     """

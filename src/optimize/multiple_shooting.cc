@@ -88,8 +88,13 @@ struct MultipleShooting::Impl {
         points.push_back(
             {times[static_cast<std::size_t>(i)], std::clamp(x[ControlIndex(j, i)], 0.0, 1.0)});
       }
-      target.elements[static_cast<std::size_t>(index.elements[static_cast<std::size_t>(j)])]
-          .activation = Waveform::Table(std::move(points));
+      Element& element =
+          target.elements[static_cast<std::size_t>(index.elements[static_cast<std::size_t>(j)])];
+      if (element.excitation) {
+        element.excitation->signal = Waveform::Table(std::move(points));
+      } else {
+        element.activation = Waveform::Table(std::move(points));
+      }
     }
   }
 
@@ -140,10 +145,21 @@ struct MultipleShooting::Impl {
       sensitivity.push_back({derivatives.back().get(), std::move(unit), 1.0});
     }
     for (int j = 0; j < controls(); ++j) {
+      const auto sj = static_cast<std::size_t>(j);
+      const int element = index.elements[sj];
       for (const bool at_end : {false, true}) {
-        derivatives.push_back(std::make_unique<ControlValueDerivative>(
-            system, index.elements[static_cast<std::size_t>(j)], t0, t1, at_end));
-        sensitivity.push_back({derivatives.back().get(), zero, 1.0});
+        std::vector<double> initial = zero;
+        if (index.activation_states[sj] >= 0) {
+          derivatives.push_back(
+              std::make_unique<ExcitationValueDerivative>(system, element, t0, t1, at_end));
+          if (i == 0 && !at_end && index.moves_start[sj] != 0) {
+            initial[static_cast<std::size_t>(index.activation_states[sj])] = 1.0;
+          }
+        } else {
+          derivatives.push_back(
+              std::make_unique<ControlValueDerivative>(system, element, t0, t1, at_end));
+        }
+        sensitivity.push_back({derivatives.back().get(), std::move(initial), 1.0});
       }
     }
     for (const ResolvedParameter& p : built.parameters) {
@@ -354,9 +370,10 @@ std::vector<double> MultipleShooting::StartingPoint() {
   const std::vector<double> times = p.Grid(p.FinalTime(x.data()));
   for (int j = 0; j < p.controls(); ++j) {
     const ControlSpec& control = p.problem.controls[static_cast<std::size_t>(j)];
+    const Element& element =
+        given.elements[static_cast<std::size_t>(p.index.elements[static_cast<std::size_t>(j)])];
     const Waveform& activation =
-        given.elements[static_cast<std::size_t>(p.index.elements[static_cast<std::size_t>(j)])]
-            .activation;
+        element.excitation ? element.excitation->signal : element.activation;
     for (int i = 0; i <= p.intervals; ++i) {
       x[static_cast<std::size_t>(p.ControlIndex(j, i))] = std::clamp(
           activation.Evaluate(times[static_cast<std::size_t>(i)]), control.lower, control.upper);

@@ -52,9 +52,17 @@ Document Table(const std::vector<double>& times, const std::vector<double>& valu
 
 Document WithControlTables(Document base, const OptimalControlProblem& problem,
                            const OptimalControlResult& result) {
+  // with activation dynamics the control is the excitation
+  const auto key = [&](std::size_t j) {
+    const std::vector<Element>& elements = problem.scenario.elements;
+    for (const Element& e : elements) {
+      if (e.name == problem.controls[j].actuator) return e.excitation ? "excitation" : "activation";
+    }
+    return "activation";
+  };
   if (problem.scenario.form == ScenarioForm::kActuator) {
-    // the single actuator's own activation, at the top (its one control)
-    if (!result.controls.empty()) base.Set("activation", Table(result.times, result.controls[0]));
+    // the single actuator's own activation (or excitation), at the top: its one control
+    if (!result.controls.empty()) base.Set(key(0), Table(result.times, result.controls[0]));
     return base;
   }
   const Document* listed = base.Find("elements");
@@ -69,7 +77,7 @@ Document WithControlTables(Document base, const OptimalControlProblem& problem,
         std::find_if(built.begin(), built.end(), [&](const Element& e) { return e.name == name; });
     const auto e = static_cast<std::size_t>(found - built.begin());
     if (e >= elements.size()) throw InputError(name + ": no such element in the document");
-    elements[e].Set("activation", Table(result.times, result.controls[j]));
+    elements[e].Set(key(j), Table(result.times, result.controls[j]));
   }
   base.Set("elements", Document::List(std::move(elements)));
   return base;

@@ -94,10 +94,9 @@ void CheckControls(const OptimalControlProblem& problem, const NetworkSystem& sy
       throw InputError(path + ": '" + control.actuator + "' is no actuator of the scenario");
     }
     const Element& element = system.elements()[static_cast<std::size_t>(e)];
-    if (element.excitation || element.controlled || system.ActivationStateIndex(e) >= 0) {
+    if (element.controlled) {
       throw InputError(path + ": '" + control.actuator +
-                       "' has activation dynamics or a controller; controlling its excitation "
-                       "is not supported yet");
+                       "' is driven by a controller: a control of the optimiser must be free");
     }
     if (std::find(index.elements.begin(), index.elements.end(), e) != index.elements.end()) {
       throw InputError(path + ": '" + control.actuator + "' is controlled twice");
@@ -113,6 +112,11 @@ void CheckControls(const OptimalControlProblem& problem, const NetworkSystem& sy
                        std::to_string(control.effort_power) + ": must be 2 or 3");
     }
     index.elements.push_back(e);
+    index.activation_states.push_back(system.ActivationStateIndex(e));
+    // with activation dynamics and no initial activation given, u(t_start) = e(t_start): the
+    // first control value moves the initial state
+    index.moves_start.push_back(element.excitation && !element.excitation->initial_activation ? 1
+                                                                                              : 0);
   }
 }
 

@@ -12,7 +12,11 @@
 namespace musclesim {
 
 struct ProblemIndex {
-  std::vector<int> elements;          // per control, its actuator element
+  std::vector<int> elements;  // per control, its actuator element
+  // per control, its activation's state with activation dynamics (the control is then the
+  // excitation), else -1; and whether its first value sets the activation's start
+  std::vector<int> activation_states;
+  std::vector<char> moves_start;
   std::vector<Parameter> parameters;  // per free parameter, its handle
   // the columns the terms read, once each: their indices among the differentiated columns,
   // and for each the state it reads with its sign (-1: a function of the state)

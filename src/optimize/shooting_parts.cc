@@ -9,9 +9,20 @@ void InitialStateDerivative::RightHandSide(double, const double*, double* dfdp) 
   std::fill(dfdp, dfdp + state_size_, 0.0);
 }
 
-double ControlValueDerivative::Weight(double t) const {
-  const double rising = std::clamp((t - t0_) / (t1_ - t0_), 0.0, 1.0);
-  return at_end_ ? rising : 1.0 - rising;
+double HatWeight(double t, double t0, double t1, bool at_end) {
+  const double rising = std::clamp((t - t0) / (t1 - t0), 0.0, 1.0);
+  return at_end ? rising : 1.0 - rising;
+}
+
+double ControlValueDerivative::Weight(double t) const { return HatWeight(t, t0_, t1_, at_end_); }
+
+void ExcitationValueDerivative::RightHandSide(double t, const double* y, double* dfdp) const {
+  std::fill(dfdp, dfdp + system_.state_size(), 0.0);
+  const int state = system_.ActivationStateIndex(element_);
+  const ExcitationInput& input = *system_.elements()[static_cast<std::size_t>(element_)].excitation;
+  const double e = input.signal.Evaluate(t);  // no controller drives a control
+  dfdp[state] = EvaluateActivationRate(input.dynamics, e, y[state]).by_excitation *
+                HatWeight(t, t0_, t1_, at_end_);
 }
 
 double ControlValueDerivative::TensionSlope(double t, const double* y) const {

@@ -48,6 +48,27 @@ class ControlValueDerivative final : public ParameterDerivative {
   bool at_end_;
 };
 
+// The same for an actuator with activation dynamics, whose excitation e is the control: e
+// enters only the activation's rate, so df/dp is d(udot)/de times the hat, in that state's row.
+class ExcitationValueDerivative final : public ParameterDerivative {
+ public:
+  ExcitationValueDerivative(const NetworkSystem& system, int element, double t0, double t1,
+                            bool at_end)
+      : system_(system), element_(element), t0_(t0), t1_(t1), at_end_(at_end) {}
+  void RightHandSide(double t, const double* y, double* dfdp) const override;
+  void Elements(double, const double*, NetworkSystem::ElementPartials*) const override {}
+  bool analytic() const override { return true; }
+
+ private:
+  const NetworkSystem& system_;
+  int element_;
+  double t0_, t1_;
+  bool at_end_;
+};
+
+// The hat of a control value: 1 at its end of [t0, t1], 0 at the other, linear between.
+double HatWeight(double t, double t0, double t1, bool at_end);
+
 // integral over [0, 1] of u^q for u linear from a to b (a, b >= 0), and its derivatives.
 struct Effort {
   double value, by_start, by_end;

@@ -18,7 +18,10 @@ constexpr double kStart = 0.1;  // the mass's start [m]: the actuator's length
 
 // f_L = 1 within 1e-8 over the travel (one Gaussian of width factor 1e-4 1/m^2), g = 1 within
 // 1e-7 (n = 1, v_max = 1e7 m/s), no passive tension: T = f_iso u.
-inline Scenario FlatActuatorOnALoad() {
+// `drive`: the actuator's activation, or with activation dynamics its excitation and time
+// constants (the keys of a network's actuator).
+inline Scenario FlatActuatorOnALoad(
+    const std::string& drive = "activation: {type: constant, value: 0.2}") {
   // a file of this test's own (ctest runs tests in parallel processes): its name, '/' replaced
   const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
   std::string name = std::string(test->test_suite_name()) + "_" + test->name();
@@ -38,7 +41,7 @@ nodes:
   - {name: mass, mass: 0.1, position: 0.1, velocity: 0.0}
 elements:
   - {name: muscle, type: actuator, from: anchor, to: mass, model: flat,
-     activation: {type: constant, value: 0.2}}
+     )" + drive + R"(}
 loads:
   - {node: mass, type: constant, value: 20.0}
 time: {start: 0.0, end: 0.1}

@@ -148,6 +148,63 @@ void MakeContinuous(MultipleShooting& shooting, std::vector<double>& x, int firs
   for (std::size_t k = 0; k < states; ++k) ASSERT_EQ(g[k], 0.0) << k;
 }
 
+// The excitation of an actuator with activation dynamics as the control: its first value sets
+// the activation's start as well (no initial_activation given), and the final time is free.
+TEST(ObjectiveTerms, DerivativesInAnExcitationMatchCentralDifferences) {
+  OptimalControlProblem problem;
+  problem.scenario = FlatActuatorOnALoad(
+      "excitation: {type: constant, value: 0.2}, "
+      "activation_dynamics: {tau_activation: 0.01, tau_deactivation: 0.04}");
+  problem.intervals = 4;
+  problem.controls = {{"muscle", 0.0, 1.0, 1.0, 2}};
+  problem.final_values = {{"mass.position", 0.08, 0.08}, {"muscle.activation", 0.0, 1.0}};
+  problem.tracking = {{"muscle.tension", {{0.0, 20.0}, {0.1, 25.0}}, 1e-2}};
+  problem.parameters = {{"elements[0].activation_dynamics.tau_activation", 0.005, 0.05}};
+  MultipleShooting shooting(problem);
+  const std::vector<double> x = RandomPoint(shooting, 5);
+  std::vector<double> steps(x.size(), 1e-5);
+  std::fill(steps.begin(), steps.begin() + 5, 1e-5);
+  steps.back() = 1e-6;  // tau_act [s]
+  ExpectExactDerivatives(shooting, x, steps, 2e-6);
+
+  problem.tracking.clear();
+  problem.final_time = FreeFinalTime{0.05, 0.2, 1.0};
+  MultipleShooting timed(problem);
+  std::vector<double> y = RandomPoint(timed, 5);
+  y.back() = 0.12;
+  steps.push_back(1e-6);
+  ExpectExactDerivatives(timed, y, steps, 2e-6);
+}
+
+// With activation dynamics the optimum's excitation is written as the table a run follows: it
+// re-simulates to the final values.
+TEST(ObjectiveTerms, AnExcitationOptimumReSimulatesToItsFinalValues) {
+  OptimalControlProblem problem;
+  problem.scenario = FlatActuatorOnALoad(
+      "excitation: {type: constant, value: 0.2}, "
+      "activation_dynamics: {tau_activation: 0.01, tau_deactivation: 0.04}");
+  problem.intervals = 10;
+  problem.controls = {{"muscle", 0.0, 1.0, 1.0, 2}};
+  problem.final_values = {{"mass.position", kStart - kTravel, kStart - kTravel},
+                          {"mass.velocity", 0.0, 0.0}};
+  const OptimalControlResult result = SolveOptimalControl(problem);
+  ASSERT_TRUE(result.solved) << result.status;
+  EXPECT_LT(result.resimulation_deviation, 1e-8);
+  const Element& muscle = result.scenario.elements[0];
+  ASSERT_TRUE(muscle.excitation.has_value());
+  EXPECT_EQ(muscle.excitation->signal.points.size(), 11u);
+  const NetworkSystem system = result.scenario.Build();
+  NetworkRunRequest request;
+  request.t_start = 0.0;
+  request.t_end = result.final_time;
+  request.output_times = {result.final_time};
+  Simulation simulation;
+  const NetworkRunResult run = simulation.Run(system, result.scenario.solver, request);
+  ASSERT_EQ(run.samples.size(), 1u);
+  EXPECT_NEAR(run.samples[0].position[1], kStart - kTravel, 1e-8);
+  EXPECT_NEAR(run.samples[0].velocity[1], 0.0, 1e-7);
+}
+
 TEST(ObjectiveTerms, TrackingIsTheIntegralOfTheSquaredMiss) {
   const OptimalControlProblem problem = Tracking(5);
   MultipleShooting shooting(problem);
