@@ -4,6 +4,7 @@
 #include <IpIpoptData.hpp>
 #include <IpTNLP.hpp>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -191,7 +192,8 @@ double ResimulationDeviation(const OptimalControlResult& result) {
 
 OptimalControlResult SolveOptimalControl(const OptimalControlProblem& problem,
                                          const OptimizeOptions& options) {
-  MultipleShooting shooting(problem);
+  const auto start = std::chrono::steady_clock::now();
+  MultipleShooting shooting(problem, options.derivatives);
   OptimalControlResult result;
   result.status = "not_run";
   Ipopt::SmartPtr<ShootingProgram> program =
@@ -223,6 +225,9 @@ OptimalControlResult SolveOptimalControl(const OptimalControlProblem& problem,
   result.state_size = shooting.state_size();
   result.gradient_check = GradientCheck(shooting, x);
   result.resimulation_deviation = ResimulationDeviation(result);
+  result.integration_seconds = shooting.integration_seconds();
+  result.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 

@@ -1,6 +1,7 @@
 #include "musclesim/optimize/multiple_shooting.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <thread>
 
@@ -39,6 +40,8 @@ struct MultipleShooting::Impl {
   bool ok = false;
   std::vector<IntervalResult> results;
   std::vector<std::vector<double>> state_by_time, columns_by_time;
+  bool quotients = false;            // difference quotients instead of sensitivities
+  double integration_seconds = 0.0;  // wall time in the intervals' integrations
 
   int controls() const { return static_cast<int>(problem.controls.size()); }
   int parameters() const { return static_cast<int>(problem.parameters.size()); }
@@ -123,8 +126,9 @@ struct MultipleShooting::Impl {
     return true;
   }
 
-  // Integrates interval i from s_i (read from x) with the sensitivities into results[i].
-  bool Integrate(int i, const double* x, Simulation& simulation) {
+  // Integrates interval i from s_i (read from x) into `out`, with the sensitivities unless
+  // the derivatives are difference quotients.
+  bool Integrate(int i, const double* x, Simulation& simulation, IntervalResult& out) {
     const NetworkSystem& system = *built.system;
     const double t0 = built.times[static_cast<std::size_t>(i)];
     const double t1 = built.times[static_cast<std::size_t>(i) + 1];
@@ -138,13 +142,13 @@ struct MultipleShooting::Impl {
     std::vector<std::unique_ptr<ParameterDerivative>> derivatives;
     std::vector<SensitivityParameter> sensitivity;
     const std::vector<double> zero(static_cast<std::size_t>(n), 0.0);
-    for (int k = 0; k < n; ++k) {
+    for (int k = 0; k < (quotients ? 0 : n); ++k) {
       derivatives.push_back(std::make_unique<InitialStateDerivative>(n));
       std::vector<double> unit = zero;
       unit[static_cast<std::size_t>(k)] = 1.0;
       sensitivity.push_back({derivatives.back().get(), std::move(unit), 1.0});
     }
-    for (int j = 0; j < controls(); ++j) {
+    for (int j = 0; j < (quotients ? 0 : controls()); ++j) {
       const auto sj = static_cast<std::size_t>(j);
       const int element = index.elements[sj];
       for (const bool at_end : {false, true}) {
@@ -163,13 +167,14 @@ struct MultipleShooting::Impl {
       }
     }
     for (const ResolvedParameter& p : built.parameters) {
+      if (quotients) break;
       // the parameter moves s_0 (a node's start, say), not a later s_i: that is a variable
       sensitivity.push_back({p.derivative.get(), i == 0 ? p.initial : zero,
                              p.value != 0.0 ? std::abs(p.value) : 1.0});
     }
     SensitivityColumns columns(problem.scenario.form, system, sensitivity);
     IntervalRecorder recorder(built.plans[static_cast<std::size_t>(i)], columns, index, n,
-                              sensitivity_count(), results[static_cast<std::size_t>(i)]);
+                              static_cast<int>(sensitivity.size()), out);
     const RunStats stats = simulation.Run(system, scenario.solver, request, sensitivity, recorder);
     return stats.status == RunStatus::kCompleted && recorder.complete();
   }
@@ -216,12 +221,29 @@ struct MultipleShooting::Impl {
     }
   }
 
-  bool Evaluate(const double* point) {
-    const int count = variables();
-    if (!evaluated.empty() && std::equal(point, point + count, evaluated.begin())) return ok;
-    evaluated.assign(point, point + count);
-    ok = false;
-    if (!Build(point)) return false;
+  void VariableBounds(double* lower, double* upper) const {
+    const Impl& p = *this;
+    std::fill(lower, lower + p.variables(), -kNoBound);
+    std::fill(upper, upper + p.variables(), kNoBound);
+    for (int j = 0; j < p.controls(); ++j) {
+      for (int i = 0; i <= p.intervals; ++i) {
+        lower[p.ControlIndex(j, i)] = p.problem.controls[static_cast<std::size_t>(j)].lower;
+        upper[p.ControlIndex(j, i)] = p.problem.controls[static_cast<std::size_t>(j)].upper;
+      }
+    }
+    for (int q = 0; q < p.parameters(); ++q) {
+      lower[p.ParameterIndex(q)] = p.problem.parameters[static_cast<std::size_t>(q)].lower;
+      upper[p.ParameterIndex(q)] = p.problem.parameters[static_cast<std::size_t>(q)].upper;
+    }
+    if (p.free_time()) {
+      lower[p.TimeIndex()] = p.problem.final_time->lower;
+      upper[p.TimeIndex()] = p.problem.final_time->upper;
+    }
+  }
+
+  // Every interval at `point` (built) into `out`, on all the workers. False if one fails.
+  bool IntegrateAll(const double* point, std::vector<IntervalResult>& out) {
+    const auto start = std::chrono::steady_clock::now();
     const int workers = static_cast<int>(simulations.size());
     std::vector<char> completed(static_cast<std::size_t>(intervals), 0);
     const auto work = [&](int w) {
@@ -229,7 +251,10 @@ struct MultipleShooting::Impl {
       for (int i = w; i < intervals; i += workers) {
         try {
           completed[static_cast<std::size_t>(i)] =
-              Integrate(i, point, *simulations[static_cast<std::size_t>(w)]) ? 1 : 0;
+              Integrate(i, point, *simulations[static_cast<std::size_t>(w)],
+                        out[static_cast<std::size_t>(i)])
+                  ? 1
+                  : 0;
         } catch (const std::exception&) {
           // a trial point the run refuses (a state that collapses an element): IPOPT steps
           // back from a point it cannot evaluate
@@ -241,9 +266,111 @@ struct MultipleShooting::Impl {
     for (int w = 1; w < workers; ++w) threads.emplace_back(work, w);
     work(0);
     for (std::thread& thread : threads) thread.join();
-    ok = std::all_of(completed.begin(), completed.end(), [](char c) { return c != 0; });
-    if (ok && free_time()) TimeDerivatives(point);
+    integration_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return std::all_of(completed.begin(), completed.end(), [](char c) { return c != 0; });
+  }
+
+  bool Evaluate(const double* point) {
+    const int count = variables();
+    if (!evaluated.empty() && std::equal(point, point + count, evaluated.begin())) return ok;
+    evaluated.assign(point, point + count);
+    ok = false;
+    if (!Build(point)) return false;
+    ok = IntegrateAll(point, results);
+    if (ok && quotients) ok = DifferenceQuotients(point);
+    if (ok && free_time() && !quotients) TimeDerivatives(point);
     return ok;
+  }
+
+  // The colour of interval i's sensitivity parameter k: variables of one colour move no
+  // interval twice, so one evaluation per colour differences them all (K colours, and T).
+  int ColourOf(int i, int k) const {
+    if (k < n || k >= n + 2 * controls()) return k;
+    const int j = (k - n) / 2, end = (k - n) % 2;
+    return n + 2 * j + (i + end) % 2;
+  }
+
+  // The derivatives as forward differences, one evaluation per colour (what a user without
+  // sensitivities would do, exploiting the structure): the comparison of docs/performance.md.
+  bool DifferenceQuotients(const double* point) {
+    const int K = sensitivity_count();
+    const auto sn = static_cast<std::size_t>(n);
+    const std::size_t U = index.columns.size();
+    for (IntervalResult& r : results) {
+      r.sensitivities.assign(static_cast<std::size_t>(K) * sn, 0.0);
+      r.column_gradients.assign(static_cast<std::size_t>(K) * U, 0.0);
+      r.tracking_gradient.assign(static_cast<std::size_t>(K), 0.0);
+    }
+    std::vector<double> lower(static_cast<std::size_t>(variables())),
+        upper(static_cast<std::size_t>(variables()));
+    VariableBounds(lower.data(), upper.data());
+    // a step of sqrt(rtol): the integration's error over the step stays below the difference's
+    const double relative = std::sqrt(std::max(scenario.solver.rtol, 1e-16));
+    std::vector<double> moved(point, point + variables()), steps(moved.size(), 0.0);
+    std::vector<IntervalResult> shifted(results.size());
+    if (free_time()) {
+      state_by_time.assign(static_cast<std::size_t>(intervals), {});
+      columns_by_time.assign(static_cast<std::size_t>(intervals), {});
+    }
+    const int colours = K + (free_time() ? 1 : 0);
+    for (int c = 0; c < colours; ++c) {
+      std::copy(point, point + variables(), moved.begin());
+      std::fill(steps.begin(), steps.end(), 0.0);
+      const auto step = [&](int v) {
+        const auto sv = static_cast<std::size_t>(v);
+        double h = relative * std::max(1.0, std::abs(point[v]));
+        if (point[v] + h > upper[sv]) h = -h;  // inward from an upper bound
+        steps[sv] = h;
+        moved[sv] = point[v] + h;
+      };
+      for (int i = 0; i < intervals; ++i) {
+        for (int k = 0; k < K; ++k) {
+          const int v = VariableOf(i, k);
+          if (v >= 0 && ColourOf(i, k) == c) step(v);
+        }
+      }
+      if (c == K) step(TimeIndex());
+      if (!Build(moved.data()) || !IntegrateAll(moved.data(), shifted)) return false;
+      for (int i = 0; i < intervals; ++i) {
+        const auto si = static_cast<std::size_t>(i);
+        IntervalResult& r = results[si];
+        const IntervalResult& s = shifted[si];
+        const auto difference = [&](double h, auto&& store) {
+          for (std::size_t q = 0; q < sn; ++q) store.state(q, (s.state[q] - r.state[q]) / h);
+          for (std::size_t u = 0; u < U; ++u) store.column(u, (s.columns[u] - r.columns[u]) / h);
+          store.tracking((s.tracking - r.tracking) / h);
+        };
+        if (c == K) {
+          struct {
+            IntervalResult& r;
+            std::vector<double>& states;
+            std::vector<double>& columns;
+            void state(std::size_t q, double d) { states[q] = d; }
+            void column(std::size_t u, double d) { columns[u] = d; }
+            void tracking(double) {}
+          } by_time{r, state_by_time[si], columns_by_time[si]};
+          by_time.states.assign(sn, 0.0);
+          by_time.columns.assign(U, 0.0);
+          difference(steps[static_cast<std::size_t>(TimeIndex())], by_time);
+          continue;
+        }
+        for (int k = 0; k < K; ++k) {
+          const int v = VariableOf(i, k);
+          if (v < 0 || ColourOf(i, k) != c) continue;
+          const auto sk = static_cast<std::size_t>(k);
+          struct {
+            IntervalResult& r;
+            std::size_t k, n, U;
+            void state(std::size_t q, double d) { r.sensitivities[k * n + q] = d; }
+            void column(std::size_t u, double d) { r.column_gradients[k * U + u] = d; }
+            void tracking(double d) { r.tracking_gradient[k] = d; }
+          } by_parameter{r, sk, sn, U};
+          difference(steps[static_cast<std::size_t>(v)], by_parameter);
+        }
+      }
+    }
+    return Build(point);  // the point's own system and grid again
   }
 
   // Visits interval i's derivatives of one quantity: visit(variable, value) for each of its
@@ -297,9 +424,11 @@ struct MultipleShooting::Impl {
   }
 };
 
-MultipleShooting::MultipleShooting(const OptimalControlProblem& problem)
+MultipleShooting::MultipleShooting(const OptimalControlProblem& problem,
+                                   ShootingDerivatives derivatives)
     : impl_(std::make_unique<Impl>()) {
   Impl& p = *impl_;
+  p.quotients = derivatives == ShootingDerivatives::kDifferenceQuotients;
   p.index = CheckProblem(problem);
   p.problem = problem;
   p.scenario = problem.scenario;
@@ -323,23 +452,7 @@ int MultipleShooting::constraint_count() const {
 }
 
 void MultipleShooting::VariableBounds(double* lower, double* upper) const {
-  const Impl& p = *impl_;
-  std::fill(lower, lower + p.variables(), -kNoBound);
-  std::fill(upper, upper + p.variables(), kNoBound);
-  for (int j = 0; j < p.controls(); ++j) {
-    for (int i = 0; i <= p.intervals; ++i) {
-      lower[p.ControlIndex(j, i)] = p.problem.controls[static_cast<std::size_t>(j)].lower;
-      upper[p.ControlIndex(j, i)] = p.problem.controls[static_cast<std::size_t>(j)].upper;
-    }
-  }
-  for (int q = 0; q < p.parameters(); ++q) {
-    lower[p.ParameterIndex(q)] = p.problem.parameters[static_cast<std::size_t>(q)].lower;
-    upper[p.ParameterIndex(q)] = p.problem.parameters[static_cast<std::size_t>(q)].upper;
-  }
-  if (p.free_time()) {
-    lower[p.TimeIndex()] = p.problem.final_time->lower;
-    upper[p.TimeIndex()] = p.problem.final_time->upper;
-  }
+  impl_->VariableBounds(lower, upper);
 }
 
 void MultipleShooting::ConstraintBounds(double* lower, double* upper) const {
@@ -388,7 +501,10 @@ std::vector<double> MultipleShooting::StartingPoint() {
   if (!p.Build(x.data())) return x;
   for (int i = 0; i + 1 < p.intervals; ++i) {
     try {
-      if (!p.Integrate(i, x.data(), *p.simulations.front())) break;
+      if (!p.Integrate(i, x.data(), *p.simulations.front(),
+                       p.results[static_cast<std::size_t>(i)])) {
+        break;
+      }
     } catch (const std::exception&) {
       break;  // IPOPT starts from what there is
     }
@@ -538,6 +654,8 @@ std::vector<double> MultipleShooting::States(const double* x) {
 }
 
 int MultipleShooting::state_size() const { return impl_->n; }
+
+double MultipleShooting::integration_seconds() const { return impl_->integration_seconds; }
 
 Scenario MultipleShooting::ScenarioAt(const double* x) const {
   Scenario scenario = impl_->problem.scenario;

@@ -137,6 +137,8 @@ std::string OptimumSummaryJson(const ProblemFile& file, const OptimalControlResu
   json += "  \"iterations\": " + std::to_string(result.iterations) + ",\n";
   json += "  \"intervals\": " + std::to_string(file.problem.intervals) + ",\n";
   json += "  \"wall_seconds\": " + JsonNumber(wall_seconds) + ",\n";
+  json += "  \"solve_seconds\": " + JsonNumber(result.wall_seconds) + ",\n";
+  json += "  \"integration_seconds\": " + JsonNumber(result.integration_seconds) + ",\n";
   json += "  \"final_time\": " + JsonNumber(result.final_time) + ",\n";
   json += "  \"times\": " + Numbers(result.times) + ",\n";
   json += "  \"parameters\": {";

@@ -280,7 +280,17 @@ ProblemFile LoadProblemFile(const std::string& path) {
   }
   if (const YAML::Node time = root["final_time"]) problem.final_time = ReadFinalTime(src, time);
   if (const YAML::Node optimizer = root["optimizer"]) {
-    yaml::RequireMap(src, optimizer, "optimizer", {"tolerance", "max_iterations"});
+    yaml::RequireMap(src, optimizer, "optimizer", {"tolerance", "max_iterations", "derivatives"});
+    if (optimizer["derivatives"]) {
+      const std::string method =
+          yaml::ReadString(src, optimizer["derivatives"], "optimizer.derivatives");
+      if (method == "difference_quotients") {
+        file.options.derivatives = ShootingDerivatives::kDifferenceQuotients;
+      } else if (method != "sensitivities") {
+        yaml::Fail(src, optimizer["derivatives"], "optimizer.derivatives", method,
+                   "must be sensitivities (exact, the default) or difference_quotients");
+      }
+    }
     const InputRange tolerances{1e-14, 1.0, "", "IPOPT's tol"};
     file.options.tolerance =
         yaml::ReadOptionalNumberIn(src, optimizer, "optimizer", "tolerance", tolerances, 1e-8);

@@ -148,6 +148,51 @@ void MakeContinuous(MultipleShooting& shooting, std::vector<double>& x, int firs
   for (std::size_t k = 0; k < states; ++k) ASSERT_EQ(g[k], 0.0) << k;
 }
 
+// The comparison's derivatives: forward differences by colour approximate the exact ones to
+// about sqrt(rtol), every term and a free final time included, and reach the same optimum.
+TEST(ObjectiveTerms, DifferenceQuotientsApproximateTheSensitivities) {
+  OptimalControlProblem problem = Tracking(4);
+  problem.terminal = {{"mass.velocity", 0.0, 10.0}};
+  problem.path_bounds = {{"muscle.tension", 0.0, 100.0}};
+  problem.parameters = {{"models.flat.f_iso", 50.0, 200.0}};
+  for (const bool timed : {false, true}) {
+    if (timed) {
+      problem.tracking.clear();
+      problem.path_bounds = {{"mass.velocity", -1.0, 1.0}};
+      problem.final_time = FreeFinalTime{0.05, 0.2, 1.0};
+    }
+    MultipleShooting exact(problem);
+    MultipleShooting differenced(problem, ShootingDerivatives::kDifferenceQuotients);
+    std::vector<double> x = RandomPoint(exact, 5);
+    if (timed) x.back() = 0.12;
+    std::vector<double> a(x.size()), b(x.size());
+    ASSERT_TRUE(exact.ObjectiveGradient(x.data(), a.data()));
+    ASSERT_TRUE(differenced.ObjectiveGradient(x.data(), b.data()));
+    for (std::size_t k = 0; k < x.size(); ++k) {
+      EXPECT_NEAR(b[k], a[k], 1e-3 * std::max(1.0, std::abs(a[k]))) << "gradient " << k;
+    }
+    std::vector<double> ja(static_cast<std::size_t>(exact.jacobian_nonzeros())), jb(ja.size());
+    ASSERT_TRUE(exact.ConstraintJacobian(x.data(), ja.data()));
+    ASSERT_TRUE(differenced.ConstraintJacobian(x.data(), jb.data()));
+    for (std::size_t k = 0; k < ja.size(); ++k) {
+      EXPECT_NEAR(jb[k], ja[k], 1e-3 * std::max(1.0, std::abs(ja[k]))) << "entry " << k;
+    }
+  }
+  OptimizeOptions options;
+  options.derivatives = ShootingDerivatives::kDifferenceQuotients;
+  problem = OptimalControlProblem{};
+  problem.scenario = FlatActuatorOnALoad();
+  problem.intervals = 4;
+  problem.controls = {{"muscle", 0.0, 1.0, 1.0, 2}};
+  problem.final_values = {{"mass.position", kStart - kTravel, kStart - kTravel},
+                          {"mass.velocity", 0.0, 0.0}};
+  const OptimalControlResult by_quotients = SolveOptimalControl(problem, options);
+  const OptimalControlResult by_sensitivities = SolveOptimalControl(problem);
+  ASSERT_TRUE(by_sensitivities.solved) << by_sensitivities.status;
+  EXPECT_NEAR(by_quotients.objective, by_sensitivities.objective,
+              1e-4 * by_sensitivities.objective);
+}
+
 // The excitation of an actuator with activation dynamics as the control: its first value sets
 // the activation's start as well (no initial_activation given), and the final time is free.
 TEST(ObjectiveTerms, DerivativesInAnExcitationMatchCentralDifferences) {

@@ -18,7 +18,8 @@ namespace musclesim {
 class MultipleShooting {
  public:
   // Checks the problem (InputError) and prepares its intervals.
-  explicit MultipleShooting(const OptimalControlProblem& problem);
+  explicit MultipleShooting(const OptimalControlProblem& problem,
+                            ShootingDerivatives derivatives = ShootingDerivatives::kSensitivities);
   ~MultipleShooting();
   MultipleShooting(const MultipleShooting&) = delete;
   MultipleShooting& operator=(const MultipleShooting&) = delete;
@@ -51,6 +52,8 @@ class MultipleShooting {
   std::vector<double> ParameterValues(const double* x) const;
   std::vector<double> States(const double* x);
   int state_size() const;
+  // Wall time spent integrating intervals so far [s].
+  double integration_seconds() const;
   // The problem's scenario at x: the controls as tables, the parameters set, t_end = T.
   Scenario ScenarioAt(const double* x) const;
 

@@ -94,10 +94,17 @@ struct OptimizeProgress {
   double dual_infeasibility = 0.0;
 };
 
+// How the shooting program's first derivatives are computed: CVODES forward sensitivities
+// (exact), or forward difference quotients of the intervals' plain integrations, one
+// evaluation of every interval per colour of variables that move no interval twice (for
+// comparison: docs/performance.md).
+enum class ShootingDerivatives { kSensitivities, kDifferenceQuotients };
+
 struct OptimizeOptions {
   double tolerance = 1e-9;   // IPOPT's tol: of the scaled optimality error
   int max_iterations = 500;  // IPOPT's max_iter
   int print_level = 0;       // IPOPT's print_level, 0 (silent) to 12
+  ShootingDerivatives derivatives = ShootingDerivatives::kSensitivities;
   // Called after each iteration; returning false stops IPOPT there (status
   // user_requested_stop, the point reached kept).
   std::function<bool(const OptimizeProgress&)> progress;
@@ -116,6 +123,8 @@ struct OptimalControlResult {
   double constraint_violation = 0.0;  // its largest constraint violation
   double dual_infeasibility = 0.0;    // IPOPT's, unscaled, at the last iteration
   int iterations = 0;
+  double wall_seconds = 0.0;         // [s] of the solve, the checks after it included
+  double integration_seconds = 0.0;  // [s] of it spent integrating the intervals
   // The gradient check at the point returned: the objective's derivative along a random
   // direction by central differences against the gradient's, relative difference.
   double gradient_check = 0.0;
