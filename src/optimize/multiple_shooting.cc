@@ -28,8 +28,8 @@ struct MultipleShooting::Impl {
   // The point last built: its system, initial state, resolved parameters and grid.
   struct Built {
     std::shared_ptr<const NetworkSystem> system;
-    std::vector<double> initial;  // s_0
-    std::vector<ResolvedParameter> parameters;
+    std::vector<double> initial;                             // s_0
+    std::vector<std::vector<ResolvedParameter>> parameters;  // per worker
     std::vector<double> times;
     std::vector<IntervalPlan> plans;
   } built;
@@ -109,11 +109,16 @@ struct MultipleShooting::Impl {
       BuiltScenario made = BuildScenario(scenario);
       built.system = made.system;
       built.initial = made.initial;
+      // one resolution per worker: a difference quotient's derivative keeps scratch space
+      // (a run is single-threaded), so workers must not share one
       built.parameters.clear();
-      for (int q = 0; q < parameters(); ++q) {
-        built.parameters.push_back(ResolveParameter(scenario, made,
-                                                    index.parameters[static_cast<std::size_t>(q)],
-                                                    "parameters[" + std::to_string(q) + "].path"));
+      built.parameters.resize(simulations.size());
+      for (std::vector<ResolvedParameter>& resolved : built.parameters) {
+        for (int q = 0; q < parameters(); ++q) {
+          resolved.push_back(ResolveParameter(scenario, made,
+                                              index.parameters[static_cast<std::size_t>(q)],
+                                              "parameters[" + std::to_string(q) + "].path"));
+        }
       }
     } catch (const std::invalid_argument&) {  // ParameterError, InputError
       return false;
@@ -128,7 +133,8 @@ struct MultipleShooting::Impl {
 
   // Integrates interval i from s_i (read from x) into `out`, with the sensitivities unless
   // the derivatives are difference quotients.
-  bool Integrate(int i, const double* x, Simulation& simulation, IntervalResult& out) {
+  bool Integrate(int i, const double* x, int worker, IntervalResult& out) {
+    Simulation& simulation = *simulations[static_cast<std::size_t>(worker)];
     const NetworkSystem& system = *built.system;
     const double t0 = built.times[static_cast<std::size_t>(i)];
     const double t1 = built.times[static_cast<std::size_t>(i) + 1];
@@ -166,7 +172,7 @@ struct MultipleShooting::Impl {
         sensitivity.push_back({derivatives.back().get(), std::move(initial), 1.0});
       }
     }
-    for (const ResolvedParameter& p : built.parameters) {
+    for (const ResolvedParameter& p : built.parameters[static_cast<std::size_t>(worker)]) {
       if (quotients) break;
       // the parameter moves s_0 (a node's start, say), not a later s_i: that is a variable
       sensitivity.push_back({p.derivative.get(), i == 0 ? p.initial : zero,
@@ -251,10 +257,7 @@ struct MultipleShooting::Impl {
       for (int i = w; i < intervals; i += workers) {
         try {
           completed[static_cast<std::size_t>(i)] =
-              Integrate(i, point, *simulations[static_cast<std::size_t>(w)],
-                        out[static_cast<std::size_t>(i)])
-                  ? 1
-                  : 0;
+              Integrate(i, point, w, out[static_cast<std::size_t>(i)]) ? 1 : 0;
         } catch (const std::exception&) {
           // a trial point the run refuses (a state that collapses an element): IPOPT steps
           // back from a point it cannot evaluate
@@ -501,8 +504,7 @@ std::vector<double> MultipleShooting::StartingPoint() {
   if (!p.Build(x.data())) return x;
   for (int i = 0; i + 1 < p.intervals; ++i) {
     try {
-      if (!p.Integrate(i, x.data(), *p.simulations.front(),
-                       p.results[static_cast<std::size_t>(i)])) {
+      if (!p.Integrate(i, x.data(), 0, p.results[static_cast<std::size_t>(i)])) {
         break;
       }
     } catch (const std::exception&) {

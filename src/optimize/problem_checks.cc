@@ -7,6 +7,7 @@
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
 #include "scenario/sensitivity_columns.h"
+#include "scenario/sensitivity_derivatives.h"
 
 namespace musclesim {
 
@@ -170,6 +171,9 @@ void CheckParameters(const OptimalControlProblem& problem, ProblemIndex& index) 
         throw InputError(path + ": '" + free.path + "' is free twice");
       }
     }
+    // resolved once here, so that a parameter no run can differentiate (one that moves an
+    // input's breakpoint, say) is refused now rather than at every point
+    ResolveParameter(problem.scenario, BuildScenario(problem.scenario), handle, path);
     index.parameters.push_back(std::move(handle));
   }
 }
