@@ -12,7 +12,7 @@ set -euo pipefail
 seconds=${1:-60}
 shift || true
 readers=("$@")
-[ ${#readers[@]} -eq 0 ] && readers=(scenario model sweep identify identify_series network controller sensitivity)
+[ ${#readers[@]} -eq 0 ] && readers=(scenario model sweep identify identify_series network controller sensitivity problem)
 if ! [[ "$seconds" =~ ^[0-9]+$ ]] || [ "$seconds" -lt 1 ]; then
   echo "fuzz.sh: SECONDS must be a whole number >= 1, not '$seconds'" >&2
   exit 2
