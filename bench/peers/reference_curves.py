@@ -1,0 +1,75 @@
+"""The peers' muscle curves as their own libraries compute them, on dense grids, written to
+bench/peers/reference/ as CSV: the references for native curve families (docs/model.md 14). OpenSim's DeGrooteFregly2016Muscle (its static curve functions and their
+derivatives) and MuJoCo's muscle (mju_muscleGain, mju_muscleBias, mju_muscleDynamics).
+    "$(bash bench/peers/setup.sh)" bench/peers/reference_curves.py
+"""
+import pathlib
+
+import mujoco
+import numpy as np
+import opensim
+
+OUT = pathlib.Path(__file__).resolve().parent / "reference"
+
+
+def write(name, header, rows, source):
+    OUT.mkdir(parents=True, exist_ok=True)
+    with open(OUT / name, "w") as f:
+        f.write(f"# {source} (bench/peers/reference_curves.py)\n")
+        f.write(",".join(header) + "\n")
+        for row in rows:
+            f.write(",".join(repr(float(v)) for v in row) + "\n")
+
+
+def degroote():
+    source = f"OpenSim {opensim.GetVersion()} DeGrooteFregly2016Muscle, default properties"
+    muscle = opensim.DeGrooteFregly2016Muscle()
+    curves = opensim.DeGrooteFregly2016Muscle
+    rows = []
+    for length in np.linspace(0.2, 1.8, 161):
+        rows.append((length, muscle.calcActiveForceLengthMultiplier(length),
+                     muscle.calcActiveForceLengthMultiplierDerivative(length),
+                     muscle.calcPassiveForceMultiplier(length),
+                     muscle.calcPassiveForceMultiplierDerivative(length)))
+    write("degroote2016_fiber_length.csv",
+          ["normalized_fiber_length", "active", "active_slope", "passive", "passive_slope"],
+          rows, source)
+    rows = [(v, curves.calcForceVelocityMultiplier(v)) for v in np.linspace(-1.0, 1.0, 201)]
+    write("degroote2016_fiber_velocity.csv", ["normalized_fiber_velocity", "force_velocity"],
+          rows, source + "; velocity positive lengthening")
+    rows = [(t, muscle.calcTendonForceMultiplier(t), muscle.calcTendonForceMultiplierDerivative(t))
+            for t in np.linspace(0.98, 1.08, 101)]
+    write("degroote2016_tendon.csv", ["normalized_tendon_length", "force", "force_slope"], rows,
+          source + " (tendon_strain_at_one_norm_force 0.049)")
+
+
+def mujoco_muscle():
+    source = f"MuJoCo {mujoco.__version__} mju_muscleGain/mju_muscleBias"
+    # parameter sets: [range0, range1, force, scale, lmin, lmax, vmax, fpmax, fvmax]
+    sets = {"default": [0.75, 1.05, 100.0, 200.0, 0.5, 1.6, 1.5, 1.3, 1.2],
+            "other": [0.6, 1.2, 250.0, 200.0, 0.4, 1.8, 2.0, 1.1, 1.5]}
+    lengthrange = np.array([0.05, 0.25])  # m: the actuator length's range
+    rows = []
+    for index, prm in enumerate(sets.values()):
+        prm = np.array(prm)
+        for length in np.linspace(0.0, 0.35, 351):
+            for velocity in (-0.6, -0.2, 0.0, 0.05, 0.3):  # m/s, positive lengthening
+                gain = mujoco.mju_muscleGain(length, velocity, lengthrange, 1.0, prm)
+                bias = mujoco.mju_muscleBias(length, lengthrange, 1.0, prm)
+                rows.append((index, length, velocity, gain, bias))
+    write("mujoco_muscle.csv", ["set", "length", "velocity", "gain", "bias"], rows,
+          source + "; sets default " + str(sets["default"]) + " and other " + str(sets["other"])
+          + " as gainprm, lengthrange [0.05, 0.25] m, acc0 1")
+    rows = []
+    for smooth in (0.0, 0.2):
+        for ctrl in np.linspace(0.0, 1.0, 11):
+            for act in np.linspace(0.0, 1.0, 11):
+                rows.append((smooth, ctrl, act,
+                             mujoco.mju_muscleDynamics(ctrl, act, np.array([0.01, 0.04, smooth]))))
+    write("mujoco_activation.csv", ["tausmooth", "ctrl", "act", "act_dot"], rows,
+          f"MuJoCo {mujoco.__version__} mju_muscleDynamics, timeconst 0.01 0.04")
+
+
+if __name__ == "__main__":
+    degroote()
+    mujoco_muscle()
