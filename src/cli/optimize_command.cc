@@ -8,6 +8,7 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "musclesim/io/document.h"
 #include "musclesim/io/output_file.h"
 #include "musclesim/io/run_csv.h"
 #include "musclesim/io/scenario_yaml.h"
@@ -76,20 +77,27 @@ int OptimizeCommand(int argc, char** argv) {
   const OptimalControlResult result = SolveOptimalControl(file.problem, file.options);
   if (!quiet && terminal) std::cerr << "\n";
   const std::string scenario_text = OptimumScenarioText(file, result);
-  WriteOutput(file.outputs.scenario, scenario_text);
-  // the re-simulation runs the file just written, as `musclesim run` would
-  const RecordedRun run = RunScenario(LoadScenario(file.outputs.scenario));
-  WriteOutput(file.outputs.trajectory, FormatRunCsv(run));
+  // the re-simulation reads the text about to be written, as `musclesim run` will read the
+  // file: an optimum that does not read back fails here, before any file is replaced
+  const RecordedRun run = RunScenario(
+      ReadScenario(ParseDocument(file.outputs.scenario, scenario_text), file.outputs.scenario));
   const std::vector<FinalCheck> finals = CheckFinalValues(file, run);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  WriteOutput(file.outputs.scenario, scenario_text);
+  WriteOutput(file.outputs.trajectory, FormatRunCsv(run));
   WriteOutput(file.outputs.summary, OptimumSummaryJson(file, result, run, finals, wall));
   if (!quiet) {
     std::cerr << "musclesim optimize: " << result.status << " after " << result.iterations
               << " iterations, objective " << result.objective << ", constraint violation "
               << result.constraint_violation << "; re-simulated (deviation "
               << result.resimulation_deviation << "): ";
-    for (const FinalCheck& f : finals) std::cerr << f.column << " = " << f.value << " ";
+    if (run.stats.status != RunStatus::kCompleted) {
+      std::cerr << "the run ended early, at t = " << run.stats.final_time
+                << " s (its CSV stops there): " << run.stats.message << " ";
+    } else {
+      for (const FinalCheck& f : finals) std::cerr << f.column << " = " << f.value << " ";
+    }
     std::cerr << "-> " << file.outputs.scenario << ", " << file.outputs.summary << ", "
               << file.outputs.trajectory << std::endl;
   }

@@ -126,7 +126,8 @@ double GradientCheck(MultipleShooting& shooting, const std::vector<double>& x) {
   const auto count = x.size();
   std::vector<double> lower(count), upper(count), gradient(count), direction(count, 0.0);
   shooting.VariableBounds(lower.data(), upper.data());
-  if (!shooting.ObjectiveGradient(x.data(), gradient.data())) return -1.0;
+  const double none = std::numeric_limits<double>::quiet_NaN();  // null in the summary
+  if (!shooting.ObjectiveGradient(x.data(), gradient.data())) return none;
   std::mt19937 random(20261128);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   constexpr double kStep = 1e-6;
@@ -144,7 +145,7 @@ double GradientCheck(MultipleShooting& shooting, const std::vector<double>& x) {
   }
   double above = 0.0, below = 0.0;
   if (!shooting.Objective(plus.data(), above) || !shooting.Objective(minus.data(), below)) {
-    return -1.0;
+    return none;
   }
   const double differenced = 0.5 * (above - below);
   const double scale = std::max(std::abs(exact), std::abs(differenced));

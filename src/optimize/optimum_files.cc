@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
@@ -14,10 +15,18 @@ namespace {
 
 // A JSON string of `text` (names are plain; quotes and backslashes escaped all the same).
 std::string Quoted(const std::string& text) {
+  static constexpr char kHex[] = "0123456789abcdef";
   std::string out = "\"";
   for (const char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (byte < 0x20) {  // a control character, as \u00XX
+      out.append("\\u00").append(1, kHex[byte >> 4]).append(1, kHex[byte & 15]);
+    } else {
+      out += c;
+    }
   }
   return out + "\"";
 }
@@ -111,8 +120,14 @@ std::vector<FinalCheck> CheckFinalValues(const ProblemFile& file, const Recorded
     }
     const std::vector<double>& column = run.values[static_cast<std::size_t>(found - names.begin())];
     if (column.empty()) throw InputError(final.column + ": the re-simulation recorded no row");
-    check.value = column.back();
-    check.violation = std::max({0.0, final.lower - check.value, check.value - final.upper});
+    if (run.stats.status != RunStatus::kCompleted) {
+      // the last row is not the final time's: no value there (null in the summary)
+      check.value = std::numeric_limits<double>::quiet_NaN();
+      check.violation = std::numeric_limits<double>::infinity();
+    } else {
+      check.value = column.back();
+      check.violation = std::max({0.0, final.lower - check.value, check.value - final.upper});
+    }
     checks.push_back(check);
   }
   return checks;
@@ -154,6 +169,8 @@ std::string OptimumSummaryJson(const ProblemFile& file, const OptimalControlResu
   }
   json += "},\n";
   json += "  \"resimulation\": {\"status\": " + Quoted(std::string(ToString(run.stats.status))) +
+          ", \"end_time\": " + JsonNumber(run.stats.final_time) +
+          ", \"message\": " + Quoted(run.stats.message) +
           ", \"state_deviation\": " + JsonNumber(result.resimulation_deviation) +
           ", \"final_values\": [";
   double worst = 0.0;

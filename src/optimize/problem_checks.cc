@@ -166,6 +166,28 @@ void CheckParameters(const OptimalControlProblem& problem, ProblemIndex& index) 
                        "can move");
     }
     CheckBounds(free.lower, free.upper, Entry("parameters", k, "bounds"));
+    for (std::size_t j = 0; j < index.elements.size(); ++j) {
+      // the control replaces that activation (or excitation): the number would do nothing
+      const std::string element = "elements[" + std::to_string(index.elements[j]) + "].";
+      for (const char* drive : {"activation", "excitation"}) {
+        if (handle.network_path().rfind(element + drive + ".", 0) == 0) {
+          throw InputError(path + ": '" + free.path + "' is part of the " + drive + " of " +
+                           problem.controls[j].actuator +
+                           ", which the control replaces: it cannot be a free parameter");
+        }
+      }
+    }
+    // both bounds must be values the scenario accepts: every point IPOPT tries lies between
+    for (const double bound : {free.lower, free.upper}) {
+      Scenario copy = problem.scenario;
+      try {
+        handle.Set(copy, bound);
+      } catch (const ParameterError& e) {
+        throw InputError(Entry("parameters", k, "bounds") + " = " + Range(free.lower, free.upper) +
+                         ": " + FormatNumber(bound) + " is no valid value of " + free.path + ": " +
+                         e.rule());
+      }
+    }
     for (const Parameter& other : index.parameters) {
       if (other.network_path() == handle.network_path()) {
         throw InputError(path + ": '" + free.path + "' is free twice");
@@ -196,6 +218,18 @@ ProblemIndex CheckProblem(const OptimalControlProblem& problem) {
                        FormatNumber(problem.scenario.t_start) + " s");
     }
     CheckWeight(time->weight, "final_time.weight");
+    for (const double bound : {time->lower, time->upper}) {
+      // the scenario must run to either bound (its output grid, its limits)
+      Scenario copy = problem.scenario;
+      copy.t_end = bound;
+      try {
+        copy.Validate();
+      } catch (const ParameterError& e) {
+        throw InputError("final_time.bounds = " + Range(time->lower, time->upper) + ": " +
+                         FormatNumber(bound) +
+                         " s as the final time breaks the scenario: " + e.path() + ": " + e.rule());
+      }
+    }
   }
   ColumnResolver columns(problem, system, index);
   for (std::size_t k = 0; k < problem.final_values.size(); ++k) {

@@ -111,7 +111,7 @@ PathBound ReadPathBound(const yaml::Source& src, const YAML::Node& node, const s
 // A tracking term's reference: `points: [[t, r], ...]`, or `csv: FILE` (relative to the
 // problem file) with `column: NAME` and the time column `time: NAME` (default t).
 std::vector<TablePoint> ReadReference(const yaml::Source& src, const YAML::Node& node,
-                                      const std::string& path) {
+                                      const std::string& path, std::vector<std::string>& inputs) {
   yaml::RequireMap(src, node, path, {"points", "csv", "column", "time"});
   std::vector<TablePoint> points;
   if (node["points"] && node["csv"]) {
@@ -137,6 +137,7 @@ std::vector<TablePoint> ReadReference(const yaml::Source& src, const YAML::Node&
       yaml::ReadString(src, yaml::Required(src, node, path, "column"), yaml::Join(path, "column"));
   const std::string time =
       node["time"] ? yaml::ReadString(src, node["time"], yaml::Join(path, "time")) : "t";
+  inputs.push_back(resolved);
   const CsvTable table = ReadCsv(resolved);
   table.Require({time, value}, path + " (" + yaml::Location(src, node) + ")");
   for (std::size_t r = 0; r < table.rows.size(); ++r) {
@@ -145,14 +146,14 @@ std::vector<TablePoint> ReadReference(const yaml::Source& src, const YAML::Node&
   return points;
 }
 
-TrackingTerm ReadTracking(const yaml::Source& src, const YAML::Node& node,
-                          const std::string& path) {
+TrackingTerm ReadTracking(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                          std::vector<std::string>& inputs) {
   yaml::RequireMap(src, node, path, {"column", "reference", "weight"});
   TrackingTerm term;
   term.column =
       yaml::ReadString(src, yaml::Required(src, node, path, "column"), yaml::Join(path, "column"));
   term.reference = ReadReference(src, yaml::Required(src, node, path, "reference"),
-                                 yaml::Join(path, "reference"));
+                                 yaml::Join(path, "reference"), inputs);
   term.weight = yaml::ReadOptionalNumberIn(src, node, path, "weight", kWeights, 1.0);
   return term;
 }
@@ -188,6 +189,44 @@ FreeFinalTime ReadFinalTime(const yaml::Source& src, const YAML::Node& node) {
       src, yaml::Required(src, node, "final_time", "bounds"), "final_time.bounds", times);
   time.weight = yaml::ReadOptionalNumberIn(src, node, "final_time", "weight", kWeights, 0.0);
   return time;
+}
+
+// Each output a file of its own in an existing directory, none of them an input (the problem,
+// its base, a tracking reference): a failed or finished run must not replace what it read.
+void CheckOutputs(const yaml::Source& src, const YAML::Node& root, const OptimizeOutputs& outputs,
+                  const std::vector<std::string>& inputs) {
+  namespace fs = std::filesystem;
+  const auto same = [](const std::string& a, const std::string& b) {
+    std::error_code error;
+    return fs::weakly_canonical(a, error) == fs::weakly_canonical(b, error);
+  };
+  const std::pair<const char*, const std::string*> named[] = {{"scenario", &outputs.scenario},
+                                                              {"summary", &outputs.summary},
+                                                              {"trajectory", &outputs.trajectory}};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const auto& [key, target] = named[k];
+    const std::string at = std::string("output.") + key;
+    const YAML::Node node = root["output"] && root["output"][key] ? root["output"][key] : root;
+    const auto fail = [&](const std::string& rule) {
+      yaml::Fail(src, node, at, "'" + *target + "'", rule);
+    };
+    if (target->empty()) fail("must name a file");
+    const fs::path parent = fs::path(*target).parent_path();
+    std::error_code error;
+    if (!parent.empty() && !fs::is_directory(parent, error)) {
+      fail("its directory " + parent.string() + " does not exist");
+    }
+    if (fs::is_directory(*target, error)) fail("is a directory");
+    for (const std::string& input : inputs) {
+      if (same(*target, input))
+        fail("is " + input + ", which the problem reads: it would be replaced");
+    }
+    for (std::size_t j = 0; j < k; ++j) {
+      if (same(*target, *named[j].second)) {
+        fail(std::string("is also output.") + named[j].first + ": each output needs a file");
+      }
+    }
+  }
 }
 
 // The node at `path` ("final_values[0].column", "effort.weight") below `root`, or its
@@ -254,6 +293,7 @@ ProblemFile LoadProblemFile(const std::string& path) {
     }
   }
   OptimalControlProblem& problem = file.problem;
+  std::vector<std::string> inputs{path, file.base};  // what the outputs must not replace
   if (const YAML::Node bounds = root["path_bounds"]) {
     ReadList(src, bounds, "path_bounds", "{column: NAME, bounds: [lower, upper]}",
              [&](const YAML::Node& n, const std::string& at) {
@@ -263,7 +303,7 @@ ProblemFile LoadProblemFile(const std::string& path) {
   if (const YAML::Node terms = root["tracking"]) {
     ReadList(src, terms, "tracking", "{column: NAME, reference: {...}, weight: W}",
              [&](const YAML::Node& n, const std::string& at) {
-               problem.tracking.push_back(ReadTracking(src, n, at));
+               problem.tracking.push_back(ReadTracking(src, n, at, inputs));
              });
   }
   if (const YAML::Node terms = root["terminal"]) {
@@ -314,6 +354,7 @@ ProblemFile LoadProblemFile(const std::string& path) {
       if (output[key]) *target = yaml::ReadString(src, output[key], yaml::Join("output", key));
     }
   }
+  CheckOutputs(src, root, file.outputs, inputs);
   file.problem.scenario = LoadScenario(file.base);
   // the problem against its scenario (an actuator, a column, a parameter it lacks): the
   // message's entry placed in this file

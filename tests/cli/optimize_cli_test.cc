@@ -96,6 +96,31 @@ TEST(OptimizeCli, BadProblemsExitTwoNamingThePlace) {
       {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\n"
        "final_time: {bounds: [-1.0, 2.0]}\n",
        "final_time.bounds (problem.yaml:4:22) = [-1, 2]: must be finite and after the start"},
+      // an output never replaces an input, nor another output, and its directory exists
+      {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\n"
+       "output: {scenario: antagonist_move.yaml}\n",
+       "output.scenario = 'antagonist_move.yaml' (problem.yaml:4:20): is antagonist_move.yaml, "
+       "which the problem reads"},
+      {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\n"
+       "output: {summary: ./problem.yaml}\n",
+       "which the problem reads: it would be replaced"},
+      {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\n"
+       "output: {scenario: a.yaml, trajectory: a.yaml}\n",
+       "output.trajectory = 'a.yaml' (problem.yaml:4:40): is also output.scenario"},
+      {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\n"
+       "output: {summary: missing/a.json}\n",
+       "its directory missing does not exist"},
+      // a parameter the control overrides; bounds the scenario refuses; a final time the
+      // output grid cannot serve
+      {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\nparameters:\n"
+       "  - {path: \"elements[0].activation.value\", bounds: [0, 1]}\n",
+       "which the control replaces: it cannot be a free parameter"},
+      {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\nparameters:\n"
+       "  - {path: \"nodes[1].mass\", bounds: [0, 20]}\n",
+       "parameters[0].bounds (problem.yaml:5:37) = [0, 20]: 0 is no valid value of nodes[1].mass"},
+      {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\n"
+       "final_time: {bounds: [1.0e+8, 1.0e+9]}\n",
+       "as the final time breaks the scenario: output.interval"},
       {"base: antagonist_move.yaml\nintervals: 0\ncontrols:\n  - {actuator: flexor}\n",
        "problem.yaml:2:12"},
   };
@@ -106,6 +131,10 @@ TEST(OptimizeCli, BadProblemsExitTwoNamingThePlace) {
         Shell("cd '" + dir + "' && '" + MUSCLESIM_BINARY + "' optimize problem.yaml 2> err.txt"), 2)
         << c.text;
     EXPECT_THAT(testing::ReadFile(err), HasSubstr(c.expected)) << c.text;
+    // nothing the problem read was replaced
+    EXPECT_EQ(testing::ReadFile(dir + "/antagonist_move.yaml"),
+              testing::ReadFile(testing::ScenarioPath("antagonist_move.yaml")));
+    EXPECT_EQ(testing::ReadFile(dir + "/problem.yaml"), c.text);
   }
 }
 
