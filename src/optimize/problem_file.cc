@@ -204,7 +204,9 @@ void CheckOutputs(const yaml::Source& src, const YAML::Node& root, const Optimiz
                                                               {"summary", &outputs.summary},
                                                               {"trajectory", &outputs.trajectory}};
   for (std::size_t k = 0; k < 3; ++k) {
-    const auto& [key, target] = named[k];
+    // named, not a structured binding: a lambda below captures them
+    const char* const key = named[k].first;
+    const std::string* const target = named[k].second;
     const std::string at = std::string("output.") + key;
     const YAML::Node node = root["output"] && root["output"][key] ? root["output"][key] : root;
     const auto fail = [&](const std::string& rule) {
