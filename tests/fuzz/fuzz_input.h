@@ -35,6 +35,16 @@ inline std::string WriteInput(const std::uint8_t* data, std::size_t size, const 
   return path;
 }
 
+// Copies the shipped scenarios into WorkDirectory(), so that a file naming a `base`
+// (antagonist_move.yaml, concentric.yaml, ...) finds it beside the input.
+inline void CopyShippedScenarios() {
+  namespace fs = std::filesystem;
+  for (const auto& entry : fs::directory_iterator(MUSCLESIM_SOURCE_DIR "/scenarios")) {
+    fs::copy_file(entry.path(), WorkDirectory() / entry.path().filename(),
+                  fs::copy_options::overwrite_existing);
+  }
+}
+
 // Runs `read`; an InputError or ParameterError is bad input correctly refused.
 template <typename Read>
 void ExpectOnlyInputErrors(Read read) {

@@ -5,11 +5,7 @@
 #include "musclesim/optimize/problem_file.h"
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  namespace fs = std::filesystem;
-  for (const auto& entry : fs::directory_iterator(MUSCLESIM_SOURCE_DIR "/scenarios")) {
-    fs::copy_file(entry.path(), musclesim::fuzz::WorkDirectory() / entry.path().filename(),
-                  fs::copy_options::overwrite_existing);
-  }
+  musclesim::fuzz::CopyShippedScenarios();
   return 0;
 }
 
