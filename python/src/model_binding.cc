@@ -263,8 +263,8 @@ void DefineCurves(py::class_<Model>& model_class) {
       .def(
           "passive",
           [](const Model& self, const py::object& x) {
-            const PassiveParams& p = self.tension->params().passive;
-            return Curve1(x, [&](double xi) { return PassiveTension(p, xi).value; });
+            const TensionModel& t = *self.tension;
+            return Curve1(x, [&](double xi) { return t.Passive(xi, 0.0).passive; });
           },
           py::arg("x"),
           "Passive tension T_p [N] at length x [m]: k_p (exp(alpha (x - slack_length)) - 1) "
@@ -272,8 +272,8 @@ void DefineCurves(py::class_<Model>& model_class) {
       .def(
           "f_L",
           [](const Model& self, const py::object& x) {
-            const ActiveLengthCurve& c = self.tension->active_length();
-            return Curve1(x, [&](double xi) { return c.Evaluate(xi).value; });
+            const TensionModel& t = *self.tension;
+            return Curve1(x, [&](double xi) { return t.ActiveLengthFactor(xi).value; });
           },
           py::arg("x"),
           "Active tension-length factor f_L [-] at length x [m]: the sum of Gaussians divided "
@@ -281,15 +281,15 @@ void DefineCurves(py::class_<Model>& model_class) {
       .def(
           "f_L_slope",
           [](const Model& self, const py::object& x) {
-            const ActiveLengthCurve& c = self.tension->active_length();
-            return Curve1(x, [&](double xi) { return c.Evaluate(xi).slope; });
+            const TensionModel& t = *self.tension;
+            return Curve1(x, [&](double xi) { return t.ActiveLengthFactor(xi).slope; });
           },
           py::arg("x"), "df_L/dx [1/m] at length x [m].")
       .def(
           "g",
           [](const Model& self, const py::object& v) {
-            const VelocityCurve& c = self.tension->velocity();
-            return Curve1(v, [&](double vi) { return c.Evaluate(vi).value; });
+            const TensionModel& t = *self.tension;
+            return Curve1(v, [&](double vi) { return t.VelocityFactor(vi).value; });
           },
           py::arg("v"),
           "Tension-velocity factor g [-] at shortening velocity v [m/s] (> 0 shortening): 1 at "
@@ -297,8 +297,8 @@ void DefineCurves(py::class_<Model>& model_class) {
       .def(
           "g_slope",
           [](const Model& self, const py::object& v) {
-            const VelocityCurve& c = self.tension->velocity();
-            return Curve1(v, [&](double vi) { return c.Evaluate(vi).slope; });
+            const TensionModel& t = *self.tension;
+            return Curve1(v, [&](double vi) { return t.VelocityFactor(vi).slope; });
           },
           py::arg("v"), "dg/dv [s/m] at shortening velocity v [m/s].");
 }
@@ -312,8 +312,14 @@ void DefineModelProperties(py::class_<Model>& model_class) {
           "same model.")
       .def_property_readonly(
           "optimal_length",
-          [](const Model& self) { return self.tension->active_length().optimal_length(); },
-          "Where f_L peaks on optimal_range [m] (f_L = 1 there).")
+          [](const Model& self) {
+            const TensionModel& t = *self.tension;
+            return t.params().family == CurveFamily::kPaper ? t.active_length().optimal_length()
+                                                            : t.OptimalFiberLength();
+          },
+          "Where f_L peaks on optimal_range [m] (f_L = 1 there); for another family "
+          "(model.family), "
+          "its optimal fiber length.")
       .def_property_readonly(
           "fit_result",
           [](const Model& self) -> std::optional<AnyDict> {
@@ -324,6 +330,10 @@ void DefineModelProperties(py::class_<Model>& model_class) {
           "block gave its Gaussians.")
       .def("__repr__", [](const Model& self) {
         const ModelParams& p = self.tension->params();
+        if (p.family != CurveFamily::kPaper) {
+          return "<musclesim.Model family=" + std::string(ToString(p.family)) +
+                 " f_iso=" + FormatNumber(p.f_iso) + " N>";
+        }
         return "<musclesim.Model f_iso=" + FormatNumber(p.f_iso) + " N, " +
                std::to_string(p.active_length.gaussians.size()) +
                " Gaussians, v_max=" + FormatNumber(p.velocity.v_max) + " m/s>";

@@ -350,3 +350,49 @@ def test_force_length_presets_equal_the_programs_table(preset, tmp_path):
     np.testing.assert_array_equal(ms.force_length_preset(preset, table[:, 0], 0.1), table[:, 2])
     with pytest.raises(ms.ParameterError, match="preset = nope"):
         ms.force_length_preset("nope", 0.1)
+
+
+# OpenSim's DeGrooteFregly2016Muscle written out again in NumPy from bench/peers/README.md
+# (its constants as OpenSim 4.6 has them); velocity positive lengthening there
+DEGROOTE_TERMS = [
+    (0.8150671134243542, 1.055033428970575, 0.162384573599574, 0.063303448465465),
+    (0.433004984392647, 0.716775413397760, -0.029947116970696, 0.200356847296188),
+    (0.1, 1.0, 0.353553390593274, 0.0),
+]
+
+
+def degroote_tension(x, v, u, f_iso, l_opt, v_max, damping):
+    lm = x / l_opt
+    vm = -v / (v_max * l_opt)
+    active = sum(b1 * np.exp(-0.5 * (lm - b2) ** 2 / (b3 + b4 * lm) ** 2)
+                 for b1, b2, b3, b4 in DEGROOTE_TERMS)
+    offset = np.exp(4.0 * (0.2 - 1.0) / 0.6)
+    passive = (np.exp(4.0 * (lm - 1.0) / 0.6) - offset) / (np.exp(4.0) - offset)
+    f_v = -0.3211346127989808 * np.arcsinh(-8.149 * vm - 0.374) + 0.8825327733249912
+    return f_iso * (u * active * f_v + passive + damping * vm)
+
+
+def test_a_family_model_round_trips_and_evaluates_its_tools_curves():
+    block = {"family": "degroote2016", "f_iso": 400.0, "optimal_fiber_length": 0.1,
+             "max_contraction_velocity": 10.0, "fiber_damping": 0.02}
+    model = ms.Model(block)
+    x = np.linspace(0.06, 0.14, 17)
+    v = np.linspace(-0.8, 0.8, 17)
+    expected = degroote_tension(x, v, 0.7, 400.0, 0.1, 10.0, 0.02)
+    assert np.allclose(model.tension(x, v, 0.7), expected, rtol=1e-13, atol=1e-11)
+    assert model.optimal_length == 0.1
+    again = ms.Model(model.params)
+    assert again.params == model.params
+    assert np.array_equal(again.tension(x, v, 0.7), model.tension(x, v, 0.7))
+    mujoco = ms.Model({"family": "mujoco", "f_iso": 200.0, "lengthrange": [0.05, 0.25]})
+    # the optimal length is where MuJoCo's normalised length is 1: 0.05 + 0.25 L0
+    assert mujoco.optimal_length == pytest.approx(0.05 + 0.25 * 0.2 / 0.3, rel=1e-15)
+    assert mujoco.f_L(mujoco.optimal_length) == pytest.approx(1.0, rel=1e-15)
+
+
+def test_a_family_refuses_another_familys_keys():
+    with pytest.raises(INPUT_ERROR, match="model.v_max.*unknown key"):
+        ms.Model({"family": "degroote2016", "f_iso": 1.0, "optimal_fiber_length": 0.1,
+                  "v_max": 2.0})
+    with pytest.raises(INPUT_ERROR, match="must be paper, degroote2016 or mujoco"):
+        ms.Model({"family": "thelen2003", "f_iso": 1.0})

@@ -131,7 +131,15 @@ std::string Script(const Arguments& args, const PlotOptions& options) {
     if (args.Has("--frames") || args.Has("--frame-count") || args.Has("--scenario")) {
       throw UsageError("--frames, --frame-count and --scenario go with a run's CSV, not --curves");
     }
-    return CurvesPlotScript(TensionModel(LoadModelSpec(args.Value("--curves")).params), options);
+    const ModelParams params = LoadModelSpec(args.Value("--curves")).params;
+    if (params.family != CurveFamily::kPaper || params.pennation_angle != 0.0) {
+      // the figure shows the Gaussian components, which only the paper's curves have
+      throw InputError(args.Value("--curves") + ": model.family " + ToString(params.family) +
+                       (params.pennation_angle != 0.0 ? " with a pennation_angle" : "") +
+                       ": plot --curves draws the paper's curves and their Gaussians; tabulate "
+                       "this model's with `musclesim curves` instead");
+    }
+    return CurvesPlotScript(TensionModel(params), options);
   }
   if (args.positional.size() != 1) throw UsageError("expected one CSV file (see --help)");
   const CsvTable table = ReadCsv(args.positional[0]);

@@ -54,7 +54,7 @@ Exit codes: 0 completed (or stopped at a length limit), 2 invalid input, 3 solve
 
 // Passes every row on to the CSV writer, keeping each actuator's fastest shortening or
 // lengthening, read from the row's shortening-velocity columns: beyond its model's v_max,
-// g(v) is the paper's power law extrapolated.
+// g(v) is the paper's power law extrapolated (the paper's family only).
 class PeakSpeeds final : public NetworkSink {
  public:
   PeakSpeeds(RunCsvWriter& next, const Scenario& scenario, const NetworkSystem& system)
@@ -63,6 +63,8 @@ class PeakSpeeds final : public NetworkSink {
     for (std::size_t e = 0; e < system.elements().size(); ++e) {
       const Element& element = system.elements()[e];
       if (element.kind != ElementKind::kActuator) continue;
+      // the other families define their curves at every speed (docs/model.md 14.1)
+      if (element.model->params().family != CurveFamily::kPaper) continue;
       const std::string column = scenario.form == ScenarioForm::kActuator
                                      ? "shortening_velocity"
                                      : element.name + ".shortening_velocity";

@@ -56,6 +56,11 @@ class ModelDerivative final : public ParameterDerivative {
 std::unique_ptr<ParameterDerivative> ModelParameterDerivative(const NetworkSystem& system,
                                                               const TensionModel* model,
                                                               const std::string& path) {
+  // the closed forms are the paper's curves' along the line; another family's parameters, or
+  // a pennate fiber's, take the difference quotient (docs/model.md 10)
+  if (model->params().family != CurveFamily::kPaper || model->params().pennation_angle != 0.0) {
+    return nullptr;
+  }
   const std::optional<TensionParameter> parameter = ParseTensionParameter(path);
   if (!parameter) return nullptr;
   return std::make_unique<ModelDerivative>(system, *model, *parameter);

@@ -185,11 +185,12 @@ void NetworkSystem::AddLink(std::size_t e, int& states) {
   if (!inert) active_links_.push_back(static_cast<int>(e));
   if (element.kind == ElementKind::kTendon) {
     kinks_.push_back({Kink::kLength, static_cast<int>(e), element.slack_length});
-  } else if (element.kind == ElementKind::kActuator && element.model->params().passive.k_p > 0.0) {
-    kinks_.push_back(
-        {Kink::kLength, static_cast<int>(e), element.model->params().passive.slack_length});
+  } else if (element.kind == ElementKind::kActuator) {
+    if (const std::optional<double> kink = element.model->LengthKink()) {
+      kinks_.push_back({Kink::kLength, static_cast<int>(e), *kink});
+    }
   }
-  if (element.kind == ElementKind::kActuator && element.model->velocity().has_kink()) {
+  if (element.kind == ElementKind::kActuator && element.model->HasVelocityKink()) {
     kinks_.push_back({Kink::kLengtheningRate, static_cast<int>(e), 0.0});  // v = 0
   }
 }
@@ -600,7 +601,9 @@ NetworkSystem::ElementPartials NetworkSystem::Along(int e, double t, const doubl
   out.length = dl;
   out.total = tension.by_length * dl + tension.by_rate * dldot + tension.by_activation * du;
   if (elements_[e].kind == ElementKind::kActuator) {
-    out.passive = PassiveTension(elements_[e].model->params().passive, l).slope * dl;
+    // the passive part's own derivatives (fiber damping moves it with the rate, v = -ldot)
+    const TensionSample passive = elements_[e].model->Passive(l, -ldot);
+    out.passive = passive.d_length * dl - passive.d_velocity * dldot;
     out.active = out.total - out.passive;
   }
   return out;

@@ -36,7 +36,8 @@ NetworkSystem::ElementPartials NetworkSystem::SpaceAlong(int e, double t, const 
   out.length = dl;
   out.total = tension.by_length * dl + tension.by_rate * dldot + tension.by_activation * du;
   if (elements_[e].kind == ElementKind::kActuator) {
-    out.passive = PassiveTension(elements_[e].model->params().passive, g.length).slope * dl;
+    const TensionSample passive = elements_[e].model->Passive(g.length, -path.length_rate);
+    out.passive = passive.d_length * dl - passive.d_velocity * dldot;
     out.active = out.total - out.passive;
   }
   return out;

@@ -33,9 +33,8 @@ std::string FormatLengthCurvesCsv(const TensionModel& model, const UniformGrid& 
   std::string csv = "length,f_L,tension_passive\n";
   for (int i = 0; i < lengths.count; ++i) {
     const double x = lengths.At(i);
-    const double f_l = Finite(model.active_length().Evaluate(x).value, "length", x, "f_L");
-    const double passive =
-        Finite(PassiveTension(model.params().passive, x).value, "length", x, "tension_passive");
+    const double f_l = Finite(model.ActiveLengthFactor(x).value, "length", x, "f_L");
+    const double passive = Finite(model.Passive(x, 0.0).passive, "length", x, "tension_passive");
     csv += FormatFull(x) + ',' + FormatFull(f_l) + ',' + FormatFull(passive) + '\n';
   }
   return csv;
@@ -46,7 +45,7 @@ std::string FormatVelocityCurveCsv(const TensionModel& model, const UniformGrid&
   std::string csv = "shortening_velocity,g\n";
   for (int i = 0; i < velocities.count; ++i) {
     const double v = velocities.At(i);
-    const double g = Finite(model.velocity().Evaluate(v).value, "shortening_velocity", v, "g");
+    const double g = Finite(model.VelocityFactor(v).value, "shortening_velocity", v, "g");
     csv += FormatFull(v) + ',' + FormatFull(g) + '\n';
   }
   return csv;

@@ -142,10 +142,23 @@ std::vector<Gaussian> ReadGaussians(const yaml::Source& src, const YAML::Node& n
 }  // namespace
 
 ModelSpec ReadModelSpec(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
-  yaml::RequireMap(src, node, path, {"f_iso", "passive", "active_length", "velocity"});
+  if (node.IsMap() && node["family"]) {
+    const YAML::Node family = node["family"];
+    const std::string text = yaml::ReadString(src, family, Join(path, "family"));
+    const std::optional<CurveFamily> parsed = ParseCurveFamily(text);
+    if (!parsed) {
+      yaml::Fail(src, family, Join(path, "family"), yaml::Describe(family),
+                 "must be paper, degroote2016 or mujoco (docs/model.md 14.1)");
+    }
+    if (*parsed != CurveFamily::kPaper) return ReadFamilyModelSpec(src, node, path, *parsed);
+  }
+  // the paper's block: none of another family's keys
+  yaml::RequireMap(src, node, path,
+                   {"f_iso", "passive", "active_length", "velocity", "family", "pennation_angle"});
   ModelSpec model;
   ModelParams& p = model.params;
   p.f_iso = yaml::ReadNumber(src, Required(src, node, path, "f_iso"), Join(path, "f_iso"));
+  p.pennation_angle = yaml::ReadOptionalNumber(src, node, path, "pennation_angle", 0.0);
   p.passive = ReadPassive(src, Required(src, node, path, "passive"), Join(path, "passive"));
   p.velocity = ReadVelocity(src, Required(src, node, path, "velocity"), Join(path, "velocity"));
 
@@ -240,6 +253,12 @@ ModelSpec LoadModelFit(const std::string& path) {
   const YAML::Node root = yaml::LoadFile(path);
   const yaml::Source src{path};
   ModelSpec model = ReadModelFile(src, root);
+  if (model.params.family != CurveFamily::kPaper) {
+    const YAML::Node family = root["model"]["family"];
+    yaml::Fail(src, family, "model.family", yaml::Describe(family),
+               "has its own curves and no Gaussians to fit: `musclesim fit` fits the paper's "
+               "model (family paper)");
+  }
   if (!model.fit_result) {
     const YAML::Node gaussians = root["model"]["active_length"]["gaussians"];
     yaml::Fail(src, gaussians, "model.active_length.gaussians",

@@ -101,6 +101,8 @@ class ParameterResolver {
   void Top();
   void Model(std::size_t i);
   void ModelField(std::size_t i, bool fitted);
+  // A key of a model block of another family than the paper's (docs/model.md 14.1).
+  void FamilyField(std::size_t i, CurveFamily family);
   void ModelNumber(Locate<double, ModelSpec> at, bool refits = false);
   void ModelValue(std::function<double(const ModelSpec&)> get,
                   std::function<void(ModelSpec&, double)> set, bool refits = false);
@@ -158,7 +160,63 @@ void ParameterResolver::Model(std::size_t i) {
   p_.model_ = found->first;
   std::vector<KeyPathStep> rest(steps_.begin() + static_cast<long>(i) + 1, steps_.end());
   p_.model_path_ = Canonical(rest);
+  const CurveFamily family = found->second.spec.params.family;
+  if (family != CurveFamily::kPaper) return FamilyField(i + 1, family);
   ModelField(i + 1, found->second.spec.fit.has_value());
+}
+
+void ParameterResolver::FamilyField(std::size_t i, CurveFamily family) {
+  fitted_ = false;
+  const std::string& key = Key(i);
+  const auto number = [&](Locate<double, ModelSpec> at) {
+    End(i + 1);
+    ModelNumber(std::move(at));
+  };
+  if (key == "f_iso") return number([](ModelSpec& m) -> double& { return m.params.f_iso; });
+  if (key == "pennation_angle") {
+    return number([](ModelSpec& m) -> double& { return m.params.pennation_angle; });
+  }
+  if (family == CurveFamily::kDeGroote2016) {
+    using Field = double DeGrooteParams::*;
+    static const std::pair<const char*, Field> kFields[] = {
+        {"optimal_fiber_length", &DeGrooteParams::optimal_fiber_length},
+        {"max_contraction_velocity", &DeGrooteParams::max_contraction_velocity},
+        {"active_force_width_scale", &DeGrooteParams::active_force_width_scale},
+        {"passive_fiber_strain_at_one_norm_force",
+         &DeGrooteParams::passive_fiber_strain_at_one_norm_force},
+        {"fiber_damping", &DeGrooteParams::fiber_damping}};
+    for (const auto& [name, field] : kFields) {
+      if (key != name) continue;
+      const Field member = field;
+      return number([member](ModelSpec& m) -> double& { return m.params.degroote2016.*member; });
+    }
+    Fail(
+        "names no parameter of a degroote2016 model (f_iso, pennation_angle, "
+        "optimal_fiber_length, max_contraction_velocity, active_force_width_scale, "
+        "passive_fiber_strain_at_one_norm_force, fiber_damping)");
+  }
+  if (key == "range" || key == "lengthrange") {
+    const std::size_t end = Index(i + 1, 2, key == "range" ? "range" : "lengthrange");
+    End(i + 2);
+    if (key == "range") {
+      return ModelNumber([end](ModelSpec& m) -> double& { return m.params.mujoco.range[end]; });
+    }
+    return ModelNumber([end](ModelSpec& m) -> double& { return m.params.mujoco.lengthrange[end]; });
+  }
+  using Field = double MujocoMuscleParams::*;
+  static const std::pair<const char*, Field> kFields[] = {{"lmin", &MujocoMuscleParams::lmin},
+                                                          {"lmax", &MujocoMuscleParams::lmax},
+                                                          {"vmax", &MujocoMuscleParams::vmax},
+                                                          {"fpmax", &MujocoMuscleParams::fpmax},
+                                                          {"fvmax", &MujocoMuscleParams::fvmax}};
+  for (const auto& [name, field] : kFields) {
+    if (key != name) continue;
+    const Field member = field;
+    return number([member](ModelSpec& m) -> double& { return m.params.mujoco.*member; });
+  }
+  Fail(
+      "names no parameter of a mujoco model (f_iso, pennation_angle, range, lengthrange, lmin, "
+      "lmax, vmax, fpmax, fvmax)");
 }
 
 void ParameterResolver::ModelField(std::size_t i, bool fitted) {
@@ -167,6 +225,10 @@ void ParameterResolver::ModelField(std::size_t i, bool fitted) {
   if (block == "f_iso") {
     End(i + 1);
     return ModelNumber([](ModelSpec& m) -> double& { return m.params.f_iso; });
+  }
+  if (block == "pennation_angle") {
+    End(i + 1);
+    return ModelNumber([](ModelSpec& m) -> double& { return m.params.pennation_angle; });
   }
   if (block == "passive") return PassiveField(i + 1);
   if (block == "velocity") return VelocityField(i + 1);

@@ -1,0 +1,95 @@
+"""OpenSim's own trajectories of a hanging mass on one DeGrooteFregly2016Muscle, written to
+bench/peers/reference/ for tests/scenario/opensim_reference_test.cc to meet at 1e-6.
+
+The muscle runs from the ground to a body on a vertical slider, its tendon rigid
+(ignore_tendon_compliance) and its activation the control (ignore_activation_dynamics), held
+constant; the mass starts at rest away from equilibrium and falls or rises (Millard et al.
+2013's hanging-mass benchmark without its tendon). musclesim's actuator length is the fiber's
+length along the line, the muscle-tendon length less the tendon slack length.
+
+    "$(bash bench/peers/setup.sh)" bench/peers/opensim_reference.py
+"""
+import os
+import sys
+
+import opensim as osim
+
+osim.Logger.setLevelString("warn")  # not one report per output interval
+osim.Logger.removeFileSink()  # no opensim.log in the working directory
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+GRAVITY = 9.81
+
+# one case per row: name, mass [kg], F0 [N], l_opt [m], l_s [m], v_max [l_opt/s],
+# pennation at optimal [rad], fiber damping [-], activation [-], initial height [m]
+CASES = [
+    ("opensim_drop_rigid", 5.0, 400.0, 0.10, 0.05, 10.0, 0.0, 0.01, 0.6, 0.16),
+    ("opensim_drop_pennate", 5.0, 400.0, 0.10, 0.05, 10.0, 0.35, 0.05, 0.8, 0.13),
+]
+END, INTERVAL, ACCURACY = 0.5, 0.005, 1e-12
+
+
+def hanging_mass(mass, f_iso, l_opt, l_s, v_max, pennation, damping, activation, height):
+    model = osim.Model()
+    model.setName("hanging_mass")
+    model.setGravity(osim.Vec3(0, -GRAVITY, 0))
+    body = osim.Body("mass", mass, osim.Vec3(0), osim.Inertia(0.01))
+    model.addBody(body)
+    # the slider's axis (x) turned to point down, so the coordinate is the drop below ground
+    down = osim.Vec3(0, 0, -1.5707963267948966)
+    joint = osim.SliderJoint("slider", model.getGround(), osim.Vec3(0), down, body,
+                             osim.Vec3(0), down)
+    joint.updCoordinate().setName("height")
+    joint.updCoordinate().setDefaultValue(height)
+    model.addJoint(joint)
+    muscle = osim.DeGrooteFregly2016Muscle()
+    muscle.setName("muscle")
+    muscle.set_max_isometric_force(f_iso)
+    muscle.set_optimal_fiber_length(l_opt)
+    muscle.set_tendon_slack_length(l_s)
+    muscle.set_max_contraction_velocity(v_max)
+    muscle.set_pennation_angle_at_optimal(pennation)
+    muscle.set_fiber_damping(damping)
+    muscle.set_ignore_tendon_compliance(True)
+    muscle.set_ignore_activation_dynamics(True)
+    muscle.addNewPathPoint("origin", model.getGround(), osim.Vec3(0))
+    muscle.addNewPathPoint("insertion", body, osim.Vec3(0))
+    model.addForce(muscle)
+    controller = osim.PrescribedController()
+    controller.addActuator(muscle)
+    controller.prescribeControlForActuator("muscle", osim.Constant(activation))
+    model.addController(controller)
+    return model, muscle, joint.getCoordinate()
+
+
+def main():
+    for name, *case in CASES:
+        model, muscle, height = hanging_mass(*case)
+        state = model.initSystem()
+        manager = osim.Manager(model)
+        manager.setIntegratorAccuracy(ACCURACY)
+        state.setTime(0.0)
+        manager.initialize(state)
+        l_s = case[3]
+        path = os.path.join(HERE, "reference", name + ".csv")
+        with open(path, "w") as out:
+            out.write("# OpenSim %s DeGrooteFregly2016Muscle, rigid tendon, constant "
+                      "activation; case %s, accuracy %g (bench/peers/opensim_reference.py)\n"
+                      % (osim.GetVersion(), repr(tuple(case)), ACCURACY))
+            out.write("t,length,shortening_velocity,fiber_length,pennation_angle,"
+                      "tendon_force\n")
+            steps = int(round(END / INTERVAL))
+            for k in range(steps + 1):
+                t = k * INTERVAL
+                if k > 0:
+                    state = manager.integrate(t)
+                model.realizeDynamics(state)
+                out.write("%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n" % (
+                    state.getTime(), height.getValue(state) - l_s, -height.getSpeedValue(state),
+                    muscle.getFiberLength(state), muscle.getPennationAngle(state),
+                    muscle.getTendonForce(state)))
+        print(path, file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,114 @@
+// musclesim's degroote2016 family against OpenSim 4.6 itself: a mass hanging from one
+// DeGrooteFregly2016Muscle with a rigid tendon at constant activation, integrated by OpenSim
+// at accuracy 1e-12 (bench/peers/opensim_reference.py wrote bench/peers/reference/
+// opensim_drop_*.csv). musclesim at tight tolerance meets its length, velocity and tension
+// to 1e-8 of their scales (the target is 1e-6; the two agree to about 1e-9).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "musclesim/io/document.h"
+#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/scenario/run.h"
+
+namespace musclesim {
+namespace {
+
+struct Trajectory {
+  std::map<std::string, std::vector<double>> columns;
+};
+
+Trajectory ReadOpenSim(const std::string& name) {
+  const std::string path = std::string(MUSCLESIM_SOURCE_DIR) + "/bench/peers/reference/" + name;
+  std::ifstream in(path);
+  EXPECT_TRUE(in) << path;
+  Trajectory trajectory;
+  std::vector<std::string> names;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::stringstream fields(line);
+    std::string field;
+    if (names.empty()) {
+      while (std::getline(fields, field, ',')) names.push_back(field);
+      continue;
+    }
+    for (const std::string& column : names) {
+      std::getline(fields, field, ',');
+      trajectory.columns[column].push_back(std::stod(field));
+    }
+  }
+  return trajectory;
+}
+
+const std::vector<double>& Column(const RecordedRun& run, const std::string& name) {
+  const std::vector<std::string>& names = run.columns.names();
+  const auto at = std::find(names.begin(), names.end(), name);
+  EXPECT_NE(at, names.end()) << name;
+  return run.values[static_cast<std::size_t>(at - names.begin())];
+}
+
+// The case of bench/peers/opensim_reference.py in musclesim's terms: the actuator is the
+// fiber along the line (muscle-tendon length less the rigid tendon), gravity a constant load.
+RecordedRun RunMusclesim(double mass, double f_iso, double l_opt, double v_max, double pennation,
+                         double damping, double activation, double length) {
+  std::ostringstream yaml;
+  yaml.precision(17);
+  yaml << "name: opensim_drop\n"
+       << "model: {family: degroote2016, f_iso: " << f_iso << ", optimal_fiber_length: " << l_opt
+       << ", max_contraction_velocity: " << v_max << ", fiber_damping: " << damping
+       << ", pennation_angle: " << pennation << "}\n"
+       << "actuator: {mass: " << mass << "}\n"
+       << "initial: {length: " << length << "}\n"
+       << "activation: {type: constant, value: " << activation << "}\n"
+       << "load: {type: constant, value: " << mass * 9.81 << "}\n"
+       << "time: {start: 0.0, end: 0.5}\n"
+       << "solver: {method: bdf, rtol: 1.0e-11, atol: 1.0e-14}\n"
+       << "output: {file: opensim_drop.csv, interval: 0.005}\n";
+  return RunScenario(ReadScenario(ParseDocument("opensim_drop", yaml.str()), "opensim_drop"));
+}
+
+void ExpectMatchesOpenSim(const RecordedRun& run, const Trajectory& opensim) {
+  const std::vector<double>& t = opensim.columns.at("t");
+  ASSERT_EQ(Column(run, "t").size(), t.size());
+  // scales: the drop's length change, its peak speed, its peak force
+  const auto span = [](const std::vector<double>& v) {
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    return std::max(std::abs(*lo), std::abs(*hi));
+  };
+  const double speed = span(opensim.columns.at("shortening_velocity"));
+  const double force = span(opensim.columns.at("tendon_force"));
+  const double length = span(opensim.columns.at("length"));
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    EXPECT_NEAR(Column(run, "t")[k], t[k], 1e-12);
+    EXPECT_NEAR(Column(run, "length")[k], opensim.columns.at("length")[k], 1e-8 * length)
+        << "t = " << t[k];
+    EXPECT_NEAR(Column(run, "shortening_velocity")[k], opensim.columns.at("shortening_velocity")[k],
+                1e-8 * speed)
+        << "t = " << t[k];
+    EXPECT_NEAR(Column(run, "tension_total")[k], opensim.columns.at("tendon_force")[k],
+                1e-8 * force)
+        << "t = " << t[k];
+  }
+}
+
+TEST(OpenSimReference, HangingMassOnARigidTendonMuscleIsOpenSimsTrajectory) {
+  // bench/peers/opensim_reference.py, case opensim_drop_rigid: height 0.16 m, l_s 0.05 m
+  const RecordedRun run = RunMusclesim(5.0, 400.0, 0.10, 10.0, 0.0, 0.01, 0.6, 0.11);
+  ExpectMatchesOpenSim(run, ReadOpenSim("opensim_drop_rigid.csv"));
+}
+
+TEST(OpenSimReference, HangingMassOnAPennateMuscleIsOpenSimsTrajectory) {
+  // case opensim_drop_pennate: height 0.13 m, l_s 0.05 m, 0.35 rad at the optimal length
+  const RecordedRun run = RunMusclesim(5.0, 400.0, 0.10, 10.0, 0.35, 0.05, 0.8, 0.08);
+  ExpectMatchesOpenSim(run, ReadOpenSim("opensim_drop_pennate.csv"));
+}
+
+}  // namespace
+}  // namespace musclesim
