@@ -6,13 +6,14 @@
 # that did are kept in BUILD/findings/<reader>/.
 #   scripts/fuzz.sh [SECONDS] [READER...]     readers: scenario model sweep identify
 #                                             identify_series network controller sensitivity
+#                                             problem import
 # BUILD is build-fuzz/ beside the sources, or $MUSCLESIM_FUZZ_BUILD (CI: build-sanitize/).
 set -euo pipefail
 
 seconds=${1:-60}
 shift || true
 readers=("$@")
-[ ${#readers[@]} -eq 0 ] && readers=(scenario model sweep identify identify_series network controller sensitivity problem)
+[ ${#readers[@]} -eq 0 ] && readers=(scenario model sweep identify identify_series network controller sensitivity problem import)
 if ! [[ "$seconds" =~ ^[0-9]+$ ]] || [ "$seconds" -lt 1 ]; then
   echo "fuzz.sh: SECONDS must be a whole number >= 1, not '$seconds'" >&2
   exit 2

@@ -9,6 +9,7 @@ packages=(
   libsuitesparse-dev    # KLU, the sparse direct solver behind linear_solver: sparse
   libeigen3-dev         # linear algebra of the Gaussian fit
   libyaml-cpp-dev       # scenario files
+  libtinyxml2-dev       # musclesim import: OpenSim (.osim) and MuJoCo (MJCF) model files
   libgtest-dev libgmock-dev googletest   # tests
   libnlopt-cxx-dev      # gradient-based minimiser of the Gaussian fit
   coinor-libipopt-dev   # IPOPT: the nonlinear programs of optimal control (musclesim optimize)

@@ -62,7 +62,25 @@ def hanging_mass(mass, f_iso, l_opt, l_s, v_max, pennation, damping, activation,
     return model, muscle, joint.getCoordinate()
 
 
+def write_import_example():
+    """data/opensim_hanging_mass.osim, the file `musclesim import` is shown on: the pennate
+    case's model as OpenSim writes it, with a Thelen2003Muscle beside the DeGroote one (a
+    class musclesim lists as not imported). Its dynamics are not the case's: the second
+    muscle pulls too."""
+    name, *case = next(c for c in CASES if c[0] == "opensim_drop_pennate")
+    model, _, _ = hanging_mass(*case)
+    thelen = osim.Thelen2003Muscle("thelen", 300, 0.08, 0.1, 0.1)
+    thelen.addNewPathPoint("o", model.getGround(), osim.Vec3(0))
+    thelen.addNewPathPoint("i", model.getBodySet().get(0), osim.Vec3(0.01, 0, 0))
+    model.addForce(thelen)
+    model.finalizeConnections()
+    path = os.path.join(HERE, "..", "..", "data", "opensim_hanging_mass.osim")
+    model.printToXML(path)
+    print(os.path.normpath(path), file=sys.stderr)
+
+
 def main():
+    write_import_example()
     for name, *case in CASES:
         model, muscle, height = hanging_mass(*case)
         state = model.initSystem()

@@ -28,6 +28,7 @@ verbs:
   fit      fit the sum of Gaussians that a model file asks for; print the components
   optimize the activations that reach a problem's final values with the least effort
            (multiple shooting, IPOPT); write the optimum as a scenario, a summary and a CSV
+  import   write a scenario for each muscle of an OpenSim (.osim) or MuJoCo (MJCF) model
 
 exit codes: 0 success, 1 other failure, 2 invalid input, 3 solver failure,
             130 sweep interrupted
@@ -58,6 +59,7 @@ int main(int argc, char** argv) {
     if (verb == "curves") return cli::CurvesCommand(argc, argv);
     if (verb == "fit") return cli::FitCommand(argc, argv);
     if (verb == "optimize") return cli::OptimizeCommand(argc, argv);
+    if (verb == "import") return cli::ImportCommand(argc, argv);
     std::cerr << "musclesim: unknown verb '" << PrintableText(verb) << "' (see musclesim --help)\n";
     return kExitInvalidInput;
   } catch (const cli::UsageError& e) {

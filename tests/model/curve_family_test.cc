@@ -7,16 +7,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "musclesim/core/errors.h"
 #include "musclesim/model/tension.h"
 #include "support/numeric.h"
+#include "support/peer_reference.h"
 
 namespace musclesim {
 namespace {
@@ -24,35 +23,15 @@ namespace {
 using testing::CentralDifference;
 using ::testing::HasSubstr;
 
-// A reference table: its header's columns, then one row of numbers per line; '#' comments.
-struct Table {
-  std::vector<std::string> columns;
-  std::vector<std::map<std::string, double>> rows;
-};
-
-Table ReadReference(const std::string& name) {
-  const std::string path = std::string(MUSCLESIM_SOURCE_DIR) + "/bench/peers/reference/" + name;
-  std::ifstream in(path);
-  EXPECT_TRUE(in) << path;
-  Table table;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::stringstream fields(line);
-    std::string field;
-    if (table.columns.empty()) {
-      while (std::getline(fields, field, ',')) table.columns.push_back(field);
-      continue;
-    }
-    std::map<std::string, double> row;
-    for (const std::string& column : table.columns) {
-      std::getline(fields, field, ',');
-      row[column] = std::stod(field);
-    }
-    table.rows.push_back(row);
+// A peer's table, one row at a time as a map from column to value.
+std::vector<std::map<std::string, double>> Rows(const std::string& name) {
+  const testing::PeerTable table = testing::ReadPeerTable(name);
+  std::vector<std::map<std::string, double>> rows(table.begin()->second.size());
+  for (const auto& [column, values] : table) {
+    for (std::size_t k = 0; k < values.size(); ++k) rows[k][column] = values[k];
   }
-  EXPECT_GT(table.rows.size(), 10u) << path;
-  return table;
+  EXPECT_GT(rows.size(), 10u) << name;
+  return rows;
 }
 
 ModelParams DeGroote() {
@@ -71,7 +50,7 @@ constexpr double kOpenSimTolerance = 1e-12;
 TEST(DeGroote2016Curves, ActiveAndPassiveForceLengthAreOpenSimsWithTheirSlopes) {
   const TensionModel model(DeGroote());
   const double l_opt = 0.1;
-  for (const auto& row : ReadReference("degroote2016_fiber_length.csv").rows) {
+  for (const auto& row : Rows("degroote2016_fiber_length.csv")) {
     const double l = row.at("normalized_fiber_length") * l_opt;
     const TensionSample active = model.Evaluate(l, 0.0, 1.0), passive = model.Passive(l, 0.0);
     const double f_v0 = degroote2016::ForceVelocity(0.0).value;  // OpenSim's f_v(0), not 1
@@ -88,7 +67,7 @@ TEST(DeGroote2016Curves, ForceVelocityIsOpenSimsWithLengtheningPositive) {
   const TensionModel model(p);
   const double l_opt = 0.1, v_max = 10.0;
   const double isometric = model.Evaluate(l_opt, 0.0, 1.0).d_activation;
-  for (const auto& row : ReadReference("degroote2016_fiber_velocity.csv").rows) {
+  for (const auto& row : Rows("degroote2016_fiber_velocity.csv")) {
     // OpenSim's lengthening velocity in optimal lengths per v_max; musclesim's v shortens
     const double v = -row.at("normalized_fiber_velocity") * v_max * l_opt;
     const double f_v = model.Evaluate(l_opt, v, 1.0).d_activation / isometric *
@@ -116,7 +95,7 @@ MujocoMuscleParams MujocoSet(int set) {
 }
 
 TEST(MujocoCurves, GainAndBiasAreMujocosWithItsSigns) {
-  for (const auto& row : ReadReference("mujoco_muscle.csv").rows) {
+  for (const auto& row : Rows("mujoco_muscle.csv")) {
     const int set = static_cast<int>(row.at("set"));
     ModelParams p;
     p.family = CurveFamily::kMujoco;

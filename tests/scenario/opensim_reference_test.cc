@@ -7,8 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -16,36 +14,13 @@
 #include "musclesim/io/document.h"
 #include "musclesim/io/scenario_yaml.h"
 #include "musclesim/scenario/run.h"
+#include "support/peer_reference.h"
 
 namespace musclesim {
 namespace {
 
-struct Trajectory {
-  std::map<std::string, std::vector<double>> columns;
-};
-
-Trajectory ReadOpenSim(const std::string& name) {
-  const std::string path = std::string(MUSCLESIM_SOURCE_DIR) + "/bench/peers/reference/" + name;
-  std::ifstream in(path);
-  EXPECT_TRUE(in) << path;
-  Trajectory trajectory;
-  std::vector<std::string> names;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::stringstream fields(line);
-    std::string field;
-    if (names.empty()) {
-      while (std::getline(fields, field, ',')) names.push_back(field);
-      continue;
-    }
-    for (const std::string& column : names) {
-      std::getline(fields, field, ',');
-      trajectory.columns[column].push_back(std::stod(field));
-    }
-  }
-  return trajectory;
-}
+using testing::PeerTable;
+using testing::ReadPeerTable;
 
 const std::vector<double>& Column(const RecordedRun& run, const std::string& name) {
   const std::vector<std::string>& names = run.columns.names();
@@ -74,26 +49,24 @@ RecordedRun RunMusclesim(double mass, double f_iso, double l_opt, double v_max, 
   return RunScenario(ReadScenario(ParseDocument("opensim_drop", yaml.str()), "opensim_drop"));
 }
 
-void ExpectMatchesOpenSim(const RecordedRun& run, const Trajectory& opensim) {
-  const std::vector<double>& t = opensim.columns.at("t");
+void ExpectMatchesOpenSim(const RecordedRun& run, const PeerTable& opensim) {
+  const std::vector<double>& t = opensim.at("t");
   ASSERT_EQ(Column(run, "t").size(), t.size());
   // scales: the drop's length change, its peak speed, its peak force
   const auto span = [](const std::vector<double>& v) {
     const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
     return std::max(std::abs(*lo), std::abs(*hi));
   };
-  const double speed = span(opensim.columns.at("shortening_velocity"));
-  const double force = span(opensim.columns.at("tendon_force"));
-  const double length = span(opensim.columns.at("length"));
+  const double speed = span(opensim.at("shortening_velocity"));
+  const double force = span(opensim.at("tendon_force"));
+  const double length = span(opensim.at("length"));
   for (std::size_t k = 0; k < t.size(); ++k) {
     EXPECT_NEAR(Column(run, "t")[k], t[k], 1e-12);
-    EXPECT_NEAR(Column(run, "length")[k], opensim.columns.at("length")[k], 1e-8 * length)
-        << "t = " << t[k];
-    EXPECT_NEAR(Column(run, "shortening_velocity")[k], opensim.columns.at("shortening_velocity")[k],
+    EXPECT_NEAR(Column(run, "length")[k], opensim.at("length")[k], 1e-8 * length) << "t = " << t[k];
+    EXPECT_NEAR(Column(run, "shortening_velocity")[k], opensim.at("shortening_velocity")[k],
                 1e-8 * speed)
         << "t = " << t[k];
-    EXPECT_NEAR(Column(run, "tension_total")[k], opensim.columns.at("tendon_force")[k],
-                1e-8 * force)
+    EXPECT_NEAR(Column(run, "tension_total")[k], opensim.at("tendon_force")[k], 1e-8 * force)
         << "t = " << t[k];
   }
 }
@@ -101,13 +74,13 @@ void ExpectMatchesOpenSim(const RecordedRun& run, const Trajectory& opensim) {
 TEST(OpenSimReference, HangingMassOnARigidTendonMuscleIsOpenSimsTrajectory) {
   // bench/peers/opensim_reference.py, case opensim_drop_rigid: height 0.16 m, l_s 0.05 m
   const RecordedRun run = RunMusclesim(5.0, 400.0, 0.10, 10.0, 0.0, 0.01, 0.6, 0.11);
-  ExpectMatchesOpenSim(run, ReadOpenSim("opensim_drop_rigid.csv"));
+  ExpectMatchesOpenSim(run, ReadPeerTable("opensim_drop_rigid.csv"));
 }
 
 TEST(OpenSimReference, HangingMassOnAPennateMuscleIsOpenSimsTrajectory) {
   // case opensim_drop_pennate: height 0.13 m, l_s 0.05 m, 0.35 rad at the optimal length
   const RecordedRun run = RunMusclesim(5.0, 400.0, 0.10, 10.0, 0.35, 0.05, 0.8, 0.08);
-  ExpectMatchesOpenSim(run, ReadOpenSim("opensim_drop_pennate.csv"));
+  ExpectMatchesOpenSim(run, ReadPeerTable("opensim_drop_pennate.csv"));
 }
 
 }  // namespace

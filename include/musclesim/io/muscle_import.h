@@ -1,0 +1,46 @@
+// Reading the muscles of another tool's model file (docs/guide/import.md): OpenSim's .osim
+// (DeGrooteFregly2016Muscle) and MuJoCo's MJCF (<muscle>, and <general> with the muscle
+// gain and bias), each into a musclesim model of the matching curve family (docs/model.md 14).
+// What a file holds that musclesim does not take (another muscle class, a compliant tendon,
+// the path's geometry, a default class) is listed, never dropped silently.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "musclesim/model/tension.h"
+
+namespace musclesim {
+
+// The tool's first-order activation lag, when it maps onto docs/model.md section 8.
+struct ImportedActivationDynamics {
+  double tau_activation = 0.0;    // [s]
+  double tau_deactivation = 0.0;  // [s]
+};
+
+// One muscle, as musclesim runs it.
+struct ImportedMuscle {
+  std::string name;                  // the muscle's name in the file
+  std::string source;                // its class or element and line: "DeGrooteFregly2016Muscle
+                                     // (arm.osim:41)"
+  ModelParams params;                // the family's model, validated
+  double tendon_slack_length = 0.0;  // [m] the rigid tendon taken off the muscle-tendon length
+  std::optional<ImportedActivationDynamics> activation_dynamics;  // none: the control is the
+                                                                  // activation
+  std::vector<std::string> notes;  // what of this muscle was not carried over, one sentence each
+};
+
+struct ImportedModel {
+  std::string tool;                      // "OpenSim" or "MuJoCo"
+  std::vector<ImportedMuscle> muscles;   // in file order
+  std::vector<std::string> unsupported;  // actuators not imported, each with its line and why
+};
+
+// Reads `path`, an .osim file (its root element <OpenSimDocument>) or an MJCF file (root
+// <mujoco>), told apart by content. Throws InputError naming path:line, the element, the
+// attribute or property, the value and the rule broken; or when no muscle of a supported
+// class is found (the message lists what was found instead).
+ImportedModel ImportMuscles(const std::string& path);
+
+}  // namespace musclesim

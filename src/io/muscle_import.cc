@@ -1,0 +1,58 @@
+#include "musclesim/io/muscle_import.h"
+
+#include <tinyxml2.h>
+
+#include "io/muscle_import_readers.h"
+#include "musclesim/core/errors.h"
+#include "musclesim/core/printable_text.h"
+
+namespace musclesim {
+
+void ValidateImported(const ImportedMuscle& muscle,
+                      const std::vector<std::pair<std::string, std::string>>& key_names) {
+  try {
+    Validate(muscle.params);
+  } catch (const ParameterError& e) {
+    std::string key = e.path();
+    for (const auto& [ours, theirs] : key_names) {
+      if (key == ours) key = theirs;
+    }
+    throw InputError(muscle.source + " '" + muscle.name + "': " + key + " = " + e.value() + ": " +
+                     e.rule());
+  }
+}
+
+ImportedModel ImportMuscles(const std::string& path) {
+  tinyxml2::XMLDocument document;
+  const tinyxml2::XMLError status = document.LoadFile(path.c_str());
+  if (status == tinyxml2::XML_ERROR_FILE_NOT_FOUND ||
+      status == tinyxml2::XML_ERROR_FILE_COULD_NOT_BE_OPENED ||
+      status == tinyxml2::XML_ERROR_FILE_READ_ERROR) {
+    throw InputError(PrintableText(path) + ": cannot be read");
+  }
+  if (status != tinyxml2::XML_SUCCESS) {
+    throw InputError(PrintableText(path) + ":" + std::to_string(document.ErrorLineNum()) +
+                     ": not well-formed XML (" + PrintableText(document.ErrorStr()) + ")");
+  }
+  const std::string root = document.RootElement()->Name();
+  ImportedModel model;
+  if (root == "OpenSimDocument") {
+    model = ReadOpenSimMuscles(document, path);
+  } else if (root == "mujoco") {
+    model = ReadMjcfMuscles(document, path);
+  } else {
+    throw InputError(PrintableText(path) + ": root element <" + PrintableText(root) +
+                     "> is neither OpenSim's <OpenSimDocument> nor MuJoCo's <mujoco>");
+  }
+  if (model.muscles.empty()) {
+    std::string found;
+    for (const std::string& line : model.unsupported) found += "\n  " + line;
+    throw InputError(PrintableText(path) +
+                     ": no muscle musclesim imports (OpenSim: DeGrooteFregly2016Muscle; MuJoCo: "
+                     "<muscle>, <general> with the muscle gain and bias)" +
+                     (found.empty() ? std::string(": no actuator found") : "; found:" + found));
+  }
+  return model;
+}
+
+}  // namespace musclesim

@@ -1,0 +1,255 @@
+// `musclesim import` and its reader: OpenSim's .osim (a file OpenSim 4.6 wrote itself,
+// data/opensim_hanging_mass.osim) and MuJoCo's MJCF (tests/fixtures/import/
+// muscles.xml, whose compiled parameters MuJoCo 4.0 prints with
+// bench/peers/check_mjcf_import.py). The imported OpenSim muscle, run, meets OpenSim's own
+// trajectory; every imported value is the tool's; every refusal names file, line and rule.
+#include "musclesim/io/muscle_import.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "musclesim/core/errors.h"
+#include "musclesim/io/document.h"
+#include "musclesim/io/imported_scenario.h"
+#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/scenario/run.h"
+#include "support/cli_run.h"
+#include "support/fresh_directory.h"
+#include "support/peer_reference.h"
+#include "support/scenario_files.h"
+
+namespace musclesim {
+namespace {
+
+using ::testing::ElementsAre;
+using testing::FixturePath;
+using ::testing::HasSubstr;
+
+std::string Fixture(const std::string& name) { return FixturePath("import/" + name); }
+
+// the model OpenSim 4.6 wrote for bench/peers/opensim_reference.py's pennate case, with a
+// Thelen2003Muscle beside its DeGrooteFregly2016Muscle
+const std::string kOpenSimModel =
+    std::string(MUSCLESIM_SOURCE_DIR) + "/data/opensim_hanging_mass.osim";
+
+const ImportedMuscle& Named(const ImportedModel& model, const std::string& name) {
+  const auto at = std::find_if(model.muscles.begin(), model.muscles.end(),
+                               [&](const ImportedMuscle& m) { return m.name == name; });
+  EXPECT_NE(at, model.muscles.end()) << name;
+  return *at;
+}
+
+TEST(ImportOpenSim, DeGrooteMuscleWithItsPropertiesAndTheRestListed) {
+  const ImportedModel model = ImportMuscles(kOpenSimModel);
+  EXPECT_EQ(model.tool, "OpenSim");
+  ASSERT_EQ(model.muscles.size(), 1u);
+  const ImportedMuscle& m = model.muscles[0];
+  EXPECT_EQ(m.name, "muscle");
+  EXPECT_THAT(m.source, HasSubstr("opensim_hanging_mass.osim:111"));
+  // bench/peers/opensim_reference.py, case opensim_drop_pennate
+  EXPECT_EQ(m.params.family, CurveFamily::kDeGroote2016);
+  EXPECT_EQ(m.params.f_iso, 400.0);
+  EXPECT_EQ(m.params.degroote2016.optimal_fiber_length, 0.1);
+  EXPECT_EQ(m.params.degroote2016.max_contraction_velocity, 10.0);
+  EXPECT_EQ(m.params.degroote2016.fiber_damping, 0.05);
+  EXPECT_EQ(m.params.pennation_angle, 0.35);
+  // left out of the file: OpenSim's defaults
+  EXPECT_EQ(m.params.degroote2016.active_force_width_scale, 1.0);
+  EXPECT_EQ(m.params.degroote2016.passive_fiber_strain_at_one_norm_force, 0.6);
+  EXPECT_EQ(m.tendon_slack_length, 0.05);
+  EXPECT_FALSE(m.activation_dynamics.has_value());
+  ASSERT_EQ(m.notes.size(), 1u);  // rigid tendon, no activation dynamics: only the path
+  EXPECT_THAT(m.notes[0], HasSubstr("its path (2 points)"));
+  ASSERT_EQ(model.unsupported.size(), 1u);
+  EXPECT_THAT(model.unsupported[0],
+              HasSubstr("Thelen2003Muscle 'thelen' (" + kOpenSimModel + ":159)"));
+  EXPECT_THAT(model.unsupported[0], HasSubstr("a muscle class musclesim does not implement"));
+}
+
+TEST(ImportOpenSim, TheImportedMuscleRunsOpenSimsTrajectory) {
+  // the imported model block in the hanging-mass case OpenSim integrated at accuracy 1e-12
+  const ImportedMuscle m = ImportMuscles(kOpenSimModel).muscles.at(0);
+  const std::string yaml = "name: imported\n" + FormatModelBlock(m.params) +
+                           "actuator: {mass: 5.0}\n"
+                           "initial: {length: " +
+                           std::to_string(0.13 - m.tendon_slack_length) +
+                           "}\n"
+                           "activation: {type: constant, value: 0.8}\n"
+                           "load: {type: constant, value: 49.05}\n"
+                           "time: {start: 0.0, end: 0.5}\n"
+                           "solver: {method: bdf, rtol: 1.0e-11, atol: 1.0e-14}\n"
+                           "output: {file: imported.csv, interval: 0.005}\n";
+  const RecordedRun run = RunScenario(ReadScenario(ParseDocument("imported", yaml), "imported"));
+  const testing::PeerTable opensim = testing::ReadPeerTable("opensim_drop_pennate.csv");
+  const std::vector<std::string>& names = run.columns.names();
+  const auto column = [&](const std::string& name) -> const std::vector<double>& {
+    return run.values[static_cast<std::size_t>(std::find(names.begin(), names.end(), name) -
+                                               names.begin())];
+  };
+  ASSERT_EQ(column("t").size(), opensim.at("t").size());
+  for (std::size_t k = 0; k < opensim.at("t").size(); ++k) {
+    EXPECT_NEAR(column("length")[k], opensim.at("length")[k], 1e-9) << k;
+    EXPECT_NEAR(column("tension_total")[k], opensim.at("tendon_force")[k], 1e-6) << k;
+  }
+}
+
+TEST(ImportMujoco, MusclesWithDefaultClassesAreWhatMujocoCompiles) {
+  const ImportedModel model = ImportMuscles(Fixture("muscles.xml"));
+  EXPECT_EQ(model.tool, "MuJoCo");
+  ASSERT_EQ(model.muscles.size(), 3u);
+  // bench/peers/check_mjcf_import.py: plain gainprm [0.75, 1.05, 150, 200, 0.45, 1.6, 1.5,
+  // 1.3, 1.4], dynprm [0.01, 0.04, 0], lengthrange [0.05, 0.25]
+  const ImportedMuscle& plain = Named(model, "plain");
+  EXPECT_EQ(plain.params.family, CurveFamily::kMujoco);
+  EXPECT_EQ(plain.params.f_iso, 150.0);
+  const MujocoMuscleParams& p = plain.params.mujoco;
+  EXPECT_THAT(p.range, ElementsAre(0.75, 1.05));
+  EXPECT_THAT(p.lengthrange, ElementsAre(0.05, 0.25));
+  EXPECT_EQ(p.lmin, 0.45);
+  EXPECT_EQ(p.lmax, 1.6);
+  EXPECT_EQ(p.vmax, 1.5);
+  EXPECT_EQ(p.fpmax, 1.3);
+  EXPECT_EQ(p.fvmax, 1.4);
+  ASSERT_TRUE(plain.activation_dynamics.has_value());
+  EXPECT_EQ(plain.activation_dynamics->tau_activation, 0.01);
+  EXPECT_EQ(plain.activation_dynamics->tau_deactivation, 0.04);
+  // quick: class fast over the main class: [0.6, 1.2, 80, 200, 0.45, 1.6, 3, 1.3, 1.4],
+  // dynprm [0.02, 0.05, 0.2]
+  const ImportedMuscle& quick = Named(model, "quick");
+  EXPECT_EQ(quick.params.f_iso, 80.0);
+  EXPECT_THAT(quick.params.mujoco.range, ElementsAre(0.6, 1.2));
+  EXPECT_EQ(quick.params.mujoco.vmax, 3.0);
+  EXPECT_EQ(quick.params.mujoco.lmin, 0.45);
+  EXPECT_EQ(quick.params.mujoco.fvmax, 1.4);
+  EXPECT_EQ(quick.activation_dynamics->tau_activation, 0.02);
+  EXPECT_EQ(quick.activation_dynamics->tau_deactivation, 0.05);
+  EXPECT_THAT(quick.notes[0], HasSubstr("tausmooth 0.2 is not implemented"));
+  // generic: <general> muscle without dynamics
+  const ImportedMuscle& generic = Named(model, "generic");
+  EXPECT_EQ(generic.params.f_iso, 300.0);
+  EXPECT_THAT(generic.params.mujoco.range, ElementsAre(0.7, 1.1));
+  EXPECT_THAT(generic.params.mujoco.lengthrange, ElementsAre(0.0, 0.2));
+  EXPECT_EQ(generic.params.mujoco.lmax, 1.7);
+  EXPECT_EQ(generic.params.mujoco.fvmax, 1.3);
+  EXPECT_FALSE(generic.activation_dynamics.has_value());
+  // what MuJoCo computes when compiling, and what is no muscle: listed with line and why
+  ASSERT_EQ(model.unsupported.size(), 3u);
+  EXPECT_THAT(model.unsupported[0], HasSubstr("muscle 'no_range'"));
+  EXPECT_THAT(model.unsupported[0], HasSubstr("no lengthrange"));
+  EXPECT_THAT(model.unsupported[1], HasSubstr("muscle 'inertial'"));
+  EXPECT_THAT(model.unsupported[1], HasSubstr("scale / acc0"));
+  EXPECT_THAT(model.unsupported[2], HasSubstr("motor 'drive' (" + Fixture("muscles.xml") + ":"));
+  EXPECT_THAT(model.unsupported[2], HasSubstr("not a muscle"));
+}
+
+std::string ImportError(const std::string& name, const std::string& text) {
+  const std::string path = testing::WriteTempFile(name, text);
+  try {
+    ImportMuscles(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "imported " << name;
+  return "";
+}
+
+TEST(ImportErrors, NameTheFileLineValueAndRule) {
+  EXPECT_THAT(ImportError("broken.xml", "<mujoco>\n<actuator>\n<muscle name='a'\n"),
+              HasSubstr("not well-formed XML"));
+  EXPECT_THAT(ImportError("other.xml", "<robot/>\n"),
+              HasSubstr("root element <robot> is neither OpenSim's"));
+  EXPECT_THAT(ImportError("nothing.xml",
+                          "<mujoco>\n<actuator>\n<motor name='m' joint='j'/>\n</actuator>\n"
+                          "</mujoco>\n"),
+              HasSubstr("no muscle musclesim imports"));
+  const std::string bad_number = ImportError(
+      "bad.osim",
+      "<OpenSimDocument><Model><ForceSet><objects>\n"
+      "<DeGrooteFregly2016Muscle name='m'>\n<optimal_fiber_length>abc</optimal_fiber_length>\n"
+      "</DeGrooteFregly2016Muscle></objects></ForceSet></Model></OpenSimDocument>\n");
+  EXPECT_THAT(bad_number, HasSubstr("<optimal_fiber_length> = abc"));
+  EXPECT_THAT(bad_number, HasSubstr("bad.osim:3): must be a number"));
+  const std::string bad_value = ImportError(
+      "negative.osim",
+      "<OpenSimDocument><Model><ForceSet><objects>\n"
+      "<DeGrooteFregly2016Muscle name='m'>\n<max_isometric_force>-5</max_isometric_force>\n"
+      "</DeGrooteFregly2016Muscle></objects></ForceSet></Model></OpenSimDocument>\n");
+  EXPECT_THAT(bad_value, HasSubstr("'m': max_isometric_force = -5: must be > 0"));
+  const std::string bad_range =
+      ImportError("range.xml",
+                  "<mujoco>\n<actuator>\n<muscle name='m' joint='j' force='1' "
+                  "range='1.2 0.8' lengthrange='0.1 0.2'/>\n</actuator>\n</mujoco>\n");
+  EXPECT_THAT(bad_range, HasSubstr("muscle 'm' ("));
+  EXPECT_THAT(bad_range, HasSubstr("range"));
+  EXPECT_THAT(ImportError("class.xml",
+                          "<mujoco>\n<actuator>\n<muscle name='m' class='nope' joint='j'/>\n"
+                          "</actuator>\n</mujoco>\n"),
+              HasSubstr("class = nope ("));
+}
+
+TEST(ImportCli, WritesARunnableScenarioPerMuscleAndListsTheRest) {
+  const std::string dir = testing::FreshDirectory("import");
+  const testing::CliOutcome out =
+      testing::RunMusclesim("import " + Fixture("muscles.xml") + " -o " + dir);
+  ASSERT_EQ(out.exit_code, 0) << out.err;
+  EXPECT_THAT(out.err, HasSubstr("not imported: motor 'drive'"));
+  EXPECT_THAT(out.err, HasSubstr("not carried over: tausmooth 0.2"));
+  for (const char* name : {"plain", "quick", "generic"}) {
+    const std::string scenario = dir + "/" + name + ".yaml";
+    ASSERT_TRUE(std::filesystem::exists(scenario)) << scenario;
+    // the written scenario reads back to the imported model, and runs
+    EXPECT_NO_THROW(LoadScenario(scenario));
+    const testing::CliOutcome run =
+        testing::RunMusclesim("run " + scenario + " -o " + dir + "/" + name + ".csv");
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+  }
+  EXPECT_THAT(testing::ReadFile(dir + "/quick.yaml"), HasSubstr("tau_activation: 0.02"));
+}
+
+TEST(ImportCli, ToGaussiansWritesThePapersModelFittedAndItsErrors) {
+  const std::string dir = testing::FreshDirectory("import_gaussians");
+  const testing::CliOutcome out =
+      testing::RunMusclesim("import " + kOpenSimModel + " --to-gaussians 4 -o " + dir);
+  ASSERT_EQ(out.exit_code, 0) << out.err;
+  EXPECT_THAT(out.err, HasSubstr("the paper's model, 4 Gaussians -> " + dir +
+                                 "/muscle_gaussians.yaml: RMSE passive"));
+  const Scenario fitted = LoadScenario(dir + "/muscle_gaussians.yaml");
+  const ModelParams& params = fitted.models.at("model").model->params();
+  EXPECT_EQ(params.family, CurveFamily::kPaper);
+  EXPECT_EQ(params.active_length.gaussians.size(), 4u);
+  // the same experiment as the muscle's own scenario, which is written beside it
+  const Scenario own = LoadScenario(dir + "/muscle.yaml");
+  EXPECT_EQ(fitted.t_end, own.t_end);
+  const testing::CliOutcome run = testing::RunMusclesim(
+      "run " + dir + "/muscle_gaussians.yaml -o " + dir + "/muscle_gaussians.csv");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+}
+
+TEST(ImportCli, ToGaussiansOutOfRangeExitsTwoAndWritesNothing) {
+  for (const char* count : {"0", "21", "3.5", "three"}) {
+    const std::string dir = testing::FreshDirectory("import_bad_count");
+    const testing::CliOutcome out = testing::RunMusclesim(
+        "import " + kOpenSimModel + " --to-gaussians " + count + " -o " + dir);
+    EXPECT_EQ(out.exit_code, 2) << count;
+    EXPECT_THAT(out.err, HasSubstr("must be a whole number from 1 to 20")) << count;
+    EXPECT_TRUE(std::filesystem::is_empty(dir)) << count;
+  }
+}
+
+TEST(ImportCli, NoMuscleExitsTwoAndWritesNothing) {
+  const std::string dir = testing::FreshDirectory("import_none");
+  const std::string file = testing::WriteTempFile(
+      "motors.xml", "<mujoco>\n<actuator>\n<motor name='m' joint='j'/>\n</actuator>\n</mujoco>\n");
+  const testing::CliOutcome out = testing::RunMusclesim("import " + file + " -o " + dir);
+  EXPECT_EQ(out.exit_code, 2);
+  EXPECT_THAT(out.err, HasSubstr("no muscle musclesim imports"));
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+}  // namespace
+}  // namespace musclesim
