@@ -10,17 +10,16 @@ compiled once; musclesim's time is its own report of the integration.
 
     "$(bash bench/peers/setup.sh)" bench/peers/mujoco_convergence.py [MUSCLESIM]
 """
-import csv
 import math
 import os
 import platform
-import re
-import subprocess
 import sys
 import tempfile
 import time
 
 import mujoco
+
+import musclesim_cli  # the run and the reading shared with the OpenSim side
 
 END = 0.5
 SAMPLE = 0.01  # s, where the trajectories are compared; every time step divides it
@@ -77,33 +76,20 @@ def mujoco_run(integrator, dt):
 
 
 def musclesim_run(program, rtol, directory):
-    path = os.path.join(directory, "drop.yaml")
-    with open(path, "w") as f:
-        f.write(
-            "name: mujoco_drop\n"
-            "model: {family: mujoco, f_iso: %r, lengthrange: [%r, %r]}\n"
-            "actuator: {mass: %r}\ninitial: {length: %r}\n"
-            "activation: {type: constant, value: %r}\n"
-            "load: {type: constant, value: %r}\n"
-            "time: {start: 0.0, end: %r}\n"
-            "solver: {method: bdf, rtol: %r, atol: %r}\n"
-            "output: {file: drop.csv, interval: %r}\n"
-            % (F0, LENGTHRANGE[0], LENGTHRANGE[1], MASS, START, ACTIVATION, MASS * 9.81, END,
-               rtol, rtol * 1e-3, SAMPLE))
-    best = math.inf
-    for _ in range(REPEATS):
-        done = subprocess.run([program, "run", path], cwd=directory, check=True,
-                              capture_output=True, text=True)
-        best = min(best, float(re.search(r"([0-9.e+-]+) ms", done.stderr).group(1)) * 1e-3)
-    with open(os.path.join(directory, "drop.csv")) as f:
-        rows = list(csv.DictReader(f))
+    rows, best = musclesim_cli.timed_run(
+        program,
+        "name: mujoco_drop\n"
+        "model: {family: mujoco, f_iso: %r, lengthrange: [%r, %r]}\n"
+        "actuator: {mass: %r}\ninitial: {length: %r}\n"
+        "activation: {type: constant, value: %r}\n"
+        "load: {type: constant, value: %r}\n"
+        "time: {start: 0.0, end: %r}\n"
+        "solver: {method: bdf, rtol: %r, atol: %r}\n"
+        "output: {file: drop.csv, interval: %r}\n"
+        % (F0, LENGTHRANGE[0], LENGTHRANGE[1], MASS, START, ACTIVATION, MASS * 9.81, END,
+           rtol, rtol * 1e-3, SAMPLE),
+        directory, REPEATS)
     return [(float(r["length"]), float(r["shortening_velocity"])) for r in rows], best
-
-
-def at_error(points, target):
-    """The time of the cheapest run whose error is at most `target` (None: none reached it)."""
-    reached = [seconds for e, seconds in points if e <= target]
-    return min(reached) if reached else None
 
 
 def main():
@@ -147,7 +133,7 @@ def main():
     for target in [1e-3, 1e-4, 1e-5]:
         cells = []
         for name in curves:
-            s = at_error(curves[name], target)
+            s = musclesim_cli.at_error(curves[name], target)
             cells.append("not reached" if s is None else "%.3g ms" % (s * 1e3))
         print("| %.0e | %s |" % (target, " | ".join(cells)))
 

@@ -26,10 +26,15 @@ CASES = [
     ("opensim_drop_rigid", 5.0, 400.0, 0.10, 0.05, 10.0, 0.0, 0.01, 0.6, 0.16),
     ("opensim_drop_pennate", 5.0, 400.0, 0.10, 0.05, 10.0, 0.35, 0.05, 0.8, 0.13),
 ]
+# with OpenSim's activation dynamics (tanh-blended, De Groote 2016): the pennate case driven
+# by an excitation through piecewise-linear points (t [s], e [-]) from an initial activation
+EXCITED = ("opensim_drop_excited", "opensim_drop_pennate",
+           [(0.0, 0.9), (0.2, 0.9), (0.21, 0.1), (0.5, 0.1)], 0.05)
 END, INTERVAL, ACCURACY = 0.5, 0.005, 1e-12
 
 
-def hanging_mass(mass, f_iso, l_opt, l_s, v_max, pennation, damping, activation, height):
+def hanging_mass(mass, f_iso, l_opt, l_s, v_max, pennation, damping, activation, height,
+                 excitation=None, initial_activation=None):
     model = osim.Model()
     model.setName("hanging_mass")
     model.setGravity(osim.Vec3(0, -GRAVITY, 0))
@@ -51,13 +56,21 @@ def hanging_mass(mass, f_iso, l_opt, l_s, v_max, pennation, damping, activation,
     muscle.set_pennation_angle_at_optimal(pennation)
     muscle.set_fiber_damping(damping)
     muscle.set_ignore_tendon_compliance(True)
-    muscle.set_ignore_activation_dynamics(True)
+    muscle.set_ignore_activation_dynamics(excitation is None)
+    if excitation is not None:
+        muscle.set_default_activation(initial_activation)
     muscle.addNewPathPoint("origin", model.getGround(), osim.Vec3(0))
     muscle.addNewPathPoint("insertion", body, osim.Vec3(0))
     model.addForce(muscle)
     controller = osim.PrescribedController()
     controller.addActuator(muscle)
-    controller.prescribeControlForActuator("muscle", osim.Constant(activation))
+    if excitation is None:
+        controller.prescribeControlForActuator("muscle", osim.Constant(activation))
+    else:
+        control = osim.PiecewiseLinearFunction()
+        for t, e in excitation:
+            control.addPoint(t, e)
+        controller.prescribeControlForActuator("muscle", control)
     model.addController(controller)
     return model, muscle, joint.getCoordinate()
 
@@ -79,11 +92,25 @@ def write_import_example():
     print(os.path.normpath(path), file=sys.stderr)
 
 
+def cases():
+    """(name, hanging_mass's arguments) of every case."""
+    for name, *case in CASES:
+        yield name, case, {}
+    name, base, excitation, initial_activation = EXCITED
+    case = next(c for c in CASES if c[0] == base)[1:]
+    yield name, case, {"excitation": excitation, "initial_activation": initial_activation}
+
+
 def main():
     write_import_example()
-    for name, *case in CASES:
-        model, muscle, height = hanging_mass(*case)
+    for name, case, dynamics in cases():
+        model, muscle, height = hanging_mass(*case, **dynamics)
         state = model.initSystem()
+        if dynamics:  # the file tests/io/muscle_import_test.cc imports the muscle from
+            fixture = os.path.join(HERE, "..", "..", "tests", "fixtures", "import",
+                                   "opensim_excited.osim")
+            model.printToXML(fixture)
+            print(os.path.normpath(fixture), file=sys.stderr)
         manager = osim.Manager(model)
         manager.setIntegratorAccuracy(ACCURACY)
         state.setTime(0.0)
@@ -91,21 +118,26 @@ def main():
         l_s = case[3]
         path = os.path.join(HERE, "reference", name + ".csv")
         with open(path, "w") as out:
-            out.write("# OpenSim %s DeGrooteFregly2016Muscle, rigid tendon, constant "
-                      "activation; case %s, accuracy %g (bench/peers/opensim_reference.py)\n"
-                      % (osim.GetVersion(), repr(tuple(case)), ACCURACY))
+            drive = ("activation dynamics, excitation %s from activation %s"
+                     % (dynamics["excitation"], dynamics["initial_activation"])
+                     if dynamics else "constant activation")
+            out.write("# OpenSim %s DeGrooteFregly2016Muscle, rigid tendon, %s; case %s, "
+                      "accuracy %g (bench/peers/opensim_reference.py)\n"
+                      % (osim.GetVersion(), drive, repr(tuple(case)), ACCURACY))
             out.write("t,length,shortening_velocity,fiber_length,pennation_angle,"
-                      "tendon_force\n")
+                      "tendon_force%s\n" % (",activation" if dynamics else ""))
             steps = int(round(END / INTERVAL))
             for k in range(steps + 1):
                 t = k * INTERVAL
                 if k > 0:
                     state = manager.integrate(t)
                 model.realizeDynamics(state)
-                out.write("%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n" % (
-                    state.getTime(), height.getValue(state) - l_s, -height.getSpeedValue(state),
-                    muscle.getFiberLength(state), muscle.getPennationAngle(state),
-                    muscle.getTendonForce(state)))
+                row = [state.getTime(), height.getValue(state) - l_s,
+                       -height.getSpeedValue(state), muscle.getFiberLength(state),
+                       muscle.getPennationAngle(state), muscle.getTendonForce(state)]
+                if dynamics:
+                    row.append(muscle.getActivation(state))
+                out.write(",".join("%.17g" % v for v in row) + "\n")
         print(path, file=sys.stderr)
 
 

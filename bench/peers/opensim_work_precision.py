@@ -14,8 +14,6 @@ import csv
 import math
 import os
 import platform
-import re
-import subprocess
 import sys
 import tempfile
 import time
@@ -23,6 +21,7 @@ import time
 import opensim as osim
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import musclesim_cli  # noqa: E402  (the run and the reading shared with the MuJoCo side)
 import opensim_reference as ref  # noqa: E402  (the same model and cases)
 
 REPEATS = 5
@@ -60,34 +59,22 @@ def opensim_run(case, accuracy):
 
 def musclesim_run(program, case, rtol, directory):
     mass, f_iso, l_opt, l_s, v_max, pennation, damping, activation, height = case
-    path = os.path.join(directory, "drop.yaml")
-    with open(path, "w") as f:
-        f.write(
-            "name: opensim_drop\n"
-            "model: {family: degroote2016, f_iso: %r, optimal_fiber_length: %r, "
-            "max_contraction_velocity: %r, fiber_damping: %r, pennation_angle: %r}\n"
-            "actuator: {mass: %r}\ninitial: {length: %r}\n"
-            "activation: {type: constant, value: %r}\n"
-            "load: {type: constant, value: %r}\n"
-            "time: {start: 0.0, end: %r}\n"
-            "solver: {method: bdf, rtol: %r, atol: %r}\n"
-            "output: {file: drop.csv, interval: %r}\n"
-            % (f_iso, l_opt, v_max, damping, pennation, mass, height - l_s, activation,
-               mass * ref.GRAVITY, ref.END, rtol, rtol * 1e-3, ref.END))
-    best = math.inf
-    for _ in range(REPEATS):
-        done = subprocess.run([program, "run", path], cwd=directory, check=True,
-                              capture_output=True, text=True)
-        best = min(best, float(re.search(r"([0-9.e+-]+) ms", done.stderr).group(1)) * 1e-3)
-    with open(os.path.join(directory, "drop.csv")) as f:
-        last = list(csv.DictReader(f))[-1]
+    rows, best = musclesim_cli.timed_run(
+        program,
+        "name: opensim_drop\n"
+        "model: {family: degroote2016, f_iso: %r, optimal_fiber_length: %r, "
+        "max_contraction_velocity: %r, fiber_damping: %r, pennation_angle: %r}\n"
+        "actuator: {mass: %r}\ninitial: {length: %r}\n"
+        "activation: {type: constant, value: %r}\n"
+        "load: {type: constant, value: %r}\n"
+        "time: {start: 0.0, end: %r}\n"
+        "solver: {method: bdf, rtol: %r, atol: %r}\n"
+        "output: {file: drop.csv, interval: %r}\n"
+        % (f_iso, l_opt, v_max, damping, pennation, mass, height - l_s, activation,
+           mass * ref.GRAVITY, ref.END, rtol, rtol * 1e-3, ref.END),
+        directory, REPEATS)
+    last = rows[-1]
     return (float(last["length"]), float(last["shortening_velocity"])), best
-
-
-def at_error(points, target):
-    """The time of the cheapest run whose error is at most `target` (None: none reached it)."""
-    reached = [seconds for e, seconds in points if e <= target]
-    return min(reached) if reached else None
 
 
 def main():
@@ -116,7 +103,8 @@ def main():
                 print("| %s | musclesim (CVODE BDF) | rtol %.0e | %.1e | %.3g ms |"
                       % (name, rtol, e, seconds / ref.END * 1e3))
             for target in [1e-4, 1e-6, 1e-8]:
-                o, m = at_error(curves["OpenSim"], target), at_error(curves["musclesim"], target)
+                o = musclesim_cli.at_error(curves["OpenSim"], target)
+                m = musclesim_cli.at_error(curves["musclesim"], target)
                 ratios.append((name, target, o, m))
     print("\n| case | error | OpenSim per simulated s | musclesim per simulated s | ratio |")
     print("|---|---|---|---|---|")

@@ -8,6 +8,15 @@
 
 namespace musclesim {
 
+const char* ActivationFamilyName(ActivationFamily family) {
+  switch (family) {
+    case ActivationFamily::kDeGroote2016: return "degroote2016";
+    case ActivationFamily::kMujoco: return "mujoco";
+    case ActivationFamily::kThelen2003: break;
+  }
+  return "thelen2003";
+}
+
 void Validate(const ActivationDynamics& d) {
   const std::string rule = "must be from " + FormatNumber(kMinActivationTimeConstant) + " to " +
                            FormatNumber(kMaxActivationTimeConstant) +
@@ -17,6 +26,14 @@ void Validate(const ActivationDynamics& d) {
                                    std::pair{"tau_deactivation", d.tau_deactivation}}) {
     Require(value >= kMinActivationTimeConstant && value <= kMaxActivationTimeConstant, key, value,
             rule);
+  }
+  if (d.family == ActivationFamily::kDeGroote2016) {
+    Require(kActivationSmoothingRange.Contains(d.smoothing), "smoothing", d.smoothing,
+            kActivationSmoothingRange.Rule());
+  }
+  if (d.family == ActivationFamily::kMujoco) {
+    Require(kTauSmoothRange.Contains(d.tausmooth), "tausmooth", d.tausmooth,
+            kTauSmoothRange.Rule());
   }
 }
 

@@ -176,7 +176,9 @@ void NetworkSystem::AddLink(std::size_t e, int& states) {
     // after every node's states (the nodes were numbered first)
     link.activation = states++;
     activations_.push_back({static_cast<int>(e), link.activation, -1});
-    kinks_.push_back({Kink::kExcitation, static_cast<int>(e), 0.0});
+    if (HasExcitationKink(element.excitation->dynamics)) {
+      kinks_.push_back({Kink::kExcitation, static_cast<int>(e), 0.0});
+    }
   }
   links_.push_back(link);
   if (space_.dimensions > 1) AddPath(e);

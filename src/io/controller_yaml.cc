@@ -216,14 +216,7 @@ Element ReadControlledActuator(const yaml::Source& src, const YAML::Node& item,
     return e;
   }
   const std::string at = Join(path, "activation_dynamics");
-  yaml::RequireMap(src, dynamics, at, {"tau_activation", "tau_deactivation"});
-  const auto time_constant = [&](const char* key) {
-    return yaml::ReadNumberIn(src, Required(src, dynamics, at, key), Join(at, key),
-                              kActivationTimeConstantRange);
-  };
-  ActivationDynamics lag;
-  lag.tau_activation = time_constant("tau_activation");
-  lag.tau_deactivation = time_constant("tau_deactivation");
+  const ActivationDynamics lag = ReadActivationDynamics(src, dynamics, at);
   const double u0 =
       initial ? yaml::ReadNumberIn(src, initial, initial_path, kActivationRange) : 0.0;
   ValidateAt(src, item, path,

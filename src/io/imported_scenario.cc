@@ -28,6 +28,19 @@ std::string Pair(const double (&values)[2]) {
   return out.str();
 }
 
+// The `activation_dynamics:` line of the tool's lag, its family's smoothing included.
+std::string FormatActivationDynamics(const ActivationDynamics& d) {
+  std::ostringstream out;
+  out << "activation_dynamics: {family: " << ActivationFamilyName(d.family)
+      << ", tau_activation: " << FormatNumber(d.tau_activation)
+      << ", tau_deactivation: " << FormatNumber(d.tau_deactivation);
+  if (d.family == ActivationFamily::kDeGroote2016)
+    out << ", smoothing: " << FormatNumber(d.smoothing);
+  if (d.family == ActivationFamily::kMujoco) out << ", tausmooth: " << FormatNumber(d.tausmooth);
+  out << "}   # s";
+  return out.str();
+}
+
 }  // namespace
 
 std::string FormatModelBlock(const ModelParams& p) {
@@ -103,10 +116,7 @@ std::string FormatImportedScenario(const ImportedMuscle& muscle, const std::stri
   if (muscle.activation_dynamics) {
     out << ", activation: 0.0}   # m, -\n"
         << "excitation: {type: step, time: 0.1, before: 0.0, after: 1.0}\n"
-        << "activation_dynamics: {tau_activation: "
-        << FormatNumber(muscle.activation_dynamics->tau_activation)
-        << ", tau_deactivation: " << FormatNumber(muscle.activation_dynamics->tau_deactivation)
-        << "}   # s\n";
+        << FormatActivationDynamics(*muscle.activation_dynamics) << "\n";
   } else {
     out << "}   # m\n"
         << "activation: {type: step, time: 0.1, before: 0.0, after: 1.0}\n";

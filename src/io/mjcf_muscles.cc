@@ -21,7 +21,11 @@ using tinyxml2::XMLElement;
 using Attributes = std::map<std::string, std::string>;
 
 // musclesim's key -> MuJoCo's attribute, for messages
-const std::vector<std::pair<std::string, std::string>> kAttributeNames = {{"f_iso", "force"}};
+const std::vector<std::pair<std::string, std::string>> kAttributeNames = {
+    {"f_iso", "force"},
+    {"tau_activation", "timeconst[0]"},
+    {"tau_deactivation", "timeconst[1]"},
+};
 
 // What <default> classes set for each actuator element: class -> element name -> attributes.
 using DefaultClasses = std::map<std::string, std::map<std::string, Attributes>>;
@@ -176,17 +180,16 @@ std::optional<ImportedMuscle> ToMuscle(const ActuatorReader& read, const MuscleN
   m.vmax = n.gain[6];
   m.fpmax = n.gain[7];
   m.fvmax = n.gain[8];
-  ValidateImported(muscle, kAttributeNames);
   if (n.dynamics) {
     const std::vector<double>& d = *n.dynamics;
-    muscle.activation_dynamics = ImportedActivationDynamics{d[0], d[1]};
-    if (d[2] > 0.0) {
-      muscle.notes.push_back("tausmooth " + FormatNumber(d[2]) +
-                             " is not implemented: the scenario's activation dynamics switch "
-                             "time constant where the excitation meets the activation "
-                             "(tausmooth 0)");
-    }
+    ActivationDynamics lag;
+    lag.family = ActivationFamily::kMujoco;
+    lag.tau_activation = d[0];
+    lag.tau_deactivation = d[1];
+    lag.tausmooth = d[2];
+    muscle.activation_dynamics = lag;
   }
+  ValidateImported(muscle, kAttributeNames);
   const std::vector<double> gear = read.Padded("gear", 6);
   if (read.Has("gear") && !gear.empty() && gear[0] != 1.0) {
     muscle.notes.push_back("gear " + FormatNumber(gear[0]) +

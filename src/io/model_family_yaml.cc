@@ -1,6 +1,8 @@
 // The model block of a curve family other than the paper's (docs/model.md 14.1): its keys are
 // the peer's own names, OpenSim's properties or MuJoCo's attributes.
 #include <cmath>
+#include <initializer_list>
+#include <utility>
 
 #include "io/model_yaml_node.h"
 #include "musclesim/core/input_ranges.h"
@@ -12,17 +14,24 @@ namespace {
 using yaml::Join;
 using yaml::Required;
 
+// Each of `fields` whose key `node` holds takes its value; an absent one keeps its default.
+void ReadOptionalNumbers(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                         std::initializer_list<std::pair<const char*, double*>> fields) {
+  for (const auto& [key, value] : fields) {
+    *value = yaml::ReadOptionalNumber(src, node, path, key, *value);
+  }
+}
+
 void ReadDeGroote(const yaml::Source& src, const YAML::Node& node, const std::string& path,
                   DeGrooteParams& p) {
   p.optimal_fiber_length = yaml::ReadNumber(src, Required(src, node, path, "optimal_fiber_length"),
                                             Join(path, "optimal_fiber_length"));
-  const auto optional = [&](const char* key, double& value) {
-    value = yaml::ReadOptionalNumber(src, node, path, key, value);
-  };
-  optional("max_contraction_velocity", p.max_contraction_velocity);
-  optional("active_force_width_scale", p.active_force_width_scale);
-  optional("passive_fiber_strain_at_one_norm_force", p.passive_fiber_strain_at_one_norm_force);
-  optional("fiber_damping", p.fiber_damping);
+  ReadOptionalNumbers(
+      src, node, path,
+      {{"max_contraction_velocity", &p.max_contraction_velocity},
+       {"active_force_width_scale", &p.active_force_width_scale},
+       {"passive_fiber_strain_at_one_norm_force", &p.passive_fiber_strain_at_one_norm_force},
+       {"fiber_damping", &p.fiber_damping}});
 }
 
 void ReadMujoco(const yaml::Source& src, const YAML::Node& node, const std::string& path,
@@ -36,14 +45,12 @@ void ReadMujoco(const yaml::Source& src, const YAML::Node& node, const std::stri
     p.range[0] = range[0];
     p.range[1] = range[1];
   }
-  const auto optional = [&](const char* key, double& value) {
-    value = yaml::ReadOptionalNumber(src, node, path, key, value);
-  };
-  optional("lmin", p.lmin);
-  optional("lmax", p.lmax);
-  optional("vmax", p.vmax);
-  optional("fpmax", p.fpmax);
-  optional("fvmax", p.fvmax);
+  ReadOptionalNumbers(src, node, path,
+                      {{"lmin", &p.lmin},
+                       {"lmax", &p.lmax},
+                       {"vmax", &p.vmax},
+                       {"fpmax", &p.fpmax},
+                       {"fvmax", &p.fvmax}});
 }
 
 }  // namespace

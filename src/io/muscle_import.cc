@@ -12,6 +12,7 @@ void ValidateImported(const ImportedMuscle& muscle,
                       const std::vector<std::pair<std::string, std::string>>& key_names) {
   try {
     Validate(muscle.params);
+    if (muscle.activation_dynamics) Validate(*muscle.activation_dynamics);
   } catch (const ParameterError& e) {
     std::string key = e.path();
     for (const auto& [ours, theirs] : key_names) {

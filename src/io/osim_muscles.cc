@@ -31,6 +31,9 @@ struct DeGrooteDefaults {
 const std::vector<std::pair<std::string, std::string>> kPropertyNames = {
     {"f_iso", "max_isometric_force"},
     {"pennation_angle", "pennation_angle_at_optimal"},
+    {"tau_activation", "activation_time_constant"},
+    {"tau_deactivation", "deactivation_time_constant"},
+    {"smoothing", "activation_dynamics_smoothing"},
 };
 
 class MuscleReader {
@@ -104,7 +107,6 @@ ImportedMuscle ReadDeGroote(const XMLElement& element, const std::string& path) 
   d.fiber_damping = read.Number("fiber_damping", d.fiber_damping);
   p.pennation_angle = read.Number("pennation_angle_at_optimal", 0.0);
   muscle.tendon_slack_length = read.Number("tendon_slack_length", defaults.tendon_slack_length);
-  ValidateImported(muscle, kPropertyNames);
 
   if (!read.Flag("ignore_tendon_compliance", false)) {
     muscle.notes.push_back(
@@ -116,17 +118,16 @@ ImportedMuscle ReadDeGroote(const XMLElement& element, const std::string& path) 
         " m, until compliant tendons in series are supported: the trajectories differ");
   }
   if (!read.Flag("ignore_activation_dynamics", false)) {
-    muscle.notes.push_back(
-        "OpenSim's activation dynamics (activation_time_constant " +
-        FormatNumber(read.Number("activation_time_constant", defaults.activation_time_constant)) +
-        " s, deactivation_time_constant " +
-        FormatNumber(
-            read.Number("deactivation_time_constant", defaults.deactivation_time_constant)) +
-        " s, tanh smoothing " +
-        FormatNumber(
-            read.Number("activation_dynamics_smoothing", defaults.activation_dynamics_smoothing)) +
-        ") are not implemented: the scenario gives the activation directly");
+    ActivationDynamics lag;
+    lag.family = ActivationFamily::kDeGroote2016;
+    lag.tau_activation = read.Number("activation_time_constant", defaults.activation_time_constant);
+    lag.tau_deactivation =
+        read.Number("deactivation_time_constant", defaults.deactivation_time_constant);
+    lag.smoothing =
+        read.Number("activation_dynamics_smoothing", defaults.activation_dynamics_smoothing);
+    muscle.activation_dynamics = lag;
   }
+  ValidateImported(muscle, kPropertyNames);
   muscle.notes.push_back(GeometryNote(element));
   return muscle;
 }

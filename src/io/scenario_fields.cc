@@ -117,6 +117,49 @@ Waveform ReadActivation(const yaml::Source& src, const YAML::Node& node, const s
   return w;
 }
 
+ActivationDynamics ReadActivationDynamics(const yaml::Source& src, const YAML::Node& node,
+                                          const std::string& path) {
+  ActivationDynamics d;
+  if (node.IsMap() && node["family"]) {
+    const YAML::Node family = node["family"];
+    const std::string text = yaml::ReadString(src, family, Join(path, "family"));
+    if (text == "degroote2016") {
+      d.family = ActivationFamily::kDeGroote2016;
+    } else if (text == "mujoco") {
+      d.family = ActivationFamily::kMujoco;
+    } else if (text != "thelen2003") {
+      yaml::Fail(src, family, Join(path, "family"), yaml::Describe(family),
+                 "must be thelen2003, degroote2016 or mujoco (docs/model.md 8.1)");
+    }
+  }
+  // each family's own smoothing key, and no other's
+  switch (d.family) {
+    case ActivationFamily::kThelen2003:
+      yaml::RequireMap(src, node, path, {"tau_activation", "tau_deactivation", "family"});
+      break;
+    case ActivationFamily::kDeGroote2016:
+      yaml::RequireMap(src, node, path,
+                       {"tau_activation", "tau_deactivation", "family", "smoothing"});
+      break;
+    case ActivationFamily::kMujoco:
+      yaml::RequireMap(src, node, path,
+                       {"tau_activation", "tau_deactivation", "family", "tausmooth"});
+      break;
+  }
+  const auto number = [&](const char* key, const InputRange& range) {
+    return yaml::ReadNumberIn(src, Required(src, node, path, key), Join(path, key), range);
+  };
+  d.tau_activation = number("tau_activation", kActivationTimeConstantRange);
+  d.tau_deactivation = number("tau_deactivation", kActivationTimeConstantRange);
+  if (d.family == ActivationFamily::kDeGroote2016 && node["smoothing"]) {
+    d.smoothing = number("smoothing", kActivationSmoothingRange);
+  }
+  if (d.family == ActivationFamily::kMujoco && node["tausmooth"]) {
+    d.tausmooth = number("tausmooth", kTauSmoothRange);
+  }
+  return d;
+}
+
 ActuatorDrive ReadActuatorDrive(const yaml::Source& src, const YAML::Node& owner,
                                 const std::string& path, const YAML::Node& initial,
                                 const std::string& initial_path, double t_start, double t_end) {
@@ -166,13 +209,7 @@ ActuatorDrive ReadActuatorDrive(const yaml::Source& src, const YAML::Node& owner
                "needs activation_dynamics: {tau_activation, tau_deactivation} [s] beside it, "
                "the time constants through which it drives the activation");
   }
-  yaml::RequireMap(src, dynamics, dynamics_path, {"tau_activation", "tau_deactivation"});
-  const auto time_constant = [&](const char* key) {
-    return yaml::ReadNumberIn(src, Required(src, dynamics, dynamics_path, key),
-                              Join(dynamics_path, key), kActivationTimeConstantRange);
-  };
-  input.dynamics.tau_activation = time_constant("tau_activation");
-  input.dynamics.tau_deactivation = time_constant("tau_deactivation");
+  input.dynamics = ReadActivationDynamics(src, dynamics, dynamics_path);
   if (initial) {
     input.initial_activation = yaml::ReadNumberIn(src, initial, initial_path, kActivationRange);
   }

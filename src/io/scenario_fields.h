@@ -37,6 +37,12 @@ struct ActuatorDrive {
   std::optional<ExcitationInput> excitation;  // with them: units as in ExcitationInput
 };
 
+// Reads an `activation_dynamics` map: its time constants, its `family` (thelen2003, the
+// default, degroote2016 or mujoco: docs/model.md 8.1) and that family's smoothing
+// (`smoothing`, `tausmooth`), each key checked against its range.
+ActivationDynamics ReadActivationDynamics(const yaml::Source& src, const YAML::Node& node,
+                                          const std::string& path);
+
 // Reads the drive of the map `owner` at key path `path` (the top level of a single-actuator
 // scenario, "", or a network's actuator element): its `activation`, or its `excitation` and
 // `activation_dynamics`; and the initial activation from `initial` at `initial_path` (an

@@ -102,6 +102,17 @@ inline constexpr InputRange kActivationTimeConstantRange{
     "instead) and only makes the run stiff, and 10 s is slower than any muscle-like actuator"};
 inline constexpr InputRange kActivationRange{0.0, 1.0, "-",
                                              "an activation is a fraction of the full activation"};
+// The smoothings of the switch between the time constants (docs/model.md 8.1): De Groote's
+// tanh steepness b [-] (OpenSim's activation_dynamics_smoothing; below 1e-3 the rate is the
+// two constants' mean, above 1e4 the switch is a step the integrator cannot follow smoothly)
+// and MuJoCo's tausmooth [-], the width in e - u of its quintic switch (0: the step, 2: the
+// whole span of e - u).
+inline constexpr InputRange kActivationSmoothingRange{
+    1e-3, 1e4, "-",
+    "b of tanh(b (e - u)): below 1e-3 the two time constants merge into their mean, above 1e4 "
+    "the switch is a step (leave the smoothing to family thelen2003 then)"};
+inline constexpr InputRange kTauSmoothRange{
+    0.0, 2.0, "-", "the width in e - u of MuJoCo's switch: 0 is the step, 2 spans every e - u"};
 
 // A controller's gains [per unit measured, times s for ki^-1 and kd]: beyond 1e9 an error of
 // a nanometre or a nanonewton already saturates the output (the loop is a switch), and the

@@ -9,15 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "musclesim/dynamics/activation_dynamics.h"
 #include "musclesim/model/tension.h"
 
 namespace musclesim {
-
-// The tool's first-order activation lag, when it maps onto docs/model.md section 8.
-struct ImportedActivationDynamics {
-  double tau_activation = 0.0;    // [s]
-  double tau_deactivation = 0.0;  // [s]
-};
 
 // One muscle, as musclesim runs it.
 struct ImportedMuscle {
@@ -26,8 +21,9 @@ struct ImportedMuscle {
                                      // (arm.osim:41)"
   ModelParams params;                // the family's model, validated
   double tendon_slack_length = 0.0;  // [m] the rigid tendon taken off the muscle-tendon length
-  std::optional<ImportedActivationDynamics> activation_dynamics;  // none: the control is the
-                                                                  // activation
+  std::optional<ActivationDynamics> activation_dynamics;  // the tool's (family degroote2016
+                                                          // or mujoco); none: the control is
+                                                          // the activation
   std::vector<std::string> notes;  // what of this muscle was not carried over, one sentence each
 };
 
