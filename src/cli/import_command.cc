@@ -1,5 +1,6 @@
 // musclesim import MODEL.osim|MODEL.xml [-o DIR]
 #include <iostream>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -34,8 +35,8 @@ mass of half its isometric force. Properties a file leaves out take the tool's d
   --to-gaussians N   also write DIR/NAME_gaussians.yaml: the same experiment with the paper's
                      model (passive exponential, N Gaussians, power-law velocity) fitted to
                      the muscle's curves, each fit's RMSE in its comments and on standard error
-What is not imported (another actuator or muscle class, a compliant tendon, activation
-dynamics musclesim does not have, the path's geometry) is listed on standard error and in
+What is not imported (another actuator or muscle class, a compliant tendon, MuJoCo's force
+and activation clamps, an <include>, the path's geometry) is listed on standard error and in
 each scenario's header, never dropped silently.
 Exit codes: 0 imported (some actuators may be listed as not imported), 2 invalid input (a
 malformed file or value, or no muscle of a supported class), 1 anything else.
@@ -85,9 +86,24 @@ GaussianModel FitGaussians(const ImportedMuscle& muscle, int count) {
   const auto percent = [&](double rmse) {
     return FormatNumber(rmse) + " N (" + FormatNumber(100.0 * rmse / p.f_iso) + " % of f_iso)";
   };
+  std::string report = "RMSE passive " + percent(fit.passive.rmse) + ", active " +
+                       percent(fit.active.rmse) + ", velocity " + percent(fit.velocity.best.rmse) +
+                       " shortening";
+  const std::optional<EccentricIdentification>& eccentric = fit.velocity.eccentric;
+  if (eccentric && eccentric->identified) {
+    report += ", " + percent(eccentric->best.rmse) + " lengthening";
+  }
+  // the paper's model has no fiber damping: say so, with the line damping nearest to it
+  const DeGrooteParams& degroote = p.degroote2016;
+  if (p.family == CurveFamily::kDeGroote2016 && degroote.fiber_damping > 0) {
+    report += "; not fitted: fiber_damping " + FormatNumber(degroote.fiber_damping) +
+              " (about actuator.damping " +
+              FormatNumber(p.f_iso * degroote.fiber_damping /
+                           (degroote.max_contraction_velocity * degroote.optimal_fiber_length)) +
+              " N s/m along an unpennated fiber)";
+  }
   return {FormatModelYaml(DraftIdentifiedModel(source, fit.passive, fit.active, fit.velocity)),
-          "RMSE passive " + percent(fit.passive.rmse) + ", active " + percent(fit.active.rmse) +
-              ", velocity " + percent(fit.velocity.best.rmse)};
+          report};
 }
 
 }  // namespace
@@ -128,8 +144,8 @@ int ImportCommand(int argc, char** argv) {
     for (const std::string& note : muscle.notes) report += "  not carried over: " + note + "\n";
     if (gaussians > 0) {
       const GaussianModel paper = FitGaussians(muscle, gaussians);
-      const std::string fitted = stem + "_gaussians";
-      taken.insert(fitted);
+      // unique too: another muscle may be named after this one's fit
+      const std::string fitted = FileStem(stem + "_gaussians", taken);
       add(fitted, FormatImportedScenario(muscle, source, fitted + ".csv", paper.block),
           "the paper's model of " + muscle.name);
       report += "  the paper's model, " + std::to_string(gaussians) + " Gaussians -> " +

@@ -20,11 +20,18 @@ namespace {
 using tinyxml2::XMLElement;
 using Attributes = std::map<std::string, std::string>;
 
-// musclesim's key -> MuJoCo's attribute, for messages
-const std::vector<std::pair<std::string, std::string>> kAttributeNames = {
+// musclesim's key -> MuJoCo's attribute, for messages: of <muscle>, and of <general>
+const std::vector<std::pair<std::string, std::string>> kShortcutNames = {
     {"f_iso", "force"},
     {"tau_activation", "timeconst[0]"},
     {"tau_deactivation", "timeconst[1]"},
+    {"tausmooth", "tausmooth"},
+};
+const std::vector<std::pair<std::string, std::string>> kGeneralNames = {
+    {"f_iso", "gainprm[2]"},
+    {"tau_activation", "dynprm[0]"},
+    {"tau_deactivation", "dynprm[1]"},
+    {"tausmooth", "dynprm[2]"},
 };
 
 // What <default> classes set for each actuator element: class -> element name -> attributes.
@@ -66,12 +73,13 @@ class ActuatorReader {
                               const std::string& fallback) const {
     return xml::ParseNumbers(Text(key, fallback), count, What(key), Where());
   }
-  // MuJoCo's parameter arrays (gainprm, biasprm, dynprm): up to `count` numbers, the rest 0
   // MuJoCo's parameter arrays (gainprm, biasprm, dynprm, gear): up to `count` numbers, the
-  // rest `fill` (MuJoCo's own padding)
-  std::vector<double> Padded(const std::string& key, std::size_t count, double fill = 0.0) const {
+  // rest at MuJoCo's defaults, which are `first` for the first number (1 for gainprm, dynprm
+  // and gear, 0 for biasprm) and 0 for the others
+  std::vector<double> Padded(const std::string& key, std::size_t count, double first) const {
     std::vector<double> values = xml::ParseNumberList(Text(key, ""), count, What(key), Where());
-    values.resize(count, fill);
+    if (values.empty()) values.push_back(first);
+    values.resize(count, 0.0);
     return values;
   }
   std::string What(const std::string& key) const {
@@ -130,15 +138,15 @@ std::optional<MuscleNumbers> ReadGeneral(const ActuatorReader& read, std::string
     return std::nullopt;
   }
   MuscleNumbers n;
-  n.gain = read.Padded("gainprm", 10);
-  const std::vector<double> bias = read.Padded("biasprm", 10);
+  n.gain = read.Padded("gainprm", 10, 1.0);
+  const std::vector<double> bias = read.Padded("biasprm", 10, 0.0);
   if (bias != n.gain) {
     why = "biasprm differs from gainprm: musclesim's muscle has one parameter set";
     return std::nullopt;
   }
   const std::string dyntype = read.Text("dyntype", "none");
   if (dyntype == "muscle") {
-    const std::vector<double> dynamics = read.Padded("dynprm", 10);
+    const std::vector<double> dynamics = read.Padded("dynprm", 10, 1.0);
     n.dynamics = dynamics;
   } else if (dyntype != "none") {
     why = "dyntype " + PrintableText(dyntype) + ", not none or muscle";
@@ -150,8 +158,9 @@ std::optional<MuscleNumbers> ReadGeneral(const ActuatorReader& read, std::string
 
 // The muscle from its numbers, or nullopt with `why` when MuJoCo would compute a value from
 // the rest of the model (force < 0, lengthrange absent).
-std::optional<ImportedMuscle> ToMuscle(const ActuatorReader& read, const MuscleNumbers& n,
-                                       std::string& why) {
+std::optional<ImportedMuscle> ToMuscle(
+    const ActuatorReader& read, const MuscleNumbers& n,
+    const std::vector<std::pair<std::string, std::string>>& names, std::string& why) {
   if (n.gain[2] < 0.0) {
     why = "force " + FormatNumber(n.gain[2]) +
           ": MuJoCo sets the peak force to scale / acc0 from the model's inertia when it "
@@ -189,9 +198,24 @@ std::optional<ImportedMuscle> ToMuscle(const ActuatorReader& read, const MuscleN
     lag.tausmooth = d[2];
     muscle.activation_dynamics = lag;
   }
-  ValidateImported(muscle, kAttributeNames);
-  const std::vector<double> gear = read.Padded("gear", 6);
-  if (read.Has("gear") && !gear.empty() && gear[0] != 1.0) {
+  ValidateImported(muscle, names);
+  // MuJoCo's clamps and timing, which the scenario's muscle does not have
+  const char* const clamps[][3] = {{"forcerange", "forcelimited", "force"},
+                                   {"actrange", "actlimited", "activation"}};
+  for (const auto& [range, limited, what] : clamps) {
+    const std::string flag = read.Text(limited, "auto");
+    if (flag == "true" || (flag == "auto" && read.Has(range))) {
+      muscle.notes.push_back(std::string(range) + " " + PrintableText(read.Text(range, "")) +
+                             ": musclesim does not clamp the " + what);
+    }
+  }
+  if (read.Text("actearly", "false") == "true") {
+    muscle.notes.push_back(
+        "actearly: MuJoCo's force uses the next step's activation; the scenario's, the current "
+        "one");
+  }
+  const std::vector<double> gear = read.Padded("gear", 6, 1.0);
+  if (gear[0] != 1.0) {
     muscle.notes.push_back("gear " + FormatNumber(gear[0]) +
                            ": the scenario's length is the actuator's (gear times the joint's "
                            "or tendon's), and its force the actuator's");
@@ -203,6 +227,21 @@ std::optional<ImportedMuscle> ToMuscle(const ActuatorReader& read, const MuscleN
 }
 
 }  // namespace
+
+// Every <include> in the file, depth first: musclesim reads the one file it is given.
+void ListIncludes(const XMLElement& element, const std::string& path,
+                  std::vector<std::string>& unsupported) {
+  for (const XMLElement* child = element.FirstChildElement(); child;
+       child = child->NextSiblingElement()) {
+    if (std::string(child->Name()) == "include") {
+      const char* file = child->Attribute("file");
+      unsupported.push_back("include '" + PrintableText(file == nullptr ? "" : file) + "' (" +
+                            xml::Where(path, *child) +
+                            "): not followed; import the included file on its own");
+    }
+    ListIncludes(*child, path, unsupported);
+  }
+}
 
 ImportedModel ReadMjcfMuscles(const tinyxml2::XMLDocument& document, const std::string& path) {
   ImportedModel model;
@@ -238,7 +277,9 @@ ImportedModel ReadMjcfMuscles(const tinyxml2::XMLDocument& document, const std::
         why = "not a muscle";
       }
       std::optional<ImportedMuscle> muscle;
-      if (numbers) muscle = ToMuscle(read, *numbers, why);
+      if (numbers) {
+        muscle = ToMuscle(read, *numbers, kind == "muscle" ? kShortcutNames : kGeneralNames, why);
+      }
       if (muscle) {
         model.muscles.push_back(std::move(*muscle));
       } else {
@@ -246,6 +287,7 @@ ImportedModel ReadMjcfMuscles(const tinyxml2::XMLDocument& document, const std::
       }
     }
   }
+  ListIncludes(root, path, model.unsupported);
   return model;
 }
 

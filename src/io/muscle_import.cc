@@ -35,7 +35,14 @@ ImportedModel ImportMuscles(const std::string& path) {
     throw InputError(PrintableText(path) + ":" + std::to_string(document.ErrorLineNum()) +
                      ": not well-formed XML (" + PrintableText(document.ErrorStr()) + ")");
   }
-  const std::string root = document.RootElement()->Name();
+  // A document holding only comments or declarations parses, yet has no root element.
+  const tinyxml2::XMLElement* root_element = document.RootElement();
+  if (root_element == nullptr) {
+    throw InputError(PrintableText(path) +
+                     ": no root element (expected OpenSim's <OpenSimDocument> or MuJoCo's "
+                     "<mujoco>)");
+  }
+  const std::string root = root_element->Name();
   ImportedModel model;
   if (root == "OpenSimDocument") {
     model = ReadOpenSimMuscles(document, path);

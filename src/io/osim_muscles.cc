@@ -128,14 +128,33 @@ ImportedMuscle ReadDeGroote(const XMLElement& element, const std::string& path) 
     muscle.activation_dynamics = lag;
   }
   ValidateImported(muscle, kPropertyNames);
+  if (!read.Flag("appliesForce", true)) {
+    muscle.notes.push_back(
+        "appliesForce is false: OpenSim applies no force of this muscle; the scenario's muscle "
+        "pulls");
+  }
+  if (xml::Child(element, "default_activation") != nullptr) {
+    muscle.notes.push_back("default_activation " +
+                           FormatNumber(read.Number("default_activation", 0.0)) +
+                           ": the scenario starts at activation 0 (edit initial.activation)");
+  }
   muscle.notes.push_back(GeometryNote(element));
   return muscle;
 }
 
-// Every force under a ForceSet's <objects>, depth first (a model may nest sets).
+bool IsMuscleClass(const std::string& type) {
+  return type.size() >= 6 && type.compare(type.size() - 6, 6, "Muscle") == 0;
+}
+
+// Every force under a ForceSet's <objects>, and every muscle elsewhere (a model's
+// <components>), depth first (a model may nest sets).
 void CollectForces(const XMLElement& element, std::vector<const XMLElement*>& forces) {
   for (const XMLElement* child = element.FirstChildElement(); child;
        child = child->NextSiblingElement()) {
+    if (IsMuscleClass(child->Name())) {
+      forces.push_back(child);
+      continue;
+    }
     if (std::string(child->Name()) == "ForceSet") {
       if (const XMLElement* objects = child->FirstChildElement("objects")) {
         for (const XMLElement* f = objects->FirstChildElement(); f; f = f->NextSiblingElement()) {
@@ -170,7 +189,7 @@ ImportedModel ReadOpenSimMuscles(const tinyxml2::XMLDocument& document, const st
       model.muscles.push_back(ReadDeGroote(*force, path));
       continue;
     }
-    const bool muscle = type.size() >= 6 && type.compare(type.size() - 6, 6, "Muscle") == 0;
+    const bool muscle = IsMuscleClass(type);
     model.unsupported.push_back(
         type + " '" + PrintableText(name == nullptr ? "" : name) + "' (" +
         xml::Where(path, *force) + "): " +

@@ -27,9 +27,11 @@
 namespace musclesim {
 namespace {
 
+using ::testing::Contains;
 using ::testing::ElementsAre;
 using testing::FixturePath;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 std::string Fixture(const std::string& name) { return FixturePath("import/" + name); }
 
@@ -188,6 +190,64 @@ TEST(ImportMujoco, MusclesWithDefaultClassesAreWhatMujocoCompiles) {
   EXPECT_THAT(model.unsupported[2], HasSubstr("not a muscle"));
 }
 
+TEST(ImportOpenSim, AMuscleOutsideTheForceSetIsFoundAndWhatItIgnoresIsNoted) {
+  const std::string path = testing::WriteTempFile(
+      "components.osim",
+      "<OpenSimDocument><Model><components>\n"
+      "<DeGrooteFregly2016Muscle name='m'>\n<appliesForce>false</appliesForce>\n"
+      "<default_activation>0.3</default_activation>\n"
+      "<max_isometric_force>250</max_isometric_force>\n"
+      "<ignore_tendon_compliance>true</ignore_tendon_compliance>\n"
+      "<ignore_activation_dynamics>true</ignore_activation_dynamics>\n"
+      "</DeGrooteFregly2016Muscle></components></Model></OpenSimDocument>\n");
+  const ImportedModel model = ImportMuscles(path);
+  ASSERT_EQ(model.muscles.size(), 1u);
+  const ImportedMuscle& m = model.muscles[0];
+  EXPECT_EQ(m.params.f_iso, 250.0);
+  EXPECT_THAT(m.notes, Contains(HasSubstr("appliesForce is false")));
+  EXPECT_THAT(m.notes, Contains(HasSubstr("default_activation 0.3: the scenario starts at "
+                                          "activation 0")));
+}
+
+TEST(ImportMujoco, ClampsTimingAndIncludesAreListedNotDropped) {
+  const std::string path = testing::WriteTempFile(
+      "clamps.xml",
+      "<mujoco>\n<include file='arm.xml'/>\n<actuator>\n"
+      "<muscle name='m' joint='j' force='100' lengthrange='0.1 0.2' forcerange='0 50' "
+      "actlimited='true' actrange='0 0.8' actearly='true'/>\n"
+      "<muscle name='free' joint='j' force='100' lengthrange='0.1 0.2' forcerange='0 50' "
+      "forcelimited='false'/>\n"
+      "</actuator>\n</mujoco>\n");
+  const ImportedModel model = ImportMuscles(path);
+  ASSERT_EQ(model.muscles.size(), 2u);
+  const std::vector<std::string>& notes = Named(model, "m").notes;
+  EXPECT_THAT(notes, Contains(HasSubstr("forcerange 0 50: musclesim does not clamp the force")));
+  EXPECT_THAT(notes,
+              Contains(HasSubstr("actrange 0 0.8: musclesim does not clamp the activation")));
+  EXPECT_THAT(notes, Contains(HasSubstr("actearly")));
+  // forcelimited false: MuJoCo does not clamp either
+  EXPECT_THAT(Named(model, "free").notes, Not(Contains(HasSubstr("forcerange"))));
+  ASSERT_EQ(model.unsupported.size(), 1u);
+  EXPECT_THAT(model.unsupported[0], HasSubstr("include 'arm.xml' (" + path + ":2): not followed"));
+}
+
+TEST(ImportMujoco, AGeneralMuscleTakesMujocosDefaultsAndItsNamesInMessages) {
+  // dyntype muscle without dynprm: MuJoCo's default dynprm is [1, 0, ...], a deactivation
+  // time constant of 0, which the message names as MuJoCo does
+  const std::string path = testing::WriteTempFile(
+      "general.xml",
+      "<mujoco>\n<actuator>\n<general name='g' joint='j' gaintype='muscle' biastype='muscle' "
+      "dyntype='muscle' gainprm='0.7 1.1 300 200 0.5 1.7 2 1.1 1.3' "
+      "biasprm='0.7 1.1 300 200 0.5 1.7 2 1.1 1.3' lengthrange='0.0 0.2'/>\n"
+      "</actuator>\n</mujoco>\n");
+  try {
+    ImportMuscles(path);
+    ADD_FAILURE() << "imported a zero deactivation time constant";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("'g': dynprm[1] = 0: "));
+  }
+}
+
 std::string ImportError(const std::string& name, const std::string& text) {
   const std::string path = testing::WriteTempFile(name, text);
   try {
@@ -204,6 +264,8 @@ TEST(ImportErrors, NameTheFileLineValueAndRule) {
               HasSubstr("not well-formed XML"));
   EXPECT_THAT(ImportError("other.xml", "<robot/>\n"),
               HasSubstr("root element <robot> is neither OpenSim's"));
+  EXPECT_THAT(ImportError("comment.xml", "<?xml version='1.0'?>\n<!-- only a comment -->\n"),
+              HasSubstr("comment.xml: no root element"));
   EXPECT_THAT(ImportError("nothing.xml",
                           "<mujoco>\n<actuator>\n<motor name='m' joint='j'/>\n</actuator>\n"
                           "</mujoco>\n"),
@@ -239,11 +301,23 @@ TEST(ImportCli, WritesARunnableScenarioPerMuscleAndListsTheRest) {
       testing::RunMusclesim("import " + Fixture("muscles.xml") + " -o " + dir);
   ASSERT_EQ(out.exit_code, 0) << out.err;
   EXPECT_THAT(out.err, HasSubstr("not imported: motor 'drive'"));
+  const ImportedModel imported = ImportMuscles(Fixture("muscles.xml"));
   for (const char* name : {"plain", "quick", "generic"}) {
     const std::string scenario = dir + "/" + name + ".yaml";
     ASSERT_TRUE(std::filesystem::exists(scenario)) << scenario;
     // the written scenario reads back to the imported model, and runs
-    EXPECT_NO_THROW(LoadScenario(scenario));
+    const ModelParams& written = LoadScenario(scenario).models.at("model").model->params();
+    const ModelParams& own = Named(imported, name).params;
+    EXPECT_EQ(written.family, own.family) << name;
+    EXPECT_EQ(written.f_iso, own.f_iso) << name;
+    EXPECT_THAT(written.mujoco.range, ElementsAre(own.mujoco.range[0], own.mujoco.range[1]));
+    EXPECT_THAT(written.mujoco.lengthrange,
+                ElementsAre(own.mujoco.lengthrange[0], own.mujoco.lengthrange[1]));
+    EXPECT_EQ(written.mujoco.lmin, own.mujoco.lmin) << name;
+    EXPECT_EQ(written.mujoco.lmax, own.mujoco.lmax) << name;
+    EXPECT_EQ(written.mujoco.vmax, own.mujoco.vmax) << name;
+    EXPECT_EQ(written.mujoco.fpmax, own.mujoco.fpmax) << name;
+    EXPECT_EQ(written.mujoco.fvmax, own.mujoco.fvmax) << name;
     const testing::CliOutcome run =
         testing::RunMusclesim("run " + scenario + " -o " + dir + "/" + name + ".csv");
     EXPECT_EQ(run.exit_code, 0) << run.err;
@@ -260,6 +334,9 @@ TEST(ImportCli, ToGaussiansWritesThePapersModelFittedAndItsErrors) {
   ASSERT_EQ(out.exit_code, 0) << out.err;
   EXPECT_THAT(out.err, HasSubstr("the paper's model, 4 Gaussians -> " + dir +
                                  "/muscle_gaussians.yaml: RMSE passive"));
+  // both branches of the velocity curve are fitted, and each reports its error
+  EXPECT_THAT(out.err, HasSubstr(" shortening, "));
+  EXPECT_THAT(out.err, HasSubstr(" lengthening"));
   const Scenario fitted = LoadScenario(dir + "/muscle_gaussians.yaml");
   const ModelParams& params = fitted.models.at("model").model->params();
   EXPECT_EQ(params.family, CurveFamily::kPaper);
@@ -270,6 +347,38 @@ TEST(ImportCli, ToGaussiansWritesThePapersModelFittedAndItsErrors) {
   const testing::CliOutcome run = testing::RunMusclesim(
       "run " + dir + "/muscle_gaussians.yaml -o " + dir + "/muscle_gaussians.csv");
   EXPECT_EQ(run.exit_code, 0) << run.err;
+}
+
+TEST(ImportCli, ToGaussiansSaysWhatTheFitLeavesOut) {
+  const std::string dir = testing::FreshDirectory("import_gaussians_damping");
+  const testing::CliOutcome out = testing::RunMusclesim(
+      "import " + Fixture("opensim_excited.osim") + " --to-gaussians 1 -o " + dir);
+  ASSERT_EQ(out.exit_code, 0) << out.err;
+  // beta = 0.05 of F0 = 400 N per v_max l_opt = 10 x 0.1 m/s: 20 N s/m
+  EXPECT_THAT(out.err,
+              HasSubstr("not fitted: fiber_damping 0.05 (about actuator.damping 20 N s/m"));
+}
+
+TEST(ImportCli, ToGaussiansFileNamesStayUniqueWhenAMuscleIsNamedAfterAFit) {
+  const std::string dir = testing::FreshDirectory("import_gaussians_names");
+  const std::string file = testing::WriteTempFile(
+      "names.xml",
+      "<mujoco>\n<actuator>\n"
+      "<muscle name='a_gaussians' joint='j' force='100' lengthrange='0.1 0.2'/>\n"
+      "<muscle name='a' joint='j' force='200' lengthrange='0.1 0.2'/>\n"
+      "</actuator>\n</mujoco>\n");
+  const testing::CliOutcome out =
+      testing::RunMusclesim("import " + file + " --to-gaussians 2 -o " + dir);
+  ASSERT_EQ(out.exit_code, 0) << out.err;
+  // the first muscle keeps its own name; the second's fit takes the next free one
+  EXPECT_EQ(LoadScenario(dir + "/a_gaussians.yaml").models.at("model").model->params().f_iso,
+            100.0);
+  EXPECT_EQ(LoadScenario(dir + "/a.yaml").models.at("model").model->params().f_iso, 200.0);
+  const Scenario fit = LoadScenario(dir + "/a_gaussians_2.yaml");
+  EXPECT_EQ(fit.models.at("model").model->params().family, CurveFamily::kPaper);
+  // the fit of 'a' (f_iso 200 N, not 100 N): the identified f_iso is the fitted curve's
+  EXPECT_NEAR(fit.models.at("model").model->params().f_iso, 200.0, 10.0);
+  EXPECT_TRUE(std::filesystem::exists(dir + "/a_gaussians_gaussians.yaml"));
 }
 
 TEST(ImportCli, ToGaussiansOutOfRangeExitsTwoAndWritesNothing) {
