@@ -306,7 +306,8 @@ TEST(ImportCli, WritesARunnableScenarioPerMuscleAndListsTheRest) {
     const std::string scenario = dir + "/" + name + ".yaml";
     ASSERT_TRUE(std::filesystem::exists(scenario)) << scenario;
     // the written scenario reads back to the imported model, and runs
-    const ModelParams& written = LoadScenario(scenario).models.at("model").model->params();
+    const Scenario loaded = LoadScenario(scenario);  // held: the params are the model's
+    const ModelParams& written = loaded.models.at("model").model->params();
     const ModelParams& own = Named(imported, name).params;
     EXPECT_EQ(written.family, own.family) << name;
     EXPECT_EQ(written.f_iso, own.f_iso) << name;
