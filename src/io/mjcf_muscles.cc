@@ -226,8 +226,6 @@ std::optional<ImportedMuscle> ToMuscle(
   return muscle;
 }
 
-}  // namespace
-
 // Every <include> in the file, depth first: musclesim reads the one file it is given.
 void ListIncludes(const XMLElement& element, const std::string& path,
                   std::vector<std::string>& unsupported) {
@@ -242,6 +240,8 @@ void ListIncludes(const XMLElement& element, const std::string& path,
     ListIncludes(*child, path, unsupported);
   }
 }
+
+}  // namespace
 
 ImportedModel ReadMjcfMuscles(const tinyxml2::XMLDocument& document, const std::string& path) {
   ImportedModel model;
