@@ -7,8 +7,16 @@ constant; the mass starts at rest away from equilibrium and falls or rises (Mill
 2013's hanging-mass benchmark without its tendon). musclesim's actuator length is the fiber's
 length along the line, the muscle-tendon length less the tendon slack length.
 
+The compliant cases keep the tendon elastic (OpenSim's explicit tendon dynamics, its state the
+normalised tendon force), the muscle's equilibrium with it found by equilibrateMuscles at the
+start; in musclesim the fiber and the tendon meet at a massless junction (docs/model.md 14.3).
+Their fiber damping is 0: OpenSim's explicit mode finds the fiber velocity by inverting the
+force-velocity curve alone, leaving the damping out of the balance it then reports a force
+for, so with damping the two tools solve different equations (docs/guide/peers.md).
+
     "$(bash bench/peers/setup.sh)" bench/peers/opensim_reference.py
 """
+import math
 import os
 import sys
 
@@ -26,6 +34,20 @@ CASES = [
     ("opensim_drop_rigid", 5.0, 400.0, 0.10, 0.05, 10.0, 0.0, 0.01, 0.6, 0.16),
     ("opensim_drop_pennate", 5.0, 400.0, 0.10, 0.05, 10.0, 0.35, 0.05, 0.8, 0.13),
 ]
+# with a compliant tendon, no fiber damping: name, the rigid case it changes, tendon slack
+# length [m], tendon strain at the maximum isometric force [-], initial height [m]
+COMPLIANT = [
+    ("opensim_drop_compliant", "opensim_drop_rigid", 0.2, 0.049, 0.32),
+    ("opensim_drop_compliant_pennate", "opensim_drop_pennate", 0.2, 0.033, 0.3),
+]
+# the compliant muscle-tendon unit of opensim_drop_compliant with its length prescribed (the
+# slider's coordinate, OpenSim's prescribed function): name, initial length [m], and either
+# an isokinetic stretch ("ramp", speed [m/s]) or a sinusoidal length change ("sine",
+# amplitude [m], frequency [Hz])
+PRESCRIBED = [
+    ("opensim_stretch_compliant", 0.30, ("ramp", 0.05)),
+    ("opensim_sine_compliant", 0.30, ("sine", 0.01, 4.0)),
+]
 # with OpenSim's activation dynamics (tanh-blended, De Groote 2016): the pennate case driven
 # by an excitation through piecewise-linear points (t [s], e [-]) from an initial activation
 EXCITED = ("opensim_drop_excited", "opensim_drop_pennate",
@@ -34,7 +56,7 @@ END, INTERVAL, ACCURACY = 0.5, 0.005, 1e-12
 
 
 def hanging_mass(mass, f_iso, l_opt, l_s, v_max, pennation, damping, activation, height,
-                 excitation=None, initial_activation=None):
+                 excitation=None, initial_activation=None, tendon_strain=None, motion=None):
     model = osim.Model()
     model.setName("hanging_mass")
     model.setGravity(osim.Vec3(0, -GRAVITY, 0))
@@ -46,6 +68,13 @@ def hanging_mass(mass, f_iso, l_opt, l_s, v_max, pennation, damping, activation,
                              osim.Vec3(0), down)
     joint.updCoordinate().setName("height")
     joint.updCoordinate().setDefaultValue(height)
+    if motion is not None:  # the length prescribed from `height` on: the mass then plays no part
+        if motion[0] == "ramp":
+            function = osim.LinearFunction(motion[1], height)
+        else:
+            function = osim.Sine(motion[1], 2.0 * math.pi * motion[2], 0.0, height)
+        joint.updCoordinate().setPrescribedFunction(function)
+        joint.updCoordinate().setDefaultIsPrescribed(True)
     model.addJoint(joint)
     muscle = osim.DeGrooteFregly2016Muscle()
     muscle.setName("muscle")
@@ -55,7 +84,9 @@ def hanging_mass(mass, f_iso, l_opt, l_s, v_max, pennation, damping, activation,
     muscle.set_max_contraction_velocity(v_max)
     muscle.set_pennation_angle_at_optimal(pennation)
     muscle.set_fiber_damping(damping)
-    muscle.set_ignore_tendon_compliance(True)
+    muscle.set_ignore_tendon_compliance(tendon_strain is None)
+    if tendon_strain is not None:
+        muscle.set_tendon_strain_at_one_norm_force(tendon_strain)
     muscle.set_ignore_activation_dynamics(excitation is None)
     if excitation is not None:
         muscle.set_default_activation(initial_activation)
@@ -99,6 +130,15 @@ def cases():
     name, base, excitation, initial_activation = EXCITED
     case = next(c for c in CASES if c[0] == base)[1:]
     yield name, case, {"excitation": excitation, "initial_activation": initial_activation}
+    for name, base, l_s, strain, height in COMPLIANT:
+        case = list(next(c for c in CASES if c[0] == base)[1:])
+        case[3], case[6], case[8] = l_s, 0.0, height
+        yield name, case, {"tendon_strain": strain}
+    base = next(c for c in COMPLIANT if c[0] == "opensim_drop_compliant")
+    for name, length, motion in PRESCRIBED:
+        case = list(next(c for c in CASES if c[0] == base[1])[1:])
+        case[3], case[6], case[8] = base[2], 0.0, length
+        yield name, case, {"tendon_strain": base[3], "motion": motion}
 
 
 def main():
@@ -106,7 +146,10 @@ def main():
     for name, case, dynamics in cases():
         model, muscle, height = hanging_mass(*case, **dynamics)
         state = model.initSystem()
-        if dynamics:  # the file tests/io/muscle_import_test.cc imports the muscle from
+        compliant = "tendon_strain" in dynamics
+        if compliant:  # the fiber in equilibrium with the tendon, at rest
+            model.equilibrateMuscles(state)
+        elif dynamics:  # the file tests/io/muscle_import_test.cc imports the muscle from
             fixture = os.path.join(HERE, "..", "..", "tests", "fixtures", "import",
                                    "opensim_excited.osim")
             model.printToXML(fixture)
@@ -118,25 +161,36 @@ def main():
         l_s = case[3]
         path = os.path.join(HERE, "reference", name + ".csv")
         with open(path, "w") as out:
+            excited = "excitation" in dynamics
             drive = ("activation dynamics, excitation %s from activation %s"
                      % (dynamics["excitation"], dynamics["initial_activation"])
-                     if dynamics else "constant activation")
-            out.write("# OpenSim %s DeGrooteFregly2016Muscle, rigid tendon, %s; case %s, "
+                     if excited else "constant activation")
+            tendon = ("compliant tendon (strain %g at F0, explicit)" % dynamics["tendon_strain"]
+                      if compliant else "rigid tendon")
+            if "motion" in dynamics:
+                tendon += ", length prescribed: %s %s" % (dynamics["motion"][0],
+                                                         repr(dynamics["motion"][1:]))
+            out.write("# OpenSim %s DeGrooteFregly2016Muscle, %s, %s; case %s, "
                       "accuracy %g (bench/peers/opensim_reference.py)\n"
-                      % (osim.GetVersion(), drive, repr(tuple(case)), ACCURACY))
+                      % (osim.GetVersion(), tendon, drive, repr(tuple(case)), ACCURACY))
             out.write("t,length,shortening_velocity,fiber_length,pennation_angle,"
-                      "tendon_force%s\n" % (",activation" if dynamics else ""))
+                      "tendon_force%s\n" % (",activation" if excited else
+                                             ",fiber_velocity" if compliant else ""))
             steps = int(round(END / INTERVAL))
             for k in range(steps + 1):
                 t = k * INTERVAL
                 if k > 0:
                     state = manager.integrate(t)
                 model.realizeDynamics(state)
-                row = [state.getTime(), height.getValue(state) - l_s,
+                # length: the fiber along the line (rigid tendon) or the whole
+                # muscle-tendon unit, the mass's drop (compliant)
+                row = [state.getTime(), height.getValue(state) - (0.0 if compliant else l_s),
                        -height.getSpeedValue(state), muscle.getFiberLength(state),
                        muscle.getPennationAngle(state), muscle.getTendonForce(state)]
-                if dynamics:
+                if excited:
                     row.append(muscle.getActivation(state))
+                elif compliant:
+                    row.append(muscle.getFiberVelocity(state))
                 out.write(",".join("%.17g" % v for v in row) + "\n")
         print(path, file=sys.stderr)
 

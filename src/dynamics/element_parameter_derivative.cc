@@ -40,7 +40,7 @@ class ElementDerivative final : public ParameterDerivative {
       return parameter_ == ElementParameter::kStiffness ? l - e.rest_length : -e.stiffness;
     }
     const double stretch = l - e.slack_length;
-    if (stretch <= 0.0) return 0.0;  // slack: no tension, whatever the parameters
+    if (stretch <= 0.0 && !e.pushes_below_slack) return 0.0;  // slack: no tension at all
     if (!e.exponential()) {
       return parameter_ == ElementParameter::kStiffness ? stretch : -e.stiffness;
     }

@@ -25,7 +25,7 @@ inline NetworkSystem::Tension NetworkSystem::TensionOf(int e, double t, double l
       return {element.stiffness * (l - element.rest_length), element.stiffness, 0.0, 0.0};
     case ElementKind::kTendon: {
       const double stretch = l - element.slack_length;
-      if (stretch <= 0.0) return {0.0, 0.0, 0.0, 0.0};
+      if (stretch <= 0.0 && !element.pushes_below_slack) return {0.0, 0.0, 0.0, 0.0};
       if (!element.exponential()) {
         return {element.stiffness * stretch, element.stiffness, 0.0, 0.0};
       }

@@ -131,6 +131,7 @@ void NetworkSystem::Resolve() {
   AddFreeNodes(std::move(node_loads), AnchoredNodes(nodes_, joined));
   if (space_.dimensions > 1) ResolveSpace();
   ResolveControllers(states);
+  ResolveJunctions();
   FindSingleNode();
 }
 
@@ -143,16 +144,28 @@ int NetworkSystem::NodeNamed(const std::string& name, const std::string& path) c
 }
 
 int NetworkSystem::NumberEnds() {
-  int states = 0;
-  for (const Node& node : nodes_) {
+  int states = 0, free = 0;
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    const Node& node = nodes_[i];
     End end{node.kind, -1, node.position, static_cast<int>(ends_.size()),
             node.PositionCoordinates()};
     if (node.kind == NodeKind::kFree) {
       end.state = states;
-      states += 2 * space_.dimensions;  // d coordinates, d velocities
+      end.free = free++;
+      if (node.mass > 0.0) {
+        end.rate = states + space_.dimensions;
+        states += 2 * space_.dimensions;  // d coordinates, d velocities
+      } else if (space_.dimensions > 1) {
+        throw ParameterError(Entry("nodes", i, "mass"), "0",
+                             "a massless junction (mass 0) needs dimensions 1: in the plane "
+                             "and in space every free node needs a mass > 0");
+      } else {
+        states += 1;  // a junction's position; its velocity solves its balance
+      }
     }
     ends_.push_back(end);
   }
+  node_states_ = states;
   return states;
 }
 
@@ -185,7 +198,7 @@ void NetworkSystem::AddLink(std::size_t e, int& states) {
   const bool inert = (element.kind == ElementKind::kDamper && element.damping == 0.0) ||
                      (element.kind == ElementKind::kSpring && element.stiffness == 0.0);
   if (!inert) active_links_.push_back(static_cast<int>(e));
-  if (element.kind == ElementKind::kTendon) {
+  if (element.kind == ElementKind::kTendon && !element.pushes_below_slack) {
     kinks_.push_back({Kink::kLength, static_cast<int>(e), element.slack_length});
   } else if (element.kind == ElementKind::kActuator) {
     if (const std::optional<double> kink = element.model->LengthKink()) {
@@ -226,8 +239,15 @@ void NetworkSystem::AddFreeNodes(std::vector<std::vector<Load>> node_loads,
                            "prescribed node");
     }
     LoadSet set(std::move(node_loads[i]));
-    const double inverse_mass = 1.0 / (nodes_[i].mass + set.AddedMass());
-    free_nodes_.push_back({static_cast<int>(i), std::move(set), inverse_mass, {}, {}, {}});
+    const bool massless = nodes_[i].mass == 0.0;
+    if (massless && set.AddedMass() > 0.0) {
+      throw ParameterError(Entry("nodes", i, "mass"), "0",
+                           "a massless junction carries no mass load: give node " + nodes_[i].name +
+                               " the load's mass instead");
+    }
+    const double inverse_mass = massless ? 0.0 : 1.0 / (nodes_[i].mass + set.AddedMass());
+    free_nodes_.push_back(
+        {static_cast<int>(i), std::move(set), inverse_mass, {}, {}, {}, massless});
   }
   if (free_nodes_.empty()) {
     throw ParameterError("nodes", std::to_string(nodes_.size()) + " nodes",
@@ -237,7 +257,7 @@ void NetworkSystem::AddFreeNodes(std::vector<std::vector<Load>> node_loads,
 
 void NetworkSystem::FindSingleNode() {
   if (space_.dimensions > 1 || free_nodes_.size() != 1 || !activations_.empty() ||
-      !controllers_.empty())
+      !controllers_.empty() || !junctions_.empty())
     return;
   const int free = free_nodes_.front().node;
   for (const int e : active_links_) {
@@ -255,27 +275,31 @@ void NetworkSystem::BuildPattern() {
   const int d = space_.dimensions;
   for (const FreeNode& f : free_nodes_) {
     const int s = ends_[f.node].state;
-    for (int r = s; r < s + 2 * d; ++r) {
-      for (int c = s; c < s + 2 * d; ++c) pairs.emplace_back(c, r);
+    const int n = f.massless ? 1 : 2 * d;  // a junction: its position alone
+    for (int r = s; r < s + n; ++r) {
+      for (int c = s; c < s + n; ++c) pairs.emplace_back(c, r);
     }
   }
   if (d > 1) AddSpacePattern(pairs);
   for (const Link& link : links_) {
     if (d > 1) break;  // AddSpacePattern's
+    // rows: the ends' accelerations; columns: their positions and velocities (a junction
+    // has neither row nor velocity column: AddJunctionPattern adds what goes through w)
     for (int row_end : {link.from, link.to}) {
       for (int col_end : {link.from, link.to}) {
-        const int r = ends_[row_end].state, c = ends_[col_end].state;
-        if (r < 0 || c < 0) continue;
-        pairs.emplace_back(c, r + 1);
-        pairs.emplace_back(c + 1, r + 1);
+        const int r = ends_[row_end].rate;
+        if (r < 0) continue;
+        if (ends_[col_end].state >= 0) pairs.emplace_back(ends_[col_end].state, r);
+        if (ends_[col_end].rate >= 0) pairs.emplace_back(ends_[col_end].rate, r);
       }
     }
     // the tension's u: in both ends' acceleration rows
     for (int row_end : {link.from, link.to}) {
-      const int r = ends_[row_end].state;
-      if (link.activation >= 0 && r >= 0) pairs.emplace_back(link.activation, r + 1);
+      const int r = ends_[row_end].rate;
+      if (link.activation >= 0 && r >= 0) pairs.emplace_back(link.activation, r);
     }
   }
+  AddJunctionPattern(pairs);
   // udot depends on u alone (and t), or on a controller's columns too
   for (const Activation& a : activations_) pairs.emplace_back(a.state, a.state);
   AddControlPattern(pairs);
@@ -298,20 +322,22 @@ void NetworkSystem::BuildPattern() {
   };
 
   for (FreeNode& node : free_nodes_) {
+    if (node.massless) continue;
     const int s = ends_[node.node].state;
     for (int r = 0; r < d; ++r) {
       node.slot_rate[r] = slot(s + r, s + d + r);
       for (int c = 0; c < d; ++c) node.slot_position[3 * r + c] = slot(s + d + r, s + c);
     }
   }
-  // an entry in a velocity row (free node f has states 2df .. 2df + 2d - 1, its velocities
-  // the last d) is scaled by 1/m_f; the activation rows after the nodes' are not
-  const int node_states = node_state_count();
-  row_scale_.assign(pairs.size(), -1);
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const int r = pattern_.rows[k];
-    if (r < node_states && r % (2 * d) >= d) row_scale_[k] = r / (2 * d);
+  // an entry in a velocity row (free node f's last d states, after its d positions) is
+  // scaled by 1/m_f; a junction's position row and the activation rows are not
+  std::vector<int> row_owner(static_cast<std::size_t>(state_size()), -1);
+  for (std::size_t f = 0; f < free_nodes_.size(); ++f) {
+    const int rate = ends_[free_nodes_[f].node].rate;
+    for (int c = 0; c < d && rate >= 0; ++c) row_owner[rate + c] = static_cast<int>(f);
   }
+  row_scale_.assign(pairs.size(), -1);
+  for (std::size_t k = 0; k < pairs.size(); ++k) row_scale_[k] = row_owner[pattern_.rows[k]];
   for (Activation& a : activations_) a.slot = slot(a.state, a.state);
   if (d > 1) FindSpaceSlots(slot);
   for (Link& link : links_) {
@@ -319,17 +345,16 @@ void NetworkSystem::BuildPattern() {
 
     const int ends[2] = {link.from, link.to};
     for (int r = 0; r < 2; ++r) {
+      const int row = ends_[ends[r]].rate;
       for (int c = 0; c < 2; ++c) {
-        const int row = ends_[ends[r]].state, col = ends_[ends[c]].state;
-        const bool present = row >= 0 && col >= 0;
-        link.slot[r][2 * c] = present ? slot(row + 1, col) : -1;
-        link.slot[r][2 * c + 1] = present ? slot(row + 1, col + 1) : -1;
+        const int position = ends_[ends[c]].state, rate = ends_[ends[c]].rate;
+        link.slot[r][2 * c] = row >= 0 && position >= 0 ? slot(row, position) : -1;
+        link.slot[r][2 * c + 1] = row >= 0 && rate >= 0 ? slot(row, rate) : -1;
       }
-      const int row = ends_[ends[r]].state;
-      link.slot_activation[r] =
-          link.activation >= 0 && row >= 0 ? slot(row + 1, link.activation) : -1;
+      link.slot_activation[r] = link.activation >= 0 && row >= 0 ? slot(row, link.activation) : -1;
     }
   }
+  FindJunctionSlots(slot);
   FindControlSlots(pairs);
 }
 
@@ -341,7 +366,7 @@ void NetworkSystem::InitialState(double t_start, double* y) const {
     const Coordinates velocity = nodes_[f.node].VelocityCoordinates();
     for (int c = 0; c < d; ++c) {
       y[s + c] = position[c];
-      y[s + d + c] = velocity[c];
+      if (!f.massless) y[s + d + c] = velocity[c];
     }
   }
   for (const Activation& a : activations_) {
@@ -358,6 +383,14 @@ void NetworkSystem::CheckInitialState(double t, const double* y) const {
       throw ParameterError("elements[" + std::to_string(e) + "]", element.name,
                            "must be longer than 0 at the start: its length x(" + element.to +
                                ") - x(" + element.from + ") is " + FormatNumber(l) + " m");
+    }
+  }
+  for (std::size_t k = 0; k < junctions_.size(); ++k) {
+    const std::string failure = JunctionFailure(static_cast<int>(k), t, y);
+    if (!failure.empty()) {
+      const int node = free_nodes_[junctions_[k].free].node;
+      throw ParameterError("nodes[" + std::to_string(node) + "]", nodes_[node].name,
+                           "at the start, " + failure);
     }
   }
   ElementSample sample;
@@ -385,7 +418,8 @@ double NetworkSystem::PositionOf(const End& end, double t, const double* y) cons
 
 double NetworkSystem::VelocityOf(const End& end, double t, const double* y) const {
   switch (end.kind) {
-    case NodeKind::kFree: return y[end.state + 1];
+    case NodeKind::kFree:
+      return end.junction >= 0 ? JunctionVelocity(end.junction, t, y) : y[end.rate];
     case NodeKind::kFixed: return 0.0;
     case NodeKind::kPrescribed: return nodes_[end.node].motion.Slope(t);
   }
@@ -438,22 +472,29 @@ void NetworkSystem::SingleNodeRightHandSide(double t, const double* y, double* y
 void NetworkSystem::RightHandSide(double t, const double* y, double* ydot) const {
   if (single_node_) return SingleNodeRightHandSide(t, y, ydot);
   if (space_.dimensions > 1) return SpaceRightHandSide(t, y, ydot);
+  const double* w = JunctionVelocities(t, y);
   for (const FreeNode& f : free_nodes_) {
-    const int s = ends_[f.node].state;
-    ydot[s] = y[s + 1];
-    ydot[s + 1] = f.loads.Force(t, y[s]);
+    const End& end = ends_[f.node];
+    if (f.massless) {
+      ydot[end.state] = w[end.junction];
+      continue;
+    }
+    ydot[end.state] = y[end.rate];
+    ydot[end.rate] = f.loads.Force(t, y[end.state]);
   }
   for (const int e : active_links_) {
     const End& a = ends_[links_[e].from];
     const End& b = ends_[links_[e].to];
     const double l = PositionOf(b, t, y) - PositionOf(a, t, y);
-    const double ldot = VelocityOf(b, t, y) - VelocityOf(a, t, y);
+    const double ldot = RateOf(b, t, y, w) - RateOf(a, t, y, w);
     const double tension = TensionOf(e, t, l, ldot, y).value;
     // +T pulls `from` towards `to`, -T pulls `to` back
-    if (a.state >= 0) ydot[a.state + 1] += tension;
-    if (b.state >= 0) ydot[b.state + 1] -= tension;
+    if (a.rate >= 0) ydot[a.rate] += tension;
+    if (b.rate >= 0) ydot[b.rate] -= tension;
   }
-  for (const FreeNode& f : free_nodes_) ydot[ends_[f.node].state + 1] *= f.inverse_mass;
+  for (const FreeNode& f : free_nodes_) {
+    if (!f.massless) ydot[ends_[f.node].rate] *= f.inverse_mass;
+  }
   for (const Activation& a : activations_) {
     const ExcitationInput& input = *elements_[a.element].excitation;
     ydot[a.state] =
@@ -466,15 +507,17 @@ void NetworkSystem::Jacobian(double t, const double* y, double* values) const {
   if (space_.dimensions > 1) return SpaceJacobian(t, y, values);
   std::fill(values, values + pattern_.entries(), 0.0);
   for (const FreeNode& f : free_nodes_) {
+    if (f.massless) continue;  // JunctionJacobian's
     values[f.slot_rate[0]] = 1.0;
     values[f.slot_position[0]] = f.loads.ForceSlope();
   }
+  const double* w = JunctionVelocities(t, y);
   for (const int e : active_links_) {
     const Link& link = links_[e];
     const End& a = ends_[link.from];
     const End& b = ends_[link.to];
     const double l = PositionOf(b, t, y) - PositionOf(a, t, y);
-    const double ldot = VelocityOf(b, t, y) - VelocityOf(a, t, y);
+    const double ldot = RateOf(b, t, y, w) - RateOf(a, t, y, w);
     const Tension tension = TensionOf(e, t, l, ldot, y);
     // d(force on from)/d(x_from, v_from, x_to, v_to) = (-dT/dl, -dT/dldot, dT/dl, dT/dldot);
     // the force on `to` is the opposite
@@ -498,6 +541,7 @@ void NetworkSystem::Jacobian(double t, const double* y, double* values) const {
   for (int k = 0; k < pattern_.entries(); ++k) {
     if (row_scale_[k] >= 0) values[k] *= free_nodes_[row_scale_[k]].inverse_mass;
   }
+  if (w != nullptr) JunctionJacobian(t, y, w, values);
 }
 
 std::vector<double> NetworkSystem::Breakpoints(double t0, double t1) const {
@@ -590,11 +634,9 @@ NetworkSystem::ElementPartials NetworkSystem::Along(int e, double t, const doubl
   const End& a = ends_[link.from];
   const End& b = ends_[link.to];
   // only free nodes' positions and velocities are states; the others do not move with y
-  const auto along = [&](const End& end, int offset) {
-    return end.state >= 0 ? s[end.state + offset] : 0.0;
-  };
-  const double dl = along(b, 0) - along(a, 0);
-  const double dldot = along(b, 1) - along(a, 1);
+  const auto along = [&](int state) { return state >= 0 ? s[state] : 0.0; };
+  const double dl = along(b.state) - along(a.state);
+  const double dldot = along(b.rate) - along(a.rate);  // (no junction: sensitivities refuse one)
   const double l = PositionOf(b, t, y) - PositionOf(a, t, y);
   const double ldot = VelocityOf(b, t, y) - VelocityOf(a, t, y);
   const Tension tension = TensionOf(e, t, l, ldot, y);
@@ -617,10 +659,9 @@ void NetworkSystem::AddTension(int e, double t, const double* y, double tension,
   const Link& link = links_[e];
   const End& a = ends_[link.from];
   const End& b = ends_[link.to];
-  // as RightHandSide: +T pulls `from`, -T pulls `to`, each over its node's mass (free node k
-  // holds the states 2k and 2k + 1)
-  if (a.state >= 0) ydot[a.state + 1] += tension * free_nodes_[a.state / 2].inverse_mass;
-  if (b.state >= 0) ydot[b.state + 1] -= tension * free_nodes_[b.state / 2].inverse_mass;
+  // as RightHandSide: +T pulls `from`, -T pulls `to`, each over its node's mass
+  if (a.rate >= 0) ydot[a.rate] += tension * free_nodes_[a.free].inverse_mass;
+  if (b.rate >= 0) ydot[b.rate] -= tension * free_nodes_[b.free].inverse_mass;
 }
 
 }  // namespace musclesim

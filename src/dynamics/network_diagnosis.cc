@@ -12,6 +12,11 @@ namespace musclesim {
 
 std::string NetworkSystem::NonFiniteCause(double t, const double* y) const {
   const std::string at = " at t = " + FormatNumber(t) + " s";
+  // a junction's velocity first: every tension at it depends on it
+  for (std::size_t k = 0; k < junctions_.size(); ++k) {
+    const std::string failure = JunctionFailure(static_cast<int>(k), t, y);
+    if (!failure.empty()) return failure + at;
+  }
   for (std::size_t i = 0; i < nodes_.size(); ++i) {
     const int node = static_cast<int>(i);
     for (int c = 0; c < space_.dimensions; ++c) {
@@ -43,10 +48,10 @@ std::string NetworkSystem::NonFiniteCause(double t, const double* y) const {
   std::vector<double> rate(static_cast<std::size_t>(state_size()));
   RightHandSide(t, y, rate.data());
   for (std::size_t i = 0; i < nodes_.size(); ++i) {
-    const int x = ends_[i].state;
-    // the first velocity's rate: free node states are d positions, then d velocities
-    const std::size_t a = static_cast<std::size_t>(x + space_.dimensions);
-    if (x >= 0 && !std::isfinite(rate[a])) {
+    // the first velocity's rate (a junction has none: its velocity was checked above)
+    const int v = ends_[i].rate;
+    const std::size_t a = static_cast<std::size_t>(v);
+    if (v >= 0 && !std::isfinite(rate[a])) {
       return "node " + nodes_[i].name + "'s acceleration is " + FormatNumber(rate[a]) +
              " m/s^2: the forces on it, each finite, over its mass of " +
              FormatNumber(nodes_[i].mass) + " kg overflow" + at;

@@ -89,8 +89,14 @@ void Validate(const Node& node) {
       }
       break;
     case NodeKind::kFree:
-      Require(std::isfinite(node.mass) && node.mass > 0.0, "mass", node.mass,
-              "must be finite and > 0 [kg]");
+      Require(std::isfinite(node.mass) && node.mass >= 0.0, "mass", node.mass,
+              "must be finite and >= 0 [kg] (0: a massless junction, docs/model.md 14.4)");
+      // a massless junction's velocity is the root of its balance, not an initial condition
+      Require(
+          node.mass > 0.0 || (node.velocity == 0.0 && node.velocity_yz == std::array<double, 2>{}),
+          "velocity", node.velocity,
+          "must be absent (or 0) on a massless junction: its velocity follows from its "
+          "force balance");
       Require(std::isfinite(node.position), "position", node.position, "must be finite [m]");
       Require(std::isfinite(node.velocity), "velocity", node.velocity, "must be finite [m/s]");
       for (int c = 0; c < 2; ++c) {
@@ -204,6 +210,10 @@ void Validate(const Element& e) {
                 "must be finite and > 0 [1/m]");
       } else {
         Require(e.k == 0.0, "exponential.k", e.k, "must be finite and > 0 [N]");
+        if (e.pushes_below_slack) {
+          throw ParameterError("pushes_below_slack", "true",
+                               "needs an exponential tendon (De Groote's)");
+        }
         Require(std::isfinite(e.stiffness) && e.stiffness >= 0.0, "stiffness", e.stiffness,
                 "must be finite and >= 0 [N/m]");
       }
@@ -284,6 +294,27 @@ Element Element::LinearTendon(std::string name, std::string from, std::string to
   Element e = Make(std::move(name), ElementKind::kTendon, std::move(from), std::move(to));
   e.slack_length = slack_length;
   e.stiffness = stiffness;
+  return Validated(std::move(e));
+}
+
+Element Element::DeGrooteTendon(std::string name, std::string from, std::string to,
+                                double slack_length, double max_isometric_force,
+                                double strain_at_one_norm_force) {
+  Require(std::isfinite(max_isometric_force) && max_isometric_force > 0.0 &&
+              max_isometric_force <= kPositiveForceRange.max,
+          "degroote2016.max_isometric_force", max_isometric_force,
+          "must be > 0 and at most 1e9 [N]: " + std::string(kPositiveForceRange.why));
+  Require(std::isfinite(strain_at_one_norm_force) && strain_at_one_norm_force > 0.0,
+          "degroote2016.strain_at_one_norm_force", strain_at_one_norm_force,
+          "must be finite and > 0 [-]");
+  Require(std::isfinite(slack_length) && slack_length > 0.0, "slack_length", slack_length,
+          "must be finite and > 0 [m]: De Groote's tendon is normalised by it");
+  Element e = Make(std::move(name), ElementKind::kTendon, std::move(from), std::move(to));
+  e.slack_length = slack_length;
+  // f_T = c1 exp(kT (l~ - c2)) - c3 with c1 = c3 = 0.2, c2 = 1: kT = ln((1 + c3) / c1) / strain
+  e.k = 0.2 * max_isometric_force;
+  e.alpha = std::log(6.0) / strain_at_one_norm_force / slack_length;
+  e.pushes_below_slack = true;
   return Validated(std::move(e));
 }
 

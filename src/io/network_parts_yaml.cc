@@ -144,7 +144,11 @@ Node ReadNode(const yaml::Source& src, const YAML::Node& item, const std::string
   } else {
     yaml::RequireMap(src, item, path, {"name", "mass", "position", "velocity"});
     node.kind = NodeKind::kFree;
-    node.mass = yaml::ReadNumberIn(src, item["mass"], Join(path, "mass"), kMassRange);
+    // exactly 0: a massless junction (docs/model.md 14.4); else a mass within the range
+    node.mass = yaml::ReadNumber(src, item["mass"], Join(path, "mass"));
+    if (node.mass != 0.0) {
+      node.mass = yaml::ReadNumberIn(src, item["mass"], Join(path, "mass"), kNodeMassRange);
+    }
     set_position(ReadPoint(src, Required(src, item, path, "position"), Join(path, "position"),
                            dimensions, kPositionRange, ""));
     if (const YAML::Node velocity = item["velocity"]) {
@@ -188,9 +192,9 @@ void RequireElementKeys(const yaml::Source& src, const YAML::Node& item, const s
                        {"name", "type", "from", "to", "stiffness", "rest_length", "via"});
       break;
     case ElementKind::kTendon:
-      yaml::RequireMap(
-          src, item, path,
-          {"name", "type", "from", "to", "slack_length", "stiffness", "exponential", "via"});
+      yaml::RequireMap(src, item, path,
+                       {"name", "type", "from", "to", "slack_length", "stiffness", "exponential",
+                        "degroote2016", "via"});
       break;
     case ElementKind::kDamper:
       yaml::RequireMap(src, item, path, {"name", "type", "from", "to", "damping", "via"});
@@ -229,15 +233,36 @@ void ReadActuator(const yaml::Source& src, const YAML::Node& item, const std::st
   e.excitation = std::move(drive.excitation);
 }
 
-// A tendon's slack length and its stiffness: linear or exponential, exactly one.
+// OpenSim's default tendon strain at the maximum isometric force [-].
+constexpr double kDeGrooteTendonStrain = 0.049;
+
+// A tendon's slack length and its stiffness: linear, exponential or De Groote's, exactly one.
 void ReadTendon(const yaml::Source& src, const YAML::Node& item, const std::string& path,
                 Element& e) {
   e.slack_length = NumberIn(src, item, path, "slack_length", kPositionRange);
   const YAML::Node exponential = item["exponential"];
-  if (static_cast<bool>(item["stiffness"]) == static_cast<bool>(exponential)) {
-    yaml::Fail(src, item, path, exponential ? "stiffness and exponential" : "neither",
-               "give exactly one of stiffness (a linear tendon [N/m]) or exponential "
-               "({k, alpha}: k (exp(alpha (l - slack_length)) - 1))");
+  const YAML::Node degroote = item["degroote2016"];
+  std::string laws;  // the laws given, "stiffness and exponential"
+  for (const char* key : {"stiffness", "exponential", "degroote2016"}) {
+    if (item[key]) laws += (laws.empty() ? "" : " and ") + std::string(key);
+  }
+  if (laws.empty() || laws.find(" and ") != std::string::npos) {
+    yaml::Fail(src, item, path, laws.empty() ? "neither" : laws,
+               "give exactly one of stiffness (a linear tendon [N/m]), exponential "
+               "({k, alpha}: k (exp(alpha (l - slack_length)) - 1)) or degroote2016 "
+               "({max_isometric_force, strain_at_one_norm_force}: OpenSim's De Groote tendon)");
+  }
+  if (degroote) {
+    const std::string at = Join(path, "degroote2016");
+    yaml::RequireMap(src, degroote, at, {"max_isometric_force", "strain_at_one_norm_force"});
+    const double f_iso = yaml::ReadNumberIn(src, Required(src, degroote, at, "max_isometric_force"),
+                                            Join(at, "max_isometric_force"), kPositiveForceRange);
+    const double strain = yaml::ReadOptionalNumberIn(src, degroote, at, "strain_at_one_norm_force",
+                                                     kTendonStrainRange, kDeGrooteTendonStrain);
+    ValidateAt(src, item, path, [&] {
+      e = Element::DeGrooteTendon(e.name, e.from, e.to, e.slack_length, f_iso, strain);
+    });
+    return;
   }
   if (exponential) {
     const std::string at = Join(path, "exponential");

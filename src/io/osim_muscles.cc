@@ -113,9 +113,11 @@ ImportedMuscle ReadDeGroote(const XMLElement& element, const std::string& path) 
         "OpenSim's tendon is compliant here (tendon_strain_at_one_norm_force " +
         FormatNumber(read.Number("tendon_strain_at_one_norm_force",
                                  defaults.tendon_strain_at_one_norm_force)) +
-        "); musclesim takes it rigid, of length tendon_slack_length " +
+        "); this template takes it rigid, of length tendon_slack_length " +
         FormatNumber(muscle.tendon_slack_length) +
-        " m, until compliant tendons in series are supported: the trajectories differ");
+        " m, and the trajectories differ: for OpenSim's, join the fiber and a tendon with "
+        "degroote2016: {max_isometric_force, strain_at_one_norm_force} at a massless junction "
+        "in a network (docs/guide/networks.md, scenarios/musculotendon_compliant.yaml)");
   }
   if (!read.Flag("ignore_activation_dynamics", false)) {
     ActivationDynamics lag;

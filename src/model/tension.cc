@@ -108,6 +108,10 @@ CurvePoint TensionModel::VelocityFactor(double v) const {
   return {full.d_activation / isometric, (full.d_velocity - passive.d_velocity) / isometric};
 }
 
+bool TensionModel::PassiveDependsOnRate() const {
+  return params_.family == CurveFamily::kDeGroote2016 && params_.degroote2016.fiber_damping > 0.0;
+}
+
 bool TensionModel::HasVelocityKink() const {
   return params_.family == CurveFamily::kPaper && velocity_.has_kink();
 }

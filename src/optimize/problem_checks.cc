@@ -87,6 +87,12 @@ class ColumnResolver {
 void CheckControls(const OptimalControlProblem& problem, const NetworkSystem& system,
                    ProblemIndex& index) {
   if (problem.controls.empty()) throw InputError("controls: at least one control is needed");
+  if (system.junction_count() > 0) {
+    // the optimiser's gradients come from sensitivities, which do not take junctions yet
+    throw InputError(
+        "scenario: a network with a massless junction (a node of mass 0) cannot "
+        "be optimised yet: its sensitivities are not derived; give the node a mass");
+  }
   for (std::size_t j = 0; j < problem.controls.size(); ++j) {
     const ControlSpec& control = problem.controls[j];
     const std::string path = Entry("controls", j, "actuator");

@@ -29,7 +29,8 @@ SensitivityColumns::SensitivityColumns(ScenarioForm form, const NetworkSystem& s
         continue;
       }
       add(system.nodes()[i].name + ".position", Kind::kPosition, state);
-      add(system.nodes()[i].name + ".velocity", Kind::kVelocity, state + 1);
+      add(system.nodes()[i].name + ".velocity", Kind::kVelocity,
+          system.VelocityStateIndex(static_cast<int>(i)));
     }
     for (std::size_t e = 0; e < system.elements().size(); ++e) {
       const Element& element = system.elements()[e];

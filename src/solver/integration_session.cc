@@ -124,8 +124,9 @@ void IntegrationSession::Impl::Prepare(const NetworkRunRequest& start) {
   if (!start.initial_state.empty() && static_cast<int>(start.initial_state.size()) != n) {
     throw ParameterError("initial_state", std::to_string(start.initial_state.size()) + " values",
                          "must hold " + std::to_string(n) +
-                             " values (x, xdot of every free node, then the activation of "
-                             "every actuator with activation dynamics)");
+                             " values (x, xdot of every free node, x alone of a massless "
+                             "junction, then the activation of every actuator with activation "
+                             "dynamics)");
   }
   std::vector<double> initial(static_cast<std::size_t>(n));
   if (start.initial_state.empty()) {

@@ -31,9 +31,9 @@ std::string StiffnessNote(const NetworkSystem& system, double t, const double* y
   double rate = 0.0;
   for (std::size_t i = 0; i < system.nodes().size(); ++i) {
     const int x = system.StateIndex(static_cast<int>(i));
-    if (x < 0) continue;
-    // its first velocity and its acceleration's row (d positions come before)
-    const int v = x + system.dimensions();
+    // its first velocity and its acceleration's row (a massless junction has neither)
+    const int v = system.VelocityStateIndex(static_cast<int>(i));
+    if (x < 0 || v < 0) continue;
     const double by_velocity = std::abs(Entry(pattern, values, v, v));
     const double by_position = std::sqrt(std::abs(Entry(pattern, values, v, x)));
     const double node_rate = std::max(by_velocity, by_position);
@@ -52,7 +52,7 @@ std::string StiffnessNote(const NetworkSystem& system, double t, const double* y
   }
   // the element attached to it whose tension changes most with its velocity
   const Node& node = system.nodes()[static_cast<std::size_t>(fastest)];
-  const int v = system.StateIndex(fastest) + system.dimensions();
+  const int v = system.VelocityStateIndex(fastest);
   std::vector<double> moved(y, y + pattern.size);
   const double dv = 1e-7 * std::max(std::abs(y[v]), 1e-9);
   moved[static_cast<std::size_t>(v)] += dv;

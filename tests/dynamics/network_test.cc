@@ -403,5 +403,45 @@ TEST(Network, SingleActuatorNetworkIsItsAccelerationBitForBit) {
   }
 }
 
+// De Groote's tendon against OpenSim 4.6's own DeGrooteFregly2016Muscle::
+// calcTendonForceMultiplier and its derivative (tendon_strain_at_one_norm_force 0.049, printed
+// to 17 digits from OpenSim's Python API), on both sides of the slack length: below it
+// OpenSim's tendon pushes, and so does this one, with no kink to restart at.
+TEST(NetworkElements, DeGrooteTendonIsOpenSims) {
+  struct Point {
+    double normalized_length, multiplier, slope;
+  };
+  constexpr Point kOpenSim[] = {
+      {0.9, -0.19483623797463076, 0.18882080624072622},
+      {0.99, -0.061252994731052, 5.073495112605566},
+      {1.0, 0.0, 7.313303956032887},
+      {1.02, 0.21556862460054138, 15.195898331471424},
+      {1.049, 0.9999999999999998, 43.87982373619731},
+      {1.1, 7.546290360299851, 283.2548796828016},
+  };
+  const double f_iso = 300.0, slack = 0.25;
+  const NetworkSystem system(
+      {Node::Fixed("wall", 0.0), Node::Free("end", 1.0, slack)},
+      {Element::DeGrooteTendon("tendon", "wall", "end", slack, f_iso, 0.049)});
+  EXPECT_TRUE(system.kinks().empty());
+  ElementSample sample;
+  for (const Point& p : kOpenSim) {
+    const double y[2] = {p.normalized_length * slack, 0.0};
+    system.ObserveElement(0, 0.0, y, sample);
+    EXPECT_NEAR(sample.tension, f_iso * p.multiplier, 1e-12 * f_iso) << p.normalized_length;
+    // dT/dl = F0 / l_s df/dl~, read off the Jacobian's acceleration-by-position entry (-dT/dl
+    // over the unit mass)
+    std::vector<double> values(static_cast<std::size_t>(system.jacobian_pattern().entries()));
+    system.Jacobian(0.0, y, values.data());
+    const JacobianPattern& pattern = system.jacobian_pattern();
+    for (int k = 0; k < pattern.entries(); ++k) {
+      if (pattern.rows[k] == 1 && pattern.ColumnOf(k) == 0) {
+        EXPECT_NEAR(-values[k], f_iso / slack * p.slope, 1e-12 * f_iso / slack * p.slope)
+            << p.normalized_length;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace musclesim

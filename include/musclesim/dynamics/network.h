@@ -3,13 +3,14 @@
 //   y = (x_1, xdot_1, x_2, xdot_2, ..., u_1, u_2, ..., z_1, z_2, ...):
 // (x_i, xdot_i) of every free node, in the order the nodes are given, interleaved, so a chain
 // given in order has a banded Jacobian (in d dimensions x_i and xdot_i are d coordinates each:
-// (x, y, xdot, ydot) in the plane); then the activation u_k of every actuator with
-// activation dynamics (docs/model.md section 8), in the order the elements are given; then
-// the integral z_j of every controller with an integral gain (section 11), in the order the
-// controllers are given. A network without either has exactly the node states. (An activation
-// column couples its actuator's nodes to the end of the state: such a network's Jacobian is not
-// banded, and `auto` gives it the dense or the sparse solver.) Immutable once built;
-// evaluation allocates nothing, so one system may be integrated on many threads.
+// (x, y, xdot, ydot) in the plane); a massless junction (a free node of mass 0, on a line,
+// docs/model.md 14.4) has x_i alone, its velocity the root of its force balance; then the
+// activation u_k of every actuator with activation dynamics (docs/model.md section 8), in the order
+// the elements are given; then the integral z_j of every controller with an integral gain (section
+// 11), in the order the controllers are given. A network without either has exactly the node
+// states. (An activation column couples its actuator's nodes to the end of the state: such a
+// network's Jacobian is not banded, and `auto` gives it the dense or the sparse solver.) Immutable
+// once built; evaluation allocates nothing, so one system may be integrated on many threads.
 #pragma once
 
 #include <functional>
@@ -75,9 +76,7 @@ class NetworkSystem {
 
   int state_size() const { return node_state_count() + activation_count() + integral_count(); }
   // The free nodes' positions and velocities: the first this many states.
-  int node_state_count() const {
-    return 2 * space_.dimensions * static_cast<int>(free_nodes_.size());
-  }
+  int node_state_count() const { return node_states_; }
   // How many actuators have activation dynamics: the states after the nodes' are theirs.
   int activation_count() const { return static_cast<int>(activations_.size()); }
   // How many controllers have an integral state: the last this many states are theirs.
@@ -157,8 +156,13 @@ class NetworkSystem {
   int FindNode(std::string_view name) const;        // -1 if none
   int FindElement(std::string_view name) const;     // -1 if none
   int FindController(std::string_view name) const;  // -1 if none
-  // The state index of a node's position (its velocity follows), -1 unless free.
+  // The state index of a node's position, -1 unless free.
   int StateIndex(int node) const { return ends_[node].state; }
+  // The state index of a node's velocity (right after its position's d coordinates), -1
+  // unless free with a mass: a massless junction's velocity is not a state.
+  int VelocityStateIndex(int node) const { return ends_[node].rate; }
+  // How many free nodes are massless junctions (docs/model.md 14.4).
+  int junction_count() const { return static_cast<int>(junctions_.size()); }
   // The state index of an element's activation, -1 unless it is an actuator with activation
   // dynamics.
   int ActivationStateIndex(int element) const { return links_[element].activation; }
@@ -197,6 +201,9 @@ class NetworkSystem {
     double position;      // fixed
     int node;             // index in nodes_ (prescribed: its motion; an index, so copies work)
     Coordinates point{};  // fixed, in 2 or 3 dimensions
+    int rate = -1;        // free with a mass: index of xdot in y; else -1
+    int free = -1;        // free: index in free_nodes_; else -1
+    int junction = -1;    // massless junction: index in junctions_; else -1
   };
   // An element as the right-hand side sees it: its ends and where its Jacobian goes.
   struct Link {
@@ -264,7 +271,55 @@ class NetworkSystem {
     int slot_rate[3] = {-1, -1, -1};
     int slot_position[9] = {-1, -1, -1, -1, -1, -1, -1, -1, -1};
     std::vector<DirectedLoads> directed;  // in 2 or 3 dimensions
+    bool massless = false;                // a junction: inverse_mass unused
   };
+  // A massless junction on a line (docs/model.md 14.4, network_junction.cc): its velocity w
+  // is the root of R(w) = its loads + the forces of its elements = 0, and the only state it
+  // depends on is in `columns` (its position; each neighbour's position and velocity; each
+  // actuator's activation). Its Jacobian entries: (its position row, columns[k]) in
+  // row_slots[k], dw/dy by the implicit function theorem; and, for each element it ends, the
+  // entries (the other end's acceleration row, columns[k]) in neighbour_slots[i * columns +
+  // k], -1 unless that end is a free node with a mass.
+  struct Junction {
+    int free;                          // index in free_nodes_
+    int state;                         // index of its position in y
+    std::vector<int> links;            // the active elements with an end here
+    std::vector<int> columns;          // sorted state indices
+    std::vector<int> row_slots;        // one per column
+    std::vector<int> neighbour_slots;  // links.size() * columns.size()
+    // per link: the position in `columns` of the other end's position and velocity and of
+    // the element's activation, -1 where absent; and of this junction's own position
+    std::vector<std::array<int, 3>> link_columns;
+    int own_column = -1;
+  };
+  // Terms of the junction's balance R(w) and dR/dw at (t, y) with its velocity w, and the sum
+  // of their magnitudes (R's rounding scale).
+  struct Balance {
+    double residual, by_velocity, magnitude;
+  };
+  // `elastic`: the loads and the springs' and tendons' terms alone, which w does not change;
+  // else the other elements' alone.
+  Balance JunctionBalance(const Junction& junction, double t, const double* y, double w,
+                          bool elastic) const;
+  // w of junction k at (t, y), to machine precision by bracketed Newton (NaN if no bracket is
+  // found: the run then fails and NonFiniteCause names the junction).
+  double JunctionVelocity(int k, double t, const double* y) const;
+  // Why junction k has no finite velocity at (t, y), for messages: an elastic element's
+  // tension that overflows, or a balance without a finite root; "" when it has one.
+  std::string JunctionFailure(int k, double t, const double* y) const;
+  // Every junction's w at (t, y), in a buffer of the calling thread (nullptr if none).
+  const double* JunctionVelocities(double t, const double* y) const;
+  // An end's velocity, a junction's taken from `w` (JunctionVelocities).
+  double RateOf(const End& end, double t, const double* y, const double* w) const {
+    return end.junction >= 0 ? w[end.junction] : VelocityOf(end, t, y);
+  }
+  // Resolve's step for junctions: each checked (on a line, with no controllers, no two
+  // adjacent, a rate-dependent element at it), its links and columns; BuildPattern's: their
+  // pattern entries and slots; Jacobian's: their rows and the neighbours' terms through w.
+  void ResolveJunctions();
+  void AddJunctionPattern(std::vector<std::pair<int, int>>& pairs) const;
+  void FindJunctionSlots(const std::function<int(int, int)>& slot);
+  void JunctionJacobian(double t, const double* y, const double* w, double* values) const;
 
   double PositionOf(const End& end, double t, const double* y) const;
   double VelocityOf(const End& end, double t, const double* y) const;
@@ -394,6 +449,8 @@ class NetworkSystem {
   // The sum of free node f's loads, each along its direction [N].
   Coordinates DirectedLoad(const FreeNode& f, double t, const double* y) const;
   std::vector<FreeNode> free_nodes_;
+  std::vector<Junction> junctions_;
+  int node_states_ = 0;                  // the free nodes' states: the first this many of y
   std::vector<Activation> activations_;  // in element order, their states after the nodes'
   std::vector<int> row_scale_;  // per Jacobian entry: the free node whose 1/m scales it, or -1
   std::vector<Kink> kinks_;

@@ -95,7 +95,9 @@ ElementKind ParseElementKind(std::string_view text);  // ParameterError("type")
 //             and `activation` and excitation->signal unused
 //   spring:   T = stiffness (l - rest_length), negative when compressed
 //   tendon:   T = stiffness (l - slack_length) above slack_length, else 0 (linear), or
-//             T = k (exp(alpha (l - slack_length)) - 1) above it (exponential: k > 0)
+//             T = k (exp(alpha (l - slack_length)) - 1) above it (exponential: k > 0), and
+//             below it too when `pushes_below_slack` (De Groote's tendon, as OpenSim's
+//             DeGrooteFregly2016Muscle has it: negative there, docs/model.md 14.1)
 //   damper:   T = damping dl/dt
 struct Element {
   std::string name;
@@ -108,9 +110,10 @@ struct Element {
   double stiffness = 0.0;                     // spring, linear tendon [N/m], >= 0
   double rest_length = 0.0;                   // spring [m]
   double slack_length = 0.0;                  // tendon [m]
-  double k = 0.0;             // exponential tendon [N], > 0 (0: the tendon is linear)
-  double alpha = 0.0;         // exponential tendon [1/m], > 0
-  double damping = 0.0;       // damper [N s/m], >= 0
+  double k = 0.0;                   // exponential tendon [N], > 0 (0: the tendon is linear)
+  double alpha = 0.0;               // exponential tendon [1/m], > 0
+  bool pushes_below_slack = false;  // exponential tendon: its law continues below slack
+  double damping = 0.0;             // damper [N s/m], >= 0
   std::vector<ViaPoint> via;  // in 2 or 3 dimensions: the points between from and to, in order
 
   static Element Actuator(std::string name, std::string from, std::string to,
@@ -133,6 +136,13 @@ struct Element {
   static Element ExponentialTendon(std::string name, std::string from, std::string to,
                                    double slack_length, double k, double alpha);
   static Element Damper(std::string name, std::string from, std::string to, double damping);
+  // De Groote et al. (2016)'s tendon, as OpenSim's DeGrooteFregly2016Muscle evaluates it:
+  // T = F0 (0.2 exp(kT (l / l_s - 1)) - 0.2), kT = ln(6) / strain (F0 at l_s (1 + strain)),
+  // on both sides of the slack length: the exponential tendon with k = 0.2 F0 and
+  // alpha = kT / l_s, pushing below l_s.
+  static Element DeGrooteTendon(std::string name, std::string from, std::string to,
+                                double slack_length, double max_isometric_force,
+                                double strain_at_one_norm_force);
 
   bool exponential() const { return kind == ElementKind::kTendon && k > 0.0; }
 };

@@ -54,6 +54,9 @@ class TensionModel {
   // The length where dT/dx jumps, for the integrator to stop at: the paper's slack length
   // when k_p > 0; none for the other families, whose curves are C1.
   std::optional<double> LengthKink() const;
+  // Whether the tension at zero activation depends on v (De Groote's fiber damping): what lets
+  // a massless junction's balance fix its velocity (docs/model.md 14.4).
+  bool PassiveDependsOnRate() const;
   // Whether dT/dv jumps at v = 0 (the paper's asymmetric velocity curve).
   bool HasVelocityKink() const;
   // The curves `musclesim curves` tabulates, for every family: f_L(x), the active tension at
