@@ -224,6 +224,12 @@ std::vector<std::vector<Load>> NetworkSystem::LoadsByNode() const {
     } catch (const ParameterError& e) {
       throw ParameterError("loads[" + std::to_string(l) + "]." + e.path(), e.value(), e.rule());
     }
+    if (nodes_[node].mass == 0.0 && loads_[l].load.kind == LoadKind::kMass) {
+      throw ParameterError(Entry("loads", l, "type"), "mass",
+                           "a massless junction (node " + loads_[l].node +
+                               ", mass 0) carries no mass load: give the node the load's mass "
+                               "instead");
+    }
     node_loads[node].push_back(loads_[l].load);
   }
   return node_loads;
@@ -239,12 +245,7 @@ void NetworkSystem::AddFreeNodes(std::vector<std::vector<Load>> node_loads,
                            "prescribed node");
     }
     LoadSet set(std::move(node_loads[i]));
-    const bool massless = nodes_[i].mass == 0.0;
-    if (massless && set.AddedMass() > 0.0) {
-      throw ParameterError(Entry("nodes", i, "mass"), "0",
-                           "a massless junction carries no mass load: give node " + nodes_[i].name +
-                               " the load's mass instead");
-    }
+    const bool massless = nodes_[i].mass == 0.0;  // (LoadsByNode refused its mass loads)
     const double inverse_mass = massless ? 0.0 : 1.0 / (nodes_[i].mass + set.AddedMass());
     free_nodes_.push_back(
         {static_cast<int>(i), std::move(set), inverse_mass, {}, {}, {}, massless});

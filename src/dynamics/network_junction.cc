@@ -56,7 +56,14 @@ void NetworkSystem::ResolveJunctions() {
                                controllers_.front().name + "): give node " + name + " a mass");
     }
     bool fixes_velocity = false;
-    std::string attached;
+    std::string attached;  // every element at the node, for the refusal's message
+    for (std::size_t e = 0; e < links_.size(); ++e) {
+      if (links_[e].from != node && links_[e].to != node) continue;
+      const Element& element = elements_[e];
+      const bool inert = element.kind == ElementKind::kDamper && element.damping == 0.0;
+      attached +=
+          (attached.empty() ? "" : ", ") + Described(element) + (inert ? " with damping 0" : "");
+    }
     for (const int e : active_links_) {
       const Link& link = links_[e];
       if (link.from != node && link.to != node) continue;
@@ -69,7 +76,6 @@ void NetworkSystem::ResolveJunctions() {
       }
       junction.links.push_back(e);
       fixes_velocity = fixes_velocity || RateDependentAtRest(elements_[e]);
-      attached += (attached.empty() ? "" : ", ") + Described(elements_[e]);
     }
     if (!fixes_velocity) {
       throw ParameterError(

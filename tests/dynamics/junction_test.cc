@@ -260,7 +260,16 @@ TEST(MasslessJunction, IsRefusedWhereItsBalanceCannotFixItsVelocity) {
                 NetworkSystem({Node::Fixed("wall", 0.0), Node::Free("j", 0.0, 0.1)},
                               {Element::Damper("d", "wall", "j", 1.0)}, {{"j", Load::Mass(0.1)}});
               }),
-              HasSubstr("a massless junction carries no mass load"));
+              HasSubstr("loads[0].type = mass: a massless junction (node j, mass 0) carries "
+                        "no mass load"));
+  // the elements at it are listed, an inert damper too
+  EXPECT_THAT(Refusal([] {
+                NetworkSystem(
+                    {Node::Fixed("wall", 0.0), Node::Free("j", 0.0, 0.1), Node::Fixed("end", 0.4)},
+                    {Element::Damper("idle", "wall", "j", 0.0),
+                     Element::Spring("spring", "j", "end", 10.0, 0.2)});
+              }),
+              HasSubstr("node j has idle (damper) with damping 0, spring (spring)"));
   EXPECT_THAT(Refusal([] { Validate(Node::Free("j", 0.0, 0.1, 0.5)); }),
               HasSubstr("velocity = 0.5: must be absent (or 0) on a massless junction"));
   EXPECT_THAT(Refusal([] { Validate(Node::Free("j", -1.0, 0.1)); }),
