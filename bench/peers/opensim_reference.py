@@ -52,6 +52,13 @@ PRESCRIBED = [
 # by an excitation through piecewise-linear points (t [s], e [-]) from an initial activation
 EXCITED = ("opensim_drop_excited", "opensim_drop_pennate",
            [(0.0, 0.9), (0.2, 0.9), (0.21, 0.1), (0.5, 0.1)], 0.05)
+# the excited pennate muscle with its rigid tendon and its length prescribed, as PRESCRIBED:
+# with no mechanical state, its activation is what OpenSim integrates (name, initial height
+# [m], motion)
+PRESCRIBED_RIGID = [
+    ("opensim_stretch_rigid", 0.16, ("ramp", 0.05)),
+    ("opensim_sine_rigid", 0.16, ("sine", 0.01, 4.0)),
+]
 END, INTERVAL, ACCURACY = 0.5, 0.005, 1e-12
 
 
@@ -139,6 +146,12 @@ def cases():
         case = list(next(c for c in CASES if c[0] == base[1])[1:])
         case[3], case[6], case[8] = base[2], 0.0, length
         yield name, case, {"tendon_strain": base[3], "motion": motion}
+    name, base, excitation, initial_activation = EXCITED
+    for name, height, motion in PRESCRIBED_RIGID:
+        case = list(next(c for c in CASES if c[0] == base)[1:])
+        case[8] = height
+        yield name, case, {"excitation": excitation, "initial_activation": initial_activation,
+                           "motion": motion}
 
 
 def main():
@@ -149,7 +162,7 @@ def main():
         compliant = "tendon_strain" in dynamics
         if compliant:  # the fiber in equilibrium with the tendon, at rest
             model.equilibrateMuscles(state)
-        elif dynamics:  # the file tests/io/muscle_import_test.cc imports the muscle from
+        elif name == EXCITED[0]:  # tests/io/muscle_import_test.cc imports the muscle from
             fixture = os.path.join(HERE, "..", "..", "tests", "fixtures", "import",
                                    "opensim_excited.osim")
             model.printToXML(fixture)

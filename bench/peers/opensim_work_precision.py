@@ -2,7 +2,8 @@
 of bench/peers/opensim_reference.py (DeGrooteFregly2016Muscle, constant activation, 0.5 s),
 with a rigid tendon and with a compliant one, each tool at a ladder of tolerances. The error
 is the length and the velocity at t = 0.5 s (with the length prescribed, an isokinetic stretch
-and a sinusoidal length change: the fiber's length and the tendon's force) against OpenSim's
+and a sinusoidal length change: the fiber's length and the tendon's force, or with a rigid
+tendon and OpenSim's activation dynamics the activation and the tendon's force) against OpenSim's
 accuracy-1e-12 run
 (bench/peers/reference/), relative to their scales; the time is the integration alone
 (OpenSim's Manager.integrate; musclesim's own report of its run, which excludes reading the
@@ -16,9 +17,9 @@ term at zero activation: a fiber damping of COMPLIANT_DAMPING, which moves its t
 about 7 times that, relative (tests/scenario/opensim_reference_test.cc), far below the errors
 compared here.
 
-    "$(bash bench/peers/setup.sh)" bench/peers/opensim_work_precision.py [MUSCLESIM]
+    "$(bash bench/peers/setup.sh)" bench/peers/opensim_work_precision.py [MUSCLESIM] [CASE...]
 
-MUSCLESIM is the built program (default build/musclesim).
+MUSCLESIM is the built program (default build/musclesim); CASE, any of CASES (default all).
 """
 import csv
 import math
@@ -36,15 +37,19 @@ import opensim_reference as ref  # noqa: E402  (the same model and cases)
 
 REPEATS = 5
 CASES = ["opensim_drop_rigid", "opensim_drop_pennate", "opensim_drop_compliant",
-         "opensim_drop_compliant_pennate", "opensim_stretch_compliant", "opensim_sine_compliant"]
+         "opensim_drop_compliant_pennate", "opensim_stretch_compliant", "opensim_sine_compliant",
+         "opensim_stretch_rigid", "opensim_sine_rigid"]
 COMPLIANT_DAMPING = 1e-10
 
 
 def compared(dynamics):
     """The two columns compared at the end: the length and its speed, or, where the length is
-    prescribed (the same in both tools), the fiber's length and the tendon's force."""
-    return (("fiber_length", "tendon_force") if "motion" in dynamics
-            else ("length", "shortening_velocity"))
+    prescribed (the same in both tools), the fiber's length and the tendon's force, or with a
+    rigid tendon (the fiber's length then prescribed too) the activation and the force."""
+    if "motion" in dynamics:
+        return (("fiber_length", "tendon_force") if "tendon_strain" in dynamics
+                else ("activation", "tendon_force"))
+    return ("length", "shortening_velocity")
 
 
 def reference_end(name, dynamics):
@@ -76,7 +81,8 @@ def opensim_run(case, dynamics, accuracy):
         best = min(best, time.perf_counter() - start)
     if "motion" in dynamics:
         model.realizeDynamics(state)
-        return (muscle.getFiberLength(state), muscle.getTendonForce(state)), best
+        first = muscle.getFiberLength(state) if compliant else muscle.getActivation(state)
+        return (first, muscle.getTendonForce(state)), best
     l_s = 0.0 if compliant else case[3]
     return (height.getValue(state) - l_s, -height.getSpeedValue(state)), best
 
@@ -135,6 +141,32 @@ def musclesim_compliant_run(program, name, case, dynamics, rtol, directory):
     return (float(last["body.position"]), -float(last["body.velocity"])), best
 
 
+def musclesim_prescribed_rigid_run(program, case, dynamics, rtol, directory):
+    """The rigid-tendon muscle with its length prescribed: a network of the ground and the end
+    OpenSim's motion drives (less the tendon), the activation its only state."""
+    _, f_iso, l_opt, l_s, v_max, pennation, damping, _, height = case
+    points = ", ".join("[%r, %r]" % point for point in dynamics["excitation"])
+    rows, best = musclesim_cli.timed_run(
+        program,
+        "name: opensim_prescribed_rigid\n"
+        "models:\n  muscle: {family: degroote2016, f_iso: %r, optimal_fiber_length: %r, "
+        "max_contraction_velocity: %r, fiber_damping: %r, pennation_angle: %r}\n"
+        "nodes:\n  - {name: ground, fixed: 0.0}\n  - {name: end, prescribed: %s}\n"
+        "elements:\n"
+        "  - {name: muscle, type: actuator, from: ground, to: end, model: muscle, "
+        "excitation: {type: table, points: [%s]}, activation_dynamics: {family: degroote2016, "
+        "tau_activation: 0.015, tau_deactivation: 0.06, smoothing: 0.1}, "
+        "initial_activation: %r}\n"
+        "time: {start: 0.0, end: %r}\n"
+        "solver: {method: bdf, rtol: %r, atol: %r}\n"
+        "output: {file: drop.csv, interval: %r}\n"
+        % (f_iso, l_opt, v_max, damping, pennation, waveform(dynamics["motion"], height - l_s),
+           points, dynamics["initial_activation"], ref.END, rtol, rtol * 1e-3, ref.END),
+        directory, REPEATS)
+    last = rows[-1]
+    return (float(last["muscle.activation"]), float(last["muscle.tension"])), best
+
+
 def musclesim_run(program, case, rtol, directory):
     mass, f_iso, l_opt, l_s, v_max, pennation, damping, activation, height = case
     rows, best = musclesim_cli.timed_run(
@@ -157,6 +189,10 @@ def musclesim_run(program, case, rtol, directory):
 
 def main():
     program = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else "build/musclesim")
+    names = sys.argv[2:] or CASES
+    for name in names:
+        if name not in CASES:
+            sys.exit("unknown case %r: the cases are %s" % (name, ", ".join(CASES)))
     print("OpenSim %s vs musclesim, %s, %s; best of %d\n"
           % (osim.GetVersion(), platform.processor() or platform.machine(),
              platform.platform(), REPEATS))
@@ -165,7 +201,7 @@ def main():
     ratios = []
     with tempfile.TemporaryDirectory() as directory:
         every = {name: (case, dynamics) for name, case, dynamics in ref.cases()}
-        for name in CASES:
+        for name in names:
             case, dynamics = every[name]
             reference, scales = reference_end(name, dynamics)
             curves = {"OpenSim": [], "musclesim": []}
@@ -176,7 +212,10 @@ def main():
                 print("| %s | OpenSim (RungeKuttaMerson) | accuracy %.0e | %.1e | %.3g ms |"
                       % (name, accuracy, e, seconds / ref.END * 1e3))
             for rtol in [1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11]:
-                if "tendon_strain" in dynamics:
+                if "motion" in dynamics and "tendon_strain" not in dynamics:
+                    end, seconds = musclesim_prescribed_rigid_run(program, case, dynamics, rtol,
+                                                                  directory)
+                elif "tendon_strain" in dynamics:
                     end, seconds = musclesim_compliant_run(program, name, case, dynamics, rtol,
                                                            directory)
                 else:

@@ -250,9 +250,12 @@ void NetworkSystem::AddFreeNodes(std::vector<std::vector<Load>> node_loads,
     free_nodes_.push_back(
         {static_cast<int>(i), std::move(set), inverse_mass, {}, {}, {}, massless});
   }
-  if (free_nodes_.empty()) {
+  // without a free node the activations can still be the state: a muscle whose length is
+  // prescribed (a rigid tendon, an isokinetic stretch) under its activation dynamics
+  if (free_nodes_.empty() && activations_.empty()) {
     throw ParameterError("nodes", std::to_string(nodes_.size()) + " nodes",
-                         "need at least one free node (one with a mass): nothing would move");
+                         "need at least one free node (one with a mass) or an actuator with "
+                         "activation dynamics: nothing would change");
   }
 }
 

@@ -378,7 +378,7 @@ const std::vector<Case> kCases = {
     {"NetworkNoFreeNode", "run {file} -o -",
      Edit(Edit(Network("{name: load, mass: 0.1, position: 0.1}", "{name: load, fixed: 0.1}"),
                "loads:\n  - {node: load, type: constant, value: 5.0}\n", ""), "nodes:\n  -", "nodes:\n  @-"), 2,
-     {"nodes = 3 nodes ({at}): need at least one free node (one with a mass): nothing would move"}},
+     {"nodes = 3 nodes ({at}): need at least one free node (one with a mass) or an actuator with activation dynamics: nothing would change"}},
     {"NetworkZeroStartLength", "run {file} -o -", Edit(Network("position: 0.1}", "position: 0.0}"), "  - {name: muscle,", "  - @{name: muscle,"), 2,
      {"elements[0] = muscle ({at}): must be longer than 0 at the start: its length x(load) - x(wall) is 0 m"}},
     {"NetworkNegativeStartLength", "run {file} -o -", Edit(Network("position: 0.1}", "position: -0.05}"), "  - {name: muscle,", "  - @{name: muscle,"), 2,

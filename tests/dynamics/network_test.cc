@@ -335,7 +335,8 @@ TEST(Network, RejectsANetworkWithNoFreeNode) {
   });
   EXPECT_EQ(path, "nodes");
   EXPECT_EQ(message,
-            "nodes = 2 nodes: need at least one free node (one with a mass): nothing would move");
+            "nodes = 2 nodes: need at least one free node (one with a mass) or an actuator with "
+            "activation dynamics: nothing would change");
 }
 
 // ---- a system is a value ------------------------------------------------------------------

@@ -7,13 +7,15 @@
 // activation to 1e-8. With a compliant tendon (OpenSim's explicit tendon dynamics), the fiber
 // and De Groote's tendon meet at a massless junction (docs/model.md 14.4): the mass's drop
 // and speed, the tendon force and the fiber's length and velocity met to 1e-6 of their scales,
-// hanging, and with the unit's length prescribed (an isokinetic stretch, a sinusoid).
+// hanging, and with the unit's length prescribed (an isokinetic stretch, a sinusoid); the
+// rigid-tendon muscle with its length prescribed likewise, its activation then the only state.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "musclesim/core/number_format.h"
@@ -237,6 +239,63 @@ TEST(OpenSimReference, SinusoidalLengthChangeOfACompliantMuscleTendonUnit) {
   // case opensim_sine_compliant: 0.3 + 0.01 sin(2 pi 4 t) m (OpenSim's Sine)
   ExpectOpenSimsLimit({5.0, 400.0, 0.10, 10.0, 0.0, 0.6, 0.2, 0.049}, "opensim_sine_compliant.csv",
                       "{type: sine, offset: 0.3, amplitude: 0.01, frequency: 4.0}");
+}
+
+// The rigid-tendon cases with the length prescribed (bench/peers/opensim_reference.py's
+// PRESCRIBED_RIGID): the excited pennate muscle from the ground to a node whose position
+// `motion` prescribes (the fiber along the line: the muscle-tendon length less the tendon), no
+// free node: its activation is the only state, as in OpenSim.
+void ExpectPrescribedRigidIsOpenSims(const std::string& reference, const std::string& motion) {
+  std::ostringstream yaml;
+  yaml << "name: opensim_prescribed_rigid\n"
+       << "models:\n  muscle: {family: degroote2016, f_iso: 400.0, optimal_fiber_length: 0.1, "
+       << "max_contraction_velocity: 10.0, fiber_damping: 0.05, pennation_angle: 0.35}\n"
+       << "nodes:\n  - {name: ground, fixed: 0.0}\n"
+       << "  - {name: end, prescribed: " << motion << "}\n"
+       << "elements:\n"
+       << "  - {name: muscle, type: actuator, from: ground, to: end, model: muscle,\n"
+       << "     excitation: {type: table, points: [[0, 0.9], [0.2, 0.9], [0.21, 0.1], "
+       << "[0.5, 0.1]]},\n"
+       << "     activation_dynamics: {family: degroote2016, tau_activation: 0.015, "
+       << "tau_deactivation: 0.06, smoothing: 0.1}, initial_activation: 0.05}\n"
+       << "time: {start: 0.0, end: 0.5}\n"
+       << "solver: {method: bdf, rtol: 1.0e-11, atol: 1.0e-14}\n"
+       << "output: {file: opensim_prescribed_rigid.csv, interval: 0.005}\n";
+  const RecordedRun run = RunScenario(ReadScenario(
+      ParseDocument("opensim_prescribed_rigid", yaml.str()), "opensim_prescribed_rigid"));
+  ASSERT_NE(run.stats.status, RunStatus::kFailed) << run.stats.message;
+  const PeerTable opensim = ReadPeerTable(reference);
+  const std::vector<double>& t = opensim.at("t");
+  ASSERT_EQ(Column(run, "t").size(), t.size());
+  const auto span = [](const std::vector<double>& v) {
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    return std::max(std::abs(*lo), std::abs(*hi));
+  };
+  const std::pair<const char*, const char*> compared[] = {
+      {"muscle.length", "length"},
+      {"muscle.shortening_velocity", "shortening_velocity"},
+      {"muscle.tension", "tendon_force"},
+      {"muscle.activation", "activation"}};
+  for (const auto& [mine, theirs] : compared) {
+    const double scale = span(opensim.at(theirs));
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      EXPECT_NEAR(Column(run, mine)[k], opensim.at(theirs)[k], 1e-8 * scale)
+          << mine << " at t = " << t[k];
+    }
+  }
+}
+
+TEST(OpenSimReference, IsokineticStretchOfAnExcitedMuscleWithARigidTendon) {
+  // case opensim_stretch_rigid: from 0.16 m (0.11 m of fiber along the line) at 0.05 m/s, the
+  // ramp running through t = 0 as OpenSim's LinearFunction does
+  ExpectPrescribedRigidIsOpenSims("opensim_stretch_rigid.csv",
+                                  "{type: ramp, start: -1.0, end: 1.0, from: 0.06, to: 0.16}");
+}
+
+TEST(OpenSimReference, SinusoidalLengthChangeOfAnExcitedMuscleWithARigidTendon) {
+  // case opensim_sine_rigid: 0.16 + 0.01 sin(2 pi 4 t) m, less the 0.05 m tendon
+  ExpectPrescribedRigidIsOpenSims("opensim_sine_rigid.csv",
+                                  "{type: sine, offset: 0.11, amplitude: 0.01, frequency: 4.0}");
 }
 
 }  // namespace
