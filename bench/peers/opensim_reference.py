@@ -162,9 +162,12 @@ def main():
         compliant = "tendon_strain" in dynamics
         if compliant:  # the fiber in equilibrium with the tendon, at rest
             model.equilibrateMuscles(state)
-        elif name == EXCITED[0]:  # tests/io/muscle_import_test.cc imports the muscle from
+        # tests/io/muscle_import_test.cc imports the muscles of these two from the files
+        fixtures = {EXCITED[0]: "opensim_excited.osim",
+                    "opensim_drop_compliant": "opensim_compliant.osim"}
+        if name in fixtures:
             fixture = os.path.join(HERE, "..", "..", "tests", "fixtures", "import",
-                                   "opensim_excited.osim")
+                                   fixtures[name])
             model.printToXML(fixture)
             print(os.path.normpath(fixture), file=sys.stderr)
         manager = osim.Manager(model)

@@ -61,7 +61,7 @@ def mujoco_muscle():
           source + "; sets default " + str(sets["default"]) + " and other " + str(sets["other"])
           + " as gainprm, lengthrange [0.05, 0.25] m, acc0 1")
     rows = []
-    for smooth in (0.0, 0.2):
+    for smooth in (0.0, 0.2, 5.0):  # 5: wider than every e - u, a blend at both ends
         for ctrl in np.linspace(0.0, 1.0, 11):
             for act in np.linspace(0.0, 1.0, 11):
                 rows.append((smooth, ctrl, act,

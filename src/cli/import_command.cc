@@ -142,6 +142,9 @@ int ImportCommand(int argc, char** argv) {
     std::string report = "musclesim import: " + muscle.name + ": " + muscle.source + " -> " +
                          outputs.back().path + "\n";
     for (const std::string& note : muscle.notes) report += "  not carried over: " + note + "\n";
+    if (muscle.tendon_strain && muscle.params.degroote2016.fiber_damping == 0.0) {
+      report += "  note: " + JunctionDampingNote() + "\n";
+    }
     if (gaussians > 0) {
       const GaussianModel paper = FitGaussians(muscle, gaussians);
       // unique too: another muscle may be named after this one's fit
@@ -150,6 +153,7 @@ int ImportCommand(int argc, char** argv) {
           "the paper's model of " + muscle.name);
       report += "  the paper's model, " + std::to_string(gaussians) + " Gaussians -> " +
                 outputs.back().path + ": " + paper.report + "\n";
+      if (muscle.tendon_strain) report += "  note: " + RigidTendonNote(muscle) + "\n";
     }
     reports.push_back(report);
   }

@@ -255,7 +255,7 @@ void NetworkSystem::AddFreeNodes(std::vector<std::vector<Load>> node_loads,
   if (free_nodes_.empty() && activations_.empty()) {
     throw ParameterError("nodes", std::to_string(nodes_.size()) + " nodes",
                          "need at least one free node (one with a mass) or an actuator with "
-                         "activation dynamics: nothing would change");
+                         "activation dynamics: the state is their positions and activations");
   }
 }
 

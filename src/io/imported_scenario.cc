@@ -41,7 +41,93 @@ std::string FormatActivationDynamics(const ActivationDynamics& d) {
   return out.str();
 }
 
+// The model block under a network's `models:`, the muscle's model named `muscle`.
+std::string NetworkModelBlock(const ModelParams& p) {
+  const std::string block = FormatModelBlock(p);  // "model:\n  family: ...\n  ...\n"
+  std::string out = "models:\n  muscle:\n";
+  std::size_t line = block.find('\n') + 1;  // past "model:"
+  while (line < block.size()) {
+    const std::size_t end = block.find('\n', line);
+    out += "  " + block.substr(line, end - line + 1);
+    line = end + 1;
+  }
+  return out;
+}
+
+// How the muscle is driven: a step of its activation at 0.1 s, or of its excitation through
+// its tool's activation dynamics from activation 0.
+std::string Drive(const ImportedMuscle& muscle, const std::string& indent) {
+  if (!muscle.activation_dynamics) {
+    return indent + "activation: {type: step, time: 0.1, before: 0.0, after: 1.0}";
+  }
+  return indent + "excitation: {type: step, time: 0.1, before: 0.0, after: 1.0}\n" + indent +
+         FormatActivationDynamics(*muscle.activation_dynamics);
+}
+
+const char* const kTail =
+    "time: {start: 0.0, end: 1.0}\n"
+    "solver: {method: bdf, rtol: 1.0e-8, atol: 1.0e-12}\n";
+
+// The compliant tendon's template: a network of the fixed origin, the massless junction
+// where fiber and tendon meet, and the hanging body.
+std::string FormatCompliantScenario(const ImportedMuscle& muscle, const std::string& output,
+                                    std::ostringstream& out) {
+  ModelParams p = muscle.params;
+  const double l_s = muscle.tendon_slack_length;
+  out << "# Its tendon is compliant, De Groote's (strain " << FormatNumber(*muscle.tendon_strain)
+      << " at the maximum isometric force): the fiber\n"
+      << "# (`fiber`, along the line) and the tendon (`tendon`, slack length " << FormatNumber(l_s)
+      << " m) meet at a\n# massless junction (docs/model.md 14.4).\n";
+  if (p.degroote2016.fiber_damping == 0.0) {
+    p.degroote2016.fiber_damping = kJunctionFiberDamping;
+    out << "# " << JunctionDampingNote() << ".\n";
+  }
+  for (const std::string& note : muscle.notes) out << "# Not carried over: " << note << ".\n";
+  const double mass = 0.5 * p.f_iso / kGravity;
+  const double fiber = OptimalLineLength(p);
+  out << "# The experiment is a template to edit: a " << FormatNumber(mass)
+      << " kg mass (half the isometric force\n"
+      << "# under gravity) hangs from the unit, released at rest, the fiber at its optimal "
+         "length\n# and the tendon at its slack length.\n";
+  out << "name: " << Quoted(muscle.name) << "\n" << NetworkModelBlock(p);
+  out << "nodes:\n"
+      << "  - {name: origin, fixed: 0.0}   # m\n"
+      << "  - {name: junction, mass: 0, position: " << FormatNumber(fiber)
+      << "}   # kg, m: massless\n"
+      << "  - {name: body, mass: " << FormatNumber(mass)
+      << ", position: " << FormatNumber(fiber + l_s) << "}   # kg, m\n";
+  out << "elements:\n"
+      << "  - name: fiber\n    type: actuator\n    from: origin\n    to: junction\n"
+      << "    model: muscle\n"
+      << Drive(muscle, "    ") << "\n";
+  if (muscle.activation_dynamics) out << "    initial_activation: 0.0\n";
+  out << "  - {name: tendon, type: tendon, from: junction, to: body, slack_length: "
+      << FormatNumber(l_s) << ",   # m\n"
+      << "     degroote2016: {max_isometric_force: " << FormatNumber(p.f_iso)
+      << ", strain_at_one_norm_force: " << FormatNumber(*muscle.tendon_strain) << "}}   # N, -\n";
+  out << "loads:\n  - {node: body, type: constant, value: " << FormatNumber(mass * kGravity)
+      << "}   # N\n"
+      << kTail << "output: {file: " << Quoted(output) << ", interval: 0.001}\n";
+  return out.str();
+}
+
 }  // namespace
+
+std::string JunctionDampingNote() {
+  return "fiber_damping is 0 in the file; the massless junction needs a tension that depends on "
+         "its rate at zero activation (docs/model.md 14.4), so the fiber's is " +
+         FormatNumber(kJunctionFiberDamping) +
+         ", which moves the trajectory by about 7 times that, relative to its scale";
+}
+
+std::string RigidTendonNote(const ImportedMuscle& muscle) {
+  return "OpenSim's tendon is compliant (strain " + FormatNumber(*muscle.tendon_strain) +
+         " at the maximum isometric force); this file takes it rigid, the actuator's length the "
+         "muscle-tendon length less the tendon slack length, " +
+         FormatNumber(muscle.tendon_slack_length) +
+         " m: the paper's model has no tension that depends on its rate at zero activation, "
+         "which a massless junction needs (docs/model.md 14.4)";
+}
 
 std::string FormatModelBlock(const ModelParams& p) {
   std::ostringstream out;
@@ -100,7 +186,12 @@ std::string FormatImportedScenario(const ImportedMuscle& muscle, const std::stri
   std::ostringstream out;
   out << "# " << muscle.name << ": " << muscle.source << ", imported by `musclesim import "
       << PrintableText(source) << "`\n";
-  if (muscle.tendon_slack_length > 0.0) {
+  if (muscle.tendon_strain && model_block.empty()) {
+    return FormatCompliantScenario(muscle, output, out);
+  }
+  if (muscle.tendon_strain) {
+    out << "# " << RigidTendonNote(muscle) << ".\n";
+  } else if (muscle.tendon_slack_length > 0.0) {
     out << "# Its tendon is rigid: the actuator's length is the muscle-tendon length less the\n"
         << "# tendon slack length, " << FormatNumber(muscle.tendon_slack_length) << " m.\n";
   }
@@ -113,18 +204,10 @@ std::string FormatImportedScenario(const ImportedMuscle& muscle, const std::stri
       << (model_block.empty() ? FormatModelBlock(p) : model_block);
   out << "actuator: {mass: " << FormatNumber(mass) << "}   # kg\n";
   out << "initial: {length: " << FormatNumber(OptimalLineLength(p));
-  if (muscle.activation_dynamics) {
-    out << ", activation: 0.0}   # m, -\n"
-        << "excitation: {type: step, time: 0.1, before: 0.0, after: 1.0}\n"
-        << FormatActivationDynamics(*muscle.activation_dynamics) << "\n";
-  } else {
-    out << "}   # m\n"
-        << "activation: {type: step, time: 0.1, before: 0.0, after: 1.0}\n";
-  }
+  out << (muscle.activation_dynamics ? ", activation: 0.0}   # m, -\n" : "}   # m\n")
+      << Drive(muscle, "") << "\n";
   out << "load: {type: constant, value: " << FormatNumber(mass * kGravity) << "}   # N\n"
-      << "time: {start: 0.0, end: 1.0}\n"
-      << "solver: {method: bdf, rtol: 1.0e-8, atol: 1.0e-12}\n"
-      << "output: {file: " << Quoted(output) << ", interval: 0.001}\n";
+      << kTail << "output: {file: " << Quoted(output) << ", interval: 0.001}\n";
   return out.str();
 }
 

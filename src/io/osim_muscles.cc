@@ -7,6 +7,7 @@
 #include "io/muscle_import_readers.h"
 #include "io/xml_reading.h"
 #include "musclesim/core/errors.h"
+#include "musclesim/core/input_ranges.h"
 #include "musclesim/core/number_format.h"
 #include "musclesim/core/printable_text.h"
 
@@ -109,15 +110,14 @@ ImportedMuscle ReadDeGroote(const XMLElement& element, const std::string& path) 
   muscle.tendon_slack_length = read.Number("tendon_slack_length", defaults.tendon_slack_length);
 
   if (!read.Flag("ignore_tendon_compliance", false)) {
-    muscle.notes.push_back(
-        "OpenSim's tendon is compliant here (tendon_strain_at_one_norm_force " +
-        FormatNumber(read.Number("tendon_strain_at_one_norm_force",
-                                 defaults.tendon_strain_at_one_norm_force)) +
-        "); this template takes it rigid, of length tendon_slack_length " +
-        FormatNumber(muscle.tendon_slack_length) +
-        " m, and the trajectories differ: for OpenSim's, join the fiber and a tendon with "
-        "degroote2016: {max_isometric_force, strain_at_one_norm_force} at a massless junction "
-        "in a network (docs/guide/networks.md, scenarios/musculotendon_compliant.yaml)");
+    const double strain =
+        read.Number("tendon_strain_at_one_norm_force", defaults.tendon_strain_at_one_norm_force);
+    if (!kTendonStrainRange.Contains(strain)) {
+      throw InputError(muscle.source + " '" + muscle.name +
+                       "': tendon_strain_at_one_norm_force = " + FormatNumber(strain) + ": " +
+                       kTendonStrainRange.Rule());
+    }
+    muscle.tendon_strain = strain;
   }
   if (!read.Flag("ignore_activation_dynamics", false)) {
     ActivationDynamics lag;

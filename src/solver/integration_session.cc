@@ -78,6 +78,8 @@ struct IntegrationSession::Impl {
 
   // One segment [t, stop] between breakpoints; a status once the integration ends in it.
   std::optional<RunStatus> Segment(double stop);
+  // The root `hit` reached at (t, y): a limit ends the run, a kink restarts the integrator.
+  std::optional<RunStatus> Reached(int hit, double stop);
   // The step just taken crossed root `hit`: go on from the crossing, or end there.
   std::optional<RunStatus> Crossed(int hit, double stop);
   RunStatus Finish(RunStatus status, double at, std::string message);
@@ -117,6 +119,7 @@ struct IntegrationSession::Impl {
   double run_end = 0.0;  // [s]: the time this Advance integrates to
   StallWatch stall;
   double merge = 0.0;  // [s]: times closer than this are one
+  double last_row = std::numeric_limits<double>::quiet_NaN();  // [s] the last row recorded
   std::chrono::steady_clock::time_point wall_start;
 };
 
@@ -195,6 +198,7 @@ const double* const* IntegrationSession::Impl::SensitivitiesAt(double at) {
 }
 
 void IntegrationSession::Impl::Record(double at, const double* state, double state_time) {
+  last_row = at;
   if (sensitivity_sink != nullptr) {
     sensitivity_sink->Record(at, state, SensitivitiesAt(state_time));
     return;
@@ -262,12 +266,16 @@ std::optional<RunStatus> IntegrationSession::Impl::Crossed(int hit, double stop)
   t = roots.crossing_time();
   const double* at_crossing = Interpolate(t);
   std::copy(at_crossing, at_crossing + n, y);
+  return Reached(hit, stop);
+}
+
+std::optional<RunStatus> IntegrationSession::Impl::Reached(int hit, double stop) {
   const Root& root = roots.root(hit);
   if (root.kind == Root::kKink) stall.Crossed(root.element);
   RecordRows(t, y, root.kind == Root::kKink);
   if (root.kind != Root::kKink) {
     const std::string& name = system.elements()[root.element].name;
-    Record(t, y);
+    if (last_row != t) Record(t, y);  // (a limit reached at a restart: the row may be there)
     if (root.kind == Root::kShortSegment) {
       return Finish(
           RunStatus::kLimit, t,
@@ -290,7 +298,7 @@ std::optional<RunStatus> IntegrationSession::Impl::Crossed(int hit, double stop)
   // right-hand side is continuous there: no jump, docs/model.md 10)
   Restart(t);
   ws.Check(CVodeSetStopTime(ws.cvode(), stop), "CVodeSetStopTime");
-  roots.Arm(ws.callbacks(), t, y);
+  if (const int limit = roots.Arm(ws.callbacks(), t, y); limit >= 0) return Reached(limit, stop);
   if (rows.every_step()) Record(t, y);
   return std::nullopt;
 }
@@ -301,7 +309,8 @@ std::optional<RunStatus> IntegrationSession::Impl::Segment(double stop) {
   const double middle = 0.5 * (t + stop);
   cb.input_from = std::min(t + merge, middle);
   cb.input_to = std::max(stop - merge, middle);
-  roots.Arm(ws.callbacks(), t, y);
+  // a limit reached between the last step's end and this restart ends the run here
+  if (const int hit = roots.Arm(ws.callbacks(), t, y); hit >= 0) return Reached(hit, stop);
   ws.Check(CVodeSetStopTime(ws.cvode(), stop), "CVodeSetStopTime");
   while (t < stop) {
     if (fresh && stop - t <= merge) {

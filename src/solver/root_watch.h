@@ -1,7 +1,9 @@
 // Private: the functions of the state an integration watches (run_roots.h), by their sign at
 // the end of every step; only a sign change asks for the crossing's time on the step's
-// interpolant. A root exactly zero where the integration (re)starts is inactive until it
-// leaves zero, as in CVODE.
+// interpolant. A root exactly zero where the integration starts is inactive until it leaves
+// zero, as in CVODE. At a restart the inputs are read a few ulps past the breakpoint (or the
+// last advance's end), where the last step read them a few ulps before it: a limit crossed
+// in that gap is reported at the restart.
 #pragma once
 
 #include <cmath>
@@ -22,12 +24,25 @@ class RootWatch {
     before_.assign(roots_.size(), 0.0);
     after_.assign(roots_.size(), 0.0);
     active_.assign(roots_.size(), 0);
+    armed_ = false;
   }
 
-  // Takes the values at a (re)start (t, y) as the ones the next step is compared with.
-  void Arm(const Callbacks& cb, double t, const double* y) {
-    Evaluate(cb, t, y, before_);
+  // Takes the values at a (re)start (t, y) as the ones the next step is compared with; or,
+  // when a watched limit (not a kink: the restart restarts anyway) reached zero or changed
+  // sign since the last step's end, returns it, its crossing_time() t. -1 otherwise.
+  int Arm(const Callbacks& cb, double t, const double* y) {
+    Evaluate(cb, t, y, after_);
+    for (std::size_t i = 0; armed_ && i < roots_.size(); ++i) {
+      if (roots_[i].kind == Root::kKink || !active_[i]) continue;
+      if (after_[i] == 0.0 || (after_[i] < 0.0) != (before_[i] < 0.0)) {
+        crossing_time_ = t;
+        return static_cast<int>(i);
+      }
+    }
+    before_.swap(after_);
     for (std::size_t i = 0; i < roots_.size(); ++i) active_[i] = before_[i] != 0.0;
+    armed_ = true;
+    return -1;
   }
 
   // After a step from t_before to (t, y): the earliest root crossed within it (its time in
@@ -76,6 +91,7 @@ class RootWatch {
   std::vector<Root> roots_;
   std::vector<double> before_, after_;
   std::vector<char> active_;
+  bool armed_ = false;  // before_ holds the values at the last step's end
   double crossing_time_ = 0.0;
 };
 

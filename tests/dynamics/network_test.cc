@@ -336,7 +336,7 @@ TEST(Network, RejectsANetworkWithNoFreeNode) {
   EXPECT_EQ(path, "nodes");
   EXPECT_EQ(message,
             "nodes = 2 nodes: need at least one free node (one with a mass) or an actuator with "
-            "activation dynamics: nothing would change");
+            "activation dynamics: the state is their positions and activations");
 }
 
 // ---- a system is a value ------------------------------------------------------------------

@@ -13,11 +13,14 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "musclesim/core/errors.h"
 #include "musclesim/io/document.h"
 #include "musclesim/io/imported_scenario.h"
 #include "musclesim/io/scenario_yaml.h"
+#include "musclesim/scenario/parameter.h"
 #include "musclesim/scenario/run.h"
 #include "support/cli_run.h"
 #include "support/fresh_directory.h"
@@ -293,6 +296,82 @@ TEST(ImportErrors, NameTheFileLineValueAndRule) {
                           "<mujoco>\n<actuator>\n<muscle name='m' class='nope' joint='j'/>\n"
                           "</actuator>\n</mujoco>\n"),
               HasSubstr("class = nope ("));
+}
+
+TEST(ImportOpenSim, ACompliantMuscleIsANetworkThatRunsOpenSimsTrajectory) {
+  // the compliant case of bench/peers/opensim_reference.py, as OpenSim wrote its model: the
+  // scenario written for it, its experiment set to OpenSim's (5 kg at 0.32 m, activation 0.6,
+  // the junction where equilibrateMuscles put the fiber), meets OpenSim's trajectory to 1e-6
+  // of each column's scale with the fiber damping it gives (OpenSim's is 0: measured 7e-8)
+  const ImportedMuscle m = ImportMuscles(Fixture("opensim_compliant.osim")).muscles.at(0);
+  ASSERT_TRUE(m.tendon_strain.has_value());
+  EXPECT_EQ(*m.tendon_strain, 0.049);
+  EXPECT_EQ(m.tendon_slack_length, 0.2);
+  EXPECT_EQ(m.params.degroote2016.fiber_damping, 0.0);
+  const std::string text = FormatImportedScenario(m, "opensim_compliant.osim", "imported.csv");
+  EXPECT_THAT(text, HasSubstr("fiber_damping is 0 in the file"));
+  Scenario scenario = ReadScenario(ParseDocument("imported", text), "imported");
+  const testing::PeerTable opensim = testing::ReadPeerTable("opensim_drop_compliant.csv");
+  const double junction =
+      opensim.at("fiber_length")[0] * std::cos(opensim.at("pennation_angle")[0]);
+  const std::vector<std::pair<std::string, double>> experiment = {
+      {"nodes[1].position", junction},
+      {"nodes[2].mass", 5.0},
+      {"nodes[2].position", opensim.at("length")[0]},
+      {"loads[0].value", 49.05},
+      {"elements[0].activation.before", 0.6},
+      {"elements[0].activation.after", 0.6},
+      {"time.end", 0.5},
+      {"output.interval", 0.005},
+      {"solver.rtol", 1e-12},
+      {"solver.atol", 1e-15}};
+  std::vector<Parameter> parameters;
+  std::vector<double> values;
+  for (const auto& [path, value] : experiment) {
+    parameters.push_back(FindParameter(scenario, path));
+    values.push_back(value);
+  }
+  SetParameters(scenario, parameters, values);
+  const RecordedRun run = RunScenario(scenario);
+  const std::vector<std::string>& names = run.columns.names();
+  const auto column = [&](const std::string& name) -> const std::vector<double>& {
+    const auto at = std::find(names.begin(), names.end(), name);
+    EXPECT_NE(at, names.end()) << name;
+    return run.values[static_cast<std::size_t>(at - names.begin())];
+  };
+  const std::vector<double>& t = opensim.at("t");
+  ASSERT_EQ(column("t").size(), t.size());
+  const std::pair<const char*, const char*> compared[] = {{"body.position", "length"},
+                                                          {"tendon.tension", "tendon_force"}};
+  for (const auto& [mine, theirs] : compared) {
+    const std::vector<double>& reference = opensim.at(theirs);
+    const double scale =
+        std::abs(*std::max_element(reference.begin(), reference.end(),
+                                   [](double a, double b) { return std::abs(a) < std::abs(b); }));
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      EXPECT_NEAR(column(mine)[k], reference[k], 1e-6 * scale) << mine << " at t = " << t[k];
+    }
+  }
+}
+
+TEST(ImportCli, ACompliantMusclesScenarioRunsAndSaysWhatItAdded) {
+  const std::string dir = testing::FreshDirectory("import_compliant");
+  const testing::CliOutcome out = testing::RunMusclesim(
+      "import " + Fixture("opensim_compliant.osim") + " --to-gaussians 2 -o " + dir);
+  ASSERT_EQ(out.exit_code, 0) << out.err;
+  EXPECT_THAT(out.err, HasSubstr("note: fiber_damping is 0 in the file"));
+  EXPECT_THAT(out.err, HasSubstr("note: OpenSim's tendon is compliant (strain 0.049"));
+  const std::string native = testing::ReadFile(dir + "/muscle.yaml");
+  EXPECT_THAT(native, HasSubstr("{name: junction, mass: 0,"));
+  EXPECT_THAT(native, HasSubstr("degroote2016: {max_isometric_force: 400, "
+                                "strain_at_one_norm_force: 0.049}"));
+  EXPECT_THAT(testing::ReadFile(dir + "/muscle_gaussians.yaml"),
+              HasSubstr("this file takes it rigid"));
+  for (const char* name : {"muscle", "muscle_gaussians"}) {
+    const testing::CliOutcome run =
+        testing::RunMusclesim("run " + dir + "/" + name + ".yaml -o " + dir + "/" + name + ".csv");
+    EXPECT_EQ(run.exit_code, 0) << name << ": " << run.err;
+  }
 }
 
 TEST(ImportCli, WritesARunnableScenarioPerMuscleAndListsTheRest) {

@@ -118,14 +118,16 @@ inline constexpr InputRange kActivationRange{0.0, 1.0, "-",
 // The smoothings of the switch between the time constants (docs/model.md 8.1): De Groote's
 // tanh steepness b [-] (OpenSim's activation_dynamics_smoothing; below 1e-3 the rate is the
 // two constants' mean, above 1e4 the switch is a step the integrator cannot follow smoothly)
-// and MuJoCo's tausmooth [-], the width in e - u of its quintic switch (0: the step, 2: the
-// whole span of e - u).
+// and MuJoCo's tausmooth [-], the width in e - u of its quintic switch (0: the step; from 2
+// on it spans every e - u and both ends are blends, as MuJoCo computes them; up to 1e9, where
+// the blend is the two constants' mean to rounding).
 inline constexpr InputRange kActivationSmoothingRange{
     1e-3, 1e4, "-",
     "b of tanh(b (e - u)): below 1e-3 the two time constants merge into their mean, above 1e4 "
     "the switch is a step (leave the smoothing to family thelen2003 then)"};
 inline constexpr InputRange kTauSmoothRange{
-    0.0, 2.0, "-", "the width in e - u of MuJoCo's switch: 0 is the step, 2 spans every e - u"};
+    0.0, 1e9, "-",
+    "the width in e - u of MuJoCo's switch: 0 is the step, from 2 on it spans every e - u"};
 
 // A controller's gains [per unit measured, times s for ki^-1 and kd]: beyond 1e9 an error of
 // a nanometre or a nanonewton already saturates the output (the loop is a switch), and the

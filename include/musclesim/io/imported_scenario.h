@@ -16,9 +16,23 @@ std::string FormatModelBlock(const ModelParams& params);
 
 // The whole scenario; `source` names the imported file in its header, `output` its CSV.
 // `model_block` replaces the muscle's own model block when given (--to-gaussians: the
-// paper's model fitted to it, whose header says so), in the same experiment.
+// paper's model fitted to it, whose header says so), in the same experiment. A muscle with a
+// compliant tendon is a network: the fiber from a fixed origin to a massless junction, the
+// tendon from there to the hanging body (with `model_block`, whose paper model cannot hold a
+// massless junction, the tendon is taken rigid and the header says so).
 std::string FormatImportedScenario(const ImportedMuscle& muscle, const std::string& source,
                                    const std::string& output, const std::string& model_block = "");
+
+// The fiber damping [-] a compliant muscle's scenario gives a fiber whose file has none: the
+// massless junction needs a rate term at zero activation (docs/model.md 14.4); it moves
+// OpenSim's trajectories by about 7 times this, relative (tests/scenario/
+// opensim_reference_test.cc).
+inline constexpr double kJunctionFiberDamping = 1e-8;
+
+// Said on standard error and in the header when a compliant muscle's scenario gives its fiber
+// kJunctionFiberDamping; and when --to-gaussians takes its tendon rigid.
+std::string JunctionDampingNote();
+std::string RigidTendonNote(const ImportedMuscle& muscle);
 
 // The actuator length at the muscle's optimal fiber length [m], along its line.
 double OptimalLineLength(const ModelParams& params);

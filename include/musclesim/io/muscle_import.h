@@ -16,11 +16,14 @@ namespace musclesim {
 
 // One muscle, as musclesim runs it.
 struct ImportedMuscle {
-  std::string name;                  // the muscle's name in the file
-  std::string source;                // its class or element and line: "DeGrooteFregly2016Muscle
-                                     // (arm.osim:41)"
-  ModelParams params;                // the family's model, validated
-  double tendon_slack_length = 0.0;  // [m] the rigid tendon taken off the muscle-tendon length
+  std::string name;                     // the muscle's name in the file
+  std::string source;                   // its class or element and line: "DeGrooteFregly2016Muscle
+                                        // (arm.osim:41)"
+  ModelParams params;                   // the family's model, validated
+  double tendon_slack_length = 0.0;     // [m] the tendon's slack length (rigid: taken off the
+                                        // muscle-tendon length)
+  std::optional<double> tendon_strain;  // [-] a compliant tendon's strain at the maximum
+                                        // isometric force (De Groote's); none: rigid
   std::optional<ActivationDynamics> activation_dynamics;  // the tool's (family degroote2016
                                                           // or mujoco); none: the control is
                                                           // the activation
