@@ -20,6 +20,12 @@ steps of the whole run, in C), its model compiled once; musclesim's time is its 
 the integration.
 
     "$(bash bench/peers/setup.sh)" bench/peers/mujoco_convergence.py [MUSCLESIM] [CASE...]
+
+With --references instead, it writes MuJoCo's own trajectory of each case, RK4 at a step
+where it has converged to 1e-9 or better (REFERENCE_STEPS), to bench/peers/reference/
+mujoco_<case>.csv, which tests/scenario/mujoco_reference_test.cc meets without MuJoCo:
+
+    "$(bash bench/peers/setup.sh)" bench/peers/mujoco_convergence.py --references
 """
 import math
 import os
@@ -145,6 +151,10 @@ class CompliantTendon:
             "junction.position", "junction.velocity", "drop.position", "drop.velocity"))
 
 
+# RK4's step for each case's stored trajectory: its largest error against musclesim's at
+# rtol 1e-12 (the tables in docs/performance.md) is 1e-9 or below there
+REFERENCE_STEPS = {"hanging": 1e-3, "eccentric": 5e-5, "compliant": 1e-6}
+
 CASES = {
     "hanging": SingleMass(mass=10.0, gravity=GRAVITY, applied=0.0),
     "eccentric": SingleMass(mass=0.05, gravity=0.0, applied=135.0),
@@ -152,7 +162,9 @@ CASES = {
 }
 
 
-def mujoco_run(case, integrator, dt):
+def mujoco_run(case, integrator, dt, repeats=REPEATS):
+    """(the case's samples every SAMPLE, the least time of `repeats` runs timed apart); with
+    repeats 0 the samples carry the actuator's force too, and nothing is timed."""
     gravity = getattr(case, "gravity", GRAVITY)
     model = mujoco.MjModel.from_xml_string(
         "<mujoco>\n  <option timestep=\"%r\" gravity=\"0 0 %r\" integrator=\"%s\"/>\n  %s\n"
@@ -167,14 +179,21 @@ def mujoco_run(case, integrator, dt):
         mujoco.mj_forward(model, data)
         return data
 
+    def sample(data):
+        own = case.mujoco_sample(data)
+        if repeats:
+            return own
+        mujoco.mj_forward(model, data)  # the force at this state: mj_step's is the step's start
+        return own + (float(data.actuator_force[0]),)
+
     data = start()
-    samples = [case.mujoco_sample(data)]
+    samples = [sample(data)]
     for _ in range(int(round(END / SAMPLE))):
         mujoco.mj_step(model, data, nstep=steps)
-        samples.append(case.mujoco_sample(data))
+        samples.append(sample(data))
     # timed apart, as one call of mj_step in C for the whole run: no Python between samples
     best = math.inf
-    for _ in range(REPEATS):
+    for _ in range(repeats):
         data = start()
         began = time.perf_counter()
         mujoco.mj_step(model, data, nstep=steps * int(round(END / SAMPLE)))
@@ -237,7 +256,29 @@ def compare(name, case, program, directory):
     print()
 
 
+def write_references():
+    here = os.path.dirname(os.path.abspath(__file__))
+    for name, case in CASES.items():
+        dt = REFERENCE_STEPS[name]
+        samples, _ = mujoco_run(case, "RK4", dt, repeats=0)
+        columns = (["length", "velocity", "force"] if isinstance(case, SingleMass) else
+                   ["junction_position", "junction_velocity", "drop_position", "drop_velocity",
+                    "force"])
+        path = os.path.join(here, "reference", "mujoco_%s.csv" % name)
+        with open(path, "w") as out:
+            out.write("# MuJoCo %s mj_step, RK4 at dt %g, case %s of "
+                      "bench/peers/mujoco_convergence.py; velocity positive lengthening, "
+                      "force the actuator's (negative pulling)\n" % (mujoco.__version__, dt, name))
+            out.write(",".join(["t"] + columns) + "\n")
+            for k, sample in enumerate(samples):
+                out.write(",".join("%.17g" % v for v in (k * SAMPLE,) + sample) + "\n")
+        print(path, file=sys.stderr)
+
+
 def main():
+    if sys.argv[1:] == ["--references"]:
+        write_references()
+        return
     program = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else "build/musclesim")
     names = sys.argv[2:] or list(CASES)
     for name in names:
