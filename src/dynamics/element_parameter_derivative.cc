@@ -72,6 +72,9 @@ std::unique_ptr<ParameterDerivative> ElementParameterDerivative(const NetworkSys
       if (path == "rest_length") return make(ElementParameter::kRestLength);
       break;
     case ElementKind::kTendon:
+      // De Groote's tendon: its rate follows its slack length (alpha = ln 6 / (strain l_s)),
+      // which the closed form at fixed alpha leaves out: a difference quotient
+      if (e.pushes_below_slack) break;
       if (path == "slack_length") return make(ElementParameter::kSlackLength);
       if (!e.exponential() && path == "stiffness") return make(ElementParameter::kStiffness);
       if (e.exponential() && path == "exponential.k") return make(ElementParameter::kScale);

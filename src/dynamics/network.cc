@@ -640,7 +640,7 @@ NetworkSystem::ElementPartials NetworkSystem::Along(int e, double t, const doubl
   // only free nodes' positions and velocities are states; the others do not move with y
   const auto along = [&](int state) { return state >= 0 ? s[state] : 0.0; };
   const double dl = along(b.state) - along(a.state);
-  const double dldot = along(b.rate) - along(a.rate);  // (no junction: sensitivities refuse one)
+  const double dldot = NodeVelocityAlong(link.to, t, y, s) - NodeVelocityAlong(link.from, t, y, s);
   const double l = PositionOf(b, t, y) - PositionOf(a, t, y);
   const double ldot = VelocityOf(b, t, y) - VelocityOf(a, t, y);
   const Tension tension = TensionOf(e, t, l, ldot, y);
@@ -655,6 +655,13 @@ NetworkSystem::ElementPartials NetworkSystem::Along(int e, double t, const doubl
     out.active = out.total - out.passive;
   }
   return out;
+}
+
+double NetworkSystem::NodeVelocityAlong(int node, double t, const double* y,
+                                        const double* s) const {
+  const End& end = ends_[node];
+  if (end.junction >= 0) return JunctionVelocityAlong(end.junction, t, y, s);
+  return end.rate >= 0 ? s[end.rate] : 0.0;
 }
 
 void NetworkSystem::AddTension(int e, double t, const double* y, double tension,

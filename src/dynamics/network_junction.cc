@@ -252,6 +252,32 @@ const double* NetworkSystem::JunctionVelocities(double t, const double* y) const
   return velocities.data();
 }
 
+double NetworkSystem::JunctionVelocityAlong(int k, double t, const double* y,
+                                            const double* s) const {
+  const Junction& junction = junctions_[k];
+  const FreeNode& f = free_nodes_[junction.free];
+  const double w = JunctionVelocity(k, t, y);
+  const auto along = [&](int state) { return state >= 0 ? s[state] : 0.0; };
+  const double own = s[junction.state];
+  // dR/dy s, term by term as JunctionJacobian's row, and dR/dw
+  double by_state = f.loads.ForceSlope() * own, by_velocity = 0.0;
+  for (const int e : junction.links) {
+    const Link& link = links_[e];
+    const bool from = link.from == f.node;
+    const End& other = ends_[from ? link.to : link.from];
+    const double l = PositionOf(ends_[link.to], t, y) - PositionOf(ends_[link.from], t, y);
+    const double ldot = from ? VelocityOf(other, t, y) - w : w - VelocityOf(other, t, y);
+    const Tension tension = TensionOf(e, t, l, ldot, y);
+    by_state +=
+        tension.by_length * (along(other.state) - own) + tension.by_rate * along(other.rate);
+    if (link.activation >= 0) {
+      by_state += (from ? tension.by_activation : -tension.by_activation) * s[link.activation];
+    }
+    by_velocity -= tension.by_rate;
+  }
+  return -by_state / by_velocity;
+}
+
 void NetworkSystem::JunctionJacobian(double t, const double* y, const double* w,
                                      double* values) const {
   thread_local std::vector<double> by_rate;  // per link of a junction: dT/d(ldot)

@@ -38,6 +38,15 @@ void DifferenceQuotientDerivative::RefineRate(double t, const double* y, const d
   }
 }
 
+double DifferenceQuotientDerivative::NodeVelocity(double t, const double* y, int node) const {
+  double derivative = 0.0;
+  for (const Point& point : stencil_) {
+    point.system->Observe(t, y, sample_);
+    derivative += point.weight * sample_.velocity[static_cast<std::size_t>(node)];
+  }
+  return derivative;
+}
+
 void DifferenceQuotientDerivative::Elements(double t, const double* y,
                                             NetworkSystem::ElementPartials* elements) const {
   const std::size_t count = elements_;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include "musclesim/core/errors.h"
@@ -99,6 +100,7 @@ class ParameterResolver {
   }
 
   void Top();
+  void DeGrooteTendon(std::size_t i, std::size_t e);
   void Model(std::size_t i);
   void ModelField(std::size_t i, bool fitted);
   // A key of a model block of another family than the paper's (docs/model.md 14.1).
@@ -480,6 +482,7 @@ void ParameterResolver::Element(std::size_t i) {
   const auto coefficient = [&](double musclesim::Element::*member, const InputRange* range) {
     Number([at, member](Scenario& s) -> double& { return at(s).*member; }, range);
   };
+  if (element.pushes_below_slack) return DeGrooteTendon(i, e);
   if (key == "exponential" && element.exponential()) {
     End(i + 3);
     if (Key(i + 2) == "k") return coefficient(&musclesim::Element::k, &kPositiveForceRange);
@@ -505,6 +508,45 @@ void ParameterResolver::Element(std::size_t i) {
     case ElementKind::kActuator: break;
   }
   Fail("names no number of this " + std::string(ToString(element.kind)));
+}
+
+void ParameterResolver::DeGrooteTendon(std::size_t i, std::size_t e) {
+  // its YAML keys, each setting what the law holds (k = 0.2 F0, alpha = ln 6 / (strain l_s)):
+  // its slack length keeps the strain, as a scenario read with it would
+  const std::string& key = Key(i + 1);
+  const auto number = [&](std::function<double(const musclesim::Element&)> get,
+                          std::function<void(musclesim::Element&, double)> set,
+                          const InputRange& range) {
+    p_.get_ = [e, get](const Scenario& s) { return get(s.elements[e]); };
+    p_.set_ = [e, set](Scenario& s, double v) { set(s.elements[e], v); };
+    p_.range_ = range;
+    p_.bounded_ = true;
+  };
+  if (key == "slack_length") {
+    End(i + 2);
+    return number([](const musclesim::Element& x) { return x.slack_length; },
+                  [](musclesim::Element& x, double v) {
+                    x.alpha *= x.slack_length / v;
+                    x.slack_length = v;
+                  },
+                  kPositionRange);
+  }
+  if (key == "degroote2016") {
+    End(i + 3);
+    if (Key(i + 2) == "max_isometric_force") {
+      return number([](const musclesim::Element& x) { return x.k / 0.2; },
+                    [](musclesim::Element& x, double v) { x.k = 0.2 * v; }, kPositiveForceRange);
+    }
+    if (Key(i + 2) == "strain_at_one_norm_force") {
+      return number(
+          [](const musclesim::Element& x) { return std::log(6.0) / (x.alpha * x.slack_length); },
+          [](musclesim::Element& x, double v) { x.alpha = std::log(6.0) / (v * x.slack_length); },
+          kTendonStrainRange);
+    }
+  }
+  Fail(
+      "names no number of this De Groote tendon (slack_length, "
+      "degroote2016.max_isometric_force, degroote2016.strain_at_one_norm_force)");
 }
 
 void ParameterResolver::Load(std::size_t i) {

@@ -29,8 +29,13 @@ SensitivityColumns::SensitivityColumns(ScenarioForm form, const NetworkSystem& s
         continue;
       }
       add(system.nodes()[i].name + ".position", Kind::kPosition, state);
-      add(system.nodes()[i].name + ".velocity", Kind::kVelocity,
-          system.VelocityStateIndex(static_cast<int>(i)));
+      const int velocity = system.VelocityStateIndex(static_cast<int>(i));
+      // a massless junction's velocity is no state: a function of it and the parameters
+      if (velocity >= 0) {
+        add(system.nodes()[i].name + ".velocity", Kind::kVelocity, velocity);
+      } else {
+        add(system.nodes()[i].name + ".velocity", Kind::kJunctionVelocity, static_cast<int>(i));
+      }
     }
     for (std::size_t e = 0; e < system.elements().size(); ++e) {
       const Element& element = system.elements()[e];
@@ -74,6 +79,10 @@ void SensitivityColumns::Evaluate(double t, const double* y, const double* const
   const std::size_t count = columns_.size();
   for (std::size_t c = 0; c < count; ++c) {
     const Column& column = columns_[c];
+    if (column.kind == Kind::kJunctionVelocity) {
+      values[c] = sample_.velocity[static_cast<std::size_t>(column.index)];
+      continue;
+    }
     const ElementSample* element =
         column.kind >= Kind::kLength ? &sample_.elements[column.index] : nullptr;
     switch (column.kind) {
@@ -85,6 +94,7 @@ void SensitivityColumns::Evaluate(double t, const double* y, const double* const
       case Kind::kTension: values[c] = element->tension; break;
       case Kind::kPassive: values[c] = element->parts.passive; break;
       case Kind::kActive: values[c] = element->parts.active; break;
+      case Kind::kJunctionVelocity: break;  // (above)
     }
   }
   for (std::size_t p = 0; p < parameters_.size(); ++p) {
@@ -99,6 +109,11 @@ void SensitivityColumns::Evaluate(double t, const double* y, const double* const
       if (column.kind < Kind::kLength) {
         const double state = direction[column.index];
         out[c] = column.kind == Kind::kShortening ? 0.0 - state : state;
+        continue;
+      }
+      if (column.kind == Kind::kJunctionVelocity) {
+        out[c] = system.NodeVelocityAlong(column.index, t, y, direction) +
+                 parameters_[p].derivative->NodeVelocity(t, y, column.index);
         continue;
       }
       // the chain rule: along the state's sensitivity, plus the parameter's own share; an

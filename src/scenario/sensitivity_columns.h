@@ -39,11 +39,13 @@ class SensitivityColumns {
     kLength,
     kTension,
     kPassive,
-    kActive
+    kActive,
+    kJunctionVelocity
   };
   struct Column {
     Kind kind;
-    int index;  // a state (position, velocity, shortening, activation) or an element
+    int index;  // a state (position, velocity, shortening, activation), an element, or a
+                // junction's node
   };
   // A free node's columns in 2 or 3 dimensions, its states from `state` on.
   void AddCoordinates(const std::string& node, int d, int state);

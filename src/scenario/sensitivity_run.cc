@@ -88,18 +88,6 @@ SensitivityRun::SensitivityRun(const Scenario& scenario,
                      scenario.source + " has controllers[0] " + scenario.controllers.front().name +
                      "); run it without sensitivities");
   }
-  if (p.base.system->junction_count() > 0) {
-    // a junction's velocity is no state: its terms of the sensitivity equations (dw/dp by
-    // the implicit function theorem) are not derived yet, nor its velocity's column
-    const std::string at =
-        requests.empty() ? scenario.source
-                         : (requests.front().where.empty() ? "" : requests.front().where + " ") +
-                               requests.front().path;
-    throw InputError(at +
-                     ": sensitivities of a network with a massless junction (a node of mass 0) "
-                     "are not supported yet (" +
-                     scenario.source + "); run it without sensitivities");
-  }
   for (const SensitivityRequest& request : requests) {
     std::string where;
     const Parameter parameter = HandleOf(scenario, request, where);

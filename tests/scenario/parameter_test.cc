@@ -244,6 +244,41 @@ TEST(Parameter, PathsThatNameNoNumberAreRefused) {
 // In 2 or 3 dimensions a node's coordinate is indexed, nodes[i].position[1] its y, and the
 // gravity is gravity[c]; on a line neither takes an index. (Built in code: Get and Assign
 // check nothing of the network, so this holds whatever the engine does in the plane.)
+// De Groote's tendon holds its law as (k, alpha) = (0.2 F0, ln 6 / (strain l_s)): each of its
+// YAML keys, set through its handle (as a sweep or a sensitivity's difference quotient sets
+// it), leaves the element a scenario read with that value has, its slack length keeping the
+// strain (not alpha).
+TEST(Parameter, ADeGrooteTendonsKeysSetItsLawAsTheFileWould) {
+  const Scenario s = LoadScenario(ScenarioPath("musculotendon_compliant.yaml"));
+  ASSERT_EQ(s.elements[1].name, "tendon");
+  struct Case {
+    const char* path;
+    double initial, value;
+    Element expected;
+  };
+  const Case cases[] = {
+      {"elements[1].slack_length", 0.2, 0.21,
+       Element::DeGrooteTendon("tendon", "junction", "end", 0.21, 100.0, 0.049)},
+      {"elements[1].degroote2016.max_isometric_force", 100.0, 150.0,
+       Element::DeGrooteTendon("tendon", "junction", "end", 0.2, 150.0, 0.049)},
+      {"elements[1].degroote2016.strain_at_one_norm_force", 0.049, 0.03,
+       Element::DeGrooteTendon("tendon", "junction", "end", 0.2, 100.0, 0.03)},
+  };
+  for (const Case& c : cases) {
+    Scenario moved = s;
+    const Parameter handle = FindParameter(moved, c.path);
+    EXPECT_NEAR(handle.Get(s), c.initial, 1e-15 * c.initial) << c.path;
+    handle.Set(moved, c.value);
+    const Element& got = moved.elements[1];
+    EXPECT_NEAR(got.slack_length, c.expected.slack_length, 1e-15) << c.path;
+    EXPECT_NEAR(got.k, c.expected.k, 1e-12) << c.path;
+    EXPECT_NEAR(got.alpha, c.expected.alpha, 1e-12 * c.expected.alpha) << c.path;
+    EXPECT_NEAR(handle.Get(moved), c.value, 1e-15 * c.value) << c.path;
+  }
+  EXPECT_THAT(Refusal(s, "elements[1].exponential.k"),
+              HasSubstr("names no number of this De Groote tendon"));
+}
+
 TEST(Parameter, InAPlaneACoordinateIsIndexed) {
   Scenario s;
   s.space.dimensions = 2;

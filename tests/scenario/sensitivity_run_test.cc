@@ -200,27 +200,6 @@ TEST(SensitivityRefusals, ANonNumber) {
                                  "dynamics"));
 }
 
-// A massless junction's velocity is no state, and its sensitivity terms are not derived: a
-// run with sensitivities is refused, with parameters or without (no column read off a state
-// it does not have).
-TEST(SensitivityRefusals, AMasslessJunction) {
-  std::string text = kNetwork;
-  const std::string node = "{name: load, mass: 0.1, position: 0.101, velocity: 0.0}";
-  text.replace(text.find(node), node.size(), "{name: load, mass: 0, position: 0.101}");
-  text += "  # the junction's balance needs a rate-dependent element at zero activation\n";
-  const std::string elements = "elements:\n";
-  text.replace(
-      text.find(elements), elements.size(),
-      elements + "  - {name: damper, type: damper, from: wall_a, to: load, damping: 1.0}\n");
-  const std::string scenario = testing::WriteTempFile("junction.yaml", text);
-  EXPECT_THAT(Refusal(scenario, "models.muscle.f_iso"),
-              HasSubstr("--sensitivity models.muscle.f_iso: sensitivities of a network with a "
-                        "massless junction (a node of mass 0) are not supported yet"));
-  const std::string none =
-      testing::InputErrorOf(scenario, [&] { RunWithSensitivities(LoadScenario(scenario), {}); });
-  EXPECT_THAT(none, HasSubstr(": sensitivities of a network with a massless junction"));
-}
-
 // No parameters: the plain columns, through the sensitivity path.
 TEST(SensitivityTable, NoParametersGiveThePlainColumns) {
   const std::string scenario = Single();

@@ -187,6 +187,10 @@ class NetworkSystem {
   // G_j . s_q over the free points of the path, and d(ldot)/dy s adds the turning of the
   // directions, (d ldot/dq_j) . s_q (docs/model.md 12).
   ElementPartials Along(int e, double t, const double* y, const double* s) const;
+  // The derivative of node `node`'s velocity along s at (t, y) (on a line): s of its velocity
+  // state for a node with a mass, dw/dy s for a massless junction (the implicit function
+  // theorem on its balance, as the Jacobian's row), 0 for a fixed or prescribed node.
+  double NodeVelocityAlong(int node, double t, const double* y, const double* s) const;
   // Adds to `ydot` what a tension `tension` [N] of element e at (t, y) adds to the right-hand
   // side (its nodes' accelerations), the way a change of that element's tension enters df/dp:
   // on a line +-T on its ends; in 2 or 3 dimensions -T G_j on every free point of its path
@@ -307,6 +311,8 @@ class NetworkSystem {
   // Why junction k has no finite velocity at (t, y), for messages: an elastic element's
   // tension that overflows, or a balance without a finite root; "" when it has one.
   std::string JunctionFailure(int k, double t, const double* y) const;
+  // dw/dy s of junction k at (t, y): -(dR/dy s) / (dR/dw).
+  double JunctionVelocityAlong(int k, double t, const double* y, const double* s) const;
   // Every junction's w at (t, y), in a buffer of the calling thread (nullptr if none).
   const double* JunctionVelocities(double t, const double* y) const;
   // An end's velocity, a junction's taken from `w` (JunctionVelocities).

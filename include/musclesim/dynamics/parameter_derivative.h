@@ -21,6 +21,10 @@ class ParameterDerivative {
   // or left as they are for an element it does not know).
   virtual void Elements(double t, const double* y,
                         NetworkSystem::ElementPartials* elements) const = 0;
+  // d(node's velocity)/dp at fixed (t, y): nonzero only for a massless junction, whose
+  // velocity solves a balance the parameter may move (the closed forms, which a network with a
+  // junction does not use, return 0).
+  virtual double NodeVelocity(double /*t*/, const double* /*y*/, int /*node*/) const { return 0.0; }
   // Whether the derivatives are closed forms (else difference quotients).
   virtual bool analytic() const = 0;
   // Replaces rows of the sensitivity's rate `rate` = (df/dy) s + df/dp at (t, y), s the
@@ -49,6 +53,7 @@ class DifferenceQuotientDerivative final : public ParameterDerivative {
   explicit DifferenceQuotientDerivative(Stencil stencil);
   void RightHandSide(double t, const double* y, double* dfdp) const override;
   void Elements(double t, const double* y, NetworkSystem::ElementPartials* elements) const override;
+  double NodeVelocity(double t, const double* y, int node) const override;
   bool analytic() const override { return false; }
   void RefineRate(double t, const double* y, const double* s, double* rate) const override;
 
