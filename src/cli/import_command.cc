@@ -142,8 +142,9 @@ int ImportCommand(int argc, char** argv) {
     std::string report = "musclesim import: " + muscle.name + ": " + muscle.source + " -> " +
                          outputs.back().path + "\n";
     for (const std::string& note : muscle.notes) report += "  not carried over: " + note + "\n";
-    if (muscle.tendon_strain && muscle.params.degroote2016.fiber_damping == 0.0) {
-      report += "  note: " + JunctionDampingNote() + "\n";
+    const double damping = muscle.params.degroote2016.fiber_damping;
+    if (muscle.tendon_strain && damping < kJunctionFiberDamping) {
+      report += "  note: " + JunctionDampingNote(damping) + "\n";
     }
     if (gaussians > 0) {
       const GaussianModel paper = FitGaussians(muscle, gaussians);

@@ -5,6 +5,7 @@
 
 #include "musclesim/core/number_format.h"
 #include "musclesim/core/printable_text.h"
+#include "musclesim/model/tension.h"
 
 namespace musclesim {
 
@@ -78,24 +79,31 @@ std::string FormatCompliantScenario(const ImportedMuscle& muscle, const std::str
       << " at the maximum isometric force): the fiber\n"
       << "# (`fiber`, along the line) and the tendon (`tendon`, slack length " << FormatNumber(l_s)
       << " m) meet at a\n# massless junction (docs/model.md 14.4).\n";
-  if (p.degroote2016.fiber_damping == 0.0) {
+  if (p.degroote2016.fiber_damping < kJunctionFiberDamping) {
+    out << "# " << JunctionDampingNote(p.degroote2016.fiber_damping) << ".\n";
     p.degroote2016.fiber_damping = kJunctionFiberDamping;
-    out << "# " << JunctionDampingNote() << ".\n";
   }
   for (const std::string& note : muscle.notes) out << "# Not carried over: " << note << ".\n";
   const double mass = 0.5 * p.f_iso / kGravity;
   const double fiber = OptimalLineLength(p);
+  // the tendon stretched to carry what the fiber's passive element pulls at rest at its
+  // optimal length: the junction starts in balance (De Groote's tendon inverted,
+  // F = 0.2 F0 (exp(kT strain) - 1))
+  const double pull = TensionModel(p).Passive(fiber, 0.0).total;
+  const double k_t = std::log(6.0) / *muscle.tendon_strain;
+  const double stretch = pull > 0.0 ? std::log1p(pull / (0.2 * p.f_iso)) / k_t : 0.0;
   out << "# The experiment is a template to edit: a " << FormatNumber(mass)
       << " kg mass (half the isometric force\n"
       << "# under gravity) hangs from the unit, released at rest, the fiber at its optimal "
-         "length\n# and the tendon at its slack length.\n";
+         "length\n# and the tendon stretched to carry its passive force there, "
+      << FormatNumber(pull) << " N (the junction in balance).\n";
   out << "name: " << Quoted(muscle.name) << "\n" << NetworkModelBlock(p);
   out << "nodes:\n"
       << "  - {name: origin, fixed: 0.0}   # m\n"
       << "  - {name: junction, mass: 0, position: " << FormatNumber(fiber)
       << "}   # kg, m: massless\n"
       << "  - {name: body, mass: " << FormatNumber(mass)
-      << ", position: " << FormatNumber(fiber + l_s) << "}   # kg, m\n";
+      << ", position: " << FormatNumber(fiber + l_s * (1.0 + stretch)) << "}   # kg, m\n";
   out << "elements:\n"
       << "  - name: fiber\n    type: actuator\n    from: origin\n    to: junction\n"
       << "    model: muscle\n"
@@ -113,9 +121,12 @@ std::string FormatCompliantScenario(const ImportedMuscle& muscle, const std::str
 
 }  // namespace
 
-std::string JunctionDampingNote() {
-  return "fiber_damping is 0 in the file; the massless junction needs a tension that depends on "
-         "its rate at zero activation (docs/model.md 14.4), so the fiber's is " +
+std::string JunctionDampingNote(double file_damping) {
+  return "fiber_damping is " + FormatNumber(file_damping) +
+         " in the file; the massless junction needs a tension that depends on its rate at zero "
+         "activation, and below " +
+         FormatNumber(kJunctionFiberDamping) +
+         " its balance is ill-conditioned (docs/guide/networks.md), so the fiber's is " +
          FormatNumber(kJunctionFiberDamping) +
          ", which moves the trajectory by about 7 times that, relative to its scale";
 }

@@ -118,6 +118,14 @@ ImportedMuscle ReadDeGroote(const XMLElement& element, const std::string& path) 
                        kTendonStrainRange.Rule());
     }
     muscle.tendon_strain = strain;
+    // De Groote's tendon is normalised by its slack length
+    const double l_s = muscle.tendon_slack_length;
+    if (!(l_s > 0.0) || !kPositionRange.Contains(l_s)) {
+      throw InputError(muscle.source + " '" + muscle.name +
+                       "': tendon_slack_length = " + FormatNumber(l_s) +
+                       ": must be > 0 and at most 1e3 [m] for a compliant tendon (De Groote's "
+                       "is normalised by it)");
+    }
   }
   if (!read.Flag("ignore_activation_dynamics", false)) {
     ActivationDynamics lag;

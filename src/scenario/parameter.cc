@@ -510,6 +510,10 @@ void ParameterResolver::Element(std::size_t i) {
   Fail("names no number of this " + std::string(ToString(element.kind)));
 }
 
+// De Groote's tendon's slack length: > 0, the law is normalised by it.
+constexpr InputRange kDeGrooteSlackRange{
+    0.0, kPositionRange.max, "m", "De Groote's tendon is normalised by its slack length", true};
+
 void ParameterResolver::DeGrooteTendon(std::size_t i, std::size_t e) {
   // its YAML keys, each setting what the law holds (k = 0.2 F0, alpha = ln 6 / (strain l_s)):
   // its slack length keeps the strain, as a scenario read with it would
@@ -529,7 +533,7 @@ void ParameterResolver::DeGrooteTendon(std::size_t i, std::size_t e) {
                     x.alpha *= x.slack_length / v;
                     x.slack_length = v;
                   },
-                  kPositionRange);
+                  kDeGrooteSlackRange);
   }
   if (key == "degroote2016") {
     End(i + 3);

@@ -372,6 +372,33 @@ TEST(ImportCli, ACompliantMusclesScenarioRunsAndSaysWhatItAdded) {
         testing::RunMusclesim("run " + dir + "/" + name + ".yaml -o " + dir + "/" + name + ".csv");
     EXPECT_EQ(run.exit_code, 0) << name << ": " << run.err;
   }
+  // the template starts with the junction in balance: the tendon carries the fiber's passive
+  // force, and the junction is at rest (a tendon at its slack length would carry none, and the
+  // fiber's 1e-8 damping alone would hold it: 1.8e6 m/s)
+  const Scenario written = LoadScenario(dir + "/muscle.yaml");
+  const RecordedRun run = RunScenario(written);
+  const std::vector<std::string>& names = run.columns.names();
+  const auto first = [&](const std::string& name) {
+    const auto at = std::find(names.begin(), names.end(), name);
+    EXPECT_NE(at, names.end()) << name;
+    return run.values[static_cast<std::size_t>(at - names.begin())].front();
+  };
+  EXPECT_NEAR(first("tendon.tension"), first("fiber.tension"), 1e-9 * 400.0);
+  EXPECT_GT(first("tendon.tension"), 1.0);  // De Groote's passive pull at the optimal length
+  EXPECT_LT(std::abs(first("junction.velocity")), 1e-6);
+}
+
+TEST(ImportCli, ACompliantTendonWithoutASlackLengthIsRefused) {
+  std::string text = testing::ReadFile(Fixture("opensim_compliant.osim"));
+  const std::string slack = "<tendon_slack_length>0.20000000000000001</tendon_slack_length>";
+  ASSERT_NE(text.find(slack), std::string::npos);
+  text.replace(text.find(slack), slack.size(), "<tendon_slack_length>0</tendon_slack_length>");
+  const std::string dir = testing::FreshDirectory("import_no_slack");
+  const testing::CliOutcome out = testing::RunMusclesim(
+      "import " + testing::WriteTempFile("no_slack.osim", text) + " -o " + dir);
+  EXPECT_EQ(out.exit_code, 2) << out.err;
+  EXPECT_THAT(out.err, HasSubstr("'muscle': tendon_slack_length = 0: must be > 0"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/muscle.yaml"));
 }
 
 TEST(ImportCli, WritesARunnableScenarioPerMuscleAndListsTheRest) {
