@@ -130,6 +130,43 @@ def write_import_example():
     print(os.path.normpath(path), file=sys.stderr)
 
 
+def write_millard_fixture():
+    """tests/fixtures/import/opensim_millard.osim: three Millard2012EquilibriumMuscles as
+    OpenSim writes them, for `musclesim import`'s conversion (tests/io/millard_import_test.cc):
+    'damped' at OpenSim's defaults but for its size and pennation; 'classic' without fiber
+    damping (OpenSim's classic formulation, whose curves it adjusts) and with every curve
+    property set, the optional ones too; 'rigid' with a rigid tendon and no activation
+    dynamics."""
+    model, _, _ = hanging_mass(*next(c for c in CASES if c[0] == "opensim_drop_rigid")[1:])
+    body = model.getBodySet().get(0)
+    damped = osim.Millard2012EquilibriumMuscle("damped", 800.0, 0.09, 0.15, 0.2)
+    classic = osim.Millard2012EquilibriumMuscle("classic", 600.0, 0.12, 0.25, 0.0)
+    classic.setFiberDamping(0.0)
+    classic.setActivationTimeConstant(0.02)
+    classic.setDeactivationTimeConstant(0.05)
+    classic.setMinimumActivation(0.02)
+    classic.setMinControl(0.02)
+    classic.setActiveForceLengthCurve(osim.ActiveForceLengthCurve(0.5, 0.8, 1.7, 0.6, 0.05))
+    classic.setForceVelocityCurve(
+        osim.ForceVelocityCurve(0.1, 0.3, 4.0, 0.05, 0.2, 1.6, 0.3, 0.7))
+    classic.setFiberForceLengthCurve(osim.FiberForceLengthCurve(0.1, 0.5, 0.5, 5.0, 0.4))
+    classic.setTendonForceLengthCurve(osim.TendonForceLengthCurve(0.06, 30.0, 0.5, 0.8))
+    rigid = osim.Millard2012EquilibriumMuscle("rigid", 300.0, 0.05, 0.02, 0.1)
+    rigid.set_ignore_tendon_compliance(True)
+    rigid.set_ignore_activation_dynamics(True)
+    rigid.setMaxContractionVelocity(8.0)
+    rigid.setFiberDamping(0.02)
+    for muscle in (damped, classic, rigid):
+        muscle.addNewPathPoint("origin", model.getGround(), osim.Vec3(0))
+        muscle.addNewPathPoint("insertion", body, osim.Vec3(0))
+        model.addForce(muscle)
+    model.finalizeConnections()
+    model.initSystem()  # OpenSim's own checks of every property
+    path = os.path.join(HERE, "..", "..", "tests", "fixtures", "import", "opensim_millard.osim")
+    model.printToXML(path)
+    print(os.path.normpath(path), file=sys.stderr)
+
+
 def cases():
     """(name, hanging_mass's arguments) of every case."""
     for name, *case in CASES:
@@ -156,6 +193,7 @@ def cases():
 
 def main():
     write_import_example()
+    write_millard_fixture()
     for name, case, dynamics in cases():
         model, muscle, height = hanging_mass(*case, **dynamics)
         state = model.initSystem()

@@ -1,6 +1,8 @@
 """The peers' muscle curves as their own libraries compute them, on dense grids, written to
 bench/peers/reference/ as CSV: the references for native curve families (docs/model.md 14). OpenSim's DeGrooteFregly2016Muscle (its static curve functions and their
-derivatives) and MuJoCo's muscle (mju_muscleGain, mju_muscleBias, mju_muscleDynamics).
+derivatives), the four curves of OpenSim's Millard2012EquilibriumMuscle (quintic Bezier
+splines, each curve class's calcValue and calcDerivative) and MuJoCo's muscle
+(mju_muscleGain, mju_muscleBias, mju_muscleDynamics).
     "$(bash bench/peers/setup.sh)" bench/peers/reference_curves.py
 """
 import pathlib
@@ -43,6 +45,36 @@ def degroote():
           source + " (tendon_strain_at_one_norm_force 0.049)")
 
 
+# Millard 2012's curves, one parameter set per row: OpenSim's defaults; the active curve
+# without its floor (what the damped muscle runs); every property set, the optional ones too
+MILLARD_SETS = {
+    "default": {},
+    "damped": {"active": (0.4441, 0.73, 1.8123, 0.8616, 0.0)},
+    "other": {"active": (0.5, 0.8, 1.7, 0.6, 0.05),
+              "velocity": (0.1, 0.3, 4.0, 0.05, 0.2, 1.6, 0.3, 0.7),
+              "passive": (0.1, 0.5, 0.5, 5.0, 0.4),
+              "tendon": (0.06, 30.0, 0.5, 0.8)},
+}
+
+
+def millard():
+    classes = {"active": opensim.ActiveForceLengthCurve, "velocity": opensim.ForceVelocityCurve,
+               "passive": opensim.FiberForceLengthCurve, "tendon": opensim.TendonForceLengthCurve}
+    grids = {"active": np.linspace(0.3, 2.0, 171), "velocity": np.linspace(-1.2, 1.2, 241),
+             "passive": np.linspace(0.9, 2.0, 111), "tendon": np.linspace(0.99, 1.1, 111)}
+    rows = []
+    for index, properties in enumerate(MILLARD_SETS.values()):
+        for number, (curve, make) in enumerate(classes.items()):
+            function = make(*properties[curve]) if curve in properties else make()
+            for x in grids[curve]:
+                rows.append((index, number, x, function.calcValue(x),
+                             function.calcDerivative(x, 1)))
+    write("millard2012_curves.csv", ["set", "curve", "x", "value", "slope"], rows,
+          f"OpenSim {opensim.GetVersion()} ActiveForceLengthCurve (curve 0), ForceVelocityCurve "
+          "(1), FiberForceLengthCurve (2), TendonForceLengthCurve (3); sets " +
+          "; ".join(f"{i} {name} {p}" for i, (name, p) in enumerate(MILLARD_SETS.items())))
+
+
 def mujoco_muscle():
     source = f"MuJoCo {mujoco.__version__} mju_muscleGain/mju_muscleBias"
     # parameter sets: [range0, range1, force, scale, lmin, lmax, vmax, fpmax, fvmax]
@@ -72,4 +104,5 @@ def mujoco_muscle():
 
 if __name__ == "__main__":
     degroote()
+    millard()
     mujoco_muscle()

@@ -26,11 +26,13 @@ namespace {
 constexpr const char* kHelp =
     R"(usage: musclesim import MODEL.osim|MODEL.xml [-o DIR] [--to-gaussians N]
 
-Reads the muscles of an OpenSim model (.osim: DeGrooteFregly2016Muscle) or a MuJoCo model
-(MJCF: <muscle>, and <general> with gaintype and biastype muscle), and writes for each a
-scenario DIR/NAME.yaml: its model of the matching curve family (family degroote2016 or
-mujoco, docs/model.md 14) and an experiment to edit, the muscle on a line holding a hanging
-mass of half its isometric force. Properties a file leaves out take the tool's defaults.
+Reads the muscles of an OpenSim model (.osim: DeGrooteFregly2016Muscle, and
+Millard2012EquilibriumMuscle converted to it) or a MuJoCo model (MJCF: <muscle>, and
+<general> with gaintype and biastype muscle), and writes for each a scenario DIR/NAME.yaml:
+its model of the matching curve family (family degroote2016 or mujoco, docs/model.md 14) and
+an experiment to edit, the muscle on a line holding a hanging mass of half its isometric
+force. Properties a file leaves out take the tool's defaults. A converted muscle's report
+gives each curve's largest and RMS departure from the file's, in units of f_iso.
   -o DIR             the directory to write into (default: the current one); it must exist
   --to-gaussians N   also write DIR/NAME_gaussians.yaml: the same experiment with the paper's
                      model (passive exponential, N Gaussians, power-law velocity) fitted to
@@ -86,9 +88,11 @@ GaussianModel FitGaussians(const ImportedMuscle& muscle, int count) {
   const auto percent = [&](double rmse) {
     return FormatNumber(rmse) + " N (" + FormatNumber(100.0 * rmse / p.f_iso) + " % of f_iso)";
   };
-  std::string report = "RMSE passive " + percent(fit.passive.rmse) + ", active " +
-                       percent(fit.active.rmse) + ", velocity " + percent(fit.velocity.best.rmse) +
-                       " shortening";
+  // a converted muscle's fit is to the curves it was converted to, which its report gives
+  std::string report =
+      std::string(muscle.conversion.empty() ? "" : "of its degroote2016 curves: ") +
+      "RMSE passive " + percent(fit.passive.rmse) + ", active " + percent(fit.active.rmse) +
+      ", velocity " + percent(fit.velocity.best.rmse) + " shortening";
   const std::optional<EccentricIdentification>& eccentric = fit.velocity.eccentric;
   if (eccentric && eccentric->identified) {
     report += ", " + percent(eccentric->best.rmse) + " lengthening";
@@ -141,6 +145,7 @@ int ImportCommand(int argc, char** argv) {
         "the scenario of " + muscle.name);
     std::string report = "musclesim import: " + muscle.name + ": " + muscle.source + " -> " +
                          outputs.back().path + "\n";
+    for (const std::string& line : muscle.conversion) report += "  converted: " + line + "\n";
     for (const std::string& note : muscle.notes) report += "  not carried over: " + note + "\n";
     const double damping = muscle.params.degroote2016.fiber_damping;
     if (muscle.tendon_strain && damping < kJunctionFiberDamping) {

@@ -83,6 +83,7 @@ std::string FormatCompliantScenario(const ImportedMuscle& muscle, const std::str
     out << "# " << JunctionDampingNote(p.degroote2016.fiber_damping) << ".\n";
     p.degroote2016.fiber_damping = kJunctionFiberDamping;
   }
+  for (const std::string& line : muscle.conversion) out << "# Converted: " << line << ".\n";
   for (const std::string& note : muscle.notes) out << "# Not carried over: " << note << ".\n";
   const double mass = 0.5 * p.f_iso / kGravity;
   const double fiber = OptimalLineLength(p);
@@ -206,6 +207,7 @@ std::string FormatImportedScenario(const ImportedMuscle& muscle, const std::stri
     out << "# Its tendon is rigid: the actuator's length is the muscle-tendon length less the\n"
         << "# tendon slack length, " << FormatNumber(muscle.tendon_slack_length) << " m.\n";
   }
+  for (const std::string& line : muscle.conversion) out << "# Converted: " << line << ".\n";
   for (const std::string& note : muscle.notes) out << "# Not carried over: " << note << ".\n";
   const double mass = 0.5 * p.f_iso / kGravity;
   out << "# The experiment is a template to edit: a " << FormatNumber(mass)

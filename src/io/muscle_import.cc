@@ -56,7 +56,8 @@ ImportedModel ImportMuscles(const std::string& path) {
     std::string found;
     for (const std::string& line : model.unsupported) found += "\n  " + line;
     throw InputError(PrintableText(path) +
-                     ": no muscle musclesim imports (OpenSim: DeGrooteFregly2016Muscle; MuJoCo: "
+                     ": no muscle musclesim imports (OpenSim: DeGrooteFregly2016Muscle, "
+                     "Millard2012EquilibriumMuscle; MuJoCo: "
                      "<muscle>, <general> with the muscle gain and bias)" +
                      (found.empty() ? std::string(": no actuator found") : "; found:" + found));
   }

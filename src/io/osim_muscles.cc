@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "io/muscle_import_readers.h"
+#include "io/osim_property_reader.h"
 #include "io/xml_reading.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/core/input_ranges.h"
@@ -28,70 +29,8 @@ struct DeGrooteDefaults {
   double activation_dynamics_smoothing = 0.1;
 };
 
-// musclesim's key -> OpenSim's property, for messages
-const std::vector<std::pair<std::string, std::string>> kPropertyNames = {
-    {"f_iso", "max_isometric_force"},
-    {"pennation_angle", "pennation_angle_at_optimal"},
-    {"tau_activation", "activation_time_constant"},
-    {"tau_deactivation", "deactivation_time_constant"},
-    {"smoothing", "activation_dynamics_smoothing"},
-};
-
-class MuscleReader {
- public:
-  MuscleReader(const XMLElement& muscle, const std::string& path) : muscle_(muscle), path_(path) {}
-
-  double Number(const char* property, double fallback) const {
-    const XMLElement* child = xml::Child(muscle_, property);
-    if (child == nullptr) return fallback;
-    return xml::ParseNumber(xml::TextOf(*child), What(property), xml::Where(path_, *child));
-  }
-  bool Flag(const char* property, bool fallback) const {
-    const XMLElement* child = xml::Child(muscle_, property);
-    if (child == nullptr) return fallback;
-    return xml::ParseBool(xml::TextOf(*child), What(property), xml::Where(path_, *child));
-  }
-  std::string What(const char* property) const {
-    return std::string(muscle_.Name()) + " '" + Name() + "' <" + property + ">";
-  }
-  std::string Name() const {
-    const char* name = muscle_.Attribute("name");
-    return name == nullptr ? std::string() : PrintableText(name);
-  }
-
- private:
-  const XMLElement& muscle_;
-  const std::string& path_;
-};
-
-// The path's points and wrapping: not imported (the template puts the unit on a line).
-std::string GeometryNote(const XMLElement& muscle) {
-  int points = 0, wraps = 0;
-  if (const XMLElement* path = muscle.FirstChildElement("GeometryPath")) {
-    if (const XMLElement* set = path->FirstChildElement("PathPointSet")) {
-      if (const XMLElement* objects = set->FirstChildElement("objects")) {
-        for (const XMLElement* p = objects->FirstChildElement(); p; p = p->NextSiblingElement()) {
-          ++points;
-        }
-      }
-    }
-    if (const XMLElement* set = path->FirstChildElement("PathWrapSet")) {
-      if (const XMLElement* objects = set->FirstChildElement("objects")) {
-        for (const XMLElement* w = objects->FirstChildElement(); w; w = w->NextSiblingElement()) {
-          ++wraps;
-        }
-      }
-    }
-  }
-  std::string note = "its path (" + std::to_string(points) + " points";
-  if (wraps > 0) note += ", " + std::to_string(wraps) + " wrap objects";
-  return note +
-         ") is not imported: the scenario puts the muscle-tendon unit on a line, its length the "
-         "actuator's";
-}
-
 ImportedMuscle ReadDeGroote(const XMLElement& element, const std::string& path) {
-  const MuscleReader read(element, path);
+  const OsimPropertyReader read(element, path);
   const DeGrooteDefaults defaults;
   ImportedMuscle muscle;
   muscle.name = read.Name();
@@ -112,20 +51,7 @@ ImportedMuscle ReadDeGroote(const XMLElement& element, const std::string& path) 
   if (!read.Flag("ignore_tendon_compliance", false)) {
     const double strain =
         read.Number("tendon_strain_at_one_norm_force", defaults.tendon_strain_at_one_norm_force);
-    if (!kTendonStrainRange.Contains(strain)) {
-      throw InputError(muscle.source + " '" + muscle.name +
-                       "': tendon_strain_at_one_norm_force = " + FormatNumber(strain) + ": " +
-                       kTendonStrainRange.Rule());
-    }
-    muscle.tendon_strain = strain;
-    // De Groote's tendon is normalised by its slack length
-    const double l_s = muscle.tendon_slack_length;
-    if (!(l_s > 0.0) || !kPositionRange.Contains(l_s)) {
-      throw InputError(muscle.source + " '" + muscle.name +
-                       "': tendon_slack_length = " + FormatNumber(l_s) +
-                       ": must be > 0 and at most 1e3 [m] for a compliant tendon (De Groote's "
-                       "is normalised by it)");
-    }
+    SetCompliantTendon(muscle, strain, "tendon_strain_at_one_norm_force");
   }
   if (!read.Flag("ignore_activation_dynamics", false)) {
     ActivationDynamics lag;
@@ -137,18 +63,8 @@ ImportedMuscle ReadDeGroote(const XMLElement& element, const std::string& path) 
         read.Number("activation_dynamics_smoothing", defaults.activation_dynamics_smoothing);
     muscle.activation_dynamics = lag;
   }
-  ValidateImported(muscle, kPropertyNames);
-  if (!read.Flag("appliesForce", true)) {
-    muscle.notes.push_back(
-        "appliesForce is false: OpenSim applies no force of this muscle; the scenario's muscle "
-        "pulls");
-  }
-  if (xml::Child(element, "default_activation") != nullptr) {
-    muscle.notes.push_back("default_activation " +
-                           FormatNumber(read.Number("default_activation", 0.0)) +
-                           ": the scenario starts at activation 0 (edit initial.activation)");
-  }
-  muscle.notes.push_back(GeometryNote(element));
+  ValidateImported(muscle, kOsimPropertyNames);
+  AddCommonNotes(read, element, muscle);
   return muscle;
 }
 
@@ -188,7 +104,7 @@ ImportedModel ReadOpenSimMuscles(const tinyxml2::XMLDocument& document, const st
     const std::string type = force->Name();
     const char* name = force->Attribute("name");
     if (type == "DeGrooteFregly2016Muscle") {
-      if (MuscleReader(*force, path).Flag("ignore_passive_fiber_force", false)) {
+      if (OsimPropertyReader(*force, path).Flag("ignore_passive_fiber_force", false)) {
         model.unsupported.push_back(
             type + " '" + PrintableText(name == nullptr ? "" : name) + "' (" +
             xml::Where(path, *force) +
@@ -199,11 +115,16 @@ ImportedModel ReadOpenSimMuscles(const tinyxml2::XMLDocument& document, const st
       model.muscles.push_back(ReadDeGroote(*force, path));
       continue;
     }
+    if (type == "Millard2012EquilibriumMuscle") {
+      model.muscles.push_back(ReadMillard(*force, path));
+      continue;
+    }
     const bool muscle = IsMuscleClass(type);
     model.unsupported.push_back(
         type + " '" + PrintableText(name == nullptr ? "" : name) + "' (" +
         xml::Where(path, *force) + "): " +
-        (muscle ? "a muscle class musclesim does not implement (DeGrooteFregly2016Muscle only)"
+        (muscle ? "a muscle class musclesim does not import (it imports "
+                  "DeGrooteFregly2016Muscle, and Millard2012EquilibriumMuscle converted to it)"
                 : "not a muscle"));
   }
   return model;

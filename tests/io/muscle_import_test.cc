@@ -74,7 +74,7 @@ TEST(ImportOpenSim, DeGrooteMuscleWithItsPropertiesAndTheRestListed) {
   ASSERT_EQ(model.unsupported.size(), 1u);
   EXPECT_THAT(model.unsupported[0],
               HasSubstr("Thelen2003Muscle 'thelen' (" + kOpenSimModel + ":159)"));
-  EXPECT_THAT(model.unsupported[0], HasSubstr("a muscle class musclesim does not implement"));
+  EXPECT_THAT(model.unsupported[0], HasSubstr("a muscle class musclesim does not import"));
 }
 
 TEST(ImportOpenSim, TheImportedMuscleRunsOpenSimsTrajectory) {

@@ -1,6 +1,7 @@
 // Reading the muscles of another tool's model file (docs/guide/import.md): OpenSim's .osim
-// (DeGrooteFregly2016Muscle) and MuJoCo's MJCF (<muscle>, and <general> with the muscle
-// gain and bias), each into a musclesim model of the matching curve family (docs/model.md 14).
+// (DeGrooteFregly2016Muscle; Millard2012EquilibriumMuscle, converted to the nearest family,
+// degroote2016) and MuJoCo's MJCF (<muscle>, and <general> with the muscle gain and bias),
+// each into a musclesim model of the matching curve family (docs/model.md 14).
 // What a file holds that musclesim does not take (another muscle class, a compliant tendon,
 // the path's geometry, a default class) is listed, never dropped silently.
 #pragma once
@@ -28,6 +29,8 @@ struct ImportedMuscle {
                                                           // or mujoco); none: the control is
                                                           // the activation
   std::vector<std::string> notes;  // what of this muscle was not carried over, one sentence each
+  std::vector<std::string> conversion;  // a muscle of another family: how far each of its
+                                        // curves moved, one sentence each
 };
 
 struct ImportedModel {

@@ -1,0 +1,219 @@
+// OpenSim's Millard2012EquilibriumMuscle as family degroote2016 (docs/model.md 14.5): its
+// curves read with OpenSim 4.6's defaults, adjusted as the muscle adjusts them for its damped
+// or classic formulation, and brought to the nearest De Groote muscle, each curve's departure
+// reported.
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include "io/muscle_import_readers.h"
+#include "io/osim_property_reader.h"
+#include "io/xml_reading.h"
+#include "musclesim/core/errors.h"
+#include "musclesim/core/number_format.h"
+#include "musclesim/model/millard_conversion.h"
+
+namespace musclesim {
+
+namespace {
+
+using tinyxml2::XMLElement;
+
+// Below this fiber damping OpenSim's muscle drops its damping (MIN_NONZERO_DAMPING_COEFFICIENT)
+constexpr double kMillardLeastDamping = 0.001;
+
+// The curve `name` of the muscle: its element, or the muscle's when the file leaves it out
+// (every property then at its default)
+const XMLElement& CurveElement(const XMLElement& muscle, const char* name) {
+  const XMLElement* curve = muscle.FirstChildElement(name);
+  return curve == nullptr ? muscle : *curve;
+}
+
+// Builds `curve` once to check it, a ParameterError becoming an InputError that names the
+// curve's element, line and property.
+template <typename Curve>
+void CheckCurve(const Curve& curve, const XMLElement& muscle, const char* name,
+                const std::string& path, const std::string& source) {
+  try {
+    MillardCurve(curve);
+  } catch (const ParameterError& e) {
+    const XMLElement& element = CurveElement(muscle, name);
+    throw InputError(source + ": " + name + " (" + xml::Where(path, element) + ") <" + e.path() +
+                     "> = " + e.value() + ": " + e.rule());
+  }
+}
+
+MillardCurves ReadCurves(const XMLElement& muscle, const std::string& path) {
+  MillardCurves c;
+  const auto read = [&](const char* name) {
+    const XMLElement* curve = muscle.FirstChildElement(name);
+    return OsimPropertyReader(curve == nullptr ? muscle : *curve, path);
+  };
+  if (muscle.FirstChildElement("ActiveForceLengthCurve") != nullptr) {
+    const OsimPropertyReader r = read("ActiveForceLengthCurve");
+    MillardActiveForceLength& a = c.active;
+    a.min_norm_active_fiber_length =
+        r.Number("min_norm_active_fiber_length", a.min_norm_active_fiber_length);
+    a.transition_norm_fiber_length =
+        r.Number("transition_norm_fiber_length", a.transition_norm_fiber_length);
+    a.max_norm_active_fiber_length =
+        r.Number("max_norm_active_fiber_length", a.max_norm_active_fiber_length);
+    a.shallow_ascending_slope = r.Number("shallow_ascending_slope", a.shallow_ascending_slope);
+    a.minimum_value = r.Number("minimum_value", a.minimum_value);
+  }
+  if (muscle.FirstChildElement("ForceVelocityCurve") != nullptr) {
+    const OsimPropertyReader r = read("ForceVelocityCurve");
+    MillardForceVelocity& v = c.velocity;
+    v.concentric_slope_at_vmax = r.Number("concentric_slope_at_vmax", v.concentric_slope_at_vmax);
+    v.concentric_slope_near_vmax =
+        r.Number("concentric_slope_near_vmax", v.concentric_slope_near_vmax);
+    v.isometric_slope = r.Number("isometric_slope", v.isometric_slope);
+    v.eccentric_slope_at_vmax = r.Number("eccentric_slope_at_vmax", v.eccentric_slope_at_vmax);
+    v.eccentric_slope_near_vmax =
+        r.Number("eccentric_slope_near_vmax", v.eccentric_slope_near_vmax);
+    v.max_eccentric_velocity_force_multiplier = r.Number("max_eccentric_velocity_force_multiplier",
+                                                         v.max_eccentric_velocity_force_multiplier);
+    v.concentric_curviness = r.Number("concentric_curviness", v.concentric_curviness);
+    v.eccentric_curviness = r.Number("eccentric_curviness", v.eccentric_curviness);
+  }
+  if (muscle.FirstChildElement("FiberForceLengthCurve") != nullptr) {
+    const OsimPropertyReader r = read("FiberForceLengthCurve");
+    MillardFiberForceLength& f = c.passive;
+    f.strain_at_zero_force = r.Number("strain_at_zero_force", f.strain_at_zero_force);
+    f.strain_at_one_norm_force = r.Number("strain_at_one_norm_force", f.strain_at_one_norm_force);
+    f.stiffness_at_low_force = r.OptionalNumber("stiffness_at_low_force");
+    f.stiffness_at_one_norm_force = r.OptionalNumber("stiffness_at_one_norm_force");
+    f.curviness = r.OptionalNumber("curviness");
+  }
+  if (muscle.FirstChildElement("TendonForceLengthCurve") != nullptr) {
+    const OsimPropertyReader r = read("TendonForceLengthCurve");
+    MillardTendonForceLength& t = c.tendon;
+    t.strain_at_one_norm_force = r.Number("strain_at_one_norm_force", t.strain_at_one_norm_force);
+    t.stiffness_at_one_norm_force = r.OptionalNumber("stiffness_at_one_norm_force");
+    t.norm_force_at_toe_end = r.OptionalNumber("norm_force_at_toe_end");
+    t.curviness = r.OptionalNumber("curviness");
+  }
+  return c;
+}
+
+// Millard2012EquilibriumMuscle's own changes to its curves: the classic formulation (an
+// elastic tendon, no damping) needs an active floor and end slopes that keep its
+// force-velocity curve invertible; the damped one (or a rigid tendon) drops both.
+void AdjustAsOpenSim(MillardCurves& c, bool classic) {
+  MillardForceVelocity& v = c.velocity;
+  if (classic) {
+    c.active.minimum_value = std::max(c.active.minimum_value, 0.1);
+    v.concentric_slope_at_vmax =
+        std::max(v.concentric_slope_at_vmax, 0.5 * v.concentric_slope_near_vmax);
+    v.eccentric_slope_at_vmax =
+        std::max(v.eccentric_slope_at_vmax, 0.5 * v.eccentric_slope_near_vmax);
+  } else {
+    c.active.minimum_value = 0.0;
+    v.concentric_slope_at_vmax = 0.0;
+    v.eccentric_slope_at_vmax = 0.0;
+  }
+}
+
+// Three significant digits: a departure is a measure, not a value to read back.
+std::string Short(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+
+std::string Departure(const CurveDeparture& d, const std::string& argument, double low,
+                      double high) {
+  return "largest departure " + Short(d.largest) + " f_iso at " + argument + " = " + Short(d.at) +
+         " (RMS " + Short(d.rms) + ") over " + argument + " in [" + FormatNumber(low) + ", " +
+         FormatNumber(high) + "]";
+}
+
+}  // namespace
+
+ImportedMuscle ReadMillard(const XMLElement& element, const std::string& path) {
+  const OsimPropertyReader read(element, path);
+  ImportedMuscle muscle;
+  muscle.name = read.Name();
+  muscle.source = "Millard2012EquilibriumMuscle (" + read.Where() + ")";
+  const std::string source = muscle.source + " '" + muscle.name + "'";
+  ModelParams& p = muscle.params;
+  p.family = CurveFamily::kDeGroote2016;
+  DeGrooteParams& d = p.degroote2016;
+  // OpenSim 4.6's Millard2012EquilibriumMuscle defaults
+  p.f_iso = read.Number("max_isometric_force", 1000.0);
+  d.optimal_fiber_length = read.Number("optimal_fiber_length", 0.1);
+  d.max_contraction_velocity = read.Number("max_contraction_velocity", 10.0);
+  p.pennation_angle = read.Number("pennation_angle_at_optimal", 0.0);
+  muscle.tendon_slack_length = read.Number("tendon_slack_length", 0.2);
+  const double damping = read.Number("fiber_damping", 0.1);
+  const bool rigid = read.Flag("ignore_tendon_compliance", false);
+  const bool damped = damping >= kMillardLeastDamping;
+  d.fiber_damping = damped ? damping : 0.0;
+  if (damping > 0.0 && !damped) {
+    muscle.notes.push_back("fiber_damping " + FormatNumber(damping) +
+                           ": OpenSim drops a damping below 0.001 and so does this import");
+  }
+
+  MillardCurves curves = ReadCurves(element, path);
+  AdjustAsOpenSim(curves, !rigid && !damped);
+  CheckCurve(curves.active, element, "ActiveForceLengthCurve", path, source);
+  CheckCurve(curves.velocity, element, "ForceVelocityCurve", path, source);
+  CheckCurve(curves.passive, element, "FiberForceLengthCurve", path, source);
+  CheckCurve(curves.tendon, element, "TendonForceLengthCurve", path, source);
+  const DeGrooteConversion converted = NearestDeGroote(curves);
+  d.active_force_width_scale = converted.active_force_width_scale;
+  d.passive_fiber_strain_at_one_norm_force = converted.passive_fiber_strain_at_one_norm_force;
+
+  const MillardActiveForceLength& a = curves.active;
+  muscle.conversion.push_back("active force-length: De Groote's with width scale " +
+                              FormatNumber(converted.active_force_width_scale) +
+                              " (least squares), " +
+                              Departure(converted.active, "l~", a.min_norm_active_fiber_length,
+                                        a.max_norm_active_fiber_length));
+  const MillardFiberForceLength& f = curves.passive;
+  muscle.conversion.push_back(
+      "passive force-length: De Groote's with Millard's strain at one norm force, " +
+      FormatNumber(f.strain_at_one_norm_force) + ", " +
+      Departure(converted.passive, "l~", std::min(1.0, 1.0 + f.strain_at_zero_force),
+                1.0 + f.strain_at_one_norm_force));
+  muscle.conversion.push_back("force-velocity: De Groote's with Millard's v_max, " +
+                              Departure(converted.velocity, "v~ (lengthening)", -1.0, 1.0));
+  if (!rigid) {
+    SetCompliantTendon(muscle, converted.tendon_strain_at_one_norm_force,
+                       "TendonForceLengthCurve <strain_at_one_norm_force>");
+    muscle.conversion.push_back(
+        "tendon force-length: De Groote's with Millard's strain at one norm force, " +
+        FormatNumber(converted.tendon_strain_at_one_norm_force) + ", " +
+        Departure(converted.tendon, "strain", 0.0, converted.tendon_strain_at_one_norm_force));
+  }
+  if (!read.Flag("ignore_activation_dynamics", false)) {
+    // Millard's first-order lag is musclesim's thelen2003 family, time constant for constant
+    ActivationDynamics lag;
+    lag.family = ActivationFamily::kThelen2003;
+    lag.tau_activation = read.Number("activation_time_constant", 0.01);
+    lag.tau_deactivation = read.Number("deactivation_time_constant", 0.04);
+    muscle.activation_dynamics = lag;
+    const double floor = read.Number("minimum_activation", 0.01);
+    if (floor > 0.0) {
+      muscle.notes.push_back("minimum_activation " + FormatNumber(floor) +
+                             ": OpenSim holds the activation at or above it; musclesim's "
+                             "activation falls to the excitation");
+    }
+  }
+  ValidateImported(muscle, kOsimPropertyNames);
+  muscle.notes.push_back(
+      "OpenSim holds the fiber at or above min_norm_active_fiber_length times the optimal "
+      "length (" +
+      FormatNumber(a.min_norm_active_fiber_length * d.optimal_fiber_length) +
+      " m); musclesim's fiber is not clamped");
+  if (p.pennation_angle != 0.0) {
+    muscle.notes.push_back(
+        "maximum_pennation_angle " +
+        FormatNumber(read.Number("maximum_pennation_angle", 1.4706289056333368)) +
+        " rad: OpenSim clamps the pennation there; musclesim does not");
+  }
+  AddCommonNotes(read, element, muscle);
+  return muscle;
+}
+
+}  // namespace musclesim
