@@ -75,6 +75,64 @@ def millard():
           "; ".join(f"{i} {name} {p}" for i, (name, p) in enumerate(MILLARD_SETS.items())))
 
 
+# Thelen 2003's curves: OpenSim's defaults, and every property set
+THELEN_SETS = {
+    "default": {},
+    "other": {"FmaxTendonStrain": 0.05, "FmaxMuscleStrain": 0.5, "KshapeActive": 0.3,
+              "KshapePassive": 4.0, "Af": 0.3, "Flen": 1.6, "fv_linear_extrap_threshold": 0.9},
+}
+
+
+def thelen():
+    """Thelen2003Muscle's curves are protected in OpenSim's API: they are read off a muscle
+    (compliant, OpenSim 4.6 runs no other) whose fiber length, tendon strain and activation 1
+    are set in a state, realised to dynamics: its active and passive force-length multipliers,
+    its tendon force over F0 against the tendon's strain, and the force-velocity multiplier
+    against the fiber velocity its equilibrium solves for (at activation 1)."""
+    l_opt, l_s, v_max, f0 = 0.1, 0.2, 10.0, 1000.0
+    rows = []
+    for index, properties in enumerate(THELEN_SETS.values()):
+        model = opensim.Model()
+        body = opensim.Body("b", 1.0, opensim.Vec3(0), opensim.Inertia(0.01))
+        model.addBody(body)
+        joint = opensim.SliderJoint("s", model.getGround(), opensim.Vec3(0), opensim.Vec3(0),
+                                    body, opensim.Vec3(0), opensim.Vec3(0))
+        model.addJoint(joint)
+        muscle = opensim.Thelen2003Muscle("thelen", f0, l_opt, l_s, 0.0)
+        for name, value in properties.items():
+            getattr(muscle, "set_" + name)(value)
+        muscle.addNewPathPoint("o", model.getGround(), opensim.Vec3(0))
+        muscle.addNewPathPoint("i", body, opensim.Vec3(0))
+        model.addForce(muscle)
+        state = model.initSystem()
+        coordinate = joint.getCoordinate()
+
+        def realised(length, strain):
+            coordinate.setValue(state, length * l_opt + l_s * (1.0 + strain))
+            coordinate.setSpeedValue(state, 0.0)
+            muscle.setFiberLength(state, length * l_opt)
+            muscle.setActivation(state, 1.0)
+            model.realizeDynamics(state)
+
+        for length in np.linspace(0.3, 1.9, 161):
+            realised(length, 0.02)
+            rows.append((index, 0, muscle.getFiberLength(state) / l_opt,
+                         muscle.getActiveForceLengthMultiplier(state)))
+            rows.append((index, 1, muscle.getFiberLength(state) / l_opt,
+                         muscle.getPassiveForceMultiplier(state)))
+        for strain in np.linspace(-0.005, 0.075, 161):
+            realised(1.0, strain)  # the fiber at its optimal length: no passive force
+            rows.append((index, 2, muscle.getFiberVelocity(state) / (v_max * l_opt),
+                         muscle.getForceVelocityMultiplier(state)))
+            rows.append((index, 3, muscle.getTendonStrain(state),
+                         muscle.getTendonForce(state) / f0))
+    write("thelen2003_curves.csv", ["set", "curve", "x", "value"], rows,
+          f"OpenSim {opensim.GetVersion()} Thelen2003Muscle: active (curve 0) and passive (1) "
+          "force-length against l~, force-velocity (2) against v~ (lengthening, activation 1), "
+          "tendon force over F0 (3) against strain; sets " +
+          "; ".join(f"{i} {name} {p}" for i, (name, p) in enumerate(THELEN_SETS.items())))
+
+
 def mujoco_muscle():
     source = f"MuJoCo {mujoco.__version__} mju_muscleGain/mju_muscleBias"
     # parameter sets: [range0, range1, force, scale, lmin, lmax, vmax, fpmax, fvmax]
@@ -105,4 +163,5 @@ def mujoco_muscle():
 if __name__ == "__main__":
     degroote()
     millard()
+    thelen()
     mujoco_muscle()

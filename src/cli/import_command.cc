@@ -27,7 +27,7 @@ constexpr const char* kHelp =
     R"(usage: musclesim import MODEL.osim|MODEL.xml [-o DIR] [--to-gaussians N]
 
 Reads the muscles of an OpenSim model (.osim: DeGrooteFregly2016Muscle, and
-Millard2012EquilibriumMuscle converted to it) or a MuJoCo model (MJCF: <muscle>, and
+Millard2012EquilibriumMuscle and Thelen2003Muscle converted to it) or a MuJoCo model (MJCF: <muscle>, and
 <general> with gaintype and biastype muscle), and writes for each a scenario DIR/NAME.yaml:
 its model of the matching curve family (family degroote2016 or mujoco, docs/model.md 14) and
 an experiment to edit, the muscle on a line holding a hanging mass of half its isometric

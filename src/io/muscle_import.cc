@@ -57,7 +57,7 @@ ImportedModel ImportMuscles(const std::string& path) {
     for (const std::string& line : model.unsupported) found += "\n  " + line;
     throw InputError(PrintableText(path) +
                      ": no muscle musclesim imports (OpenSim: DeGrooteFregly2016Muscle, "
-                     "Millard2012EquilibriumMuscle; MuJoCo: "
+                     "Millard2012EquilibriumMuscle, Thelen2003Muscle; MuJoCo: "
                      "<muscle>, <general> with the muscle gain and bias)" +
                      (found.empty() ? std::string(": no actuator found") : "; found:" + found));
   }

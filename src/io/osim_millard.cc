@@ -3,7 +3,6 @@
 // or classic formulation, and brought to the nearest De Groote muscle, each curve's departure
 // reported.
 #include <algorithm>
-#include <cstdio>
 #include <string>
 
 #include "io/muscle_import_readers.h"
@@ -11,7 +10,6 @@
 #include "io/xml_reading.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
-#include "musclesim/model/millard_conversion.h"
 
 namespace musclesim {
 
@@ -114,37 +112,13 @@ void AdjustAsOpenSim(MillardCurves& c, bool classic) {
   }
 }
 
-// Three significant digits: a departure is a measure, not a value to read back.
-std::string Short(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", x);
-  return text;
-}
-
-std::string Departure(const CurveDeparture& d, const std::string& argument, double low,
-                      double high) {
-  return "largest departure " + Short(d.largest) + " f_iso at " + argument + " = " + Short(d.at) +
-         " (RMS " + Short(d.rms) + ") over " + argument + " in [" + FormatNumber(low) + ", " +
-         FormatNumber(high) + "]";
-}
-
 }  // namespace
 
 ImportedMuscle ReadMillard(const XMLElement& element, const std::string& path) {
   const OsimPropertyReader read(element, path);
-  ImportedMuscle muscle;
-  muscle.name = read.Name();
-  muscle.source = "Millard2012EquilibriumMuscle (" + read.Where() + ")";
+  ImportedMuscle muscle = StartMuscle(read, "Millard2012EquilibriumMuscle");
   const std::string source = muscle.source + " '" + muscle.name + "'";
-  ModelParams& p = muscle.params;
-  p.family = CurveFamily::kDeGroote2016;
-  DeGrooteParams& d = p.degroote2016;
-  // OpenSim 4.6's Millard2012EquilibriumMuscle defaults
-  p.f_iso = read.Number("max_isometric_force", 1000.0);
-  d.optimal_fiber_length = read.Number("optimal_fiber_length", 0.1);
-  d.max_contraction_velocity = read.Number("max_contraction_velocity", 10.0);
-  p.pennation_angle = read.Number("pennation_angle_at_optimal", 0.0);
-  muscle.tendon_slack_length = read.Number("tendon_slack_length", 0.2);
+  DeGrooteParams& d = muscle.params.degroote2016;
   const double damping = read.Number("fiber_damping", 0.1);
   const bool rigid = read.Flag("ignore_tendon_compliance", false);
   const bool damped = damping >= kMillardLeastDamping;
@@ -161,57 +135,20 @@ ImportedMuscle ReadMillard(const XMLElement& element, const std::string& path) {
   CheckCurve(curves.passive, element, "FiberForceLengthCurve", path, source);
   CheckCurve(curves.tendon, element, "TendonForceLengthCurve", path, source);
   const DeGrooteConversion converted = NearestDeGroote(curves);
-  d.active_force_width_scale = converted.active_force_width_scale;
-  d.passive_fiber_strain_at_one_norm_force = converted.passive_fiber_strain_at_one_norm_force;
-
-  const MillardActiveForceLength& a = curves.active;
-  muscle.conversion.push_back("active force-length: De Groote's with width scale " +
-                              FormatNumber(converted.active_force_width_scale) +
-                              " (least squares), " +
-                              Departure(converted.active, "l~", a.min_norm_active_fiber_length,
-                                        a.max_norm_active_fiber_length));
-  const MillardFiberForceLength& f = curves.passive;
-  muscle.conversion.push_back(
-      "passive force-length: De Groote's with Millard's strain at one norm force, " +
-      FormatNumber(f.strain_at_one_norm_force) + ", " +
-      Departure(converted.passive, "l~", std::min(1.0, 1.0 + f.strain_at_zero_force),
-                1.0 + f.strain_at_one_norm_force));
-  muscle.conversion.push_back("force-velocity: De Groote's with Millard's v_max, " +
-                              Departure(converted.velocity, "v~ (lengthening)", -1.0, 1.0));
+  ApplyConversion(converted, !rigid, muscle);
   if (!rigid) {
     SetCompliantTendon(muscle, converted.tendon_strain_at_one_norm_force,
                        "TendonForceLengthCurve <strain_at_one_norm_force>");
-    muscle.conversion.push_back(
-        "tendon force-length: De Groote's with Millard's strain at one norm force, " +
-        FormatNumber(converted.tendon_strain_at_one_norm_force) + ", " +
-        Departure(converted.tendon, "strain", 0.0, converted.tendon_strain_at_one_norm_force));
   }
-  if (!read.Flag("ignore_activation_dynamics", false)) {
-    // Millard's first-order lag is musclesim's thelen2003 family, time constant for constant
-    ActivationDynamics lag;
-    lag.family = ActivationFamily::kThelen2003;
-    lag.tau_activation = read.Number("activation_time_constant", 0.01);
-    lag.tau_deactivation = read.Number("deactivation_time_constant", 0.04);
-    muscle.activation_dynamics = lag;
-    const double floor = read.Number("minimum_activation", 0.01);
-    if (floor > 0.0) {
-      muscle.notes.push_back("minimum_activation " + FormatNumber(floor) +
-                             ": OpenSim holds the activation at or above it; musclesim's "
-                             "activation falls to the excitation");
-    }
-  }
+  // Millard's first-order lag, its defaults
+  SetFirstOrderActivation(read, 0.01, 0.04, muscle);
   ValidateImported(muscle, kOsimPropertyNames);
   muscle.notes.push_back(
       "OpenSim holds the fiber at or above min_norm_active_fiber_length times the optimal "
       "length (" +
-      FormatNumber(a.min_norm_active_fiber_length * d.optimal_fiber_length) +
+      FormatNumber(curves.active.min_norm_active_fiber_length * d.optimal_fiber_length) +
       " m); musclesim's fiber is not clamped");
-  if (p.pennation_angle != 0.0) {
-    muscle.notes.push_back(
-        "maximum_pennation_angle " +
-        FormatNumber(read.Number("maximum_pennation_angle", 1.4706289056333368)) +
-        " rad: OpenSim clamps the pennation there; musclesim does not");
-  }
+  AddPennationClampNote(read, muscle);
   AddCommonNotes(read, element, muscle);
   return muscle;
 }

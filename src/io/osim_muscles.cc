@@ -1,5 +1,6 @@
 // OpenSim's .osim: DeGrooteFregly2016Muscle as family degroote2016 (docs/model.md 14.1), its
-// absent properties at OpenSim 4.6's defaults (bench/peers/README.md).
+// absent properties at OpenSim 4.6's defaults (bench/peers/README.md); Millard's and Thelen's
+// muscles converted to it (io/osim_millard.cc, io/osim_thelen.cc).
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,11 +19,9 @@ namespace {
 
 using tinyxml2::XMLElement;
 
-// OpenSim 4.6's DeGrooteFregly2016Muscle defaults for the properties a file leaves out.
+// OpenSim 4.6's DeGrooteFregly2016Muscle defaults for the properties a file leaves out
+// (beside those of every muscle, StartMuscle's).
 struct DeGrooteDefaults {
-  double max_isometric_force = 1000.0;  // N
-  double optimal_fiber_length = 0.1;    // m
-  double tendon_slack_length = 0.2;     // m
   double tendon_strain_at_one_norm_force = 0.049;
   double activation_time_constant = 0.015;    // s
   double deactivation_time_constant = 0.060;  // s
@@ -32,21 +31,12 @@ struct DeGrooteDefaults {
 ImportedMuscle ReadDeGroote(const XMLElement& element, const std::string& path) {
   const OsimPropertyReader read(element, path);
   const DeGrooteDefaults defaults;
-  ImportedMuscle muscle;
-  muscle.name = read.Name();
-  muscle.source = "DeGrooteFregly2016Muscle (" + xml::Where(path, element) + ")";
-  ModelParams& p = muscle.params;
-  p.family = CurveFamily::kDeGroote2016;
-  DeGrooteParams& d = p.degroote2016;
-  p.f_iso = read.Number("max_isometric_force", defaults.max_isometric_force);
-  d.optimal_fiber_length = read.Number("optimal_fiber_length", defaults.optimal_fiber_length);
-  d.max_contraction_velocity = read.Number("max_contraction_velocity", d.max_contraction_velocity);
+  ImportedMuscle muscle = StartMuscle(read, "DeGrooteFregly2016Muscle");
+  DeGrooteParams& d = muscle.params.degroote2016;
   d.active_force_width_scale = read.Number("active_force_width_scale", d.active_force_width_scale);
   d.passive_fiber_strain_at_one_norm_force = read.Number("passive_fiber_strain_at_one_norm_force",
                                                          d.passive_fiber_strain_at_one_norm_force);
   d.fiber_damping = read.Number("fiber_damping", d.fiber_damping);
-  p.pennation_angle = read.Number("pennation_angle_at_optimal", 0.0);
-  muscle.tendon_slack_length = read.Number("tendon_slack_length", defaults.tendon_slack_length);
 
   if (!read.Flag("ignore_tendon_compliance", false)) {
     const double strain =
@@ -117,6 +107,10 @@ ImportedModel ReadOpenSimMuscles(const tinyxml2::XMLDocument& document, const st
     }
     if (type == "Millard2012EquilibriumMuscle") {
       model.muscles.push_back(ReadMillard(*force, path));
+      continue;
+    }
+    if (type == "Thelen2003Muscle") {
+      model.muscles.push_back(ReadThelen(*force, path));
       continue;
     }
     const bool muscle = IsMuscleClass(type);

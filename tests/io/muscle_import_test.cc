@@ -39,7 +39,7 @@ using ::testing::Not;
 std::string Fixture(const std::string& name) { return FixturePath("import/" + name); }
 
 // the model OpenSim 4.6 wrote for bench/peers/opensim_reference.py's pennate case, with a
-// Thelen2003Muscle beside its DeGrooteFregly2016Muscle
+// Thelen2003Muscle beside its DeGrooteFregly2016Muscle (converted on import)
 const std::string kOpenSimModel =
     std::string(MUSCLESIM_SOURCE_DIR) + "/data/opensim_hanging_mass.osim";
 
@@ -50,10 +50,10 @@ const ImportedMuscle& Named(const ImportedModel& model, const std::string& name)
   return *at;
 }
 
-TEST(ImportOpenSim, DeGrooteMuscleWithItsPropertiesAndTheRestListed) {
+TEST(ImportOpenSim, DeGrooteMuscleWithItsPropertiesAndTheThelenMuscleConverted) {
   const ImportedModel model = ImportMuscles(kOpenSimModel);
   EXPECT_EQ(model.tool, "OpenSim");
-  ASSERT_EQ(model.muscles.size(), 1u);
+  ASSERT_EQ(model.muscles.size(), 2u);
   const ImportedMuscle& m = model.muscles[0];
   EXPECT_EQ(m.name, "muscle");
   EXPECT_THAT(m.source, HasSubstr("opensim_hanging_mass.osim:111"));
@@ -69,11 +69,47 @@ TEST(ImportOpenSim, DeGrooteMuscleWithItsPropertiesAndTheRestListed) {
   EXPECT_EQ(m.params.degroote2016.passive_fiber_strain_at_one_norm_force, 0.6);
   EXPECT_EQ(m.tendon_slack_length, 0.05);
   EXPECT_FALSE(m.activation_dynamics.has_value());
-  ASSERT_EQ(m.notes.size(), 1u);  // rigid tendon, no activation dynamics: only the path
+  EXPECT_TRUE(m.conversion.empty());  // a family of its own
+  ASSERT_EQ(m.notes.size(), 1u);      // rigid tendon, no activation dynamics: only the path
   EXPECT_THAT(m.notes[0], HasSubstr("its path (2 points)"));
+  EXPECT_TRUE(model.unsupported.empty());
+
+  // opensim_reference.py's Thelen2003Muscle("thelen", 300, 0.08, 0.1, 0.1), OpenSim's
+  // defaults otherwise: converted, compliant (OpenSim 4.6 runs no other), its lag thelen2003
+  const ImportedMuscle& thelen = model.muscles[1];
+  EXPECT_EQ(thelen.name, "thelen");
+  EXPECT_THAT(thelen.source, HasSubstr("Thelen2003Muscle (" + kOpenSimModel + ":159)"));
+  EXPECT_EQ(thelen.params.family, CurveFamily::kDeGroote2016);
+  EXPECT_EQ(thelen.params.f_iso, 300.0);
+  EXPECT_EQ(thelen.params.pennation_angle, 0.1);
+  EXPECT_EQ(thelen.params.degroote2016.optimal_fiber_length, 0.08);
+  EXPECT_EQ(thelen.params.degroote2016.fiber_damping, 0.0);
+  EXPECT_EQ(thelen.params.degroote2016.passive_fiber_strain_at_one_norm_force, 0.6);
+  EXPECT_EQ(thelen.tendon_slack_length, 0.1);
+  ASSERT_TRUE(thelen.tendon_strain);
+  EXPECT_EQ(*thelen.tendon_strain, 0.04);
+  ASSERT_TRUE(thelen.activation_dynamics);
+  EXPECT_EQ(thelen.activation_dynamics->family, ActivationFamily::kThelen2003);
+  EXPECT_EQ(thelen.activation_dynamics->tau_activation, 0.015);
+  EXPECT_EQ(thelen.activation_dynamics->tau_deactivation, 0.05);
+  ASSERT_EQ(thelen.conversion.size(), 4u);
+  EXPECT_THAT(thelen.conversion[3], HasSubstr("tendon force-length: De Groote's with the file's "
+                                              "strain at one norm force, 0.04, largest departure"));
+  EXPECT_THAT(thelen.notes, Contains(HasSubstr("scales its shortening velocity by 0.25 + 0.75")));
+}
+
+TEST(ImportOpenSim, AnotherMuscleClassIsListedNotImported) {
+  std::string text = testing::ReadFile(kOpenSimModel);
+  for (const std::string tag : {"<Thelen2003Muscle ", "</Thelen2003Muscle>"}) {
+    const std::size_t at = text.find(tag);
+    ASSERT_NE(at, std::string::npos) << tag;
+    text.replace(at, tag.size(), tag[1] == '/' ? "</RigidTendonMuscle>" : "<RigidTendonMuscle ");
+  }
+  const std::string path = testing::WriteTempFile("rigid_tendon_muscle.osim", text);
+  const ImportedModel model = ImportMuscles(path);
+  ASSERT_EQ(model.muscles.size(), 1u);
   ASSERT_EQ(model.unsupported.size(), 1u);
-  EXPECT_THAT(model.unsupported[0],
-              HasSubstr("Thelen2003Muscle 'thelen' (" + kOpenSimModel + ":159)"));
+  EXPECT_THAT(model.unsupported[0], HasSubstr("RigidTendonMuscle 'thelen' (" + path + ":159)"));
   EXPECT_THAT(model.unsupported[0], HasSubstr("a muscle class musclesim does not import"));
 }
 

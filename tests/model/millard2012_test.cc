@@ -13,7 +13,7 @@
 
 #include "musclesim/core/errors.h"
 #include "musclesim/model/degroote2016.h"
-#include "musclesim/model/millard_conversion.h"
+#include "musclesim/model/degroote_conversion.h"
 #include "support/numeric.h"
 #include "support/peer_reference.h"
 
@@ -162,11 +162,11 @@ TEST(MillardToDeGroote, KeepsTheStrainsAndWidensTheActiveCurveToItsLeastSquares)
   EXPECT_LT(rms_at(w), rms_at(w + 1e-3));
   EXPECT_NEAR(out.active.rms, rms_at(w), 1e-3 * rms_at(w));
 
-  // the force-velocity departure is largest at full lengthening: De Groote's plateau
+  // the lengthening departure is largest at full lengthening: De Groote's plateau
   // (d1 asinh(d2 + d3) + d4 at v~ = 1, about 1.79) against Millard's 1.6
   const double degroote_at_one = degroote2016::ForceVelocity(1.0).value;
-  EXPECT_NEAR(out.velocity.largest, degroote_at_one - 1.6, 1e-12);
-  EXPECT_EQ(out.velocity.at, 1.0);
+  EXPECT_NEAR(out.lengthening.largest, degroote_at_one - 1.6, 1e-12);
+  EXPECT_EQ(out.lengthening.at, 1.0);
   const SegmentedBezierCurve tendon = MillardCurve(c.tendon);
   const auto [tendon_rms, tendon_largest] = Compare(
       0.0, 0.06, [](double e) { return 0.2 * std::expm1(std::log(6.0) * e / 0.06); },

@@ -1,7 +1,8 @@
 // `musclesim import` of OpenSim's Millard2012EquilibriumMuscle (tests/fixtures/import/
-// opensim_millard.osim, written by OpenSim 4.6 through bench/peers/opensim_reference.py):
-// converted to family degroote2016 with each curve's departure reported, its properties the
-// file's, its curves adjusted as OpenSim adjusts them, and every scenario runnable.
+// opensim_millard.osim, written by OpenSim 4.6 through bench/peers/opensim_reference.py) and
+// Thelen2003Muscle (data/opensim_hanging_mass.osim, likewise): converted to family
+// degroote2016 with each curve's departure reported, their properties the file's, Millard's
+// curves adjusted as OpenSim adjusts them, and every scenario runnable.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -12,7 +13,7 @@
 
 #include "musclesim/core/errors.h"
 #include "musclesim/io/muscle_import.h"
-#include "musclesim/model/millard_conversion.h"
+#include "musclesim/model/degroote_conversion.h"
 #include "support/cli_run.h"
 #include "support/fresh_directory.h"
 #include "support/scenario_files.h"
@@ -63,9 +64,10 @@ TEST(ImportMillard, TakesTheFilesPropertiesIntoTheNearestDeGrooteMuscle) {
   EXPECT_EQ(damped.activation_dynamics->tau_deactivation, 0.04);
   ASSERT_EQ(damped.conversion.size(), 4u);  // every curve, the tendon's too
   EXPECT_THAT(damped.conversion[0], HasSubstr("active force-length: De Groote's with width scale"));
-  EXPECT_THAT(damped.conversion[2], HasSubstr("force-velocity: De Groote's with Millard's v_max, "
-                                              "largest departure 0.394 f_iso at v~ (lengthening) "
-                                              "= 1"));
+  EXPECT_THAT(damped.conversion[2], HasSubstr("force-velocity: De Groote's with the file's v_max, "
+                                              "shortening largest departure"));
+  EXPECT_THAT(damped.conversion[2],
+              HasSubstr("lengthening largest departure 0.394 f_iso at v~ = 1 "));
   EXPECT_THAT(damped.notes, ::testing::Contains(HasSubstr("minimum_activation 0.01")));
   EXPECT_THAT(damped.notes, ::testing::Contains(HasSubstr("maximum_pennation_angle")));
 
@@ -76,7 +78,7 @@ TEST(ImportMillard, TakesTheFilesPropertiesIntoTheNearestDeGrooteMuscle) {
   EXPECT_EQ(classic.activation_dynamics->tau_activation, 0.02);
   EXPECT_THAT(classic.notes, ::testing::Contains(HasSubstr("minimum_activation 0.02")));
   EXPECT_THAT(classic.conversion[1], HasSubstr("strain at one norm force, 0.5, "));
-  EXPECT_THAT(classic.conversion[1], HasSubstr("over l~ in [1, 1.5]"));
+  EXPECT_THAT(classic.conversion[1], HasSubstr("over l~ in [0.5, 1.5]"));
 
   const ImportedMuscle& rigid = Named(model, "rigid");
   EXPECT_FALSE(rigid.tendon_strain);
@@ -120,7 +122,7 @@ TEST(ImportMillard, AdjustsTheCurvesAsOpenSimDidWhenItWroteTheFile) {
   EXPECT_THAT(lines[0], HasSubstr("largest departure " + three_digits(expected.active.largest) +
                                   " f_iso at l~ = " + three_digits(expected.active.at) + " (RMS " +
                                   three_digits(expected.active.rms) + ")"));
-  EXPECT_THAT(lines[2], HasSubstr("(RMS " + three_digits(expected.velocity.rms) + ")"));
+  EXPECT_THAT(lines[2], HasSubstr("(RMS " + three_digits(expected.shortening.rms) + ")"));
   // the damped muscle drops the floor: a floor in its file changes nothing
   text = testing::ReadFile(kMillard);
   const std::string damped_floor = "<minimum_value>0</minimum_value>";
@@ -161,7 +163,7 @@ TEST(ImportMillardCli, WritesARunnableScenarioPerMuscleWithItsConversionReported
       testing::RunMusclesim("import " + kMillard + " --to-gaussians 2 -o " + dir);
   ASSERT_EQ(out.exit_code, 0) << out.err;
   EXPECT_THAT(out.err, HasSubstr("musclesim import: damped: Millard2012EquilibriumMuscle ("));
-  EXPECT_THAT(out.err, HasSubstr("  converted: tendon force-length: De Groote's with Millard's "
+  EXPECT_THAT(out.err, HasSubstr("  converted: tendon force-length: De Groote's with the file's "
                                  "strain at one norm force, 0.049, largest departure"));
   EXPECT_THAT(out.err, HasSubstr("of its degroote2016 curves: RMSE passive"));
   // the classic muscle has no damping: its junction gets the least the balance needs
@@ -189,6 +191,40 @@ TEST(ImportMillardCli, ABadCurvePropertyExitsTwoAndWritesNothing) {
   EXPECT_EQ(out.exit_code, 2) << out.err;
   EXPECT_THAT(out.err, HasSubstr("<concentric_curviness> = 2: must be in [0, 1]"));
   EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+const std::string kThelenFile =
+    std::string(MUSCLESIM_SOURCE_DIR) + "/data/opensim_hanging_mass.osim";
+
+TEST(ImportThelenCli, ItsScenariosRunAndABadPropertyIsRefusedByName) {
+  const std::string dir = testing::FreshDirectory("import_thelen");
+  const testing::CliOutcome out =
+      testing::RunMusclesim("import " + kThelenFile + " --to-gaussians 3 -o " + dir);
+  ASSERT_EQ(out.exit_code, 0) << out.err;
+  EXPECT_THAT(out.err, HasSubstr("musclesim import: thelen: Thelen2003Muscle ("));
+  // Thelen's fiber has no damping: the junction gets the least its balance needs
+  EXPECT_THAT(out.err, HasSubstr("note: fiber_damping is 0 in the file"));
+  EXPECT_THAT(testing::ReadFile(dir + "/thelen.yaml"),
+              HasSubstr("# Converted: force-velocity: De Groote's with the file's v_max"));
+  for (const char* name : {"thelen", "thelen_gaussians"}) {
+    const testing::CliOutcome run =
+        testing::RunMusclesim("run " + dir + "/" + name + ".yaml -o " + dir + "/" + name + ".csv");
+    EXPECT_EQ(run.exit_code, 0) << name << ": " << run.err;
+  }
+  std::string text = testing::ReadFile(kThelenFile);
+  const std::string open = "<Thelen2003Muscle name=\"thelen\">";
+  const std::size_t at = text.find(open);
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + open.size(), "<Flen>0.9</Flen>");
+  const std::string bad_dir = testing::FreshDirectory("import_thelen_bad");
+  const testing::CliOutcome bad = testing::RunMusclesim(
+      "import " + testing::WriteTempFile("thelen_bad.osim", text) + " -o " + bad_dir);
+  EXPECT_EQ(bad.exit_code, 2) << bad.err;
+  // the property's own line (the edit put it on the muscle's)
+  EXPECT_THAT(bad.err, HasSubstr("Thelen2003Muscle ("));
+  EXPECT_THAT(bad.err, HasSubstr("thelen_bad.osim:159) 'thelen'"));
+  EXPECT_THAT(bad.err, HasSubstr("'thelen': Flen = 0.9: must be above 1"));
+  EXPECT_TRUE(std::filesystem::is_empty(bad_dir));
 }
 
 }  // namespace
