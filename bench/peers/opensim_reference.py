@@ -132,7 +132,7 @@ def write_import_example():
 
 def write_millard_fixture():
     """tests/fixtures/import/opensim_millard.osim: three Millard2012EquilibriumMuscles as
-    OpenSim writes them, for `musclesim import`'s conversion (tests/io/millard_import_test.cc):
+    OpenSim writes them, for `musclesim import`'s conversion (tests/io/converted_import_test.cc):
     'damped' at OpenSim's defaults but for its size and pennation; 'classic' without fiber
     damping (OpenSim's classic formulation, whose curves it adjusts) and with every curve
     property set, the optional ones too; 'rigid' with a rigid tendon and no activation

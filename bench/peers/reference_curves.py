@@ -1,7 +1,9 @@
 """The peers' muscle curves as their own libraries compute them, on dense grids, written to
-bench/peers/reference/ as CSV: the references for native curve families (docs/model.md 14). OpenSim's DeGrooteFregly2016Muscle (its static curve functions and their
-derivatives), the four curves of OpenSim's Millard2012EquilibriumMuscle (quintic Bezier
-splines, each curve class's calcValue and calcDerivative) and MuJoCo's muscle
+bench/peers/reference/ as CSV: the references for native curve families and for the curves
+of the muscles `musclesim import` converts (docs/model.md 14). OpenSim's
+DeGrooteFregly2016Muscle (its static curve functions and their derivatives), the four curves
+of its Millard2012EquilibriumMuscle (quintic Bezier splines, each curve class's calcValue and
+calcDerivative) and of its Thelen2003Muscle (read off realised states), and MuJoCo's muscle
 (mju_muscleGain, mju_muscleBias, mju_muscleDynamics).
     "$(bash bench/peers/setup.sh)" bench/peers/reference_curves.py
 """

@@ -27,19 +27,19 @@ constexpr const char* kHelp =
     R"(usage: musclesim import MODEL.osim|MODEL.xml [-o DIR] [--to-gaussians N]
 
 Reads the muscles of an OpenSim model (.osim: DeGrooteFregly2016Muscle, and
-Millard2012EquilibriumMuscle and Thelen2003Muscle converted to it) or a MuJoCo model (MJCF: <muscle>, and
-<general> with gaintype and biastype muscle), and writes for each a scenario DIR/NAME.yaml:
-its model of the matching curve family (family degroote2016 or mujoco, docs/model.md 14) and
-an experiment to edit, the muscle on a line holding a hanging mass of half its isometric
-force. Properties a file leaves out take the tool's defaults. A converted muscle's report
+Millard2012EquilibriumMuscle and Thelen2003Muscle converted to it) or a MuJoCo model (MJCF:
+<muscle>, and <general> with gaintype and biastype muscle), and writes for each a scenario
+DIR/NAME.yaml: its model of the matching curve family (family degroote2016 or mujoco,
+docs/model.md 14) and an experiment to edit, the muscle on a line holding a hanging mass of
+half its isometric force. Properties a file leaves out take the tool's defaults. A converted muscle's report
 gives each curve's largest and RMS departure from the file's, in units of f_iso.
   -o DIR             the directory to write into (default: the current one); it must exist
   --to-gaussians N   also write DIR/NAME_gaussians.yaml: the same experiment with the paper's
                      model (passive exponential, N Gaussians, power-law velocity) fitted to
                      the muscle's curves, each fit's RMSE in its comments and on standard error
-What is not imported (another actuator or muscle class, a compliant tendon, MuJoCo's force
-and activation clamps, an <include>, the path's geometry) is listed on standard error and in
-each scenario's header, never dropped silently.
+What is not imported (another actuator or muscle class, MuJoCo's force and activation
+clamps, an <include>, the path's geometry) is listed on standard error and in each
+scenario's header, never dropped silently.
 Exit codes: 0 imported (some actuators may be listed as not imported), 2 invalid input (a
 malformed file or value, or no muscle of a supported class), 1 anything else.
 )";
@@ -149,7 +149,7 @@ int ImportCommand(int argc, char** argv) {
     for (const std::string& note : muscle.notes) report += "  not carried over: " + note + "\n";
     const double damping = muscle.params.degroote2016.fiber_damping;
     if (muscle.tendon_strain && damping < kJunctionFiberDamping) {
-      report += "  note: " + JunctionDampingNote(damping) + "\n";
+      report += "  note: " + JunctionDampingNote(muscle) + "\n";
     }
     if (gaussians > 0) {
       const GaussianModel paper = FitGaussians(muscle, gaussians);

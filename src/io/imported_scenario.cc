@@ -80,7 +80,7 @@ std::string FormatCompliantScenario(const ImportedMuscle& muscle, const std::str
       << "# (`fiber`, along the line) and the tendon (`tendon`, slack length " << FormatNumber(l_s)
       << " m) meet at a\n# massless junction (docs/model.md 14.4).\n";
   if (p.degroote2016.fiber_damping < kJunctionFiberDamping) {
-    out << "# " << JunctionDampingNote(p.degroote2016.fiber_damping) << ".\n";
+    out << "# " << JunctionDampingNote(muscle) << ".\n";
     p.degroote2016.fiber_damping = kJunctionFiberDamping;
   }
   for (const std::string& line : muscle.conversion) out << "# Converted: " << line << ".\n";
@@ -122,9 +122,12 @@ std::string FormatCompliantScenario(const ImportedMuscle& muscle, const std::str
 
 }  // namespace
 
-std::string JunctionDampingNote(double file_damping) {
-  return "fiber_damping is " + FormatNumber(file_damping) +
-         " in the file; the massless junction needs a tension that depends on its rate at zero "
+std::string JunctionDampingNote(const ImportedMuscle& muscle) {
+  // a Thelen2003Muscle has no damping property; the others' is the file's, as OpenSim runs it
+  const bool no_property = muscle.source.rfind("Thelen2003Muscle", 0) == 0;
+  return "the fiber's damping is " + FormatNumber(muscle.params.degroote2016.fiber_damping) +
+         (no_property ? " (a Thelen2003Muscle has none)" : " (fiber_damping in the file)") +
+         "; the massless junction needs a tension that depends on its rate at zero "
          "activation, and below " +
          FormatNumber(kJunctionFiberDamping) +
          " its balance is ill-conditioned (docs/guide/networks.md), so the fiber's is " +

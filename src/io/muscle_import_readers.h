@@ -12,6 +12,10 @@ namespace musclesim {
 // An .osim document: every force of its ForceSet (and of any nested one).
 ImportedModel ReadOpenSimMuscles(const tinyxml2::XMLDocument& document, const std::string& path);
 
+// The OpenSim muscles converted to family degroote2016 (docs/model.md 14.5), one element each.
+ImportedMuscle ReadMillard(const tinyxml2::XMLElement& element, const std::string& path);
+ImportedMuscle ReadThelen(const tinyxml2::XMLElement& element, const std::string& path);
+
 // An MJCF document: every actuator of its <actuator> sections.
 ImportedModel ReadMjcfMuscles(const tinyxml2::XMLDocument& document, const std::string& path);
 

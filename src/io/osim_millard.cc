@@ -4,8 +4,12 @@
 // reported.
 #include <algorithm>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "io/conversion_report.h"
 #include "io/muscle_import_readers.h"
+#include "io/osim_muscle_parts.h"
 #include "io/osim_property_reader.h"
 #include "io/xml_reading.h"
 #include "musclesim/core/errors.h"
@@ -21,31 +25,32 @@ using tinyxml2::XMLElement;
 constexpr double kMillardLeastDamping = 0.001;
 
 // The curve `name` of the muscle: its element, or the muscle's when the file leaves it out
-// (every property then at its default)
+// (every property then at its default).
 const XMLElement& CurveElement(const XMLElement& muscle, const char* name) {
   const XMLElement* curve = muscle.FirstChildElement(name);
   return curve == nullptr ? muscle : *curve;
 }
 
 // Builds `curve` once to check it, a ParameterError becoming an InputError that names the
-// curve's element, line and property.
+// curve, the property and its line (the curve's, for a refusal of the curve as a whole).
 template <typename Curve>
 void CheckCurve(const Curve& curve, const XMLElement& muscle, const char* name,
                 const std::string& path, const std::string& source) {
   try {
     MillardCurve(curve);
   } catch (const ParameterError& e) {
-    const XMLElement& element = CurveElement(muscle, name);
-    throw InputError(source + ": " + name + " (" + xml::Where(path, element) + ") <" + e.path() +
-                     "> = " + e.value() + ": " + e.rule());
+    const std::string where =
+        OsimPropertyReader(CurveElement(muscle, name), path).WhereOf(e.path());
+    const std::string property = e.path() == name ? "" : " <" + e.path() + "> =";
+    throw InputError(source + ": " + name + " (" + where + ")" + property + " " + e.value() + ": " +
+                     e.rule());
   }
 }
 
 MillardCurves ReadCurves(const XMLElement& muscle, const std::string& path) {
   MillardCurves c;
   const auto read = [&](const char* name) {
-    const XMLElement* curve = muscle.FirstChildElement(name);
-    return OsimPropertyReader(curve == nullptr ? muscle : *curve, path);
+    return OsimPropertyReader(CurveElement(muscle, name), path);
   };
   if (muscle.FirstChildElement("ActiveForceLengthCurve") != nullptr) {
     const OsimPropertyReader r = read("ActiveForceLengthCurve");
@@ -142,7 +147,10 @@ ImportedMuscle ReadMillard(const XMLElement& element, const std::string& path) {
   }
   // Millard's first-order lag, its defaults
   SetFirstOrderActivation(read, 0.01, 0.04, muscle);
-  ValidateImported(muscle, kOsimPropertyNames);
+  std::vector<std::pair<std::string, std::string>> names = kOsimPropertyNames;
+  names.emplace_back("passive_fiber_strain_at_one_norm_force",
+                     "FiberForceLengthCurve <strain_at_one_norm_force> (De Groote's e0)");
+  ValidateImported(muscle, names);
   muscle.notes.push_back(
       "OpenSim holds the fiber at or above min_norm_active_fiber_length times the optimal "
       "length (" +

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "io/muscle_import_readers.h"
+#include "io/osim_muscle_parts.h"
 #include "io/osim_property_reader.h"
 #include "io/xml_reading.h"
 #include "musclesim/core/errors.h"

@@ -2,8 +2,12 @@
 // curves (model/thelen2003.h), read with OpenSim 4.6's defaults, brought to the nearest De
 // Groote muscle, each curve's departure reported.
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "io/conversion_report.h"
 #include "io/muscle_import_readers.h"
+#include "io/osim_muscle_parts.h"
 #include "io/osim_property_reader.h"
 #include "musclesim/core/errors.h"
 
@@ -44,7 +48,9 @@ ImportedMuscle ReadThelen(const XMLElement& element, const std::string& path) {
   ApplyConversion(NearestDeGroote(curves), !rigid, muscle);
   if (!rigid) SetCompliantTendon(muscle, curves.FmaxTendonStrain, "FmaxTendonStrain");
   SetFirstOrderActivation(read, 0.015, 0.05, muscle);
-  ValidateImported(muscle, kOsimPropertyNames);
+  std::vector<std::pair<std::string, std::string>> names = kOsimPropertyNames;
+  names.emplace_back("passive_fiber_strain_at_one_norm_force", "FmaxMuscleStrain (De Groote's e0)");
+  ValidateImported(muscle, names);
   for (const char* flag : {"ignore_tendon_compliance", "ignore_activation_dynamics"}) {
     if (read.Flag(flag, false)) {
       muscle.notes.push_back(std::string(flag) +

@@ -23,28 +23,35 @@ void RequireCurviness(double curviness, const char* path) {
   Require(curviness >= 0.0 && curviness <= 1.0, path, curviness, "must be in [0, 1]");
 }
 
-bool Finite(double x) { return std::isfinite(x); }
-
-// A corner, its S-shape refusal named after the curve.
+// A corner, its refusal naming the curve and where the corner runs: the properties together
+// put two points and their slopes where no corner joins them.
 BezierCorner Corner(const char* curve, double x0, double y0, double dydx0, double x1, double y1,
                     double dydx1, double c) {
   try {
     return MakeBezierCorner(x0, y0, dydx0, x1, y1, dydx1, c);
   } catch (const std::invalid_argument& e) {
-    throw ParameterError(curve, "its properties", e.what());
+    throw ParameterError(curve,
+                         "(" + FormatNumber(x0) + ", " + FormatNumber(y0) + ") slope " +
+                             FormatNumber(dydx0) + " to (" + FormatNumber(x1) + ", " +
+                             FormatNumber(y1) + ") slope " + FormatNumber(dydx1),
+                         std::string(e.what()) + ": its properties place this part of the curve");
   }
 }
 
 // The optional properties: all of them, or none (OpenSim's rule), else ParameterError.
 void RequireAllOrNone(const std::vector<std::pair<const char*, std::optional<double>>>& fields) {
   int given = 0;
-  for (const auto& field : fields) given += field.second.has_value();
+  std::string names;
+  for (const auto& [name, value] : fields) {
+    given += value.has_value();
+    names += std::string(names.empty() ? "" : ", ") + name;
+  }
   if (given == 0 || given == static_cast<int>(fields.size())) return;
-  for (const auto& field : fields) {
-    if (field.second) {
-      Require(false, field.first, *field.second,
-              "is one of three optional properties (stiffness and curviness) that OpenSim "
-              "takes all together or not at all");
+  for (const auto& [name, value] : fields) {
+    if (value) {
+      Require(
+          false, name, *value,
+          "is one of the optional " + names + ", which OpenSim takes all together or not at all");
     }
   }
 }
@@ -55,15 +62,15 @@ SegmentedBezierCurve MillardCurve(const MillardActiveForceLength& p) {
   const double x0 = p.min_norm_active_fiber_length, x1 = p.transition_norm_fiber_length;
   const double x2 = 1.0, x3 = p.max_norm_active_fiber_length;
   const double y_low = p.minimum_value, dydx = p.shallow_ascending_slope;
-  Require(Finite(x0) && x0 >= 0.0, "min_norm_active_fiber_length", x0, "must be >= 0");
-  Require(Finite(x1) && x1 > x0 + kRootEpsilon, "transition_norm_fiber_length", x1,
+  Require(std::isfinite(x0) && x0 >= 0.0, "min_norm_active_fiber_length", x0, "must be >= 0");
+  Require(std::isfinite(x1) && x1 > x0 + kRootEpsilon, "transition_norm_fiber_length", x1,
           "must exceed min_norm_active_fiber_length");
   Require(x1 < x2 - kRootEpsilon, "transition_norm_fiber_length", x1, "must be below 1");
-  Require(Finite(x3) && x3 > x2 + kRootEpsilon && x3 <= 1e3, "max_norm_active_fiber_length", x3,
-          "must be above 1 and at most 1e3");
-  Require(Finite(y_low) && y_low >= 0.0 && y_low < 1.0, "minimum_value", y_low,
+  Require(std::isfinite(x3) && x3 > x2 + kRootEpsilon && x3 <= 1e3, "max_norm_active_fiber_length",
+          x3, "must be above 1 and at most 1e3");
+  Require(std::isfinite(y_low) && y_low >= 0.0 && y_low < 1.0, "minimum_value", y_low,
           "must be in [0, 1)");
-  Require(Finite(dydx) && dydx >= 0.0 && dydx < (1.0 - y_low) / (x2 - x1),
+  Require(std::isfinite(dydx) && dydx >= 0.0 && dydx < (1.0 - y_low) / (x2 - x1),
           "shallow_ascending_slope", dydx,
           "must be >= 0 and below (1 - minimum_value) / (1 - transition_norm_fiber_length)");
   const double c = ScaledCurviness(1.0);  // OpenSim's ActiveForceLengthCurve: curviness 1
@@ -89,20 +96,20 @@ SegmentedBezierCurve MillardCurve(const MillardForceVelocity& p) {
   const double c_vmax = p.concentric_slope_at_vmax, c_near = p.concentric_slope_near_vmax;
   const double e_vmax = p.eccentric_slope_at_vmax, e_near = p.eccentric_slope_near_vmax;
   const double iso = p.isometric_slope;
-  Require(Finite(f_max) && f_max > 1.0 && f_max <= 1e3, "max_eccentric_velocity_force_multiplier",
-          f_max, "must be above 1 and at most 1e3");
-  Require(Finite(c_vmax) && c_vmax >= 0.0 && c_vmax < 1.0, "concentric_slope_at_vmax", c_vmax,
-          "must be in [0, 1)");
-  Require(Finite(c_near) && c_near > c_vmax && c_near <= 1.0, "concentric_slope_near_vmax", c_near,
-          "must exceed concentric_slope_at_vmax and be at most 1");
+  Require(std::isfinite(f_max) && f_max > 1.0 && f_max <= 1e3,
+          "max_eccentric_velocity_force_multiplier", f_max, "must be above 1 and at most 1e3");
+  Require(std::isfinite(c_vmax) && c_vmax >= 0.0 && c_vmax < 1.0, "concentric_slope_at_vmax",
+          c_vmax, "must be in [0, 1)");
+  Require(std::isfinite(c_near) && c_near > c_vmax && c_near <= 1.0, "concentric_slope_near_vmax",
+          c_near, "must exceed concentric_slope_at_vmax and be at most 1");
   Require(c_near >= kRootEpsilon, "concentric_slope_near_vmax", c_near,
           "must be at least 1.49e-8 (OpenSim's Millard2012EquilibriumMuscle)");
-  Require(Finite(iso) && iso > 1.0 && iso <= 1e6, "isometric_slope", iso,
+  Require(std::isfinite(iso) && iso > 1.0 && iso <= 1e6, "isometric_slope", iso,
           "must be above 1 and at most 1e6");
-  Require(Finite(e_vmax) && e_vmax >= 0.0 && e_vmax < f_max - 1.0, "eccentric_slope_at_vmax",
+  Require(std::isfinite(e_vmax) && e_vmax >= 0.0 && e_vmax < f_max - 1.0, "eccentric_slope_at_vmax",
           e_vmax, "must be >= 0 and below max_eccentric_velocity_force_multiplier - 1");
-  Require(Finite(e_near) && e_near >= e_vmax && e_near < f_max - 1.0, "eccentric_slope_near_vmax",
-          e_near,
+  Require(std::isfinite(e_near) && e_near >= e_vmax && e_near < f_max - 1.0,
+          "eccentric_slope_near_vmax", e_near,
           "must be at least eccentric_slope_at_vmax and below "
           "max_eccentric_velocity_force_multiplier - 1");
   Require(e_near >= kRootEpsilon, "eccentric_slope_near_vmax", e_near,
@@ -124,9 +131,9 @@ SegmentedBezierCurve MillardCurve(const MillardForceVelocity& p) {
 
 SegmentedBezierCurve MillardCurve(const MillardFiberForceLength& p) {
   const double e0 = p.strain_at_zero_force, e1 = p.strain_at_one_norm_force;
-  Require(Finite(e0) && e0 > -1.0 && e0 <= 1e3, "strain_at_zero_force", e0,
+  Require(std::isfinite(e0) && e0 > -1.0 && e0 <= 1e3, "strain_at_zero_force", e0,
           "must be above -1 and at most 1e3");
-  Require(Finite(e1) && e1 > e0 && e1 <= 1e3, "strain_at_one_norm_force", e1,
+  Require(std::isfinite(e1) && e1 > e0 && e1 <= 1e3, "strain_at_one_norm_force", e1,
           "must exceed strain_at_zero_force and be at most 1e3");
   RequireAllOrNone({{"stiffness_at_low_force", p.stiffness_at_low_force},
                     {"stiffness_at_one_norm_force", p.stiffness_at_one_norm_force},
@@ -134,11 +141,11 @@ SegmentedBezierCurve MillardCurve(const MillardFiberForceLength& p) {
   const double k_iso = p.stiffness_at_one_norm_force.value_or(2.0 / (e1 - e0));
   const double k_low = p.stiffness_at_low_force.value_or(0.2);
   const double curviness = p.curviness.value_or(0.75);
-  Require(Finite(k_iso) && k_iso > 1.0 / (e1 - e0) && k_iso <= 1e9, "stiffness_at_one_norm_force",
-          k_iso,
+  Require(std::isfinite(k_iso) && k_iso > 1.0 / (e1 - e0) && k_iso <= 1e9,
+          "stiffness_at_one_norm_force", k_iso,
           "must exceed 1 / (strain_at_one_norm_force - strain_at_zero_force) and be at most 1e9");
-  Require(Finite(k_low) && k_low > 0.0 && k_low < 1.0 / (e1 - e0), "stiffness_at_low_force", k_low,
-          "must be > 0 and below 1 / (strain_at_one_norm_force - strain_at_zero_force)");
+  Require(std::isfinite(k_low) && k_low > 0.0 && k_low < 1.0 / (e1 - e0), "stiffness_at_low_force",
+          k_low, "must be > 0 and below 1 / (strain_at_one_norm_force - strain_at_zero_force)");
   RequireCurviness(curviness, "curviness");
   const double c = ScaledCurviness(curviness);
   const double x_zero = 1.0 + e0, x_iso = 1.0 + e1;
@@ -153,7 +160,7 @@ SegmentedBezierCurve MillardCurve(const MillardFiberForceLength& p) {
 
 SegmentedBezierCurve MillardCurve(const MillardTendonForceLength& p) {
   const double e_iso = p.strain_at_one_norm_force;
-  Require(Finite(e_iso) && e_iso > 0.0 && e_iso <= 1e3, "strain_at_one_norm_force", e_iso,
+  Require(std::isfinite(e_iso) && e_iso > 0.0 && e_iso <= 1e3, "strain_at_one_norm_force", e_iso,
           "must be > 0 and at most 1e3");
   RequireAllOrNone({{"stiffness_at_one_norm_force", p.stiffness_at_one_norm_force},
                     {"norm_force_at_toe_end", p.norm_force_at_toe_end},
@@ -161,9 +168,10 @@ SegmentedBezierCurve MillardCurve(const MillardTendonForceLength& p) {
   const double k_iso = p.stiffness_at_one_norm_force.value_or(1.375 / e_iso);
   const double f_toe = p.norm_force_at_toe_end.value_or(2.0 / 3.0);
   const double curviness = p.curviness.value_or(0.5);
-  Require(Finite(k_iso) && k_iso > 1.0 / e_iso && k_iso <= 1e9, "stiffness_at_one_norm_force",
-          k_iso, "must exceed 1 / strain_at_one_norm_force and be at most 1e9");
-  Require(Finite(f_toe) && f_toe > 0.0 && f_toe < 1.0, "norm_force_at_toe_end", f_toe,
+  Require(std::isfinite(k_iso) && k_iso > 1.0 / e_iso && k_iso <= 1e9,
+          "stiffness_at_one_norm_force", k_iso,
+          "must exceed 1 / strain_at_one_norm_force and be at most 1e9");
+  Require(std::isfinite(f_toe) && f_toe > 0.0 && f_toe < 1.0, "norm_force_at_toe_end", f_toe,
           "must be in (0, 1)");
   RequireCurviness(curviness, "curviness");
   const double c = ScaledCurviness(curviness);

@@ -60,12 +60,18 @@ BezierCorner MakeBezierCorner(double x0, double y0, double dydx0, double x1, dou
   }
   const double x0_mid = x0 + curviness * (x_cross - x0), y0_mid = y0 + curviness * (y_cross - y0);
   const double x1_mid = x1 + curviness * (x_cross - x1), y1_mid = y1 + curviness * (y_cross - y1);
+  // x(u) must rise for the curve to be a function of x: the crossing between the two points
+  if (!(x0 < x0_mid && x0_mid <= x1_mid && x1_mid < x1)) {
+    throw std::invalid_argument("the slopes' lines cross outside the two points, no corner");
+  }
   return {{x0, x0_mid, x0_mid, x1_mid, x1_mid, x1}, {y0, y0_mid, y0_mid, y1_mid, y1_mid, y1}};
 }
 
 SegmentedBezierCurve::SegmentedBezierCurve(std::vector<BezierCorner> corners, double slope_before,
                                            double slope_after)
-    : corners_(std::move(corners)), slope_before_(slope_before), slope_after_(slope_after) {}
+    : corners_(std::move(corners)), slope_before_(slope_before), slope_after_(slope_after) {
+  if (corners_.empty()) throw std::invalid_argument("a segmented curve needs a corner");
+}
 
 CurvePoint SegmentedBezierCurve::Evaluate(double x) const {
   if (x <= first_x()) {

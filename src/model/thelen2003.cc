@@ -9,27 +9,24 @@
 
 namespace musclesim {
 
-namespace {
-
-bool Finite(double x) { return std::isfinite(x); }
-
-}  // namespace
-
 void Validate(const ThelenCurves& c) {
-  Require(Finite(c.FmaxTendonStrain) && c.FmaxTendonStrain > 0.0 && c.FmaxTendonStrain <= 1e3,
-          "FmaxTendonStrain", c.FmaxTendonStrain, "must be > 0 and at most 1e3");
-  Require(Finite(c.FmaxMuscleStrain) && c.FmaxMuscleStrain > 0.0 && c.FmaxMuscleStrain <= 1e3,
-          "FmaxMuscleStrain", c.FmaxMuscleStrain, "must be > 0 and at most 1e3");
-  Require(Finite(c.KshapeActive) && c.KshapeActive > 0.0 && c.KshapeActive <= 1e3, "KshapeActive",
-          c.KshapeActive, "must be > 0 and at most 1e3");
-  Require(Finite(c.KshapePassive) && c.KshapePassive > 0.0 && c.KshapePassive <= 700.0,
+  Require(
+      std::isfinite(c.FmaxTendonStrain) && c.FmaxTendonStrain > 0.0 && c.FmaxTendonStrain <= 1e3,
+      "FmaxTendonStrain", c.FmaxTendonStrain, "must be > 0 and at most 1e3");
+  Require(
+      std::isfinite(c.FmaxMuscleStrain) && c.FmaxMuscleStrain > 0.0 && c.FmaxMuscleStrain <= 1e3,
+      "FmaxMuscleStrain", c.FmaxMuscleStrain, "must be > 0 and at most 1e3");
+  Require(std::isfinite(c.KshapeActive) && c.KshapeActive > 0.0 && c.KshapeActive <= 1e3,
+          "KshapeActive", c.KshapeActive, "must be > 0 and at most 1e3");
+  Require(std::isfinite(c.KshapePassive) && c.KshapePassive > 0.0 && c.KshapePassive <= 700.0,
           "KshapePassive", c.KshapePassive,
           "must be > 0 and at most 700 (exp of it must be finite)");
-  Require(Finite(c.Af) && c.Af > 0.0 && c.Af <= 1e3, "Af", c.Af, "must be > 0 and at most 1e3");
-  Require(Finite(c.Flen) && c.Flen > 1.0 && c.Flen <= 1e3, "Flen", c.Flen,
+  Require(std::isfinite(c.Af) && c.Af > 0.0 && c.Af <= 1e3, "Af", c.Af,
+          "must be > 0 and at most 1e3");
+  Require(std::isfinite(c.Flen) && c.Flen > 1.0 && c.Flen <= 1e3, "Flen", c.Flen,
           "must be above 1 and at most 1e3");
-  Require(Finite(c.fv_linear_extrap_threshold) && c.fv_linear_extrap_threshold * c.Flen > 1.0 &&
-              c.fv_linear_extrap_threshold < 1.0,
+  Require(std::isfinite(c.fv_linear_extrap_threshold) &&
+              c.fv_linear_extrap_threshold * c.Flen > 1.0 && c.fv_linear_extrap_threshold < 1.0,
           "fv_linear_extrap_threshold", c.fv_linear_extrap_threshold,
           "must be below 1 and above 1 / Flen (the line starts on the lengthening branch)");
 }

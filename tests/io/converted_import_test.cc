@@ -132,6 +132,11 @@ TEST(ImportMillard, AdjustsTheCurvesAsOpenSimDidWhenItWroteTheFile) {
   text.replace(at, damped_floor.size(), "<minimum_value>0.1</minimum_value>");
   const ImportedModel floored = ImportMuscles(testing::WriteTempFile("millard_floor.osim", text));
   EXPECT_EQ(Named(floored, "damped").conversion, Named(written, "damped").conversion);
+  // nor its force-velocity slopes at v_max, which it sets to 0
+  text = Edited("damped", "<concentric_slope_at_vmax>0</concentric_slope_at_vmax>",
+                "<concentric_slope_at_vmax>0.1</concentric_slope_at_vmax>");
+  const ImportedModel sloped = ImportMuscles(testing::WriteTempFile("millard_slope.osim", text));
+  EXPECT_EQ(Named(sloped, "damped").conversion, Named(written, "damped").conversion);
 }
 
 TEST(ImportMillard, ARefusedCurvePropertyNamesItsCurveLineAndRule) {
@@ -153,7 +158,7 @@ TEST(ImportMillard, ARefusedCurvePropertyNamesItsCurveLineAndRule) {
     FAIL() << "accepted";
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), HasSubstr("FiberForceLengthCurve ("));
-    EXPECT_THAT(e.what(), HasSubstr("is one of three optional properties"));
+    EXPECT_THAT(e.what(), HasSubstr("<stiffness_at_one_norm_force> = 5: is one of the optional"));
   }
 }
 
@@ -167,7 +172,7 @@ TEST(ImportMillardCli, WritesARunnableScenarioPerMuscleWithItsConversionReported
                                  "strain at one norm force, 0.049, largest departure"));
   EXPECT_THAT(out.err, HasSubstr("of its degroote2016 curves: RMSE passive"));
   // the classic muscle has no damping: its junction gets the least the balance needs
-  EXPECT_THAT(out.err, HasSubstr("note: fiber_damping is 0 in the file"));
+  EXPECT_THAT(out.err, HasSubstr("note: the fiber's damping is 0 (fiber_damping in the file)"));
   const std::string damped = testing::ReadFile(dir + "/damped.yaml");
   EXPECT_THAT(damped, HasSubstr("# Converted: active force-length: De Groote's with width scale"));
   EXPECT_THAT(damped, HasSubstr("activation_dynamics: {family: thelen2003, tau_activation: 0.01, "
@@ -203,7 +208,7 @@ TEST(ImportThelenCli, ItsScenariosRunAndABadPropertyIsRefusedByName) {
   ASSERT_EQ(out.exit_code, 0) << out.err;
   EXPECT_THAT(out.err, HasSubstr("musclesim import: thelen: Thelen2003Muscle ("));
   // Thelen's fiber has no damping: the junction gets the least its balance needs
-  EXPECT_THAT(out.err, HasSubstr("note: fiber_damping is 0 in the file"));
+  EXPECT_THAT(out.err, HasSubstr("note: the fiber's damping is 0 (a Thelen2003Muscle has none)"));
   EXPECT_THAT(testing::ReadFile(dir + "/thelen.yaml"),
               HasSubstr("# Converted: force-velocity: De Groote's with the file's v_max"));
   for (const char* name : {"thelen", "thelen_gaussians"}) {

@@ -345,7 +345,7 @@ TEST(ImportOpenSim, ACompliantMuscleIsANetworkThatRunsOpenSimsTrajectory) {
   EXPECT_EQ(m.tendon_slack_length, 0.2);
   EXPECT_EQ(m.params.degroote2016.fiber_damping, 0.0);
   const std::string text = FormatImportedScenario(m, "opensim_compliant.osim", "imported.csv");
-  EXPECT_THAT(text, HasSubstr("fiber_damping is 0 in the file"));
+  EXPECT_THAT(text, HasSubstr("the fiber's damping is 0 (fiber_damping in the file)"));
   Scenario scenario = ReadScenario(ParseDocument("imported", text), "imported");
   const testing::PeerTable opensim = testing::ReadPeerTable("opensim_drop_compliant.csv");
   const double junction =
@@ -395,7 +395,7 @@ TEST(ImportCli, ACompliantMusclesScenarioRunsAndSaysWhatItAdded) {
   const testing::CliOutcome out = testing::RunMusclesim(
       "import " + Fixture("opensim_compliant.osim") + " --to-gaussians 2 -o " + dir);
   ASSERT_EQ(out.exit_code, 0) << out.err;
-  EXPECT_THAT(out.err, HasSubstr("note: fiber_damping is 0 in the file"));
+  EXPECT_THAT(out.err, HasSubstr("note: the fiber's damping is 0 (fiber_damping in the file)"));
   EXPECT_THAT(out.err, HasSubstr("note: OpenSim's tendon is compliant (strain 0.049"));
   const std::string native = testing::ReadFile(dir + "/muscle.yaml");
   EXPECT_THAT(native, HasSubstr("{name: junction, mass: 0,"));

@@ -115,8 +115,10 @@ TEST(Millard2012Curves, RefuseWhatOpenSimRefusesNamingTheProperty) {
   EXPECT_THAT(Refusal(c, 1), HasSubstr("concentric_slope_near_vmax = 0"));
   c = {};
   c.passive.stiffness_at_one_norm_force = 4.0;  // one of three optional properties
-  EXPECT_THAT(Refusal(c, 2),
-              HasSubstr("stiffness_at_one_norm_force = 4: is one of three optional"));
+  EXPECT_THAT(
+      Refusal(c, 2),
+      HasSubstr(
+          "stiffness_at_one_norm_force = 4: is one of the optional stiffness_at_low_force, "));
   c = {};
   c.passive = {0.0, 0.5, 0.5, 1.5, 0.5};  // stiffness at one norm force below 1 / 0.5
   EXPECT_THAT(Refusal(c, 2), HasSubstr("stiffness_at_one_norm_force = 1.5: must exceed"));

@@ -30,9 +30,9 @@ std::string FormatImportedScenario(const ImportedMuscle& muscle, const std::stri
 inline constexpr double kJunctionFiberDamping = 1e-8;
 
 // Said on standard error and in the header when a compliant muscle's scenario gives its fiber
-// kJunctionFiberDamping (its file's `file_damping` is below it); and when --to-gaussians takes
-// its tendon rigid.
-std::string JunctionDampingNote(double file_damping);
+// kJunctionFiberDamping (its own damping is below it); and when --to-gaussians takes its
+// tendon rigid.
+std::string JunctionDampingNote(const ImportedMuscle& muscle);
 std::string RigidTendonNote(const ImportedMuscle& muscle);
 
 // The actuator length at the muscle's optimal fiber length [m], along its line.

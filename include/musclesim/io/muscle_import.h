@@ -1,9 +1,9 @@
 // Reading the muscles of another tool's model file (docs/guide/import.md): OpenSim's .osim
 // (DeGrooteFregly2016Muscle; Millard2012EquilibriumMuscle and Thelen2003Muscle, converted to
-// the nearest family, degroote2016) and MuJoCo's MJCF (<muscle>, and <general> with the muscle gain
-// and bias), each into a musclesim model of the matching curve family (docs/model.md 14). What a
-// file holds that musclesim does not take (another muscle class, a compliant tendon, the path's
-// geometry, a default class) is listed, never dropped silently.
+// the nearest family, degroote2016) and MuJoCo's MJCF (<muscle>, and <general> with the
+// muscle gain and bias), each into a musclesim model of the matching curve family
+// (docs/model.md 14). What a file holds that musclesim does not take (another muscle class,
+// the path's geometry, MuJoCo's clamps) is listed, never dropped silently.
 #pragma once
 
 #include <optional>

@@ -25,8 +25,8 @@ struct CurveDeparture {
 
 struct DeGrooteConversion {
   double active_force_width_scale = 1.0;  // least squares over the active interval, in [1, 10]
-  double passive_fiber_strain_at_one_norm_force = 0.6;  // the original's
-  double tendon_strain_at_one_norm_force = 0.049;       // the original's
+  double passive_fiber_strain_at_one_norm_force = 0.6;  // set to the original muscle's
+  double tendon_strain_at_one_norm_force = 0.049;       // likewise
   CurveDeparture active, passive, tendon;
   CurveDeparture shortening, lengthening;  // the force-velocity curve's two sides
 };
@@ -44,13 +44,6 @@ struct ComparedCurves {
 };
 
 DeGrooteConversion NearestDeGroote(const ComparedCurves& curves);
-
-struct MillardCurves {
-  MillardActiveForceLength active;
-  MillardForceVelocity velocity;
-  MillardFiberForceLength passive;
-  MillardTendonForceLength tendon;
-};
 
 // Millard's curves as Millard2012EquilibriumMuscle runs them (its adjustments for the damped
 // and the classic formulation already applied), compared over [min, max]_norm_active_fiber_length

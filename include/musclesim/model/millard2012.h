@@ -50,6 +50,14 @@ struct MillardTendonForceLength {
   std::optional<double> stiffness_at_one_norm_force, norm_force_at_toe_end, curviness;
 };
 
+// A Millard muscle's four curves.
+struct MillardCurves {
+  MillardActiveForceLength active;
+  MillardForceVelocity velocity;
+  MillardFiberForceLength passive;
+  MillardTendonForceLength tendon;
+};
+
 // Each curve, or ParameterError naming the property ("shallow_ascending_slope") and the rule
 // OpenSim applies to it (or, where OpenSim's message says less, the condition it checks).
 SegmentedBezierCurve MillardCurve(const MillardActiveForceLength& p);

@@ -20,7 +20,7 @@ struct BezierCorner {
 // The corner between two points and their slopes. `curviness` is the control points' pull,
 // in [0, 1] (OpenSim's scaled curviness, 0.1 + 0.8 c). Throws std::invalid_argument when the
 // tangents do not make a corner (their crossing farther from either point than the points
-// are from each other: an S, not a C).
+// are from each other: an S, not a C; or not between them in x, where x(u) would not rise).
 BezierCorner MakeBezierCorner(double x0, double y0, double dydx0, double x1, double y1,
                               double dydx1, double curviness);
 
@@ -28,6 +28,7 @@ class SegmentedBezierCurve {
  public:
   // `corners` in increasing x, each starting where the one before ends; `slope_before` and
   // `slope_after` continue the curve outside them (the first and last corners' end slopes).
+  // Throws std::invalid_argument for no corner.
   SegmentedBezierCurve(std::vector<BezierCorner> corners, double slope_before, double slope_after);
 
   // The value and slope at x: inside a corner, u solved from x(u) = x to rounding.
