@@ -80,8 +80,14 @@ struct GaussianModel {
 
 GaussianModel FitGaussians(const ImportedMuscle& muscle, int count) {
   const ModelParams& p = muscle.params;
-  const PaperModelFit fit =
-      FitPaperModel(TensionModel(p), count, OptimalLineLength(p), MaxLineSpeed(p));
+  // a fit that cannot be made names its muscle: the file may hold several
+  const PaperModelFit fit = [&] {
+    try {
+      return FitPaperModel(TensionModel(p), count, OptimalLineLength(p), MaxLineSpeed(p));
+    } catch (const InputError& e) {
+      throw InputError(muscle.source + " '" + muscle.name + "': " + e.what());
+    }
+  }();
   const std::string source = std::string("the ") + ToString(p.family) + " curves of '" +
                              muscle.name + "' (musclesim import --to-gaussians " +
                              std::to_string(count) + ")";

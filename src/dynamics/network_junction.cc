@@ -191,6 +191,9 @@ double NetworkSystem::JunctionVelocity(int k, double t, const double* y) const {
   // leaving it is replaced by bisection, or, while a side is open, by a step doubled towards it.
   double low = -kInfinity, high = kInfinity;
   double reach = 1e-3 * (1.0 + std::abs(w));  // an open side's trial step [m/s]
+  // the last two steps: Newton's steps that do not halve in two iterations are crawling (a
+  // steep bend of R between flat stretches), and bisection takes over (as in rtsafe)
+  double last_step = kInfinity, step_before = kInfinity;
   // the loads and the elastic elements, once: only the other elements' tensions move with w
   const Balance elastic = JunctionBalance(junction, t, y, w, true);
   for (int iteration = 0; iteration < 400; ++iteration) {
@@ -204,8 +207,10 @@ double NetworkSystem::JunctionVelocity(int k, double t, const double* y) const {
     // R at its rounding level: its Newton step is the last correction it can give
     const bool balanced = std::abs(balance.residual) <= 4.0 * kEpsilon * balance.magnitude;
     if (balanced && std::isfinite(next)) return next;
-    if (!(next > low && next < high)) {
-      if (std::isfinite(low) && std::isfinite(high)) {
+    const bool bracketed = std::isfinite(low) && std::isfinite(high);
+    const bool crawling = bracketed && std::abs(next - w) > 0.5 * step_before;
+    if (!(next > low && next < high) || crawling) {
+      if (bracketed) {
         next = 0.5 * (low + high);
       } else {
         next = balance.residual > 0.0 ? w + reach : w - reach;
@@ -214,6 +219,8 @@ double NetworkSystem::JunctionVelocity(int k, double t, const double* y) const {
     }
     const double tolerance = 2.0 * kEpsilon * std::max(std::abs(next), 1e-12);
     if (std::abs(next - w) <= tolerance || high - low <= tolerance) return next;
+    step_before = last_step;
+    last_step = std::abs(next - w);
     w = next;
   }
   return kNaN;  // no root within reach: the run fails, and NonFiniteCause names the junction

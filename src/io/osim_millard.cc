@@ -125,6 +125,11 @@ ImportedMuscle ReadMillard(const XMLElement& element, const std::string& path) {
   const std::string source = muscle.source + " '" + muscle.name + "'";
   DeGrooteParams& d = muscle.params.degroote2016;
   const double damping = read.Number("fiber_damping", 0.1);
+  if (!(damping >= 0.0 && damping <= 1e3)) {
+    throw InputError(source + ": fiber_damping = " + FormatNumber(damping) + " (" +
+                     read.WhereOf("fiber_damping") +
+                     "): must be >= 0 and at most 1e3 [-] (Millard's default 0.1)");
+  }
   const bool rigid = read.Flag("ignore_tendon_compliance", false);
   const bool damped = damping >= kMillardLeastDamping;
   d.fiber_damping = damped ? damping : 0.0;
@@ -133,17 +138,31 @@ ImportedMuscle ReadMillard(const XMLElement& element, const std::string& path) {
                            ": OpenSim drops a damping below 0.001 and so does this import");
   }
 
+  // OpenSim builds the curves from the file's values (and refuses what cannot be built), then
+  // the muscle adjusts them and builds them again: both checked, in that order
   MillardCurves curves = ReadCurves(element, path);
-  AdjustAsOpenSim(curves, !rigid && !damped);
-  CheckCurve(curves.active, element, "ActiveForceLengthCurve", path, source);
-  CheckCurve(curves.velocity, element, "ForceVelocityCurve", path, source);
-  CheckCurve(curves.passive, element, "FiberForceLengthCurve", path, source);
-  CheckCurve(curves.tendon, element, "TendonForceLengthCurve", path, source);
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1) AdjustAsOpenSim(curves, !rigid && !damped);
+    CheckCurve(curves.active, element, "ActiveForceLengthCurve", path, source);
+    CheckCurve(curves.velocity, element, "ForceVelocityCurve", path, source);
+    CheckCurve(curves.passive, element, "FiberForceLengthCurve", path, source);
+    CheckCurve(curves.tendon, element, "TendonForceLengthCurve", path, source);
+  }
+  // OpenSim's own rule: its classic formulation is singular at zero activation
+  const double floor = read.Number("minimum_activation", 0.01);
+  if (!rigid && !damped && floor < 0.01) {
+    throw InputError(source + ": minimum_activation = " + FormatNumber(floor) + " (" +
+                     read.WhereOf("minimum_activation") +
+                     "): must be at least 0.01 with an elastic tendon and no fiber damping "
+                     "(OpenSim's classic formulation is singular at zero activation)");
+  }
   const DeGrooteConversion converted = NearestDeGroote(curves);
   ApplyConversion(converted, !rigid, muscle);
   if (!rigid) {
+    const OsimPropertyReader tendon(CurveElement(element, "TendonForceLengthCurve"), path);
     SetCompliantTendon(muscle, converted.tendon_strain_at_one_norm_force,
-                       "TendonForceLengthCurve <strain_at_one_norm_force>");
+                       "TendonForceLengthCurve <strain_at_one_norm_force>",
+                       tendon.WhereOf("strain_at_one_norm_force"));
   }
   // Millard's first-order lag, its defaults
   SetFirstOrderActivation(read, 0.01, 0.04, muscle);

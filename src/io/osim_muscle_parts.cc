@@ -32,10 +32,11 @@ ImportedMuscle StartMuscle(const OsimPropertyReader& read, const char* class_nam
   return muscle;
 }
 
-void SetCompliantTendon(ImportedMuscle& muscle, double strain, const char* strain_property) {
+void SetCompliantTendon(ImportedMuscle& muscle, double strain, const char* strain_property,
+                        const std::string& where) {
   if (!kTendonStrainRange.Contains(strain)) {
     throw InputError(muscle.source + " '" + muscle.name + "': " + strain_property + " = " +
-                     FormatNumber(strain) + ": " + kTendonStrainRange.Rule());
+                     FormatNumber(strain) + " (" + where + "): " + kTendonStrainRange.Rule());
   }
   muscle.tendon_strain = strain;
   // De Groote's tendon is normalised by its slack length
@@ -50,13 +51,17 @@ void SetCompliantTendon(ImportedMuscle& muscle, double strain, const char* strai
 
 void SetFirstOrderActivation(const OsimPropertyReader& read, double tau_activation,
                              double tau_deactivation, ImportedMuscle& muscle) {
+  const double floor = read.Number("minimum_activation", 0.01);
+  if (!(floor >= 0.0 && floor <= 1.0)) {
+    throw InputError(read.What("minimum_activation") + " = " + FormatNumber(floor) + " (" +
+                     read.WhereOf("minimum_activation") + "): must be in [0, 1]");
+  }
   if (read.Flag("ignore_activation_dynamics", false)) return;
   ActivationDynamics lag;
   lag.family = ActivationFamily::kThelen2003;
   lag.tau_activation = read.Number("activation_time_constant", tau_activation);
   lag.tau_deactivation = read.Number("deactivation_time_constant", tau_deactivation);
   muscle.activation_dynamics = lag;
-  const double floor = read.Number("minimum_activation", 0.01);
   if (floor > 0.0) {
     muscle.notes.push_back("minimum_activation " + FormatNumber(floor) +
                            ": OpenSim holds the activation at or above it; musclesim's "
@@ -105,9 +110,13 @@ void AddCommonNotes(const OsimPropertyReader& read, const XMLElement& element,
 }
 
 void AddPennationClampNote(const OsimPropertyReader& read, ImportedMuscle& muscle) {
-  if (muscle.params.pennation_angle == 0.0) return;
   // OpenSim's default, acos(0.1)
   const double clamp = read.Number("maximum_pennation_angle", 1.4706289056333368);
+  if (!(clamp >= 0.0 && clamp <= 1.5707963267948966)) {
+    throw InputError(read.What("maximum_pennation_angle") + " = " + FormatNumber(clamp) + " (" +
+                     read.WhereOf("maximum_pennation_angle") + "): must be in [0, pi/2] [rad]");
+  }
+  if (muscle.params.pennation_angle == 0.0) return;
   muscle.notes.push_back("maximum_pennation_angle " + FormatNumber(clamp) +
                          " rad: OpenSim clamps the pennation there; musclesim does not");
 }

@@ -20,12 +20,13 @@ namespace musclesim {
 ImportedMuscle StartMuscle(const OsimPropertyReader& read, const char* class_name);
 
 // A compliant tendon's strain and slack length, set on `muscle` after De Groote's rules:
-// InputError naming the property otherwise.
+// InputError naming the property and where it is (`where`, "path:line") otherwise.
 void SetCompliantTendon(ImportedMuscle& muscle, double strain_at_one_norm_force,
-                        const char* strain_property);
+                        const char* strain_property, const std::string& where);
 
 // Millard's or Thelen's first-order activation lag as family thelen2003, time constant for
-// constant, unless the file ignores it; its floor `minimum_activation` noted.
+// constant, unless the file ignores it; its floor `minimum_activation` noted (refused outside
+// [0, 1], OpenSim's range, either way).
 void SetFirstOrderActivation(const OsimPropertyReader& read, double tau_activation,
                              double tau_deactivation, ImportedMuscle& muscle);
 
@@ -39,7 +40,8 @@ std::string GeometryNote(const tinyxml2::XMLElement& muscle);
 void AddCommonNotes(const OsimPropertyReader& read, const tinyxml2::XMLElement& element,
                     ImportedMuscle& muscle);
 
-// A pennate Millard or Thelen muscle's note on OpenSim's clamp at maximum_pennation_angle.
+// A pennate Millard or Thelen muscle's note on OpenSim's clamp at maximum_pennation_angle
+// (refused outside [0, pi/2], OpenSim's range, pennate or not).
 void AddPennationClampNote(const OsimPropertyReader& read, ImportedMuscle& muscle);
 
 }  // namespace musclesim

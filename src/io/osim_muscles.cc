@@ -42,7 +42,8 @@ ImportedMuscle ReadDeGroote(const XMLElement& element, const std::string& path) 
   if (!read.Flag("ignore_tendon_compliance", false)) {
     const double strain =
         read.Number("tendon_strain_at_one_norm_force", defaults.tendon_strain_at_one_norm_force);
-    SetCompliantTendon(muscle, strain, "tendon_strain_at_one_norm_force");
+    SetCompliantTendon(muscle, strain, "tendon_strain_at_one_norm_force",
+                       read.WhereOf("tendon_strain_at_one_norm_force"));
   }
   if (!read.Flag("ignore_activation_dynamics", false)) {
     ActivationDynamics lag;

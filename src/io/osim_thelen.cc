@@ -46,7 +46,10 @@ ImportedMuscle ReadThelen(const XMLElement& element, const std::string& path) {
   const ThelenCurves curves = ReadCurves(read, muscle.name);
   const bool rigid = read.Flag("ignore_tendon_compliance", false);
   ApplyConversion(NearestDeGroote(curves), !rigid, muscle);
-  if (!rigid) SetCompliantTendon(muscle, curves.FmaxTendonStrain, "FmaxTendonStrain");
+  if (!rigid) {
+    SetCompliantTendon(muscle, curves.FmaxTendonStrain, "FmaxTendonStrain",
+                       read.WhereOf("FmaxTendonStrain"));
+  }
   SetFirstOrderActivation(read, 0.015, 0.05, muscle);
   std::vector<std::pair<std::string, std::string>> names = kOsimPropertyNames;
   names.emplace_back("passive_fiber_strain_at_one_norm_force", "FmaxMuscleStrain (De Groote's e0)");

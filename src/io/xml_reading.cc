@@ -23,6 +23,10 @@ bool TakeNumber(const char*& rest, double& value) {
   char* end = nullptr;
   value = std::strtod(rest, &end);
   if (end == rest) return false;
+  // strtod reads C's hexadecimal floats; the tools read decimals only ("0x10": OpenSim's 0)
+  for (const char* c = rest; c != end; ++c) {
+    if (*c == 'x' || *c == 'X') return false;
+  }
   rest = end;
   return std::isfinite(value);
 }

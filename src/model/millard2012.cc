@@ -100,8 +100,9 @@ SegmentedBezierCurve MillardCurve(const MillardForceVelocity& p) {
           "max_eccentric_velocity_force_multiplier", f_max, "must be above 1 and at most 1e3");
   Require(std::isfinite(c_vmax) && c_vmax >= 0.0 && c_vmax < 1.0, "concentric_slope_at_vmax",
           c_vmax, "must be in [0, 1)");
-  Require(std::isfinite(c_near) && c_near > c_vmax && c_near <= 1.0, "concentric_slope_near_vmax",
-          c_near, "must exceed concentric_slope_at_vmax and be at most 1");
+  // below 1: OpenSim's muscle inverts the curve, whose inverse needs it (ForceVelocityInverseCurve)
+  Require(std::isfinite(c_near) && c_near > c_vmax && c_near < 1.0, "concentric_slope_near_vmax",
+          c_near, "must exceed concentric_slope_at_vmax and be below 1");
   Require(c_near >= kRootEpsilon, "concentric_slope_near_vmax", c_near,
           "must be at least 1.49e-8 (OpenSim's Millard2012EquilibriumMuscle)");
   Require(std::isfinite(iso) && iso > 1.0 && iso <= 1e6, "isometric_slope", iso,

@@ -162,6 +162,49 @@ TEST(ImportMillard, ARefusedCurvePropertyNamesItsCurveLineAndRule) {
   }
 }
 
+TEST(ImportMillard, RefusesWhatOpenSimRefusesEvenWhereItsAdjustmentWouldHideIt) {
+  // each: muscle, the file's text, its replacement, what the refusal says (the probe's cases;
+  // OpenSim 4.6 refuses each)
+  const struct {
+    const char *muscle, *from, *to, *says;
+  } cases[] = {
+      // the damped muscle sets these to 0, but OpenSim refuses them first
+      {"damped", "<minimum_value>0</minimum_value>", "<minimum_value>-1</minimum_value>",
+       "<minimum_value> = -1: must be in [0, 1)"},
+      {"damped", "<concentric_slope_at_vmax>0</concentric_slope_at_vmax>",
+       "<concentric_slope_at_vmax>-1</concentric_slope_at_vmax>",
+       "<concentric_slope_at_vmax> = -1: must be in [0, 1)"},
+      // the inverse curve OpenSim's muscle builds needs it below 1
+      {"classic", "<concentric_slope_near_vmax>0.29999999999999999<",
+       "<concentric_slope_near_vmax>1<", "<concentric_slope_near_vmax> = 1: must exceed"},
+      // reported on the property that is wrong, not on the one the adjustment derives from it
+      {"classic", "<concentric_slope_near_vmax>0.29999999999999999<",
+       "<concentric_slope_near_vmax>1e300<", "<concentric_slope_near_vmax> = 1e+300"},
+      {"classic", "<minimum_activation>0.02</minimum_activation>",
+       "<minimum_activation>0</minimum_activation>", "minimum_activation = 0 ("},
+      {"damped", "<max_isometric_force>",
+       "<minimum_activation>-0.1</minimum_activation><max_isometric_force>",
+       "<minimum_activation> = -0.1 ("},
+      {"damped", "<max_isometric_force>",
+       "<maximum_pennation_angle>2</maximum_pennation_angle><max_isometric_force>",
+       "<maximum_pennation_angle> = 2 ("},
+      // C's hexadecimal floats are no numbers to OpenSim
+      {"classic", "<isometric_slope>4</isometric_slope>",
+       "<isometric_slope>0x4p0</isometric_slope>", "<isometric_slope> = 0x4p0"},
+  };
+  for (const auto& c : cases) {
+    const std::string path =
+        testing::WriteTempFile("millard_refused.osim", Edited(c.muscle, c.from, c.to));
+    try {
+      ImportMuscles(path);
+      ADD_FAILURE() << c.to << ": accepted";
+    } catch (const InputError& e) {
+      EXPECT_THAT(e.what(), HasSubstr(c.says)) << c.to;
+      EXPECT_THAT(e.what(), HasSubstr("millard_refused.osim:")) << c.to;
+    }
+  }
+}
+
 TEST(ImportMillardCli, WritesARunnableScenarioPerMuscleWithItsConversionReported) {
   const std::string dir = testing::FreshDirectory("import_millard");
   const testing::CliOutcome out =
@@ -183,6 +226,24 @@ TEST(ImportMillardCli, WritesARunnableScenarioPerMuscleWithItsConversionReported
         testing::RunMusclesim("run " + dir + "/" + name + ".yaml -o " + dir + "/" + name + ".csv");
     EXPECT_EQ(run.exit_code, 0) << name << ": " << run.err;
   }
+}
+
+TEST(ImportMillardCli, AShortFibersJunctionBalanceIsSolvedAtEveryStep) {
+  // a 3 mm fiber: the junction's balance bends steeply between flat stretches, where Newton's
+  // steps crawled past their iteration limit (a NaN row, then a stalled run) until bisection
+  // took over from steps that stopped halving
+  const std::string dir = testing::FreshDirectory("import_millard_short");
+  const std::string path = testing::WriteTempFile(
+      "millard_short.osim",
+      Edited("damped", "<optimal_fiber_length>0.089999999999999997</optimal_fiber_length>",
+             "<optimal_fiber_length>0.003</optimal_fiber_length>"));
+  ASSERT_EQ(testing::RunMusclesim("import " + path + " -o " + dir).exit_code, 0);
+  const testing::CliOutcome run =
+      testing::RunMusclesim("run " + dir + "/damped.yaml -o " + dir + "/damped.csv");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  const std::string csv = testing::ReadFile(dir + "/damped.csv");
+  EXPECT_GT(csv.size(), 1000u);
+  EXPECT_EQ(csv.find("nan"), std::string::npos);
 }
 
 TEST(ImportMillardCli, ABadCurvePropertyExitsTwoAndWritesNothing) {
