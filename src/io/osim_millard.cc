@@ -49,49 +49,41 @@ void CheckCurve(const Curve& curve, const XMLElement& muscle, const char* name,
 
 MillardCurves ReadCurves(const XMLElement& muscle, const std::string& path) {
   MillardCurves c;
-  const auto read = [&](const char* name) {
-    return OsimPropertyReader(CurveElement(muscle, name), path);
-  };
-  if (muscle.FirstChildElement("ActiveForceLengthCurve") != nullptr) {
-    const OsimPropertyReader r = read("ActiveForceLengthCurve");
+  // a curve the file leaves out keeps every default
+  if (const XMLElement* e = muscle.FirstChildElement("ActiveForceLengthCurve")) {
+    const OsimPropertyReader r(*e, path);
     MillardActiveForceLength& a = c.active;
-    a.min_norm_active_fiber_length =
-        r.Number("min_norm_active_fiber_length", a.min_norm_active_fiber_length);
-    a.transition_norm_fiber_length =
-        r.Number("transition_norm_fiber_length", a.transition_norm_fiber_length);
-    a.max_norm_active_fiber_length =
-        r.Number("max_norm_active_fiber_length", a.max_norm_active_fiber_length);
-    a.shallow_ascending_slope = r.Number("shallow_ascending_slope", a.shallow_ascending_slope);
-    a.minimum_value = r.Number("minimum_value", a.minimum_value);
+    r.Read("min_norm_active_fiber_length", a.min_norm_active_fiber_length);
+    r.Read("transition_norm_fiber_length", a.transition_norm_fiber_length);
+    r.Read("max_norm_active_fiber_length", a.max_norm_active_fiber_length);
+    r.Read("shallow_ascending_slope", a.shallow_ascending_slope);
+    r.Read("minimum_value", a.minimum_value);
   }
-  if (muscle.FirstChildElement("ForceVelocityCurve") != nullptr) {
-    const OsimPropertyReader r = read("ForceVelocityCurve");
+  if (const XMLElement* e = muscle.FirstChildElement("ForceVelocityCurve")) {
+    const OsimPropertyReader r(*e, path);
     MillardForceVelocity& v = c.velocity;
-    v.concentric_slope_at_vmax = r.Number("concentric_slope_at_vmax", v.concentric_slope_at_vmax);
-    v.concentric_slope_near_vmax =
-        r.Number("concentric_slope_near_vmax", v.concentric_slope_near_vmax);
-    v.isometric_slope = r.Number("isometric_slope", v.isometric_slope);
-    v.eccentric_slope_at_vmax = r.Number("eccentric_slope_at_vmax", v.eccentric_slope_at_vmax);
-    v.eccentric_slope_near_vmax =
-        r.Number("eccentric_slope_near_vmax", v.eccentric_slope_near_vmax);
-    v.max_eccentric_velocity_force_multiplier = r.Number("max_eccentric_velocity_force_multiplier",
-                                                         v.max_eccentric_velocity_force_multiplier);
-    v.concentric_curviness = r.Number("concentric_curviness", v.concentric_curviness);
-    v.eccentric_curviness = r.Number("eccentric_curviness", v.eccentric_curviness);
+    r.Read("concentric_slope_at_vmax", v.concentric_slope_at_vmax);
+    r.Read("concentric_slope_near_vmax", v.concentric_slope_near_vmax);
+    r.Read("isometric_slope", v.isometric_slope);
+    r.Read("eccentric_slope_at_vmax", v.eccentric_slope_at_vmax);
+    r.Read("eccentric_slope_near_vmax", v.eccentric_slope_near_vmax);
+    r.Read("max_eccentric_velocity_force_multiplier", v.max_eccentric_velocity_force_multiplier);
+    r.Read("concentric_curviness", v.concentric_curviness);
+    r.Read("eccentric_curviness", v.eccentric_curviness);
   }
-  if (muscle.FirstChildElement("FiberForceLengthCurve") != nullptr) {
-    const OsimPropertyReader r = read("FiberForceLengthCurve");
+  if (const XMLElement* e = muscle.FirstChildElement("FiberForceLengthCurve")) {
+    const OsimPropertyReader r(*e, path);
     MillardFiberForceLength& f = c.passive;
-    f.strain_at_zero_force = r.Number("strain_at_zero_force", f.strain_at_zero_force);
-    f.strain_at_one_norm_force = r.Number("strain_at_one_norm_force", f.strain_at_one_norm_force);
+    r.Read("strain_at_zero_force", f.strain_at_zero_force);
+    r.Read("strain_at_one_norm_force", f.strain_at_one_norm_force);
     f.stiffness_at_low_force = r.OptionalNumber("stiffness_at_low_force");
     f.stiffness_at_one_norm_force = r.OptionalNumber("stiffness_at_one_norm_force");
     f.curviness = r.OptionalNumber("curviness");
   }
-  if (muscle.FirstChildElement("TendonForceLengthCurve") != nullptr) {
-    const OsimPropertyReader r = read("TendonForceLengthCurve");
+  if (const XMLElement* e = muscle.FirstChildElement("TendonForceLengthCurve")) {
+    const OsimPropertyReader r(*e, path);
     MillardTendonForceLength& t = c.tendon;
-    t.strain_at_one_norm_force = r.Number("strain_at_one_norm_force", t.strain_at_one_norm_force);
+    r.Read("strain_at_one_norm_force", t.strain_at_one_norm_force);
     t.stiffness_at_one_norm_force = r.OptionalNumber("stiffness_at_one_norm_force");
     t.norm_force_at_toe_end = r.OptionalNumber("norm_force_at_toe_end");
     t.curviness = r.OptionalNumber("curviness");

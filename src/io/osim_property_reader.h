@@ -19,6 +19,8 @@ class OsimPropertyReader {
 
   // The property's value, `fallback` when the file leaves it out.
   double Number(const char* property, double fallback) const;
+  // `value` set to the property's, kept (a default) when the file leaves it out.
+  void Read(const char* property, double& value) const { value = Number(property, value); }
   bool Flag(const char* property, bool fallback) const;
   // An optional property (OpenSim's empty `<curviness />`): none when absent or empty.
   std::optional<double> OptionalNumber(const char* property) const;

@@ -19,14 +19,13 @@ using tinyxml2::XMLElement;
 
 ThelenCurves ReadCurves(const OsimPropertyReader& read, const std::string& name) {
   ThelenCurves c;
-  c.FmaxTendonStrain = read.Number("FmaxTendonStrain", c.FmaxTendonStrain);
-  c.FmaxMuscleStrain = read.Number("FmaxMuscleStrain", c.FmaxMuscleStrain);
-  c.KshapeActive = read.Number("KshapeActive", c.KshapeActive);
-  c.KshapePassive = read.Number("KshapePassive", c.KshapePassive);
-  c.Af = read.Number("Af", c.Af);
-  c.Flen = read.Number("Flen", c.Flen);
-  c.fv_linear_extrap_threshold =
-      read.Number("fv_linear_extrap_threshold", c.fv_linear_extrap_threshold);
+  read.Read("FmaxTendonStrain", c.FmaxTendonStrain);
+  read.Read("FmaxMuscleStrain", c.FmaxMuscleStrain);
+  read.Read("KshapeActive", c.KshapeActive);
+  read.Read("KshapePassive", c.KshapePassive);
+  read.Read("Af", c.Af);
+  read.Read("Flen", c.Flen);
+  read.Read("fv_linear_extrap_threshold", c.fv_linear_extrap_threshold);
   try {
     Validate(c);
   } catch (const ParameterError& e) {
