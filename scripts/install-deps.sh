@@ -36,12 +36,25 @@ done
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages present"
-  exit 0
+else
+  echo "install-deps: installing ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-echo "install-deps: installing ${missing[*]}"
-sudo_cmd=()
-[ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
-export DEBIAN_FRONTEND=noninteractive
-"${sudo_cmd[@]}" apt-get update -qq
-"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+# What Debian lacks, from PyPI, pinned in scripts/pypi-deps.txt, in build-deps/venv of
+# Debian's python3 (CMakeLists.txt looks there): made again only when the pins change
+cd "$(dirname "$0")/.."
+venv=build-deps/venv
+if cmp -s scripts/pypi-deps.txt "$venv/pypi-deps.txt" 2>/dev/null; then
+  echo "install-deps: the PyPI packages of scripts/pypi-deps.txt present"
+else
+  echo "install-deps: installing scripts/pypi-deps.txt into $venv"
+  rm -rf "$venv"
+  /usr/bin/python3 -m venv "$venv"
+  "$venv/bin/python" -m pip install -q --disable-pip-version-check -r scripts/pypi-deps.txt
+  cp scripts/pypi-deps.txt "$venv/pypi-deps.txt"
+fi

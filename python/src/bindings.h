@@ -5,6 +5,8 @@
 
 namespace musclesim::python {
 
+// First: refuses to import under a NumPy this build's pybind11 cannot serve (numpy_support.cc).
+void RequireSupportedNumpy(pybind11::module_& m);
 // musclesim.InputError and ParameterError: C++ exceptions translated.
 void BindErrors(pybind11::module_& m);
 // Tension curves on NumPy arrays with their derivatives; the closed-form Gaussian fit.

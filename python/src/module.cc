@@ -10,6 +10,7 @@ PYBIND11_MODULE(_musclesim, m) {
       "shortens.";
   // the CMake project's version, as `musclesim --version` prints it
   m.attr("__version__") = MUSCLESIM_VERSION;
+  musclesim::python::RequireSupportedNumpy(m);
   musclesim::python::BindErrors(m);
   musclesim::python::BindModel(m);
   musclesim::python::BindScenario(m);
