@@ -39,6 +39,7 @@ struct Setup {
   std::vector<Observation> observations;
   std::vector<double> scenario_values;
   Eigen::VectorXd start, lower, upper;
+  std::vector<double> sizes;  // each parameter's scale, from its start and bounds
   bool noise_given = false;
 };
 
@@ -65,7 +66,7 @@ std::string Unusable(const SensitivityTable& table, std::size_t rows) {
 
 ModelPoint Evaluate(const Setup& setup, const SensitivityRunner& run, const Eigen::VectorXd& p) {
   const std::vector<double> values(p.data(), p.data() + p.size());
-  const SensitivityTable table = run(setup.paths, values, setup.times);
+  const SensitivityTable table = run(setup.paths, values, setup.times, setup.sizes);
   if (const std::string why = Unusable(table, setup.times.size()); !why.empty()) {
     throw EvaluationFailure("at " + Describe(setup, p) + ": " + why);
   }
@@ -102,12 +103,12 @@ SensitivityTable BaselineRun(const IdentifySeriesSpec& spec, const std::vector<s
                              const SensitivityRunner& run) {
   SensitivityTable baseline;
   try {
-    baseline = run(paths, {}, {});
+    baseline = run(paths, {}, {}, {});
   } catch (const InputError& e) {
     // name the entry at fault: the first parameter the scenario refuses on its own
     for (std::size_t i = 0; i < spec.parameters.size(); ++i) {
       try {
-        run({spec.parameters[i].path}, {}, {});
+        run({spec.parameters[i].path}, {}, {}, {});
       } catch (const InputError& alone) {
         throw InputError(spec.parameters[i].at + ": parameters[" + std::to_string(i) +
                          "].path = " + spec.parameters[i].path + " in scenario " + spec.scenario +
@@ -240,6 +241,8 @@ Setup Prepare(const IdentifySeriesSpec& spec, std::vector<MeasuredSeries> series
   setup.times = MergedTimes(series, baseline.times);
   AddObservations(spec, series, baseline.columns, design, setup);
   SetStartsAndBounds(spec, setup);
+  const Eigen::VectorXd sizes = ParameterScales(setup.start, setup.start, setup.lower, setup.upper);
+  setup.sizes.assign(sizes.data(), sizes.data() + sizes.size());
   return setup;
 }
 

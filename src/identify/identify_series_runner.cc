@@ -22,11 +22,11 @@ Scenario With(const Scenario& scenario, const std::vector<std::string>& paramete
 }  // namespace
 
 SensitivityRunner ScenarioSensitivityRunner(Scenario scenario) {
-  return [base = std::move(scenario)](const std::vector<std::string>& parameters,
-                                      const std::vector<double>& values,
-                                      const std::vector<double>& times) {
-    if (values.empty()) return RunWithSensitivities(base, parameters, times);
-    return RunWithSensitivities(With(base, parameters, values), parameters, times);
+  return [base = std::move(scenario)](
+             const std::vector<std::string>& parameters, const std::vector<double>& values,
+             const std::vector<double>& times, const std::vector<double>& sizes) {
+    if (values.empty()) return RunWithSensitivities(base, parameters, times, sizes);
+    return RunWithSensitivities(With(base, parameters, values), parameters, times, sizes);
   };
 }
 

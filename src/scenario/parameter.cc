@@ -118,6 +118,8 @@ class ParameterResolver {
   std::size_t Coordinate(std::size_t i, const std::string& key) const;
   void Node(std::size_t i);
   void Element(std::size_t i);
+  // A fixed via point's coordinate: elements[e].via[k][c].
+  void Via(std::size_t i, std::size_t e);
   void Load(std::size_t i);
   void Controller(std::size_t i);
   void Gravity(std::size_t i);
@@ -440,6 +442,7 @@ void ParameterResolver::Element(std::size_t i) {
   const Locate<musclesim::Element> at = [e](Scenario& s) -> musclesim::Element& {
     return s.elements[e];
   };
+  if (key == "via") return Via(i + 2, e);
   if (element.kind == ElementKind::kActuator) {
     if (key == "activation" && !element.excitation && !element.controlled) {
       return WaveformField(
@@ -508,6 +511,19 @@ void ParameterResolver::Element(std::size_t i) {
     case ElementKind::kActuator: break;
   }
   Fail("names no number of this " + std::string(ToString(element.kind)));
+}
+
+void ParameterResolver::Via(std::size_t i, std::size_t e) {
+  const std::vector<ViaPoint>& via = scenario_.elements[e].via;
+  const std::size_t k = Index(i, via.size(), "via");
+  if (!via[k].node.empty()) {
+    Fail("names a via point that is node " + via[k].node +
+         ": its coordinates are that node's (nodes[...].position or fixed)");
+  }
+  const std::size_t c = Coordinate(i + 1, "via[" + std::to_string(k) + "]");
+  End(i + 2);
+  Number([e, k, c](Scenario& s) -> double& { return s.elements[e].via[k].position[c]; },
+         &kPositionRange);
 }
 
 // De Groote's tendon's slack length: > 0, the law is normalised by it.

@@ -1,5 +1,6 @@
 #include "scenario/sensitivity_derivatives.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -53,9 +54,9 @@ NearbyPoint BuildAt(const Scenario& scenario, const Parameter& parameter, double
 // The points of the quotient: central where both sides are valid values, else one-sided of
 // second order (a damping of 0 cannot go below it).
 std::vector<NearbyPoint> StencilPoints(const Scenario& scenario, const BuiltScenario& base,
-                                       const Parameter& parameter, double value,
+                                       const Parameter& parameter, double value, double size,
                                        const std::string& where) {
-  const double h = kRelativeStep * (value != 0.0 ? std::abs(value) : 1.0);
+  const double h = kRelativeStep * ParameterSize(value, size);
   NearbyPoint below = BuildAt(scenario, parameter, value - h);
   NearbyPoint above = BuildAt(scenario, parameter, value + h);
   if (below.built && above.built && base.system->junction_count() > 0) {
@@ -87,10 +88,10 @@ std::vector<NearbyPoint> StencilPoints(const Scenario& scenario, const BuiltScen
 }
 
 void AddDifferenceQuotient(const Scenario& scenario, const BuiltScenario& base,
-                           const Parameter& parameter, const std::string& where,
+                           const Parameter& parameter, double size, const std::string& where,
                            ResolvedParameter& out) {
   const std::vector<NearbyPoint> points =
-      StencilPoints(scenario, base, parameter, out.value, where);
+      StencilPoints(scenario, base, parameter, out.value, size, where);
   const std::vector<double> breakpoints =
       base.system->Breakpoints(scenario.t_start, scenario.t_end);
   std::vector<double> values;
@@ -147,8 +148,14 @@ BuiltScenario BuildScenario(const Scenario& scenario) {
   return built;
 }
 
+double ParameterSize(double value, double size) {
+  const double larger = std::max(std::abs(value), std::abs(size));
+  return larger > 0.0 ? larger : 1.0;
+}
+
 ResolvedParameter ResolveParameter(const Scenario& scenario, const BuiltScenario& base,
-                                   const Parameter& parameter, const std::string& where) {
+                                   const Parameter& parameter, const std::string& where,
+                                   double size) {
   if (parameter.is_setting()) {
     throw InputError(where +
                      ": a setting of the run, not a parameter of its dynamics: it has "
@@ -172,7 +179,7 @@ ResolvedParameter ResolveParameter(const Scenario& scenario, const BuiltScenario
     out.initial.assign(base.initial.size(), 0.0);
     return out;
   }
-  AddDifferenceQuotient(scenario, base, parameter, where, out);
+  AddDifferenceQuotient(scenario, base, parameter, size, where, out);
   return out;
 }
 

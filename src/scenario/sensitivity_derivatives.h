@@ -29,11 +29,17 @@ struct ResolvedParameter {
   std::vector<double> initial;  // dy(t_start)/dp
 };
 
+// The magnitude a parameter's changes are measured against: max(|value|, size), 1 where
+// both are 0 (SensitivityRequest::size).
+double ParameterSize(double value, double size);
+
 // Resolves `parameter` of `scenario`, whose system `base` is (the models it holds are the
-// scenario's). `where` heads messages ("--sensitivity model.f_iso"). Throws InputError for a
-// path that names no number of the dynamics, a setting, a value that cannot move, or one that
-// moves an input breakpoint or changes the state's size.
+// scenario's); a difference quotient steps by a fraction of ParameterSize(value, size).
+// `where` heads messages ("--sensitivity model.f_iso"). Throws InputError for a path that
+// names no number of the dynamics, a setting, a value that cannot move, or one that moves an
+// input breakpoint or changes the state's size.
 ResolvedParameter ResolveParameter(const Scenario& scenario, const BuiltScenario& base,
-                                   const Parameter& parameter, const std::string& where);
+                                   const Parameter& parameter, const std::string& where,
+                                   double size = 0.0);
 
 }  // namespace musclesim

@@ -98,12 +98,13 @@ SensitivityRun::SensitivityRun(const Scenario& scenario,
       continue;
     }
     p.network_paths.push_back(target);
-    ResolvedParameter resolved = ResolveParameter(p.scenario, p.base, parameter, where);
+    ResolvedParameter resolved =
+        ResolveParameter(p.scenario, p.base, parameter, where, request.size);
     p.paths.push_back(resolved.path);
     p.values.push_back(resolved.value);
     p.sources.push_back(resolved.source);
     p.derivatives.push_back(std::move(resolved.derivative));
-    const double scale = resolved.value != 0.0 ? std::abs(resolved.value) : 1.0;
+    const double scale = ParameterSize(resolved.value, request.size);
     p.parameters.push_back({p.derivatives.back().get(), std::move(resolved.initial), scale});
   }
   p.columns = SensitivityColumns(scenario.form, *p.base.system, p.parameters).names();
@@ -170,9 +171,12 @@ RunStats SensitivityRun::Run(Simulation& simulation, SensitivityRowSink& sink,
 
 SensitivityTable RunWithSensitivities(const Scenario& scenario,
                                       const std::vector<std::string>& parameters,
-                                      const std::vector<double>& output_times) {
+                                      const std::vector<double>& output_times,
+                                      const std::vector<double>& sizes) {
   std::vector<SensitivityRequest> requests;
-  for (const std::string& path : parameters) requests.push_back({path, ""});
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    requests.push_back({parameters[i], "", i < sizes.size() ? sizes[i] : 0.0});
+  }
   const SensitivityRun run(scenario, requests);
   SensitivityTable table;
   table.columns = run.columns();

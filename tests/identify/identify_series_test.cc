@@ -53,7 +53,8 @@ struct StandIn {
 
   // SensitivityRunner's call: `values` (none: the scenario as it is) at `parameters`
   SensitivityTable operator()(const std::vector<std::string>& parameters,
-                              const std::vector<double>& values, const std::vector<double>& times) {
+                              const std::vector<double>& values, const std::vector<double>& times,
+                              const std::vector<double>&) {
     ++runs;
     std::map<std::string, double> p = kScenario;
     for (const std::string& path : parameters) {

@@ -46,10 +46,12 @@ std::vector<MeasuredSeries> ReadMeasuredSeries(const IdentifySeriesSpec& spec, b
 
 // A run with sensitivities as identification uses it: the scenario with `values[i]` set at
 // parameters[i] (key paths; `values` empty: the scenario as it is), its rows at `times`
-// (empty: its output grid), the derivatives with respect to `parameters`.
-using SensitivityRunner = std::function<SensitivityTable(const std::vector<std::string>& parameters,
-                                                         const std::vector<double>& values,
-                                                         const std::vector<double>& times)>;
+// (empty: its output grid), the derivatives with respect to `parameters`, each taken on the
+// scale of sizes[i] (empty: the values'; SensitivityRequest::size), so that an estimate
+// nearing 0 is still differentiated on the scale of the start.
+using SensitivityRunner = std::function<SensitivityTable(
+    const std::vector<std::string>& parameters, const std::vector<double>& values,
+    const std::vector<double>& times, const std::vector<double>& sizes)>;
 
 // RunWithSensitivities on copies of `scenario`, the values set through the parameters'
 // handles (SetParameters: a value a handle refuses throws its ParameterError).

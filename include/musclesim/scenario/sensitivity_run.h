@@ -28,9 +28,14 @@ std::string_view ToString(DerivativeSource source);
 
 // One parameter asked for: its key path, and who asked, for messages ("--sensitivity", or
 // "FILE:LINE:COLUMN: sensitivities[0]"; empty: the path alone).
+// `size` is the parameter's typical magnitude [its unit] where the caller knows one better
+// than the value (an identification's start while its estimate nears 0): a difference
+// quotient steps by a fraction of max(|value|, size) (1 where both are 0), so that a value
+// near 0 is not differentiated by a step that moves nothing.
 struct SensitivityRequest {
   std::string path;
   std::string where;
+  double size = 0.0;
 };
 
 struct SensitivityTable {
@@ -102,10 +107,12 @@ class SensitivityRun {
   std::unique_ptr<Prepared> prepared_;
 };
 
-// A SensitivityRun of `parameters` (paths, as SensitivityRequest without `where`) on a new
-// Simulation, collected into a table.
+// A SensitivityRun of `parameters` (paths, as SensitivityRequest without `where`; `sizes`
+// empty or one per parameter, as SensitivityRequest::size) on a new Simulation, collected
+// into a table.
 SensitivityTable RunWithSensitivities(const Scenario& scenario,
                                       const std::vector<std::string>& parameters,
-                                      const std::vector<double>& output_times = {});
+                                      const std::vector<double>& output_times = {},
+                                      const std::vector<double>& sizes = {});
 
 }  // namespace musclesim
