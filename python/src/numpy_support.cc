@@ -30,8 +30,7 @@ void RequireSupportedNumpy(py::module_& m) {
     throw py::import_error(refusal);
   }
   // the rule itself, for the module's tests (python/tests/test_numpy_support.py)
-  m.def("_numpy_refusal", &NumpyRefusal, py::arg("pybind11_version_hex"),
-        py::arg("numpy_version"));
+  m.def("_numpy_refusal", &NumpyRefusal, py::arg("pybind11_version_hex"), py::arg("numpy_version"));
   m.attr("_pybind11_version_hex") = PYBIND11_VERSION_HEX;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "crossing.h"
+#include "musclesim/core/brent_minimum.h"
 #include "cvode_workspace.h"
 #include "run_roots.h"
 
@@ -73,6 +74,7 @@ class RootWatch {
         crossing_time_ = at;
       }
     }
+    FindDips(cb, t_before, t, interpolate, first);
     if (first < 0) before_.swap(after_);
     return first;
   }
@@ -81,6 +83,58 @@ class RootWatch {
   const Root& root(int i) const { return roots_[static_cast<std::size_t>(i)]; }
 
  private:
+  // A segment's length is never below 0, so one that shortens through its level and back
+  // within a step changes no sign at the step's ends (docs/model.md 12.5). A minimum inside
+  // the step shows as the length falling just after the step's start and rising just before
+  // its end; where the tangents there reach the level within the step (a convex length, as
+  // between two points moving straight, lies above its tangents) its depth is sought on the
+  // interpolant, and a dip below the level is a crossing at the first time it reaches it.
+  template <typename Interpolate>
+  void FindDips(const Callbacks& cb, double t_before, double t, Interpolate interpolate,
+                int& first) {
+    const double step = t - t_before;
+    const double delta = 1e-6 * step;  // [s]: one-sided slopes, far above the times' rounding
+    bool near_ends_known = false;
+    for (std::size_t i = 0; i < roots_.size(); ++i) {
+      const Root& root = roots_[i];
+      if (root.kind != Root::kShortSegment || !active_[i] || before_[i] <= 0.0 ||
+          after_[i] <= 0.0) {
+        continue;
+      }
+      if (!near_ends_known) {
+        const double* y = interpolate(t_before + delta);
+        start_state_.assign(y, y + system_->state_size());
+        y = interpolate(t - delta);
+        end_state_.assign(y, y + system_->state_size());
+        near_ends_known = true;
+      }
+      const double falling =
+          (RootValue(*system_, root, cb.InputTime(t_before + delta), start_state_.data()) -
+           before_[i]) /
+          delta;
+      const double rising =
+          (after_[i] - RootValue(*system_, root, cb.InputTime(t - delta), end_state_.data())) /
+          delta;
+      // a factor 2 on the tangents' reach for paths that bend (over via points)
+      if (!(falling < 0.0 && rising > 0.0 && before_[i] + 2.0 * falling * step <= 0.0 &&
+            after_[i] - 2.0 * rising * step <= 0.0)) {
+        continue;
+      }
+      const auto g = [&](double at) {
+        return RootValue(*system_, root, cb.InputTime(at), interpolate(at));
+      };
+      const double tolerance =
+          100.0 * std::numeric_limits<double>::epsilon() * (std::abs(t) + std::abs(step));
+      const auto [lowest_at, lowest] = BrentMinimum(g, t_before, t, tolerance);
+      if (lowest > 0.0) continue;
+      const double at = LocateCrossing(g, t_before, before_[i], lowest_at, lowest, tolerance);
+      if (first < 0 || at < crossing_time_) {
+        first = static_cast<int>(i);
+        crossing_time_ = at;
+      }
+    }
+  }
+
   void Evaluate(const Callbacks& cb, double t, const double* y, std::vector<double>& g) const {
     for (std::size_t i = 0; i < roots_.size(); ++i) {
       g[i] = RootValue(*system_, roots_[i], cb.InputTime(t), y);
@@ -91,7 +145,8 @@ class RootWatch {
   std::vector<Root> roots_;
   std::vector<double> before_, after_;
   std::vector<char> active_;
-  bool armed_ = false;  // before_ holds the values at the last step's end
+  std::vector<double> start_state_, end_state_;  // FindDips: just inside the step's ends
+  bool armed_ = false;                           // before_ holds the values at the last step's end
   double crossing_time_ = 0.0;
 };
 

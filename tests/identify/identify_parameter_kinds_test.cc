@@ -52,8 +52,8 @@ Scenario At(const Scenario& scenario, const std::string& path, double value) {
 }
 
 // The truth's `columns` every `stride` rows of a plain run, noise `noise` stated (none added).
-MeasuredSeries Series(const Scenario& truth, const std::vector<std::string>& columns,
-                      double noise, std::size_t stride) {
+MeasuredSeries Series(const Scenario& truth, const std::vector<std::string>& columns, double noise,
+                      std::size_t stride) {
   const RecordedRun run = RunScenario(truth);
   EXPECT_EQ(run.stats.status, RunStatus::kCompleted) << run.stats.message;
   const std::vector<double>& t = testing::ColumnOf(run, "t");
@@ -126,28 +126,40 @@ void ExpectIdentified(const Kind& kind) {
 TEST(IdentifyParameterKinds, AFixedNodesCoordinateWhoseTruthIsZero) {
   // the wall of the mass-spring-damper at 0, started 1 mm off: the load's position depends on
   // it with a sensitivity of ~0.8 at the end (its column is not zero)
-  ExpectIdentified({Shipped("mass_spring_damper.yaml"), "nodes[0].fixed", 0.0, 0.001, -0.05, 0.05,
-                    {"load.position"}, 1e-6});
+  ExpectIdentified({Shipped("mass_spring_damper.yaml"),
+                    "nodes[0].fixed",
+                    0.0,
+                    0.001,
+                    -0.05,
+                    0.05,
+                    {"load.position"},
+                    1e-6});
 }
 
 TEST(IdentifyParameterKinds, AFreeNodesInitialCoordinateWhoseTruthIsZero) {
-  ExpectIdentified({Parsed(kPlanarBob), "nodes[1].position[1]", 0.0, 0.01, -0.1, 0.1,
-                    {"bob.x", "bob.y"}, 1e-6});
+  ExpectIdentified(
+      {Parsed(kPlanarBob), "nodes[1].position[1]", 0.0, 0.01, -0.1, 0.1, {"bob.x", "bob.y"}, 1e-6});
 }
 
 TEST(IdentifyParameterKinds, AFixedViaPointsCoordinate) {
-  ExpectIdentified({Parsed(kPlanarBob), "elements[0].via[0][1]", 0.2, 0.21, 0.1, 0.3,
-                    {"bob.x", "bob.y"}, 1e-6});
+  ExpectIdentified(
+      {Parsed(kPlanarBob), "elements[0].via[0][1]", 0.2, 0.21, 0.1, 0.3, {"bob.x", "bob.y"}, 1e-6});
 }
 
 TEST(IdentifyParameterKinds, AFixedNodesCoordinateInThePlaneWhoseTruthIsZero) {
-  ExpectIdentified({Parsed(kPlanarBob), "nodes[0].fixed[0]", 0.0, 0.01, -0.1, 0.1,
-                    {"bob.x", "bob.y"}, 1e-6});
+  ExpectIdentified(
+      {Parsed(kPlanarBob), "nodes[0].fixed[0]", 0.0, 0.01, -0.1, 0.1, {"bob.x", "bob.y"}, 1e-6});
 }
 
 TEST(IdentifyParameterKinds, AnElementsCoefficient) {
-  ExpectIdentified({Shipped("mass_spring_damper.yaml"), "elements[0].stiffness", 50.0, 45.0, 1.0,
-                    500.0, {"load.position"}, 1e-6});
+  ExpectIdentified({Shipped("mass_spring_damper.yaml"),
+                    "elements[0].stiffness",
+                    50.0,
+                    45.0,
+                    1.0,
+                    500.0,
+                    {"load.position"},
+                    1e-6});
 }
 
 TEST(IdentifyParameterKinds, AModelBlocksKey) {
@@ -157,8 +169,8 @@ TEST(IdentifyParameterKinds, AModelBlocksKey) {
   pair.t_end = 1.0;
   pair.solver.rtol = 1e-11;
   pair.solver.atol = 1e-14;
-  ExpectIdentified({pair, "models.muscle.f_iso", 100.0, 90.0, 10.0, 1000.0, {"load.position"},
-                    1e-9});
+  ExpectIdentified(
+      {pair, "models.muscle.f_iso", 100.0, 90.0, 10.0, 1000.0, {"load.position"}, 1e-9});
 }
 
 TEST(IdentifyParameterKinds, AViaPointsCoordinateIsAHandleCheckedAsTheFileIs) {
