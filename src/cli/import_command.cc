@@ -45,10 +45,12 @@ malformed file or value, or no muscle of a supported class), 1 anything else.
 )";
 
 // The file name for a muscle: its name with anything but letters, digits, '-', '_' and '.'
-// replaced by '_', made unique among the muscles of the run.
+// replaced by '_', cut to 100 characters (a file name may hold 255 bytes), made unique among
+// the muscles of the run.
 std::string FileStem(const std::string& name, std::set<std::string>& taken) {
+  constexpr std::size_t kLongest = 100;
   std::string stem;
-  for (const char c : name) {
+  for (const char c : name.substr(0, kLongest)) {
     const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
                        c == '-' || c == '_' || c == '.';
     stem += plain ? c : '_';
@@ -132,15 +134,12 @@ int ImportCommand(int argc, char** argv) {
   const ImportedModel model = ImportMuscles(source);
 
   // every file composed and read back before the first is written
-  struct Output {
-    std::string path, text;
-  };
-  std::vector<Output> outputs;
+  std::vector<OutputText> outputs;
   std::vector<FileRole> roles;
   std::set<std::string> taken;
   std::vector<std::string> reports;
   const auto add = [&](const std::string& stem, const std::string& text, const std::string& what) {
-    Output out{directory + "/" + stem + ".yaml", text};
+    OutputText out{directory + "/" + stem + ".yaml", text};
     ReadScenario(ParseDocument(out.path, out.text), out.path);
     roles.push_back({out.path, what});
     outputs.push_back(std::move(out));
@@ -170,7 +169,8 @@ int ImportCommand(int argc, char** argv) {
     reports.push_back(report);
   }
   CheckOutputFiles({{source, "the model file"}}, roles);
-  for (const Output& out : outputs) WriteOutput(out.path, out.text);
+  // all or none: a file that cannot be written leaves every earlier one as it was
+  WriteOutputs(outputs);
 
   for (const std::string& report : reports) std::cerr << report;
   for (const std::string& line : model.unsupported) {

@@ -4,9 +4,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/io/input_file.h"
 
 namespace musclesim {
 
@@ -73,12 +74,7 @@ double CsvTable::Number(std::size_t row, int column) const {
 }
 
 CsvTable ReadCsv(const std::string& path) {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) {
-    throw InputError(path + ": is a directory; give a CSV file");
-  }
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the file for reading");
+  std::istringstream in(ReadInputFile(path, "a CSV file"));
   CsvTable table;
   table.source = path;
   std::string line;

@@ -1,9 +1,15 @@
 #include "musclesim/io/file_roles.h"
 
+#include <sys/stat.h>
+
 #include <filesystem>
+#include <string>
 #include <system_error>
+#include <unordered_map>
+#include <utility>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/io/output_file.h"
 
 namespace musclesim {
 
@@ -19,14 +25,17 @@ bool IsExistingNonRegular(const std::string& path) {
   return !error && fs::exists(status) && !fs::is_regular_file(status);
 }
 
-// Device and inode when both exist; otherwise the paths with every link and ".." resolved.
-bool SameFile(const std::string& a, const std::string& b) {
+// What makes two paths the same file: device and inode for one that exists (hard and
+// symbolic links included), else the path with every link and ".." resolved; an existing
+// file and one that does not exist are never the same. Empty where neither can be had.
+std::string FileKey(const std::string& path) {
+  struct stat status {};
+  if (::stat(path.c_str(), &status) == 0) {
+    return "inode " + std::to_string(status.st_dev) + ":" + std::to_string(status.st_ino);
+  }
   std::error_code error;
-  if (fs::exists(a, error) && fs::exists(b, error)) return fs::equivalent(a, b, error);
-  const fs::path resolved_a = fs::weakly_canonical(a, error);
-  if (error) return false;
-  const fs::path resolved_b = fs::weakly_canonical(b, error);
-  return !error && resolved_a == resolved_b;
+  const fs::path resolved = fs::weakly_canonical(path, error);
+  return error ? std::string() : "path " + resolved.string();
 }
 
 std::string Partial(const std::string& path) { return path + ".partial"; }
@@ -34,8 +43,14 @@ std::string Partial(const std::string& path) { return path + ".partial"; }
 }  // namespace
 
 void CheckOutputFiles(const std::vector<FileRole>& inputs, const std::vector<FileRole>& outputs) {
-  for (std::size_t i = 0; i < outputs.size(); ++i) {
-    const FileRole& out = outputs[i];
+  // each file's key found once, so that a command writing many files checks them in time
+  // linear in their number
+  std::vector<std::pair<std::string, const FileRole*>> input_keys;
+  for (const FileRole& in : inputs) {
+    if (!Skipped(in.path)) input_keys.push_back({FileKey(in.path), &in});
+  }
+  std::unordered_map<std::string, const FileRole*> written, partials;
+  for (const FileRole& out : outputs) {
     if (Skipped(out.path)) continue;
     const std::string said = out.name + " " + out.path + ": ";
     std::error_code error;
@@ -48,26 +63,37 @@ void CheckOutputFiles(const std::vector<FileRole>& inputs, const std::vector<Fil
                        " does not exist: create it, or write elsewhere");
     }
     if (IsExistingNonRegular(out.path)) continue;
-    for (const FileRole& in : inputs) {
-      if (Skipped(in.path)) continue;
-      if (SameFile(out.path, in.path)) {
-        throw InputError(said + "is " + in.name + " (" + in.path +
+    if (const std::string outside = LinkOutsideItsDirectory(out.path); !outside.empty()) {
+      throw InputError(said + "is a symbolic link to " + outside +
+                       ", outside its directory: musclesim writes no output through it (remove "
+                       "the link, or name another file)");
+    }
+    const std::string key = FileKey(out.path), partial = FileKey(Partial(out.path));
+    for (const auto& [input, in] : input_keys) {
+      if (input.empty()) continue;
+      if (key == input) {
+        throw InputError(said + "is " + in->name + " (" + in->path +
                          "), an input: write the output elsewhere");
       }
-      if (SameFile(Partial(out.path), in.path)) {
+      if (partial == input) {
         throw InputError(said + "is written through " + Partial(out.path) + ", which is " +
-                         in.name + " (" + in.path + "), an input: write the output elsewhere");
+                         in->name + " (" + in->path + "), an input: write the output elsewhere");
       }
     }
-    for (std::size_t j = 0; j < i; ++j) {
-      const FileRole& other = outputs[j];
-      if (Skipped(other.path) || IsExistingNonRegular(other.path)) continue;
-      if (SameFile(out.path, other.path) || SameFile(Partial(out.path), other.path) ||
-          SameFile(out.path, Partial(other.path))) {
-        throw InputError(said + other.name + " " + other.path +
-                         " names the same file: give each output its own");
-      }
+    const auto earlier = [](const std::unordered_map<std::string, const FileRole*>& files,
+                            const std::string& k) -> const FileRole* {
+      const auto found = files.find(k);
+      return k.empty() || found == files.end() ? nullptr : found->second;
+    };
+    const FileRole* same = earlier(written, key);
+    if (same == nullptr) same = earlier(written, partial);
+    if (same == nullptr) same = earlier(partials, key);
+    if (same != nullptr) {
+      throw InputError(said + same->name + " " + same->path +
+                       " names the same file: give each output its own");
     }
+    if (!key.empty()) written.emplace(key, &out);
+    if (!partial.empty()) partials.emplace(partial, &out);
   }
 }
 

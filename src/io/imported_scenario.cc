@@ -199,8 +199,9 @@ std::string FormatImportedScenario(const ImportedMuscle& muscle, const std::stri
                                    const std::string& output, const std::string& model_block) {
   const ModelParams& p = muscle.params;
   std::ostringstream out;
-  out << "# " << muscle.name << ": " << muscle.source << ", imported by `musclesim import "
-      << PrintableText(source) << "`\n";
+  // the file's path on one line: a newline in it would start a line of YAML
+  out << "# " << muscle.name << ": " << OneLineText(muscle.source)
+      << ", imported by `musclesim import " << OneLineText(source) << "`\n";
   if (muscle.tendon_strain && model_block.empty()) {
     return FormatCompliantScenario(muscle, output, out);
   }

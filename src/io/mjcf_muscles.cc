@@ -86,7 +86,10 @@ class ActuatorReader {
     return "<" + std::string(element_.Name()) + "> '" + Name() + "' " + key;
   }
   std::string Where() const { return xml::Where(path_, element_); }
-  std::string Name() const { return PrintableText(Text("name", "")); }
+  std::string Name() const { return OneLineText(Text("name", "")); }  // for messages
+  std::string CheckedName() const {
+    return xml::ImportedName(Text("name", ""), element_.Name(), Where());
+  }
   std::string Label() const {
     return std::string(element_.Name()) + " '" + Name() + "' (" + Where() + ")";
   }
@@ -174,7 +177,7 @@ std::optional<ImportedMuscle> ToMuscle(
     return std::nullopt;
   }
   ImportedMuscle muscle;
-  muscle.name = read.Name();
+  muscle.name = read.CheckedName();
   muscle.source = read.Label();
   ModelParams& p = muscle.params;
   p.family = CurveFamily::kMujoco;

@@ -5,6 +5,7 @@
 #include "io/muscle_import_readers.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/core/printable_text.h"
+#include "musclesim/io/input_file.h"
 
 namespace musclesim {
 
@@ -24,13 +25,9 @@ void ValidateImported(const ImportedMuscle& muscle,
 }
 
 ImportedModel ImportMuscles(const std::string& path) {
+  const std::string text = ReadInputFile(path, "an OpenSim (.osim) or MuJoCo (MJCF) model file");
   tinyxml2::XMLDocument document;
-  const tinyxml2::XMLError status = document.LoadFile(path.c_str());
-  if (status == tinyxml2::XML_ERROR_FILE_NOT_FOUND ||
-      status == tinyxml2::XML_ERROR_FILE_COULD_NOT_BE_OPENED ||
-      status == tinyxml2::XML_ERROR_FILE_READ_ERROR) {
-    throw InputError(PrintableText(path) + ": cannot be read");
-  }
+  const tinyxml2::XMLError status = document.Parse(text.data(), text.size());
   if (status != tinyxml2::XML_SUCCESS) {
     throw InputError(PrintableText(path) + ":" + std::to_string(document.ErrorLineNum()) +
                      ": not well-formed XML (" + PrintableText(document.ErrorStr()) + ")");

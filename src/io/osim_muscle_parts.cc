@@ -19,7 +19,7 @@ const std::vector<std::pair<std::string, std::string>> kOsimPropertyNames = {
 
 ImportedMuscle StartMuscle(const OsimPropertyReader& read, const char* class_name) {
   ImportedMuscle muscle;
-  muscle.name = read.Name();
+  muscle.name = read.CheckedName();
   muscle.source = std::string(class_name) + " (" + read.Where() + ")";
   ModelParams& p = muscle.params;
   p.family = CurveFamily::kDeGroote2016;
@@ -29,6 +29,12 @@ ImportedMuscle StartMuscle(const OsimPropertyReader& read, const char* class_nam
   d.max_contraction_velocity = read.Number("max_contraction_velocity", 10);  // l_opt per s
   p.pennation_angle = read.Number("pennation_angle_at_optimal", 0.0);
   muscle.tendon_slack_length = read.Number("tendon_slack_length", 0.2);  // m
+  if (!(muscle.tendon_slack_length >= 0.0 && kPositionRange.Contains(muscle.tendon_slack_length))) {
+    throw InputError(read.What("tendon_slack_length") + " = " +
+                     FormatNumber(muscle.tendon_slack_length) + " (" +
+                     read.WhereOf("tendon_slack_length") +
+                     "): must be >= 0 and at most 1e3 [m] (a length; 0: no tendon)");
+  }
   return muscle;
 }
 

@@ -33,7 +33,12 @@ std::string OsimPropertyReader::What(const char* property) const {
 
 std::string OsimPropertyReader::Name() const {
   const char* name = object_.Attribute("name");
-  return name == nullptr ? std::string() : PrintableText(name);
+  return name == nullptr ? std::string() : OneLineText(name);
+}
+
+std::string OsimPropertyReader::CheckedName() const {
+  const char* name = object_.Attribute("name");
+  return xml::ImportedName(name == nullptr ? "" : name, object_.Name(), Where());
 }
 
 std::string OsimPropertyReader::Where() const { return xml::Where(path_, object_); }

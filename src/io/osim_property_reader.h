@@ -28,7 +28,9 @@ class OsimPropertyReader {
   // "Millard2012EquilibriumMuscle 'name' <property>", for messages
   std::string What(const char* property) const;
   // the object's name attribute, printable
-  std::string Name() const;
+  std::string Name() const;  // for messages: control characters escaped
+  // The name as the file has it; InputError for a control character (xml::ImportedName).
+  std::string CheckedName() const;
   // "path:line" of the object, and of its property (the object's when the file leaves it out)
   std::string Where() const;
   std::string WhereOf(const std::string& property) const;

@@ -91,4 +91,15 @@ std::string TextOf(const tinyxml2::XMLElement& element) {
   return text == nullptr ? std::string() : std::string(text);
 }
 
+std::string ImportedName(const std::string& raw, const std::string& label,
+                         const std::string& where) {
+  const std::size_t at = FirstLineControlCharacter(raw);
+  if (at == std::string::npos) return raw;
+  throw InputError(label + " name '" + OneLineText(raw) + "' (" + where +
+                   "): holds the control character " + OneLineText(raw.substr(at, 1)) +
+                   " at byte " + std::to_string(at + 1) +
+                   "; a name is printable text on one line (it heads the written scenario and "
+                   "names its file)");
+}
+
 }  // namespace musclesim::xml

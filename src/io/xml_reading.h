@@ -23,6 +23,12 @@ std::vector<double> ParseNumberList(const std::string& text, std::size_t max_cou
 // "true" or "false" (OpenSim's booleans).
 bool ParseBool(const std::string& text, const std::string& what, const std::string& where);
 
+// An imported part's name, `raw` as the file holds it (`label` says whose, `where` its
+// place): it heads the written scenario's comments and names its file, so a control
+// character (a newline would start a line of YAML there) is an InputError.
+std::string ImportedName(const std::string& raw, const std::string& label,
+                         const std::string& where);
+
 // The text of the child element `name` of `parent` (OpenSim's properties), or nullptr.
 const tinyxml2::XMLElement* Child(const tinyxml2::XMLElement& parent, const char* name);
 std::string TextOf(const tinyxml2::XMLElement& element);

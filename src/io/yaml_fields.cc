@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "musclesim/core/key_path.h"
+#include "musclesim/io/input_file.h"
 #include "io/yaml_document_check.h"
 
 namespace musclesim::yaml {
@@ -164,26 +165,7 @@ void Relocate(const Source& source, const YAML::Node& block, const std::string& 
        error.value(), error.rule());
 }
 
-std::string ReadText(const std::string& path) {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) {
-    throw InputError(path + ": is a directory; give a YAML file");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the file for reading");
-  // read in blocks up to the limit: a device or a pipe may never end
-  std::string text;
-  char block[65536];
-  while (in.read(block, sizeof block) || in.gcount() > 0) {
-    text.append(block, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxFileBytes) {
-      throw InputError(path + ": larger than " + std::to_string(kMaxFileBytes >> 20) +
-                       " MiB, the most a YAML file may hold");
-    }
-  }
-  if (in.bad()) throw InputError(path + ": cannot read the file");
-  return text;
-}
+std::string ReadText(const std::string& path) { return ReadInputFile(path, "a YAML file"); }
 
 YAML::Node Parse(const std::string& path, const std::string& text) {
   try {

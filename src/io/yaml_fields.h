@@ -84,13 +84,10 @@ void ValidateAt(const Source& source, const YAML::Node& node, const std::string&
 // Parses a YAML file; a missing file, a directory, a syntax error, a key given twice in one
 // map, a key that is not a plain name or a second document is an InputError.
 YAML::Node LoadFile(const std::string& path);
-// The two halves of LoadFile: the file's text (at most kMaxFileBytes), and that text parsed
+// The two halves of LoadFile: the file's text (ReadInputFile: a regular file of at most
+// kMaxInputBytes), and that text parsed
 // and checked as LoadFile says (`path` for messages).
 std::string ReadText(const std::string& path);
 YAML::Node Parse(const std::string& path, const std::string& text);
-
-// The largest YAML file read [bytes]: far above any scenario (a table of 5 million points, the
-// most a waveform may have, is about 150 MiB), and it stops a device such as /dev/zero.
-inline constexpr std::size_t kMaxFileBytes = std::size_t{256} << 20;
 
 }  // namespace musclesim::yaml

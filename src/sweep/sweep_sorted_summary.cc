@@ -50,7 +50,7 @@ class MergedOutput {
       return;
     }
     written_ = in_place ? path : path + ".tmp." + std::to_string(::getpid());
-    file_ = std::fopen(written_.c_str(), "wb");
+    file_ = in_place ? std::fopen(written_.c_str(), "wb") : CreateFreshFile(written_);
     if (file_ == nullptr) throw IoError(path, "cannot write");
     owned_ = true;
   }

@@ -141,13 +141,13 @@ TEST(IdentifyScenario, TheRunnerSetsValuesThroughHandlesOnCopies) {
   // the runner's scenario is its own copy: runs at other values leave it as it was
   const Scenario wrong = Concentric(90.0, 1.2);
   const SensitivityRunner run = ScenarioSensitivityRunner(wrong);
-  const SensitivityTable moved = run({"model.f_iso"}, {100.0}, {0.1, 0.2});
-  const SensitivityTable as_is = run({"model.f_iso"}, {}, {0.1, 0.2});
+  const SensitivityTable moved = run({"model.f_iso"}, {100.0}, {0.1, 0.2}, {});
+  const SensitivityTable as_is = run({"model.f_iso"}, {}, {0.1, 0.2}, {});
   EXPECT_EQ(moved.parameter_values, std::vector<double>{100.0});
   EXPECT_EQ(as_is.parameter_values, std::vector<double>{90.0});
   EXPECT_EQ(moved.times, (std::vector<double>{0.1, 0.2}));
   // a value a handle refuses is its ParameterError
-  EXPECT_THROW(run({"model.f_iso"}, {-5.0}, {}), ParameterError);
+  EXPECT_THROW(run({"model.f_iso"}, {-5.0}, {}, {}), ParameterError);
 }
 
 }  // namespace

@@ -19,7 +19,7 @@ namespace {
 using ::testing::HasSubstr;
 
 constexpr double kStiffness = 100.0, kMass = 1.0, kDamping = 0.1;  // N/m, kg, N s/m
-constexpr double kAmplitude = 0.1;                                   // [m]
+constexpr double kAmplitude = 0.1;                                 // [m]
 
 SolverOptions Tight() {
   SolverOptions options;
@@ -52,7 +52,8 @@ NetworkSystem ThroughThePivot(int dimensions, const Coordinates& direction) {
 // |x| = level: x = A e^(-zeta w t) (cos(wd t) + zeta / sqrt(1 - zeta^2) sin(wd t)), solved by
 // bisection on its first quarter period.
 double FirstReach(double level) {
-  const double w = std::sqrt(kStiffness / kMass), zeta = kDamping / (2.0 * std::sqrt(kStiffness * kMass));
+  const double w = std::sqrt(kStiffness / kMass),
+               zeta = kDamping / (2.0 * std::sqrt(kStiffness * kMass));
   const double wd = w * std::sqrt(1.0 - zeta * zeta);
   const auto x = [&](double t) {
     return kAmplitude * std::exp(-zeta * w * t) *
@@ -88,12 +89,12 @@ TEST(SegmentLimit, ABobPassingItsPivotCloseByRunsToTheEnd) {
   // the same swing with 1 mm/s of sideways speed: a spring of rest length 0 in the plane is
   // linear (F = -k r), so the bob runs on the ellipse (A cos w t, (v/w) sin w t) and passes
   // the pivot at v/w = 1e-4 m, far above the level: its dips inside steps are no crossing
-  NetworkSystem system({Node::Fixed("pivot", Coordinates{}),
-                        Node::Free("bob", kMass, Coordinates{kAmplitude, 0.0, 0.0},
-                                   Coordinates{0.0, 1e-3, 0.0})},
-                       {Element::Spring("spring", "pivot", "bob", kStiffness, 0.0),
-                        Element::Damper("damper", "pivot", "bob", kDamping)},
-                       {}, {}, Space{2, {}});
+  NetworkSystem system(
+      {Node::Fixed("pivot", Coordinates{}),
+       Node::Free("bob", kMass, Coordinates{kAmplitude, 0.0, 0.0}, Coordinates{0.0, 1e-3, 0.0})},
+      {Element::Spring("spring", "pivot", "bob", kStiffness, 0.0),
+       Element::Damper("damper", "pivot", "bob", kDamping)},
+      {}, {}, Space{2, {}});
   const NetworkRunResult run = RunFor(system, 1.0);
   EXPECT_EQ(run.stats.status, RunStatus::kCompleted) << run.stats.message;
   EXPECT_EQ(run.stats.final_time, 1.0);
@@ -106,9 +107,9 @@ TEST(SegmentLimit, ANodeRunningIntoAFixedViaPointEndsTheRunThere) {
   // reaches 1e-6 m at w t = acos(1e-6 / 0.05)
   Element spring = Element::Spring("spring", "pivot", "bob", kStiffness, 0.05);
   spring.via = {ViaPoint::Fixed({0.05, 0.0, 0.0})};
-  const NetworkSystem system({Node::Fixed("pivot", Coordinates{}),
-                              Node::Free("bob", kMass, Coordinates{0.1, 0.0, 0.0})},
-                             {spring}, {}, {}, Space{2, {}});
+  const NetworkSystem system(
+      {Node::Fixed("pivot", Coordinates{}), Node::Free("bob", kMass, Coordinates{0.1, 0.0, 0.0})},
+      {spring}, {}, {}, Space{2, {}});
   const NetworkRunResult run = RunFor(system, 1.0);
   EXPECT_EQ(run.stats.status, RunStatus::kLimit) << run.stats.message;
   EXPECT_THAT(run.stats.message, HasSubstr("segment 1 of spring's path shortened to 1e-06 m"));

@@ -17,4 +17,9 @@ std::size_t FirstControlCharacter(std::string_view text);
 // bytes), the rest unchanged.
 std::string PrintableText(std::string_view text);
 
+// The same with tab, newline and carriage return counted as controls too: for text that must
+// stay on one line (a comment in a written file, a name).
+std::size_t FirstLineControlCharacter(std::string_view text);
+std::string OneLineText(std::string_view text);
+
 }  // namespace musclesim
