@@ -112,6 +112,8 @@ void BindOptimize(py::module_& m) {
         std::copy(result.states.begin(), result.states.end(), states.mutable_data());
         out["states"] = states;
         out["constraint_violation"] = result.constraint_violation;
+        out["largest_violation"] = result.largest_violation;
+        out["infeasible"] = result.infeasible;
         out["iterations"] = result.iterations;
         out["times"] =
             py::array_t<double>(static_cast<py::ssize_t>(result.times.size()), result.times.data());

@@ -39,6 +39,10 @@ directory, named after the problem file):
   --quiet     no progress or report on standard error
 SIGINT or SIGTERM stop IPOPT after its current iteration; the files are written with the
 point reached.
+An infeasible problem (final values or bounds the controls cannot meet) ends as IPOPT reports
+it, or when the constraint violation stalls (no tenth less over 30 iterations): status
+infeasibility_stalled, the constraint violated most named. optimizer.max_seconds bounds the
+solve's wall time (status maximum_seconds_exceeded).
 Exit codes: 0 solved (IPOPT's tolerance met), 3 not solved (IPOPT's status in the summary;
 the files are written with the last point), 130 stopped by a signal (files written), 2 invalid
 input, 1 anything else.
@@ -90,8 +94,12 @@ int OptimizeCommand(int argc, char** argv) {
   if (!quiet) {
     std::cerr << "musclesim optimize: " << result.status << " after " << result.iterations
               << " iterations, objective " << result.objective << ", constraint violation "
-              << result.constraint_violation << "; re-simulated (deviation "
-              << result.resimulation_deviation << "): ";
+              << result.constraint_violation
+              << (result.solved || result.largest_violation.empty()
+                      ? ""
+                      : " (" + std::string(result.infeasible ? "infeasible: " : "largest: ") +
+                            result.largest_violation + ")")
+              << "; re-simulated (deviation " << result.resimulation_deviation << "): ";
     if (run.stats.status != RunStatus::kCompleted) {
       std::cerr << "the run ended early, at t = " << run.stats.final_time
                 << " s (its CSV stops there): " << run.stats.message << " ";

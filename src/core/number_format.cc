@@ -1,6 +1,7 @@
 #include "musclesim/core/number_format.h"
 
 #include <charconv>
+#include <cmath>
 
 namespace musclesim {
 
@@ -21,6 +22,12 @@ std::string ToChars(double value, Format... format) {
 std::string FormatNumber(double value) { return ToChars(value); }
 
 std::string FormatFull(double value) { return ToChars(value, std::chars_format::general, 17); }
+
+std::string FormatSignificant(double value, int digits) {
+  if (std::isnan(value)) return "n/a";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  return ToChars(value, std::chars_format::general, digits);
+}
 
 std::string CommaSeparated(const std::vector<std::string>& names) {
   std::string text;

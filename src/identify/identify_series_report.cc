@@ -14,13 +14,7 @@ namespace musclesim {
 namespace {
 
 // A number to `digits` significant digits, for tables and sentences.
-std::string Short(double value, int digits = 4) {
-  if (std::isnan(value)) return "n/a";
-  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  char text[40];
-  std::snprintf(text, sizeof text, "%.*g", digits, value);
-  return text;
-}
+std::string Short(double value, int digits = 4) { return FormatSignificant(value, digits); }
 
 std::string Error(double standard_error) {
   return std::isfinite(standard_error) ? Short(standard_error, 2) : "not determined";

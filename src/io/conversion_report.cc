@@ -10,11 +10,7 @@ namespace musclesim {
 namespace {
 
 // Three significant digits: a departure is a measure, not a value to read back.
-std::string Short(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", x);
-  return text;
-}
+std::string Short(double x) { return FormatSignificant(x, 3); }
 
 // An interval's end: six significant digits (a property's value, or one derived from it).
 std::string Bound(double x) {

@@ -46,8 +46,8 @@ std::string ReadInputFile(const std::string& path, const std::string& kind, std:
   }
   if (S_ISDIR(status.st_mode)) throw InputError(shown + ": is a directory; give " + kind);
   if (!S_ISREG(status.st_mode)) {
-    throw InputError(shown + ": is " + WhatItIs(status.st_mode) +
-                     ", not a regular file; give " + kind);
+    throw InputError(shown + ": is " + WhatItIs(status.st_mode) + ", not a regular file; give " +
+                     kind);
   }
   if (static_cast<std::size_t>(status.st_size) > max_bytes) {
     throw InputError(shown + ": holds " + Mebibytes(static_cast<std::size_t>(status.st_size)) +

@@ -10,6 +10,7 @@
 #include <random>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/core/number_format.h"
 #include "musclesim/optimize/multiple_shooting.h"
 #include "musclesim/solver/simulation.h"
 #include "optimize/shooting_parts.h"
@@ -39,14 +40,43 @@ std::string StatusName(Ipopt::SolverReturn status) {
   }
 }
 
+// Why the program stopped IPOPT itself, when it did.
+enum class OwnStop { kNone, kStalled, kOutOfTime };
+
+// The stall rule of optimal_control.h: over the last kStallIterations iterations the
+// violation stayed above kStallViolation and within a factor 1 - kStallReduction of its
+// largest there, and the objective moved by less than kStallReduction of that too (a
+// violation traded for the objective moves the objective).
+class StallWatch {
+ public:
+  bool Stalled(double objective, double violation) {
+    objectives_.push_back(objective);
+    violations_.push_back(violation);
+    const std::size_t n = violations_.size();
+    if (n < static_cast<std::size_t>(kStallIterations)) return false;
+    const auto [least, most] =
+        std::minmax_element(violations_.end() - kStallIterations, violations_.end());
+    const auto [lowest, highest] =
+        std::minmax_element(objectives_.end() - kStallIterations, objectives_.end());
+    const double scale = std::max(std::abs(*lowest), std::abs(*highest));
+    return *least > kStallViolation && *least >= (1.0 - kStallReduction) * *most &&
+           *highest - *lowest <= 1e-3 * kStallReduction * scale;
+  }
+
+ private:
+  std::vector<double> objectives_, violations_;
+};
+
 class ShootingProgram final : public Ipopt::TNLP {
  public:
   ShootingProgram(MultipleShooting& shooting, OptimalControlResult& result,
-                  std::function<bool(const OptimizeProgress&)> progress)
+                  const OptimizeOptions& options)
       : shooting_(shooting),
         result_(result),
-        progress_(std::move(progress)),
-        start_(shooting.StartingPoint()) {}
+        progress_(options.progress),
+        max_seconds_(options.max_seconds),
+        start_(shooting.StartingPoint()),
+        started_(std::chrono::steady_clock::now()) {}
 
   bool get_nlp_info(Index& n, Index& m, Index& nnz_jac_g, Index& nnz_h_lag,
                     IndexStyleEnum& index_style) override {
@@ -89,24 +119,52 @@ class ShootingProgram final : public Ipopt::TNLP {
                              Number, Number, Number, Index, const Ipopt::IpoptData*,
                              Ipopt::IpoptCalculatedQuantities*) override {
     result_.dual_infeasibility = dual_infeasibility;
+    if (stall_.Stalled(objective, infeasibility)) {
+      stop_ = OwnStop::kStalled;
+      return false;
+    }
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+    if (elapsed > max_seconds_) {
+      stop_ = OwnStop::kOutOfTime;
+      return false;
+    }
     if (!progress_) return true;
     return progress_({iteration, objective, infeasibility, dual_infeasibility});
   }
   void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number*,
                          const Number*, Index m, const Number* g, const Number*, Number objective,
                          const Ipopt::IpoptData* data, Ipopt::IpoptCalculatedQuantities*) override {
-    result_.status = StatusName(status);
+    result_.status = stop_ == OwnStop::kStalled     ? "infeasibility_stalled"
+                     : stop_ == OwnStop::kOutOfTime ? "maximum_seconds_exceeded"
+                                                    : StatusName(status);
     result_.solved = status == Ipopt::SUCCESS;
+    result_.infeasible = stop_ == OwnStop::kStalled || status == Ipopt::LOCAL_INFEASIBILITY ||
+                         status == Ipopt::RESTORATION_FAILURE;
     result_.objective = objective;
     result_.iterations = data != nullptr ? data->iter_count() : 0;
     std::vector<double> lower(static_cast<std::size_t>(m)), upper(static_cast<std::size_t>(m));
     shooting_.ConstraintBounds(lower.data(), upper.data());
     double violation = 0.0;
+    Index worst = -1;
     for (Index r = 0; r < m; ++r) {
       const auto i = static_cast<std::size_t>(r);
-      violation = std::max({violation, lower[i] - g[r], g[r] - upper[i]});
+      const double by = std::max(lower[i] - g[r], g[r] - upper[i]);
+      if (by > violation) {
+        violation = by;
+        worst = r;
+      }
     }
     result_.constraint_violation = violation;
+    if (worst >= 0) {
+      const auto i = static_cast<std::size_t>(worst);
+      const auto shown = [](double v) { return FormatSignificant(v, 4); };
+      result_.largest_violation =
+          shooting_.ConstraintName(worst, x) + ": " + shown(g[worst]) + " where " +
+          (lower[i] == upper[i] ? shown(lower[i])
+                                : "[" + shown(lower[i]) + ", " + shown(upper[i]) + "]") +
+          " is asked";
+    }
     solution_.assign(x, x + n);
   }
   const std::vector<double>& solution() const { return solution_; }
@@ -115,7 +173,11 @@ class ShootingProgram final : public Ipopt::TNLP {
   MultipleShooting& shooting_;
   OptimalControlResult& result_;
   std::function<bool(const OptimizeProgress&)> progress_;
+  double max_seconds_;
   std::vector<double> start_;
+  std::chrono::steady_clock::time_point started_;
+  StallWatch stall_;
+  OwnStop stop_ = OwnStop::kNone;
   std::vector<double> solution_;
 };
 
@@ -197,8 +259,7 @@ OptimalControlResult SolveOptimalControl(const OptimalControlProblem& problem,
   MultipleShooting shooting(problem, options.derivatives);
   OptimalControlResult result;
   result.status = "not_run";
-  Ipopt::SmartPtr<ShootingProgram> program =
-      new ShootingProgram(shooting, result, options.progress);
+  Ipopt::SmartPtr<ShootingProgram> program = new ShootingProgram(shooting, result, options);
   Ipopt::SmartPtr<Ipopt::IpoptApplication> ipopt = IpoptApplicationFactory();
   ipopt->Options()->SetNumericValue("tol", options.tolerance);
   ipopt->Options()->SetIntegerValue("max_iter", options.max_iterations);

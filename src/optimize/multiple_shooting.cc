@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/core/number_format.h"
 #include "musclesim/dynamics/parameter_derivative.h"
 #include "musclesim/solver/sensitivity.h"
 #include "musclesim/solver/simulation.h"
@@ -473,6 +474,28 @@ void MultipleShooting::ConstraintBounds(double* lower, double* upper) const {
       upper[row++] = bound.upper;
     }
   }
+}
+
+std::string MultipleShooting::ConstraintName(int row, const double* x) const {
+  const Impl& p = *impl_;
+  const std::vector<double> times = p.Grid(p.FinalTime(x));
+  const auto at = [&](int i) {
+    return " at t = " + FormatNumber(times[static_cast<std::size_t>(i)]) + " s";
+  };
+  const int continuity = (p.intervals - 1) * p.n;
+  if (row < continuity) {
+    return "continuity of state " + std::to_string(row % p.n) + at(row / p.n + 1);
+  }
+  row -= continuity;
+  const int finals = static_cast<int>(p.problem.final_values.size());
+  if (row < finals) {
+    return "final_values[" + std::to_string(row) + "] " +
+           p.problem.final_values[static_cast<std::size_t>(row)].column;
+  }
+  row -= finals;
+  const int bound = row / p.intervals;
+  return "path_bounds[" + std::to_string(bound) + "] " +
+         p.problem.path_bounds[static_cast<std::size_t>(bound)].column + at(row % p.intervals + 1);
 }
 
 std::vector<double> MultipleShooting::StartingPoint() {

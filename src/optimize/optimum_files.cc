@@ -149,6 +149,8 @@ std::string OptimumSummaryJson(const ProblemFile& file, const OptimalControlResu
   json += "  \"dual_infeasibility\": " + JsonNumber(result.dual_infeasibility) + ",\n";
   json += "  \"gradient_check\": " + JsonNumber(result.gradient_check) + ",\n";
   json += "  \"constraint_violation\": " + JsonNumber(result.constraint_violation) + ",\n";
+  json += "  \"largest_violation\": " + Quoted(result.largest_violation) + ",\n";
+  json += std::string("  \"infeasible\": ") + (result.infeasible ? "true" : "false") + ",\n";
   json += "  \"iterations\": " + std::to_string(result.iterations) + ",\n";
   json += "  \"intervals\": " + std::to_string(file.problem.intervals) + ",\n";
   json += "  \"wall_seconds\": " + JsonNumber(wall_seconds) + ",\n";

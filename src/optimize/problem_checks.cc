@@ -5,6 +5,7 @@
 #include <string>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/core/memory.h"
 #include "musclesim/core/number_format.h"
 #include "scenario/sensitivity_columns.h"
 #include "scenario/sensitivity_derivatives.h"
@@ -141,6 +142,13 @@ void CheckTracking(const OptimalControlProblem& problem, ColumnResolver& columns
     const std::vector<TablePoint>& r = term.reference;
     const std::string at = Entry("tracking", k, "reference");
     if (r.size() < 2) throw InputError(at + ": needs at least 2 points (t, value)");
+    if (r.size() > kMaxReferencePoints) {
+      throw InputError(at + ": " + std::to_string(r.size()) + " points, more than the " +
+                       std::to_string(kMaxReferencePoints) +
+                       " a reference may hold: each point cuts the cost's quadrature (5 samples "
+                       "of the trajectory and its sensitivities), so every iteration grows with "
+                       "them; resample the record");
+    }
     for (std::size_t i = 0; i < r.size(); ++i) {
       if (!std::isfinite(r[i].t) || !std::isfinite(r[i].value) || (i > 0 && r[i].t <= r[i - 1].t)) {
         throw InputError(at + ", point " + std::to_string(i) + " (t = " + FormatNumber(r[i].t) +
@@ -153,6 +161,32 @@ void CheckTracking(const OptimalControlProblem& problem, ColumnResolver& columns
                        Range(problem.scenario.t_start, problem.scenario.t_end) + " s");
     }
   }
+}
+
+// The program's memory, refused before it is allocated when the machine cannot hold it: per
+// interval its plan, its state's and columns' sensitivities (n + K values each, K = n + 2
+// controls + parameters) kept for the constraint Jacobian and IPOPT's copies of its blocks,
+// and a tracked column's samples at every quadrature point (measured: 4 KiB per interval for
+// the antagonist pair's 2 states and 2 controls, which this counts as 6 KiB).
+void RequireRoomForGrid(const OptimalControlProblem& problem, const NetworkSystem& system,
+                        const ProblemIndex& index) {
+  const double n = system.state_size();
+  const double k = n + 2.0 * static_cast<double>(problem.controls.size()) +
+                   static_cast<double>(problem.parameters.size());
+  double samples = 0.0;  // quadrature points over the whole span, per tracked column
+  for (const TrackingTerm& term : problem.tracking) {
+    samples += 5.0 * (static_cast<double>(term.reference.size()) + problem.intervals);
+  }
+  const double columns = static_cast<double>(index.columns.size());
+  const double bytes =
+      problem.intervals * (4096.0 + 64.0 * (n + k) * (n + k)) + 8.0 * samples * columns * (k + 1.0);
+  const double allowed = AllocatableBytes();
+  if (bytes <= allowed) return;
+  throw InputError("intervals = " + std::to_string(problem.intervals) +
+                   ": the program needs about " + MebibytesText(bytes) + " for its " +
+                   std::to_string(problem.intervals) + " intervals of " + FormatNumber(n) +
+                   " states, more than the " + MebibytesText(allowed) +
+                   " this process may allocate: use fewer intervals");
 }
 
 void CheckParameters(const OptimalControlProblem& problem, ProblemIndex& index) {
@@ -258,6 +292,7 @@ ProblemIndex CheckProblem(const OptimalControlProblem& problem) {
     }
   }
   CheckParameters(problem, index);
+  RequireRoomForGrid(problem, system, index);
   return index;
 }
 

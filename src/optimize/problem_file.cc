@@ -2,6 +2,7 @@
 #include "musclesim/optimize/problem_file.h"
 
 #include <filesystem>
+#include <limits>
 
 #include "io/yaml_fields.h"
 #include "musclesim/core/errors.h"
@@ -322,7 +323,8 @@ ProblemFile LoadProblemFile(const std::string& path) {
   }
   if (const YAML::Node time = root["final_time"]) problem.final_time = ReadFinalTime(src, time);
   if (const YAML::Node optimizer = root["optimizer"]) {
-    yaml::RequireMap(src, optimizer, "optimizer", {"tolerance", "max_iterations", "derivatives"});
+    yaml::RequireMap(src, optimizer, "optimizer",
+                     {"tolerance", "max_iterations", "max_seconds", "derivatives"});
     if (optimizer["derivatives"]) {
       const std::string method =
           yaml::ReadString(src, optimizer["derivatives"], "optimizer.derivatives");
@@ -344,6 +346,11 @@ ProblemFile LoadProblemFile(const std::string& path) {
       }
       file.options.max_iterations = n;
     }
+    const InputRange seconds{0.0, 1e7, "s", "the solve's wall time, checked after each iteration",
+                             true};
+    file.options.max_seconds =
+        yaml::ReadOptionalNumberIn(src, optimizer, "optimizer", "max_seconds", seconds,
+                                   std::numeric_limits<double>::infinity());
   }
   const std::string stem = std::filesystem::path(path).stem().string();
   file.outputs = {stem + "_optimum.yaml", stem + "_optimum.json", stem + "_optimum.csv"};

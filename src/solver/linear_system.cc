@@ -16,6 +16,7 @@
 #include <string>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/core/memory.h"
 #include "musclesim/core/number_format.h"
 #include "small_linear_solver.h"
 
@@ -30,17 +31,6 @@ double MatrixBytes(LinearSolverKind kind, const JacobianPattern& pattern) {
           ? pattern.entries() * (sizeof(double) + sizeof(sunindextype)) + n * sizeof(sunindextype)
           : n * n * sizeof(double);
   return 2.0 * per_matrix;
-}
-
-double AllocatableBytes() {
-  double bytes = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * ::sysconf(_SC_PAGE_SIZE);
-  for (int resource : {RLIMIT_AS, RLIMIT_DATA}) {
-    rlimit limit{};
-    if (::getrlimit(resource, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
-      bytes = std::min(bytes, static_cast<double>(limit.rlim_cur));
-    }
-  }
-  return bytes;
 }
 
 void RequireRoomFor(LinearSolverKind kind, const JacobianPattern& pattern, double allowed) {

@@ -18,10 +18,8 @@
 namespace musclesim {
 
 // Bytes of the matrices a solver of `kind` keeps for `pattern` (the Newton matrix and CVODE's
-// saved Jacobian), and what this process may allocate (the machine's memory, or less under a
-// limit such as ulimit -v).
+// saved Jacobian); what the process may allocate is core/memory.h's AllocatableBytes.
 double MatrixBytes(LinearSolverKind kind, const JacobianPattern& pattern);
-double AllocatableBytes();
 // Throws ParameterError("linear_solver") naming the size needed when the matrices of `kind`
 // exceed `allowed` bytes: SUNDIALS does not check every allocation of a matrix, so one too
 // large must be refused before it is asked for, or it ends in a signal rather than an error.

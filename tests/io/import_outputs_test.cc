@@ -77,8 +77,7 @@ TEST(ImportOutputs, AModelPathWithANewlineStaysInItsComment) {
   const std::string dir = testing::FreshDirectory("import_");
   const std::string model = dir + "/odd\nname.osim";
   std::ofstream(model) << Osim(Muscle("muscle"));
-  const testing::CliOutcome out =
-      testing::RunMusclesim("import '" + model + "' -o " + dir);
+  const testing::CliOutcome out = testing::RunMusclesim("import '" + model + "' -o " + dir);
   ASSERT_EQ(out.exit_code, 0) << out.err;
   const std::string text = testing::ReadText(dir + "/muscle.yaml");
   EXPECT_THAT(text, HasSubstr("odd\\x0Aname.osim"));
@@ -92,7 +91,8 @@ TEST(ImportOutputs, ANegativeTendonSlackLengthIsRefusedAtItsLine) {
   std::ofstream(model) << Osim(Muscle("neg", "<tendon_slack_length>-0.05</tendon_slack_length>"));
   const testing::CliOutcome out = testing::RunMusclesim("import " + model + " -o " + dir);
   EXPECT_EQ(out.exit_code, 2) << out.err;
-  EXPECT_THAT(out.err, HasSubstr("'neg' <tendon_slack_length> = -0.05 (" + model + ":4): must be "
+  EXPECT_THAT(out.err, HasSubstr("'neg' <tendon_slack_length> = -0.05 (" + model +
+                                 ":4): must be "
                                  ">= 0"));
   EXPECT_THAT(Listing(dir), ElementsAre("model.osim"));
 }
@@ -110,7 +110,8 @@ TEST(ImportOutputs, WhatIsNoModelFileIsRefusedAndNothingIsWritten) {
        {dir + "/scenario.yaml", dir + "/other.xml", dir + "/empty.xml", dir + "/pipe.osim",
         dir + "/folder.osim", std::string("/dev/zero"), dir + "/missing.osim"}) {
     // a FIFO is refused without waiting for a writer, a device without reading it
-    const testing::CliOutcome out = testing::RunMusclesim("import " + input + " -o " + dir + "/out");
+    const testing::CliOutcome out =
+        testing::RunMusclesim("import " + input + " -o " + dir + "/out");
     EXPECT_EQ(out.exit_code, 2) << input << ": " << out.err;
     EXPECT_THAT(Listing(dir + "/out"), IsEmpty()) << input;
     EXPECT_EQ(Listing(dir), before) << input;
@@ -162,8 +163,9 @@ TEST(ImportOutputs, AnImportThatFailsWritingLeavesTheEarlierFilesAsTheyWere) {
   const std::string second = testing::ReadText(dir + "/second.yaml");
   // again, the first muscle changed and the second compliant, files limited to 2 KiB: the
   // first's new text fits, the second's does not
-  std::string edited = Osim(Muscle("first", "<max_contraction_velocity>5</max_contraction_velocity>") +
-                            Muscle("second", compliant));
+  std::string edited =
+      Osim(Muscle("first", "<max_contraction_velocity>5</max_contraction_velocity>") +
+           Muscle("second", compliant));
   const std::string rigid = "<ignore_tendon_compliance>true</ignore_tendon_compliance>";
   const std::size_t last = edited.rfind(rigid);
   edited.erase(last, rigid.size());

@@ -16,6 +16,10 @@ std::string FormatNumber(double value);
 // must not depend on how short a value happens to be.
 std::string FormatFull(double value);
 
+// `value` to `digits` significant digits ("0.14", "2.4e-05", "inf", "n/a" for NaN): for
+// text a person reads (reports, summaries, messages about results), never for text read back.
+std::string FormatSignificant(double value, int digits);
+
 // "a, b, c": names listed in a message, in their order.
 std::string CommaSeparated(const std::vector<std::string>& names);
 

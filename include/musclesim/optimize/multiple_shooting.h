@@ -29,6 +29,9 @@ class MultipleShooting {
   // Bounds of the variables and the constraints (-/+ infinity as -/+1e20).
   void VariableBounds(double* lower, double* upper) const;
   void ConstraintBounds(double* lower, double* upper) const;
+  // Constraint `row` named for messages: "continuity of state 1 at t = 0.05 s",
+  // "final_values[0] load.position", "path_bounds[1] flexor.tension at t = 0.2 s".
+  std::string ConstraintName(int row, const double* x) const;
   // The scenario's own activations at the grid's points and its parameters (clamped to the
   // bounds), and the states a single run with them passes through.
   std::vector<double> StartingPoint();

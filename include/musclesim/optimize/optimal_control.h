@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -105,10 +106,27 @@ struct OptimizeOptions {
   int max_iterations = 500;  // IPOPT's max_iter
   int print_level = 0;       // IPOPT's print_level, 0 (silent) to 12
   ShootingDerivatives derivatives = ShootingDerivatives::kSensitivities;
+  // [s] of wall time the solve may take, checked after each iteration (status
+  // maximum_seconds_exceeded, the point reached kept); infinite: no limit.
+  double max_seconds = std::numeric_limits<double>::infinity();
   // Called after each iteration; returning false stops IPOPT there (status
   // user_requested_stop, the point reached kept).
   std::function<bool(const OptimizeProgress&)> progress;
 };
+
+// The most points a tracking reference may hold: each cuts the cost's quadrature, so an
+// iteration's work grows with them (100,000: about 2 s per iteration on one core).
+inline constexpr std::size_t kMaxReferencePoints = 100000;
+
+// An infeasible problem (a move the muscles cannot make) is seldom declared so by IPOPT's
+// limited-memory iterations: they hover at the least violation the controls can reach.
+// When over kStallIterations iterations the constraint violation stays above
+// kStallViolation and within kStallReduction of its largest there, and the objective moves
+// by less than 1e-3 kStallReduction of its size, the solve stops with status
+// infeasibility_stalled.
+inline constexpr int kStallIterations = 30;
+inline constexpr double kStallReduction = 0.1;   // a tenth of its value
+inline constexpr double kStallViolation = 1e-6;  // [the constraints' units]
 
 // The objective's terms at the optimum, each with its weight in it.
 struct ObjectiveTerms {
@@ -121,7 +139,13 @@ struct OptimalControlResult {
   double objective = 0.0;             // the objective at the point returned
   ObjectiveTerms terms;               // its parts
   double constraint_violation = 0.0;  // its largest constraint violation
-  double dual_infeasibility = 0.0;    // IPOPT's, unscaled, at the last iteration
+  // That constraint, named ("final_values[0] load.position (at t = 1 s): 0.14 where [0.3,
+  // 0.3] is asked"); empty when no constraint is violated.
+  std::string largest_violation;
+  // IPOPT declared the problem locally infeasible (infeasible_problem_detected), its
+  // restoration failed, or the violation stalled (infeasibility_stalled).
+  bool infeasible = false;
+  double dual_infeasibility = 0.0;  // IPOPT's, unscaled, at the last iteration
   int iterations = 0;
   double wall_seconds = 0.0;         // [s] of the solve, the checks after it included
   double integration_seconds = 0.0;  // [s] of it spent integrating the intervals
