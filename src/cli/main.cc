@@ -2,6 +2,7 @@
 // (0 success, 1 other failure, 2 invalid input, 3 solver failure).
 #include <cstring>
 #include <iostream>
+#include <new>
 #include <string>
 
 #include "cli/arguments.h"
@@ -72,6 +73,11 @@ int main(int argc, char** argv) {
   } catch (const ParameterError& e) {
     std::cerr << "musclesim " << verb << ": " << e.what() << "\n";
     return kExitInvalidInput;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "musclesim " << verb
+              << ": error: out of memory: the input is larger than this process may allocate "
+                 "(the machine's memory, or a limit such as ulimit -v)\n";
+    return kExitFailure;
   } catch (const std::exception& e) {
     std::cerr << "musclesim " << verb << ": error: " << PrintableText(e.what()) << "\n";
     return kExitFailure;

@@ -34,11 +34,26 @@ ColouredDifferenceQuotient::ColouredDifferenceQuotient(const JacobianPattern& pa
   }
 }
 
-double ColouredDifferenceQuotient::Increment(double y, double weight) {
-  // CVODE's own choice for its dense quotient: sqrt(unit roundoff) relative to the value, or
-  // to the size the error test considers negligible (1 / weight) when the value is smaller
+double ColouredDifferenceQuotient::MinimumIncrement(const double* rate_at_y, const double* weights,
+                                                    double step) const {
+  double sum = 0.0;
+  for (int j = 0; j < pattern_.size; ++j) {
+    const double scaled = rate_at_y[j] * weights[j];
+    sum += scaled * scaled;
+  }
+  const double norm = pattern_.size > 0 ? std::sqrt(sum / pattern_.size) : 0.0;
+  constexpr double kMultiple = 1000.0;  // CVODE's MIN_INC_MULT
+  return norm != 0.0 ? kMultiple * std::abs(step) * std::numeric_limits<double>::epsilon() *
+                           pattern_.size * norm
+                     : 1.0;
+}
+
+double ColouredDifferenceQuotient::Increment(double y, double weight, double minimum) {
+  // CVODE's own choice for its dense and band quotients: sqrt(unit roundoff) relative to the
+  // value, and at least `minimum` relative to the size the error test considers negligible
+  // (1 / weight), so that a state near 0 (a velocity at rest) is not stepped by a few ulps
   static const double root_roundoff = std::sqrt(std::numeric_limits<double>::epsilon());
-  const double increment = root_roundoff * std::max(std::abs(y), 1.0 / weight);
+  const double increment = std::max(root_roundoff * std::abs(y), minimum / weight);
   // y + increment - y exactly, so the quotient divides by the step actually taken
   return (y + increment) - y;
 }

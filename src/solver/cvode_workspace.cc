@@ -50,9 +50,11 @@ int SparseDifferenceQuotientJacobian(sunrealtype t, N_Vector y, N_Vector rate, S
   const double at = cb->InputTime(t);
   const ColouredDifferenceQuotient& quotient = cb->linear->quotient();
   std::vector<double>& values = cb->linear->values();
+  double step = 0.0;
+  if (CVodeGetCurrentStep(cb->cvode, &step) < 0) return -1;
   quotient.Evaluate(
       [&](const double* state, double* out) { cb->system->RightHandSide(at, state, out); },
-      N_VGetArrayPointer(perturbed), N_VGetArrayPointer(rate), N_VGetArrayPointer(weights),
+      N_VGetArrayPointer(perturbed), N_VGetArrayPointer(rate), N_VGetArrayPointer(weights), step,
       N_VGetArrayPointer(perturbed_rate), values.data());
   cb->quotient_rhs_evals += quotient.groups();
   for (double value : values) {

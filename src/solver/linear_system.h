@@ -17,12 +17,25 @@
 
 namespace musclesim {
 
+// KLU's fill-reducing ordering: AMD (0), not its default COLAMD (1).
+inline constexpr int kKluOrdering = 0;
+// The most states a dense LU serves: its cost grows as n^3 (2000 states: 2.7e9 flops per
+// factorisation, seconds each with SUNDIALS' own LU; a 4900-state lattice took 10 minutes
+// for 35 steps where KLU took 2 s).
+inline constexpr int kDenseMaxStates = 2000;
+
 // Bytes of the matrices a solver of `kind` keeps for `pattern` (the Newton matrix and CVODE's
 // saved Jacobian); what the process may allocate is core/memory.h's AllocatableBytes.
 double MatrixBytes(LinearSolverKind kind, const JacobianPattern& pattern);
-// Throws ParameterError("linear_solver") naming the size needed when the matrices of `kind`
-// exceed `allowed` bytes: SUNDIALS does not check every allocation of a matrix, so one too
-// large must be refused before it is asked for, or it ends in a signal rather than an error.
+// The entries of KLU's L and U for the Newton matrix of `pattern` as its symbolic analysis
+// estimates them (an upper bound: about twice those factored on planar lattices).
+double SparseFactorEntries(const JacobianPattern& pattern);
+// MatrixBytes, and for the sparse solver its LU factors (SparseFactorEntries).
+double SolverBytes(LinearSolverKind kind, const JacobianPattern& pattern);
+// Throws ParameterError("linear_solver") naming the size needed when the matrices and factors
+// of `kind` exceed `allowed` bytes (SolverBytes): SUNDIALS does not check every allocation of
+// a matrix, so one too large must be refused before it is asked for, or it ends in a signal
+// rather than an error; and for a dense LU above kDenseMaxStates, naming its cost.
 void RequireRoomFor(LinearSolverKind kind, const JacobianPattern& pattern, double allowed);
 
 class LinearSystem {

@@ -30,11 +30,14 @@ struct Outcome {
 
 // `musclesim optimize problem.yaml` in `dir`, with `limit` (a shell command such as
 // "ulimit -v 400000") before it.
-Outcome Optimize(const std::string& dir, const std::string& problem, const std::string& limit = "") {
+Outcome Optimize(const std::string& dir, const std::string& problem,
+                 const std::string& limit = "") {
   std::ofstream(dir + "/problem.yaml") << problem;
   std::filesystem::remove(dir + "/problem_optimum.json");
-  const std::string command = "cd '" + dir + "' && (" + (limit.empty() ? "" : limit + "; ") + "'" +
-                              MUSCLESIM_BINARY + "' optimize problem.yaml --quiet) 2> err.txt";
+  const std::string command =
+      "cd '" + dir + "' && (" +
+      (limit.empty() ? "" : "export OPENBLAS_NUM_THREADS=1; " + limit + "; ") + "'" +
+      MUSCLESIM_BINARY + "' optimize problem.yaml --quiet) 2> err.txt";
   const int status = std::system(command.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, testing::ReadFile(dir + "/err.txt"),
           std::filesystem::exists(dir + "/problem_optimum.json")
@@ -111,8 +114,8 @@ TEST(OptimizeBounds, MaxSecondsEndsTheSolveWithItsStatusAndTheFilesOfThePointRea
   EXPECT_EQ(out.exit_code, 3) << out.err;
   EXPECT_THAT(out.summary, HasSubstr("\"status\": \"maximum_seconds_exceeded\""));
   EXPECT_TRUE(std::filesystem::exists(dir + "/problem_optimum.yaml"));
-  const Outcome negative = Optimize(dir, Move("  - {column: load.position, value: 0.075}\n",
-                                              "{max_seconds: -1}"));
+  const Outcome negative =
+      Optimize(dir, Move("  - {column: load.position, value: 0.075}\n", "{max_seconds: -1}"));
   EXPECT_EQ(negative.exit_code, 2);
   EXPECT_THAT(negative.err, HasSubstr("optimizer.max_seconds"));
 }
@@ -121,11 +124,12 @@ TEST(OptimizeBounds, AGridTheProcessCannotHoldIsRefusedWithItsEstimate) {
   // 100,000 intervals need some 780 MiB by the estimate (435 MiB measured); under a 400 MB
   // address-space limit the problem is refused when read, before IPOPT allocates anything
   const std::string dir = PairDirectory();
-  const Outcome out = Optimize(dir, Move("  - {column: load.position, value: 0.075}\n",
-                                         "{tolerance: 1.0e-8}", 100000),
-                               "ulimit -v 400000");
+  const Outcome out = Optimize(
+      dir, Move("  - {column: load.position, value: 0.075}\n", "{tolerance: 1.0e-8}", 100000),
+      "ulimit -v 400000");
   EXPECT_EQ(out.exit_code, 2) << out.err;
-  EXPECT_THAT(out.err, HasSubstr("intervals (problem.yaml:2:12) = 100000: the program needs about"));
+  EXPECT_THAT(out.err,
+              HasSubstr("intervals (problem.yaml:2:12) = 100000: the program needs about"));
   EXPECT_THAT(out.err, HasSubstr("MiB this process may allocate: use fewer intervals"));
   EXPECT_TRUE(out.summary.empty());
 }

@@ -3,6 +3,7 @@
 // sparse solver with a coloured difference quotient (solver/coloured_difference_quotient.h)
 // whose values match the analytic Jacobian and whose runs match the in-order chain's; a
 // solver whose matrices cannot fit in memory is refused with the size it needs.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sunmatrix/sunmatrix_band.h>
 
@@ -85,7 +86,7 @@ TEST(ColouredDifferenceQuotient, MatchesTheAnalyticJacobian) {
   std::vector<double> analytic(quotient_values.size());
   ColouredDifferenceQuotient(pattern).Evaluate(
       [&](const double* state, double* out) { system.RightHandSide(0.1, state, out); }, y.data(),
-      rate.data(), weights.data(), perturbed_rate.data(), quotient_values.data());
+      rate.data(), weights.data(), 1e-3, perturbed_rate.data(), quotient_values.data());
   system.Jacobian(0.1, y.data(), analytic.data());
   double largest = 0.0;
   for (double a : analytic) largest = std::max(largest, std::abs(a));
@@ -93,6 +94,33 @@ TEST(ColouredDifferenceQuotient, MatchesTheAnalyticJacobian) {
     // a one-sided quotient of relative step 1e-8: its error is about 1e-8 of the curvature,
     // the rounding 1e-8 of the right-hand side
     EXPECT_NEAR(quotient_values[k], analytic[k], 1e-5 * largest) << "entry " << k;
+  }
+}
+
+TEST(ColouredDifferenceQuotient, MatchesTheAnalyticJacobianAtRest) {
+  // every velocity exactly 0, as a chain starts: a step relative to the value alone (or to
+  // the error test's negligible size times sqrt(uround), ~1e-20) moved nothing the right-hand
+  // side resolves, and the Jacobian's velocity columns were noise; CVODE's floor (1000 |h|
+  // uround n ||f||) keeps them
+  const NetworkExperiment chain = ShuffledChain(60, JacobianKind::kDifferenceQuotient);
+  const NetworkSystem& system = chain.system;
+  const JacobianPattern& pattern = system.jacobian_pattern();
+  const auto n = static_cast<std::size_t>(pattern.size);
+  std::vector<double> y(n), rate(n), perturbed_rate(n), weights(n);
+  system.InitialState(0.0, y.data());
+  system.RightHandSide(0.1, y.data(), rate.data());
+  for (std::size_t i = 0; i < n; ++i) weights[i] = 1.0 / (1e-6 * std::abs(y[i]) + 1e-9);
+  std::vector<double> quotient_values(static_cast<std::size_t>(pattern.entries()));
+  std::vector<double> analytic(quotient_values.size());
+  ColouredDifferenceQuotient(pattern).Evaluate(
+      [&](const double* state, double* out) { system.RightHandSide(0.1, state, out); }, y.data(),
+      rate.data(), weights.data(), 1e-4, perturbed_rate.data(), quotient_values.data());
+  system.Jacobian(0.1, y.data(), analytic.data());
+  double largest = 0.0;
+  for (double a : analytic) largest = std::max(largest, std::abs(a));
+  for (std::size_t k = 0; k < analytic.size(); ++k) {
+    // the quotient's truncation and rounding at the floor's step: well within 1e-4
+    EXPECT_NEAR(quotient_values[k], analytic[k], 1e-4 * largest) << "entry " << k;
   }
 }
 
@@ -135,22 +163,51 @@ TEST(LinearSolverChoice, MatricesTooLargeForMemoryAreRefusedWithTheirSize) {
     ADD_FAILURE() << "accepted";
   } catch (const ParameterError& e) {
     EXPECT_EQ(e.path(), "linear_solver");
-    EXPECT_NE(
-        std::string(e.what()).find("needs 3 MiB for the matrices of this system's 400 states"),
-        std::string::npos)
+    EXPECT_NE(std::string(e.what()).find(
+                  "needs about 3 MiB for the matrices of this system's 400 states"),
+              std::string::npos)
         << e.what();
   }
   EXPECT_NO_THROW(RequireRoomFor(LinearSolverKind::kSparse, pattern, dense - 1.0));
   // a run asking for a dense matrix of 200000 states (640 GB) is refused before any
-  // allocation, on any machine
+  // allocation, on any machine: a dense LU serves at most kDenseMaxStates
   const NetworkExperiment huge = testing::Chain(100000, LinearSolverKind::kDense);
   try {
     huge.Run();
     ADD_FAILURE() << "accepted";
   } catch (const ParameterError& e) {
     EXPECT_EQ(e.path(), "linear_solver");
-    EXPECT_NE(std::string(e.what()).find("200000 states"), std::string::npos) << e.what();
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("a dense LU of this system's 200000 states costs "
+                                               "2.7e+15 flops per factorisation"));
   }
+  // and just above that size too, where the matrices would fit in memory
+  const NetworkExperiment above = testing::Chain(kDenseMaxStates / 2 + 1, LinearSolverKind::kDense);
+  EXPECT_THROW(above.Run(), ParameterError);
+  const NetworkExperiment at = testing::Chain(kDenseMaxStates / 2, LinearSolverKind::kDense);
+  EXPECT_NO_THROW(RequireRoomFor(LinearSolverKind::kDense, at.system.jacobian_pattern(), 1e12));
+}
+
+TEST(LinearSolverChoice, KlusFactorsAreCountedAndTooManyAreRefused) {
+  // KLU's symbolic analysis estimates its factors' entries: at least the Newton matrix's own
+  // (the pattern and its diagonal), and for a chain in any order not much more (a chain's
+  // LU fills nothing under a good ordering)
+  const NetworkExperiment chain = ShuffledChain(200, JacobianKind::kAnalytic);
+  const JacobianPattern& pattern = chain.system.jacobian_pattern();
+  const double entries = SparseFactorEntries(pattern);
+  EXPECT_GE(entries, pattern.entries());
+  EXPECT_LT(entries, 3.0 * pattern.entries());
+  // the factors are part of what a sparse solver needs, and refused with their count
+  const double needed = SolverBytes(LinearSolverKind::kSparse, pattern);
+  EXPECT_GT(needed, MatrixBytes(LinearSolverKind::kSparse, pattern));
+  try {
+    RequireRoomFor(LinearSolverKind::kSparse, pattern, needed - 1.0);
+    ADD_FAILURE() << "accepted";
+  } catch (const ParameterError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("for the matrices and LU factors of this system's "
+                                               "400 states"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("factor entries"));
+  }
+  EXPECT_NO_THROW(RequireRoomFor(LinearSolverKind::kSparse, pattern, needed));
 }
 
 }  // namespace

@@ -7,8 +7,9 @@
 
 namespace musclesim {
 
-// The machine's memory, or less under a limit such as ulimit -v (RLIMIT_AS, RLIMIT_DATA)
-// [bytes].
+// What this process may still allocate [bytes]: the machine's memory less what the process
+// holds (its resident set), or under a limit such as ulimit -v (RLIMIT_AS, RLIMIT_DATA) the
+// limit less its address space, whichever is less.
 double AllocatableBytes();
 
 // `bytes` in MiB for messages, rounded up ("1536 MiB").
