@@ -93,8 +93,11 @@ std::string GeometryNote(const XMLElement& muscle) {
       }
     }
   }
-  std::string note = "its path (" + std::to_string(points) + " points";
-  if (wraps > 0) note += ", " + std::to_string(wraps) + " wrap objects";
+  const auto counted = [](int n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+  };
+  std::string note = "its path (" + counted(points, "point", "points");
+  if (wraps > 0) note += ", " + counted(wraps, "wrap object", "wrap objects");
   return note +
          ") is not imported: the scenario puts the muscle-tendon unit on a line, its length the "
          "actuator's";

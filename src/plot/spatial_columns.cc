@@ -15,7 +15,13 @@ SpatialColumns FindSpatialColumns(const CsvTable& table) {
     const std::string& header = table.header[static_cast<std::size_t>(x)];
     const std::string name = header.substr(0, header.size() - 2);
     const int y = table.Find(name + ".y");
-    if (y < 0) continue;
+    if (y < 0) {
+      // NODE.x is written only by a run in the plane or in space, always with NODE.y
+      throw InputError(table.source + ": column " + Printable(header) + " has no " +
+                       Printable(name) +
+                       ".y beside it: a run in the plane or in space writes "
+                       "both for every node (NODE.x, NODE.y, and NODE.z in space)");
+    }
     const int z = table.Find(name + ".z");
     with_z += z >= 0 ? 1 : 0;
     columns.nodes.push_back({name, x, y, z});

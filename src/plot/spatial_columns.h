@@ -22,7 +22,7 @@ struct SpatialColumns {
 };
 
 // The nodes of `table`: a NODE.x column with NODE.y beside it; in space when they all have
-// NODE.z. Throws InputError when only some have NODE.z.
+// NODE.z. Throws InputError when only some have NODE.z, or a NODE.x has no NODE.y.
 SpatialColumns FindSpatialColumns(const CsvTable& table);
 // FindSpatialColumns of a trajectory to plot: InputError without a `t` column, without a
 // node's NODE.x and NODE.y, or without rows.

@@ -32,9 +32,8 @@ std::string Lattice(int n, const std::string& solver) {
   text << "name: grid\ndimensions: 2\nnodes:\n";
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) {
-      text << "  - {name: " << name(i, j)
-           << (j == 0 ? ", fixed: [" : ", mass: 0.02, position: [") << 0.05 * j << ", "
-           << 0.05 * i << "]}\n";
+      text << "  - {name: " << name(i, j) << (j == 0 ? ", fixed: [" : ", mass: 0.02, position: [")
+           << 0.05 * j << ", " << 0.05 * i << "]}\n";
     }
   }
   text << "elements:\n";

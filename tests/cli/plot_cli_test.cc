@@ -157,6 +157,11 @@ TEST(PlotCli, MalformedCsvIsInvalidInputAndKeepsTheEarlierFigure) {
   };
   const std::vector<Case> cases = {
       {"empty.csv", "", {}, "empty.csv: empty file, no header"},
+      // a spatial run's CSV with a node's .y column removed: no path plot of half a node
+      {"no_y.csv",
+       "t,pivot.x,pivot.y,bob.x,bob.vx,link.length,link.tension\n0,0,0,1.2,0,1.2,20\n",
+       {},
+       "no_y.csv: column bob.x has no bob.y beside it"},
       {"header_only.csv", kHeader, {}, "header_only.csv: no rows to plot"},
       {"text.csv",
        std::string(kHeader) + "0,abc,0,0,0,0,0,0,isometric\n",

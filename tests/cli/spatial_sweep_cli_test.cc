@@ -73,5 +73,49 @@ output: {file: hanging.csv, interval: 0.01}
   EXPECT_EQ(points, 4);
 }
 
+TEST(SpatialSweep, AFixedViaPointsCoordinateIsAnAxisAndGarbageThereIsRefused) {
+  // a spring of rest length 1 m from a pivot over a fixed via point at (0.5, y) to a heavy
+  // bob at rest at (1.2, 0): over 1 ms it moves by T t^2 / 2m ~ 1e-11 m, so the final length
+  // is the two segments' at the start
+  const std::string base = testing::WriteTempFile("via.yaml", R"(name: via
+dimensions: 2
+nodes:
+  - {name: pivot, fixed: [0.0, 0.0]}
+  - {name: bob, mass: 1.0e6, position: [1.2, 0.0]}
+elements:
+  - {name: link, type: spring, from: pivot, to: bob, stiffness: 100.0, rest_length: 1.0,
+     via: [[0.5, 0.2]]}
+time: {start: 0.0, end: 0.001}
+output: {interval: 0.0005}
+)");
+  const auto sweep = [&](const std::string& values, const std::string& out) {
+    const std::string file = testing::WriteTempFile(
+        "via_sweep.yaml", "base: " + base + "\nparameters:\n  elements[0].via[0][1]: " + values +
+                              "\nmetrics: [final_length]\nmetric_options: {element: link}\n");
+    const std::string command = std::string(MUSCLESIM_BINARY) + " sweep '" + file + "' -o '" + out +
+                                "' --jobs 1 > /dev/null 2>&1";
+    const int status = std::system(command.c_str());
+    return WEXITSTATUS(status);
+  };
+  const std::string out = ::testing::TempDir() + "via_sweep.csv";
+  ASSERT_EQ(sweep("[0.0, 0.2]", out), 0);
+  std::stringstream rows(testing::ReadFile(out));
+  std::string line;
+  std::getline(rows, line);
+  const std::vector<std::string> header = Split(line);
+  std::size_t column = 0;
+  while (column < header.size() && header[column] != "final_length") ++column;
+  ASSERT_LT(column, header.size());
+  for (const double y : {0.0, 0.2}) {
+    ASSERT_TRUE(std::getline(rows, line));
+    // the path from (0, 0) over (0.5, y) to (1.2, 0)
+    const double length = std::hypot(0.5, y) + std::hypot(0.7, y);
+    EXPECT_NEAR(std::stod(Split(line)[column]), length, 1e-10) << "y = " << y;
+  }
+  for (const char* garbage : {"[abc]", "[\".nan\"]", "[1e400]", "[true]"}) {
+    EXPECT_EQ(sweep(garbage, ::testing::TempDir() + "via_garbage.csv"), 2) << garbage;
+  }
+}
+
 }  // namespace
 }  // namespace musclesim

@@ -197,5 +197,16 @@ TEST(ImportOutputs, ThousandsOfMusclesEachGetTheirFile) {
   EXPECT_THAT(testing::ReadText(dir + "/out/m2999.yaml"), HasSubstr("name: \"m2999\""));
 }
 
+TEST(ImportOutputs, APathsNoteCountsItsPartsInTheirNumber) {
+  const std::string dir = testing::FreshDirectory("import_");
+  const std::string wrapped =
+      "<GeometryPath><PathPointSet><objects><PathPoint name=\"o\"/></objects></PathPointSet>"
+      "<PathWrapSet><objects><PathWrap name=\"w\"/></objects></PathWrapSet></GeometryPath>";
+  std::ofstream(dir + "/model.osim") << Osim(Muscle("one", wrapped));
+  const testing::CliOutcome out = testing::RunMusclesim("import " + dir + "/model.osim -o " + dir);
+  ASSERT_EQ(out.exit_code, 0) << out.err;
+  EXPECT_THAT(out.err, HasSubstr("its path (1 point, 1 wrap object) is not imported"));
+}
+
 }  // namespace
 }  // namespace musclesim
