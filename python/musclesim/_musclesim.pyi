@@ -556,13 +556,17 @@ def _plot_columns(names: list[str], columns: list[typing.Any], output: str, titl
     """
     The figure `musclesim plot` draws of a CSV with these columns (each a 1-D float64 array or a list of str), with the GIL released: with x a sweep summary's, else a residual table's, a network trajectory's or a trajectory's. musclesim.plot is the public way.
     """
+def _plot_frames(names: list[str], columns: list[typing.Any], output: str, title: str, width: int, height: int, times: list[float], count: int, scenario: typing.Any, script: str | None) -> None:
+    """
+    The frames figure (`musclesim plot --frames/--frame-count`) of a run in the plane or in space given as its columns, at `times` (or `count` evenly spaced ones when empty), the elements drawn along their paths with `scenario`, with the GIL released. musclesim.plot is the public way.
+    """
 def _plot_model(params: dict[str, typing.Any], output: str, title: str, width: int, height: int, script: str | None) -> None:
     """
     The curves figure (`musclesim plot --curves`) of the model block given as a dict, with the GIL released. musclesim.plot is the public way.
     """
-def _optimize(scenario: typing.Any, controls: list[tuple[str, float, float, float, int]], final_values: list[tuple[str, float, float]], intervals: int, tolerance: float, max_iterations: int, path_bounds: list[tuple[str, float, float]], tracking: list[tuple[str, list[float], list[float], float]], terminal: list[tuple[str, float, float]], parameters: list[tuple[str, float, float]], final_time: tuple[float, float, float] | None) -> dict[str, typing.Any]:
+def _optimize(scenario: typing.Any, problem: dict) -> dict[str, typing.Any]:
     """
-    optimize's C++ half: controls as (actuator, lower, upper, weight, power), final values and path bounds as (column, lower, upper), tracking as (column, times, values, weight), terminal as (column, target, weight), parameters as (path, lower, upper), final_time None or (lower, upper, weight); returns a dict of the result with the optimum as a Scenario. musclesim.optimize is the public way.
+    optimize's C++ half: `problem` a dict of a problem file's keys but base and output (intervals, controls, final_values, path_bounds, tracking, terminal, parameters, final_time, optimizer), read by the problem file's reader; returns a dict of the result with the optimum as a Scenario. musclesim.optimize is the public way.
     """
 def _require(condition: bool, path: str, value: float, rule: str) -> None:
     """

@@ -88,7 +88,9 @@ def _pixels(size: tuple[int, int]) -> tuple[int, int]:
 
 def plot(data: object, output: _PathLike, title: str | None = None,
          size: tuple[int, int] = (1000, 750), x: str | None = None, y: str | None = None,
-         color: str | None = None, script: _PathLike | None = None) -> str:
+         color: str | None = None, script: _PathLike | None = None, *,
+         frames: Iterable[float] | None = None, frame_count: int | None = None,
+         scenario: Any = None) -> str:
     """Draws the figure `musclesim plot` draws of `data`, with gnuplot, to `output`.
 
     No CSV file and no subprocess of the CLI: the data's columns go to the library's script
@@ -125,6 +127,11 @@ def plot(data: object, output: _PathLike, title: str | None = None,
         only with x), as the CLI's --x, --y, --color.
     script: a path where the gnuplot script is also written (the CLI's --script), to restyle
         the figure by hand.
+    frames, frame_count: a run in the plane or in space drawn as its shape at these times
+        [s] (or at this many evenly spaced ones, 1..36), as the CLI's --frames and
+        --frame-count; scenario: the Scenario it ran, whose elements are then drawn along
+        their paths over their via points (the CLI's --scenario). Without them such a run is
+        drawn as its nodes' paths beside the elements' lengths, tensions and activations.
 
     Returns `output` as a str. The script is built and gnuplot run with the GIL released.
     Raises musclesim.InputError as the CLI exits 2, naming what is wrong: an extension other
@@ -151,5 +158,21 @@ def plot(data: object, output: _PathLike, title: str | None = None,
                         "summary (a NumPy structured array) or a dict or DataFrame of 1-D "
                         "arrays keyed by column name, not %s" % type(data).__name__)
     names, columns = table
+    if frames is not None or frame_count is not None or scenario is not None:
+        if x is not None or y is not None or color is not None:
+            raise _InputError("frames, frame_count and scenario go with a run, not with a "
+                              "sweep summary's x, y and color")
+        if (frames is None) == (frame_count is None):
+            raise _InputError("give frames (the times) or frame_count (how many), one of them, "
+                              "as the CLI's --frames or --frame-count")
+        times = [] if frames is None else [float(t) for t in frames]
+        if frames is not None and not times:
+            raise _InputError("frames: give at least one time [s]")
+        count = 0 if frame_count is None else _operator.index(frame_count)
+        if not -2**31 < count < 2**31:
+            raise _InputError("frame_count %d: must be 1 to 36" % count)
+        _musclesim._plot_frames(names, columns, output, title, width, height, times, count,
+                                scenario, script)
+        return output
     _musclesim._plot_columns(names, columns, output, title, width, height, x, y, color, script)
     return output

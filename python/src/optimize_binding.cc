@@ -16,72 +16,24 @@
 #include "musclesim/core/errors.h"
 #include "musclesim/optimize/optimal_control.h"
 #include "musclesim/optimize/optimum_files.h"
+#include "document.h"
+#include "musclesim/optimize/problem_file.h"
 #include "py_scenario.h"
 
 namespace musclesim::python {
 
 namespace py = pybind11;
 
-using ControlTuple = std::tuple<std::string, double, double, double, int>;
-using FinalTuple = std::tuple<std::string, double, double>;  // also a path bound, a parameter
-using TrackingTuple = std::tuple<std::string, std::vector<double>, std::vector<double>, double>;
-using TerminalTuple = std::tuple<std::string, double, double>;
-using TimeTuple = std::tuple<double, double, double>;
-
-// The terms and constraints beyond the controls and final values, from their tuples.
-void AddTerms(OptimalControlProblem& problem, const std::vector<FinalTuple>& paths,
-              const std::vector<TrackingTuple>& tracking,
-              const std::vector<TerminalTuple>& terminal, const std::vector<FinalTuple>& parameters,
-              const std::optional<TimeTuple>& time) {
-  for (const auto& [column, lower, upper] : paths) {
-    problem.path_bounds.push_back({column, lower, upper});
-  }
-  for (const auto& [column, times, values, weight] : tracking) {
-    if (times.size() != values.size()) {
-      throw InputError("tracking: " + column +
-                       ": the reference's times and values differ in "
-                       "length");
-    }
-    std::vector<TablePoint> reference;
-    for (std::size_t i = 0; i < times.size(); ++i) reference.push_back({times[i], values[i]});
-    problem.tracking.push_back({column, std::move(reference), weight});
-  }
-  for (const auto& [column, target, weight] : terminal) {
-    problem.terminal.push_back({column, target, weight});
-  }
-  for (const auto& [path, lower, upper] : parameters) {
-    problem.parameters.push_back({path, lower, upper});
-  }
-  if (time)
-    problem.final_time = FreeFinalTime{std::get<0>(*time), std::get<1>(*time), std::get<2>(*time)};
-}
-
-py::array_t<double> Array(const std::vector<double>& values) {
-  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
-}
-
 void BindOptimize(py::module_& m) {
   m.def(
       "_optimize",
-      [](const py::handle& scenario, const std::vector<ControlTuple>& controls,
-         const std::vector<FinalTuple>& finals, int intervals, double tolerance, int max_iterations,
-         const std::vector<FinalTuple>& paths, const std::vector<TrackingTuple>& tracking,
-         const std::vector<TerminalTuple>& terminal, const std::vector<FinalTuple>& parameters,
-         const std::optional<TimeTuple>& time) {
+      [](const py::handle& scenario, const py::dict& spec) {
         const PyScenario& given = ScenarioArgument(scenario, "optimize: scenario");
-        OptimalControlProblem problem;
-        problem.scenario = given.scenario;
-        problem.intervals = intervals;
-        for (const auto& [actuator, lower, upper, weight, power] : controls) {
-          problem.controls.push_back({actuator, lower, upper, weight, power});
-        }
-        for (const auto& [column, lower, upper] : finals) {
-          problem.final_values.push_back({column, lower, upper});
-        }
-        AddTerms(problem, paths, tracking, terminal, parameters, time);
-        OptimizeOptions options;
-        options.tolerance = tolerance;
-        options.max_iterations = max_iterations;
+        // the problem file's keys, read by its reader: the same rules and messages
+        const ProblemFile file =
+            ReadProblem(DocumentFrom(spec, "optimize"), "optimize(...)", given.scenario);
+        const OptimalControlProblem& problem = file.problem;
+        const OptimizeOptions& options = file.options;
         OptimalControlResult result;
         {
           py::gil_scoped_release released;
@@ -142,14 +94,11 @@ void BindOptimize(py::module_& m) {
         out["scenario"] = py::cast(std::move(optimum));
         return out;
       },
-      py::arg("scenario"), py::arg("controls"), py::arg("final_values"), py::arg("intervals"),
-      py::arg("tolerance"), py::arg("max_iterations"), py::arg("path_bounds"), py::arg("tracking"),
-      py::arg("terminal"), py::arg("parameters"), py::arg("final_time"),
-      "optimize's C++ half: controls as (actuator, lower, upper, weight, power), final values "
-      "and path bounds as (column, lower, upper), tracking as (column, times, values, weight), "
-      "terminal as (column, target, weight), parameters as (path, lower, upper), final_time "
-      "None or (lower, upper, weight); returns a dict of the result with the optimum as a "
-      "Scenario. musclesim.optimize is the public way.");
+      py::arg("scenario"), py::arg("problem"),
+      "optimize's C++ half: `problem` a dict of a problem file's keys but base and output "
+      "(intervals, controls, final_values, path_bounds, tracking, terminal, parameters, "
+      "final_time, optimizer), read by the problem file's reader; returns a dict of the "
+      "result with the optimum as a Scenario. musclesim.optimize is the public way.");
 }
 
 }  // namespace musclesim::python

@@ -22,6 +22,7 @@
 #include "musclesim/core/number_format.h"
 #include "musclesim/model/tension.h"
 #include "musclesim/plot/plot.h"
+#include "py_scenario.h"
 #include "typed_objects.h"
 
 namespace py = pybind11;
@@ -145,15 +146,32 @@ void PlotColumns(const std::vector<std::string>& names, const AnyList& columns,
     if (x) {
       table.source = "sweep";
       script = SweepPlotScript(table, *x, y, color, options);
-    } else if (IsResidualTable(table)) {
-      table.source = "residuals";
-      script = ResidualPlotScript(table, options);
     } else {
-      table.source = "trajectory";
-      script = IsNetworkTrajectory(table) ? NetworkPlotScript(table, options)
-                                          : TrajectoryPlotScript(table, options);
+      // the CLI's choice by the table's form: residuals, a network's run on a line or in
+      // space, a single actuator's
+      table.source = IsResidualTable(table) ? "residuals" : "trajectory";
+      script = RunPlotScript(table, options);
     }
     Draw(script, options, script_path);
+  });
+}
+
+// The frames of a run in the plane or in space, as `musclesim plot --frames/--frame-count`.
+void PlotFrames(const std::vector<std::string>& names, const AnyList& columns,
+                const std::string& output, const std::string& title, int width, int height,
+                const std::vector<double>& times, int count, const py::object& scenario,
+                const std::optional<std::string>& script_path) {
+  const PlotOptions options = Options(output, title, width, height);
+  const std::vector<Column> values = ReadColumns(names, columns);
+  std::optional<Scenario> drawn;
+  if (!scenario.is_none()) drawn = ScenarioArgument(scenario, "plot: scenario").scenario;
+  py::gil_scoped_release release;
+  Renamed([&] {
+    CsvTable table = TableOf(names, values, false);
+    table.source = "trajectory";
+    const std::string flag = times.empty() ? "frame_count" : "frames";
+    Draw(FramesPlotScript(table, times, count, drawn ? &*drawn : nullptr, flag, options), options,
+         script_path);
   });
 }
 
@@ -176,6 +194,13 @@ void BindPlot(py::module_& m) {
         "array or a list of str), with the GIL released: with x a sweep summary's, else a "
         "residual table's, a network trajectory's or a trajectory's. musclesim.plot is the "
         "public way.");
+  m.def("_plot_frames", &PlotFrames, py::arg("names"), py::arg("columns"), py::arg("output"),
+        py::arg("title"), py::arg("width"), py::arg("height"), py::arg("times"), py::arg("count"),
+        py::arg("scenario"), py::arg("script"),
+        "The frames figure (`musclesim plot --frames/--frame-count`) of a run in the plane or "
+        "in space given as its columns, at `times` (or `count` evenly spaced ones when empty), "
+        "the elements drawn along their paths with `scenario`, with the GIL released. "
+        "musclesim.plot is the public way.");
   m.def("_plot_model", &PlotModel, py::arg("params"), py::arg("output"), py::arg("title"),
         py::arg("width"), py::arg("height"), py::arg("script"),
         "The curves figure (`musclesim plot --curves`) of the model block given as a dict, "

@@ -97,8 +97,11 @@ REFUSALS = (TypeError, ValueError, OverflowError, musclesim.InputError)
 
 
 
-def calls():
+def calls(folder):
     scenario = musclesim.load_scenario(CONCENTRIC, set={"time.end": 0.01})
+    move = musclesim.load_scenario(SCENARIOS / "antagonist_move.yaml")
+    short = scenario.run()
+    figure = folder / "hostile.png"
     stepper = musclesim.Stepper(SCENARIOS / "antagonist_pair.yaml")
     tension_model = musclesim.load_model(CONCENTRIC)
     return {
@@ -116,12 +119,23 @@ def calls():
         "force_length_preset": (musclesim.force_length_preset, 3),
         "run_many": (musclesim.run_many, 2),
         "table": (musclesim.table, 1),
+        # an optimisation's every argument, and a figure's data and options
+        "optimize": (lambda c, f, i: musclesim.optimize(move, controls=c, final_values=f,
+                                                         intervals=i, max_seconds=5.0), 3),
+        "optimize.options": (lambda t, m, s: musclesim.optimize(
+            move, controls=[{"actuator": "flexor"}], intervals=2, tolerance=t,
+            max_iterations=m, max_seconds=s), 3),
+        "optimize.terms": (lambda p, tr, te: musclesim.optimize(
+            move, controls=[{"actuator": "flexor"}], intervals=2, path_bounds=p, tracking=tr,
+            terminal=te, max_seconds=5.0), 3),
+        "plot": (lambda d, t: musclesim.plot(d, figure, title=t), 2),
+        "plot.options": (lambda x, n: musclesim.plot(short, figure, x=x, frame_count=n), 2),
     }
 
 
-def test_hostile_arguments_raise_a_clear_python_exception():
+def test_hostile_arguments_raise_a_clear_python_exception(tmp_path):
     rng = random.Random(20261127)
-    for name, (function, arity) in calls().items():
+    for name, (function, arity) in calls(tmp_path).items():
         for _ in range(60):
             arguments = [rng.choice(HOSTILE) for _ in range(arity)]
             try:

@@ -79,6 +79,34 @@ def test_network_trajectory_is_the_clis(tmp_path):
     assert "set multiplot" in ours and "measured" in ours  # the network's figure, a controller
 
 
+@pytest.mark.parametrize("name", ["planar_pendulum", "suspended_mass"])
+def test_a_spatial_networks_paths_are_the_clis(tmp_path, name):
+    # a network in the plane: its nodes' paths beside the elements' panels, as the CLI draws
+    path = os.path.join(SCENARIOS, name + ".yaml")
+    cli("run", path, "--set", "time.end=0.2", "-o", tmp_path / "run.csv")
+    ours = our_script(tmp_path, musclesim.load_scenario(path, {"time.end": 0.2}).run())
+    assert ours == clis_script(tmp_path, tmp_path / "run.csv")
+
+
+@pytest.mark.parametrize("frames", [{"frame_count": 3}, {"frames": [0.0, 0.05, 0.1]}])
+def test_a_spatial_networks_frames_are_the_clis(tmp_path, frames):
+    path = os.path.join(SCENARIOS, "planar_pendulum.yaml")
+    cli("run", path, "--set", "time.end=0.1", "-o", tmp_path / "run.csv")
+    scenario = musclesim.load_scenario(path, {"time.end": 0.1})
+    ours = our_script(tmp_path, scenario.run(), scenario=scenario, **frames)
+    flag = (["--frame-count", "3"] if "frame_count" in frames else ["--frames", "0,0.05,0.1"])
+    assert ours == clis_script(tmp_path, tmp_path / "run.csv", *flag, "--scenario", path)
+
+
+def test_frames_of_a_run_on_a_line_are_refused_as_the_cli_refuses_them(tmp_path):
+    result = musclesim.load_scenario(os.path.join(SCENARIOS, "antagonist_pair.yaml"),
+                                     {"time.end": 0.05}).run()
+    with pytest.raises(musclesim.InputError, match="not the run of a network in the plane"):
+        musclesim.plot(result, tmp_path / "f.png", frame_count=2)
+    with pytest.raises(musclesim.InputError, match="frames .*or frame_count"):
+        musclesim.plot(result, tmp_path / "f.png", frames=[0.0], frame_count=2)
+
+
 SWEEP = {
     "mode": "grid",
     "parameters": {"load[0].after": {"from": 20.0, "to": 60.0, "count": 3},  # N

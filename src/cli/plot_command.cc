@@ -112,17 +112,12 @@ std::string FramesScript(const Arguments& args, const CsvTable& table, const Plo
   if (args.Has("--frames") && args.Has("--frame-count")) {
     throw UsageError("give --frames (the times) or --frame-count (how many), not both");
   }
-  if (!IsSpatialTrajectory(table)) {
-    throw InputError(std::string(flag) + ": " + table.source +
-                     " is not the run of a network in the plane or in space (frames need "
-                     "NODE.x and NODE.y columns, written by a run with dimensions: 2 or 3)");
-  }
   const std::vector<double> times =
-      args.Has("--frames") ? ParseTimes(args.Value("--frames"))
-                           : EvenlySpacedFrameTimes(table, ParseCount(args.Value("--frame-count")));
+      args.Has("--frames") ? ParseTimes(args.Value("--frames")) : std::vector<double>{};
+  const int count = args.Has("--frames") ? 0 : ParseCount(args.Value("--frame-count"));
   std::optional<Scenario> scenario;
   if (args.Has("--scenario")) scenario = LoadScenario(args.Value("--scenario"));
-  return SpatialFramesPlotScript(table, times, scenario ? &*scenario : nullptr, options);
+  return FramesPlotScript(table, times, count, scenario ? &*scenario : nullptr, flag, options);
 }
 
 std::string Script(const Arguments& args, const PlotOptions& options) {
@@ -158,10 +153,7 @@ std::string Script(const Arguments& args, const PlotOptions& options) {
   if (args.Has("--scenario")) {
     throw UsageError("--scenario goes with --frames or --frame-count (it draws the elements)");
   }
-  return IsResidualTable(table)       ? ResidualPlotScript(table, options)
-         : IsNetworkTrajectory(table) ? NetworkPlotScript(table, options)
-         : IsSpatialTrajectory(table) ? SpatialPathPlotScript(table, options)
-                                      : TrajectoryPlotScript(table, options);
+  return RunPlotScript(table, options);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <random>
 
 #include "musclesim/core/errors.h"
@@ -43,24 +44,28 @@ std::string StatusName(Ipopt::SolverReturn status) {
 // Why the program stopped IPOPT itself, when it did.
 enum class OwnStop { kNone, kStalled, kOutOfTime };
 
-// The stall rule of optimal_control.h: over the last kStallIterations iterations the
-// violation stayed above kStallViolation and within a factor 1 - kStallReduction of its
-// largest there, and the objective moved by less than kStallReduction of that too (a
-// violation traded for the objective moves the objective).
+// The stall rule of optimal_control.h: over the last kStallIterations iterations neither the
+// least violation fell by kStallReduction nor the least objective by a tenth of that, 1 %,
+// below their least over the kStallIterations before them, the violation staying above
+// kStallViolation (an infeasible problem's iterates trade the one for the other, making
+// progress in neither).
 class StallWatch {
  public:
   bool Stalled(double objective, double violation) {
     objectives_.push_back(objective);
     violations_.push_back(violation);
-    const std::size_t n = violations_.size();
-    if (n < static_cast<std::size_t>(kStallIterations)) return false;
-    const auto [least, most] =
-        std::minmax_element(violations_.end() - kStallIterations, violations_.end());
-    const auto [lowest, highest] =
-        std::minmax_element(objectives_.end() - kStallIterations, objectives_.end());
-    const double scale = std::max(std::abs(*lowest), std::abs(*highest));
-    return *least > kStallViolation && *least >= (1.0 - kStallReduction) * *most &&
-           *highest - *lowest <= 1e-3 * kStallReduction * scale;
+    const auto window = static_cast<std::ptrdiff_t>(kStallIterations);
+    if (static_cast<std::ptrdiff_t>(violations_.size()) < 2 * window) return false;
+    const auto least = [window](const std::vector<double>& v, std::ptrdiff_t back) {
+      const auto end = v.end() - back * window;
+      return *std::min_element(end - window, end);
+    };
+    const double violation_now = least(violations_, 0), violation_then = least(violations_, 1);
+    const double objective_now = least(objectives_, 0), objective_then = least(objectives_, 1);
+    const double objective_step = 0.1 * kStallReduction * std::abs(objective_then);
+    return violation_now > kStallViolation &&
+           violation_now > (1.0 - kStallReduction) * violation_then &&
+           objective_now > objective_then - objective_step;
   }
 
  private:
@@ -251,6 +256,15 @@ double ResimulationDeviation(const OptimalControlResult& result) {
   return worst;
 }
 
+// IPOPT's linear solver in Debian's build, MUMPS (sequential), keeps state of its own between
+// calls: two solves at once in one process crash inside it (a SIGSEGV, or Fortran's "Attempt
+// to DEALLOCATE unallocated"). Solves are therefore taken one at a time; each integrates its
+// intervals on every core.
+std::mutex& IpoptMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
 }  // namespace
 
 OptimalControlResult SolveOptimalControl(const OptimalControlProblem& problem,
@@ -260,6 +274,7 @@ OptimalControlResult SolveOptimalControl(const OptimalControlProblem& problem,
   OptimalControlResult result;
   result.status = "not_run";
   Ipopt::SmartPtr<ShootingProgram> program = new ShootingProgram(shooting, result, options);
+  const std::lock_guard<std::mutex> one_at_a_time(IpoptMutex());
   Ipopt::SmartPtr<Ipopt::IpoptApplication> ipopt = IpoptApplicationFactory();
   ipopt->Options()->SetNumericValue("tol", options.tolerance);
   ipopt->Options()->SetIntegerValue("max_iter", options.max_iterations);

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <limits>
 
+#include "io/document_yaml.h"
 #include "io/yaml_fields.h"
 #include "musclesim/core/errors.h"
 #include "optimize/problem_checks.h"
@@ -260,23 +261,50 @@ YAML::Node NodeAt(const YAML::Node& root, const std::string& path) {
 
 }  // namespace
 
-ProblemFile LoadProblemFile(const std::string& path) {
-  const yaml::Source src{path};
-  const YAML::Node root = yaml::LoadFile(path);
-  yaml::RequireMap(src, root, "",
-                   {"base", "intervals", "controls", "final_values", "path_bounds", "tracking",
-                    "terminal", "parameters", "final_time", "optimizer", "output"});
-  ProblemFile file;
-  file.path = path;
-  const std::string base = yaml::ReadString(src, yaml::Required(src, root, "", "base"), "base");
-  file.base = (std::filesystem::path(path).parent_path() / base).lexically_normal().string();
+namespace {
+
+void ReadOptimizer(const yaml::Source& src, const YAML::Node& optimizer, OptimizeOptions& options) {
+  yaml::RequireMap(src, optimizer, "optimizer",
+                   {"tolerance", "max_iterations", "max_seconds", "derivatives"});
+  if (optimizer["derivatives"]) {
+    const std::string method =
+        yaml::ReadString(src, optimizer["derivatives"], "optimizer.derivatives");
+    if (method == "difference_quotients") {
+      options.derivatives = ShootingDerivatives::kDifferenceQuotients;
+    } else if (method != "sensitivities") {
+      yaml::Fail(src, optimizer["derivatives"], "optimizer.derivatives", method,
+                 "must be sensitivities (exact, the default) or difference_quotients");
+    }
+  }
+  const InputRange tolerances{1e-14, 1.0, "", "IPOPT's tol"};
+  options.tolerance =
+      yaml::ReadOptionalNumberIn(src, optimizer, "optimizer", "tolerance", tolerances, 1e-8);
+  if (optimizer["max_iterations"]) {
+    const int n = yaml::ReadInteger(src, optimizer["max_iterations"], "optimizer.max_iterations");
+    if (n < 1 || n > 100000) {
+      yaml::Fail(src, optimizer["max_iterations"], "optimizer.max_iterations", std::to_string(n),
+                 "must be an integer from 1 to 100000");
+    }
+    options.max_iterations = n;
+  }
+  const InputRange seconds{0.0, 1e7, "s", "the solve's wall time, checked after each iteration",
+                           true};
+  options.max_seconds = yaml::ReadOptionalNumberIn(
+      src, optimizer, "optimizer", "max_seconds", seconds, std::numeric_limits<double>::infinity());
+}
+
+// Every key of a problem but its base and outputs (a file's), into `file`; `inputs` gains
+// the files it reads (a tracking reference's CSV).
+void ReadProblemBody(const yaml::Source& src, const YAML::Node& root, ProblemFile& file,
+                     std::vector<std::string>& inputs) {
+  OptimalControlProblem& problem = file.problem;
   if (root["intervals"]) {
     const double n = yaml::ReadNumberIn(src, root["intervals"], "intervals", kIntervals);
     if (n != static_cast<double>(static_cast<int>(n))) {
       yaml::Fail(src, root["intervals"], "intervals", yaml::Describe(root["intervals"]),
                  "must be an integer from 1 to 100000");
     }
-    file.problem.intervals = static_cast<int>(n);
+    problem.intervals = static_cast<int>(n);
   }
   const YAML::Node controls = yaml::Required(src, root, "", "controls");
   if (!controls.IsSequence() || controls.size() == 0) {
@@ -284,7 +312,7 @@ ProblemFile LoadProblemFile(const std::string& path) {
                "must be a list of at least one control, {actuator: NAME, ...}");
   }
   for (std::size_t j = 0; j < controls.size(); ++j) {
-    file.problem.controls.push_back(ReadControl(src, controls[j], Item("controls", j)));
+    problem.controls.push_back(ReadControl(src, controls[j], Item("controls", j)));
   }
   if (const YAML::Node finals = root["final_values"]) {
     if (!finals.IsSequence()) {
@@ -292,11 +320,9 @@ ProblemFile LoadProblemFile(const std::string& path) {
                  "must be a list of {column: NODE.COLUMN, value: X} or {column, bounds}");
     }
     for (std::size_t k = 0; k < finals.size(); ++k) {
-      file.problem.final_values.push_back(ReadFinal(src, finals[k], Item("final_values", k)));
+      problem.final_values.push_back(ReadFinal(src, finals[k], Item("final_values", k)));
     }
   }
-  OptimalControlProblem& problem = file.problem;
-  std::vector<std::string> inputs{path, file.base};  // what the outputs must not replace
   if (const YAML::Node bounds = root["path_bounds"]) {
     ReadList(src, bounds, "path_bounds", "{column: NAME, bounds: [lower, upper]}",
              [&](const YAML::Node& n, const std::string& at) {
@@ -322,36 +348,38 @@ ProblemFile LoadProblemFile(const std::string& path) {
              });
   }
   if (const YAML::Node time = root["final_time"]) problem.final_time = ReadFinalTime(src, time);
-  if (const YAML::Node optimizer = root["optimizer"]) {
-    yaml::RequireMap(src, optimizer, "optimizer",
-                     {"tolerance", "max_iterations", "max_seconds", "derivatives"});
-    if (optimizer["derivatives"]) {
-      const std::string method =
-          yaml::ReadString(src, optimizer["derivatives"], "optimizer.derivatives");
-      if (method == "difference_quotients") {
-        file.options.derivatives = ShootingDerivatives::kDifferenceQuotients;
-      } else if (method != "sensitivities") {
-        yaml::Fail(src, optimizer["derivatives"], "optimizer.derivatives", method,
-                   "must be sensitivities (exact, the default) or difference_quotients");
-      }
-    }
-    const InputRange tolerances{1e-14, 1.0, "", "IPOPT's tol"};
-    file.options.tolerance =
-        yaml::ReadOptionalNumberIn(src, optimizer, "optimizer", "tolerance", tolerances, 1e-8);
-    if (optimizer["max_iterations"]) {
-      const int n = yaml::ReadInteger(src, optimizer["max_iterations"], "optimizer.max_iterations");
-      if (n < 1 || n > 100000) {
-        yaml::Fail(src, optimizer["max_iterations"], "optimizer.max_iterations", std::to_string(n),
-                   "must be an integer from 1 to 100000");
-      }
-      file.options.max_iterations = n;
-    }
-    const InputRange seconds{0.0, 1e7, "s", "the solve's wall time, checked after each iteration",
-                             true};
-    file.options.max_seconds =
-        yaml::ReadOptionalNumberIn(src, optimizer, "optimizer", "max_seconds", seconds,
-                                   std::numeric_limits<double>::infinity());
+  if (const YAML::Node optimizer = root["optimizer"]) ReadOptimizer(src, optimizer, file.options);
+}
+
+// The problem against its scenario (an actuator, a column, a parameter it lacks): the
+// message's entry placed in the problem's own text.
+void CheckAgainstScenario(const yaml::Source& src, const YAML::Node& root,
+                          const OptimalControlProblem& problem) {
+  try {
+    CheckProblem(problem);
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    const std::size_t colon = message.find_first_of(" :");
+    const std::string entry = message.substr(0, colon);
+    const YAML::Node node = NodeAt(root, entry);
+    throw InputError(entry + " (" + yaml::Location(src, node) + ")" + message.substr(colon));
   }
+}
+
+}  // namespace
+
+ProblemFile LoadProblemFile(const std::string& path) {
+  const yaml::Source src{path};
+  const YAML::Node root = yaml::LoadFile(path);
+  yaml::RequireMap(src, root, "",
+                   {"base", "intervals", "controls", "final_values", "path_bounds", "tracking",
+                    "terminal", "parameters", "final_time", "optimizer", "output"});
+  ProblemFile file;
+  file.path = path;
+  const std::string base = yaml::ReadString(src, yaml::Required(src, root, "", "base"), "base");
+  file.base = (std::filesystem::path(path).parent_path() / base).lexically_normal().string();
+  std::vector<std::string> inputs{path, file.base};  // what the outputs must not replace
+  ReadProblemBody(src, root, file, inputs);
   const std::string stem = std::filesystem::path(path).stem().string();
   file.outputs = {stem + "_optimum.yaml", stem + "_optimum.json", stem + "_optimum.csv"};
   if (const YAML::Node output = root["output"]) {
@@ -365,17 +393,23 @@ ProblemFile LoadProblemFile(const std::string& path) {
   }
   CheckOutputs(src, root, file.outputs, inputs);
   file.problem.scenario = LoadScenario(file.base);
-  // the problem against its scenario (an actuator, a column, a parameter it lacks): the
-  // message's entry placed in this file
-  try {
-    CheckProblem(file.problem);
-  } catch (const InputError& e) {
-    const std::string message = e.what();
-    const std::size_t colon = message.find_first_of(" :");
-    const std::string entry = message.substr(0, colon);
-    const YAML::Node node = NodeAt(root, entry);
-    throw InputError(entry + " (" + yaml::Location(src, node) + ")" + message.substr(colon));
-  }
+  CheckAgainstScenario(src, root, file.problem);
+  return file;
+}
+
+ProblemFile ReadProblem(const Document& document, const std::string& name,
+                        const Scenario& scenario) {
+  const YAML::Node root = ToYaml(document);
+  const yaml::Source src{name, name};
+  yaml::RequireMap(src, root, "",
+                   {"intervals", "controls", "final_values", "path_bounds", "tracking", "terminal",
+                    "parameters", "final_time", "optimizer"});
+  ProblemFile file;
+  file.path = name;
+  std::vector<std::string> inputs;
+  ReadProblemBody(src, root, file, inputs);
+  file.problem.scenario = scenario;
+  CheckAgainstScenario(src, root, file.problem);
   return file;
 }
 

@@ -507,4 +507,11 @@ void Render(const std::string& script, const PlotOptions& options) {
   figure.Keep();
 }
 
+std::string RunPlotScript(const CsvTable& table, const PlotOptions& options) {
+  return IsResidualTable(table)       ? ResidualPlotScript(table, options)
+         : IsNetworkTrajectory(table) ? NetworkPlotScript(table, options)
+         : IsSpatialTrajectory(table) ? SpatialPathPlotScript(table, options)
+                                      : TrajectoryPlotScript(table, options);
+}
+
 }  // namespace musclesim

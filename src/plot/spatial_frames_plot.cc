@@ -170,4 +170,16 @@ std::string SpatialFramesPlotScript(const CsvTable& table, const std::vector<dou
   return s.str();
 }
 
+std::string FramesPlotScript(const CsvTable& table, const std::vector<double>& times, int count,
+                             const Scenario* scenario, const std::string& flag,
+                             const PlotOptions& options) {
+  if (!IsSpatialTrajectory(table)) {
+    throw InputError(flag + ": " + table.source +
+                     " is not the run of a network in the plane or in space (frames need "
+                     "NODE.x and NODE.y columns, written by a run with dimensions: 2 or 3)");
+  }
+  return SpatialFramesPlotScript(
+      table, times.empty() ? EvenlySpacedFrameTimes(table, count) : times, scenario, options);
+}
+
 }  // namespace musclesim

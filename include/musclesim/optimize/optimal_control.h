@@ -119,11 +119,11 @@ struct OptimizeOptions {
 inline constexpr std::size_t kMaxReferencePoints = 100000;
 
 // An infeasible problem (a move the muscles cannot make) is seldom declared so by IPOPT's
-// limited-memory iterations: they hover at the least violation the controls can reach.
-// When over kStallIterations iterations the constraint violation stays above
-// kStallViolation and within kStallReduction of its largest there, and the objective moves
-// by less than 1e-3 kStallReduction of its size, the solve stops with status
-// infeasibility_stalled.
+// limited-memory iterations: they hover at the least violation the controls can reach,
+// trading it against the objective. When over kStallIterations iterations neither the least
+// constraint violation has fallen by kStallReduction nor the least objective by 0.1
+// kStallReduction (1 %) below their least over the kStallIterations before, the violation
+// above kStallViolation, the solve stops with status infeasibility_stalled.
 inline constexpr int kStallIterations = 30;
 inline constexpr double kStallReduction = 0.1;   // a tenth of its value
 inline constexpr double kStallViolation = 1e-6;  // [the constraints' units]

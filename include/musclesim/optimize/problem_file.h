@@ -14,6 +14,7 @@
 
 #include <string>
 
+#include "musclesim/io/document.h"
 #include "musclesim/optimize/optimal_control.h"
 
 namespace musclesim {
@@ -35,5 +36,11 @@ struct ProblemFile {
 // Reads and checks a problem file. Every error is an InputError naming the file, line and
 // column, the key path, the value and the rule; the base scenario's errors are its own.
 ProblemFile LoadProblemFile(const std::string& path);
+
+// A problem given as a document (a Python call's arguments, io/document.h) on `scenario`: the
+// keys of a problem file but `base` and `output`, read and checked by the same rules, its
+// errors named after `name`. Nothing is written, so `outputs` stay empty.
+ProblemFile ReadProblem(const Document& document, const std::string& name,
+                        const Scenario& scenario);
 
 }  // namespace musclesim

@@ -100,6 +100,18 @@ std::string ResidualPlotScript(const CsvTable& residuals, const PlotOptions& opt
 // Whether `table` is such a residual CSV (it has the columns measured, model, standardised).
 bool IsResidualTable(const CsvTable& table);
 
+// The figure of a run's table, chosen by its form as `musclesim plot RUN.csv` chooses it: a
+// residual table's, a network's on a line, a network's in the plane or in space (its
+// nodes' paths), else a single actuator's trajectory. Throws InputError as each does.
+std::string RunPlotScript(const CsvTable& table, const PlotOptions& options);
+
+// The frames of a run in the plane or in space (SpatialFramesPlotScript) at `times`, or at
+// `count` evenly spaced ones when `times` is empty. Throws InputError naming `flag` (the
+// caller's word: "--frames") when the table is no such run, and as the two functions do.
+std::string FramesPlotScript(const CsvTable& table, const std::vector<double>& times, int count,
+                             const Scenario* scenario, const std::string& flag,
+                             const PlotOptions& options);
+
 // The model's curves (the paper's Figures 1, 3 and 5): passive, active (u = 1, v = 0) and
 // total tension against length with L_opt shaded and each Gaussian component drawn thin,
 // and g(v) against shortening velocity.
