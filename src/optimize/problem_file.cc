@@ -9,6 +9,7 @@
 #include "musclesim/core/errors.h"
 #include "optimize/problem_checks.h"
 #include "musclesim/io/csv_table.h"
+#include "musclesim/io/output_file.h"
 #include "musclesim/io/scenario_yaml.h"
 
 namespace musclesim {
@@ -221,6 +222,11 @@ void CheckOutputs(const yaml::Source& src, const YAML::Node& root, const Optimiz
       fail("its directory " + parent.string() + " does not exist");
     }
     if (fs::is_directory(*target, error)) fail("is a directory");
+    if (const std::string outside = LinkOutsideItsDirectory(*target); !outside.empty()) {
+      fail("is a symbolic link to " + outside +
+           ", outside its directory: musclesim writes no output through it (remove the link, "
+           "or name another file)");
+    }
     for (const std::string& input : inputs) {
       if (same(*target, input))
         fail("is " + input + ", which the problem reads: it would be replaced");
