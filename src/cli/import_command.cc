@@ -1,4 +1,5 @@
 // musclesim import MODEL.osim|MODEL.xml [-o DIR]
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <set>
@@ -139,7 +140,7 @@ int ImportCommand(int argc, char** argv) {
   std::set<std::string> taken;
   std::vector<std::string> reports;
   const auto add = [&](const std::string& stem, const std::string& text, const std::string& what) {
-    OutputText out{directory + "/" + stem + ".yaml", text};
+    OutputText out{(std::filesystem::path(directory) / (stem + ".yaml")).string(), text};
     ReadScenario(ParseDocument(out.path, out.text), out.path);
     roles.push_back({out.path, what});
     outputs.push_back(std::move(out));
