@@ -68,6 +68,7 @@ std::string NetworkPlotScript(const CsvTable& table, const PlotOptions& options)
   std::ostringstream s;
   s << kFrame;
   WriteDataBlock(table, lines.data(), "$network", s);
+  WriteGroupedBlocks(table, lines.data(), panels, "$network", s);
   s << "set multiplot layout " << panels.size() << ",1 title "
     << TitleOf(options, table.source, "the CSV file's name (the default title)") << "\n"
     << "set lmargin 12\nset rmargin 26\nset key outside right top\nset format x ''\n";

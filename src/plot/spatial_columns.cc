@@ -1,6 +1,8 @@
 #include "plot/spatial_columns.h"
 
 #include <map>
+#include <string_view>
+#include <unordered_map>
 
 #include "musclesim/core/errors.h"
 #include "plot/plot_text.h"
@@ -10,11 +12,20 @@ namespace musclesim::plot_text {
 
 SpatialColumns FindSpatialColumns(const CsvTable& table) {
   SpatialColumns columns;
+  // the header's columns by name, once: a lattice's CSV has tens of thousands
+  std::unordered_map<std::string_view, int> index;
+  for (std::size_t c = 0; c < table.header.size(); ++c) {
+    index.emplace(table.header[c], static_cast<int>(c));
+  }
+  const auto find = [&](const std::string& name) {
+    const auto found = index.find(name);
+    return found == index.end() ? -1 : found->second;
+  };
   int with_z = 0;
   for (int x : ColumnsEndingIn(table, ".x")) {
     const std::string& header = table.header[static_cast<std::size_t>(x)];
     const std::string name = header.substr(0, header.size() - 2);
-    const int y = table.Find(name + ".y");
+    const int y = find(name + ".y");
     if (y < 0) {
       // NODE.x is written only by a run in the plane or in space, always with NODE.y
       throw InputError(table.source + ": column " + Printable(header) + " has no " +
@@ -22,7 +33,7 @@ SpatialColumns FindSpatialColumns(const CsvTable& table) {
                        ".y beside it: a run in the plane or in space writes "
                        "both for every node (NODE.x, NODE.y, and NODE.z in space)");
     }
-    const int z = table.Find(name + ".z");
+    const int z = find(name + ".z");
     with_z += z >= 0 ? 1 : 0;
     columns.nodes.push_back({name, x, y, z});
   }

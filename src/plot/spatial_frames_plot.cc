@@ -51,6 +51,39 @@ FramePoints PointsAt(const CsvTable& table, std::size_t row, const SpatialColumn
   return f;
 }
 
+// Elements drawn as one curve, under one key entry.
+struct Group {
+  std::string label;
+  std::vector<std::size_t> elements;  // indices into the scenario's elements (paths)
+};
+
+std::vector<Group> OnePerElement(const std::vector<ElementPath>& paths) {
+  std::vector<Group> groups;
+  for (std::size_t e = 0; e < paths.size(); ++e) groups.push_back({paths[e].name, {e}});
+  return groups;
+}
+
+// A group per kind of element the scenario holds, in the order of their first element,
+// labelled by the kind and how many there are ("springs (1984)").
+std::vector<Group> GroupsByKind(const Scenario& scenario) {
+  std::vector<Group> groups;
+  std::vector<ElementKind> kinds;
+  for (std::size_t e = 0; e < scenario.elements.size(); ++e) {
+    const ElementKind kind = scenario.elements[e].kind;
+    const auto at = std::find(kinds.begin(), kinds.end(), kind);
+    if (at == kinds.end()) {
+      kinds.push_back(kind);
+      groups.push_back({std::string(ToString(kind)), {e}});
+    } else {
+      groups[static_cast<std::size_t>(at - kinds.begin())].elements.push_back(e);
+    }
+  }
+  for (Group& group : groups) {
+    group.label += "s (" + std::to_string(group.elements.size()) + ")";
+  }
+  return groups;
+}
+
 // "[lo:hi]" around `values`, padded by `pad` on each side.
 std::string Range(double lo, double hi, double pad) {
   std::string range = "[";
@@ -124,6 +157,11 @@ std::string SpatialFramesPlotScript(const CsvTable& table, const std::vector<dou
     y_lo = std::min(y_lo, p.second);
     y_hi = std::max(y_hi, p.second);
   };
+  // beyond kMostKeyedElements the elements are drawn by kind, a curve per kind whose pieces
+  // (one blank line apart) are its elements: a curve per element costs gnuplot a scan of the
+  // block to its data set, which for thousands of elements took minutes
+  const std::vector<Group> groups =
+      paths.size() > kMostKeyedElements ? GroupsByKind(*scenario) : OnePerElement(paths);
   for (std::size_t f = 0; f < rows.size(); ++f) {
     const FramePoints points = PointsAt(table, rows[f], columns, paths);
     s << "$frame" << f << " << EOD\n";
@@ -131,11 +169,14 @@ std::string SpatialFramesPlotScript(const CsvTable& table, const std::vector<dou
       extend(p);
       s << Number(p.first) << " " << Number(p.second) << "\n";
     }
-    for (const auto& path : points.paths) {
-      s << "\n\n";
-      for (const auto& p : path) {
-        extend(p);
-        s << Number(p.first) << " " << Number(p.second) << "\n";
+    for (const Group& group : groups) {
+      s << "\n";
+      for (std::size_t e : group.elements) {
+        s << "\n";
+        for (const auto& p : points.paths[e]) {
+          extend(p);
+          s << Number(p.first) << " " << Number(p.second) << "\n";
+        }
       }
     }
     s << "EOD\n";
@@ -152,19 +193,22 @@ std::string SpatialFramesPlotScript(const CsvTable& table, const std::vector<dou
     << "\nset ytics " << Number(TickStep(y_hi - y_lo + 2 * pad)) << "\n"
     << (columns.dimensions == 3 ? "set xlabel 'x [m] (x-y projection)'\n" : "set xlabel 'x [m]'\n")
     << "set ylabel 'y [m]'\n"
-    << (paths.size() > kMostKeyedElements ? "set key off\n"
-                                          : "set key inside top right opaque box\n");
+    << "set key inside top right opaque box\n";
+  // the nodes' points shrink as they crowd: 1.2 up to 100 nodes, as 1 / sqrt(n) beyond
+  const double nodes = static_cast<double>(columns.nodes.size());
+  const double point_size = nodes <= 100.0 ? 1.2 : std::max(0.2, 12.0 / std::sqrt(nodes));
   for (std::size_t f = 0; f < rows.size(); ++f) {
     s << "set title 't = " << Number(row_times[rows[f]]) << " s'\nplot ";
-    for (std::size_t k = 0; k < paths.size(); ++k) {
-      s << "$frame" << f << " index " << k + 1 << " using 1:2 with lines lw 2 lc " << k % 8 + 1
+    for (std::size_t k = 0; k < groups.size(); ++k) {
+      s << "$frame" << f << " index " << k + 1 << " using 1:2 with lines lw "
+        << (groups[k].elements.size() > 1 ? 1 : 2) << " lc " << k % 8 + 1
         << (f == 0 ? std::string(" title ").append(
-                         GnuplotString(paths[k].name, scenario->source + ": an element's name"))
+                         GnuplotString(groups[k].label, scenario->source + ": an element's name"))
                    : std::string(" notitle"))
         << ", \\\n  ";
     }
-    s << "$frame" << f << " index 0 using 1:2 with points pt 7 ps 1.2 lc rgb '#000000' "
-      << (f == 0 ? "title 'nodes'\nset key off" : "notitle") << "\n";
+    s << "$frame" << f << " index 0 using 1:2 with points pt 7 ps " << Number(point_size)
+      << " lc rgb '#000000' " << (f == 0 ? "title 'nodes'\nset key off" : "notitle") << "\n";
   }
   s << "unset multiplot\n";
   return s.str();

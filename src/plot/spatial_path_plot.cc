@@ -24,6 +24,21 @@ const char* PlaneLabels(int dimensions) {
                          : "set xlabel 'x [m]'\nset ylabel 'y [m]'\n";
 }
 
+// The nodes' paths as one block of (x, y) rows, a data set per node (two blank lines apart):
+// beyond kMostKeyedNodes, one curve of them all rather than a titled curve per node, each of
+// which would cost gnuplot a pass over every column of a wide block.
+void WritePathsBlock(const CsvTable& table, const SpatialColumns& columns, std::ostringstream& s) {
+  s << "$plane << EOD\n";
+  for (std::size_t i = 0; i < columns.nodes.size(); ++i) {
+    if (i > 0) s << "\n\n";
+    for (std::size_t r = 0; r < table.rows.size(); ++r) {
+      s << Number(FiniteValue(table, r, columns.nodes[i].x)) << " "
+        << Number(FiniteValue(table, r, columns.nodes[i].y)) << "\n";
+    }
+  }
+  s << "EOD\n";
+}
+
 }  // namespace
 
 bool IsSpatialTrajectory(const CsvTable& table) { return !FindSpatialColumns(table).nodes.empty(); }
@@ -47,17 +62,29 @@ std::string SpatialPathPlotScript(const CsvTable& table, const PlotOptions& opti
 
   std::ostringstream s;
   s << kFrame;
-  WriteDataBlock(table, plane, "$plane", s);
-  if (!panels.empty()) WriteDataBlock(table, lines.data(), "$network", s);
+  const bool keyed = columns.nodes.size() <= kMostKeyedNodes;
+  if (keyed) {
+    WriteDataBlock(table, plane, "$plane", s);
+  } else {
+    WritePathsBlock(table, columns, s);
+  }
+  if (!panels.empty()) {
+    WriteDataBlock(table, lines.data(), "$network", s);
+    WriteGroupedBlocks(table, lines.data(), panels, "$network", s);
+  }
   const double plane_width = panels.empty() ? 1.0 : 0.5;
   s << "set multiplot title "
     << TitleOf(options, table.source, "the CSV file's name (the default title)") << "\n"
     << "set origin 0,0\nset size ratio -1 " << Number(plane_width) << "," << Number(kTop) << "\n"
     << PlaneLabels(columns.dimensions)
-    << (columns.nodes.size() > kMostKeyedNodes ? "set key off\n"
-                                               : "set key outside bottom center horizontal\n")
-    << "plot ";
-  for (std::size_t i = 0; i < columns.nodes.size(); ++i) {
+    << (keyed ? "set key outside bottom center horizontal\n" : "set key off\n");
+  if (!keyed) {
+    // one curve of a piece per node, each its own colour
+    s << "plot $plane using 1:2:(column(-2) + 1) with lines lw 1 lc variable notitle";
+  } else {
+    s << "plot ";
+  }
+  for (std::size_t i = 0; keyed && i < columns.nodes.size(); ++i) {
     const SpatialNode& node = columns.nodes[i];
     s << (i ? ", \\\n  " : "") << "$plane using " << 2 * i + 2 << ":" << 2 * i + 3
       << " with lines lw 2 title "

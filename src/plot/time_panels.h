@@ -45,12 +45,26 @@ class TimePanels {
   std::vector<int> data_;
 };
 
+// A panel of more lines than this draws them as one curve of many pieces (a block of its own,
+// a piece per line, each its own colour) with one key entry for them all: a titled curve per
+// line costs gnuplot a pass over every column of the block, which for a lattice of 1000
+// elements took minutes, and a key of hundreds of names hides the panel.
+inline constexpr std::size_t kMostKeyedLines = 12;
+
 // The rows of `data`'s columns as the inline block `name` ("$network").
 void WriteDataBlock(const CsvTable& table, const std::vector<int>& data, const std::string& name,
                     std::ostringstream& s);
 
-// Each panel's `plot` of block `name` against time, the last with the time axis labelled;
-// `before` (if set) writes what a panel needs first (its origin and size).
+// The blocks NAME_P of the panels of more than kMostKeyedLines lines: each line's (t, value)
+// rows, the lines apart by two blank lines (gnuplot's data sets), `data` the inline data's
+// CSV columns (TimePanels::data()).
+void WriteGroupedBlocks(const CsvTable& table, const std::vector<int>& data,
+                        const std::vector<Panel>& panels, const std::string& name,
+                        std::ostringstream& s);
+
+// Each panel's `plot` of block `name` against time (a grouped panel of its block NAME_P),
+// the last with the time axis labelled; `before` (if set) writes what a panel needs first
+// (its origin and size).
 void WritePanels(const std::vector<Panel>& panels, const std::string& name, std::ostringstream& s,
                  const std::function<void(std::size_t)>& before = {});
 

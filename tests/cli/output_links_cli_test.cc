@@ -41,19 +41,24 @@ TEST(OutputLinks, EveryVerbRefusesALinkToAFileOutsideItsDirectory) {
   const std::string sweep = Copied(dir, scenarios + "stiffness_sweep.yaml", "sweep.yaml");
   const std::string fit = Copied(dir, scenarios + "fit_indicator.yaml", "fit.yaml");
   const std::string identify = Copied(dir, data + "synthetic.yaml", "synthetic.yaml");
-  for (const char* csv : {"synthetic_passive.csv", "synthetic_active.csv", "synthetic_velocity.csv"}) {
+  for (const char* csv :
+       {"synthetic_passive.csv", "synthetic_active.csv", "synthetic_velocity.csv"}) {
     Copied(dir, data + csv, csv);
   }
   Copied(dir, scenarios + "antagonist_move.yaml", "antagonist_move.yaml");
   std::ofstream(dir + "/problem.yaml")
       << "base: antagonist_move.yaml\nintervals: 4\ncontrols:\n  - {actuator: flexor}\n"
-         "output: {scenario: " + dir + "/out/o.yaml, summary: " + dir + "/out/o.json, "
-         "trajectory: " + dir + "/out/o.csv}\n";
+         "output: {scenario: " +
+             dir + "/out/o.yaml, summary: " + dir +
+             "/out/o.json, "
+             "trajectory: " +
+             dir + "/out/o.csv}\n";
   ASSERT_EQ(testing::RunMusclesim("run " + concentric + " -o " + dir + "/run.csv").exit_code, 0);
   const std::string out = dir + "/out/";
   const std::vector<Verb> verbs = {
       {"run", "r.csv", "run " + concentric + " -o " + out + "r.csv"},
-      {"run --stats", "s.json", "run " + concentric + " -o " + out + "r.csv --stats " + out + "s.json"},
+      {"run --stats", "s.json",
+       "run " + concentric + " -o " + out + "r.csv --stats " + out + "s.json"},
       {"sweep", "sw.csv", "sweep " + sweep + " -o " + out + "sw.csv"},
       {"plot", "p.png", "plot " + dir + "/run.csv -o " + out + "p.png"},
       {"curves", "c.csv", "curves " + concentric + " --length 0.05:0.15:11 -o " + out + "c.csv"},
@@ -71,8 +76,8 @@ TEST(OutputLinks, EveryVerbRefusesALinkToAFileOutsideItsDirectory) {
     const testing::CliOutcome outcome = testing::RunMusclesim(verb.command);
     EXPECT_EQ(outcome.exit_code, 2) << verb.name << ": " << outcome.err;
     EXPECT_THAT(outcome.err, HasSubstr(out + verb.output)) << verb.name;
-    EXPECT_THAT(outcome.err,
-                HasSubstr("is a symbolic link to " + out + "../precious.txt, outside its directory"))
+    EXPECT_THAT(outcome.err, HasSubstr("is a symbolic link to " + out +
+                                       "../precious.txt, outside its directory"))
         << verb.name;
     EXPECT_EQ(testing::ReadText(dir + "/precious.txt"), "precious\n") << verb.name;
     EXPECT_TRUE(fs::is_symlink(out + verb.output)) << verb.name;

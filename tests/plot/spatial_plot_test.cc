@@ -106,8 +106,9 @@ TEST(SpatialPlot, APlanarRunIsSpatialAndANetworkOnALineIsNot) {
   EXPECT_FALSE(IsNetworkTrajectory(PlanarRun()));
   EXPECT_FALSE(IsSpatialTrajectory(
       ReadCsv(testing::WriteTempFile("line.csv", "t,m.position,m.velocity\n0,0.1,0\n"))));
-  // x without y is no node
-  EXPECT_FALSE(IsSpatialTrajectory(ReadCsv(testing::WriteTempFile("x.csv", "t,a.x\n0,1\n"))));
+  // x without y: a planar run's CSV with a column lost, refused rather than drawn without it
+  EXPECT_THROW(IsSpatialTrajectory(ReadCsv(testing::WriteTempFile("x.csv", "t,a.x\n0,1\n"))),
+               InputError);
 }
 
 TEST(SpatialPlot, ThePathFigurePlotsEveryNodesCoordinatesWithEqualScales) {
@@ -247,6 +248,79 @@ TEST(SpatialPlot, ANodeNameEntersTheScriptOnlyAsAString) {
       ReadCsv(testing::WriteTempFile("quote.csv", "t,it's.x,it's.y\n0,0,0\n1,0.1,0.1\n"));
   EXPECT_THAT(SpatialPathPlotScript(run, Options("p.png")),
               HasSubstr("title 'it'.sprintf(\"%c\",39).'s'"));
+}
+
+// A chain of `n` free nodes in the plane, each joined to the last by a spring and beside it
+// a damper (2 n elements), two rows: node k at (k, 0) then (k, 0.1 k).
+std::pair<CsvTable, Scenario> Chain(int n) {
+  CsvTable table;
+  table.source = "chain.csv";
+  table.header = {"t"};
+  Scenario s;
+  s.source = "chain.yaml";
+  s.space = Space{2, {}};
+  for (int k = 0; k < n; ++k) {
+    const std::string name = "n" + std::to_string(k);
+    table.header.push_back(name + ".x");
+    table.header.push_back(name + ".y");
+    s.nodes.push_back(Node::Free(name, 1.0, Coordinates{1.0 * k, 0.0, 0.0}));
+    if (k > 0) {
+      const std::string before = "n" + std::to_string(k - 1);
+      s.elements.push_back(Element::Spring("s" + name, before, name, 1.0, 1.0));
+      s.elements.push_back(Element::Damper("d" + name, before, name, 1.0));
+    }
+  }
+  for (std::size_t e = 0; e < s.elements.size(); ++e) {
+    table.header.push_back(s.elements[e].name + ".length");
+  }
+  for (int r = 0; r < 2; ++r) {
+    std::vector<std::string> row = {std::to_string(r)};
+    for (int k = 0; k < n; ++k) {
+      row.push_back(std::to_string(k));
+      row.push_back(std::to_string(0.1 * k * r));
+    }
+    for (std::size_t e = 0; e < s.elements.size(); ++e) row.push_back("1");
+    table.rows.push_back(row);
+    table.lines.push_back(static_cast<std::size_t>(r) + 2);
+  }
+  return {table, s};
+}
+
+TEST(SpatialPlot, ManyNodesAndElementsAreDrawnAsOneCurveEachAndKeyedByTheirCount) {
+  // 30 nodes, 58 elements: a titled curve per node or element made gnuplot pass over every
+  // column of a wide block for each (minutes for a 32 x 32 lattice); one curve of many
+  // pieces draws them, its data sets one per node (or line)
+  const auto [table, scenario] = Chain(30);
+  const std::string paths = SpatialPathPlotScript(table, Options("paths.png"));
+  const auto plane = Block(paths, "$plane");
+  ASSERT_EQ(plane.size(), 30u);
+  EXPECT_EQ(plane[29], (std::vector<std::vector<double>>{{29, 0}, {29, 2.9}}));
+  EXPECT_THAT(paths, HasSubstr("plot $plane using 1:2:(column(-2) + 1) with lines lw 1 lc "
+                               "variable notitle"));
+  EXPECT_THAT(paths, Not(HasSubstr("title 'n0'")));
+  // the 58 lengths: one block of 58 data sets, one key entry
+  EXPECT_EQ(Block(paths, "$network_0").size(), 58u);
+  EXPECT_THAT(paths, HasSubstr("keyentry with lines lw 1 lc 1 title '58 lines'"));
+  // the frames: elements by kind, each kind one data set of its elements' pieces
+  const std::string frames =
+      SpatialFramesPlotScript(table, {0.0, 1.0}, &scenario, Options("frames.png"));
+  const auto frame = Block(frames, "$frame1");
+  ASSERT_EQ(frame.size(), 3u);  // the nodes, the springs, the dampers
+  EXPECT_EQ(frame[0].size(), 30u);
+  EXPECT_EQ(frame[1].size(), 2u * 29u);  // 29 springs of 2 points each
+  EXPECT_THAT(frames, HasSubstr("title 'springs (29)'"));
+  EXPECT_THAT(frames, HasSubstr("title 'dampers (29)'"));
+  EXPECT_THAT(frames, Not(HasSubstr("title 'sn1'")));
+}
+
+TEST(SpatialPlot, AFewElementsKeepAKeyEntryEach) {
+  const auto [table, scenario] = Chain(5);
+  const std::string frames =
+      SpatialFramesPlotScript(table, {0.0}, &scenario, Options("frames.png"));
+  EXPECT_THAT(frames, HasSubstr("title 'sn1'"));
+  EXPECT_THAT(frames, HasSubstr("title 'dn4'"));
+  const std::string paths = SpatialPathPlotScript(table, Options("paths.png"));
+  EXPECT_THAT(paths, HasSubstr("title 'n4'"));
 }
 
 }  // namespace
