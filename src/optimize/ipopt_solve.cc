@@ -54,9 +54,9 @@ class StallWatch {
   bool Stalled(double objective, double violation) {
     objectives_.push_back(objective);
     violations_.push_back(violation);
-    const auto window = static_cast<std::ptrdiff_t>(kStallIterations);
+    constexpr auto window = static_cast<std::ptrdiff_t>(kStallIterations);
     if (static_cast<std::ptrdiff_t>(violations_.size()) < 2 * window) return false;
-    const auto least = [window](const std::vector<double>& v, std::ptrdiff_t back) {
+    const auto least = [](const std::vector<double>& v, std::ptrdiff_t back) {
       const auto end = v.end() - back * window;
       return *std::min_element(end - window, end);
     };
