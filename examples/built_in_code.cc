@@ -57,7 +57,7 @@ int main() {
 
     SweepSpec spec;
     spec.source = spec.base = "built in code";
-    spec.axes.push_back({"load[0].after", {}, {}, 10.0, 70.0, 4, false, ""});  // N
+    spec.axes.push_back({"load[0].after", {}, {}, 10.0, 70.0, 4, false, "", {}});  // N
     spec.metrics = {Metric::kFinalLength, Metric::kPeakTension};
     const SweepPlan plan = PlanSweep(spec, ParameterPoints(scenario, spec), 2);
     const SweepOutcome outcome = RunSweep(plan, SweepRunOptions{"", 2, false, nullptr});
@@ -69,7 +69,7 @@ int main() {
     IdentifySeriesSpec identify;
     identify.source = identify.scenario = "built in code";
     identify.series.push_back({});
-    identify.parameters.push_back({"model.f_iso", 80.0, std::nullopt, std::nullopt, ""});
+    identify.parameters.push_back({"model.f_iso", 80.0, std::nullopt, std::nullopt, {}});
     const std::vector<MeasuredSeries> series = MeasuredSeriesFromColumns(
         identify, {{{"t", run.values[0]}, {"length", run.values[1]}}}, false);
     const SeriesIdentification fit =

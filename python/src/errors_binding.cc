@@ -1,7 +1,6 @@
 // musclesim.InputError and musclesim.ParameterError (musclesim/_errors.py): the library's
-// exceptions raised in Python with their message, plus the parts a program wants without
-// parsing it.
-#include <regex>
+// exceptions raised in Python with their message and, as attributes, the fields they carry
+// (nothing is parsed from the message).
 #include <optional>
 #include <string>
 
@@ -18,59 +17,32 @@ namespace {
 PyObject* input_error_type = nullptr;
 PyObject* parameter_error_type = nullptr;
 
-struct MessageParts {
-  std::optional<std::string> key;       // the dotted key path
-  std::optional<std::string> location;  // "file:line:column"
-};
-
-// The key and the place an InputError's message names. The readers write them as
-//   KEY = VALUE (FILE:LINE:COLUMN): RULE      (yaml_fields.cc Fail)
-//   KEY (FILE:LINE:COLUMN): RULE              (a missing or unknown key)
-//   FILE:LINE:COLUMN: YAML syntax error: ...
-//   set KEY=VALUE: ...                        (an override that names no value)
-//   ARGUMENT: row N: ...                      (data given as arrays: the argument's name)
-//   --sensitivity PATH: ...                   (a sensitivity's parameter; from Python,
-//   sensitivities PATH: ...                    Scenario.run's `sensitivities`)
-//   FILE:LINE:COLUMN: KEY = VALUE ...         (an entry whose value the reader refers on)
-//   FILE:LINE:COLUMN: axis PATH = VALUE ...   (a sweep's axis: key parameters.PATH)
-// and a value given by an override is placed at "set" (no file position: location None);
-// a dict's entries are placed at the dict's name ("<dict>", "identify_series"): location None.
-MessageParts ParseInputMessage(const std::string& message) {
-  MessageParts parts;
-  static const std::regex located(R"(^(\(top level\)|\S+)(?: = .*?)? \(([^()]*)\): )");
-  static const std::regex syntax(R"(^(.*:\d+:\d+): )");
-  static const std::regex override_text(R"(^(?:set|override) ([^=:\s]+)=)");
-  static const std::regex position(R"(.*:\d+:\d+$)");
-  static const std::regex array_row(R"(^([A-Za-z_][\w.\[\]]*): row \d+: )");
-  static const std::regex sensitivity(R"(^(?:--sensitivity|sensitivities) ([^:\s]+): )");
-  static const std::regex placed_entry(R"(^([^\s:]+(?::\d+:\d+)?): (axis )?([^\s=()]+) = )");
-  std::smatch match;
-  if (std::regex_search(message, match, override_text) ||
-      std::regex_search(message, match, array_row) ||
-      std::regex_search(message, match, sensitivity)) {
-    parts.key = match[1].str();
-  } else if (std::regex_search(message, match, placed_entry)) {
-    if (std::regex_match(match[1].str(), position)) parts.location = match[1].str();
-    parts.key = (match[2].matched ? "parameters." : "") + match[3].str();
-  } else if (std::regex_search(message, match, located)) {
-    if (match[1].str() != "(top level)") parts.key = match[1].str();
-    const std::string where = match[2].str();
-    if (std::regex_match(where, position)) parts.location = where;
-  } else if (std::regex_search(message, match, syntax)) {
-    parts.location = match[1].str();
-  }
-  return parts;
+// Text from an input may hold any bytes: those not UTF-8 become U+FFFD.
+py::object Text(const std::string& text) {
+  return py::reinterpret_steal<py::object>(
+      PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()), "replace"));
 }
 
 py::object OptionalText(const std::optional<std::string>& text) {
-  return text ? py::object(py::str(*text)) : py::object(py::none());
+  return text ? Text(*text) : py::object(py::none());
 }
 
-void RaiseInputError(const std::string& message) {
-  const MessageParts parts = ParseInputMessage(message);
-  py::object error = py::reinterpret_borrow<py::object>(input_error_type)(message);
-  error.attr("key") = OptionalText(parts.key);
-  error.attr("location") = OptionalText(parts.location);
+// The fault's fields as attributes (InputError in core/errors.h): `key` and `location` None
+// where the fault names none.
+void RaiseInputError(const InputError& e) {
+  const InputFault& fault = e.fault();
+  py::object error = py::reinterpret_borrow<py::object>(input_error_type)(e.what());
+  const bool positioned = fault.place && fault.place->positioned();
+  error.attr("key") = fault.key.empty() ? py::object(py::none()) : Text(fault.key);
+  error.attr("location") = positioned ? Text(PlaceText(*fault.place)) : py::object(py::none());
+  error.attr("file") = OptionalText(fault.place ? std::optional(fault.place->file) : std::nullopt);
+  error.attr("line") =
+      positioned ? py::object(py::int_(fault.place->line)) : py::object(py::none());
+  const bool has_column = positioned && fault.place->column > 0;  // a CSV row has none
+  error.attr("column") =
+      has_column ? py::object(py::int_(fault.place->column)) : py::object(py::none());
+  error.attr("value") = OptionalText(fault.value);
+  error.attr("rule") = Text(fault.rule);
   PyErr_SetObject(input_error_type, error.ptr());
 }
 
@@ -109,7 +81,7 @@ void BindErrors(py::module_& m) {
     try {
       if (thrown) std::rethrow_exception(thrown);
     } catch (const InputError& e) {
-      RaiseInputError(e.what());
+      RaiseInputError(e);
     } catch (const ParameterError& e) {
       RaiseParameterError(e);
     }

@@ -45,7 +45,8 @@ std::vector<double> Column(const py::handle& values, const std::string& argument
                            const std::string& column) {
   const Array array = Array::ensure(values);
   if (!array || array.ndim() != 1) {
-    throw InputError(argument + ": " + column + " must be a 1-d sequence of numbers");
+    throw InputError(argument + ": ", InputFault{std::nullopt, argument, std::nullopt,
+                                                 column + " must be a 1-d sequence of numbers"});
   }
   return {array.data(), array.data() + array.size()};
 }
@@ -55,7 +56,8 @@ std::optional<Columns> ReadColumns(const py::object& curve, const std::string& a
   if (curve.is_none()) return std::nullopt;
   const py::tuple pair = curve.cast<py::tuple>();
   if (pair.size() != 2) {
-    throw InputError(argument + ": give a pair (" + x_name + ", tension)");
+    throw InputError(argument + ": ", InputFault{std::nullopt, argument, std::nullopt,
+                                                 "give a pair (" + x_name + ", tension)"});
   }
   return Columns{Column(pair[0], argument, x_name), Column(pair[1], argument, "tension")};
 }
@@ -145,11 +147,12 @@ AnyDict IdentifyCurves(const py::object& passive_curve, const py::object& active
     throw InputError("give at least one of passive, active, velocity");
   }
   if (active_count < 1 || active_count > kMaxActiveCount) {
-    throw InputError("active_count = " + std::to_string(active_count) +
-                     ": must be an integer from 1 to " + std::to_string(kMaxActiveCount));
+    throw InputError(InputFault{std::nullopt, "active_count", std::to_string(active_count),
+                                "must be an integer from 1 to " + std::to_string(kMaxActiveCount)});
   }
   if (f_iso && !kPositiveForceRange.Contains(*f_iso)) {
-    throw InputError("f_iso = " + FormatNumber(*f_iso) + ": " + kPositiveForceRange.Rule());
+    throw InputError(
+        InputFault{std::nullopt, "f_iso", FormatNumber(*f_iso), kPositiveForceRange.Rule()});
   }
 
   Outcome out;

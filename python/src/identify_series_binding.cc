@@ -76,15 +76,17 @@ std::vector<SeriesColumns> ColumnsOf(const AnyList& series, const IdentifySeries
     for (const py::handle item : series[i]) {
       const auto pair = item.cast<std::pair<std::string, py::object>>();
       const Column array = Column::ensure(pair.second);
-      const std::string where = label + "." + pair.first + " (" + spec.series[i].at + "): ";
-      if (!array) throw InputError(where + "must be a 1-D array of numbers");
+      const auto fail = [&](const std::string& rule) {
+        throw InputError(
+            InputFault{spec.series[i].at, label + "." + pair.first, std::nullopt, rule});
+      };
+      if (!array) fail("must be a 1-D array of numbers");
       if (array.ndim() != 1) {
         std::string shape;
         for (py::ssize_t d = 0; d < array.ndim(); ++d) {
           shape += (d ? ", " : "") + std::to_string(array.shape(d));
         }
-        throw InputError(where + "must be a 1-D array of numbers, not one of shape (" + shape +
-                         ")");
+        fail("must be a 1-D array of numbers, not one of shape (" + shape + ")");
       }
       columns.emplace_back(pair.first,
                            std::vector<double>(array.data(), array.data() + array.size()));

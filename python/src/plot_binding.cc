@@ -47,7 +47,8 @@ void Renamed(Call call) {
   try {
     call();
   } catch (const ParameterError& e) {
-    throw InputError(e.path() + " " + e.value() + ": " + e.rule());
+    throw InputError(e.path() + " " + e.value() + ": ",
+                     InputFault{std::nullopt, e.path(), e.value(), e.rule()});
   }
 }
 
@@ -134,9 +135,10 @@ void PlotColumns(const std::vector<std::string>& names, const AnyList& columns,
                  const std::optional<std::string>& script_path) {
   const PlotOptions options = Options(output, title, width, height);
   if (!x && (y || color)) {
-    throw InputError((y ? "y = " + *y : "color = " + *color) +
-                     ": given without x; y (a metric) and color (a swept path) go with x, the "
-                     "swept path of a sweep summary, as the CLI's --y and --color go with --x");
+    throw InputError(InputFault{std::nullopt, y ? "y" : "color", y ? *y : *color,
+                                "given without x; y (a metric) and color (a swept path) go with "
+                                "x, the swept path of a sweep summary, as the CLI's --y and "
+                                "--color go with --x"});
   }
   const std::vector<Column> values = ReadColumns(names, columns);
   py::gil_scoped_release release;

@@ -41,17 +41,8 @@ Scenario PyScenario::Read(const std::vector<std::string>& more) const {
   std::vector<std::string> all = overrides;
   all.insert(all.end(), more.begin(), more.end());
   if (document) return ReadScenario(*document, display, Overrides(all, kOverrideLabel));
-  try {
-    return LoadScenario(path, Overrides(all, kOverrideLabel));
-  } catch (const InputError& e) {
-    // messages name the file as the user gave it
-    std::string message = e.what();
-    for (std::size_t at = message.find(path); at != std::string::npos;
-         at = message.find(path, at + display.size())) {
-      message.replace(at, path.size(), display);
-    }
-    throw InputError(message);
-  }
+  // messages name the file as the user gave it
+  return LoadScenario(path, Overrides(all, kOverrideLabel), display);
 }
 
 std::string PyScenario::ToYaml() const {
@@ -77,7 +68,8 @@ void PyScenario::Set(const std::string& key, const py::object& value) {
         try {
           handle->Set(changed, number);
         } catch (const ParameterError& error) {
-          throw InputError(error.path() + " = " + error.value() + " (set): " + error.rule());
+          throw InputError(
+              InputFault{InputPlace{"set"}, error.path(), error.value(), error.rule()});
         }
       }
       scenario = std::move(changed);

@@ -234,10 +234,10 @@ py::object Sweep(const py::object& spec, int threads, const py::object& output, 
   if (threads < 0) throw py::value_error("threads = " + std::to_string(threads) + ": must be >= 0");
   const SweepPlan plan = PlanOf(spec, threads, name);
   if (plan.spec.trajectories != TrajectoryPolicy::kNone && output.is_none()) {
-    throw InputError("trajectories = " + std::string(ToString(plan.spec.trajectories)) + " (" +
-                     name +
-                     "): the runs' CSVs are written beside the summary: give "
-                     "sweep(..., output=PATH)");
+    throw InputError(InputFault{InputPlace{name}, "trajectories",
+                                std::string(ToString(plan.spec.trajectories)),
+                                "the runs' CSVs are written beside the summary: give "
+                                "sweep(..., output=PATH)"});
   }
   SweepRunOptions options;
   options.output = output.is_none() ? "" : PathText(output, "sweep(output)");

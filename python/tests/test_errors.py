@@ -45,6 +45,10 @@ def test_bad_value_in_a_file(tmp_path):
     column = lines[row].index("n: 0,") + 4  # 1-based column of the 0 after "n: "
     assert error.value.location == "%s:%d:%d" % (path, row + 1, column)
     assert str(error.value).startswith("model.velocity.n = 0 (")
+    # the fields, as the library carries them (nothing parsed from the message)
+    assert (error.value.file, error.value.line, error.value.column) == (path, row + 1, column)
+    assert error.value.value == "0"
+    assert str(error.value).endswith(": " + error.value.rule)
 
 
 def test_unknown_and_missing_keys(tmp_path):
@@ -77,6 +81,7 @@ def test_override_naming_no_value():
         musclesim.load_scenario(CONCENTRIC, set=["model.nothing.n=3"])
     assert error.value.key == "model.nothing.n"
     assert error.value.location is None
+    assert (error.value.file, error.value.line, error.value.value) == ("set", None, "3")
     assert str(error.value).startswith("set model.nothing.n=3: ")
 
 

@@ -41,11 +41,11 @@ Exit codes: 0 success, 2 invalid input or data, 1 anything else.
 // Runs `step` on the curve of `spec`'s block `key` (its CSV `csv`, named at `at`): an input
 // error in that data says which entry of which data file led to it.
 template <typename Step>
-auto InData(const std::string& key, const std::string& csv, const std::string& at, Step step) {
+auto InData(const std::string& key, const std::string& csv, const InputPlace& at, Step step) {
   try {
     return step();
   } catch (const InputError& e) {
-    throw InputError(key + ".csv = " + csv + " (" + at + "): " + e.what());
+    throw InputError(key + ".csv = " + csv + " (" + PlaceText(at) + ")", e);
   }
 }
 

@@ -111,8 +111,8 @@ Scenario LoadSeriesScenario(const IdentifySeriesSpec& spec, const std::vector<st
   try {
     return LoadScenario(spec.scenario, Overrides(sets, "--set"));
   } catch (const InputError& e) {
-    throw InputError(spec.source + ": scenario " + spec.scenario + " (" + spec.scenario_at +
-                     "): " + e.what());
+    throw InputError(
+        spec.source + ": scenario " + spec.scenario + " (" + PlaceText(spec.scenario_at) + ")", e);
   }
 }
 

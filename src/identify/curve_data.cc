@@ -47,9 +47,11 @@ std::size_t MinActivePoints(int count) { return 3 * static_cast<std::size_t>(cou
 
 std::size_t MinVelocityPoints(bool f_iso_fixed) { return f_iso_fixed ? 2 : 3; }
 
-std::vector<DataPoint> CheckedCurve(const std::string& source, const std::vector<double>& x,
-                                    const std::vector<double>& y, const std::string& x_name,
-                                    const std::string& y_name, std::size_t min_points) {
+namespace {
+
+std::vector<DataPoint> CurveOf(const std::string& source, const std::vector<double>& x,
+                               const std::vector<double>& y, const std::string& x_name,
+                               const std::string& y_name, std::size_t min_points) {
   if (x.size() != y.size()) {
     throw InputError(source + ": " + std::to_string(x.size()) + " " + x_name + " values and " +
                      std::to_string(y.size()) + " " + y_name + " values: give one " + y_name +
@@ -66,6 +68,21 @@ std::vector<DataPoint> CheckedCurve(const std::string& source, const std::vector
   }
   curve_rules::RequireSomeTension(source, y_name, data);
   return data;
+}
+
+}  // namespace
+
+std::vector<DataPoint> CheckedCurve(const std::string& source, const std::vector<double>& x,
+                                    const std::vector<double>& y, const std::string& x_name,
+                                    const std::string& y_name, std::size_t min_points) {
+  try {
+    return CurveOf(source, x, y, x_name, y_name, min_points);
+  } catch (const InputError& e) {
+    // values given in memory: the error's key is the argument that gave them
+    InputFault fault = e.fault();
+    fault.key = source;
+    throw e.WithFault(fault);
+  }
 }
 
 }  // namespace musclesim

@@ -110,13 +110,16 @@ SensitivityTable BaselineRun(const IdentifySeriesSpec& spec, const std::vector<s
       try {
         run({spec.parameters[i].path}, {}, {}, {});
       } catch (const InputError& alone) {
-        throw InputError(spec.parameters[i].at + ": parameters[" + std::to_string(i) +
-                         "].path = " + spec.parameters[i].path + " in scenario " + spec.scenario +
-                         ": " + alone.what());
+        const std::string key = "parameters[" + std::to_string(i) + "].path";
+        const SeriesParameterSpec& given = spec.parameters[i];
+        throw InputError(PlaceText(given.at) + ": " + key + " = " + given.path + " ",
+                         InputFault{given.at, key, given.path,
+                                    "in scenario " + spec.scenario + ": " + alone.what()});
       }
     }
-    throw InputError(spec.source + ": scenario " + spec.scenario + " (" + spec.scenario_at +
-                     ") with the parameters of this file: " + e.what());
+    throw InputError(spec.source + ": scenario " + spec.scenario + " (" +
+                         PlaceText(spec.scenario_at) + ") with the parameters of this file",
+                     e);
   }
   if (baseline.stats.status == RunStatus::kFailed || baseline.times.empty()) {
     throw std::runtime_error(spec.source + ": scenario " + spec.scenario +
@@ -155,10 +158,11 @@ std::size_t RunColumn(const std::vector<std::string>& columns, const MeasuredSer
     for (const std::string& name : columns) {
       known += (known.empty() ? "" : ", ") + name;
     }
-    throw InputError("series[" + std::to_string(s) + "] (" + m.at + "): column " + m.columns[c] +
-                     " is not an output the scenario's run differentiates; "
-                     "these are: " +
-                     known);
+    throw InputError(InputFault{m.at, "series[" + std::to_string(s) + "]", std::nullopt,
+                                "column " + m.columns[c] +
+                                    " is not an output the scenario's run differentiates; "
+                                    "these are: " +
+                                    known});
   }
   return static_cast<std::size_t>(found - columns.begin());
 }
@@ -223,10 +227,11 @@ void SetStartsAndBounds(const IdentifySeriesSpec& spec, Setup& setup) {
     if (p.lower) setup.lower[j] = *p.lower;
     if (p.upper) setup.upper[j] = *p.upper;
     if (!(setup.lower[j] <= setup.start[j] && setup.start[j] <= setup.upper[j])) {
-      throw InputError(p.path + " (" + p.at + "): starts at the scenario's value " +
-                       FormatNumber(setup.start[j]) + ", outside its bounds [" +
-                       FormatNumber(setup.lower[j]) + ", " + FormatNumber(setup.upper[j]) +
-                       "]: give a start within them");
+      throw InputError(InputFault{p.at, p.path, std::nullopt,
+                                  "starts at the scenario's value " + FormatNumber(setup.start[j]) +
+                                      ", outside its bounds [" + FormatNumber(setup.lower[j]) +
+                                      ", " + FormatNumber(setup.upper[j]) +
+                                      "]: give a start within them"});
     }
   }
 }

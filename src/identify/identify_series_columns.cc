@@ -16,13 +16,14 @@ MeasuredSeries FromColumns(const SeriesSpec& spec, const SeriesColumns& columns,
                            const std::string& label, bool design) {
   MeasuredSeries series;
   series.at = spec.at;
-  const std::string name = label + " (" + spec.at + ")";
+  const auto fail = [&](const std::string& key, const std::string& rule) {
+    throw InputError(InputFault{spec.at, key, std::nullopt, rule});
+  };
   const bool times_only = design && columns.size() == 1 && columns[0].first == "t";
   if (design && (columns.empty() || times_only) && spec.noise.empty()) {
-    throw InputError(name +
-                     ": neither output columns nor noise levels: the design takes the "
-                     "columns from noise: {COLUMN: SD} (and the times from t, or the "
-                     "scenario's output grid)");
+    fail(label,
+         "neither output columns nor noise levels: the design takes the columns from noise: "
+         "{COLUMN: SD} (and the times from t, or the scenario's output grid)");
   }
   if (design && columns.empty()) {  // the columns from noise, the times from the output grid
     for (const auto& [column, level] : spec.noise) series.columns.push_back(column);
@@ -35,25 +36,22 @@ MeasuredSeries FromColumns(const SeriesSpec& spec, const SeriesColumns& columns,
   for (std::size_t c = 0; c < columns.size(); ++c) {
     header.push_back(columns[c].first);
     if (!seen.insert(columns[c].first).second) {
-      throw InputError(label + "." + columns[c].first + " (" + spec.at +
-                       "): given twice: each column once");
+      fail(label + "." + columns[c].first, "given twice: each column once");
     }
     if (columns[c].first == "t") t_column = c;
   }
   if (t_column == columns.size()) {
-    throw InputError(name +
-                     ": no column t: give the measured times t [s] beside the output "
-                     "columns" +
-                     (design ? " (or, for the design, no columns at all: the "
-                               "scenario's output grid)"
-                             : ""));
+    fail(
+        label,
+        std::string("no column t: give the measured times t [s] beside the output columns") +
+            (design ? " (or, for the design, no columns at all: the scenario's output grid)" : ""));
   }
   const std::size_t rows = columns[t_column].second.size();
   for (const auto& [column, values] : columns) {
     if (values.size() != rows) {
-      throw InputError(label + "." + column + " (" + spec.at + "): has " +
-                       std::to_string(values.size()) + " values where t has " +
-                       std::to_string(rows) + ": every column needs one value per time");
+      fail(label + "." + column, "has " + std::to_string(values.size()) + " values where t has " +
+                                     std::to_string(rows) +
+                                     ": every column needs one value per time");
     }
   }
   std::vector<std::size_t> lines(rows);
@@ -61,7 +59,7 @@ MeasuredSeries FromColumns(const SeriesSpec& spec, const SeriesColumns& columns,
   identify_series_detail::FillValues(
       series, header, t_column, lines,
       [&](std::size_t r, std::size_t c) { return columns[c].second[r]; },
-      SeriesPlace{name, "", label + " (row ", ")"}, times_only);
+      SeriesPlace{spec.at, label, "", ""}, times_only);
   if (times_only) {  // the columns from noise, as a design series without csv
     for (const auto& [column, level] : spec.noise) series.columns.push_back(column);
   }

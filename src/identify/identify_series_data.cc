@@ -19,7 +19,7 @@ void ReadValues(MeasuredSeries& series, const std::string& path, const std::stri
   identify_series_detail::FillValues(
       series, table.header, static_cast<std::size_t>(t_column), table.lines,
       [&](std::size_t r, std::size_t c) { return table.Number(r, static_cast<int>(c)); },
-      SeriesPlace{path, " (" + label + ")", path + ":", ""});
+      SeriesPlace{InputPlace{path}, "", " (" + label + ")", path});
 }
 
 }  // namespace
@@ -36,12 +36,12 @@ std::vector<MeasuredSeries> ReadMeasuredSeries(const IdentifySeriesSpec& spec, b
       try {
         ReadValues(series, *s.csv, label);
       } catch (const InputError& e) {
-        throw InputError(label + ".csv = " + *s.csv + " (" + s.csv_at + "): " + e.what());
+        throw InputError(label + ".csv = " + *s.csv + " (" + PlaceText(s.csv_at) + ")", e);
       }
     } else if (!design) {
-      throw InputError(label + " (" + s.at +
-                       "): needs csv, the measured values, to fit (only "
-                       "an experiment design does without: it takes the columns from noise)");
+      throw InputError(InputFault{s.at, label, std::nullopt,
+                                  "needs csv, the measured values, to fit (only an experiment "
+                                  "design does without: it takes the columns from noise)"});
     } else {
       for (const auto& [column, level] : s.noise) series.columns.push_back(column);
     }

@@ -8,6 +8,15 @@
 
 namespace musclesim::identify_series_detail {
 
+InputPlace SeriesPlace::Row(std::size_t line) const {
+  if (row_file.empty()) return InputPlace{"row " + std::to_string(line)};
+  return InputPlace{row_file, static_cast<int>(line)};
+}
+
+void SeriesPlace::Fail(const InputPlace& place, const std::string& rule) const {
+  throw InputError(InputFault{place, key, std::nullopt, rule});
+}
+
 void FillValues(MeasuredSeries& series, const std::vector<std::string>& header,
                 std::size_t t_column, const std::vector<std::size_t>& lines,
                 const std::function<double(std::size_t, std::size_t)>& value,
@@ -16,19 +25,19 @@ void FillValues(MeasuredSeries& series, const std::vector<std::string>& header,
     if (c != t_column) series.columns.push_back(header[c]);
   }
   if (series.columns.empty() && !outputs_optional) {
-    throw InputError(place.name + ": only a column t" + place.label +
-                     ": give one or more output "
-                     "columns named as the trajectory CSV names them (length, tension_total, ...)");
+    place.Fail(place.whole, "only a column t" + place.label +
+                                ": give one or more output columns named as the trajectory CSV "
+                                "names them (length, tension_total, ...)");
   }
-  if (lines.empty()) throw InputError(place.name + ": no rows" + place.label);
+  if (lines.empty()) place.Fail(place.whole, "no rows" + place.label);
   for (std::size_t r = 0; r < lines.size(); ++r) {
-    const std::string where = place.row_before + std::to_string(lines[r]) + place.row_after + ": ";
+    const InputPlace row = place.Row(lines[r]);
     const double t = value(r, t_column);
-    if (!std::isfinite(t)) throw InputError(where + "t = " + FormatNumber(t) + ": must be finite");
+    if (!std::isfinite(t)) place.Fail(row, "t = " + FormatNumber(t) + ": must be finite");
     if (!series.times.empty() && !(t > series.times.back())) {
-      throw InputError(where + "t = " + FormatNumber(t) + " is not greater than the row before (" +
-                       FormatNumber(series.times.back()) +
-                       "): rows must be sorted by t, without duplicates");
+      place.Fail(row, "t = " + FormatNumber(t) + " is not greater than the row before (" +
+                          FormatNumber(series.times.back()) +
+                          "): rows must be sorted by t, without duplicates");
     }
     series.times.push_back(t);
     series.lines.push_back(lines[r]);
@@ -36,7 +45,7 @@ void FillValues(MeasuredSeries& series, const std::vector<std::string>& header,
       if (c == t_column) continue;
       const double v = value(r, c);
       if (!std::isfinite(v)) {
-        throw InputError(where + header[c] + " = " + FormatNumber(v) + ": must be finite");
+        place.Fail(row, header[c] + " = " + FormatNumber(v) + ": must be finite");
       }
       series.values.push_back(v);
     }
@@ -50,18 +59,20 @@ void ApplyNoise(MeasuredSeries& series, const SeriesSpec& spec, const std::strin
     std::size_t c = 0;
     while (c < series.columns.size() && series.columns[c] != column) ++c;
     if (c == series.columns.size()) {
-      throw InputError(label + ".noise." + column + " (" + spec.at + "): " + holder +
-                       " has no column " + column + "; noise levels name its output columns");
+      throw InputError(InputFault{
+          spec.at, label + ".noise." + column, std::nullopt,
+          holder + " has no column " + column + "; noise levels name its output columns"});
     }
     series.noise[c] = level;
   }
   if (!design) return;
   for (std::size_t c = 0; c < series.columns.size(); ++c) {
     if (std::isnan(series.noise[c])) {
-      throw InputError(label + " (" + spec.at +
-                       "): an experiment design needs a noise level for column " +
-                       series.columns[c] + " (noise: {" + series.columns[c] +
-                       ": SD}): the design's standard errors are in units of the noise");
+      throw InputError(
+          InputFault{spec.at, label, std::nullopt,
+                     "an experiment design needs a noise level for column " + series.columns[c] +
+                         " (noise: {" + series.columns[c] +
+                         ": SD}): the design's standard errors are in units of the noise"});
     }
   }
 }

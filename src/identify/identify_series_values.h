@@ -13,12 +13,15 @@
 
 namespace musclesim::identify_series_detail {
 
-// How messages name a series and its rows.
+// How errors place a series and its rows.
 struct SeriesPlace {
-  std::string name;        // the whole series: the CSV's path, or "series[0] (WHERE)"
-  std::string label;       // after a message on the whole series: " (series[0])", or ""
-  std::string row_before;  // a row is row_before + its line + row_after: "PATH:" and "",
-  std::string row_after;   // or "series[0] (row " and ")"
+  InputPlace whole;      // the whole series: the CSV's path, or its entry's place
+  std::string key;       // "series[0]" for values in memory, "" for a CSV (its rows are placed)
+  std::string label;     // after a message on the whole series: " (series[0])", or ""
+  std::string row_file;  // rows at ROW_FILE:LINE, or at "row LINE" when empty
+
+  InputPlace Row(std::size_t line) const;
+  [[noreturn]] void Fail(const InputPlace& place, const std::string& rule) const;
 };
 
 // Fills series.columns, times, values and lines from a table of `lines.size()` rows whose

@@ -39,10 +39,11 @@ int ReadCoordinate(const yaml::Source& src, const YAML::Node& node, const std::s
   if (!coordinate) {
     if (dimensions == 1) return Measurement::kNoCoordinate;
     // told as Required tells a missing key, at the map that lacks it
-    throw InputError(
-        path + " (" + yaml::Location(src, node) + "): missing required key: in " +
-        std::to_string(dimensions) +
-        " dimensions a node's measured position is one coordinate (coordinate: " + names + ")");
+    throw InputError(InputFault{
+        yaml::Place(src, node), path, std::nullopt,
+        "missing required key: in " + std::to_string(dimensions) +
+            " dimensions a node's measured position is one coordinate (coordinate: " + names +
+            ")"});
   }
   const std::string text = yaml::ReadString(src, coordinate, path);
   int c = Measurement::kNoCoordinate;

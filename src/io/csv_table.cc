@@ -53,7 +53,8 @@ void CsvTable::Require(const std::vector<std::string>& names, const std::string&
     if (Find(name) < 0) missing += (missing.empty() ? "" : ", ") + name;
   }
   if (!missing.empty()) {
-    throw InputError(source + ": missing columns: " + missing + " (" + what + ")");
+    throw InputError(InputFault{InputPlace{source}, "", std::nullopt,
+                                "missing columns: " + missing + " (" + what + ")"});
   }
 }
 
@@ -66,9 +67,9 @@ double CsvTable::Number(std::size_t row, int column) const {
   // only an overflow to +-HUGE_VAL is not the number written
   const bool overflow = errno == ERANGE && std::abs(value) == HUGE_VAL;
   if (text.empty() || end != text.c_str() + text.size() || overflow) {
-    throw InputError(source + ":" + std::to_string(lines[row]) + ": column " +
-                     header[static_cast<std::size_t>(column)] + " = '" + text +
-                     "': must be a number");
+    throw InputError(InputFault{InputPlace{source, static_cast<int>(lines[row])}, "", std::nullopt,
+                                "column " + header[static_cast<std::size_t>(column)] + " = '" +
+                                    text + "': must be a number"});
   }
   return value;
 }
@@ -86,13 +87,16 @@ CsvTable ReadCsv(const std::string& path) {
     }
     return false;
   };
-  if (!next()) throw InputError(path + ": empty file, no header");
+  if (!next()) {
+    throw InputError(InputFault{InputPlace{path}, "", std::nullopt, "empty file, no header"});
+  }
   table.header = SplitRow(line);
   while (next()) {
     std::vector<std::string> fields = SplitRow(line);
     if (fields.size() != table.header.size()) {
-      throw InputError(path + ":" + std::to_string(number) + ": " + std::to_string(fields.size()) +
-                       " fields where the header has " + std::to_string(table.header.size()));
+      throw InputError(InputFault{InputPlace{path, static_cast<int>(number)}, "", std::nullopt,
+                                  std::to_string(fields.size()) + " fields where the header has " +
+                                      std::to_string(table.header.size())});
     }
     table.rows.push_back(std::move(fields));
     table.lines.push_back(number);

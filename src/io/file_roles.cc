@@ -52,32 +52,35 @@ void CheckOutputFiles(const std::vector<FileRole>& inputs, const std::vector<Fil
   std::unordered_map<std::string, const FileRole*> written, partials;
   for (const FileRole& out : outputs) {
     if (Skipped(out.path)) continue;
-    const std::string said = out.name + " " + out.path + ": ";
+    // told as "NAME PATH: rule", the output's name (a flag, a key) and path its fields
+    const auto fail = [&out](const std::string& rule) {
+      throw InputError(out.name + " " + out.path + ": ",
+                       InputFault{std::nullopt, out.name, out.path, rule});
+    };
     std::error_code error;
     if (fs::is_directory(out.path, error)) {
-      throw InputError(said + "is a directory: name a file in it");
+      fail("is a directory: name a file in it");
     }
     const fs::path directory = fs::path(out.path).parent_path();
     if (!directory.empty() && !fs::is_directory(directory, error)) {
-      throw InputError(said + "the directory " + directory.string() +
-                       " does not exist: create it, or write elsewhere");
+      fail("the directory " + directory.string() +
+           " does not exist: create it, or write elsewhere");
     }
     if (IsExistingNonRegular(out.path)) continue;
     if (const std::string outside = LinkOutsideItsDirectory(out.path); !outside.empty()) {
-      throw InputError(said + "is a symbolic link to " + outside +
-                       ", outside its directory: musclesim writes no output through it (remove "
-                       "the link, or name another file)");
+      fail("is a symbolic link to " + outside +
+           ", outside its directory: musclesim writes no output through it (remove "
+           "the link, or name another file)");
     }
     const std::string key = FileKey(out.path), partial = FileKey(Partial(out.path));
     for (const auto& [input, in] : input_keys) {
       if (input.empty()) continue;
       if (key == input) {
-        throw InputError(said + "is " + in->name + " (" + in->path +
-                         "), an input: write the output elsewhere");
+        fail("is " + in->name + " (" + in->path + "), an input: write the output elsewhere");
       }
       if (partial == input) {
-        throw InputError(said + "is written through " + Partial(out.path) + ", which is " +
-                         in->name + " (" + in->path + "), an input: write the output elsewhere");
+        fail("is written through " + Partial(out.path) + ", which is " + in->name + " (" +
+             in->path + "), an input: write the output elsewhere");
       }
     }
     const auto earlier = [](const std::unordered_map<std::string, const FileRole*>& files,
@@ -89,8 +92,7 @@ void CheckOutputFiles(const std::vector<FileRole>& inputs, const std::vector<Fil
     if (same == nullptr) same = earlier(written, partial);
     if (same == nullptr) same = earlier(partials, key);
     if (same != nullptr) {
-      throw InputError(said + same->name + " " + same->path +
-                       " names the same file: give each output its own");
+      fail(same->name + " " + same->path + " names the same file: give each output its own");
     }
     if (!key.empty()) written.emplace(key, &out);
     if (!partial.empty()) partials.emplace(partial, &out);

@@ -36,7 +36,7 @@ SeriesSpec ReadSeries(const yaml::Source& src, const YAML::Node& node, const std
     yaml::RequireMap(src, node, path, {"csv", "noise"});
   }
   SeriesSpec series;
-  series.at = yaml::Location(src, node);
+  series.at = yaml::Place(src, node);
   if (values == SeriesValues::kCsvFiles && !node["csv"] && !node["noise"]) {
     yaml::Fail(src, node, path, yaml::Describe(node),
                "give csv (the measured values, to fit) or noise (the columns and their noise "
@@ -46,7 +46,7 @@ SeriesSpec ReadSeries(const yaml::Source& src, const YAML::Node& node, const std
     const std::string file = yaml::ReadString(src, csv, path + ".csv");
     if (file.empty()) yaml::Fail(src, csv, path + ".csv", "\"\"", "must name a CSV file");
     series.csv = Relative(base_dir, file);
-    series.csv_at = yaml::Location(src, csv);
+    series.csv_at = yaml::Place(src, csv);
   }
   if (const YAML::Node noise = node["noise"]) {
     if (!noise.IsMap() || noise.size() == 0) {
@@ -66,7 +66,7 @@ SeriesParameterSpec ReadParameter(const yaml::Source& src, const YAML::Node& nod
                                   const std::string& path) {
   yaml::RequireMap(src, node, path, {"path", "start", "bounds"});
   SeriesParameterSpec parameter;
-  parameter.at = yaml::Location(src, node);
+  parameter.at = yaml::Place(src, node);
   const YAML::Node name = yaml::Required(src, node, path, "path");
   parameter.path = yaml::ReadString(src, name, path + ".path");
   const auto steps = SplitKeyPath(parameter.path);
@@ -124,7 +124,7 @@ IdentifySeriesSpec ReadSpec(const yaml::Source& src, const YAML::Node& root,
   const std::string file = yaml::ReadString(src, scenario, "scenario");
   if (file.empty()) yaml::Fail(src, scenario, "scenario", "\"\"", "must name a scenario file");
   spec.scenario = Relative(base_dir, file);
-  spec.scenario_at = yaml::Location(src, scenario);
+  spec.scenario_at = yaml::Place(src, scenario);
 
   const YAML::Node series = yaml::Required(src, root, "", "series");
   if (!series.IsSequence() || series.size() == 0) {

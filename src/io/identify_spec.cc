@@ -11,16 +11,16 @@ IdentifySpec LoadIdentifySpec(const std::string& path) {
   const yaml::Source src{path};
   yaml::RequireMap(src, root, "", {"passive", "active", "velocity"});
   if (root.size() == 0) {
-    yaml::Fail(src, root, "(top level)", "{}", "give at least one of passive, active, velocity");
+    yaml::Fail(src, root, "", "{}", "give at least one of passive, active, velocity");
   }
   IdentifySpec spec;
   spec.source = path;
   // a CSV path relative to the data file, and where the data file names it
-  const auto csv = [&](const YAML::Node& block, const std::string& name, std::string& at) {
+  const auto csv = [&](const YAML::Node& block, const std::string& name, InputPlace& at) {
     const YAML::Node node = yaml::Required(src, block, name, "csv");
     const std::string file = yaml::ReadString(src, node, name + ".csv");
     if (file.empty()) yaml::Fail(src, node, name + ".csv", "\"\"", "must name a CSV file");
-    at = yaml::Location(src, node);
+    at = yaml::Place(src, node);
     return (std::filesystem::path(path).parent_path() / file).lexically_normal().string();
   };
   if (const YAML::Node passive = root["passive"]) {

@@ -221,11 +221,12 @@ void ReadActuator(const yaml::Source& src, const YAML::Node& item, const std::st
     // neither an input of its own nor a controller's: perhaps a misspelt `drives`
     std::string drivers;
     for (const auto& [name, unused] : driven) drivers += (drivers.empty() ? "" : ", ") + name;
-    throw InputError(Join(path, "activation") + " (" + yaml::Location(src, item) +
-                     "): missing required key: give activation (u(t) itself) or "
-                     "excitation (e(t), driving u through activation_dynamics), or name " +
-                     e.name + " in a controller's drives or co_contraction.actuators" +
-                     (drivers.empty() ? "" : " (the controllers drive: " + drivers + ")"));
+    throw InputError(InputFault{
+        yaml::Place(src, item), Join(path, "activation"), std::nullopt,
+        "missing required key: give activation (u(t) itself) or excitation (e(t), driving u "
+        "through activation_dynamics), or name " +
+            e.name + " in a controller's drives or co_contraction.actuators" +
+            (drivers.empty() ? "" : " (the controllers drive: " + drivers + ")")});
   }
   ActuatorDrive drive = ReadActuatorDrive(src, item, path, item["initial_activation"],
                                           Join(path, "initial_activation"), t_start, t_end);
@@ -320,10 +321,11 @@ Coordinates ReadDirection(const yaml::Source& src, const YAML::Node& item, const
     return {1.0, 0.0, 0.0};
   }
   if (!item["direction"]) {
-    throw InputError(at + " (" + yaml::Location(src, item) + "): missing required key: in " +
-                     std::to_string(dimensions) +
-                     " dimensions a load acts along a direction, a list of " +
-                     std::to_string(dimensions) + " numbers " + CoordinateNames(dimensions, "d"));
+    throw InputError(InputFault{yaml::Place(src, item), at, std::nullopt,
+                                "missing required key: in " + std::to_string(dimensions) +
+                                    " dimensions a load acts along a direction, a list of " +
+                                    std::to_string(dimensions) + " numbers " +
+                                    CoordinateNames(dimensions, "d")});
   }
   const YAML::Node node = item["direction"];
   const Coordinates d = ReadCoordinateList(src, node, at, dimensions, kDirectionRange, "d");

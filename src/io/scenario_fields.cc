@@ -184,8 +184,8 @@ ActuatorDrive ReadActuatorDrive(const yaml::Source& src, const YAML::Node& owner
                  "excitation; activation: gives u(t) itself");
     }
     if (!activation) {
-      throw InputError(activation_path + " (" + yaml::Location(src, owner) +
-                       "): missing required key: " + kEither);
+      throw InputError(InputFault{yaml::Place(src, owner), activation_path, std::nullopt,
+                                  std::string("missing required key: ") + kEither});
     }
     if (initial) {
       yaml::Fail(src, initial, initial_path, yaml::Describe(initial),

@@ -84,10 +84,15 @@ ActuatorScenarioSpec LoadActuatorScenarioSpec(const std::string& path, const Ove
 }
 
 Scenario LoadScenario(const std::string& path, const Overrides& overrides) {
+  return LoadScenario(path, overrides, path);
+}
+
+Scenario LoadScenario(const std::string& path, const Overrides& overrides,
+                      const std::string& name) {
   // read once, so no clone is needed: the nodes not overridden keep their file positions
-  YAML::Node root = yaml::LoadFile(path);
-  yaml::ApplyOverrides(root, overrides, path);
-  return Read(yaml::Source{path, overrides.label}, root);
+  YAML::Node root = yaml::Parse(name, yaml::ReadText(path));
+  yaml::ApplyOverrides(root, overrides, name);
+  return Read(yaml::Source{name, overrides.label}, root);
 }
 
 }  // namespace musclesim

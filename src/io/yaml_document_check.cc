@@ -15,8 +15,8 @@ namespace musclesim::yaml {
 
 namespace {
 
-std::string Place(const std::string& path, const YAML::Mark& mark) {
-  return path + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
+InputPlace Place(const std::string& path, const YAML::Mark& mark) {
+  return {path, mark.line + 1, mark.column + 1};
 }
 
 // The parse events of one document, with the open maps and lists on a stack. Events never
@@ -63,10 +63,11 @@ class DocumentChecker : public YAML::EventHandler {
       RequirePrintable(Join(map.path, *value), mark, *value);
       const auto [seen, inserted] = map.keys.emplace(*value, mark);
       if (!inserted) {
-        throw InputError(Join(map.path, *value) + " (" + Place(path_, mark) +
-                         "): duplicate key: already given at line " +
-                         std::to_string(seen->second.line + 1) + ", column " +
-                         std::to_string(seen->second.column + 1) + "; a map holds each key once");
+        throw InputError(InputFault{Place(path_, mark), Join(map.path, *value), std::nullopt,
+                                    "duplicate key: already given at line " +
+                                        std::to_string(seen->second.line + 1) + ", column " +
+                                        std::to_string(seen->second.column + 1) +
+                                        "; a map holds each key once"});
       }
       map.key = *value;
       map.expecting_key = false;
@@ -82,12 +83,12 @@ class DocumentChecker : public YAML::EventHandler {
                         const std::string& text) const {
     const std::size_t i = FirstControlCharacter(text);
     if (i == std::string::npos) return;
-    throw InputError(
-        (at.empty() ? std::string("(top level)") : at) + " = " + text + " (" + Place(path_, mark) +
-        "): holds the control character " +
-        PrintableText(text.substr(i, static_cast<unsigned char>(text[i]) == 0xc2 ? 2 : 1)) +
-        " at byte " + std::to_string(i + 1) +
-        "; names and values are printable text (a tab or a newline is allowed)");
+    throw InputError(InputFault{
+        Place(path_, mark), at, text,
+        "holds the control character " +
+            PrintableText(text.substr(i, static_cast<unsigned char>(text[i]) == 0xc2 ? 2 : 1)) +
+            " at byte " + std::to_string(i + 1) +
+            "; names and values are printable text (a tab or a newline is allowed)"});
   }
 
   void Open(const YAML::Mark& mark, bool is_map) {
@@ -113,8 +114,8 @@ class DocumentChecker : public YAML::EventHandler {
 
   [[noreturn]] void KeyNotAName(const YAML::Mark& mark, const std::string& what) const {
     const std::string& at = open_.back().path;
-    throw InputError((at.empty() ? std::string("(top level)") : at) + " (" + Place(path_, mark) +
-                     "): a key is " + what + "; keys must be plain names");
+    throw InputError(InputFault{Place(path_, mark), at, std::nullopt,
+                                "a key is " + what + "; keys must be plain names"});
   }
 
   static std::string Join(const std::string& path, const std::string& key) {
@@ -160,13 +161,14 @@ void CheckDocument(const std::string& path, const std::string& text) {
   DocumentCounter counter;
   try {
     if (parser.HandleNextDocument(counter)) {
-      throw InputError(Place(path, counter.start) +
-                       ": a second YAML document (after ---); a file holds one document");
+      throw InputError(InputFault{Place(path, counter.start), "", std::nullopt,
+                                  "a second YAML document (after ---); a file holds one document"});
     }
   } catch (const YAML::DeepRecursion& e) {
-    throw InputError(Place(path, e.mark) + ": " + TooDeep(e.depth()));
+    throw InputError(InputFault{Place(path, e.mark), "", std::nullopt, TooDeep(e.depth())});
   } catch (const YAML::ParserException& e) {
-    throw InputError(Place(path, e.mark) + ": YAML syntax error: " + e.msg);
+    throw InputError(
+        InputFault{Place(path, e.mark), "", std::nullopt, "YAML syntax error: " + e.msg});
   }
 }
 

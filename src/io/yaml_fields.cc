@@ -13,10 +13,14 @@
 
 namespace musclesim::yaml {
 
-std::string Location(const Source& source, const YAML::Node& node) {
+InputPlace Place(const Source& source, const YAML::Node& node) {
   const YAML::Mark mark = node.Mark();
-  if (mark.is_null()) return source.unplaced;  // an override's, or a document built in code
-  return source.file + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
+  if (mark.is_null()) return {source.unplaced};  // an override's, or a document built in code
+  return {source.file, mark.line + 1, mark.column + 1};
+}
+
+std::string Location(const Source& source, const YAML::Node& node) {
+  return PlaceText(Place(source, node));
 }
 
 std::string Describe(const YAML::Node& node) {
@@ -34,7 +38,7 @@ std::string Describe(const YAML::Node& node) {
 
 void Fail(const Source& source, const YAML::Node& node, const std::string& path,
           const std::string& value, const std::string& rule) {
-  throw InputError(path + " = " + value + " (" + Location(source, node) + "): " + rule);
+  throw InputError(InputFault{Place(source, node), path, value, rule});
 }
 
 std::string Join(const std::string& path, const std::string& key) {
@@ -45,13 +49,11 @@ void RequireMap(const Source& source, const YAML::Node& node, const std::string&
                 std::initializer_list<const char*> allowed,
                 std::initializer_list<const char*> extra) {
   if (!node.IsMap()) {
-    Fail(source, node, path.empty() ? "(top level)" : path, Describe(node),
-         "must be a map of keys");
+    Fail(source, node, path, Describe(node), "must be a map of keys");
   }
   for (const auto& entry : node) {
     if (!entry.first.IsScalar()) {
-      Fail(source, entry.first, path.empty() ? "(top level)" : path, Describe(entry.first),
-           "keys must be plain names");
+      Fail(source, entry.first, path, Describe(entry.first), "keys must be plain names");
     }
     const std::string key = entry.first.Scalar();
     bool known = false;
@@ -65,8 +67,8 @@ void RequireMap(const Source& source, const YAML::Node& node, const std::string&
       list += ", " + std::string(name);
     }
     if (!known) {
-      throw InputError(Join(path, key) + " (" + Location(source, entry.first) +
-                       "): unknown key; allowed here: " + list);
+      throw InputError(InputFault{Place(source, entry.first), Join(path, key), std::nullopt,
+                                  "unknown key; allowed here: " + list});
     }
   }
 }
@@ -75,7 +77,8 @@ YAML::Node Required(const Source& source, const YAML::Node& map, const std::stri
                     const char* key) {
   const YAML::Node node = map[key];
   if (!node.IsDefined()) {
-    throw InputError(Join(path, key) + " (" + Location(source, map) + "): missing required key");
+    throw InputError(
+        InputFault{Place(source, map), Join(path, key), std::nullopt, "missing required key"});
   }
   return node;
 }
@@ -165,21 +168,30 @@ void Relocate(const Source& source, const YAML::Node& block, const std::string& 
        error.value(), error.rule());
 }
 
+namespace {
+
+InputPlace MarkPlace(const std::string& file, const YAML::Mark& mark) {
+  return {file, mark.line + 1, mark.column + 1};
+}
+
+}  // namespace
+
 std::string ReadText(const std::string& path) { return ReadInputFile(path, "a YAML file"); }
 
 YAML::Node Parse(const std::string& path, const std::string& text) {
   try {
     YAML::Node root = YAML::Load(text);
     // an empty document has no position; say so here rather than at an unplaced node
-    if (!root.IsDefined() || root.IsNull()) throw InputError(path + ": the file is empty");
+    if (!root.IsDefined() || root.IsNull()) {
+      throw InputError(InputFault{InputPlace{path}, "", std::nullopt, "the file is empty"});
+    }
     CheckDocument(path, text);
     return root;
   } catch (const YAML::DeepRecursion& e) {
-    throw InputError(path + ":" + std::to_string(e.mark.line + 1) + ":" +
-                     std::to_string(e.mark.column + 1) + ": " + TooDeep(e.depth()));
+    throw InputError(InputFault{MarkPlace(path, e.mark), "", std::nullopt, TooDeep(e.depth())});
   } catch (const YAML::ParserException& e) {
-    throw InputError(path + ":" + std::to_string(e.mark.line + 1) + ":" +
-                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
+    throw InputError(
+        InputFault{MarkPlace(path, e.mark), "", std::nullopt, "YAML syntax error: " + e.msg});
   }
 }
 

@@ -22,9 +22,13 @@ struct Source {
   std::string unplaced = "override";
 };
 
-// Throws InputError for `path` at `node`'s position.
+// Throws InputError for `path` at `node`'s position (an empty path: the document's top level).
 [[noreturn]] void Fail(const Source& source, const YAML::Node& node, const std::string& path,
                        const std::string& value, const std::string& rule);
+
+// Where a node sits: the file, line and column (1-based), or the source's label for a node
+// without a position.
+InputPlace Place(const Source& source, const YAML::Node& node);
 
 // "file:line:column" of a node (1-based), or the bare file name without a position.
 std::string Location(const Source& source, const YAML::Node& node);

@@ -24,23 +24,28 @@ void ApplyOverrides(YAML::Node root, const Overrides& overrides, const std::stri
 
 void ApplyOverride(YAML::Node root, const std::string& text, const std::string& file,
                    const std::string& label) {
+  // messages are headed "LABEL KEY=VALUE: "; the fault names the key and value given
   const std::string head = label + " " + text + ": ";
   const std::size_t eq = text.find('=');
   if (eq == std::string::npos) {
-    throw InputError(head + "expected KEY=VALUE, e.g. model.velocity.n=4");
+    throw InputError(head, InputFault{InputPlace{label}, "", text,
+                                      "expected KEY=VALUE, e.g. model.velocity.n=4"});
   }
   const std::string path = text.substr(0, eq);
   const std::string value = text.substr(eq + 1);
+  const auto fail = [&](const std::string& rule) {
+    throw InputError(head, InputFault{InputPlace{label}, path, value, rule});
+  };
   // names and values reach messages and the terminal, as a file's do (yaml_document_check.h)
   if (const std::size_t at = FirstControlCharacter(text); at != std::string::npos) {
-    throw InputError(head + "holds a control character at byte " + std::to_string(at + 1) +
-                     "; names and values are printable text");
+    fail("holds a control character at byte " + std::to_string(at + 1) +
+         "; names and values are printable text");
   }
   const auto split = SplitKeyPath(path);
   if (!split || split->empty()) {
-    throw InputError(head + "'" + path +
-                     "' is not a dotted key path such as model.velocity.n or load[0].value (names "
-                     "joined by dots, list indices in brackets from 0 to 999999999)");
+    fail("'" + path +
+         "' is not a dotted key path such as model.velocity.n or load[0].value (names "
+         "joined by dots, list indices in brackets from 0 to 999999999)");
   }
   const std::vector<KeyPathStep>& steps = *split;
   YAML::Node node = root;  // handles share the document: assignment below edits it
@@ -57,28 +62,26 @@ void ApplyOverride(YAML::Node root, const std::string& text, const std::string& 
         next.reset(node);  // a single load written as a map is load[0]
       } else if (node.IsMap()) {
         const std::string map = walked.empty() ? "the file's top level" : walked;
-        throw InputError(head + map + " is a map, not a list, in " + file +
-                         ": an index on it has no meaning (name a key instead)");
+        fail(map + " is a map, not a list, in " + file +
+             ": an index on it has no meaning (name a key instead)");
       } else if (!node.IsSequence() || step.index >= node.size()) {
-        throw InputError(head + here + " does not exist in " + file);
+        fail(here + " does not exist in " + file);
       } else {
         next.reset(node[step.index]);
       }
     } else {
       if (!node.IsMap()) {
-        throw InputError(head + (walked.empty() ? "the file" : walked) + " is not a map in " +
-                         file);
+        fail((walked.empty() ? "the file" : walked) + " is not a map in " + file);
       }
       if (!node[step.key] && !last) {
         if (!IsOptionalBlock(step.key)) {
-          throw InputError(head + here + " does not exist in " + file);
+          fail(here + " does not exist in " + file);
         }
         node[step.key] = YAML::Node(YAML::NodeType::Map);  // filled by the steps below
       }
       if (last) {
         if (node[step.key] && !node[step.key].IsScalar() && !node[step.key].IsNull()) {
-          throw InputError(head + here +
-                           " is a map or list; an override replaces single values only");
+          fail(here + " is a map or list; an override replaces single values only");
         }
         node[step.key] = YAML::Node(value);
         return;
@@ -87,8 +90,7 @@ void ApplyOverride(YAML::Node root, const std::string& text, const std::string& 
     }
     if (last) {
       if (!next.IsScalar()) {
-        throw InputError(head + here +
-                         " is a map or list; an override replaces single values only");
+        fail(here + " is a map or list; an override replaces single values only");
       }
       next = YAML::Node(value);
       return;

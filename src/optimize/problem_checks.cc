@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "musclesim/core/errors.h"
@@ -13,6 +14,12 @@
 namespace musclesim {
 
 namespace {
+
+// A fault of the problem's entry `key`; the problem's reader places it in the file.
+[[noreturn]] void Fail(const std::string& key, std::optional<std::string> value,
+                       const std::string& rule) {
+  throw InputError(InputFault{std::nullopt, key, std::move(value), rule});
+}
 
 std::string Entry(const char* list, std::size_t i, const char* key) {
   std::string path = list;
@@ -28,13 +35,13 @@ std::string Range(double lower, double upper) {
 
 void CheckWeight(double weight, const std::string& path) {
   if (!(std::isfinite(weight) && weight >= 0.0)) {
-    throw InputError(path + " = " + FormatNumber(weight) + ": must be a finite number >= 0");
+    Fail(path, FormatNumber(weight), "must be a finite number >= 0");
   }
 }
 
 void CheckBounds(double lower, double upper, const std::string& path) {
   if (std::isnan(lower) || std::isnan(upper) || lower > upper) {
-    throw InputError(path + " = " + Range(lower, upper) + ": must be numbers with lower <= upper");
+    Fail(path, Range(lower, upper), "must be numbers with lower <= upper");
   }
 }
 
@@ -57,18 +64,20 @@ class ColumnResolver {
         known.append(c > 0 ? ", " : "").append(names[c]);
       }
       if (names.size() > 12) known += ", ...";
-      throw InputError(path + ": '" + column +
-                       "' is no differentiated column of the scenario (a free node's "
-                       "coordinate or velocity, an element's length or tension, ...): " +
-                       known);
+      Fail(path, std::nullopt,
+           "'" + column +
+               "' is no differentiated column of the scenario (a free node's "
+               "coordinate or velocity, an element's length or tension, ...): " +
+               known);
     }
     const int c = static_cast<int>(found - names.begin());
     double sign = 1.0;
     const int state = columns_.StateOf(static_cast<std::size_t>(c), sign);
     if (free_time_ && state < 0) {
-      throw InputError(path + ": '" + column +
-                       "': with a free final time, a column must be a state (a free node's "
-                       "coordinate or velocity, an activation with dynamics)");
+      Fail(path, std::nullopt,
+           "'" + column +
+               "': with a free final time, a column must be a state (a free node's "
+               "coordinate or velocity, an activation with dynamics)");
     }
     const auto known = std::find(index_.columns.begin(), index_.columns.end(), c);
     if (known != index_.columns.end()) return static_cast<int>(known - index_.columns.begin());
@@ -87,37 +96,37 @@ class ColumnResolver {
 
 void CheckControls(const OptimalControlProblem& problem, const NetworkSystem& system,
                    ProblemIndex& index) {
-  if (problem.controls.empty()) throw InputError("controls: at least one control is needed");
+  if (problem.controls.empty()) Fail("controls", std::nullopt, "at least one control is needed");
   if (system.junction_count() > 0) {
     // the optimiser's gradients come from sensitivities, which do not take junctions yet
-    throw InputError(
-        "scenario: a network with a massless junction (a node of mass 0) cannot "
-        "be optimised yet: its sensitivities are not derived; give the node a mass");
+    Fail("scenario", std::nullopt,
+         "a network with a massless junction (a node of mass 0) cannot "
+         "be optimised yet: its sensitivities are not derived; give the node a mass");
   }
   for (std::size_t j = 0; j < problem.controls.size(); ++j) {
     const ControlSpec& control = problem.controls[j];
     const std::string path = Entry("controls", j, "actuator");
     const int e = system.FindElement(control.actuator);
     if (e < 0 || system.elements()[static_cast<std::size_t>(e)].kind != ElementKind::kActuator) {
-      throw InputError(path + ": '" + control.actuator + "' is no actuator of the scenario");
+      Fail(path, std::nullopt, "'" + control.actuator + "' is no actuator of the scenario");
     }
     const Element& element = system.elements()[static_cast<std::size_t>(e)];
     if (element.controlled) {
-      throw InputError(path + ": '" + control.actuator +
-                       "' is driven by a controller: a control of the optimiser must be free");
+      Fail(path, std::nullopt,
+           "'" + control.actuator +
+               "' is driven by a controller: a control of the optimiser must be free");
     }
     if (std::find(index.elements.begin(), index.elements.end(), e) != index.elements.end()) {
-      throw InputError(path + ": '" + control.actuator + "' is controlled twice");
+      Fail(path, std::nullopt, "'" + control.actuator + "' is controlled twice");
     }
     if (!(0.0 <= control.lower && control.lower <= control.upper && control.upper <= 1.0)) {
-      throw InputError(Entry("controls", j, "bounds") + " = " +
-                       Range(control.lower, control.upper) +
-                       ": must satisfy 0 <= lower <= upper <= 1");
+      Fail(Entry("controls", j, "bounds"), Range(control.lower, control.upper),
+           "must satisfy 0 <= lower <= upper <= 1");
     }
     CheckWeight(control.effort_weight, Entry("controls", j, "effort.weight"));
     if (control.effort_power != 2 && control.effort_power != 3) {
-      throw InputError(Entry("controls", j, "effort.power") + " = " +
-                       std::to_string(control.effort_power) + ": must be 2 or 3");
+      Fail(Entry("controls", j, "effort.power"), std::to_string(control.effort_power),
+           "must be 2 or 3");
     }
     index.elements.push_back(e);
     index.activation_states.push_back(system.ActivationStateIndex(e));
@@ -133,32 +142,34 @@ void CheckTracking(const OptimalControlProblem& problem, ColumnResolver& columns
   for (std::size_t k = 0; k < problem.tracking.size(); ++k) {
     const TrackingTerm& term = problem.tracking[k];
     if (problem.final_time) {
-      throw InputError(Entry("tracking", k, "column") +
-                       ": a tracking term needs a fixed final time (its reference is a "
-                       "record over a fixed span)");
+      Fail(Entry("tracking", k, "column"), std::nullopt,
+           "a tracking term needs a fixed final time (its reference is a "
+           "record over a fixed span)");
     }
     index.tracked.push_back(columns.Resolve(term.column, Entry("tracking", k, "column")));
     CheckWeight(term.weight, Entry("tracking", k, "weight"));
     const std::vector<TablePoint>& r = term.reference;
     const std::string at = Entry("tracking", k, "reference");
-    if (r.size() < 2) throw InputError(at + ": needs at least 2 points (t, value)");
+    if (r.size() < 2) Fail(at, std::nullopt, "needs at least 2 points (t, value)");
     if (r.size() > kMaxReferencePoints) {
-      throw InputError(at + ": " + std::to_string(r.size()) + " points, more than the " +
-                       std::to_string(kMaxReferencePoints) +
-                       " a reference may hold: each point cuts the cost's quadrature (5 samples "
-                       "of the trajectory and its sensitivities), so every iteration grows with "
-                       "them; resample the record");
+      Fail(at, std::nullopt,
+           std::to_string(r.size()) + " points, more than the " +
+               std::to_string(kMaxReferencePoints) +
+               " a reference may hold: each point cuts the cost's quadrature (5 samples "
+               "of the trajectory and its sensitivities), so every iteration grows with "
+               "them; resample the record");
     }
     for (std::size_t i = 0; i < r.size(); ++i) {
       if (!std::isfinite(r[i].t) || !std::isfinite(r[i].value) || (i > 0 && r[i].t <= r[i - 1].t)) {
-        throw InputError(at + ", point " + std::to_string(i) + " (t = " + FormatNumber(r[i].t) +
-                         "): times must be finite and strictly increasing, values finite");
+        Fail(at, std::nullopt,
+             "point " + std::to_string(i) + " (t = " + FormatNumber(r[i].t) +
+                 "): times must be finite and strictly increasing, values finite");
       }
     }
     if (r.front().t > problem.scenario.t_start || r.back().t < problem.scenario.t_end) {
-      throw InputError(at + ": covers " + Range(r.front().t, r.back().t) +
-                       " s but must cover the span " +
-                       Range(problem.scenario.t_start, problem.scenario.t_end) + " s");
+      Fail(at, std::nullopt,
+           "covers " + Range(r.front().t, r.back().t) + " s but must cover the span " +
+               Range(problem.scenario.t_start, problem.scenario.t_end) + " s");
     }
   }
 }
@@ -182,11 +193,11 @@ void RequireRoomForGrid(const OptimalControlProblem& problem, const NetworkSyste
       problem.intervals * (4096.0 + 64.0 * (n + k) * (n + k)) + 8.0 * samples * columns * (k + 1.0);
   const double allowed = AllocatableBytes();
   if (bytes <= allowed) return;
-  throw InputError("intervals = " + std::to_string(problem.intervals) +
-                   ": the program needs about " + MebibytesText(bytes) + " for its " +
-                   std::to_string(problem.intervals) + " intervals of " + FormatNumber(n) +
-                   " states, more than the " + MebibytesText(allowed) +
-                   " this process may allocate: use fewer intervals");
+  Fail("intervals", std::to_string(problem.intervals),
+       "the program needs about " + MebibytesText(bytes) + " for its " +
+           std::to_string(problem.intervals) + " intervals of " + FormatNumber(n) +
+           " states, more than the " + MebibytesText(allowed) +
+           " this process may allocate: use fewer intervals");
 }
 
 void CheckParameters(const OptimalControlProblem& problem, ProblemIndex& index) {
@@ -197,13 +208,14 @@ void CheckParameters(const OptimalControlProblem& problem, ProblemIndex& index) 
       try {
         return FindParameter(problem.scenario, free.path);
       } catch (const ParameterError& e) {
-        throw InputError(path + ": " + e.what());
+        Fail(path, std::nullopt, e.what());
       }
     }();
     if (handle.is_setting() || handle.is_integer()) {
-      throw InputError(path + ": '" + free.path +
-                       "' is a setting of the run or an integer, not a number the optimiser "
-                       "can move");
+      Fail(path, std::nullopt,
+           "'" + free.path +
+               "' is a setting of the run or an integer, not a number the optimiser "
+               "can move");
     }
     CheckBounds(free.lower, free.upper, Entry("parameters", k, "bounds"));
     for (std::size_t j = 0; j < index.elements.size(); ++j) {
@@ -211,9 +223,10 @@ void CheckParameters(const OptimalControlProblem& problem, ProblemIndex& index) 
       const std::string element = "elements[" + std::to_string(index.elements[j]) + "].";
       for (const char* drive : {"activation", "excitation"}) {
         if (handle.network_path().rfind(element + drive + ".", 0) == 0) {
-          throw InputError(path + ": '" + free.path + "' is part of the " + drive + " of " +
-                           problem.controls[j].actuator +
-                           ", which the control replaces: it cannot be a free parameter");
+          Fail(path, std::nullopt,
+               "'" + free.path + "' is part of the " + drive + " of " +
+                   problem.controls[j].actuator +
+                   ", which the control replaces: it cannot be a free parameter");
         }
       }
     }
@@ -223,14 +236,13 @@ void CheckParameters(const OptimalControlProblem& problem, ProblemIndex& index) 
       try {
         handle.Set(copy, bound);
       } catch (const ParameterError& e) {
-        throw InputError(Entry("parameters", k, "bounds") + " = " + Range(free.lower, free.upper) +
-                         ": " + FormatNumber(bound) + " is no valid value of " + free.path + ": " +
-                         e.rule());
+        Fail(Entry("parameters", k, "bounds"), Range(free.lower, free.upper),
+             FormatNumber(bound) + " is no valid value of " + free.path + ": " + e.rule());
       }
     }
     for (const Parameter& other : index.parameters) {
       if (other.network_path() == handle.network_path()) {
-        throw InputError(path + ": '" + free.path + "' is free twice");
+        Fail(path, std::nullopt, "'" + free.path + "' is free twice");
       }
     }
     // resolved once here, so that a parameter no run can differentiate (one that moves an
@@ -244,8 +256,7 @@ void CheckParameters(const OptimalControlProblem& problem, ProblemIndex& index) 
 
 ProblemIndex CheckProblem(const OptimalControlProblem& problem) {
   if (problem.intervals < 1 || problem.intervals > 100000) {
-    throw InputError("intervals = " + std::to_string(problem.intervals) +
-                     ": must be an integer in [1, 100000]");
+    Fail("intervals", std::to_string(problem.intervals), "must be an integer in [1, 100000]");
   }
   const NetworkSystem system = problem.scenario.Build();
   ProblemIndex index;
@@ -253,9 +264,8 @@ ProblemIndex CheckProblem(const OptimalControlProblem& problem) {
   if (const std::optional<FreeFinalTime>& time = problem.final_time) {
     CheckBounds(time->lower, time->upper, "final_time.bounds");
     if (!(std::isfinite(time->upper) && time->lower > problem.scenario.t_start)) {
-      throw InputError("final_time.bounds = " + Range(time->lower, time->upper) +
-                       ": must be finite and after the start, " +
-                       FormatNumber(problem.scenario.t_start) + " s");
+      Fail("final_time.bounds", Range(time->lower, time->upper),
+           "must be finite and after the start, " + FormatNumber(problem.scenario.t_start) + " s");
     }
     CheckWeight(time->weight, "final_time.weight");
     for (const double bound : {time->lower, time->upper}) {
@@ -265,9 +275,9 @@ ProblemIndex CheckProblem(const OptimalControlProblem& problem) {
       try {
         copy.Validate();
       } catch (const ParameterError& e) {
-        throw InputError("final_time.bounds = " + Range(time->lower, time->upper) + ": " +
-                         FormatNumber(bound) +
-                         " s as the final time breaks the scenario: " + e.path() + ": " + e.rule());
+        Fail("final_time.bounds", Range(time->lower, time->upper),
+             FormatNumber(bound) + " s as the final time breaks the scenario: " + e.path() + ": " +
+                 e.rule());
       }
     }
   }
@@ -288,7 +298,7 @@ ProblemIndex CheckProblem(const OptimalControlProblem& problem) {
     index.terminals.push_back(columns.Resolve(term.column, Entry("terminal", k, "column")));
     CheckWeight(term.weight, Entry("terminal", k, "weight"));
     if (!std::isfinite(term.target)) {
-      throw InputError(Entry("terminal", k, "target") + ": must be a finite number");
+      Fail(Entry("terminal", k, "target"), std::nullopt, "must be a finite number");
     }
   }
   CheckParameters(problem, index);

@@ -81,8 +81,9 @@ FinalValue ReadFinal(const yaml::Source& src, const YAML::Node& node, const std:
     std::tie(final.lower, final.upper) =
         ReadBounds(src, node["bounds"], yaml::Join(path, "bounds"), any);
   } else {
-    throw InputError(path + " (" + yaml::Location(src, node) +
-                     "): missing required key: value (an equality) or bounds [lower, upper]");
+    throw InputError(InputFault{yaml::Place(src, node), path, std::nullopt,
+                                "missing required key: value (an equality) or bounds [lower, "
+                                "upper]"});
   }
   return final;
 }
@@ -364,11 +365,9 @@ void CheckAgainstScenario(const yaml::Source& src, const YAML::Node& root,
   try {
     CheckProblem(problem);
   } catch (const InputError& e) {
-    const std::string message = e.what();
-    const std::size_t colon = message.find_first_of(" :");
-    const std::string entry = message.substr(0, colon);
-    const YAML::Node node = NodeAt(root, entry);
-    throw InputError(entry + " (" + yaml::Location(src, node) + ")" + message.substr(colon));
+    InputFault fault = e.fault();
+    fault.place = yaml::Place(src, NodeAt(root, fault.key));
+    throw e.WithFault(fault);
   }
 }
 

@@ -53,6 +53,16 @@ NearbyPoint BuildAt(const Scenario& scenario, const Parameter& parameter, double
 
 // The points of the quotient: central where both sides are valid values, else one-sided of
 // second order (a damping of 0 cannot go below it).
+// A fault of the parameter, its message headed by `where` (and " = VALUE" when its value is
+// at fault).
+[[noreturn]] void Fail(const std::string& where, const Parameter& parameter,
+                       std::optional<double> value, const std::string& rule) {
+  const std::optional<std::string> text =
+      value ? std::optional<std::string>(FormatNumber(*value)) : std::nullopt;
+  throw InputError((text ? where + " = " + *text : where) + ": ",
+                   InputFault{std::nullopt, parameter.path(), text, rule});
+}
+
 std::vector<NearbyPoint> StencilPoints(const Scenario& scenario, const BuiltScenario& base,
                                        const Parameter& parameter, double value, double size,
                                        const std::string& where) {
@@ -72,17 +82,17 @@ std::vector<NearbyPoint> StencilPoints(const Scenario& scenario, const BuiltScen
   }
   if (below.built && above.built) return {std::move(below), std::move(above)};
   if (!above.built && !below.built) {
-    throw InputError(where + " = " + FormatNumber(value) +
-                     ": cannot change continuously (an integer, or a value at the edge of its "
-                     "range on both sides), so it has no sensitivity; near it: " +
-                     below.error);
+    Fail(where, parameter, value,
+         "cannot change continuously (an integer, or a value at the edge of its range on both "
+         "sides), so it has no sensitivity; near it: " +
+             below.error);
   }
   const double direction = above.built ? 1.0 : -1.0;
   NearbyPoint near = above.built ? std::move(above) : std::move(below);
   NearbyPoint far = BuildAt(scenario, parameter, value + 2.0 * direction * h);
   if (!far.built) {
-    throw InputError(where + " = " + FormatNumber(value) +
-                     ": no neighbourhood of valid values to differentiate in: " + far.error);
+    Fail(where, parameter, value,
+         "no neighbourhood of valid values to differentiate in: " + far.error);
   }
   return {NearbyPoint{value, base, ""}, std::move(near), std::move(far)};
 }
@@ -99,11 +109,10 @@ void AddDifferenceQuotient(const Scenario& scenario, const BuiltScenario& base,
     const NetworkSystem& moved = *point.built->system;
     if (moved.Breakpoints(scenario.t_start, scenario.t_end) != breakpoints ||
         moved.state_size() != base.system->state_size()) {
-      throw InputError(where +
-                       ": moves when an input jumps (a breakpoint of an activation, excitation, "
-                       "load or motion): the sensitivity jumps there (docs/model.md 10), which "
-                       "musclesim does not compute; differentiate by a value the times do not "
-                       "depend on");
+      Fail(where, parameter, std::nullopt,
+           "moves when an input jumps (a breakpoint of an activation, excitation, load or "
+           "motion): the sensitivity jumps there (docs/model.md 10), which musclesim does not "
+           "compute; differentiate by a value the times do not depend on");
     }
     values.push_back(point.value);
   }
@@ -157,17 +166,14 @@ ResolvedParameter ResolveParameter(const Scenario& scenario, const BuiltScenario
                                    const Parameter& parameter, const std::string& where,
                                    double size) {
   if (parameter.is_setting()) {
-    throw InputError(where +
-                     ": a setting of the run, not a parameter of its dynamics: it has "
-                     "no sensitivity");
+    Fail(where, parameter, std::nullopt,
+         "a setting of the run, not a parameter of its dynamics: it has no sensitivity");
   }
   ResolvedParameter out;
   out.path = parameter.path();
   out.value = parameter.Get(scenario);
   if (!std::isfinite(out.value)) {
-    throw InputError(where + " = " + FormatNumber(out.value) +
-                     ": not a finite number: it has "
-                     "no sensitivity");
+    Fail(where, parameter, out.value, "not a finite number: it has no sensitivity");
   }
   // a massless junction's velocity moves with the parameter through its balance, which the
   // closed forms leave out: a difference quotient re-solves it at p +- h

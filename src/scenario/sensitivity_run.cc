@@ -57,12 +57,16 @@ Parameter HandleOf(const Scenario& scenario, const SensitivityRequest& request,
     if (error.rule().empty() || error.rule().rfind("is not a key path", 0) == 0) {
       // the path as given, cut short: it may be anything
       const std::string shown = path.size() > 80 ? path.substr(0, 80) + "..." : path;
-      throw InputError(label + "'" + shown +
-                       "': not a dotted key path such as model.f_iso or load[0].value (names "
-                       "without commas, quotes or control characters, indices in brackets)");
+      throw InputError(label + "'" + shown + "': ",
+                       InputFault{std::nullopt, "", path,
+                                  "not a dotted key path such as model.f_iso or load[0].value "
+                                  "(names without commas, quotes or control characters, indices "
+                                  "in brackets)"});
     }
-    throw InputError(label + path + ": " + error.rule() +
-                     ": a sensitivity needs a number of the scenario's dynamics");
+    throw InputError(label + path + ": ",
+                     InputFault{std::nullopt, path, std::nullopt,
+                                error.rule() + ": a sensitivity needs a number of the scenario's "
+                                               "dynamics"});
   }
 }
 

@@ -3,6 +3,7 @@
 // together when each is valid alone.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,14 +14,19 @@
 
 namespace musclesim {
 
-// The message for point `index` of `spec`, whose values `numbers` at `handles` (one per
+// The error for point `index` of `spec`, whose values `numbers` at `handles` (one per
 // axis in `axes`, the indices into spec.axes) made `base` fail with `error`.
-std::string ExplainInvalidPoint(const SweepSpec& spec, long index, const Scenario& base,
-                                const std::vector<std::size_t>& axes,
-                                const std::vector<Parameter>& handles,
-                                const std::vector<double>& numbers, const ParameterError& error);
+InputError ExplainInvalidPoint(const SweepSpec& spec, long index, const Scenario& base,
+                               const std::vector<std::size_t>& axes,
+                               const std::vector<Parameter>& handles,
+                               const std::vector<double>& numbers, const ParameterError& error);
 
 // An axis's place for messages: its location in a file, or "parameters.PATH".
 std::string AxisPlace(const SweepAxis& axis);
+
+// A fault of an axis (key parameters.PATH, at the axis's place), told as "PLACE: axis PATH"
+// then " = VALUE " when `value` is given, else ": ", then the rule.
+InputError AxisError(const SweepAxis& axis, const std::optional<std::string>& value,
+                     const std::string& rule);
 
 }  // namespace musclesim

@@ -22,7 +22,8 @@ SweepAxis ReadAxis(const yaml::Source& src, const YAML::Node& key, const YAML::N
                    SweepMode mode) {
   SweepAxis axis;
   axis.path = key.as<std::string>();
-  axis.location = yaml::Location(src, key);
+  axis.place = yaml::Place(src, key);
+  axis.location = PlaceText(axis.place);
   const std::string where = "parameters." + axis.path;
   if (node.IsSequence()) {
     if (node.size() == 0) yaml::Fail(src, node, where, "[]", "needs at least one value");
@@ -125,9 +126,9 @@ void ReadSampling(const yaml::Source& src, const YAML::Node& root, SweepSpec& sp
   // no default seed: a documented, reproducible sweep names the seed it draws from
   const YAML::Node seed = root["seed"];
   if (!seed) {
-    throw InputError("seed (" + yaml::Location(src, root) +
-                     "): missing required key: mode random draws every value from a hash "
-                     "of (seed, index, axis); give an integer >= 0");
+    throw InputError(InputFault{yaml::Place(src, root), "seed", std::nullopt,
+                                "missing required key: mode random draws every value from a "
+                                "hash of (seed, index, axis); give an integer >= 0"});
   }
   const double value = yaml::ReadNumber(src, seed, "seed");
   if (!(value >= 0 && value <= 9.007199254740992e15) || value != std::floor(value)) {

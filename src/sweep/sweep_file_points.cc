@@ -55,7 +55,7 @@ class FilePointFactory final : public PointFactory {
           MetricElementIndex(point, spec.metric_options.element);
         }
       } catch (const InputError& e) {
-        throw InputError(PointErrorExplainer(spec, *template_).Explain(index, e.what()).message);
+        throw PointErrorExplainer(spec, *template_).Explain(index, e).error;
       }
     }
     if (numeric_.empty()) return point;
@@ -67,8 +67,8 @@ class FilePointFactory final : public PointFactory {
     try {
       SetParameters(point, handles, numbers);
     } catch (const ParameterError& error) {
-      throw InputError(ExplainInvalidPoint(spec, index, overrides.empty() ? *base_ : point,
-                                           numeric_, handles, all, error));
+      throw ExplainInvalidPoint(spec, index, overrides.empty() ? *base_ : point, numeric_, handles,
+                                all, error);
     }
     return point;
   }
@@ -94,8 +94,7 @@ class FilePointFactory final : public PointFactory {
     try {
       for (std::size_t k : numeric_) handles.push_back(point.parameter(spec.axes[k].path));
     } catch (const ParameterError& error) {
-      throw InputError(AxisPlace(spec.axes[numeric_[handles.size()]]) + ": axis " +
-                       spec.axes[numeric_[handles.size()]].path + ": " + error.rule());
+      throw AxisError(spec.axes[numeric_[handles.size()]], std::nullopt, error.rule());
     }
     return handles;
   }

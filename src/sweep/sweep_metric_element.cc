@@ -29,10 +29,10 @@ std::string ResolveMetricElement(const yaml::Source& src, const YAML::Node& root
                                     ? "no actuator"
                                     : std::to_string(elements.actuators.size()) + " actuators (" +
                                           CommaSeparated(elements.actuators) + ")";
-  throw InputError(
-      "metric_options.element (" + yaml::Location(src, at) + "): missing: the network " +
-      spec.base + " has " + actuators +
-      ", so name the element the metrics read, one of: " + CommaSeparated(elements.all));
+  throw InputError(InputFault{
+      yaml::Place(src, at), "metric_options.element", std::nullopt,
+      "missing: the network " + spec.base + " has " + actuators +
+          ", so name the element the metrics read, one of: " + CommaSeparated(elements.all)});
 }
 
 }  // namespace musclesim

@@ -10,11 +10,6 @@ namespace musclesim {
 
 namespace {
 
-// "line:column" (1-based) of a node.
-std::string Position(const YAML::Mark& mark) {
-  return std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
-}
-
 // The position of the deepest node of `root` that the key path `path` (model.velocity.n,
 // load[0].after) reaches; the key itself rather than its value when `want_key` and the path
 // ends in a key that exists. Messages name such paths first; "(top level)" reaches the root.
@@ -77,7 +72,7 @@ PointErrorExplainer::PointErrorExplainer(const SweepSpec& spec, const ScenarioTe
   try {
     Check({});
   } catch (const InputError& e) {
-    base_error_ = e.what();
+    base_error_ = e;
   }
 }
 
@@ -88,43 +83,35 @@ void PointErrorExplainer::Check(const std::vector<std::string>& overrides) const
   }
 }
 
-std::string PointErrorExplainer::Restore(const std::string& message) const {
-  // an overridden copy of the base places every node at 1:1; find the node its path names
-  const std::string lost = "(" + spec_.base + ":1:1)";
-  const std::size_t at = message.find(lost);
-  if (at == std::string::npos) return message;
-  const std::string path = message.substr(0, message.find(' '));
-  const bool about_key = message.compare(at + lost.size(), 13, ": unknown key") == 0;
-  const YAML::Mark mark = Reach(base_root_, path, about_key);
-  std::string restored = message;
-  restored.replace(at, lost.size(), "(" + spec_.base + ":" + Position(mark) + ")");
-  return restored;
-}
-
-std::string PointErrorExplainer::WithoutBasePosition(const std::string& message) const {
-  // "(BASE:12:7)" -> "(BASE)", wherever it occurs
-  const std::string open = "(" + spec_.base + ":";
-  std::string out = message;
-  for (std::size_t at = out.find(open); at != std::string::npos; at = out.find(open, at + 1)) {
-    const std::size_t close = out.find(')', at);
-    if (close == std::string::npos) break;
-    const std::string inside = out.substr(at + open.size(), close - at - open.size());
-    if (inside.find_first_not_of("0123456789:") == std::string::npos) {
-      out.erase(at + open.size() - 1, close - (at + open.size() - 1));
-    }
+InputError PointErrorExplainer::Restore(const InputError& error) const {
+  // an overridden copy of the base places every node at 1:1; find the node its key names
+  // (the key itself for a fault of no value: an unknown key)
+  InputFault fault = error.fault();
+  const InputPlace lost{spec_.base, 1, 1};
+  if (!fault.place || fault.place->file != lost.file || fault.place->line != lost.line ||
+      fault.place->column != lost.column) {
+    return error;
   }
-  return out;
+  const YAML::Mark mark = Reach(base_root_, fault.key, !fault.value.has_value());
+  fault.place = InputPlace{spec_.base, mark.line + 1, mark.column + 1};
+  return error.WithFault(fault);
 }
 
-bool PointErrorExplainer::IsBaseError(const std::string& message) const {
-  return base_error_ && WithoutBasePosition(message) == WithoutBasePosition(*base_error_);
+bool PointErrorExplainer::IsBaseError(const InputError& error) const {
+  // the same fault wherever in the base it is placed
+  const auto unplaced = [this](const InputError& e) {
+    InputFault fault = e.fault();
+    if (fault.place && fault.place->file == spec_.base) fault.place = InputPlace{spec_.base};
+    return std::string(e.WithFault(fault).what());
+  };
+  return base_error_ && unplaced(error) == unplaced(*base_error_);
 }
 
 PointErrorExplainer::Explanation PointErrorExplainer::Explain(long index,
-                                                              const std::string& error) const {
-  const std::string base_fault = spec_.base + " (the base scenario of the sweep " + spec_.source +
-                                 ") is not a valid scenario: ";
-  if (IsBaseError(error)) return {base_fault + *base_error_, true};
+                                                              const InputError& error) const {
+  const std::string base_fault =
+      spec_.base + " (the base scenario of the sweep " + spec_.source + ") is not a valid scenario";
+  if (IsBaseError(error)) return {InputError(base_fault, *base_error_), true};
 
   // the first axis whose value alone breaks the base is the culprit
   const std::vector<std::string> values = PointValues(spec_, index);
@@ -133,21 +120,23 @@ PointErrorExplainer::Explanation PointErrorExplainer::Explain(long index,
     try {
       Check({overrides[k]});
     } catch (const InputError& e) {
-      if (IsBaseError(e.what())) continue;  // that value leaves the base's own error as it is
+      if (IsBaseError(e)) continue;  // that value leaves the base's own error as it is
       const SweepAxis& axis = spec_.axes[k];
-      return {axis.location + ": axis " + axis.path + " = " + values[k] + " makes point " +
-                  std::to_string(index) + " (" + Describe(spec_, values) +
-                  ") an invalid scenario: " + Restore(e.what()),
+      const std::string rule = "makes point " + std::to_string(index) + " (" +
+                               Describe(spec_, values) +
+                               ") an invalid scenario: " + Restore(e).what();
+      return {InputError(axis.location + ": axis " + axis.path + " = " + values[k] + " ",
+                         InputFault{axis.place, "parameters." + axis.path, values[k], rule}),
               false};
     }
   }
-  if (base_error_) return {base_fault + *base_error_, true};
+  if (base_error_) return {InputError(base_fault, *base_error_), true};
   // no single value is wrong: their combination is
   const std::string where = spec_.axes.empty() ? spec_.source : spec_.axes.front().location;
-  return {
-      where + ": point " + std::to_string(index) + " (" + Describe(spec_, values) +
-          ") is not a valid scenario, though each of its values is valid alone: " + Restore(error),
-      false};
+  return {InputError(where + ": point " + std::to_string(index) + " (" + Describe(spec_, values) +
+                         ") is not a valid scenario, though each of its values is valid alone",
+                     Restore(error)),
+          false};
 }
 
 }  // namespace musclesim

@@ -26,29 +26,28 @@ class PointErrorExplainer {
   PointErrorExplainer(const SweepSpec& spec, const ScenarioTemplate& base);
 
   struct Explanation {
-    std::string message;         // complete and printable, as an InputError's [-]
+    InputError error;            // what to throw: the axis, the base or the combination named
     bool base_at_fault = false;  // the base scenario is invalid whatever the axes [-]
   };
 
-  // `error` is the message of the InputError that instantiating point `index` threw.
-  // Validates the base with single axis values to find the culprit (only on failure,
-  // so its cost does not matter).
-  Explanation Explain(long index, const std::string& error) const;
+  // `error` is the InputError that instantiating point `index` threw. Validates the base
+  // with single axis values to find the culprit (only on failure, so its cost does not
+  // matter).
+  Explanation Explain(long index, const InputError& error) const;
 
  private:
-  // The message with the base file's positions restored where the scenario reader could
-  // not know them (an overridden copy of the base has none: yaml-cpp's Clone drops them).
-  std::string Restore(const std::string& message) const;
-  // The message without any position in the base file, for comparing errors.
-  std::string WithoutBasePosition(const std::string& message) const;
-  bool IsBaseError(const std::string& message) const;
+  // The error with the base file's position restored where the scenario reader could not
+  // know it (an overridden copy of the base has none: yaml-cpp's Clone drops them).
+  InputError Restore(const InputError& error) const;
+  // The base scenario's own fault, wherever in the base it is placed.
+  bool IsBaseError(const InputError& error) const;
   // Reads the base with `overrides` and checks it has the metrics' element (InputError).
   void Check(const std::vector<std::string>& overrides) const;
 
   const SweepSpec& spec_;
   const ScenarioTemplate& base_;
-  YAML::Node base_root_;                   // the base file as written, with positions
-  std::optional<std::string> base_error_;  // the base scenario's own error, if any
+  YAML::Node base_root_;                  // the base file as written, with positions
+  std::optional<InputError> base_error_;  // the base scenario's own error, if any
 };
 
 }  // namespace musclesim

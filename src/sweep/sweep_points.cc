@@ -43,7 +43,7 @@ class ParameterPointFactory final : public PointFactory {
     } catch (const ParameterError& error) {
       std::vector<std::size_t> axes(handles_.size());
       for (std::size_t k = 0; k < axes.size(); ++k) axes[k] = k;
-      throw InputError(ExplainInvalidPoint(spec, index, base_, axes, handles_, numbers, error));
+      throw ExplainInvalidPoint(spec, index, base_, axes, handles_, numbers, error);
     }
     return point;
   }
@@ -118,10 +118,17 @@ std::string AxisPlace(const SweepAxis& axis) {
   return axis.location.empty() ? "parameters." + axis.path : axis.location;
 }
 
-std::string ExplainInvalidPoint(const SweepSpec& spec, long index, const Scenario& base,
-                                const std::vector<std::size_t>& axes,
-                                const std::vector<Parameter>& handles,
-                                const std::vector<double>& numbers, const ParameterError& error) {
+InputError AxisError(const SweepAxis& axis, const std::optional<std::string>& value,
+                     const std::string& rule) {
+  const std::string head =
+      AxisPlace(axis) + ": axis " + axis.path + (value ? " = " + *value + " " : ": ");
+  return InputError(head, InputFault{axis.place, "parameters." + axis.path, value, rule});
+}
+
+InputError ExplainInvalidPoint(const SweepSpec& spec, long index, const Scenario& base,
+                               const std::vector<std::size_t>& axes,
+                               const std::vector<Parameter>& handles,
+                               const std::vector<double>& numbers, const ParameterError& error) {
   const std::vector<std::string> values = PointValues(spec, index);
   const std::string point = std::to_string(index) + " (" + Describe(spec, values) + ")";
   // the first axis whose value alone makes the base invalid is the culprit
@@ -132,27 +139,28 @@ std::string ExplainInvalidPoint(const SweepSpec& spec, long index, const Scenari
       handles[j].Set(alone, numbers[k]);
     } catch (const ParameterError& alone) {
       const SweepAxis& axis = spec.axes[k];
-      return AxisPlace(axis) + ": axis " + axis.path + " = " + values[k] + " makes point " + point +
-             " an invalid scenario: " + alone.what();
+      return AxisError(axis, values[k],
+                       "makes point " + point + " an invalid scenario: " + alone.what());
     }
   }
   const std::string where = spec.axes.empty() ? spec.source : AxisPlace(spec.axes.front());
-  return where + ": point " + point +
-         " is not a valid scenario, though each of its values is valid alone: " + error.what();
+  return InputError(
+      where + ": point " + point +
+          " is not a valid scenario, though each of its values is valid alone",
+      InputError(InputFault{std::nullopt, error.path(), error.value(), error.rule()}));
 }
 
 std::unique_ptr<PointFactory> ParameterPoints(Scenario base, const SweepSpec& spec) {
   std::vector<Parameter> handles;
   for (const SweepAxis& axis : spec.axes) {
     if (!axis.is_numeric()) {
-      throw InputError(AxisPlace(axis) + ": axis " + axis.path +
-                       " has values that are not numbers: a parameter handle sets numbers");
+      throw AxisError(axis, std::nullopt,
+                      "has values that are not numbers: a parameter handle sets numbers");
     }
     try {
       handles.push_back(base.parameter(axis.path));
     } catch (const ParameterError& error) {
-      throw InputError(AxisPlace(axis) + ": axis " + axis.path + ": " + error.rule() + " (" +
-                       base.source + ")");
+      throw AxisError(axis, std::nullopt, error.rule() + " (" + base.source + ")");
     }
   }
   return std::make_unique<ParameterPointFactory>(std::move(base), std::move(handles));

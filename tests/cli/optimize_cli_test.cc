@@ -95,7 +95,7 @@ TEST(OptimizeCli, BadProblemsExitTwoNamingThePlace) {
        "with a free final time, a column must be a state"},
       {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\n"
        "final_time: {bounds: [-1.0, 2.0]}\n",
-       "final_time.bounds (problem.yaml:4:22) = [-1, 2]: must be finite and after the start"},
+       "final_time.bounds = [-1, 2] (problem.yaml:4:22): must be finite and after the start"},
       // an output never replaces an input, nor another output, and its directory exists
       {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\n"
        "output: {scenario: antagonist_move.yaml}\n",
@@ -117,7 +117,7 @@ TEST(OptimizeCli, BadProblemsExitTwoNamingThePlace) {
        "which the control replaces: it cannot be a free parameter"},
       {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\nparameters:\n"
        "  - {path: \"nodes[1].mass\", bounds: [0, 20]}\n",
-       "parameters[0].bounds (problem.yaml:5:37) = [0, 20]: 0 is no valid value of nodes[1].mass"},
+       "parameters[0].bounds = [0, 20] (problem.yaml:5:37): 0 is no valid value of nodes[1].mass"},
       {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\n"
        "final_time: {bounds: [1.0e+8, 1.0e+9]}\n",
        "as the final time breaks the scenario: output.interval"},

@@ -83,7 +83,7 @@ void ExpectIdentified(const Kind& kind) {
   IdentifySeriesSpec spec;
   spec.source = "kinds in code";
   spec.scenario = kind.scenario.name;
-  spec.parameters = {{kind.path, kind.start, kind.lower, kind.upper, "parameters[0]"}};
+  spec.parameters = {{kind.path, kind.start, kind.lower, kind.upper, InputPlace{"parameters[0]"}}};
   const MeasuredSeries series = Series(kind.scenario, kind.columns, kind.noise, 10);
   const SeriesIdentification fit =
       FitSeries(spec, {series}, ScenarioSensitivityRunner(kind.scenario));

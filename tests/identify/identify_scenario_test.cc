@@ -59,8 +59,9 @@ IdentifySeriesSpec Spec() {
   IdentifySeriesSpec spec;
   spec.source = "identification in code";
   spec.scenario = "concentric in code";
-  spec.parameters = {{"model.f_iso", std::nullopt, 10.0, 1000.0, "parameters[0]"},
-                     {"model.velocity.v_max", std::nullopt, 0.1, 10.0, "parameters[1]"}};
+  spec.parameters = {
+      {"model.f_iso", std::nullopt, 10.0, 1000.0, InputPlace{"parameters[0]"}},
+      {"model.velocity.v_max", std::nullopt, 0.1, 10.0, InputPlace{"parameters[1]"}}};
   return spec;
 }
 
@@ -121,7 +122,8 @@ TEST(IdentifyScenario, AParameterWhoseTruthIsZeroIsIdentifiedAndCalledSo) {
   // roundoff, and an estimate of 0 must not make its sensitivity vanish (it is relative to
   // the start's size, as in the design at that start, which says the same)
   IdentifySeriesSpec spec = Spec();
-  spec.parameters.push_back({"initial.lengthening_rate", 0.01, -1.0, 1.0, "parameters[2]"});
+  spec.parameters.push_back(
+      {"initial.lengthening_rate", 0.01, -1.0, 1.0, InputPlace{"parameters[2]"}});
   const MeasuredSeries lengths = Lengths(1e-5, 0, 0);
   const SensitivityRunner run = ScenarioSensitivityRunner(Concentric(90.0, 1.2));
   const SeriesIdentification fit = FitSeries(spec, {lengths}, run);

@@ -61,7 +61,7 @@ TEST(MeasuredSeriesFromColumns, GivesWhatTheSameCsvGives) {
   EXPECT_EQ(memory.noise[1], file.noise[1]);
   EXPECT_EQ(memory.lines, (std::vector<std::size_t>{1, 2, 3}));  // rows, not the file's lines
   EXPECT_EQ(memory.source, "");
-  EXPECT_EQ(memory.at, "TEXT:3:5");
+  EXPECT_EQ(PlaceText(memory.at), "TEXT:3:5");
 }
 
 TEST(MeasuredSeriesFromColumns, RefusesWhatTheCsvRulesRefuse) {
@@ -121,9 +121,11 @@ TEST(ParseIdentifySeriesSpec, ReadsTextAsTheFileReaderReadsAFile) {
   EXPECT_EQ(parsed.scenario, file.scenario);
   EXPECT_EQ(*parsed.series[0].csv, *file.series[0].csv);
   // the same places, in the text named TEXT
-  EXPECT_EQ(parsed.series[0].csv_at, "TEXT" + file.series[0].csv_at.substr(path.size()));
-  EXPECT_EQ(parsed.parameters[0].at, "TEXT" + file.parameters[0].at.substr(path.size()));
-  EXPECT_EQ(parsed.parameters[0].at, "TEXT:5:5");
+  EXPECT_EQ(parsed.series[0].csv_at.file, "TEXT");
+  EXPECT_EQ(parsed.series[0].csv_at.line, file.series[0].csv_at.line);
+  EXPECT_EQ(parsed.series[0].csv_at.column, file.series[0].csv_at.column);
+  EXPECT_EQ(PlaceText(parsed.parameters[0].at), "TEXT:5:5");
+  EXPECT_EQ(PlaceText(file.parameters[0].at), path + ":5:5");
   EXPECT_EQ(*parsed.parameters[0].upper, 1000.0);
   EXPECT_EQ(ParseIdentifySeriesSpec("TEXT", text, "").scenario, "../s.yaml");  // as given
   // the same rules and messages, with the text's name in place of the file's

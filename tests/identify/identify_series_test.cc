@@ -87,7 +87,7 @@ struct StandIn {
 
 SeriesParameterSpec Parameter(const std::string& path, std::optional<double> start,
                               std::optional<double> lower = {}, std::optional<double> upper = {}) {
-  return {path, start, lower, upper, "data.yaml:9:5"};
+  return {path, start, lower, upper, InputPlace{"data.yaml", 9, 5}};
 }
 
 // A measured series of `columns` at `times`, values from the closed form at `truth` plus
@@ -98,7 +98,7 @@ MeasuredSeries Measured(const std::vector<std::string>& columns, const std::vect
   testing::Noise normal(seed);
   MeasuredSeries s;
   s.source = "measured.csv";
-  s.at = "data.yaml:3:5";
+  s.at = InputPlace{"data.yaml", 3, 5};
   s.columns = columns;
   s.noise = noise;
   s.times = times;
@@ -126,7 +126,7 @@ IdentifySeriesSpec Spec(std::vector<SeriesParameterSpec> parameters) {
   IdentifySeriesSpec spec;
   spec.source = "data.yaml";
   spec.scenario = "release.yaml";
-  spec.scenario_at = "data.yaml:1:11";
+  spec.scenario_at = InputPlace{"data.yaml", 1, 11};
   spec.parameters = std::move(parameters);
   return spec;
 }
@@ -334,7 +334,7 @@ TEST(DesignSeries, RanksByTheCramerRaoErrorsAtTheStartOnTheScenarioGrid) {
   MeasuredSeries planned;
   planned.columns = {"length"};
   planned.noise = {1e-5};
-  planned.at = "data.yaml:3:5";
+  planned.at = InputPlace{"data.yaml", 3, 5};
   const std::map<std::string, double> start = {
       {"release.amp", 0.03}, {"release.tau", 0.02}, {"release.base", 0.1}, {"unused", 3.0}};
   const std::vector<std::string> paths = {"release.tau", "release.amp", "unused"};

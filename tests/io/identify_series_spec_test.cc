@@ -35,7 +35,7 @@ TEST(IdentifySeriesSpec, ReadsACompleteDataFile) {
   EXPECT_EQ(spec.scenario, dir + "/release.yaml");
   ASSERT_EQ(spec.series.size(), 2u);
   EXPECT_EQ(*spec.series[0].csv, dir + "/lengths.csv");
-  EXPECT_EQ(spec.series[0].csv_at, path + ":3:10");
+  EXPECT_EQ(PlaceText(spec.series[0].csv_at), path + ":3:10");
   EXPECT_FALSE(spec.series[1].csv);
   ASSERT_EQ(spec.series[1].noise.size(), 2u);
   EXPECT_EQ(spec.series[1].noise[0].first, "tension_total");  // the file's order
@@ -47,7 +47,7 @@ TEST(IdentifySeriesSpec, ReadsACompleteDataFile) {
   EXPECT_EQ(*spec.parameters[0].upper, 1000.0);
   EXPECT_FALSE(spec.parameters[1].start);
   EXPECT_FALSE(spec.parameters[1].lower);
-  EXPECT_EQ(spec.parameters[1].at, path + ":8:5");
+  EXPECT_EQ(PlaceText(spec.parameters[1].at), path + ":8:5");
 }
 
 TEST(IdentifySeriesSpec, TheCurvesKindIsNotTheSeriesKind) {

@@ -26,7 +26,7 @@ namespace musclesim {
 struct MeasuredSeries {
   std::string source;                // the CSV's path; "" without one (a --design series, or
                                      // values given in memory)
-  std::string at;                    // where the data file names it ("data.yaml:4:5") [-]
+  InputPlace at;                     // where the data file names it (data.yaml:4:5) [-]
   std::vector<std::string> columns;  // outputs, named as the trajectory CSV names them [-]
   std::vector<double> noise;         // per column: standard deviation [the column's unit];
                                      // NaN where the data file gives none

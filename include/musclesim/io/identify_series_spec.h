@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "musclesim/core/errors.h"
 #include "musclesim/io/document.h"
 
 namespace musclesim {
@@ -16,11 +17,11 @@ namespace musclesim {
 struct SeriesSpec {
   std::optional<std::string> csv;  // path, relative to the working directory [-]; none: only
                                    // --design, which then takes its columns from `noise`
-  std::string csv_at;              // where the data file names the csv ("d.yaml:4:10") [-]
+  InputPlace csv_at;               // where the data file names the csv (d.yaml:4:10) [-]
   // the standard deviation of each column's noise, by column name, in the file's order
   // [the column's unit], > 0
   std::vector<std::pair<std::string, double>> noise;
-  std::string at;  // where the series starts in the data file [-]
+  InputPlace at;  // where the series starts in the data file [-]
 };
 
 struct SeriesParameterSpec {
@@ -28,13 +29,13 @@ struct SeriesParameterSpec {
   std::optional<double> start;  // [the parameter's unit]; none: the scenario's value
   std::optional<double> lower;  // [the parameter's unit], < upper; both or neither
   std::optional<double> upper;  // [the parameter's unit]
-  std::string at;               // where the entry is in the data file [-]
+  InputPlace at;                // where the entry is in the data file [-]
 };
 
 struct IdentifySeriesSpec {
   std::string source;    // the data file's path, for messages [-]
   std::string scenario;  // path, relative to the working directory [-]
-  std::string scenario_at;
+  InputPlace scenario_at;
   std::vector<SeriesSpec> series;               // at least one
   std::vector<SeriesParameterSpec> parameters;  // at least one, paths distinct
 };

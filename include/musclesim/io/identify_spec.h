@@ -5,6 +5,8 @@
 #include <optional>
 #include <string>
 
+#include "musclesim/core/errors.h"
+
 namespace musclesim {
 
 // What `musclesim identify` reads (docs/guide/identification.md): any subset of the curves.
@@ -16,8 +18,8 @@ struct IdentifySpec {
   bool active_nonnegative = false;          // keep every amplitude >= 0 [-]
   std::optional<std::string> velocity_csv;  // path; columns shortening_velocity [m/s], tension [N]
   std::optional<double> velocity_f_iso;     // held fixed when given [N], > 0 and <= 1e9
-  // where each csv is named, "data.yaml:1:11", so that errors in its data point back [-]
-  std::string passive_csv_at, active_csv_at, velocity_csv_at;
+  // where each csv is named (data.yaml:1:11), so that errors in its data point back [-]
+  InputPlace passive_csv_at, active_csv_at, velocity_csv_at;
 };
 
 // Reads a data file; CSV paths are relative to it. Throws InputError with file:line:column.

@@ -19,6 +19,9 @@ namespace musclesim {
 // longer than zero at the start, the limits against the elements' initial lengths. Throws
 // InputError naming file:line:column (or the overrides' label), key path, value and rule.
 Scenario LoadScenario(const std::string& path, const Overrides& overrides = {});
+// The same, the file named `name` in messages (the path as a user gave it, when `path` is
+// that path made absolute).
+Scenario LoadScenario(const std::string& path, const Overrides& overrides, const std::string& name);
 
 // The single-actuator file `path` as written (MakeActuatorScenario's input: the old form's
 // own fields), read and validated as LoadScenario does; InputError for a network file.

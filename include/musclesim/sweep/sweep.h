@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "musclesim/core/errors.h"
 #include "musclesim/scenario/scenario.h"
 #include "musclesim/sweep/metrics.h"
 
@@ -33,6 +34,7 @@ struct SweepAxis {
   long count = 0;                   // grid and zip: values in the range; 0 for a list [-]
   bool log_scale = false;           // geometric spacing (draws) in the range [-]
   std::string location;             // "file:line:column" of the axis in the sweep file [-]
+  InputPlace place;                 // the same as data [-]
   bool is_range() const { return values.empty(); }
   // A range, or a list of numbers: the axis sets a number through a parameter handle.
   bool is_numeric() const { return is_range() || numbers.size() == values.size(); }
