@@ -17,8 +17,8 @@ TEST(InputErrorTest, PlacesAreWrittenToTheirPrecision) {
 }
 
 TEST(InputErrorTest, TheStandardFormNamesKeyValuePlaceAndRule) {
-  const InputError e(InputFault{InputPlace{"s.yaml", 4, 9}, "model.velocity.n", "0",
-                                "must be an integer >= 1"});
+  const InputError e(
+      InputFault{InputPlace{"s.yaml", 4, 9}, "model.velocity.n", "0", "must be an integer >= 1"});
   EXPECT_STREQ(e.what(), "model.velocity.n = 0 (s.yaml:4:9): must be an integer >= 1");
   EXPECT_EQ(e.fault().key, "model.velocity.n");
   EXPECT_EQ(e.fault().value, "0");
@@ -39,8 +39,9 @@ TEST(InputErrorTest, MissingPartsLeaveTheirPlaceInTheMessage) {
       InputError(InputFault{InputPlace{"s.yaml", 5, 3}, "", std::nullopt, "YAML syntax error"})
           .what(),
       "s.yaml:5:3: YAML syntax error");
-  EXPECT_STREQ(InputError(InputFault{std::nullopt, "controls", std::nullopt, "at least one"}).what(),
-               "controls: at least one");
+  EXPECT_STREQ(
+      InputError(InputFault{std::nullopt, "controls", std::nullopt, "at least one"}).what(),
+      "controls: at least one");
 }
 
 TEST(InputErrorTest, AHeadLeadsTheRuleAndTheFieldsStay) {
@@ -59,11 +60,13 @@ TEST(InputErrorTest, AContextKeepsTheInnerFault) {
   EXPECT_EQ(outer.fault().place->line, 3);
   // and a second context goes before the first
   const InputError outermost("muscle 'a'", outer);
-  EXPECT_STREQ(outermost.what(), "muscle 'a': series[0].csv = d.csv (d.yaml:4:10): d.csv:3: t = nan");
+  EXPECT_STREQ(outermost.what(),
+               "muscle 'a': series[0].csv = d.csv (d.yaml:4:10): d.csv:3: t = nan");
 }
 
 TEST(InputErrorTest, RelocatingRewritesThePlaceInTheSameForm) {
-  const InputError found(InputFault{InputPlace{"b.yaml", 1, 1}, "model.f_iso", "-1", "must be > 0"});
+  const InputError found(
+      InputFault{InputPlace{"b.yaml", 1, 1}, "model.f_iso", "-1", "must be > 0"});
   InputFault fault = found.fault();
   fault.place = InputPlace{"b.yaml", 6, 10};
   const InputError placed = InputError("b.yaml (the base)", found).WithFault(fault);

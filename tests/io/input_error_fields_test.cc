@@ -99,7 +99,8 @@ TEST(InputErrorFields, ASyntaxErrorHasAPlaceAndNoKey) {
 
 TEST(InputErrorFields, AnOverrideNamesItsKeyAndValue) {
   const InputFault missing = FaultOf([] {
-    LoadScenario(testing::ScenarioPath("concentric.yaml"), Overrides({"model.nothing.n=3"}, "--set"));
+    LoadScenario(testing::ScenarioPath("concentric.yaml"),
+                 Overrides({"model.nothing.n=3"}, "--set"));
   });
   EXPECT_EQ(missing.key, "model.nothing.n");
   EXPECT_EQ(missing.value, "3");
