@@ -18,13 +18,13 @@ class ElementDerivative final : public ParameterDerivative {
   ElementDerivative(const NetworkSystem& system, int element, ElementParameter parameter)
       : system_(system), element_(element), parameter_(parameter) {}
 
-  void RightHandSide(double t, const double* y, double* dfdp) const override {
+  void RightHandSide(double t, const double* y, double* dfdp, NetworkScratch&) const override {
     std::fill(dfdp, dfdp + system_.state_size(), 0.0);
     system_.AddTension(element_, t, y, Partial(t, y), dfdp);
   }
 
-  void Elements(double t, const double* y,
-                NetworkSystem::ElementPartials* elements) const override {
+  void Elements(double t, const double* y, NetworkSystem::ElementPartials* elements,
+                NetworkScratch&) const override {
     elements[element_] = {0.0, Partial(t, y), 0.0, 0.0};
   }
 

@@ -22,13 +22,13 @@ class ModelDerivative final : public ParameterDerivative {
     }
   }
 
-  void RightHandSide(double t, const double* y, double* dfdp) const override {
+  void RightHandSide(double t, const double* y, double* dfdp, NetworkScratch&) const override {
     std::fill(dfdp, dfdp + system_.state_size(), 0.0);
     for (int e : actuators_) system_.AddTension(e, t, y, Partial(e, t, y).total, dfdp);
   }
 
-  void Elements(double t, const double* y,
-                NetworkSystem::ElementPartials* elements) const override {
+  void Elements(double t, const double* y, NetworkSystem::ElementPartials* elements,
+                NetworkScratch&) const override {
     for (int e : actuators_) {
       const TensionPartials partial = Partial(e, t, y);
       elements[e] = {0.0, partial.total, partial.passive, partial.active};

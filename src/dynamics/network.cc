@@ -473,10 +473,11 @@ void NetworkSystem::SingleNodeRightHandSide(double t, const double* y, double* y
   ydot[s + 1] = force * f.inverse_mass;
 }
 
-void NetworkSystem::RightHandSide(double t, const double* y, double* ydot) const {
+void NetworkSystem::RightHandSide(double t, const double* y, double* ydot,
+                                  NetworkScratch& scratch) const {
   if (single_node_) return SingleNodeRightHandSide(t, y, ydot);
   if (space_.dimensions > 1) return SpaceRightHandSide(t, y, ydot);
-  const double* w = JunctionVelocities(t, y);
+  const double* w = JunctionVelocities(t, y, scratch.junction_velocities);
   for (const FreeNode& f : free_nodes_) {
     const End& end = ends_[f.node];
     if (f.massless) {
@@ -507,7 +508,8 @@ void NetworkSystem::RightHandSide(double t, const double* y, double* ydot) const
   ControlRightHandSide(t, y, ydot);
 }
 
-void NetworkSystem::Jacobian(double t, const double* y, double* values) const {
+void NetworkSystem::Jacobian(double t, const double* y, double* values,
+                             NetworkScratch& scratch) const {
   if (space_.dimensions > 1) return SpaceJacobian(t, y, values);
   std::fill(values, values + pattern_.entries(), 0.0);
   for (const FreeNode& f : free_nodes_) {
@@ -515,7 +517,7 @@ void NetworkSystem::Jacobian(double t, const double* y, double* values) const {
     values[f.slot_rate[0]] = 1.0;
     values[f.slot_position[0]] = f.loads.ForceSlope();
   }
-  const double* w = JunctionVelocities(t, y);
+  const double* w = JunctionVelocities(t, y, scratch.junction_velocities);
   for (const int e : active_links_) {
     const Link& link = links_[e];
     const End& a = ends_[link.from];
@@ -545,7 +547,7 @@ void NetworkSystem::Jacobian(double t, const double* y, double* values) const {
   for (int k = 0; k < pattern_.entries(); ++k) {
     if (row_scale_[k] >= 0) values[k] *= free_nodes_[row_scale_[k]].inverse_mass;
   }
-  if (w != nullptr) JunctionJacobian(t, y, w, values);
+  if (w != nullptr) JunctionJacobian(t, y, w, values, scratch.junction_rate_slopes);
 }
 
 std::vector<double> NetworkSystem::Breakpoints(double t0, double t1) const {

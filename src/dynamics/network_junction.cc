@@ -248,10 +248,9 @@ std::string NetworkSystem::JunctionFailure(int k, double t, const double* y) con
          " m has no finite root: no velocity of it balances the forces of its elements";
 }
 
-const double* NetworkSystem::JunctionVelocities(double t, const double* y) const {
+const double* NetworkSystem::JunctionVelocities(double t, const double* y,
+                                                std::vector<double>& velocities) const {
   if (junctions_.empty()) return nullptr;
-  // one buffer per thread: evaluation allocates nothing after a thread's first call
-  thread_local std::vector<double> velocities;
   velocities.resize(junctions_.size());
   for (std::size_t k = 0; k < junctions_.size(); ++k) {
     velocities[k] = JunctionVelocity(static_cast<int>(k), t, y);
@@ -285,9 +284,8 @@ double NetworkSystem::JunctionVelocityAlong(int k, double t, const double* y,
   return -by_state / by_velocity;
 }
 
-void NetworkSystem::JunctionJacobian(double t, const double* y, const double* w,
-                                     double* values) const {
-  thread_local std::vector<double> by_rate;  // per link of a junction: dT/d(ldot)
+void NetworkSystem::JunctionJacobian(double t, const double* y, const double* w, double* values,
+                                     std::vector<double>& by_rate) const {
   for (std::size_t k = 0; k < junctions_.size(); ++k) {
     const Junction& junction = junctions_[k];
     const FreeNode& f = free_nodes_[junction.free];

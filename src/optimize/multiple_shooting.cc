@@ -197,15 +197,16 @@ struct MultipleShooting::Impl {
     state_by_time.assign(static_cast<std::size_t>(intervals), std::vector<double>(sn, 0.0));
     columns_by_time.assign(static_cast<std::size_t>(intervals),
                            std::vector<double>(index.columns.size(), 0.0));
+    NetworkScratch scratch;
     for (int i = 0; i < intervals; ++i) {
       const IntervalResult& r = results[static_cast<std::size_t>(i)];
       const double a = static_cast<double>(i) / intervals,
                    b = static_cast<double>(i + 1) / intervals;
       system.RightHandSide(built.times[static_cast<std::size_t>(i) + 1], r.state.data(),
-                           f_end.data());
+                           f_end.data(), scratch);
       if (i >= 1)
         system.RightHandSide(built.times[static_cast<std::size_t>(i)], x + StateIndex(i, 0),
-                             f_start.data());
+                             f_start.data(), scratch);
       const auto S = [&](int parameter, int k) {
         return r.sensitivities[static_cast<std::size_t>(parameter * n + k)];
       };

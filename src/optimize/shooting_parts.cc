@@ -5,7 +5,8 @@
 
 namespace musclesim {
 
-void InitialStateDerivative::RightHandSide(double, const double*, double* dfdp) const {
+void InitialStateDerivative::RightHandSide(double, const double*, double* dfdp,
+                                           NetworkScratch&) const {
   std::fill(dfdp, dfdp + state_size_, 0.0);
 }
 
@@ -16,7 +17,8 @@ double HatWeight(double t, double t0, double t1, bool at_end) {
 
 double ControlValueDerivative::Weight(double t) const { return HatWeight(t, t0_, t1_, at_end_); }
 
-void ExcitationValueDerivative::RightHandSide(double t, const double* y, double* dfdp) const {
+void ExcitationValueDerivative::RightHandSide(double t, const double* y, double* dfdp,
+                                              NetworkScratch&) const {
   std::fill(dfdp, dfdp + system_.state_size(), 0.0);
   const int state = system_.ActivationStateIndex(element_);
   const ExcitationInput& input = *system_.elements()[static_cast<std::size_t>(element_)].excitation;
@@ -31,13 +33,15 @@ double ControlValueDerivative::TensionSlope(double t, const double* y) const {
   return sample.parts.d_activation * Weight(t);
 }
 
-void ControlValueDerivative::RightHandSide(double t, const double* y, double* dfdp) const {
+void ControlValueDerivative::RightHandSide(double t, const double* y, double* dfdp,
+                                           NetworkScratch&) const {
   std::fill(dfdp, dfdp + system_.state_size(), 0.0);
   system_.AddTension(element_, t, y, TensionSlope(t, y), dfdp);
 }
 
 void ControlValueDerivative::Elements(double t, const double* y,
-                                      NetworkSystem::ElementPartials* elements) const {
+                                      NetworkSystem::ElementPartials* elements,
+                                      NetworkScratch&) const {
   const double slope = TensionSlope(t, y);
   elements[element_] = {0.0, slope, 0.0, slope};
 }

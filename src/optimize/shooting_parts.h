@@ -19,8 +19,9 @@ constexpr double kNoBound = 1e20;
 class InitialStateDerivative final : public ParameterDerivative {
  public:
   explicit InitialStateDerivative(int state_size) : state_size_(state_size) {}
-  void RightHandSide(double t, const double* y, double* dfdp) const override;
-  void Elements(double, const double*, NetworkSystem::ElementPartials*) const override {}
+  void RightHandSide(double t, const double* y, double* dfdp, NetworkScratch&) const override;
+  void Elements(double, const double*, NetworkSystem::ElementPartials*,
+                NetworkScratch&) const override {}
   bool analytic() const override { return true; }
 
  private:
@@ -35,8 +36,9 @@ class ControlValueDerivative final : public ParameterDerivative {
   ControlValueDerivative(const NetworkSystem& system, int element, double t0, double t1,
                          bool at_end)
       : system_(system), element_(element), t0_(t0), t1_(t1), at_end_(at_end) {}
-  void RightHandSide(double t, const double* y, double* dfdp) const override;
-  void Elements(double t, const double* y, NetworkSystem::ElementPartials* elements) const override;
+  void RightHandSide(double t, const double* y, double* dfdp, NetworkScratch&) const override;
+  void Elements(double t, const double* y, NetworkSystem::ElementPartials* elements,
+                NetworkScratch&) const override;
   bool analytic() const override { return true; }
 
  private:
@@ -55,8 +57,9 @@ class ExcitationValueDerivative final : public ParameterDerivative {
   ExcitationValueDerivative(const NetworkSystem& system, int element, double t0, double t1,
                             bool at_end)
       : system_(system), element_(element), t0_(t0), t1_(t1), at_end_(at_end) {}
-  void RightHandSide(double t, const double* y, double* dfdp) const override;
-  void Elements(double, const double*, NetworkSystem::ElementPartials*) const override {}
+  void RightHandSide(double t, const double* y, double* dfdp, NetworkScratch&) const override;
+  void Elements(double, const double*, NetworkSystem::ElementPartials*,
+                NetworkScratch&) const override {}
   bool analytic() const override { return true; }
 
  private:

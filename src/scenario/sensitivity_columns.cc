@@ -100,7 +100,7 @@ void SensitivityColumns::Evaluate(double t, const double* y, const double* const
   for (std::size_t p = 0; p < parameters_.size(); ++p) {
     const double* direction = s[p];
     std::fill(partials_.begin(), partials_.end(), NetworkSystem::ElementPartials{});
-    parameters_[p].derivative->Elements(t, y, partials_.data());
+    parameters_[p].derivative->Elements(t, y, partials_.data(), scratch_);
     double* out = derivatives + p * count;
     int along_element = -1;  // the element `along` belongs to
     NetworkSystem::ElementPartials along;
@@ -113,7 +113,7 @@ void SensitivityColumns::Evaluate(double t, const double* y, const double* const
       }
       if (column.kind == Kind::kJunctionVelocity) {
         out[c] = system.NodeVelocityAlong(column.index, t, y, direction) +
-                 parameters_[p].derivative->NodeVelocity(t, y, column.index);
+                 parameters_[p].derivative->NodeVelocity(t, y, column.index, scratch_);
         continue;
       }
       // the chain rule: along the state's sensitivity, plus the parameter's own share; an

@@ -56,6 +56,7 @@ class SensitivityColumns {
   std::vector<Column> columns_;
   NetworkSample sample_;
   std::vector<NetworkSystem::ElementPartials> partials_;  // per element, one parameter's
+  NetworkScratch scratch_;                                // the parameters' derivatives' buffers
 };
 
 }  // namespace musclesim

@@ -18,7 +18,7 @@ constexpr long kJacobianEvaluationFrequency = 10;  // steps
 int RightHandSide(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
   auto* cb = static_cast<Callbacks*>(data);
   double* rate = N_VGetArrayPointer(ydot);
-  cb->system->RightHandSide(cb->InputTime(t), N_VGetArrayPointer(y), rate);
+  cb->system->RightHandSide(cb->InputTime(t), N_VGetArrayPointer(y), rate, cb->scratch);
   // a non-finite value is a recoverable error: CVODE retries with a smaller step. Every rate is
   // checked: a massless junction's position rate is its balance's root, computed like the
   // accelerations and the activation and integral rates (a pass over a few numbers)
@@ -32,9 +32,9 @@ int RightHandSide(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
 
 int AnalyticJacobian(sunrealtype t, N_Vector y, N_Vector, SUNMatrix jacobian, void* data, N_Vector,
                      N_Vector, N_Vector) {
-  const auto* cb = static_cast<const Callbacks*>(data);
+  auto* cb = static_cast<Callbacks*>(data);
   std::vector<double>& values = cb->linear->values();
-  cb->system->Jacobian(cb->InputTime(t), N_VGetArrayPointer(y), values.data());
+  cb->system->Jacobian(cb->InputTime(t), N_VGetArrayPointer(y), values.data(), cb->scratch);
   cb->linear->Fill(values.data(), jacobian);
   return 0;
 }
@@ -52,10 +52,11 @@ int SparseDifferenceQuotientJacobian(sunrealtype t, N_Vector y, N_Vector rate, S
   std::vector<double>& values = cb->linear->values();
   double step = 0.0;
   if (CVodeGetCurrentStep(cb->cvode, &step) < 0) return -1;
-  quotient.Evaluate(
-      [&](const double* state, double* out) { cb->system->RightHandSide(at, state, out); },
-      N_VGetArrayPointer(perturbed), N_VGetArrayPointer(rate), N_VGetArrayPointer(weights), step,
-      N_VGetArrayPointer(perturbed_rate), values.data());
+  quotient.Evaluate([&](const double* state,
+                        double* out) { cb->system->RightHandSide(at, state, out, cb->scratch); },
+                    N_VGetArrayPointer(perturbed), N_VGetArrayPointer(rate),
+                    N_VGetArrayPointer(weights), step, N_VGetArrayPointer(perturbed_rate),
+                    values.data());
   cb->quotient_rhs_evals += quotient.groups();
   for (double value : values) {
     if (!std::isfinite(value)) return 1;  // recoverable: CVODE retries a smaller step
@@ -73,13 +74,13 @@ int SensitivityRightHandSide(int count, sunrealtype t, N_Vector y, N_Vector, N_V
   const JacobianPattern& pattern = system.jacobian_pattern();
   const double at = cb->InputTime(t);
   const double* state = N_VGetArrayPointer(y);
-  system.Jacobian(at, state, cb->jacobian_values.data());
+  system.Jacobian(at, state, cb->jacobian_values.data(), cb->scratch);
   for (int i = 0; i < count; ++i) {
     const double* direction = N_VGetArrayPointer(s[i]);
     double* rate = N_VGetArrayPointer(sdot[i]);
     const ParameterDerivative& derivative =
         *(*cb->parameters)[static_cast<std::size_t>(i)].derivative;
-    derivative.RightHandSide(at, state, rate);
+    derivative.RightHandSide(at, state, rate, cb->scratch);
     for (int column = 0; column < pattern.size; ++column) {
       const double along = direction[column];
       if (along == 0.0) continue;
@@ -87,7 +88,7 @@ int SensitivityRightHandSide(int count, sunrealtype t, N_Vector y, N_Vector, N_V
         rate[pattern.rows[k]] += cb->jacobian_values[k] * along;
       }
     }
-    derivative.RefineRate(at, state, direction, rate);
+    derivative.RefineRate(at, state, direction, rate, cb->scratch);
     for (int k = 0; k < pattern.size; ++k) {
       if (!std::isfinite(rate[k])) return 1;  // recoverable: CVODES retries a smaller step
     }

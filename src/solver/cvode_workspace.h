@@ -23,6 +23,7 @@ namespace musclesim {
 // What the C callbacks see through CVODE's user data.
 struct Callbacks {
   const NetworkSystem* system = nullptr;
+  NetworkScratch scratch;  // the buffers of every evaluation of `system` in this session
   LinearSystem* linear = nullptr;
   void* cvode = nullptr;        // for the error weights of a sparse difference quotient
   long quotient_rhs_evals = 0;  // the right-hand sides that quotient has evaluated

@@ -9,8 +9,9 @@
 // the elements are given; then the integral z_j of every controller with an integral gain (section
 // 11), in the order the controllers are given. A network without either has exactly the node
 // states. (An activation column couples its actuator's nodes to the end of the state: such a
-// network's Jacobian is not banded, and `auto` gives it the dense or the sparse solver.) Immutable
-// once built; evaluation allocates nothing, so one system may be integrated on many threads.
+// network's Jacobian is not banded, and `auto` gives it the dense or the sparse solver.) The model:
+// immutable once built and shared by every thread that integrates it; what an evaluation
+// writes besides its results is in a NetworkScratch its caller owns (network_scratch.h).
 #pragma once
 
 #include <functional>
@@ -22,41 +23,10 @@
 #include "musclesim/dynamics/controller.h"
 #include "musclesim/dynamics/jacobian_pattern.h"
 #include "musclesim/dynamics/network_parts.h"
+#include "musclesim/dynamics/network_sample.h"
+#include "musclesim/dynamics/network_scratch.h"
 
 namespace musclesim {
-
-// What one element observes at one instant.
-struct ElementSample {
-  double length = 0.0;            // l = x_to - x_from [m]
-  double lengthening_rate = 0.0;  // dl/dt [m/s]
-  double tension = 0.0;           // T [N]
-  double activation = 0.0;        // actuator: u [-], the state's with activation dynamics,
-                                  // else u(t); other kinds 0
-  double excitation = 0.0;        // actuator with activation dynamics: e(t) [-]; an actuator
-                                  // without them: u(t) (e = u); other kinds 0
-  TensionSample parts;            // actuator: T split into parts, with derivatives
-};
-
-// What one controller computes at one instant.
-struct ControllerSample {
-  double reference = 0.0;  // r(t) [unit measured]
-  double measured = 0.0;   // y [unit measured]
-  double error = 0.0;      // r - y
-  double output = 0.0;     // driving one actuator: the activation or excitation it applies,
-                           // clamped to [0, 1]; a co-contracting pair: the command c
-};
-
-// Everything the state observes at one instant: what a network's CSV records.
-// In d dimensions the nodes' vectors hold d numbers per node, node after node (x, y of node 0,
-// x, y of node 1, ...).
-struct NetworkSample {
-  std::vector<double> position;  // of every node [m]
-  std::vector<double> velocity;  // of every node [m/s]
-  std::vector<double> load;      // the sum of the loads on every node [N] (0 off free nodes;
-                                 // gravity not included)
-  std::vector<ElementSample> elements;
-  std::vector<ControllerSample> controllers;
-};
 
 class NetworkSystem {
  public:
@@ -91,10 +61,20 @@ class NetworkSystem {
   // element's initial stretch is refused before the run, not by CVODE at its first step).
   void CheckInitialState(double t, const double* y) const;
 
-  // ydot = f(t, y).
-  void RightHandSide(double t, const double* y, double* ydot) const;
+  // ydot = f(t, y), with the buffers of `scratch` (allocating nothing once they have grown).
+  void RightHandSide(double t, const double* y, double* ydot, NetworkScratch& scratch) const;
   // df/dy at (t, y), one value per entry of jacobian_pattern().
-  void Jacobian(double t, const double* y, double* values) const;
+  void Jacobian(double t, const double* y, double* values, NetworkScratch& scratch) const;
+  // The same for one evaluation, with a scratch of their own (which a network with massless
+  // junctions allocates): an integrator keeps one scratch and passes it.
+  void RightHandSide(double t, const double* y, double* ydot) const {
+    NetworkScratch scratch;
+    RightHandSide(t, y, ydot, scratch);
+  }
+  void Jacobian(double t, const double* y, double* values) const {
+    NetworkScratch scratch;
+    Jacobian(t, y, values, scratch);
+  }
   const JacobianPattern& jacobian_pattern() const { return pattern_; }
 
   // The length of element e at (t, y) [m], and its rate of change [m/s].
@@ -313,8 +293,9 @@ class NetworkSystem {
   std::string JunctionFailure(int k, double t, const double* y) const;
   // dw/dy s of junction k at (t, y): -(dR/dy s) / (dR/dw).
   double JunctionVelocityAlong(int k, double t, const double* y, const double* s) const;
-  // Every junction's w at (t, y), in a buffer of the calling thread (nullptr if none).
-  const double* JunctionVelocities(double t, const double* y) const;
+  // Every junction's w at (t, y), in `velocities` (nullptr if none).
+  const double* JunctionVelocities(double t, const double* y,
+                                   std::vector<double>& velocities) const;
   // An end's velocity, a junction's taken from `w` (JunctionVelocities).
   double RateOf(const End& end, double t, const double* y, const double* w) const {
     return end.junction >= 0 ? w[end.junction] : VelocityOf(end, t, y);
@@ -325,7 +306,9 @@ class NetworkSystem {
   void ResolveJunctions();
   void AddJunctionPattern(std::vector<std::pair<int, int>>& pairs) const;
   void FindJunctionSlots(const std::function<int(int, int)>& slot);
-  void JunctionJacobian(double t, const double* y, const double* w, double* values) const;
+  // (`rate_slopes`: room for dT/d(ldot) of a junction's elements)
+  void JunctionJacobian(double t, const double* y, const double* w, double* values,
+                        std::vector<double>& rate_slopes) const;
 
   double PositionOf(const End& end, double t, const double* y) const;
   double VelocityOf(const End& end, double t, const double* y) const;

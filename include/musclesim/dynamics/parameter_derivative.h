@@ -15,23 +15,29 @@ namespace musclesim {
 class ParameterDerivative {
  public:
   virtual ~ParameterDerivative() = default;
+  // Each evaluation writes its working buffers into the caller's `scratch` (a difference
+  // quotient's right-hand sides and observations; a closed form uses none).
   // df/dp at (t, y) into `dfdp` (state_size values, overwritten).
-  virtual void RightHandSide(double t, const double* y, double* dfdp) const = 0;
+  virtual void RightHandSide(double t, const double* y, double* dfdp,
+                             NetworkScratch& scratch) const = 0;
   // dl/dp and dT/dp at (t, y) of every element, into `elements` (one per element; overwritten,
   // or left as they are for an element it does not know).
-  virtual void Elements(double t, const double* y,
-                        NetworkSystem::ElementPartials* elements) const = 0;
+  virtual void Elements(double t, const double* y, NetworkSystem::ElementPartials* elements,
+                        NetworkScratch& scratch) const = 0;
   // d(node's velocity)/dp at fixed (t, y): nonzero only for a massless junction, whose
   // velocity solves a balance the parameter may move (the closed forms, which a network with a
   // junction does not use, return 0).
-  virtual double NodeVelocity(double /*t*/, const double* /*y*/, int /*node*/) const { return 0.0; }
+  virtual double NodeVelocity(double /*t*/, const double* /*y*/, int /*node*/,
+                              NetworkScratch& /*scratch*/) const {
+    return 0.0;
+  }
   // Whether the derivatives are closed forms (else difference quotients).
   virtual bool analytic() const = 0;
   // Replaces rows of the sensitivity's rate `rate` = (df/dy) s + df/dp at (t, y), s the
   // sensitivity, by derivatives taken along s, where a parameter needs them (the default
   // replaces none).
-  virtual void RefineRate(double /*t*/, const double* /*y*/, const double* /*s*/,
-                          double* /*rate*/) const {}
+  virtual void RefineRate(double /*t*/, const double* /*y*/, const double* /*s*/, double* /*rate*/,
+                          NetworkScratch& /*scratch*/) const {}
 };
 
 // A difference quotient over the same network built at several values p + offset_i of p:
@@ -51,18 +57,19 @@ class DifferenceQuotientDerivative final : public ParameterDerivative {
   };
   using Stencil = std::vector<Point>;
   explicit DifferenceQuotientDerivative(Stencil stencil);
-  void RightHandSide(double t, const double* y, double* dfdp) const override;
-  void Elements(double t, const double* y, NetworkSystem::ElementPartials* elements) const override;
-  double NodeVelocity(double t, const double* y, int node) const override;
+  void RightHandSide(double t, const double* y, double* dfdp,
+                     NetworkScratch& scratch) const override;
+  void Elements(double t, const double* y, NetworkSystem::ElementPartials* elements,
+                NetworkScratch& scratch) const override;
+  double NodeVelocity(double t, const double* y, int node, NetworkScratch& scratch) const override;
   bool analytic() const override { return false; }
-  void RefineRate(double t, const double* y, const double* s, double* rate) const override;
+  void RefineRate(double t, const double* y, const double* s, double* rate,
+                  NetworkScratch& scratch) const override;
 
  private:
   Stencil stencil_;
-  mutable std::vector<double> scratch_;  // one right-hand side (a run is single-threaded)
-  mutable std::vector<double> shifted_;  // y + offset s
-  std::size_t elements_ = 0;             // the fewest elements among the systems
-  mutable NetworkSample sample_;
+  std::size_t states_ = 0;    // of every system
+  std::size_t elements_ = 0;  // the fewest elements among the systems
 };
 
 // A parameter of the tension model `model` (`path` relative to its block, as
