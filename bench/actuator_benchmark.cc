@@ -3,7 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include "musclesim/scenario/actuator_scenario.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 
 namespace musclesim {
 namespace {

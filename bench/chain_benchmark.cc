@@ -32,7 +32,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #ifdef MUSCLESIM_WITH_ODEINT
 #include "work_precision/odeint_network.h"
 #include "work_precision/odeint_peer.h"

@@ -35,7 +35,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #ifdef MUSCLESIM_WITH_KLU
 #include <klu.h>
 #endif

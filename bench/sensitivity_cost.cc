@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/scenario/sensitivity_run.h"
 
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/scenario/run.h"
 
 namespace musclesim {

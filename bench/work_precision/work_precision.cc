@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "musclesim/scenario/actuator_scenario.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "odeint_network.h"
 #include "odeint_peer.h"
 

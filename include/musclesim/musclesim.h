@@ -20,5 +20,5 @@
 #include "musclesim/scenario/run.h"
 #include "musclesim/scenario/scenario.h"
 #include "musclesim/scenario/sensitivity_run.h"
-#include "musclesim/io/run_csv.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/writers/run_csv.h"
+#include "musclesim/io/readers/scenario_yaml.h"

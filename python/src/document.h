@@ -1,12 +1,12 @@
-// Python values as a Document (io/document.h): a dict scenario, sweep or identification spec
-// read by the file readers with no text in between.
+// Python values as a Document (io/readers/document.h): a dict scenario, sweep or identification
+// spec read by the file readers with no text in between.
 #pragma once
 
 #include <string>
 
 #include <pybind11/pybind11.h>
 
-#include "musclesim/io/document.h"
+#include "musclesim/io/readers/document.h"
 
 namespace musclesim::python {
 

@@ -1,7 +1,7 @@
 // Identification of a scenario's parameters from measured time series, as `musclesim
 // identify DATA.yaml` does for a data file with a `scenario:` key, without the data file or
 // the CSV files: the spec arrives as a dict read by the data file's own reader as a document
-// (io/document.h), the scenario as the Scenario in memory, the series as NumPy columns that
+// (io/readers/document.h), the scenario as the Scenario in memory, the series as NumPy columns that
 // pass the CSV's rules (MeasuredSeriesFromColumns). The fit and the design are the library's
 // FitSeries and DesignSeries on copies of the scenario, run with the GIL released.
 #include <pybind11/numpy.h>
@@ -18,7 +18,7 @@
 #include "bindings.h"
 #include "document.h"
 #include "musclesim/core/errors.h"
-#include "musclesim/io/identify_series_spec.h"
+#include "musclesim/io/readers/identify_series_spec.h"
 #include "musclesim/identify/identify_series.h"
 #include "musclesim/identify/identify_series_columns.h"
 #include "musclesim/identify/identify_series_warnings.h"

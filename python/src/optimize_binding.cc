@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "bindings.h"
-#include "musclesim/io/document.h"
+#include "musclesim/io/readers/document.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/optimize/optimal_control.h"
 #include "musclesim/optimize/optimum_files.h"

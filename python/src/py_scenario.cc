@@ -3,8 +3,8 @@
 #include <filesystem>
 
 #include "musclesim/core/errors.h"
-#include "musclesim/io/scenario_rewrite.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/writers/scenario_rewrite.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "overrides.h"
 
 namespace py = pybind11;

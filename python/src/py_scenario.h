@@ -9,7 +9,7 @@
 
 #include <pybind11/pybind11.h>
 
-#include "musclesim/io/document.h"
+#include "musclesim/io/readers/document.h"
 #include "musclesim/scenario/scenario.h"
 
 namespace musclesim::python {

@@ -9,7 +9,7 @@
 
 #include <pybind11/pybind11.h>
 
-#include "musclesim/io/stats_json.h"
+#include "musclesim/io/writers/stats_json.h"
 #include "musclesim/scenario/run.h"
 #include "musclesim/scenario/run_columns.h"
 #include "musclesim/scenario/scenario.h"

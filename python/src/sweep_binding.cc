@@ -20,7 +20,7 @@
 #include "bindings.h"
 #include "document.h"
 #include "musclesim/core/errors.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/sweep/sweep_file.h"
 #include "musclesim/sweep/sweep_observer.h"
 #include "musclesim/sweep/sweep_runner.h"

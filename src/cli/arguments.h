@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/curves_csv.h"
+#include "musclesim/io/writers/curves_csv.h"
 #include "musclesim/core/input_ranges.h"
 #include "musclesim/model/force_length_presets.h"
 

@@ -5,11 +5,11 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "musclesim/core/errors.h"
-#include "musclesim/io/curves_csv.h"
+#include "musclesim/io/writers/curves_csv.h"
 #include "musclesim/core/input_ranges.h"
-#include "musclesim/io/model_yaml.h"
-#include "musclesim/io/file_roles.h"
-#include "musclesim/io/output_file.h"
+#include "musclesim/io/readers/model_yaml.h"
+#include "musclesim/io/writers/file_roles.h"
+#include "musclesim/io/writers/output_file.h"
 
 namespace musclesim::cli {
 

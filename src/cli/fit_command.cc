@@ -5,10 +5,10 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "musclesim/core/errors.h"
-#include "musclesim/io/model_yaml.h"
-#include "musclesim/io/model_yaml_writer.h"
-#include "musclesim/io/file_roles.h"
-#include "musclesim/io/output_file.h"
+#include "musclesim/io/readers/model_yaml.h"
+#include "musclesim/io/writers/model_yaml_writer.h"
+#include "musclesim/io/writers/file_roles.h"
+#include "musclesim/io/writers/output_file.h"
 
 namespace musclesim::cli {
 

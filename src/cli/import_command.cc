@@ -12,13 +12,13 @@
 #include "musclesim/core/number_format.h"
 #include "musclesim/identify/identified_model.h"
 #include "musclesim/identify/paper_model_fit.h"
-#include "musclesim/io/model_yaml_writer.h"
-#include "musclesim/io/document.h"
-#include "musclesim/io/file_roles.h"
-#include "musclesim/io/imported_scenario.h"
-#include "musclesim/io/muscle_import.h"
-#include "musclesim/io/output_file.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/writers/model_yaml_writer.h"
+#include "musclesim/io/readers/document.h"
+#include "musclesim/io/writers/file_roles.h"
+#include "musclesim/io/import/imported_scenario.h"
+#include "musclesim/io/import/muscle_import.h"
+#include "musclesim/io/writers/output_file.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 
 namespace musclesim::cli {
 

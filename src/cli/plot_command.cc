@@ -11,10 +11,10 @@
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "musclesim/core/errors.h"
-#include "musclesim/io/model_yaml.h"
-#include "musclesim/io/file_roles.h"
-#include "musclesim/io/output_file.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/model_yaml.h"
+#include "musclesim/io/writers/file_roles.h"
+#include "musclesim/io/writers/output_file.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/plot/plot.h"
 
 namespace musclesim::cli {

@@ -4,8 +4,8 @@
 
 #include "cli/exit_codes.h"
 #include "musclesim/core/errors.h"
-#include "musclesim/io/file_roles.h"
-#include "musclesim/io/stats_json.h"
+#include "musclesim/io/writers/file_roles.h"
+#include "musclesim/io/writers/stats_json.h"
 
 namespace musclesim::cli {
 

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "cli/arguments.h"
-#include "musclesim/io/output_file.h"
-#include "musclesim/io/stats_json.h"
+#include "musclesim/io/writers/output_file.h"
+#include "musclesim/io/writers/stats_json.h"
 #include "musclesim/solver/simulation.h"
 
 namespace musclesim::cli {

@@ -1,7 +1,7 @@
 // Measured curves read from CSV, with the rules identification needs of them.
 #include "musclesim/identify/identify.h"
 
-#include "musclesim/io/csv_table.h"
+#include "musclesim/io/readers/csv_table.h"
 #include "identify/curve_data_rules.h"
 
 namespace musclesim {

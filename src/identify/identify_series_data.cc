@@ -2,7 +2,7 @@
 // rules the fit needs of them (identify_series_values.h).
 #include "identify/identify_series_values.h"
 #include "musclesim/core/errors.h"
-#include "musclesim/io/csv_table.h"
+#include "musclesim/io/readers/csv_table.h"
 #include "musclesim/identify/identify_series.h"
 
 namespace musclesim {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/identify_series_spec.h"
+#include "musclesim/io/readers/identify_series_spec.h"
 #include "musclesim/identify/identify_series.h"
 
 namespace musclesim::identify_series_detail {

@@ -6,8 +6,8 @@
 
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
-#include "io/yaml_fields.h"
-#include "musclesim/io/scenario_rewrite.h"
+#include "io/readers/yaml_fields.h"
+#include "musclesim/io/writers/scenario_rewrite.h"
 
 namespace musclesim {
 

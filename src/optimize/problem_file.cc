@@ -4,13 +4,13 @@
 #include <filesystem>
 #include <limits>
 
-#include "io/document_yaml.h"
-#include "io/yaml_fields.h"
+#include "io/readers/document_yaml.h"
+#include "io/readers/yaml_fields.h"
 #include "musclesim/core/errors.h"
 #include "optimize/problem_checks.h"
-#include "musclesim/io/csv_table.h"
-#include "musclesim/io/output_file.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/csv_table.h"
+#include "musclesim/io/writers/output_file.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 
 namespace musclesim {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/csv_table.h"
+#include "musclesim/io/readers/csv_table.h"
 #include "musclesim/scenario/scenario.h"
 
 namespace musclesim::plot_text {

@@ -2,7 +2,7 @@
 
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
-#include "musclesim/io/run_csv.h"
+#include "musclesim/io/writers/run_csv.h"
 #include "musclesim/scenario/actuator_scenario.h"
 #include "sweep/sweep_share.h"
 

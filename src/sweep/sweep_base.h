@@ -41,7 +41,7 @@ class SweepBase {
   // for TrajectoryCsv. A solver failure is a status; anything thrown (a system that cannot
   // be built) is the caller's to report.
   RunStats Run(Simulation& simulation, TrajectorySink& metrics);
-  // The last Run's trajectory CSV (io/run_csv.h); empty when the spec does not keep
+  // The last Run's trajectory CSV (io/writers/run_csv.h); empty when the spec does not keep
   // trajectories.
   std::string TrajectoryCsv() const;
 

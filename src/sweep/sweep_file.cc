@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <memory>
 
-#include "io/document_yaml.h"
-#include "io/yaml_fields.h"
+#include "io/readers/document_yaml.h"
+#include "io/readers/yaml_fields.h"
 #include "musclesim/core/errors.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "sweep/sweep_file_points.h"
 #include "sweep/sweep_metric_element.h"
 #include "sweep/sweep_signature.h"

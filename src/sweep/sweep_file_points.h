@@ -8,7 +8,7 @@
 
 #include <memory>
 
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/sweep/sweep_points.h"
 
 namespace musclesim {

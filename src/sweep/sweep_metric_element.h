@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "io/yaml_fields.h"
+#include "io/readers/yaml_fields.h"
 #include "musclesim/sweep/sweep.h"
 #include "musclesim/sweep/sweep_points.h"
 

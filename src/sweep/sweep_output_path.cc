@@ -6,7 +6,7 @@
 #include <system_error>
 
 #include "musclesim/core/errors.h"
-#include "musclesim/io/file_roles.h"
+#include "musclesim/io/writers/file_roles.h"
 
 namespace musclesim {
 

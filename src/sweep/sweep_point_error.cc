@@ -4,7 +4,7 @@
 
 #include "musclesim/core/errors.h"
 #include "sweep/sweep_base.h"
-#include "io/yaml_fields.h"
+#include "io/readers/yaml_fields.h"
 
 namespace musclesim {
 

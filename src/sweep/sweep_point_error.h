@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/sweep/sweep.h"
 
 namespace musclesim {

@@ -11,7 +11,7 @@
 #include <thread>
 
 #include "musclesim/core/errors.h"
-#include "musclesim/io/output_file.h"
+#include "musclesim/io/writers/output_file.h"
 
 namespace musclesim {
 

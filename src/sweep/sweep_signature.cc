@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "musclesim/io/output_file.h"
+#include "musclesim/io/writers/output_file.h"
 
 namespace musclesim {
 

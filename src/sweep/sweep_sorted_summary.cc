@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "musclesim/io/output_file.h"
+#include "musclesim/io/writers/output_file.h"
 
 namespace musclesim {
 

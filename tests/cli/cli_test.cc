@@ -10,7 +10,7 @@
 #include <sstream>
 #include <sys/wait.h>
 
-#include "musclesim/io/model_yaml.h"
+#include "musclesim/io/readers/model_yaml.h"
 
 namespace musclesim {
 namespace {

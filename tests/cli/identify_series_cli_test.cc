@@ -12,7 +12,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {

@@ -17,7 +17,7 @@
 #include <sstream>
 #include <utility>
 
-#include "musclesim/io/csv_table.h"
+#include "musclesim/io/readers/csv_table.h"
 #include "support/scenario_files.h"
 #include "support/fresh_directory.h"
 

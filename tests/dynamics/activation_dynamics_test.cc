@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "musclesim/core/errors.h"
-#include "musclesim/io/csv_table.h"
-#include "musclesim/io/run_csv.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/csv_table.h"
+#include "musclesim/io/writers/run_csv.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/plot/plot.h"
 #include "musclesim/scenario/actuator_scenario.h"
 #include "musclesim/scenario/run_columns.h"

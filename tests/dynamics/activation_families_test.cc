@@ -12,8 +12,8 @@
 
 #include "musclesim/core/errors.h"
 #include "musclesim/dynamics/activation_dynamics.h"
-#include "musclesim/io/document.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/document.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/scenario/scenario.h"
 #include "support/numeric.h"
 #include "support/peer_reference.h"

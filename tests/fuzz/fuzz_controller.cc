@@ -9,7 +9,7 @@
 #include <string>
 
 #include "fuzz_input.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/solver/simulation.h"
 
 namespace {

@@ -1,10 +1,10 @@
 // libFuzzer target: the reader of other tools' model files (ImportMuscles, as `musclesim
 // import` uses it), and the scenario written for each muscle read back (LoadScenario's rules).
 #include "fuzz_input.h"
-#include "musclesim/io/document.h"
-#include "musclesim/io/imported_scenario.h"
-#include "musclesim/io/muscle_import.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/document.h"
+#include "musclesim/io/import/imported_scenario.h"
+#include "musclesim/io/import/muscle_import.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace musclesim;

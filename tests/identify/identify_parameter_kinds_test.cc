@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "musclesim/identify/identify_series.h"
-#include "musclesim/io/document.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/document.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/scenario/run.h"
 #include "musclesim/scenario/scenario.h"
 #include "musclesim/scenario/sensitivity_run.h"

@@ -10,8 +10,8 @@
 #include <cmath>
 #include <map>
 
-#include "musclesim/io/identify_series_spec.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/identify_series_spec.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/scenario/sensitivity_run.h"
 #include "support/normal_noise.h"
 #include "support/scenario_files.h"

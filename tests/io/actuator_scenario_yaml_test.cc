@@ -1,7 +1,7 @@
-// The single-actuator form of scenario files (io/scenario_yaml.h): every key read into the
+// The single-actuator form of scenario files (io/readers/scenario_yaml.h): every key read into the
 // network of docs/model.md 7.4, --set on any scalar, and every broken rule placed at its
 // file, line and column.
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "support/canonical_networks.h"
 
 namespace musclesim {

@@ -1,4 +1,4 @@
-// Feedback controllers in network scenario files (io/scenario_yaml.h, docs/model.md 11):
+// Feedback controllers in network scenario files (io/readers/scenario_yaml.h, docs/model.md 11):
 // a controlled network loads and runs, its CSV's controller columns against the waveform and
 // the lengths and positions recomputed here, every refusal placed at its file, line and key,
 // --set and `musclesim sweep` on a controlled base, and the plot's controller panels.
@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/csv_table.h"
-#include "musclesim/io/run_csv.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/csv_table.h"
+#include "musclesim/io/writers/run_csv.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/scenario/run.h"
 #include "musclesim/scenario/sensitivity_run.h"
 #include "support/cli_run.h"

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "musclesim/core/errors.h"
-#include "musclesim/io/muscle_import.h"
+#include "musclesim/io/import/muscle_import.h"
 #include "musclesim/model/degroote_conversion.h"
 #include "support/cli_run.h"
 #include "support/fresh_directory.h"

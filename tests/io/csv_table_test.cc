@@ -1,4 +1,4 @@
-#include "musclesim/io/csv_table.h"
+#include "musclesim/io/readers/csv_table.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

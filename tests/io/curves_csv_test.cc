@@ -1,5 +1,5 @@
 // The curves tabulated as CSV, checked against the closed forms of docs/model.md sections 2-4.
-#include "musclesim/io/curves_csv.h"
+#include "musclesim/io/writers/curves_csv.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -7,12 +7,12 @@
 #include <cstdlib>
 #include <string>
 
-#include "musclesim/io/curves_csv.h"
-#include "musclesim/io/model_yaml.h"
-#include "musclesim/io/model_yaml_writer.h"
+#include "musclesim/io/writers/curves_csv.h"
+#include "musclesim/io/readers/model_yaml.h"
+#include "musclesim/io/writers/model_yaml_writer.h"
 #include "musclesim/core/number_format.h"
 #include "musclesim/identify/identify.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {

@@ -1,7 +1,7 @@
 // The guard that keeps an output from overwriting an input or another output: the same file
 // found through a hard link, a symbolic link, "..", or a .partial name; files that differ
 // and devices let through.
-#include "musclesim/io/file_roles.h"
+#include "musclesim/io/writers/file_roles.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // The data file of time-series identification and its measured series: what is read, and
 // each rule with the message that names file, line, column, key, value and rule.
-#include "musclesim/io/identify_series_spec.h"
+#include "musclesim/io/readers/identify_series_spec.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -10,8 +10,8 @@
 #include <string>
 
 #include "musclesim/core/errors.h"
-#include "musclesim/io/csv_table.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/csv_table.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/optimize/problem_file.h"
 #include "support/fresh_directory.h"
 #include "support/scenario_files.h"

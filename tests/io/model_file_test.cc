@@ -1,4 +1,4 @@
-#include "musclesim/io/model_yaml.h"
+#include "musclesim/io/readers/model_yaml.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

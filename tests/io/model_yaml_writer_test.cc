@@ -1,12 +1,12 @@
 // The written model block read back by LoadModelSpec: the same doubles, every part.
-#include "musclesim/io/model_yaml_writer.h"
+#include "musclesim/io/writers/model_yaml_writer.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 
-#include "musclesim/io/model_yaml.h"
+#include "musclesim/io/readers/model_yaml.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {

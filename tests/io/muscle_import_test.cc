@@ -3,7 +3,7 @@
 // muscles.xml, whose compiled parameters MuJoCo 4.0 prints with
 // bench/peers/check_mjcf_import.py). The imported OpenSim muscle, run, meets OpenSim's own
 // trajectory; every imported value is the tool's; every refusal names file, line and rule.
-#include "musclesim/io/muscle_import.h"
+#include "musclesim/io/import/muscle_import.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "musclesim/core/errors.h"
-#include "musclesim/io/document.h"
-#include "musclesim/io/imported_scenario.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/document.h"
+#include "musclesim/io/import/imported_scenario.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/scenario/parameter.h"
 #include "musclesim/scenario/run.h"
 #include "support/cli_run.h"

@@ -1,8 +1,8 @@
-// Network scenario files (io/scenario_yaml.h) and their CSV (io/run_csv.h): what the
-// reader makes of every kind of node, element and load, the CSV's columns, its first row
+// Network scenario files (io/readers/scenario_yaml.h) and their CSV (io/writers/run_csv.h): what
+// the reader makes of every kind of node, element and load, the CSV's columns, its first row
 // against a hand computation of docs/model.md sections 2-5 and 7.1, --set on nested keys,
 // and `musclesim run` on a network.
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -15,7 +15,7 @@
 #include <sstream>
 #include <sys/wait.h>
 
-#include "musclesim/io/run_csv.h"
+#include "musclesim/io/writers/run_csv.h"
 #include "musclesim/scenario/run.h"
 #include "musclesim/scenario/run_columns.h"
 #include "support/scenario_files.h"

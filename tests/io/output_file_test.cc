@@ -1,4 +1,4 @@
-#include "musclesim/io/output_file.h"
+#include "musclesim/io/writers/output_file.h"
 #include "support/fresh_directory.h"
 
 #include <gmock/gmock.h>

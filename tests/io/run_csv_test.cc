@@ -1,7 +1,7 @@
-// A run as CSV (io/run_csv.h) and its stats as JSON (io/stats_json.h): the single actuator's
-// documented header, rows of 17 significant digits that read back to the same doubles, the
-// phase words, and the streamed writer writing what the whole formatter does.
-#include "musclesim/io/run_csv.h"
+// A run as CSV (io/writers/run_csv.h) and its stats as JSON (io/writers/stats_json.h): the single
+// actuator's documented header, rows of 17 significant digits that read back to the same doubles,
+// the phase words, and the streamed writer writing what the whole formatter does.
+#include "musclesim/io/writers/run_csv.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -13,8 +13,8 @@
 #include <random>
 #include <sstream>
 
-#include "musclesim/io/output_file.h"
-#include "musclesim/io/stats_json.h"
+#include "musclesim/io/writers/output_file.h"
+#include "musclesim/io/writers/stats_json.h"
 #include "support/canonical_scenarios.h"
 
 namespace musclesim {

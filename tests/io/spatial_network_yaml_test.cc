@@ -3,7 +3,7 @@
 // direction and the gravity into its field, refuses each misshapen key at its file:line:col
 // with the rule broken, and a file without `dimensions` reads as it always has.
 //
-// The parts are read here by the part readers (io/network_parts_yaml.h), which build no
+// The parts are read here by the part readers (io/readers/network_parts_yaml.h), which build no
 // system. The tests of the suite SpatialNetworkFile read whole files through LoadScenario,
 // which builds the network and checks its initial state: they depend on the engine's
 // support of 2 and 3 dimensions.
@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "io/network_parts_yaml.h"
-#include "io/yaml_fields.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "io/readers/network_parts_yaml.h"
+#include "io/readers/yaml_fields.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {

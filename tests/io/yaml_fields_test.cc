@@ -1,6 +1,6 @@
 // The YAML field helpers every reader uses: each error names the key path, the value, the
 // file:line:column and the rule. Positions are found in the text by the test itself.
-#include "io/yaml_fields.h"
+#include "io/readers/yaml_fields.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

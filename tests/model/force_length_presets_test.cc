@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "musclesim/core/errors.h"
-#include "musclesim/io/curves_csv.h"
+#include "musclesim/io/writers/curves_csv.h"
 
 namespace musclesim {
 namespace {

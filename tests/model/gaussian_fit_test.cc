@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "musclesim/core/errors.h"
-#include "musclesim/io/model_yaml.h"
+#include "musclesim/io/readers/model_yaml.h"
 #include "support/numeric.h"
 #include "support/rejection.h"
 

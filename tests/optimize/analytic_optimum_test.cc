@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/optimize/multiple_shooting.h"
 #include "musclesim/optimize/optimal_control.h"
 #include "optimize/derivative_check.h"

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/scenario/scenario.h"
 
 namespace musclesim::optimize_test {

@@ -12,7 +12,7 @@
 #include <set>
 
 #include "musclesim/core/errors.h"
-#include "musclesim/io/model_yaml.h"
+#include "musclesim/io/readers/model_yaml.h"
 #include "support/scenario_files.h"
 #include "support/fresh_directory.h"
 

@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "musclesim/core/errors.h"
-#include "musclesim/io/csv_table.h"
+#include "musclesim/io/readers/csv_table.h"
 #include "musclesim/identify/identify_series.h"
 #include "musclesim/plot/plot.h"
 #include "support/scenario_files.h"

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "musclesim/core/errors.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/scenario/run.h"
 #include "support/canonical_actuator.h"
 #include "support/canonical_scenarios.h"

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "support/control_networks.h"
 #include "support/difference_jacobian.h"
 

@@ -15,8 +15,8 @@
 #include <utility>
 #include <vector>
 
-#include "musclesim/io/document.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/document.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/scenario/run.h"
 #include "support/peer_reference.h"
 

@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "musclesim/core/number_format.h"
-#include "musclesim/io/document.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/document.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/scenario/run.h"
 #include "support/peer_reference.h"
 

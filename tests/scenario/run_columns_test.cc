@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/scenario/actuator_scenario.h"
 #include "musclesim/scenario/run.h"
 #include "support/cli_run.h"

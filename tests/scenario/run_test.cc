@@ -9,8 +9,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "musclesim/io/csv_table.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/csv_table.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {

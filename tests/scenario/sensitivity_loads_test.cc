@@ -1,8 +1,8 @@
 // Forward sensitivities to the values of the loads (difference quotients of the rebuilt
 // scenario's right-hand side) against finite differences of full runs
 // (support/sensitivity_reference.h): one test per load kind the scenario reader accepts
-// (io/scenario_fields.cc ReadLoad: constant, step, ramp, sine, pulses, table, spring, mass),
-// each differentiated by its values, not by its times; in a single actuator and on a
+// (io/readers/scenario_fields.cc ReadLoad: constant, step, ramp, sine, pulses, table, spring,
+// mass), each differentiated by its values, not by its times; in a single actuator and on a
 // network's node.
 #include <gtest/gtest.h>
 

@@ -12,7 +12,7 @@
 #include <numbers>
 #include <vector>
 
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/scenario/scenario.h"
 #include "musclesim/solver/simulation.h"
 #include "support/scenario_files.h"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/scenario/sensitivity_run.h"
 #include "support/scenario_files.h"
 #include "support/sensitivity_reference.h"

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "musclesim/core/errors.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/solver/simulation.h"
 #include "musclesim/solver/stepper.h"
 #include "support/canonical_networks.h"

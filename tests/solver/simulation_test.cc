@@ -9,7 +9,7 @@
 
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/scenario/run.h"
 #include "support/canonical_actuator.h"
 #include "support/scenario_files.h"

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/solver/simulation.h"
 #include "support/control_networks.h"
 #include "solver/stiffness_note.h"

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "musclesim/core/errors.h"
-#include "musclesim/io/scenario_yaml.h"
+#include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/scenario/actuator_scenario.h"
 #include "musclesim/scenario/scenario.h"
 #include "musclesim/scenario/sensitivity_run.h"

@@ -7,7 +7,7 @@
 #include <map>
 #include <string>
 
-#include "musclesim/io/csv_table.h"
+#include "musclesim/io/readers/csv_table.h"
 #include "musclesim/sweep/sweep.h"
 #include "musclesim/sweep/sweep_file.h"
 #include "musclesim/sweep/sweep_runner.h"

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "musclesim/core/errors.h"
-#include "musclesim/io/csv_table.h"
+#include "musclesim/io/readers/csv_table.h"
 #include "musclesim/sweep/sweep.h"
 #include "musclesim/sweep/sweep_file.h"
 #include "musclesim/sweep/sweep_runner.h"

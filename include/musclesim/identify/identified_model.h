@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "musclesim/io/model_yaml_writer.h"
+#include "musclesim/io/writers/model_yaml_writer.h"
 #include "musclesim/identify/identify.h"
 
 namespace musclesim {

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/identify_series_spec.h"
+#include "musclesim/io/readers/identify_series_spec.h"
 #include "musclesim/scenario/scenario.h"
 #include "musclesim/scenario/sensitivity_run.h"
 
@@ -163,7 +163,7 @@ SeriesIdentification DesignSeries(const IdentifySeriesSpec& spec,
 Scenario EstimatedScenario(const Scenario& scenario, const SeriesIdentification& fit);
 
 // "path=value" for every estimate, the shortest exact form: what applied to the scenario's
-// file gives the estimated one (io/scenario_rewrite.h writes it).
+// file gives the estimated one (io/writers/scenario_rewrite.h writes it).
 std::vector<std::string> EstimateOverrides(const SeriesIdentification& fit);
 
 // The verdict in one or two plain sentences: "f_iso and v_max are identifiable from this

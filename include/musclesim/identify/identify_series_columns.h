@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "musclesim/io/identify_series_spec.h"
+#include "musclesim/io/readers/identify_series_spec.h"
 #include "musclesim/identify/identify_series.h"
 
 namespace musclesim {

@@ -3,7 +3,7 @@
 // properties, those a file leaves out at OpenSim's defaults (the optional ones of the fiber's
 // and the tendon's curves computed from their strains, all of them or none). musclesim runs
 // no muscle of this family: `musclesim import` converts it to family degroote2016 and reports
-// how far each curve moved (io/muscle_import.h).
+// how far each curve moved (io/import/muscle_import.h).
 #pragma once
 
 #include <optional>

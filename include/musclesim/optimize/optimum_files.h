@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/document.h"
+#include "musclesim/io/readers/document.h"
 #include "musclesim/optimize/problem_file.h"
 #include "musclesim/scenario/run.h"
 

@@ -14,7 +14,7 @@
 
 #include <string>
 
-#include "musclesim/io/document.h"
+#include "musclesim/io/readers/document.h"
 #include "musclesim/optimize/optimal_control.h"
 
 namespace musclesim {
@@ -37,8 +37,8 @@ struct ProblemFile {
 // column, the key path, the value and the rule; the base scenario's errors are its own.
 ProblemFile LoadProblemFile(const std::string& path);
 
-// A problem given as a document (a Python call's arguments, io/document.h) on `scenario`: the
-// keys of a problem file but `base` and `output`, read and checked by the same rules, its
+// A problem given as a document (a Python call's arguments, io/readers/document.h) on `scenario`:
+// the keys of a problem file but `base` and `output`, read and checked by the same rules, its
 // errors named after `name`. Nothing is written, so `outputs` stay empty.
 ProblemFile ReadProblem(const Document& document, const std::string& name,
                         const Scenario& scenario);

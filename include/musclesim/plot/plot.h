@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "musclesim/io/csv_table.h"
+#include "musclesim/io/readers/csv_table.h"
 #include "musclesim/model/tension.h"
 #include "musclesim/scenario/scenario.h"
 

@@ -1,6 +1,6 @@
 // One run of a scenario: its system built and integrated by a Simulation, every recorded row
 // handed to a sink as it is produced. What the rows hold is the scenario's RunColumns
-// (scenario/run_columns.h): the CSV writer (io/run_csv.h) streams them to a file, a
+// (scenario/run_columns.h): the CSV writer (io/writers/run_csv.h) streams them to a file, a
 // ColumnRecorder keeps them in memory for code (and the Python module's NumPy arrays).
 #pragma once
 

@@ -1,6 +1,6 @@
 // The columns a scenario's run records, in the order of its CSV (docs/guide/scenarios.md), as the
-// scenario's form chooses them: one list, which the CSV writer (io/run_csv.h) turns into text
-// and the Python module into NumPy arrays, so both hold the same numbers.
+// scenario's form chooses them: one list, which the CSV writer (io/writers/run_csv.h) turns into
+// text and the Python module into NumPy arrays, so both hold the same numbers.
 //
 // A single actuator (ScenarioForm::kActuator):
 //   t, length, shortening_velocity, activation, [excitation], tension_passive, tension_active,

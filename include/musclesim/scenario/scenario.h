@@ -5,7 +5,7 @@
 // actuator of a file's single-actuator form is the network of docs/model.md 7.4, built by
 // scenario/actuator_scenario.h; there is no other kind of scenario.
 //
-// The YAML reader makes one (io/scenario_yaml.h), C++ and Python build one directly, and
+// The YAML reader makes one (io/readers/scenario_yaml.h), C++ and Python build one directly, and
 // parameter handles (scenario/parameter.h) change its numbers in place. A Scenario is a value:
 // copies are independent, and building its system (Build) reads it without changing it.
 #pragma once

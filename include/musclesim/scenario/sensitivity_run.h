@@ -4,7 +4,7 @@
 // known (a tension model's parameters, a spring's, tendon's or damper's coefficients), else a
 // difference quotient of the right-hand side between copies of the scenario set at p +- h
 // through the parameter's handle. `musclesim run --sensitivity` writes the same numbers as CSV
-// (io/run_csv.h).
+// (io/writers/run_csv.h).
 #pragma once
 
 #include <cstddef>

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "musclesim/io/document.h"
+#include "musclesim/io/readers/document.h"
 #include "musclesim/sweep/sweep_points.h"
 
 namespace musclesim {
@@ -23,7 +23,7 @@ namespace musclesim {
 // rank of MPI_COMM_WORLD must call it for the same file.
 SweepPlan LoadSweep(const std::string& path, int threads = 0);
 
-// The same for a sweep `document` built in code (io/document.h), `name` naming it in
+// The same for a sweep `document` built in code (io/readers/document.h), `name` naming it in
 // messages. Its `base` is a scenario file's path, relative to the working directory, unless
 // `base` is given: then that Scenario is the base, the document's `base` only its name in
 // messages, and `base_text` (its YAML, say) what resume's signature hashes for it.

@@ -1,0 +1,228 @@
+#include "io/readers/controller_yaml.h"
+
+#include <utility>
+
+#include "io/readers/network_parts_yaml.h"
+#include "io/readers/scenario_fields.h"
+#include "musclesim/core/input_ranges.h"
+
+namespace musclesim {
+
+namespace {
+
+using yaml::Join;
+using yaml::Required;
+using yaml::ValidateAt;
+
+// The controller types a file may name.
+constexpr const char* kControllerTypes = "pid";
+
+// A waveform of any kind at `node`, its values within `values` (nullptr: any finite value).
+Waveform ReadSignal(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                    const InputRange* values, double t_start, double t_end) {
+  const std::string type = ReadType(src, node, path);
+  WaveformKind kind{};
+  ValidateAt(src, node, path, [&] { kind = ParseWaveformKind(type); });
+  Waveform w = ReadWaveform(src, node, path, kind, values);
+  ValidateAt(src, node, path, [&] { Validate(w); });
+  CheckPulses(src, node, path, w, t_start, t_end);
+  return w;
+}
+
+// A node's measured coordinate, `coordinate: x` (y, z): optional on a line, where it can
+// only be x, required in 2 or 3 `dimensions`.
+int ReadCoordinate(const yaml::Source& src, const YAML::Node& node, const std::string& at,
+                   int dimensions) {
+  const std::string path = Join(at, "coordinate");
+  const YAML::Node coordinate = node["coordinate"];
+  const std::string names = dimensions == 1 ? "x" : dimensions == 2 ? "x or y" : "x, y or z";
+  if (!coordinate) {
+    if (dimensions == 1) return Measurement::kNoCoordinate;
+    // told as Required tells a missing key, at the map that lacks it
+    throw InputError(InputFault{
+        yaml::Place(src, node), path, std::nullopt,
+        "missing required key: in " + std::to_string(dimensions) +
+            " dimensions a node's measured position is one coordinate (coordinate: " + names +
+            ")"});
+  }
+  const std::string text = yaml::ReadString(src, coordinate, path);
+  int c = Measurement::kNoCoordinate;
+  ValidateAt(src, node, at, [&] { c = ParseCoordinate(text); });
+  if (c >= dimensions) {
+    yaml::Fail(src, coordinate, path, text,
+               "is beyond the scenario's coordinates (" + names +
+                   "): the scenario has dimensions: " + std::to_string(dimensions));
+  }
+  return c;
+}
+
+Measurement ReadMeasurement(const yaml::Source& src, const YAML::Node& item,
+                            const std::string& path, int dimensions) {
+  const YAML::Node node = Required(src, item, path, "measure");
+  const std::string at = Join(path, "measure");
+  yaml::RequireMap(src, node, at, {"element", "node", "quantity", "coordinate"});
+  if (static_cast<bool>(node["element"]) == static_cast<bool>(node["node"])) {
+    yaml::Fail(src, node, at, yaml::Describe(node),
+               "give exactly one of element (its quantity length or tension) or node (its "
+               "quantity position)");
+  }
+  Measurement m;
+  if (node["element"]) {
+    m.element = yaml::ReadString(src, node["element"], Join(at, "element"));
+    if (const YAML::Node coordinate = node["coordinate"]) {
+      yaml::Fail(src, coordinate, Join(at, "coordinate"), yaml::Describe(coordinate),
+                 "only a node's position has coordinates: an element's length and tension are "
+                 "numbers");
+    }
+  } else {
+    m.node = yaml::ReadString(src, node["node"], Join(at, "node"));
+    m.coordinate = ReadCoordinate(src, node, at, dimensions);
+  }
+  const YAML::Node quantity = Required(src, node, at, "quantity");
+  const std::string text = yaml::ReadString(src, quantity, Join(at, "quantity"));
+  ValidateAt(src, node, at, [&] { m.quantity = ParseMeasuredQuantity(text); });
+  return m;
+}
+
+PidGains ReadGains(const yaml::Source& src, const YAML::Node& item, const std::string& path) {
+  const YAML::Node node = Required(src, item, path, "gains");
+  const std::string at = Join(path, "gains");
+  yaml::RequireMap(src, node, at, {"kp", "ki", "kd"});
+  PidGains gains;
+  gains.kp = yaml::ReadOptionalNumberIn(src, node, at, "kp", kGainRange, 0.0);
+  gains.ki = yaml::ReadOptionalNumberIn(src, node, at, "ki", kGainRange, 0.0);
+  gains.kd = yaml::ReadOptionalNumberIn(src, node, at, "kd", kGainRange, 0.0);
+  return gains;
+}
+
+CoContraction ReadCoContraction(const yaml::Source& src, const YAML::Node& node,
+                                const std::string& at, double t_start, double t_end) {
+  yaml::RequireMap(src, node, at, {"actuators", "level"});
+  const YAML::Node actuators = Required(src, node, at, "actuators");
+  const std::string list = Join(at, "actuators");
+  if (!actuators.IsSequence() || actuators.size() != 2) {
+    yaml::Fail(src, actuators, list, yaml::Describe(actuators),
+               "must be a list of two actuators, [FIRST, SECOND]: FIRST takes level + c, "
+               "SECOND level - c");
+  }
+  CoContraction pair;
+  pair.first = yaml::ReadString(src, actuators[0], list + "[0]");
+  pair.second = yaml::ReadString(src, actuators[1], list + "[1]");
+  const std::string level = Join(at, "level");
+  pair.level = ReadActivation(src, Required(src, node, at, "level"), level);
+  CheckPulses(src, node["level"], level, pair.level, t_start, t_end);
+  return pair;
+}
+
+Controller ReadController(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+                          int dimensions, double t_start, double t_end) {
+  if (!item.IsMap()) {
+    yaml::Fail(src, item, path, yaml::Describe(item),
+               "must be a map: {name, type: pid, measure, reference, gains, drives or "
+               "co_contraction}");
+  }
+  yaml::RequireMap(
+      src, item, path,
+      {"name", "type", "measure", "reference", "gains", "feedforward", "drives", "co_contraction"});
+  Controller c;
+  c.name = ReadName(src, item, path);
+  const YAML::Node type = Required(src, item, path, "type");
+  const std::string kind = yaml::ReadString(src, type, Join(path, "type"));
+  if (kind != kControllerTypes) {
+    yaml::Fail(src, type, Join(path, "type"), kind,
+               std::string("must be one of ") + kControllerTypes);
+  }
+  c.measure = ReadMeasurement(src, item, path, dimensions);
+  // a reference in the measured quantity's unit
+  const InputRange* unit =
+      c.measure.quantity == MeasuredQuantity::kTension ? &kForceRange : &kPositionRange;
+  c.reference = ReadSignal(src, Required(src, item, path, "reference"), Join(path, "reference"),
+                           unit, t_start, t_end);
+  c.gains = ReadGains(src, item, path);
+  if (const YAML::Node node = item["feedforward"]) {
+    c.feedforward =
+        ReadSignal(src, node, Join(path, "feedforward"), &kFeedforwardRange, t_start, t_end);
+  }
+  const YAML::Node drives = item["drives"];
+  const YAML::Node pair = item["co_contraction"];
+  if (static_cast<bool>(drives) == static_cast<bool>(pair)) {
+    yaml::Fail(src, item, path, drives ? "drives and co_contraction" : "neither",
+               "give exactly one of drives (the actuator driven) or co_contraction "
+               "({actuators: [FIRST, SECOND], level}: an antagonist pair)");
+  }
+  if (drives) {
+    c.drives = yaml::ReadString(src, drives, Join(path, "drives"));
+  } else {
+    c.co_contraction = ReadCoContraction(src, pair, Join(path, "co_contraction"), t_start, t_end);
+  }
+  ValidateAt(src, item, path, [&] { Validate(c); });
+  return c;
+}
+
+}  // namespace
+
+std::vector<Controller> ReadControllers(const yaml::Source& src, const YAML::Node& node,
+                                        int dimensions, double t_start, double t_end) {
+  RequireList(src, node, "controllers",
+              "controllers, each {name, type: pid, measure, reference, gains, drives or "
+              "co_contraction}");
+  std::vector<Controller> controllers;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string path = "controllers[" + std::to_string(i) + "]";
+    controllers.push_back(ReadController(src, node[i], path, dimensions, t_start, t_end));
+  }
+  return controllers;
+}
+
+DrivenActuators DrivenActuatorsOf(const std::vector<Controller>& controllers) {
+  DrivenActuators driven;
+  for (std::size_t k = 0; k < controllers.size(); ++k) {
+    const Controller& c = controllers[k];
+    const ControllerRef ref{k, c.name};
+    if (c.co_contraction) {
+      driven.emplace(c.co_contraction->first, ref);
+      driven.emplace(c.co_contraction->second, ref);
+    } else {
+      driven.emplace(c.drives, ref);
+    }
+  }
+  return driven;
+}
+
+Element ReadControlledActuator(const yaml::Source& src, const YAML::Node& item,
+                               const std::string& path, const std::string& name,
+                               const std::string& from, const std::string& to,
+                               std::shared_ptr<const TensionModel> model,
+                               const ControllerRef& driver) {
+  for (const char* key : {"activation", "excitation"}) {
+    if (const YAML::Node own = item[key]) {
+      yaml::Fail(src, own, Join(path, key), yaml::Describe(own),
+                 "actuator " + name + " is driven by controllers[" + std::to_string(driver.index) +
+                     "] (" + driver.name + "): it has no activation of its own");
+    }
+  }
+  const YAML::Node dynamics = item["activation_dynamics"];
+  const YAML::Node initial = item["initial_activation"];
+  const std::string initial_path = Join(path, "initial_activation");
+  Element e;
+  if (!dynamics) {
+    if (initial) {
+      yaml::Fail(src, initial, initial_path, yaml::Describe(initial),
+                 "only with activation_dynamics: without them controllers[" +
+                     std::to_string(driver.index) + "] (" + driver.name +
+                     ") sets the activation itself, its start included");
+    }
+    ValidateAt(src, item, path,
+               [&] { e = Element::ControlledActuator(name, from, to, std::move(model)); });
+    return e;
+  }
+  const std::string at = Join(path, "activation_dynamics");
+  const ActivationDynamics lag = ReadActivationDynamics(src, dynamics, at);
+  const double u0 =
+      initial ? yaml::ReadNumberIn(src, initial, initial_path, kActivationRange) : 0.0;
+  ValidateAt(src, item, path,
+             [&] { e = Element::ControlledActuator(name, from, to, std::move(model), lag, u0); });
+  return e;
+}
+
+}  // namespace musclesim

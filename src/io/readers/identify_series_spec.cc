@@ -1,0 +1,171 @@
+// Reads the data file of `musclesim identify` on time series.
+#include "musclesim/io/readers/identify_series_spec.h"
+
+#include <filesystem>
+#include <set>
+
+#include "musclesim/core/key_path.h"
+#include "io/readers/document_yaml.h"
+#include "io/readers/yaml_fields.h"
+
+namespace musclesim {
+
+namespace {
+
+// A noise level: a standard deviation in the column's own unit.
+constexpr InputRange kNoiseRange{
+    0.0, 1e12, "the column's unit",
+    "a standard deviation is positive, and 1e12 is beyond any quantity a trajectory holds", true};
+
+// A start value or bound: the scenario's own rules check the value itself; this range keeps
+// the fit's arithmetic (differences and squares of steps) finite.
+constexpr InputRange kParameterRange{
+    -1e12, 1e12, "the parameter's unit",
+    "beyond 1e12 no quantity of a scenario lies, and steps between such values stay finite"};
+
+std::string Relative(const std::string& base_dir, const std::string& file) {
+  return (std::filesystem::path(base_dir) / file).lexically_normal().string();
+}
+
+SeriesSpec ReadSeries(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                      const std::string& base_dir, SeriesValues values) {
+  if (values == SeriesValues::kInMemory) {
+    // the caller holds the values: an entry gives at most their noise levels
+    yaml::RequireMap(src, node, path, {"noise"});
+  } else {
+    yaml::RequireMap(src, node, path, {"csv", "noise"});
+  }
+  SeriesSpec series;
+  series.at = yaml::Place(src, node);
+  if (values == SeriesValues::kCsvFiles && !node["csv"] && !node["noise"]) {
+    yaml::Fail(src, node, path, yaml::Describe(node),
+               "give csv (the measured values, to fit) or noise (the columns and their noise "
+               "levels, enough for an experiment design)");
+  }
+  if (const YAML::Node csv = node["csv"]) {
+    const std::string file = yaml::ReadString(src, csv, path + ".csv");
+    if (file.empty()) yaml::Fail(src, csv, path + ".csv", "\"\"", "must name a CSV file");
+    series.csv = Relative(base_dir, file);
+    series.csv_at = yaml::Place(src, csv);
+  }
+  if (const YAML::Node noise = node["noise"]) {
+    if (!noise.IsMap() || noise.size() == 0) {
+      yaml::Fail(src, noise, path + ".noise", yaml::Describe(noise),
+                 "must be a map from column names to standard deviations, e.g. {length: 2.0e-5}");
+    }
+    for (const auto& entry : noise) {
+      const std::string column = yaml::ReadString(src, entry.first, path + ".noise");
+      series.noise.emplace_back(
+          column, yaml::ReadNumberIn(src, entry.second, path + ".noise." + column, kNoiseRange));
+    }
+  }
+  return series;
+}
+
+SeriesParameterSpec ReadParameter(const yaml::Source& src, const YAML::Node& node,
+                                  const std::string& path) {
+  yaml::RequireMap(src, node, path, {"path", "start", "bounds"});
+  SeriesParameterSpec parameter;
+  parameter.at = yaml::Place(src, node);
+  const YAML::Node name = yaml::Required(src, node, path, "path");
+  parameter.path = yaml::ReadString(src, name, path + ".path");
+  const auto steps = SplitKeyPath(parameter.path);
+  if (!steps || steps->empty()) {
+    yaml::Fail(src, name, path + ".path", yaml::Describe(name),
+               "must be a dotted key path into the scenario, e.g. model.f_iso or load[0].value");
+  }
+  if (const YAML::Node start = node["start"]) {
+    parameter.start = yaml::ReadNumberIn(src, start, path + ".start", kParameterRange);
+  }
+  if (const YAML::Node bounds = node["bounds"]) {
+    const std::vector<double> values = yaml::ReadNumbers(src, bounds, path + ".bounds", 2);
+    for (std::size_t i = 0; i < 2; ++i) {
+      if (!kParameterRange.Contains(values[i])) {
+        yaml::Fail(src, bounds[i], path + ".bounds[" + std::to_string(i) + "]",
+                   yaml::Describe(bounds[i]), kParameterRange.Rule());
+      }
+    }
+    if (!(values[0] < values[1])) {
+      yaml::Fail(src, bounds, path + ".bounds", yaml::Describe(bounds),
+                 "must be [lower, upper] with lower < upper");
+    }
+    parameter.lower = values[0];
+    parameter.upper = values[1];
+    if (parameter.start && (*parameter.start < values[0] || *parameter.start > values[1])) {
+      yaml::Fail(src, node["start"], path + ".start", yaml::Describe(node["start"]),
+                 "must lie within bounds " + yaml::Describe(bounds));
+    }
+  }
+  return parameter;
+}
+
+}  // namespace
+
+bool IsIdentifySeriesFile(const std::string& path) {
+  const YAML::Node root = yaml::LoadFile(path);
+  return root.IsMap() && root["scenario"];
+}
+
+IdentifySeriesSpec LoadIdentifySeriesSpec(const std::string& path) {
+  return ParseIdentifySeriesSpec(path, yaml::ReadText(path),
+                                 std::filesystem::path(path).parent_path().string());
+}
+
+namespace {
+
+IdentifySeriesSpec ReadSpec(const yaml::Source& src, const YAML::Node& root,
+                            const std::string& base_dir, SeriesValues values) {
+  const std::string& source = src.file;
+  yaml::RequireMap(src, root, "", {"scenario", "series", "parameters"});
+  IdentifySeriesSpec spec;
+  spec.source = source;
+
+  const YAML::Node scenario = yaml::Required(src, root, "", "scenario");
+  const std::string file = yaml::ReadString(src, scenario, "scenario");
+  if (file.empty()) yaml::Fail(src, scenario, "scenario", "\"\"", "must name a scenario file");
+  spec.scenario = Relative(base_dir, file);
+  spec.scenario_at = yaml::Place(src, scenario);
+
+  const YAML::Node series = yaml::Required(src, root, "", "series");
+  if (!series.IsSequence() || series.size() == 0) {
+    yaml::Fail(src, series, "series", yaml::Describe(series),
+               values == SeriesValues::kCsvFiles
+                   ? "must be a list of one or more series, each {csv: FILE, noise: {COLUMN: SD}}"
+                   : "must be a list of one or more series");
+  }
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    spec.series.push_back(
+        ReadSeries(src, series[i], "series[" + std::to_string(i) + "]", base_dir, values));
+  }
+
+  const YAML::Node parameters = yaml::Required(src, root, "", "parameters");
+  if (!parameters.IsSequence() || parameters.size() == 0) {
+    yaml::Fail(src, parameters, "parameters", yaml::Describe(parameters),
+               "must be a list of one or more parameters, each {path: P, start: V, "
+               "bounds: [L, U]}");
+  }
+  std::set<std::string> seen;
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    const std::string at = "parameters[" + std::to_string(i) + "]";
+    spec.parameters.push_back(ReadParameter(src, parameters[i], at));
+    if (!seen.insert(spec.parameters.back().path).second) {
+      yaml::Fail(src, parameters[i]["path"], at + ".path", spec.parameters.back().path,
+                 "is listed twice: each parameter once");
+    }
+  }
+  return spec;
+}
+
+}  // namespace
+
+IdentifySeriesSpec ParseIdentifySeriesSpec(const std::string& source, const std::string& text,
+                                           const std::string& base_dir, SeriesValues values) {
+  return ReadSpec(yaml::Source{source}, yaml::Parse(source, text), base_dir, values);
+}
+
+IdentifySeriesSpec ReadIdentifySeriesSpec(const Document& document, const std::string& name,
+                                          const std::string& base_dir, SeriesValues values) {
+  return ReadSpec(yaml::Source{name, name}, ToYaml(document), base_dir, values);
+}
+
+}  // namespace musclesim

@@ -1,0 +1,272 @@
+#include "io/readers/model_yaml_node.h"
+
+#include "musclesim/core/input_ranges.h"
+#include "io/readers/scenario_readers.h"
+
+namespace musclesim {
+
+namespace {
+
+using yaml::Join;
+using yaml::Required;
+
+PassiveParams ReadPassive(const yaml::Source& src, const YAML::Node& node,
+                          const std::string& path) {
+  yaml::RequireMap(src, node, path, {"k_p", "alpha", "slack_length"});
+  PassiveParams p;
+  p.k_p = yaml::ReadNumber(src, Required(src, node, path, "k_p"), Join(path, "k_p"));
+  p.alpha = yaml::ReadNumber(src, Required(src, node, path, "alpha"), Join(path, "alpha"));
+  p.slack_length =
+      yaml::ReadNumber(src, Required(src, node, path, "slack_length"), Join(path, "slack_length"));
+  return p;
+}
+
+// The curvature n of eq. 12: an integer 1..1000, written as a number ("3" or "3.0").
+int ReadExponent(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+  const double value = yaml::ReadNumber(src, node, path);
+  if (!(value >= 1.0 && value <= kMaxVelocityExponent) || value != std::floor(value)) {
+    yaml::Fail(src, node, path, yaml::Describe(node), "must be an integer >= 1 (at most 1000)");
+  }
+  return static_cast<int>(value);
+}
+
+// `eccentric: {v_max, n, limit}`, every key optional (docs/model.md section 9); the rules
+// between keys are the model's Validate.
+EccentricParams ReadEccentric(const yaml::Source& src, const YAML::Node& node,
+                              const std::string& path) {
+  yaml::RequireMap(src, node, path, {"v_max", "n", "limit"});
+  EccentricParams e;
+  if (node["v_max"]) e.v_max = yaml::ReadNumber(src, node["v_max"], Join(path, "v_max"));
+  if (node["n"]) e.n = ReadExponent(src, node["n"], Join(path, "n"));
+  if (node["limit"]) e.limit = yaml::ReadNumber(src, node["limit"], Join(path, "limit"));
+  return e;
+}
+
+VelocityParams ReadVelocity(const yaml::Source& src, const YAML::Node& node,
+                            const std::string& path) {
+  yaml::RequireMap(src, node, path, {"v_max", "n", "epsilon", "eccentric"});
+  VelocityParams p;
+  p.v_max = yaml::ReadNumber(src, Required(src, node, path, "v_max"), Join(path, "v_max"));
+  p.n = ReadExponent(src, Required(src, node, path, "n"), Join(path, "n"));
+  p.epsilon = yaml::ReadNumber(src, Required(src, node, path, "epsilon"), Join(path, "epsilon"));
+  if (node["eccentric"]) {
+    p.eccentric = ReadEccentric(src, node["eccentric"], Join(path, "eccentric"));
+  }
+  return p;
+}
+
+std::vector<TargetPoint> ReadPoints(const yaml::Source& src, const YAML::Node& node,
+                                    const std::string& path) {
+  if (!node.IsSequence()) {
+    yaml::Fail(src, node, path, yaml::Describe(node), "must be a list of [x, y] pairs");
+  }
+  std::vector<TargetPoint> points;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string at = path + "[" + std::to_string(i) + "]";
+    const std::vector<double> pair = yaml::ReadNumbers(src, node[i], at, 2);
+    // x is a length, y a target value of about 1: bounded so the fit's integrals stay finite
+    if (!kPositionRange.Contains(pair[0])) {
+      yaml::Fail(src, node[i][0], at + "[0]", yaml::Describe(node[i][0]), kPositionRange.Rule());
+    }
+    if (!kFitValueRange.Contains(pair[1])) {
+      yaml::Fail(src, node[i][1], at + "[1]", yaml::Describe(node[i][1]), kFitValueRange.Rule());
+    }
+    points.push_back({pair[0], pair[1]});
+  }
+  return points;
+}
+
+FitSpec ReadFitSpec(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+  yaml::RequireMap(
+      src, node, path,
+      {"count", "target", "points", "nonnegative", "widths", "centers", "name", "optimal_length"});
+  FitSpec spec;
+  spec.count = yaml::ReadInteger(src, Required(src, node, path, "count"), Join(path, "count"));
+  if (node["target"]) {
+    const std::string text = yaml::ReadString(src, node["target"], Join(path, "target"));
+    yaml::ValidateAt(src, node, path, [&] { spec.target = ParseFitTargetKind(text); });
+  }
+  if (node["points"]) spec.points = ReadPoints(src, node["points"], Join(path, "points"));
+  if (node["name"]) {
+    const std::string text = yaml::ReadString(src, node["name"], Join(path, "name"));
+    yaml::ValidateAt(src, node, path, [&] { spec.preset = ParseForceLengthPreset(text); });
+  }
+  if (node["optimal_length"]) {
+    spec.optimal_length =
+        yaml::ReadNumberIn(src, node["optimal_length"], Join(path, "optimal_length"), kLengthRange);
+  }
+  if (node["nonnegative"]) {
+    spec.nonnegative = yaml::ReadBool(src, node["nonnegative"], Join(path, "nonnegative"));
+  }
+  if (node["widths"])
+    spec.precisions = yaml::ReadNumbers(src, node["widths"], Join(path, "widths"));
+  if (node["centers"]) {
+    spec.centers = yaml::ReadNumbers(src, node["centers"], Join(path, "centers"));
+    for (std::size_t k = 0; k < spec.centers.size(); ++k) {
+      if (!kPositionRange.Contains(spec.centers[k])) {
+        const YAML::Node center = node["centers"][k];
+        yaml::Fail(src, center, Join(path, "centers") + "[" + std::to_string(k) + "]",
+                   yaml::Describe(center), kPositionRange.Rule());
+      }
+    }
+  }
+  const bool needs_points =
+      spec.target == FitTargetKind::kPolygon || spec.target == FitTargetKind::kSamples;
+  if (needs_points && spec.points.empty() && !node["points"]) {
+    yaml::Fail(src, node, Join(path, "points"), "~",
+               "target " + std::string(ToString(spec.target)) + " needs points");
+  }
+  yaml::ValidateAt(src, node, path, [&] { Validate(spec); });
+  return spec;
+}
+
+std::vector<Gaussian> ReadGaussians(const yaml::Source& src, const YAML::Node& node,
+                                    const std::string& path) {
+  if (!node.IsSequence() || node.size() == 0) {
+    yaml::Fail(src, node, path, yaml::Describe(node),
+               "must be a non-empty list of {amplitude, width, center}");
+  }
+  std::vector<Gaussian> gaussians;
+  for (std::size_t k = 0; k < node.size(); ++k) {
+    const std::string at = path + "[" + std::to_string(k) + "]";
+    const YAML::Node item = node[k];
+    yaml::RequireMap(src, item, at, {"amplitude", "width", "center"});
+    gaussians.push_back(
+        {yaml::ReadNumber(src, Required(src, item, at, "amplitude"), Join(at, "amplitude")),
+         yaml::ReadNumber(src, Required(src, item, at, "width"), Join(at, "width")),
+         yaml::ReadNumber(src, Required(src, item, at, "center"), Join(at, "center"))});
+  }
+  return gaussians;
+}
+
+}  // namespace
+
+ModelSpec ReadModelSpec(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+  if (node.IsMap() && node["family"]) {
+    const YAML::Node family = node["family"];
+    const std::string text = yaml::ReadString(src, family, Join(path, "family"));
+    const std::optional<CurveFamily> parsed = ParseCurveFamily(text);
+    if (!parsed) {
+      yaml::Fail(src, family, Join(path, "family"), yaml::Describe(family),
+                 "must be paper, degroote2016 or mujoco (docs/model.md 14.1)");
+    }
+    if (*parsed != CurveFamily::kPaper) return ReadFamilyModelSpec(src, node, path, *parsed);
+  }
+  // the paper's block: none of another family's keys
+  yaml::RequireMap(src, node, path,
+                   {"f_iso", "passive", "active_length", "velocity", "family", "pennation_angle"});
+  ModelSpec model;
+  ModelParams& p = model.params;
+  p.f_iso = yaml::ReadNumber(src, Required(src, node, path, "f_iso"), Join(path, "f_iso"));
+  p.pennation_angle = yaml::ReadOptionalNumber(src, node, path, "pennation_angle", 0.0);
+  p.passive = ReadPassive(src, Required(src, node, path, "passive"), Join(path, "passive"));
+  p.velocity = ReadVelocity(src, Required(src, node, path, "velocity"), Join(path, "velocity"));
+
+  const std::string active_path = Join(path, "active_length");
+  const YAML::Node active = Required(src, node, path, "active_length");
+  yaml::RequireMap(src, active, active_path, {"optimal_range", "sigma", "gaussians", "fit"});
+  const std::vector<double> range =
+      yaml::ReadNumbers(src, Required(src, active, active_path, "optimal_range"),
+                        Join(active_path, "optimal_range"), 2);
+  p.active_length.optimal_min = range[0];
+  p.active_length.optimal_max = range[1];
+  p.active_length.sigma =
+      yaml::ReadOptionalNumber(src, active, active_path, "sigma", p.active_length.sigma);
+  const bool has_list = static_cast<bool>(active["gaussians"]);
+  const bool has_fit = static_cast<bool>(active["fit"]);
+  if (has_list == has_fit) {
+    yaml::Fail(src, active, active_path, has_list ? "gaussians and fit" : "neither",
+               "give exactly one of gaussians (explicit components) or fit (fitted at load)");
+  }
+
+  // the fit needs a valid range and sigma first: check the block without components
+  ActiveLengthParams range_only = p.active_length;
+  range_only.gaussians = {Gaussian{1.0, 1.0, 0.0}};
+  yaml::ValidateAt(src, active, active_path, [&] { Validate(range_only); });
+
+  if (has_list) {
+    p.active_length.gaussians =
+        ReadGaussians(src, active["gaussians"], Join(active_path, "gaussians"));
+  } else {
+    const std::string fit_path = Join(active_path, "fit");
+    model.fit = ReadFitSpec(src, active["fit"], fit_path);
+    // a preset peaks at its optimal length: f_L, normalised over L_opt, follows it only if
+    // that peak lies in L_opt
+    if (const std::optional<double> l_opt = model.fit->optimal_length;
+        model.fit->target == FitTargetKind::kPreset && l_opt &&
+        !(*l_opt >= range[0] && *l_opt <= range[1])) {
+      const YAML::Node at = active["fit"]["optimal_length"];
+      yaml::Fail(src, at, Join(fit_path, "optimal_length"), yaml::Describe(at),
+                 "must lie within optimal_range [" + FormatNumber(range[0]) + ", " +
+                     FormatNumber(range[1]) +
+                     "]: the preset peaks there, and f_L is normalised by its maximum over "
+                     "optimal_range");
+    }
+    yaml::ValidateAt(src, active["fit"], fit_path, [&] {
+      model.fit_result = FitGaussians(*model.fit, p.active_length.optimal_min,
+                                      p.active_length.optimal_max, p.active_length.sigma);
+    });
+    p.active_length.gaussians = model.fit_result->gaussians;
+  }
+
+  // the model's constructor validates everything, including that f_L can be normalised
+  try {
+    TensionModel check(p);
+  } catch (const ParameterError& error) {
+    // components nobody wrote came from the fit: the message names the fit's target
+    if (has_fit && error.path().rfind("active_length.gaussians", 0) == 0) {
+      const YAML::Node fit = active["fit"];
+      const bool has_points = static_cast<bool>(fit["points"]);
+      const std::string target_path = Join(active_path, has_points ? "fit.points" : "fit");
+      yaml::Fail(
+          src, has_points ? fit["points"] : fit, target_path,
+          has_points ? std::to_string(fit["points"].size()) + " points" : yaml::Describe(fit),
+          "the fit of this target gave " + error.path() + " = " + error.value() +
+              " (rule: " + error.rule() + "); choose a target the Gaussians can follow");
+    }
+    yaml::Relocate(src, node, path, error);
+  }
+  return model;
+}
+
+namespace {
+
+// A model file, or a scenario read whole: only `name` and `model` make a model file; any
+// other key of the scenario vocabulary makes it a scenario, which must then be valid.
+ModelSpec ReadModelFile(const yaml::Source& src, const YAML::Node& root) {
+  yaml::RequireMap(src, root, "", kScenarioKeys);
+  for (const auto& entry : root) {
+    const std::string& key = entry.first.Scalar();
+    if (key != "model" && key != "name")
+      return ReadActuatorScenario(src, root).models.at("model").spec;
+  }
+  return ReadModelSpec(src, Required(src, root, "", "model"), "model");
+}
+
+}  // namespace
+
+ModelSpec LoadModelSpec(const std::string& path) {
+  return ReadModelFile(yaml::Source{path}, yaml::LoadFile(path));
+}
+
+ModelSpec LoadModelFit(const std::string& path) {
+  const YAML::Node root = yaml::LoadFile(path);
+  const yaml::Source src{path};
+  ModelSpec model = ReadModelFile(src, root);
+  if (model.params.family != CurveFamily::kPaper) {
+    const YAML::Node family = root["model"]["family"];
+    yaml::Fail(src, family, "model.family", yaml::Describe(family),
+               "has its own curves and no Gaussians to fit: `musclesim fit` fits the paper's "
+               "model (family paper)");
+  }
+  if (!model.fit_result) {
+    const YAML::Node gaussians = root["model"]["active_length"]["gaussians"];
+    yaml::Fail(src, gaussians, "model.active_length.gaussians",
+               std::to_string(gaussians.size()) + " components",
+               "explicit components leave nothing to fit: give model.active_length.fit instead "
+               "(README \"The closed-form fit\")");
+  }
+  return model;
+}
+
+}  // namespace musclesim

@@ -1,0 +1,514 @@
+#include "io/readers/network_parts_yaml.h"
+
+#include <cmath>
+
+#include "io/readers/controller_yaml.h"
+#include "io/readers/scenario_fields.h"
+#include "musclesim/core/input_ranges.h"
+#include "musclesim/scenario/element_limits.h"
+
+namespace musclesim {
+
+namespace {
+
+using yaml::Join;
+using yaml::Required;
+using yaml::ValidateAt;
+
+std::string Item(const char* list, std::size_t i) {
+  return std::string(list) + "[" + std::to_string(i) + "]";
+}
+
+// path + "[i]", built by appending (GCC 12 warns falsely on "[" + std::to_string(i)).
+std::string Indexed(std::string path, std::size_t i) {
+  path.append("[").append(std::to_string(i)).append("]");
+  return path;
+}
+
+// What a rule of the space says it follows from: "the scenario has dimensions: 2".
+std::string HasDimensions(int dimensions) {
+  return "the scenario has dimensions: " + std::to_string(dimensions);
+}
+
+// The coordinates of a list in messages, each name after `prefix`: "[x, y]", "[vx, vy, vz]".
+std::string CoordinateNames(int dimensions, const char* prefix) {
+  std::string names = "[";
+  for (int c = 0; c < dimensions; ++c) {
+    names.append(c == 0 ? "" : ", ").append(prefix).push_back("xyz"[c]);
+  }
+  return names + "]";
+}
+
+// A list of exactly `dimensions` numbers (2 or 3) at `node`, each within `range`; the
+// coordinates past them 0. `prefix` names them in messages (CoordinateNames).
+Coordinates ReadCoordinateList(const yaml::Source& src, const YAML::Node& node,
+                               const std::string& path, int dimensions, const InputRange& range,
+                               const char* prefix) {
+  const auto d = static_cast<std::size_t>(dimensions);
+  if (!node.IsSequence() || node.size() != d) {
+    yaml::Fail(src, node, path, yaml::Describe(node),
+               "must be a list of " + std::to_string(d) + " numbers " +
+                   CoordinateNames(dimensions, prefix) + ": " + HasDimensions(dimensions));
+  }
+  Coordinates x{};
+  for (std::size_t c = 0; c < d; ++c) {
+    x[c] = yaml::ReadNumberIn(src, node[c], Indexed(path, c), range);
+  }
+  return x;
+}
+
+// A node's point (its `fixed`, `position` or `velocity`): one number, x, on a line, a list
+// of `dimensions` numbers otherwise.
+Coordinates ReadPoint(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                      int dimensions, const InputRange& range, const char* prefix) {
+  if (dimensions > 1) return ReadCoordinateList(src, node, path, dimensions, range, prefix);
+  if (node.IsSequence()) {
+    yaml::Fail(src, node, path, yaml::Describe(node),
+               "must be a number in 1 dimension: a list of coordinates needs dimensions: 2 or 3 "
+               "at the top level");
+  }
+  return {yaml::ReadNumberIn(src, node, path, range), 0.0, 0.0};
+}
+
+Waveform ReadMotion(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+  const std::string type = ReadType(src, node, path);
+  WaveformKind kind{};
+  ValidateAt(src, node, path, [&] { kind = ParseWaveformKind(type); });
+  if (kind == WaveformKind::kStep || kind == WaveformKind::kPulses) {
+    yaml::Fail(src, node["type"], Join(path, "type"), type,
+               "must be continuous in time: constant, ramp, sine or table (a jump in position "
+               "would move the node at infinite speed)");
+  }
+  return ReadWaveform(src, node, path, kind, &kPositionRange);
+}
+
+// A prescribed node's motion: one waveform on a line, a list of one per coordinate otherwise.
+void ReadPrescribed(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                    int dimensions, Node& out) {
+  if (dimensions == 1) {
+    if (node.IsSequence()) {
+      yaml::Fail(src, node, path, yaml::Describe(node),
+                 "must be one motion (a waveform) in 1 dimension: a list of motions, one per "
+                 "coordinate, needs dimensions: 2 or 3 at the top level");
+    }
+    out.motion = ReadMotion(src, node, path);
+    return;
+  }
+  const auto d = static_cast<std::size_t>(dimensions);
+  if (!node.IsSequence() || node.size() != d) {
+    yaml::Fail(
+        src, node, path, yaml::Describe(node),
+        "must be a list of " + std::to_string(d) + " motions " +
+            (d == 2 ? "[x(t), y(t)]" : "[x(t), y(t), z(t)]") +
+            ", each a waveform (constant, ramp, sine or table): " + HasDimensions(dimensions));
+  }
+  out.motion = ReadMotion(src, node[0], Indexed(path, 0));
+  for (std::size_t c = 1; c < d; ++c) {
+    out.motion_yz[c - 1] = ReadMotion(src, node[c], Indexed(path, c));
+  }
+}
+
+Node ReadNode(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+              int dimensions) {
+  if (!item.IsMap()) {
+    yaml::Fail(src, item, path, yaml::Describe(item),
+               "must be a map: a name and one of fixed, prescribed or mass");
+  }
+  // a misspelt key first: it would otherwise read as a missing kind
+  yaml::RequireMap(src, item, path,
+                   {"name", "fixed", "prescribed", "mass", "position", "velocity"});
+  Node node;
+  node.name = ReadName(src, item, path);
+  const int kinds = static_cast<int>(static_cast<bool>(item["fixed"])) +
+                    static_cast<int>(static_cast<bool>(item["prescribed"])) +
+                    static_cast<int>(static_cast<bool>(item["mass"]));
+  if (kinds != 1) {
+    yaml::Fail(src, item, path, yaml::Describe(item),
+               "give exactly one of fixed (its position [m]), prescribed (its motion) or mass "
+               "(a free node [kg], with position and velocity)");
+  }
+  // x in position, velocity and motion, y and z in their _yz fields
+  const auto set_position = [&node](const Coordinates& x) {
+    node.position = x[0];
+    node.position_yz = {x[1], x[2]};
+  };
+  if (item["fixed"]) {
+    yaml::RequireMap(src, item, path, {"name", "fixed"});
+    node.kind = NodeKind::kFixed;
+    set_position(
+        ReadPoint(src, item["fixed"], Join(path, "fixed"), dimensions, kPositionRange, ""));
+  } else if (item["prescribed"]) {
+    yaml::RequireMap(src, item, path, {"name", "prescribed"});
+    node.kind = NodeKind::kPrescribed;
+    ReadPrescribed(src, item["prescribed"], Join(path, "prescribed"), dimensions, node);
+  } else {
+    yaml::RequireMap(src, item, path, {"name", "mass", "position", "velocity"});
+    node.kind = NodeKind::kFree;
+    // exactly 0: a massless junction (docs/model.md 14.4); else a mass within the range
+    node.mass = yaml::ReadNumber(src, item["mass"], Join(path, "mass"));
+    if (node.mass != 0.0) {
+      node.mass = yaml::ReadNumberIn(src, item["mass"], Join(path, "mass"), kNodeMassRange);
+    }
+    set_position(ReadPoint(src, Required(src, item, path, "position"), Join(path, "position"),
+                           dimensions, kPositionRange, ""));
+    if (const YAML::Node velocity = item["velocity"]) {
+      const Coordinates v =
+          ReadPoint(src, velocity, Join(path, "velocity"), dimensions, kSpeedRange, "v");
+      node.velocity = v[0];
+      node.velocity_yz = {v[1], v[2]};
+    }
+  }
+  ValidateAt(src, item, path, [&] { Validate(node); });
+  return node;
+}
+
+std::shared_ptr<const TensionModel> FindModel(const yaml::Source& src, const YAML::Node& item,
+                                              const std::string& path, const NamedModels& models) {
+  const YAML::Node node = Required(src, item, path, "model");
+  const std::string name = yaml::ReadString(src, node, Join(path, "model"));
+  const auto found = models.by_name.find(name);
+  if (found == models.by_name.end()) {
+    std::string known;
+    for (const std::string& n : models.names) known += (known.empty() ? "" : ", ") + n;
+    yaml::Fail(src, node, Join(path, "model"), name,
+               known.empty() ? "names no model: the file has no models block"
+                             : "names no model; the models are: " + known);
+  }
+  return found->second;
+}
+
+// The keys an element of `kind` may have: a misspelt one is an error before any is read.
+// `via` comes last, so that the messages of files on a line read as they always have.
+void RequireElementKeys(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+                        ElementKind kind) {
+  switch (kind) {
+    case ElementKind::kActuator:
+      yaml::RequireMap(src, item, path,
+                       {"name", "type", "from", "to", "model", "activation", "excitation",
+                        "activation_dynamics", "initial_activation", "via"});
+      break;
+    case ElementKind::kSpring:
+      yaml::RequireMap(src, item, path,
+                       {"name", "type", "from", "to", "stiffness", "rest_length", "via"});
+      break;
+    case ElementKind::kTendon:
+      yaml::RequireMap(src, item, path,
+                       {"name", "type", "from", "to", "slack_length", "stiffness", "exponential",
+                        "degroote2016", "via"});
+      break;
+    case ElementKind::kDamper:
+      yaml::RequireMap(src, item, path, {"name", "type", "from", "to", "damping", "via"});
+      break;
+  }
+}
+
+double NumberIn(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+                const char* key, const InputRange& range) {
+  return yaml::ReadNumberIn(src, Required(src, item, path, key), Join(path, key), range);
+}
+
+// An actuator's model and its input: a controller's (`driven` names it), or its own
+// activation or excitation.
+void ReadActuator(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+                  const NamedModels& models, const DrivenActuators& driven, double t_start,
+                  double t_end, Element& e) {
+  e.model = FindModel(src, item, path, models);
+  if (const auto driver = driven.find(e.name); driver != driven.end()) {
+    e = ReadControlledActuator(src, item, path, e.name, e.from, e.to, e.model, driver->second);
+    return;
+  }
+  if (!item["activation"] && !item["excitation"]) {
+    // neither an input of its own nor a controller's: perhaps a misspelt `drives`
+    std::string drivers;
+    for (const auto& [name, unused] : driven) drivers += (drivers.empty() ? "" : ", ") + name;
+    throw InputError(InputFault{
+        yaml::Place(src, item), Join(path, "activation"), std::nullopt,
+        "missing required key: give activation (u(t) itself) or excitation (e(t), driving u "
+        "through activation_dynamics), or name " +
+            e.name + " in a controller's drives or co_contraction.actuators" +
+            (drivers.empty() ? "" : " (the controllers drive: " + drivers + ")")});
+  }
+  ActuatorDrive drive = ReadActuatorDrive(src, item, path, item["initial_activation"],
+                                          Join(path, "initial_activation"), t_start, t_end);
+  e.activation = std::move(drive.activation);
+  e.excitation = std::move(drive.excitation);
+}
+
+// OpenSim's default tendon strain at the maximum isometric force [-].
+constexpr double kDeGrooteTendonStrain = 0.049;
+
+// A tendon's slack length and its stiffness: linear, exponential or De Groote's, exactly one.
+void ReadTendon(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+                Element& e) {
+  e.slack_length = NumberIn(src, item, path, "slack_length", kPositionRange);
+  const YAML::Node exponential = item["exponential"];
+  const YAML::Node degroote = item["degroote2016"];
+  std::string laws;  // the laws given, "stiffness and exponential"
+  for (const char* key : {"stiffness", "exponential", "degroote2016"}) {
+    if (item[key]) laws += (laws.empty() ? "" : " and ") + std::string(key);
+  }
+  if (laws.empty() || laws.find(" and ") != std::string::npos) {
+    yaml::Fail(src, item, path, laws.empty() ? "neither" : laws,
+               "give exactly one of stiffness (a linear tendon [N/m]), exponential "
+               "({k, alpha}: k (exp(alpha (l - slack_length)) - 1)) or degroote2016 "
+               "({max_isometric_force, strain_at_one_norm_force}: OpenSim's De Groote tendon)");
+  }
+  if (degroote) {
+    const std::string at = Join(path, "degroote2016");
+    yaml::RequireMap(src, degroote, at, {"max_isometric_force", "strain_at_one_norm_force"});
+    const double f_iso = yaml::ReadNumberIn(src, Required(src, degroote, at, "max_isometric_force"),
+                                            Join(at, "max_isometric_force"), kPositiveForceRange);
+    const double strain = yaml::ReadOptionalNumberIn(src, degroote, at, "strain_at_one_norm_force",
+                                                     kTendonStrainRange, kDeGrooteTendonStrain);
+    ValidateAt(src, item, path, [&] {
+      e = Element::DeGrooteTendon(e.name, e.from, e.to, e.slack_length, f_iso, strain);
+    });
+    return;
+  }
+  if (exponential) {
+    const std::string at = Join(path, "exponential");
+    yaml::RequireMap(src, exponential, at, {"k", "alpha"});
+    e.k = yaml::ReadNumberIn(src, Required(src, exponential, at, "k"), Join(at, "k"),
+                             kPositiveForceRange);
+    e.alpha = yaml::ReadNumber(src, Required(src, exponential, at, "alpha"), Join(at, "alpha"));
+  } else {
+    e.stiffness = NumberIn(src, item, path, "stiffness", kStiffnessRange);
+  }
+}
+
+// An element's `via` points: each a node's name (NetworkSystem resolves it) or a fixed
+// point, a list of `dimensions` coordinates.
+std::vector<ViaPoint> ReadVia(const yaml::Source& src, const YAML::Node& node,
+                              const std::string& path, int dimensions) {
+  if (dimensions == 1) {
+    yaml::Fail(src, node, path, yaml::Describe(node),
+               "via points need dimensions: 2 or 3 at the top level (on a line an element runs "
+               "straight from `from` to `to`)");
+  }
+  const std::string point = "a fixed point, a list of " + std::to_string(dimensions) + " numbers " +
+                            CoordinateNames(dimensions, "");
+  if (!node.IsSequence()) {
+    yaml::Fail(src, node, path, yaml::Describe(node),
+               "must be a list of via points, each a node's name or " + point);
+  }
+  std::vector<ViaPoint> via;
+  for (std::size_t k = 0; k < node.size(); ++k) {
+    const YAML::Node entry = node[k];
+    const std::string at = Indexed(path, k);
+    if (entry.IsSequence()) {
+      via.push_back(
+          ViaPoint::Fixed(ReadCoordinateList(src, entry, at, dimensions, kPositionRange, "")));
+    } else if (entry.IsScalar() && !entry.Scalar().empty()) {
+      via.push_back(ViaPoint::Node(entry.Scalar()));
+    } else {
+      yaml::Fail(src, entry, at, entry.IsScalar() ? "\"\"" : yaml::Describe(entry),
+                 "must be a node's name or " + point);
+    }
+  }
+  return via;
+}
+
+// A load's `direction` in the map `item`: on a line x (the key refused), otherwise a list of
+// `dimensions` numbers, not all zero (the system makes it a unit vector).
+Coordinates ReadDirection(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+                          int dimensions) {
+  const std::string at = Join(path, "direction");
+  if (dimensions == 1) {
+    if (const YAML::Node node = item["direction"]) {
+      yaml::Fail(src, node, at, yaml::Describe(node),
+                 "needs dimensions: 2 or 3 at the top level (on a line a load acts along x)");
+    }
+    return {1.0, 0.0, 0.0};
+  }
+  if (!item["direction"]) {
+    throw InputError(InputFault{yaml::Place(src, item), at, std::nullopt,
+                                "missing required key: in " + std::to_string(dimensions) +
+                                    " dimensions a load acts along a direction, a list of " +
+                                    std::to_string(dimensions) + " numbers " +
+                                    CoordinateNames(dimensions, "d")});
+  }
+  const YAML::Node node = item["direction"];
+  const Coordinates d = ReadCoordinateList(src, node, at, dimensions, kDirectionRange, "d");
+  // a length that underflows would make no unit vector either
+  if (!(std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) > 0.0)) {
+    yaml::Fail(src, node, at, yaml::Describe(node),
+               "must not be zero: the load acts along it, made a unit vector");
+  }
+  return d;
+}
+
+Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+                    const NamedModels& models, const DrivenActuators& driven, int dimensions,
+                    double t_start, double t_end) {
+  const std::string type = ReadType(src, item, path);
+  Element e;
+  ValidateAt(src, item, path, [&] { e.kind = ParseElementKind(type); });
+  RequireElementKeys(src, item, path, e.kind);
+  e.name = ReadName(src, item, path);
+  e.from = yaml::ReadString(src, Required(src, item, path, "from"), Join(path, "from"));
+  e.to = yaml::ReadString(src, Required(src, item, path, "to"), Join(path, "to"));
+  // read before the kind's fields, kept after them: a controlled actuator is made afresh
+  std::vector<ViaPoint> via;
+  if (const YAML::Node node = item["via"]) via = ReadVia(src, node, Join(path, "via"), dimensions);
+  switch (e.kind) {
+    case ElementKind::kActuator:
+      ReadActuator(src, item, path, models, driven, t_start, t_end, e);
+      break;
+    case ElementKind::kSpring:
+      e.stiffness = NumberIn(src, item, path, "stiffness", kStiffnessRange);
+      e.rest_length = NumberIn(src, item, path, "rest_length", kPositionRange);
+      break;
+    case ElementKind::kTendon: ReadTendon(src, item, path, e); break;
+    case ElementKind::kDamper:
+      e.damping = NumberIn(src, item, path, "damping", kDampingRange);
+      break;
+  }
+  e.via = std::move(via);
+  ValidateAt(src, item, path, [&] { Validate(e); });
+  return e;
+}
+
+}  // namespace
+
+void RequireList(const yaml::Source& src, const YAML::Node& node, const char* list,
+                 const char* what) {
+  if (!node.IsSequence()) {
+    yaml::Fail(src, node, list, yaml::Describe(node), std::string("must be a list of ") + what);
+  }
+}
+
+std::string ReadName(const yaml::Source& src, const YAML::Node& item, const std::string& path) {
+  const YAML::Node node = Required(src, item, path, "name");
+  const std::string name = yaml::ReadString(src, node, Join(path, "name"));
+  bool plain = !name.empty();
+  for (const char c : name) {
+    plain = plain && ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                      c == '_' || c == '-');
+  }
+  if (!plain) {
+    yaml::Fail(src, node, Join(path, "name"), name.empty() ? "\"\"" : yaml::Describe(node),
+               "must be a plain name of letters, digits, _ and - (it heads CSV columns such "
+               "as name.position)");
+  }
+  return name;
+}
+
+Space ReadSpace(const yaml::Source& src, const YAML::Node& root) {
+  Space space;
+  if (const YAML::Node node = root["dimensions"]) {
+    const int d = yaml::ReadInteger(src, node, "dimensions");
+    if (d < 1 || d > 3) {
+      yaml::Fail(src, node, "dimensions", yaml::Describe(node),
+                 "must be 1 (a line, the default), 2 (the x-y plane) or 3 (space)");
+    }
+    space.dimensions = d;
+  }
+  if (const YAML::Node node = root["gravity"]) {
+    if (space.dimensions == 1) {
+      yaml::Fail(src, node, "gravity", yaml::Describe(node),
+                 "needs dimensions: 2 or 3 at the top level; on a line hang a weight with a "
+                 "load of type mass (docs/guide/networks.md)");
+    }
+    space.gravity = ReadCoordinateList(src, node, "gravity", space.dimensions, kGravityRange, "g");
+  }
+  ValidateAt(src, root, "", [&] { Validate(space); });
+  return space;
+}
+
+std::vector<Node> ReadNodes(const yaml::Source& src, const YAML::Node& node, int dimensions) {
+  RequireList(src, node, "nodes", "nodes, each a name and one of fixed, prescribed or mass");
+  std::vector<Node> nodes;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    nodes.push_back(ReadNode(src, node[i], Item("nodes", i), dimensions));
+  }
+  return nodes;
+}
+
+std::vector<Element> ReadElements(const yaml::Source& src, const YAML::Node& node,
+                                  const NamedModels& models, const DrivenActuators& driven,
+                                  int dimensions, double t_start, double t_end) {
+  RequireList(src, node, "elements", "elements, each {name, type, from, to, ...}");
+  std::vector<Element> elements;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    elements.push_back(
+        ReadElement(src, node[i], Item("elements", i), models, driven, dimensions, t_start, t_end));
+  }
+  return elements;
+}
+
+std::vector<NodeLoad> ReadNodeLoads(const yaml::Source& src, const YAML::Node& node, int dimensions,
+                                    double t_start, double t_end) {
+  RequireList(src, node, "loads", "loads, each {node, type, ...}");
+  std::vector<NodeLoad> loads;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string path = Item("loads", i);
+    const YAML::Node item = node[i];
+    NodeLoad load;
+    load.load = ReadLoad(src, item, path, {"node", "direction"});
+    load.node = yaml::ReadString(src, Required(src, item, path, "node"), Join(path, "node"));
+    load.direction = ReadDirection(src, item, path, dimensions);
+    if (load.load.kind == LoadKind::kForce) {
+      CheckPulses(src, item, path, load.load.force, t_start, t_end);
+    }
+    loads.push_back(std::move(load));
+  }
+  return loads;
+}
+
+std::vector<LengthLimit> ReadLengthLimits(const yaml::Source& src, const YAML::Node& node,
+                                          const NetworkSystem& system, double t_start) {
+  RequireList(src, node, "limits", "limits, each {element, min_length, max_length}");
+  std::vector<double> y(static_cast<std::size_t>(system.state_size()));
+  system.InitialState(t_start, y.data());
+  std::vector<LengthLimit> limits;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string path = Item("limits", i);
+    const YAML::Node item = node[i];
+    yaml::RequireMap(src, item, path, {"element", "min_length", "max_length"});
+    LengthLimit limit;
+    const YAML::Node element = Required(src, item, path, "element");
+    limit.element = yaml::ReadString(src, element, Join(path, "element"));
+    const int e = system.FindElement(limit.element);
+    if (e < 0) {
+      std::string known;
+      for (const Element& part : system.elements())
+        known += (known.empty() ? "" : ", ") + part.name;
+      yaml::Fail(src, element, Join(path, "element"), limit.element,
+                 "names no element; the elements are: " + known);
+    }
+    if (!item["min_length"] && !item["max_length"]) {
+      yaml::Fail(src, item, path, yaml::Describe(item), "give min_length, max_length or both [m]");
+    }
+    const double length = system.Length(e, t_start, y.data());
+    const std::string initial =
+        limit.element + "'s initial length = " + FormatNumber(length) + " [m]";
+    if (const YAML::Node min = item["min_length"]) {
+      const double value = yaml::ReadNumber(src, min, Join(path, "min_length"));
+      if (!(value >= 0.0 && value < length)) {
+        yaml::Fail(src, min, Join(path, "min_length"), yaml::Describe(min),
+                   "must be >= 0 and below " + initial);
+      }
+      limit.min_length = value;
+    }
+    if (const YAML::Node max = item["max_length"]) {
+      const double value = yaml::ReadNumber(src, max, Join(path, "max_length"));
+      if (!(value > length && value <= kLengthRange.max)) {
+        yaml::Fail(src, max, Join(path, "max_length"), yaml::Describe(max),
+                   "must be above " + initial + " and at most 1000 [m]: " + kLengthRange.why);
+      }
+      // the run may reach this length: its law must stay finite up to it
+      const double tension = TensionAtRest(system.elements()[static_cast<std::size_t>(e)], value);
+      if (!std::isfinite(tension)) {
+        yaml::Fail(src, max, Join(path, "max_length"), yaml::Describe(max),
+                   "is a length the run may reach, and there the tension of " + limit.element +
+                       " overflows (" + FormatNumber(tension) +
+                       " N): an exponential's alpha times its stretch must stay below about 700");
+      }
+      limit.max_length = value;
+    }
+    limits.push_back(std::move(limit));
+  }
+  return limits;
+}
+
+}  // namespace musclesim

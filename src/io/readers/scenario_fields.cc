@@ -1,0 +1,377 @@
+#include "io/readers/scenario_fields.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "musclesim/core/input_ranges.h"
+
+namespace musclesim {
+
+using yaml::Join;
+using yaml::ReadOptionalNumber;
+using yaml::Required;
+using yaml::ValidateAt;
+
+namespace {
+
+// A table's `points`: [t, value] pairs, t in the time range and the values in `values`
+// (any number when null); at most kMaxBreakpoints of them.
+std::vector<TablePoint> ReadTablePoints(const yaml::Source& src, const YAML::Node& node,
+                                        const std::string& path, const InputRange* values) {
+  const YAML::Node points = Required(src, node, path, "points");
+  const std::string at = Join(path, "points");
+  if (!points.IsSequence()) {
+    yaml::Fail(src, points, at, yaml::Describe(points), "must be a list of [t, value] pairs");
+  }
+  if (static_cast<double>(points.size()) > kMaxBreakpoints) {
+    yaml::Fail(src, points, at, std::to_string(points.size()) + " points",
+               "at most 5 million: each point is a stop time where the integrator restarts");
+  }
+  std::vector<TablePoint> table;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::string item = at + "[" + std::to_string(i) + "]";
+    const std::vector<double> pair = yaml::ReadNumbers(src, points[i], item, 2);
+    if (!kTimeRange.Contains(pair[0])) {
+      yaml::Fail(src, points[i][0], item + "[0]", yaml::Describe(points[i][0]), kTimeRange.Rule());
+    }
+    if (values && !values->Contains(pair[1])) {
+      yaml::Fail(src, points[i][1], item + "[1]", yaml::Describe(points[i][1]), values->Rule());
+    }
+    table.push_back({pair[0], pair[1]});
+  }
+  return table;
+}
+
+}  // namespace
+
+Waveform ReadWaveform(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                      WaveformKind kind, const InputRange* values,
+                      std::initializer_list<const char*> extra) {
+  Waveform w;
+  w.kind = kind;
+  const auto value = [&](const char* key) {
+    const YAML::Node item = Required(src, node, path, key);
+    return values ? yaml::ReadNumberIn(src, item, Join(path, key), *values)
+                  : yaml::ReadNumber(src, item, Join(path, key));
+  };
+  const auto time = [&](const char* key) {
+    return yaml::ReadNumberIn(src, Required(src, node, path, key), Join(path, key), kTimeRange);
+  };
+  const auto number = [&](const char* key) {
+    return yaml::ReadNumber(src, Required(src, node, path, key), Join(path, key));
+  };
+  switch (kind) {
+    case WaveformKind::kConstant:
+      yaml::RequireMap(src, node, path, {"type", "value"}, extra);
+      w.value = value("value");
+      break;
+    case WaveformKind::kStep:
+      yaml::RequireMap(src, node, path, {"type", "time", "before", "after"}, extra);
+      w.time = time("time");
+      w.before = value("before");
+      w.after = value("after");
+      break;
+    case WaveformKind::kRamp:
+      yaml::RequireMap(src, node, path, {"type", "start", "end", "from", "to"}, extra);
+      w.start = time("start");
+      w.end = time("end");
+      w.from = value("from");
+      w.to = value("to");
+      break;
+    case WaveformKind::kSine:
+      yaml::RequireMap(src, node, path, {"type", "offset", "amplitude", "frequency", "phase"},
+                       extra);
+      w.offset = value("offset");
+      w.amplitude = value("amplitude");
+      w.frequency = yaml::ReadNumberIn(src, Required(src, node, path, "frequency"),
+                                       Join(path, "frequency"), kFrequencyRange);
+      w.phase = ReadOptionalNumber(src, node, path, "phase", 0.0);
+      break;
+    case WaveformKind::kPulses:
+      yaml::RequireMap(src, node, path, {"type", "start", "period", "width", "low", "high"}, extra);
+      w.start = time("start");
+      w.period = number("period");  // checked against the run's time scale by CheckPulses
+      w.width = number("width");
+      w.low = value("low");
+      w.high = value("high");
+      break;
+    case WaveformKind::kTable:
+      yaml::RequireMap(src, node, path, {"type", "points"}, extra);
+      w.points = ReadTablePoints(src, node, path, values);
+      break;
+  }
+  return w;
+}
+
+std::string ReadType(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+  if (!node.IsMap()) yaml::Fail(src, node, path, yaml::Describe(node), "must be a map with a type");
+  return yaml::ReadString(src, Required(src, node, path, "type"), Join(path, "type"));
+}
+
+Waveform ReadActivation(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+  const std::string type = ReadType(src, node, path);
+  WaveformKind kind{};
+  ValidateAt(src, node, path, [&] { kind = ParseWaveformKind(type); });
+  Waveform w = ReadWaveform(src, node, path, kind, nullptr);
+  ValidateAt(src, node, path, [&] { ValidateActivation(w); });
+  return w;
+}
+
+ActivationDynamics ReadActivationDynamics(const yaml::Source& src, const YAML::Node& node,
+                                          const std::string& path) {
+  ActivationDynamics d;
+  if (node.IsMap() && node["family"]) {
+    const YAML::Node family = node["family"];
+    const std::string text = yaml::ReadString(src, family, Join(path, "family"));
+    if (text == "degroote2016") {
+      d.family = ActivationFamily::kDeGroote2016;
+    } else if (text == "mujoco") {
+      d.family = ActivationFamily::kMujoco;
+    } else if (text != "thelen2003") {
+      yaml::Fail(src, family, Join(path, "family"), yaml::Describe(family),
+                 "must be thelen2003, degroote2016 or mujoco (docs/model.md 8.1)");
+    }
+  }
+  // each family's own smoothing key, and no other's
+  switch (d.family) {
+    case ActivationFamily::kThelen2003:
+      yaml::RequireMap(src, node, path, {"tau_activation", "tau_deactivation", "family"});
+      break;
+    case ActivationFamily::kDeGroote2016:
+      yaml::RequireMap(src, node, path,
+                       {"tau_activation", "tau_deactivation", "family", "smoothing"});
+      break;
+    case ActivationFamily::kMujoco:
+      yaml::RequireMap(src, node, path,
+                       {"tau_activation", "tau_deactivation", "family", "tausmooth"});
+      break;
+  }
+  const auto number = [&](const char* key, const InputRange& range) {
+    return yaml::ReadNumberIn(src, Required(src, node, path, key), Join(path, key), range);
+  };
+  d.tau_activation = number("tau_activation", kActivationTimeConstantRange);
+  d.tau_deactivation = number("tau_deactivation", kActivationTimeConstantRange);
+  if (d.family == ActivationFamily::kDeGroote2016 && node["smoothing"]) {
+    d.smoothing = number("smoothing", kActivationSmoothingRange);
+  }
+  if (d.family == ActivationFamily::kMujoco && node["tausmooth"]) {
+    d.tausmooth = number("tausmooth", kTauSmoothRange);
+  }
+  return d;
+}
+
+ActuatorDrive ReadActuatorDrive(const yaml::Source& src, const YAML::Node& owner,
+                                const std::string& path, const YAML::Node& initial,
+                                const std::string& initial_path, double t_start, double t_end) {
+  const YAML::Node activation = owner["activation"];
+  const YAML::Node excitation = owner["excitation"];
+  const YAML::Node dynamics = owner["activation_dynamics"];
+  const std::string activation_path = Join(path, "activation");
+  const std::string excitation_path = Join(path, "excitation");
+  const std::string dynamics_path = Join(path, "activation_dynamics");
+  constexpr const char* kEither =
+      "give either activation (u(t) itself) or excitation (e(t), driving u through "
+      "activation_dynamics)";
+  ActuatorDrive drive;
+  if (activation && excitation) {
+    yaml::Fail(src, excitation, excitation_path, yaml::Describe(excitation),
+               std::string(kEither) + ", not both");
+  }
+  if (!excitation) {
+    if (dynamics) {
+      yaml::Fail(src, dynamics, dynamics_path, yaml::Describe(dynamics),
+                 "only with excitation: the time constants lag the activation behind an "
+                 "excitation; activation: gives u(t) itself");
+    }
+    if (!activation) {
+      throw InputError(InputFault{yaml::Place(src, owner), activation_path, std::nullopt,
+                                  std::string("missing required key: ") + kEither});
+    }
+    if (initial) {
+      yaml::Fail(src, initial, initial_path, yaml::Describe(initial),
+                 "only with excitation and activation_dynamics: activation: gives u(t) "
+                 "itself, its start included");
+    }
+    drive.activation = ReadActivation(src, activation, activation_path);
+    CheckPulses(src, activation, activation_path, drive.activation, t_start, t_end);
+    return drive;
+  }
+
+  ExcitationInput input;
+  const std::string type = ReadType(src, excitation, excitation_path);
+  WaveformKind kind{};
+  ValidateAt(src, excitation, excitation_path, [&] { kind = ParseWaveformKind(type); });
+  input.signal = ReadWaveform(src, excitation, excitation_path, kind, nullptr);
+  ValidateAt(src, excitation, excitation_path, [&] { ValidateExcitation(input.signal); });
+  CheckPulses(src, excitation, excitation_path, input.signal, t_start, t_end);
+  if (!dynamics) {
+    yaml::Fail(src, excitation, excitation_path, yaml::Describe(excitation),
+               "needs activation_dynamics: {tau_activation, tau_deactivation} [s] beside it, "
+               "the time constants through which it drives the activation");
+  }
+  input.dynamics = ReadActivationDynamics(src, dynamics, dynamics_path);
+  if (initial) {
+    input.initial_activation = yaml::ReadNumberIn(src, initial, initial_path, kActivationRange);
+  }
+  drive.excitation = std::move(input);
+  return drive;
+}
+
+Load ReadLoad(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+              std::initializer_list<const char*> extra) {
+  const std::string type = ReadType(src, node, path);
+  Load load;
+  if (type == "spring") {
+    yaml::RequireMap(src, node, path, {"type", "stiffness", "anchor"}, extra);
+    load.kind = LoadKind::kSpring;
+    load.stiffness = yaml::ReadNumberIn(src, Required(src, node, path, "stiffness"),
+                                        Join(path, "stiffness"), kStiffnessRange);
+    load.anchor = yaml::ReadNumberIn(src, Required(src, node, path, "anchor"), Join(path, "anchor"),
+                                     kPositionRange);
+  } else if (type == "mass") {
+    yaml::RequireMap(src, node, path, {"type", "mass", "gravity"}, extra);
+    load.kind = LoadKind::kMass;
+    load.mass =
+        yaml::ReadNumberIn(src, Required(src, node, path, "mass"), Join(path, "mass"), kMassRange);
+    load.gravity = yaml::ReadOptionalNumberIn(src, node, path, "gravity", kGravityRange, 9.81);
+  } else {
+    WaveformKind kind{};
+    try {
+      kind = ParseWaveformKind(type);
+    } catch (const ParameterError&) {
+      yaml::Fail(src, node["type"], Join(path, "type"), type,
+                 "must be one of constant, step, ramp, sine, pulses, table, spring, mass");
+    }
+    load.kind = LoadKind::kForce;
+    load.force = ReadWaveform(src, node, path, kind, &kForceRange, extra);
+  }
+  ValidateAt(src, node, path, [&] { Validate(load); });
+  return load;
+}
+
+void CheckPulses(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                 const Waveform& w, double t_start, double t_end) {
+  try {
+    CheckPulseTrain(w, t_start, t_end);
+  } catch (const ParameterError& error) {
+    // too many pulses is the period's consequence, told by its value; a time too short for
+    // double precision, as written
+    const YAML::Node at = node[error.path()];
+    const bool count = error.rule().rfind("gives", 0) == 0;
+    yaml::Fail(src, at, Join(path, error.path()), count ? error.value() : yaml::Describe(at),
+               error.rule());
+  }
+}
+
+TimeSpan ReadTime(const yaml::Source& src, const YAML::Node& time) {
+  yaml::RequireMap(src, time, "time", {"start", "end"});
+  TimeSpan span;
+  span.start =
+      yaml::ReadNumberIn(src, Required(src, time, "time", "start"), "time.start", kTimeRange);
+  span.end = yaml::ReadNumberIn(src, Required(src, time, "time", "end"), "time.end", kTimeRange);
+  const double shortest = kMinSpanRelative * TimeScale(span.start, span.end);
+  if (!(span.end - span.start >= shortest)) {
+    yaml::Fail(src, time["end"], "time.end", yaml::Describe(time["end"]),
+               "must be greater than time.start = " + FormatNumber(span.start) + " by at least " +
+                   FormatNumber(shortest) +
+                   " s, 1e-9 of the time scale max(1 s, |start|, |end|): room for 1000 output "
+                   "rows that double precision tells apart");
+  }
+  return span;
+}
+
+SolverOptions ReadSolver(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                         double t_start, double t_end) {
+  SolverOptions o;
+  yaml::RequireMap(
+      src, node, path,
+      {"method", "rtol", "atol", "jacobian", "max_step", "max_steps", "linear_solver"});
+  if (node["method"]) {
+    const std::string text = yaml::ReadString(src, node["method"], Join(path, "method"));
+    ValidateAt(src, node, path, [&] { o.method = ParseIntegrationMethod(text); });
+  }
+  if (node["jacobian"]) {
+    const std::string text = yaml::ReadString(src, node["jacobian"], Join(path, "jacobian"));
+    ValidateAt(src, node, path, [&] { o.jacobian = ParseJacobianKind(text); });
+  }
+  if (node["linear_solver"]) {
+    const std::string text =
+        yaml::ReadString(src, node["linear_solver"], Join(path, "linear_solver"));
+    ValidateAt(src, node, path, [&] { o.linear_solver = ParseLinearSolverKind(text); });
+  }
+  o.rtol = ReadOptionalNumber(src, node, path, "rtol", o.rtol);
+  o.atol = ReadOptionalNumber(src, node, path, "atol", o.atol);
+  o.max_step = ReadOptionalNumber(src, node, path, "max_step", o.max_step);
+  if (node["max_steps"]) {
+    const double steps = yaml::ReadNumber(src, node["max_steps"], Join(path, "max_steps"));
+    if (!(steps >= 1.0 && steps <= 1e12) || steps != std::floor(steps)) {
+      yaml::Fail(src, node["max_steps"], Join(path, "max_steps"), yaml::Describe(node["max_steps"]),
+                 "must be an integer from 1 to 1e12");
+    }
+    o.max_steps = static_cast<long>(steps);
+  }
+  ValidateAt(src, node, path, [&] { Validate(o); });
+  // a step limit the run could never finish with, or one below the time resolution
+  const double span = t_end - t_start;
+  const double shortest = std::max(kMinIntervalRelative * TimeScale(t_start, t_end),
+                                   span / static_cast<double>(o.max_steps));
+  if (o.max_step != 0.0 && o.max_step < shortest) {
+    yaml::Fail(src, node["max_step"], Join(path, "max_step"), yaml::Describe(node["max_step"]),
+               "must be 0 (no limit) or at least " + FormatNumber(shortest) +
+                   " s: (time.end - time.start) / solver.max_steps, or else the run cannot "
+                   "reach time.end, and 1e-12 of the time scale max(1 s, |start|, |end|), "
+                   "below which double precision does not resolve a step");
+  }
+  return o;
+}
+
+OutputRequest ReadOutput(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+                         double t_start, double t_end) {
+  OutputRequest output;
+  yaml::RequireMap(src, node, path, {"file", "interval", "phase_tolerance"});
+  if (node["file"]) {
+    output.file = yaml::ReadString(src, node["file"], Join(path, "file"));
+    if (output.file.empty()) {
+      yaml::Fail(src, node["file"], Join(path, "file"), "\"\"", "must not be empty");
+    }
+  }
+  const double span = t_end - t_start;
+  output.interval = span / 1000.0;
+  if (const YAML::Node interval = node["interval"]) {
+    if (interval.IsScalar() && interval.Scalar() == "steps") {
+      output.every_step = true;
+      output.interval = 0.0;
+    } else {
+      output.interval = yaml::ReadNumber(src, interval, Join(path, "interval"));
+      const double shortest = kMinIntervalRelative * TimeScale(t_start, t_end);
+      if (!(output.interval >= shortest && span / output.interval <= 1e8)) {
+        yaml::Fail(src, interval, Join(path, "interval"), yaml::Describe(interval),
+                   "must be `steps` or a time [s] giving at most 1e8 rows (at least " +
+                       FormatNumber(span / 1e8) + " s here) and at least " +
+                       FormatNumber(shortest) +
+                       " s, 1e-12 of the time scale max(1 s, |start|, |end|), so that "
+                       "double precision tells the output times apart");
+      }
+    }
+  }
+  if (node["phase_tolerance"]) {
+    output.phase_tolerance = yaml::ReadNumberIn(
+        src, node["phase_tolerance"], Join(path, "phase_tolerance"), kPhaseToleranceRange);
+  }
+  return output;
+}
+
+void ReadSensitivities(const yaml::Source& src, const YAML::Node& node,
+                       std::vector<std::string>& paths, std::vector<std::string>& where) {
+  if (!node.IsSequence()) {
+    yaml::Fail(src, node, "sensitivities", yaml::Describe(node),
+               "must be a list of parameter paths, e.g. [model.f_iso, model.velocity.v_max]");
+  }
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string path = "sensitivities[" + std::to_string(i) + "]";
+    paths.push_back(yaml::ReadString(src, node[i], path));
+    where.push_back(yaml::Location(src, node[i]));
+  }
+}
+
+}  // namespace musclesim

@@ -1,0 +1,98 @@
+// LoadScenario and ScenarioTemplate: the file parsed once, its form told by its top-level
+// keys, the overrides (`--set`) applied to the document before it is read, so that an override
+// is validated exactly as the file's own value would be.
+#include "musclesim/io/readers/scenario_yaml.h"
+
+#include "io/readers/document_yaml.h"
+#include "io/readers/scenario_readers.h"
+#include "io/readers/yaml_override.h"
+
+namespace musclesim {
+
+namespace {
+
+ScenarioForm FormOf(const YAML::Node& root) {
+  return root.IsMap() && root["nodes"] ? ScenarioForm::kNetwork : ScenarioForm::kActuator;
+}
+
+Scenario Read(const yaml::Source& src, const YAML::Node& root) {
+  return FormOf(root) == ScenarioForm::kNetwork ? ReadNetworkScenario(src, root)
+                                                : ReadActuatorScenario(src, root);
+}
+
+}  // namespace
+
+struct ScenarioTemplate::Parsed {
+  YAML::Node root;
+};
+
+ScenarioTemplate::ScenarioTemplate(const std::string& path)
+    : ScenarioTemplate(path, yaml::ReadText(path)) {}
+
+ScenarioTemplate::ScenarioTemplate(std::string path, std::string text)
+    : path_(std::move(path)),
+      text_(std::move(text)),
+      parsed_(std::make_unique<Parsed>(Parsed{yaml::Parse(path_, text_)})),
+      form_(FormOf(parsed_->root)) {}
+
+ScenarioTemplate::~ScenarioTemplate() = default;
+
+std::unique_ptr<ScenarioTemplate> ScenarioTemplate::Copy() const {
+  return std::unique_ptr<ScenarioTemplate>(new ScenarioTemplate(path_, text_));
+}
+
+bool ScenarioTemplate::has_sensitivities() const {
+  return parsed_->root.IsMap() && parsed_->root["sensitivities"].IsDefined();
+}
+
+Scenario ScenarioTemplate::Instantiate(const Overrides& overrides) const {
+  const yaml::Source src{path_, overrides.label};
+  if (overrides.texts.empty()) return Read(src, parsed_->root);
+  // overrides must not touch the template, so they go into a copy. yaml-cpp's Clone is fast
+  // but gives no node its file position; errors are rare, so a failing scenario is read
+  // again from its text parsed afresh, whose nodes keep their file:line:column for the
+  // message (and the overridden nodes, which have none, say the overrides' label)
+  try {
+    YAML::Node root = YAML::Clone(parsed_->root);
+    yaml::ApplyOverrides(root, overrides, path_);
+    return Read(src, root);
+  } catch (const InputError&) {
+    YAML::Node root = yaml::Parse(path_, text_);
+    yaml::ApplyOverrides(root, overrides, path_);
+    return Read(src, root);
+  }
+}
+
+Scenario ReadScenario(const Document& document, const std::string& name,
+                      const Overrides& overrides) {
+  YAML::Node root = ToYaml(document);
+  if (document.kind() == Document::Kind::kNull) throw InputError(name + ": the document is empty");
+  yaml::ApplyOverrides(root, overrides, name);
+  return Read(yaml::Source{name, name}, root);
+}
+
+ActuatorScenarioSpec LoadActuatorScenarioSpec(const std::string& path, const Overrides& overrides) {
+  YAML::Node root = yaml::LoadFile(path);
+  yaml::ApplyOverrides(root, overrides, path);
+  if (FormOf(root) == ScenarioForm::kNetwork) {
+    throw InputError(path + ": a network (it has nodes:), not the single-actuator form");
+  }
+  const yaml::Source src{path, overrides.label};
+  ActuatorScenarioSpec spec = ReadActuatorScenarioSpec(src, root);
+  yaml::ValidateAt(src, root, "", [&] { MakeActuatorScenario(spec); });
+  return spec;
+}
+
+Scenario LoadScenario(const std::string& path, const Overrides& overrides) {
+  return LoadScenario(path, overrides, path);
+}
+
+Scenario LoadScenario(const std::string& path, const Overrides& overrides,
+                      const std::string& name) {
+  // read once, so no clone is needed: the nodes not overridden keep their file positions
+  YAML::Node root = yaml::Parse(name, yaml::ReadText(path));
+  yaml::ApplyOverrides(root, overrides, name);
+  return Read(yaml::Source{name, overrides.label}, root);
+}
+
+}  // namespace musclesim
