@@ -64,20 +64,18 @@ class ColumnResolver {
         known.append(c > 0 ? ", " : "").append(names[c]);
       }
       if (names.size() > 12) known += ", ...";
-      Fail(path, std::nullopt,
-           "'" + column +
-               "' is no differentiated column of the scenario (a free node's "
-               "coordinate or velocity, an element's length or tension, ...): " +
+      Fail(path, column,
+           "is no differentiated column of the scenario (a free node's coordinate or "
+           "velocity, an element's length or tension, ...): " +
                known);
     }
     const int c = static_cast<int>(found - names.begin());
     double sign = 1.0;
     const int state = columns_.StateOf(static_cast<std::size_t>(c), sign);
     if (free_time_ && state < 0) {
-      Fail(path, std::nullopt,
-           "'" + column +
-               "': with a free final time, a column must be a state (a free node's "
-               "coordinate or velocity, an activation with dynamics)");
+      Fail(path, column,
+           "with a free final time, a column must be a state (a free node's coordinate or "
+           "velocity, an activation with dynamics)");
     }
     const auto known = std::find(index_.columns.begin(), index_.columns.end(), c);
     if (known != index_.columns.end()) return static_cast<int>(known - index_.columns.begin());
@@ -108,16 +106,15 @@ void CheckControls(const OptimalControlProblem& problem, const NetworkSystem& sy
     const std::string path = Entry("controls", j, "actuator");
     const int e = system.FindElement(control.actuator);
     if (e < 0 || system.elements()[static_cast<std::size_t>(e)].kind != ElementKind::kActuator) {
-      Fail(path, std::nullopt, "'" + control.actuator + "' is no actuator of the scenario");
+      Fail(path, control.actuator, "is no actuator of the scenario");
     }
     const Element& element = system.elements()[static_cast<std::size_t>(e)];
     if (element.controlled) {
-      Fail(path, std::nullopt,
-           "'" + control.actuator +
-               "' is driven by a controller: a control of the optimiser must be free");
+      Fail(path, control.actuator,
+           "is driven by a controller: a control of the optimiser must be free");
     }
     if (std::find(index.elements.begin(), index.elements.end(), e) != index.elements.end()) {
-      Fail(path, std::nullopt, "'" + control.actuator + "' is controlled twice");
+      Fail(path, control.actuator, "is controlled twice");
     }
     if (!(0.0 <= control.lower && control.lower <= control.upper && control.upper <= 1.0)) {
       Fail(Entry("controls", j, "bounds"), Range(control.lower, control.upper),
@@ -212,10 +209,8 @@ void CheckParameters(const OptimalControlProblem& problem, ProblemIndex& index) 
       }
     }();
     if (handle.is_setting() || handle.is_integer()) {
-      Fail(path, std::nullopt,
-           "'" + free.path +
-               "' is a setting of the run or an integer, not a number the optimiser "
-               "can move");
+      Fail(path, free.path,
+           "is a setting of the run or an integer, not a number the optimiser can move");
     }
     CheckBounds(free.lower, free.upper, Entry("parameters", k, "bounds"));
     for (std::size_t j = 0; j < index.elements.size(); ++j) {
@@ -223,9 +218,8 @@ void CheckParameters(const OptimalControlProblem& problem, ProblemIndex& index) 
       const std::string element = "elements[" + std::to_string(index.elements[j]) + "].";
       for (const char* drive : {"activation", "excitation"}) {
         if (handle.network_path().rfind(element + drive + ".", 0) == 0) {
-          Fail(path, std::nullopt,
-               "'" + free.path + "' is part of the " + drive + " of " +
-                   problem.controls[j].actuator +
+          Fail(path, free.path,
+               std::string("is part of the ") + drive + " of " + problem.controls[j].actuator +
                    ", which the control replaces: it cannot be a free parameter");
         }
       }
@@ -242,7 +236,7 @@ void CheckParameters(const OptimalControlProblem& problem, ProblemIndex& index) 
     }
     for (const Parameter& other : index.parameters) {
       if (other.network_path() == handle.network_path()) {
-        Fail(path, std::nullopt, "'" + free.path + "' is free twice");
+        Fail(path, free.path, "is free twice");
       }
     }
     // resolved once here, so that a parameter no run can differentiate (one that moves an

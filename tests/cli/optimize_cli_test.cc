@@ -78,12 +78,12 @@ TEST(OptimizeCli, BadProblemsExitTwoNamingThePlace) {
   };
   const Case cases[] = {
       {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: biceps}\n",
-       "controls[0].actuator (problem.yaml:3:16): 'biceps' is no actuator"},
+       "controls[0].actuator = biceps (problem.yaml:3:16): is no actuator"},
       {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor, bounds: [0.5, 0.2]}\n",
        "must be [lower, upper] with lower <= upper"},
       {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\nfinal_values:\n"
        "  - {column: load.x, value: 0.1}\n",
-       "final_values[0].column (problem.yaml:5:14): 'load.x' is no differentiated column"},
+       "final_values[0].column = load.x (problem.yaml:5:14): is no differentiated column"},
       {"base: antagonist_move.yaml\ncontrols:\n  - {actuator: flexor}\ntracking:\n"
        "  - {column: load.position, reference: {points: [[0, 0.07], [0.5, 0.07]]}}\n",
        "tracking[0].reference (problem.yaml:5:40): covers [0, 0.5] s but must cover the span"},
