@@ -1,0 +1,394 @@
+// The network's keys as parameter handles: nodes (with their coordinates), elements (with
+// via points and De Groote's tendon), loads, controllers, the run's settings and the
+// waveforms' fields.
+#include "scenario/parameter_resolver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "musclesim/core/errors.h"
+#include "musclesim/core/number_format.h"
+#include "musclesim/scenario/actuator_scenario.h"
+
+namespace musclesim {
+
+namespace {
+
+// A length limit [m]: 0 (the element collapsed) to the longest length a file may give.
+constexpr InputRange kLimitRange{0.0, 1e3, "m", "a kilometre is beyond any actuator"};
+
+}  // namespace
+
+std::size_t ParameterResolver::Coordinate(std::size_t i, const std::string& key) const {
+  const int d = scenario_.space.dimensions;
+  const bool indexed = i < steps_.size() && steps_[i].key.empty();
+  if (d == 1) {
+    if (indexed) Fail("takes no index: " + key + " is one number, x, in 1 dimension");
+    return 0;
+  }
+  const std::string last = std::to_string(d - 1);
+  if (!indexed) {
+    Fail("needs a coordinate's index in " + std::to_string(d) + " dimensions: " + key +
+         "[0] (x) to " + key + "[" + last + "]");
+  }
+  if (steps_[i].index >= static_cast<std::size_t>(d)) {
+    Fail("indexes past the " + std::to_string(d) + " coordinates of " + key + " (0 to " + last +
+         ")");
+  }
+  return steps_[i].index;
+}
+
+void ParameterResolver::Node(std::size_t i) {
+  const std::size_t n = Index(i, scenario_.nodes.size(), "nodes");
+  const std::string& key = Key(i + 1);
+  const NodeKind kind = scenario_.nodes[n].kind;
+  const Locate<musclesim::Node> node = [n](Scenario& s) -> musclesim::Node& { return s.nodes[n]; };
+  // in 2 or 3 dimensions a coordinate is indexed (nodes[1].position[1] is y): x is the
+  // scalar field, y and z the _yz ones
+  const bool coordinates = (kind == NodeKind::kFixed && key == "fixed") ||
+                           (kind == NodeKind::kPrescribed && key == "prescribed") ||
+                           (kind == NodeKind::kFree && (key == "position" || key == "velocity"));
+  const std::size_t c = coordinates ? Coordinate(i + 2, key) : 0;
+  const std::size_t next = scenario_.space.dimensions > 1 && coordinates ? i + 3 : i + 2;
+  if (kind == NodeKind::kPrescribed && key == "prescribed") {
+    return WaveformField(
+        next,
+        [node, c](Scenario& s) -> Waveform& {
+          return c == 0 ? node(s).motion : node(s).motion_yz[c - 1];
+        },
+        &kPositionRange);
+  }
+  End(next);
+  if (kind == NodeKind::kFixed && key == "fixed") {
+    return Number(
+        [node, c](Scenario& s) -> double& {
+          return c == 0 ? node(s).position : node(s).position_yz[c - 1];
+        },
+        &kPositionRange);
+  }
+  if (kind == NodeKind::kFree) {
+    if (key == "mass")
+      return Number([node](Scenario& s) -> double& { return node(s).mass; }, &kMassRange);
+    if (key == "position") {
+      return Number(
+          [node, c](Scenario& s) -> double& {
+            return c == 0 ? node(s).position : node(s).position_yz[c - 1];
+          },
+          scenario_.form == ScenarioForm::kActuator ? &kLengthRange : &kPositionRange);
+    }
+    if (key == "velocity") {
+      return Number(
+          [node, c](Scenario& s) -> double& {
+            return c == 0 ? node(s).velocity : node(s).velocity_yz[c - 1];
+          },
+          &kSpeedRange);
+    }
+  }
+  Fail("names no number of this " + std::string(ToString(kind)) + " node");
+}
+
+void ParameterResolver::Element(std::size_t i) {
+  const std::size_t e = Index(i, scenario_.elements.size(), "elements");
+  const std::string& key = Key(i + 1);
+  const musclesim::Element& element = scenario_.elements[e];
+  const Locate<musclesim::Element> at = [e](Scenario& s) -> musclesim::Element& {
+    return s.elements[e];
+  };
+  if (key == "via") return Via(i + 2, e);
+  if (element.kind == ElementKind::kActuator) {
+    if (key == "activation" && !element.excitation && !element.controlled) {
+      return WaveformField(
+          i + 2, [at](Scenario& s) -> Waveform& { return at(s).activation; }, nullptr);
+    }
+    if (key == "excitation" && element.excitation && !element.controlled) {
+      return WaveformField(
+          i + 2, [at](Scenario& s) -> Waveform& { return at(s).excitation->signal; }, nullptr);
+    }
+    if (key == "activation_dynamics" && element.excitation) {
+      End(i + 3);
+      const std::string& leaf = Key(i + 2);
+      if (leaf != "tau_activation" && leaf != "tau_deactivation") {
+        Fail("names no time constant (tau_activation, tau_deactivation)");
+      }
+      const bool rise = leaf == "tau_activation";
+      return Number(
+          [at, rise](Scenario& s) -> double& {
+            ActivationDynamics& d = at(s).excitation->dynamics;
+            return rise ? d.tau_activation : d.tau_deactivation;
+          },
+          &kActivationTimeConstantRange);
+    }
+    if (key == "initial_activation" && element.excitation) {
+      End(i + 2);
+      p_.get_ = [e](const Scenario& s) {
+        return s.elements[e].excitation->InitialActivation(s.t_start);
+      };
+      p_.set_ = [e](Scenario& s, double v) { s.elements[e].excitation->initial_activation = v; };
+      p_.range_ = kActivationRange;
+      p_.bounded_ = true;
+      return;
+    }
+    Fail("names no number of this actuator");
+  }
+  // a spring's, tendon's or damper's own coefficient: its sensitivity has a closed form
+  p_.element_ = static_cast<int>(e);
+  std::vector<KeyPathStep> rest(steps_.begin() + static_cast<long>(i) + 1, steps_.end());
+  p_.element_path_ = Canonical(rest);
+  const auto coefficient = [&](double musclesim::Element::*member, const InputRange* range) {
+    Number([at, member](Scenario& s) -> double& { return at(s).*member; }, range);
+  };
+  if (element.pushes_below_slack) return DeGrooteTendon(i, e);
+  if (key == "exponential" && element.exponential()) {
+    End(i + 3);
+    if (Key(i + 2) == "k") return coefficient(&musclesim::Element::k, &kPositiveForceRange);
+    if (Key(i + 2) == "alpha") return coefficient(&musclesim::Element::alpha, nullptr);
+  }
+  End(i + 2);
+  switch (element.kind) {
+    case ElementKind::kSpring:
+      if (key == "stiffness") return coefficient(&musclesim::Element::stiffness, &kStiffnessRange);
+      if (key == "rest_length")
+        return coefficient(&musclesim::Element::rest_length, &kPositionRange);
+      break;
+    case ElementKind::kTendon:
+      if (key == "slack_length")
+        return coefficient(&musclesim::Element::slack_length, &kPositionRange);
+      if (key == "stiffness" && !element.exponential()) {
+        return coefficient(&musclesim::Element::stiffness, &kStiffnessRange);
+      }
+      break;
+    case ElementKind::kDamper:
+      if (key == "damping") return coefficient(&musclesim::Element::damping, &kDampingRange);
+      break;
+    case ElementKind::kActuator: break;
+  }
+  Fail("names no number of this " + std::string(ToString(element.kind)));
+}
+
+void ParameterResolver::Via(std::size_t i, std::size_t e) {
+  const std::vector<ViaPoint>& via = scenario_.elements[e].via;
+  const std::size_t k = Index(i, via.size(), "via");
+  if (!via[k].node.empty()) {
+    Fail("names a via point that is node " + via[k].node +
+         ": its coordinates are that node's (nodes[...].position or fixed)");
+  }
+  const std::size_t c = Coordinate(i + 1, "via[" + std::to_string(k) + "]");
+  End(i + 2);
+  Number([e, k, c](Scenario& s) -> double& { return s.elements[e].via[k].position[c]; },
+         &kPositionRange);
+}
+
+// De Groote's tendon's slack length: > 0, the law is normalised by it.
+constexpr InputRange kDeGrooteSlackRange{
+    0.0, kPositionRange.max, "m", "De Groote's tendon is normalised by its slack length", true};
+
+void ParameterResolver::DeGrooteTendon(std::size_t i, std::size_t e) {
+  // its YAML keys, each setting what the law holds (k = 0.2 F0, alpha = ln 6 / (strain l_s)):
+  // its slack length keeps the strain, as a scenario read with it would
+  const std::string& key = Key(i + 1);
+  const auto number = [&](std::function<double(const musclesim::Element&)> get,
+                          std::function<void(musclesim::Element&, double)> set,
+                          const InputRange& range) {
+    p_.get_ = [e, get](const Scenario& s) { return get(s.elements[e]); };
+    p_.set_ = [e, set](Scenario& s, double v) { set(s.elements[e], v); };
+    p_.range_ = range;
+    p_.bounded_ = true;
+  };
+  if (key == "slack_length") {
+    End(i + 2);
+    return number([](const musclesim::Element& x) { return x.slack_length; },
+                  [](musclesim::Element& x, double v) {
+                    x.alpha *= x.slack_length / v;
+                    x.slack_length = v;
+                  },
+                  kDeGrooteSlackRange);
+  }
+  if (key == "degroote2016") {
+    End(i + 3);
+    if (Key(i + 2) == "max_isometric_force") {
+      return number([](const musclesim::Element& x) { return x.k / 0.2; },
+                    [](musclesim::Element& x, double v) { x.k = 0.2 * v; }, kPositiveForceRange);
+    }
+    if (Key(i + 2) == "strain_at_one_norm_force") {
+      return number(
+          [](const musclesim::Element& x) { return std::log(6.0) / (x.alpha * x.slack_length); },
+          [](musclesim::Element& x, double v) { x.alpha = std::log(6.0) / (v * x.slack_length); },
+          kTendonStrainRange);
+    }
+  }
+  Fail(
+      "names no number of this De Groote tendon (slack_length, "
+      "degroote2016.max_isometric_force, degroote2016.strain_at_one_norm_force)");
+}
+
+void ParameterResolver::Load(std::size_t i) {
+  const std::size_t k = Index(i, scenario_.loads.size(), "loads");
+  const std::string& key = Key(i + 1);
+  const musclesim::Load& load = scenario_.loads[k].load;
+  const Locate<musclesim::Load> at = [k](Scenario& s) -> musclesim::Load& {
+    return s.loads[k].load;
+  };
+  if (load.kind == LoadKind::kForce) {
+    return WaveformField(
+        i + 1, [at](Scenario& s) -> Waveform& { return at(s).force; }, &kForceRange);
+  }
+  End(i + 2);
+  const auto field = [&](double musclesim::Load::*member, const InputRange& range) {
+    Number([at, member](Scenario& s) -> double& { return at(s).*member; }, &range);
+  };
+  if (load.kind == LoadKind::kSpring) {
+    if (key == "stiffness") return field(&musclesim::Load::stiffness, kStiffnessRange);
+    if (key == "anchor") return field(&musclesim::Load::anchor, kPositionRange);
+  } else {
+    if (key == "mass") return field(&musclesim::Load::mass, kMassRange);
+    if (key == "gravity") return field(&musclesim::Load::gravity, kGravityRange);
+  }
+  Fail("names no number of this load");
+}
+
+void ParameterResolver::Controller(std::size_t i) {
+  const std::size_t c = Index(i, scenario_.controllers.size(), "controllers");
+  const std::string& key = Key(i + 1);
+  const musclesim::Controller& controller = scenario_.controllers[c];
+  const Locate<musclesim::Controller> at = [c](Scenario& s) -> musclesim::Controller& {
+    return s.controllers[c];
+  };
+  if (key == "gains") {
+    End(i + 3);
+    const std::string& leaf = Key(i + 2);
+    double PidGains::*member = leaf == "kp"   ? &PidGains::kp
+                               : leaf == "ki" ? &PidGains::ki
+                               : leaf == "kd" ? &PidGains::kd
+                                              : nullptr;
+    if (member == nullptr) Fail("names no gain (kp, ki, kd)");
+    return Number([at, member](Scenario& s) -> double& { return at(s).gains.*member; },
+                  &kGainRange);
+  }
+  if (key == "reference") {
+    const bool tension = controller.measure.quantity == MeasuredQuantity::kTension;
+    return WaveformField(
+        i + 2, [at](Scenario& s) -> Waveform& { return at(s).reference; },
+        tension ? &kForceRange : &kPositionRange);
+  }
+  if (key == "feedforward") {
+    return WaveformField(
+        i + 2, [at](Scenario& s) -> Waveform& { return at(s).feedforward; }, &kFeedforwardRange);
+  }
+  if (key == "co_contraction" && controller.co_contraction && Key(i + 2) == "level") {
+    return WaveformField(
+        i + 3, [at](Scenario& s) -> Waveform& { return at(s).co_contraction->level; }, nullptr);
+  }
+  Fail("names no number of this controller");
+}
+
+void ParameterResolver::Setting(std::size_t i) {
+  p_.setting_ = true;
+  const std::string& block = Key(i);
+  const std::string& key = Key(i + 1);
+  if (block == "limits") {
+    const std::size_t k = Index(i + 1, scenario_.limits.size(), "limits");
+    End(i + 3);
+    const std::string& leaf = Key(i + 2);
+    const bool low = leaf == "min_length";
+    if ((!low && leaf != "max_length") ||
+        !(low ? scenario_.limits[k].min_length : scenario_.limits[k].max_length)) {
+      Fail("names no length limit of this scenario");
+    }
+    return Number(
+        [k, low](Scenario& s) -> double& {
+          LengthLimit& limit = s.limits[k];
+          return low ? *limit.min_length : *limit.max_length;
+        },
+        &kLimitRange);
+  }
+  End(i + 2);
+  if (block == "time" && (key == "start" || key == "end")) {
+    const bool start = key == "start";
+    return Number([start](Scenario& s) -> double& { return start ? s.t_start : s.t_end; },
+                  &kTimeRange);
+  }
+  if (block == "solver") {
+    if (key == "rtol") return Number([](Scenario& s) -> double& { return s.solver.rtol; }, nullptr);
+    if (key == "atol") return Number([](Scenario& s) -> double& { return s.solver.atol; }, nullptr);
+    if (key == "max_step") {
+      return Number([](Scenario& s) -> double& { return s.solver.max_step; }, nullptr);
+    }
+    if (key == "max_steps") {
+      p_.integer_ = true;
+      p_.get_ = [](const Scenario& s) { return static_cast<double>(s.solver.max_steps); };
+      p_.set_ = [](Scenario& s, double v) { s.solver.max_steps = static_cast<long>(v); };
+      p_.range_ = InputRange{1.0, 1e12, "-", "a guard on the steps of one run"};
+      p_.bounded_ = true;
+      return;
+    }
+  }
+  if (block == "output") {
+    if (key == "interval" && !scenario_.output.every_step) {
+      return Number([](Scenario& s) -> double& { return s.output.interval; }, nullptr);
+    }
+    if (key == "phase_tolerance" && scenario_.output.phase_tolerance) {
+      return Number([](Scenario& s) -> double& { return *s.output.phase_tolerance; },
+                    &kPhaseToleranceRange);
+    }
+  }
+  Fail("names no numeric setting of the scenario");
+}
+
+void ParameterResolver::WaveformField(std::size_t i, Locate<Waveform> at,
+                                      const InputRange* values) {
+  // constant, the shape in the context of this waveform: its time fields are times, the rest
+  // values of the signal
+  const Waveform& w = at(const_cast<Scenario&>(scenario_));
+  const std::string& key = Key(i);
+  const auto field = [&](double Waveform::*member, const InputRange* range) {
+    End(i + 1);
+    Number([at, member](Scenario& s) -> double& { return at(s).*member; }, range);
+  };
+  switch (w.kind) {
+    case WaveformKind::kConstant:
+      if (key == "value") return field(&Waveform::value, values);
+      break;
+    case WaveformKind::kStep:
+      if (key == "time") return field(&Waveform::time, &kTimeRange);
+      if (key == "before") return field(&Waveform::before, values);
+      if (key == "after") return field(&Waveform::after, values);
+      break;
+    case WaveformKind::kRamp:
+      if (key == "start") return field(&Waveform::start, &kTimeRange);
+      if (key == "end") return field(&Waveform::end, &kTimeRange);
+      if (key == "from") return field(&Waveform::from, values);
+      if (key == "to") return field(&Waveform::to, values);
+      break;
+    case WaveformKind::kSine:
+      if (key == "offset") return field(&Waveform::offset, values);
+      if (key == "amplitude") return field(&Waveform::amplitude, values);
+      if (key == "frequency") return field(&Waveform::frequency, &kFrequencyRange);
+      if (key == "phase") return field(&Waveform::phase, nullptr);
+      break;
+    case WaveformKind::kPulses:
+      if (key == "start") return field(&Waveform::start, &kTimeRange);
+      if (key == "period") return field(&Waveform::period, nullptr);
+      if (key == "width") return field(&Waveform::width, nullptr);
+      if (key == "low") return field(&Waveform::low, values);
+      if (key == "high") return field(&Waveform::high, values);
+      break;
+    case WaveformKind::kTable:
+      if (key == "points") {
+        const std::size_t k = Index(i + 1, w.points.size(), "points");
+        const std::size_t column = Index(i + 2, 2, "a [t, value] point");
+        End(i + 3);
+        return Number(
+            [at, k, column](Scenario& s) -> double& {
+              TablePoint& point = at(s).points[k];
+              return column == 0 ? point.t : point.value;
+            },
+            column == 0 ? &kTimeRange : values);
+      }
+      break;
+  }
+  Fail("names no field of this " + std::string(ToString(w.kind)) + " waveform");
+}
+
+}  // namespace musclesim

@@ -1,0 +1,106 @@
+// Private to scenario/: the walk of one key path into a Parameter handle (parameter.cc: the
+// path and the scenario's top level; parameter_model_fields.cc: a model block's keys;
+// parameter_network_fields.cc: the network's nodes, elements, loads, controllers and
+// settings). Each step knows the keys its part has and the range the file reader checks
+// them against.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "musclesim/core/errors.h"
+#include "musclesim/core/input_ranges.h"
+#include "musclesim/core/key_path.h"
+#include "musclesim/scenario/parameter.h"
+#include "musclesim/scenario/scenario.h"
+
+namespace musclesim {
+
+// `steps` written back the one way: "load[0].after" for "load[00]after".
+std::string Canonical(const std::vector<KeyPathStep>& steps);
+
+// A reference into the scenario (or a model block) from its parts' indices, for both Get
+// (const) and Set.
+template <typename T, typename In = Scenario>
+using Locate = std::function<T&(In&)>;
+
+// Walks the steps of one path and fills the handle.
+class ParameterResolver {
+ public:
+  ParameterResolver(const Scenario& scenario, std::string path)
+      : scenario_(scenario), given_(std::move(path)) {}
+
+  Parameter Resolve();
+
+ private:
+  [[noreturn]] void Fail(const std::string& rule) const {
+    throw ParameterError(p_.path_, "", rule);
+  }
+  std::size_t size() const { return steps_.size(); }
+  // The key of step i ("" for an index or past the end).
+  const std::string& Key(std::size_t i) const {
+    static const std::string none;
+    return i < steps_.size() ? steps_[i].key : none;
+  }
+  // The index of step i, within `count` items of `what`.
+  std::size_t Index(std::size_t i, std::size_t count, const char* what) const {
+    if (i >= steps_.size() || !steps_[i].key.empty())
+      Fail(std::string("needs an index of ") + what);
+    if (steps_[i].index >= count) {
+      Fail("indexes past the end of " + std::string(what) + " (" + std::to_string(count) + ")");
+    }
+    return steps_[i].index;
+  }
+  void End(std::size_t i) const {
+    if (i != steps_.size()) Fail("names a block, not one number");
+  }
+
+  // A plain number of the scenario.
+  void Number(Locate<double> at, const InputRange* range) {
+    p_.get_ = [at](const Scenario& s) { return at(const_cast<Scenario&>(s)); };
+    p_.set_ = [at](Scenario& s, double v) { at(s) = v; };
+    if (range != nullptr) {
+      p_.range_ = *range;
+      p_.bounded_ = true;
+    }
+  }
+
+  void Top();
+  void DeGrooteTendon(std::size_t i, std::size_t e);
+  void Model(std::size_t i);
+  void ModelField(std::size_t i, bool fitted);
+  // A key of a model block of another family than the paper's (docs/model.md 14.1).
+  void FamilyField(std::size_t i, CurveFamily family);
+  void ModelNumber(Locate<double, ModelSpec> at, bool refits = false);
+  void ModelValue(std::function<double(const ModelSpec&)> get,
+                  std::function<void(ModelSpec&, double)> set, bool refits = false);
+  void PassiveField(std::size_t i);
+  void VelocityField(std::size_t i);
+  void EccentricField(std::size_t i);
+  void ActiveLengthField(std::size_t i);
+  void GaussianField(std::size_t i);
+  // The coordinate step i names of a node's `key` (fixed, prescribed, position, velocity):
+  // none on a line (0), an index below the dimensions in 2 or 3.
+  std::size_t Coordinate(std::size_t i, const std::string& key) const;
+  void Node(std::size_t i);
+  void Element(std::size_t i);
+  // A fixed via point's coordinate: elements[e].via[k][c].
+  void Via(std::size_t i, std::size_t e);
+  void Load(std::size_t i);
+  void Controller(std::size_t i);
+  void Gravity(std::size_t i);
+  void Setting(std::size_t i);
+  // A waveform's field at step i (the waveform at `at`); `values` bounds its values
+  // (nullptr: an activation's [0, 1], which the scenario's validation checks).
+  void WaveformField(std::size_t i, Locate<Waveform> at, const InputRange* values);
+
+  const Scenario& scenario_;
+  std::string given_;
+  std::vector<KeyPathStep> steps_;
+  Parameter p_;
+  bool fitted_ = false;  // the model block asks for a fit
+};
+
+}  // namespace musclesim
