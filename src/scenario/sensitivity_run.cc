@@ -4,6 +4,7 @@
 
 #include "musclesim/core/enum_names.h"
 #include "musclesim/core/errors.h"
+#include "musclesim/core/key_path.h"
 #include "scenario/sensitivity_columns.h"
 #include "scenario/sensitivity_derivatives.h"
 
@@ -48,21 +49,22 @@ Parameter HandleOf(const Scenario& scenario, const SensitivityRequest& request,
                    std::string& where) {
   const std::string& path = request.path;
   const std::string label = request.where.empty() ? "" : request.where + " ";
+  // a path of the key paths' syntax, as the resolver splits them, that a CSV header can hold
+  const std::optional<std::vector<KeyPathStep>> steps = SplitKeyPath(path);
+  if (!FitsCsvHeader(path) || !steps || steps->empty() || steps->front().key.empty()) {
+    // the path as given, cut short: it may be anything
+    const std::string shown = path.size() > 80 ? path.substr(0, 80) + "..." : path;
+    throw InputError(label + "'" + shown + "': ",
+                     InputFault{std::nullopt, "", path,
+                                "not a dotted key path such as model.f_iso or load[0].value "
+                                "(names without commas, quotes or control characters, indices "
+                                "in brackets)"});
+  }
   try {
-    if (!FitsCsvHeader(path)) throw ParameterError(path, "", "");
     Parameter parameter = scenario.parameter(path);
     where = label + parameter.path();
     return parameter;
   } catch (const ParameterError& error) {
-    if (error.rule().empty() || error.rule().rfind("is not a key path", 0) == 0) {
-      // the path as given, cut short: it may be anything
-      const std::string shown = path.size() > 80 ? path.substr(0, 80) + "..." : path;
-      throw InputError(label + "'" + shown + "': ",
-                       InputFault{std::nullopt, "", path,
-                                  "not a dotted key path such as model.f_iso or load[0].value "
-                                  "(names without commas, quotes or control characters, indices "
-                                  "in brackets)"});
-    }
     throw InputError(label + path + ": ",
                      InputFault{std::nullopt, path, std::nullopt,
                                 error.rule() + ": a sensitivity needs a number of the scenario's "

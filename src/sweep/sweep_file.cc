@@ -23,7 +23,6 @@ SweepAxis ReadAxis(const yaml::Source& src, const YAML::Node& key, const YAML::N
   SweepAxis axis;
   axis.path = key.as<std::string>();
   axis.place = yaml::Place(src, key);
-  axis.location = PlaceText(axis.place);
   const std::string where = "parameters." + axis.path;
   if (node.IsSequence()) {
     if (node.size() == 0) yaml::Fail(src, node, where, "[]", "needs at least one value");

@@ -125,14 +125,14 @@ PointErrorExplainer::Explanation PointErrorExplainer::Explain(long index,
       const std::string rule = "makes point " + std::to_string(index) + " (" +
                                Describe(spec_, values) +
                                ") an invalid scenario: " + Restore(e).what();
-      return {InputError(axis.location + ": axis " + axis.path + " = " + values[k] + " ",
+      return {InputError(PlaceText(axis.place) + ": axis " + axis.path + " = " + values[k] + " ",
                          InputFault{axis.place, "parameters." + axis.path, values[k], rule}),
               false};
     }
   }
   if (base_error_) return {InputError(base_fault, *base_error_), true};
   // no single value is wrong: their combination is
-  const std::string where = spec_.axes.empty() ? spec_.source : spec_.axes.front().location;
+  const std::string where = spec_.axes.empty() ? spec_.source : PlaceText(spec_.axes.front().place);
   return {InputError(where + ": point " + std::to_string(index) + " (" + Describe(spec_, values) +
                          ") is not a valid scenario, though each of its values is valid alone",
                      Restore(error)),

@@ -115,7 +115,7 @@ std::vector<long> MyPoints(const SweepSpec& spec, const RankShare& share) {
 }  // namespace
 
 std::string AxisPlace(const SweepAxis& axis) {
-  return axis.location.empty() ? "parameters." + axis.path : axis.location;
+  return axis.place.file.empty() ? "parameters." + axis.path : PlaceText(axis.place);
 }
 
 InputError AxisError(const SweepAxis& axis, const std::optional<std::string>& value,

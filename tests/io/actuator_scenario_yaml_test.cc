@@ -183,7 +183,7 @@ TEST(Scenario, RejectsEveryBrokenRule) {
        "table, spring, mass"},
       {"{type: constant, value: 40.0}",
        "{type: pulses, start: 0, period: 1.0e-8, width: 1.0e-9, low: 0, high: 1}",
-       "load[0].period = 1e-08 (FILE:12:38): gives more than 5 million pulses"},
+       "load[0].period = 1.0e-8 (FILE:12:38): gives more than 5 million pulses"},
       {"end: 1.0}", "end: 0.0}",
        "time.end = 0.0 (FILE:13:25): must be greater than time.start = 0 by at least 1e-09 s"},
       {"rtol: 1.0e-6", "rtol: 0", "solver.rtol = 0 (FILE:14:29)"},

@@ -33,8 +33,7 @@ struct SweepAxis {
   double from = 0.0, to = 0.0;      // a range's ends, in the unit of the swept value
   long count = 0;                   // grid and zip: values in the range; 0 for a list [-]
   bool log_scale = false;           // geometric spacing (draws) in the range [-]
-  std::string location;             // "file:line:column" of the axis in the sweep file [-]
-  InputPlace place;                 // the same as data [-]
+  InputPlace place;                 // of the axis in the sweep file (none in code) [-]
   bool is_range() const { return values.empty(); }
   // A range, or a list of numbers: the axis sets a number through a parameter handle.
   bool is_numeric() const { return is_range() || numbers.size() == values.size(); }

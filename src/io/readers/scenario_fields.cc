@@ -254,12 +254,9 @@ void CheckPulses(const yaml::Source& src, const YAML::Node& node, const std::str
   try {
     CheckPulseTrain(w, t_start, t_end);
   } catch (const ParameterError& error) {
-    // too many pulses is the period's consequence, told by its value; a time too short for
-    // double precision, as written
+    // the period or width at fault, as written
     const YAML::Node at = node[error.path()];
-    const bool count = error.rule().rfind("gives", 0) == 0;
-    yaml::Fail(src, at, Join(path, error.path()), count ? error.value() : yaml::Describe(at),
-               error.rule());
+    yaml::Fail(src, at, Join(path, error.path()), yaml::Describe(at), error.rule());
   }
 }
 
