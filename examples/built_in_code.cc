@@ -57,7 +57,7 @@ int main() {
 
     SweepSpec spec;
     spec.source = spec.base = "built in code";
-    spec.axes.push_back({"load[0].after", {}, {}, 10.0, 70.0, 4, false, "", {}});  // N
+    spec.axes.push_back({"load[0].after", {}, {}, 10.0, 70.0, 4, false, {}});  // N
     spec.metrics = {Metric::kFinalLength, Metric::kPeakTension};
     const SweepPlan plan = PlanSweep(spec, ParameterPoints(scenario, spec), 2);
     const SweepOutcome outcome = RunSweep(plan, SweepRunOptions{"", 2, false, nullptr});

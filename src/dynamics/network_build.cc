@@ -275,20 +275,8 @@ void NetworkSystem::FindSingleNode() {
   single_node_ = true;
 }
 
-void NetworkSystem::BuildPattern() {
-  // every (row, column) pair that can be nonzero, then compressed-column order
-  std::vector<std::pair<int, int>> pairs;  // (column, row)
-  const int d = space_.dimensions;
-  for (const FreeNode& f : free_nodes_) {
-    const int s = ends_[f.node].state;
-    const int n = f.massless ? 1 : 2 * d;  // a junction: its position alone
-    for (int r = s; r < s + n; ++r) {
-      for (int c = s; c < s + n; ++c) pairs.emplace_back(c, r);
-    }
-  }
-  if (d > 1) AddSpacePattern(pairs);
+void NetworkSystem::AddLinePattern(std::vector<std::pair<int, int>>& pairs) const {
   for (const Link& link : links_) {
-    if (d > 1) break;  // AddSpacePattern's
     // rows: the ends' accelerations; columns: their positions and velocities (a junction
     // has neither row nor velocity column: AddJunctionPattern adds what goes through w)
     for (int row_end : {link.from, link.to}) {
@@ -304,6 +292,39 @@ void NetworkSystem::BuildPattern() {
       const int r = ends_[row_end].rate;
       if (link.activation >= 0 && r >= 0) pairs.emplace_back(link.activation, r);
     }
+  }
+}
+
+void NetworkSystem::FindLineSlots(const std::function<int(int, int)>& slot) {
+  for (Link& link : links_) {
+    const int ends[2] = {link.from, link.to};
+    for (int r = 0; r < 2; ++r) {
+      const int row = ends_[ends[r]].rate;
+      for (int c = 0; c < 2; ++c) {
+        const int position = ends_[ends[c]].state, rate = ends_[ends[c]].rate;
+        link.slot[r][2 * c] = row >= 0 && position >= 0 ? slot(row, position) : -1;
+        link.slot[r][2 * c + 1] = row >= 0 && rate >= 0 ? slot(row, rate) : -1;
+      }
+      link.slot_activation[r] = link.activation >= 0 && row >= 0 ? slot(row, link.activation) : -1;
+    }
+  }
+}
+
+void NetworkSystem::BuildPattern() {
+  // every (row, column) pair that can be nonzero, then compressed-column order
+  std::vector<std::pair<int, int>> pairs;  // (column, row)
+  const int d = space_.dimensions;
+  for (const FreeNode& f : free_nodes_) {
+    const int s = ends_[f.node].state;
+    const int n = f.massless ? 1 : 2 * d;  // a junction: its position alone
+    for (int r = s; r < s + n; ++r) {
+      for (int c = s; c < s + n; ++c) pairs.emplace_back(c, r);
+    }
+  }
+  if (d > 1) {
+    AddSpacePattern(pairs);
+  } else {
+    AddLinePattern(pairs);
   }
   AddJunctionPattern(pairs);
   // udot depends on u alone (and t), or on a controller's columns too
@@ -345,20 +366,10 @@ void NetworkSystem::BuildPattern() {
   row_scale_.assign(pairs.size(), -1);
   for (std::size_t k = 0; k < pairs.size(); ++k) row_scale_[k] = row_owner[pattern_.rows[k]];
   for (Activation& a : activations_) a.slot = slot(a.state, a.state);
-  if (d > 1) FindSpaceSlots(slot);
-  for (Link& link : links_) {
-    if (d > 1) break;  // FindSpaceSlots'
-
-    const int ends[2] = {link.from, link.to};
-    for (int r = 0; r < 2; ++r) {
-      const int row = ends_[ends[r]].rate;
-      for (int c = 0; c < 2; ++c) {
-        const int position = ends_[ends[c]].state, rate = ends_[ends[c]].rate;
-        link.slot[r][2 * c] = row >= 0 && position >= 0 ? slot(row, position) : -1;
-        link.slot[r][2 * c + 1] = row >= 0 && rate >= 0 ? slot(row, rate) : -1;
-      }
-      link.slot_activation[r] = link.activation >= 0 && row >= 0 ? slot(row, link.activation) : -1;
-    }
+  if (d > 1) {
+    FindSpaceSlots(slot);
+  } else {
+    FindLineSlots(slot);
   }
   FindJunctionSlots(slot);
   FindControlSlots(pairs);

@@ -15,6 +15,34 @@ namespace musclesim {
 using identify_detail::Covariance;
 using identify_detail::Rmse;
 
+namespace {
+
+// The residual Jacobian of the fit of data / top by `gaussians` (their sum `sum`, sigma 1)
+// in (a, b, d), for the standard errors; `rss` gets the residuals' sum of squares.
+Eigen::MatrixXd NormalisedFitJacobian(const std::vector<DataPoint>& data,
+                                      const std::vector<Gaussian>& gaussians, double top,
+                                      const GaussianSum& sum, double& rss) {
+  const auto m = static_cast<Eigen::Index>(gaussians.size());
+  Eigen::MatrixXd jacobian(static_cast<Eigen::Index>(data.size()), 3 * m);
+  rss = 0.0;
+  for (std::size_t s = 0; s < data.size(); ++s) {
+    const auto row = static_cast<Eigen::Index>(s);
+    rss += std::pow(sum.Value(data[s].x) - data[s].y / top, 2);
+    for (Eigen::Index k = 0; k < m; ++k) {
+      const Gaussian& g = gaussians[static_cast<std::size_t>(k)];
+      const double dx = data[s].x - g.center;
+      // psi_k = a_k phi_k with sigma = 1: d/da = phi, d/db = -psi dx^2 / 2, d/dd = psi b dx
+      const double phi = GaussianTerm::Unit(g.precision, g.center, 1.0)(data[s].x);
+      jacobian(row, k) = phi;
+      jacobian(row, m + k) = g.amplitude * phi * (-dx * dx / 2.0);
+      jacobian(row, 2 * m + k) = g.amplitude * phi * g.precision * dx;
+    }
+  }
+  return jacobian;
+}
+
+}  // namespace
+
 ActiveIdentification IdentifyActive(const std::vector<DataPoint>& data, int count,
                                     bool nonnegative) {
   double top = 0.0;
@@ -54,23 +82,9 @@ ActiveIdentification IdentifyActive(const std::vector<DataPoint>& data, int coun
   out.curve.optimal_max = l2;
   out.sum = GaussianSum(out.curve.gaussians, out.curve.sigma);
 
-  // residual Jacobian of the normalised fit in (a, b, d), for the standard errors
   const auto m = static_cast<Eigen::Index>(fit.gaussians.size());
-  Eigen::MatrixXd jacobian(static_cast<Eigen::Index>(data.size()), 3 * m);
-  double rss = 0.0;
-  for (std::size_t s = 0; s < data.size(); ++s) {
-    const auto row = static_cast<Eigen::Index>(s);
-    rss += std::pow(sum.Value(data[s].x) - data[s].y / top, 2);
-    for (Eigen::Index k = 0; k < m; ++k) {
-      const Gaussian& g = fit.gaussians[static_cast<std::size_t>(k)];
-      const double dx = data[s].x - g.center;
-      // psi_k = a_k phi_k with sigma = 1: d/da = phi, d/db = -psi dx^2 / 2, d/dd = psi b dx
-      const double phi = GaussianTerm::Unit(g.precision, g.center, 1.0)(data[s].x);
-      jacobian(row, k) = phi;
-      jacobian(row, m + k) = g.amplitude * phi * (-dx * dx / 2.0);
-      jacobian(row, 2 * m + k) = g.amplitude * phi * g.precision * dx;
-    }
-  }
+  double rss = 0.0;  // (set before the covariance reads it)
+  const Eigen::MatrixXd jacobian = NormalisedFitJacobian(data, fit.gaussians, top, sum, rss);
   const Eigen::MatrixXd cov = Covariance(jacobian, rss);
   for (Eigen::Index k = 0; k < m; ++k) {
     const Gaussian& g = out.curve.gaussians[static_cast<std::size_t>(k)];

@@ -121,17 +121,10 @@ std::vector<double> EvenlySpacedFrameTimes(const CsvTable& table, int count) {
   return times;
 }
 
-std::string SpatialFramesPlotScript(const CsvTable& table, const std::vector<double>& times,
-                                    const Scenario* scenario, const PlotOptions& options) {
-  const SpatialColumns columns = RequireSpatialTrajectory(table);
-  if (times.empty() || times.size() > static_cast<std::size_t>(kMaxFrames)) {
-    throw ParameterError(
-        "frames", std::to_string(times.size()) + " times",
-        std::string("give 1 to ").append(std::to_string(kMaxFrames)).append(" times"));
-  }
-  const std::vector<ElementPath> paths =
-      scenario ? ElementPaths(*scenario, columns, table.source) : std::vector<ElementPath>{};
-  std::vector<double> row_times;
+// The row nearest each of `times`, which must lie within the table's; `row_times` gets every
+// row's t.
+std::vector<std::size_t> FrameRows(const CsvTable& table, const std::vector<double>& times,
+                                   std::vector<double>& row_times) {
   const int t_column = table.Find("t");
   for (std::size_t r = 0; r < table.rows.size(); ++r) {
     row_times.push_back(FiniteValue(table, r, t_column));
@@ -146,6 +139,21 @@ std::string SpatialFramesPlotScript(const CsvTable& table, const std::vector<dou
     }
     rows.push_back(NearestRow(row_times, t));
   }
+  return rows;
+}
+
+std::string SpatialFramesPlotScript(const CsvTable& table, const std::vector<double>& times,
+                                    const Scenario* scenario, const PlotOptions& options) {
+  const SpatialColumns columns = RequireSpatialTrajectory(table);
+  if (times.empty() || times.size() > static_cast<std::size_t>(kMaxFrames)) {
+    throw ParameterError(
+        "frames", std::to_string(times.size()) + " times",
+        std::string("give 1 to ").append(std::to_string(kMaxFrames)).append(" times"));
+  }
+  const std::vector<ElementPath> paths =
+      scenario ? ElementPaths(*scenario, columns, table.source) : std::vector<ElementPath>{};
+  std::vector<double> row_times;
+  const std::vector<std::size_t> rows = FrameRows(table, times, row_times);
 
   std::ostringstream s;
   s << kFrame;

@@ -345,6 +345,10 @@ class NetworkSystem {
   void RequireNoAlgebraicLoop(std::size_t k, const std::vector<int>& driver) const;
   void PlaceLoopColumns(std::size_t k);
   void BuildPattern();
+  // BuildPattern's steps on a line: the links' pattern entries (their ends' acceleration rows,
+  // by their positions, velocities and activation), and their slots.
+  void AddLinePattern(std::vector<std::pair<int, int>>& pairs) const;
+  void FindLineSlots(const std::function<int(int, int)>& slot);
   void AddControlPattern(std::vector<std::pair<int, int>>& pairs) const;
   void FindControlSlots(const std::vector<std::pair<int, int>>& pairs);
 

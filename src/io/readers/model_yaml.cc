@@ -139,31 +139,11 @@ std::vector<Gaussian> ReadGaussians(const yaml::Source& src, const YAML::Node& n
   return gaussians;
 }
 
-}  // namespace
-
-ModelSpec ReadModelSpec(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
-  if (node.IsMap() && node["family"]) {
-    const YAML::Node family = node["family"];
-    const std::string text = yaml::ReadString(src, family, Join(path, "family"));
-    const std::optional<CurveFamily> parsed = ParseCurveFamily(text);
-    if (!parsed) {
-      yaml::Fail(src, family, Join(path, "family"), yaml::Describe(family),
-                 "must be paper, degroote2016 or mujoco (docs/model.md 14.1)");
-    }
-    if (*parsed != CurveFamily::kPaper) return ReadFamilyModelSpec(src, node, path, *parsed);
-  }
-  // the paper's block: none of another family's keys
-  yaml::RequireMap(src, node, path,
-                   {"f_iso", "passive", "active_length", "velocity", "family", "pennation_angle"});
-  ModelSpec model;
+// The paper's active_length block into `model` (its Gaussians listed or fitted at load);
+// whether they were fitted.
+bool ReadActiveLength(const yaml::Source& src, const YAML::Node& active,
+                      const std::string& active_path, ModelSpec& model) {
   ModelParams& p = model.params;
-  p.f_iso = yaml::ReadNumber(src, Required(src, node, path, "f_iso"), Join(path, "f_iso"));
-  p.pennation_angle = yaml::ReadOptionalNumber(src, node, path, "pennation_angle", 0.0);
-  p.passive = ReadPassive(src, Required(src, node, path, "passive"), Join(path, "passive"));
-  p.velocity = ReadVelocity(src, Required(src, node, path, "velocity"), Join(path, "velocity"));
-
-  const std::string active_path = Join(path, "active_length");
-  const YAML::Node active = Required(src, node, path, "active_length");
   yaml::RequireMap(src, active, active_path, {"optimal_range", "sigma", "gaussians", "fit"});
   const std::vector<double> range =
       yaml::ReadNumbers(src, Required(src, active, active_path, "optimal_range"),
@@ -208,6 +188,35 @@ ModelSpec ReadModelSpec(const yaml::Source& src, const YAML::Node& node, const s
     });
     p.active_length.gaussians = model.fit_result->gaussians;
   }
+  return has_fit;
+}
+
+}  // namespace
+
+ModelSpec ReadModelSpec(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+  if (node.IsMap() && node["family"]) {
+    const YAML::Node family = node["family"];
+    const std::string text = yaml::ReadString(src, family, Join(path, "family"));
+    const std::optional<CurveFamily> parsed = ParseCurveFamily(text);
+    if (!parsed) {
+      yaml::Fail(src, family, Join(path, "family"), yaml::Describe(family),
+                 "must be paper, degroote2016 or mujoco (docs/model.md 14.1)");
+    }
+    if (*parsed != CurveFamily::kPaper) return ReadFamilyModelSpec(src, node, path, *parsed);
+  }
+  // the paper's block: none of another family's keys
+  yaml::RequireMap(src, node, path,
+                   {"f_iso", "passive", "active_length", "velocity", "family", "pennation_angle"});
+  ModelSpec model;
+  ModelParams& p = model.params;
+  p.f_iso = yaml::ReadNumber(src, Required(src, node, path, "f_iso"), Join(path, "f_iso"));
+  p.pennation_angle = yaml::ReadOptionalNumber(src, node, path, "pennation_angle", 0.0);
+  p.passive = ReadPassive(src, Required(src, node, path, "passive"), Join(path, "passive"));
+  p.velocity = ReadVelocity(src, Required(src, node, path, "velocity"), Join(path, "velocity"));
+
+  const std::string active_path = Join(path, "active_length");
+  const YAML::Node active = Required(src, node, path, "active_length");
+  const bool has_fit = ReadActiveLength(src, active, active_path, model);
 
   // the model's constructor validates everything, including that f_L can be normalised
   try {
