@@ -80,8 +80,7 @@ void BindOptimize(py::module_& m) {
         Document document;
         {
           py::gil_scoped_release released;
-          document =
-              WithControlTables(ParseDocument(given.display, given.ToYaml()), problem, result);
+          document = WithControlTables(given.ToDocument(), problem, result);
         }
         // DocumentPyScenario keeps the document as Python sees it: with the GIL
         PyScenario optimum = DocumentPyScenario(std::move(document), given.display + " (optimum)");

@@ -50,6 +50,11 @@ std::string PyScenario::ToYaml() const {
   return document ? RewriteScenario(*document, display, set, {}) : RewriteScenario(path, set, {});
 }
 
+Document PyScenario::ToDocument() const {
+  const Overrides set(overrides, kOverrideLabel);
+  return document ? RewrittenDocument(*document, display, set) : RewrittenDocument(path, set);
+}
+
 void PyScenario::Set(const std::string& key, const py::object& value) {
   const std::string text = OverrideText(key, value);  // TypeError for a list, say
   // a number at a key that holds one: in place, through its handle, without reading again

@@ -25,6 +25,8 @@ struct PyScenario {
   Scenario Read(const std::vector<std::string>& more) const;
   // The scenario as YAML text, its set() values written in (without the GIL).
   std::string ToYaml() const;
+  // The same as a document in memory (without the GIL).
+  Document ToDocument() const;
   // Sets `key` to `value` as set() does (with the GIL: it converts `value`).
   // All or nothing: a refused value leaves the scenario as it was.
   void Set(const std::string& key, const pybind11::object& value);

@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <limits>
 
-#include "io/readers/document_yaml.h"
 #include "io/readers/yaml_fields.h"
 #include "musclesim/core/errors.h"
 #include "optimize/problem_checks.h"
@@ -25,7 +24,7 @@ std::string Item(const char* list, std::size_t i) {
 }
 
 // [lower, upper] with lower <= upper, each within `range`.
-std::pair<double, double> ReadBounds(const yaml::Source& src, const YAML::Node& node,
+std::pair<double, double> ReadBounds(const yaml::Source& src, const Document& node,
                                      const std::string& path, const InputRange& range) {
   const std::vector<double> bounds = yaml::ReadNumbers(src, node, path, 2);
   for (std::size_t k = 0; k < 2; ++k) {
@@ -37,7 +36,7 @@ std::pair<double, double> ReadBounds(const yaml::Source& src, const YAML::Node& 
   return {bounds[0], bounds[1]};
 }
 
-ControlSpec ReadControl(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+ControlSpec ReadControl(const yaml::Source& src, const Document& node, const std::string& path) {
   yaml::RequireMap(src, node, path, {"actuator", "bounds", "effort"});
   ControlSpec control;
   control.actuator = yaml::ReadString(src, yaml::Required(src, node, path, "actuator"),
@@ -47,7 +46,7 @@ ControlSpec ReadControl(const yaml::Source& src, const YAML::Node& node, const s
     std::tie(control.lower, control.upper) =
         ReadBounds(src, node["bounds"], yaml::Join(path, "bounds"), unit);
   }
-  if (const YAML::Node effort = node["effort"]) {
+  if (const Document& effort = node["effort"]) {
     const std::string at = yaml::Join(path, "effort");
     yaml::RequireMap(src, effort, at, {"weight", "power"});
     const InputRange weights{0.0, 1e12, "", "a weight of the objective"};
@@ -64,7 +63,7 @@ ControlSpec ReadControl(const yaml::Source& src, const YAML::Node& node, const s
   return control;
 }
 
-FinalValue ReadFinal(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+FinalValue ReadFinal(const yaml::Source& src, const Document& node, const std::string& path) {
   yaml::RequireMap(src, node, path, {"column", "value", "bounds"});
   FinalValue final;
   final.column =
@@ -93,7 +92,7 @@ const InputRange kAnyValue{-1e12, 1e12, "", "a column's value"};
 
 // `entries` as a list of maps, each read by `read(node, path)`.
 template <typename Read>
-void ReadList(const yaml::Source& src, const YAML::Node& entries, const char* key, const char* form,
+void ReadList(const yaml::Source& src, const Document& entries, const char* key, const char* form,
               Read read) {
   if (!entries.IsSequence()) {
     yaml::Fail(src, entries, key, yaml::Describe(entries),
@@ -102,7 +101,7 @@ void ReadList(const yaml::Source& src, const YAML::Node& entries, const char* ke
   for (std::size_t k = 0; k < entries.size(); ++k) read(entries[k], Item(key, k));
 }
 
-PathBound ReadPathBound(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+PathBound ReadPathBound(const yaml::Source& src, const Document& node, const std::string& path) {
   yaml::RequireMap(src, node, path, {"column", "bounds"});
   PathBound bound;
   bound.column =
@@ -114,7 +113,7 @@ PathBound ReadPathBound(const yaml::Source& src, const YAML::Node& node, const s
 
 // A tracking term's reference: `points: [[t, r], ...]`, or `csv: FILE` (relative to the
 // problem file) with `column: NAME` and the time column `time: NAME` (default t).
-std::vector<TablePoint> ReadReference(const yaml::Source& src, const YAML::Node& node,
+std::vector<TablePoint> ReadReference(const yaml::Source& src, const Document& node,
                                       const std::string& path, std::vector<std::string>& inputs) {
   yaml::RequireMap(src, node, path, {"points", "csv", "column", "time"});
   std::vector<TablePoint> points;
@@ -122,7 +121,7 @@ std::vector<TablePoint> ReadReference(const yaml::Source& src, const YAML::Node&
     yaml::Fail(src, node["csv"], yaml::Join(path, "csv"), yaml::Describe(node["csv"]),
                "give either points or csv, not both");
   }
-  if (const YAML::Node listed = node["points"]) {
+  if (const Document& listed = node["points"]) {
     const std::string at = yaml::Join(path, "points");
     if (!listed.IsSequence()) {
       yaml::Fail(src, listed, at, yaml::Describe(listed), "must be a list of [t, value] pairs");
@@ -150,7 +149,7 @@ std::vector<TablePoint> ReadReference(const yaml::Source& src, const YAML::Node&
   return points;
 }
 
-TrackingTerm ReadTracking(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+TrackingTerm ReadTracking(const yaml::Source& src, const Document& node, const std::string& path,
                           std::vector<std::string>& inputs) {
   yaml::RequireMap(src, node, path, {"column", "reference", "weight"});
   TrackingTerm term;
@@ -162,8 +161,7 @@ TrackingTerm ReadTracking(const yaml::Source& src, const YAML::Node& node, const
   return term;
 }
 
-TerminalTerm ReadTerminal(const yaml::Source& src, const YAML::Node& node,
-                          const std::string& path) {
+TerminalTerm ReadTerminal(const yaml::Source& src, const Document& node, const std::string& path) {
   yaml::RequireMap(src, node, path, {"column", "target", "weight"});
   TerminalTerm term;
   term.column =
@@ -174,7 +172,7 @@ TerminalTerm ReadTerminal(const yaml::Source& src, const YAML::Node& node,
   return term;
 }
 
-FreeParameter ReadParameter(const yaml::Source& src, const YAML::Node& node,
+FreeParameter ReadParameter(const yaml::Source& src, const Document& node,
                             const std::string& path) {
   yaml::RequireMap(src, node, path, {"path", "bounds"});
   FreeParameter free;
@@ -185,7 +183,7 @@ FreeParameter ReadParameter(const yaml::Source& src, const YAML::Node& node,
   return free;
 }
 
-FreeFinalTime ReadFinalTime(const yaml::Source& src, const YAML::Node& node) {
+FreeFinalTime ReadFinalTime(const yaml::Source& src, const Document& node) {
   yaml::RequireMap(src, node, "final_time", {"bounds", "weight"});
   FreeFinalTime time;
   const InputRange times{-1e9, 1e9, "s", "a time"};
@@ -197,7 +195,7 @@ FreeFinalTime ReadFinalTime(const yaml::Source& src, const YAML::Node& node) {
 
 // Each output a file of its own in an existing directory, none of them an input (the problem,
 // its base, a tracking reference): a failed or finished run must not replace what it read.
-void CheckOutputs(const yaml::Source& src, const YAML::Node& root, const OptimizeOutputs& outputs,
+void CheckOutputs(const yaml::Source& src, const Document& root, const OptimizeOutputs& outputs,
                   const std::vector<std::string>& inputs) {
   namespace fs = std::filesystem;
   const auto same = [](const std::string& a, const std::string& b) {
@@ -212,7 +210,7 @@ void CheckOutputs(const yaml::Source& src, const YAML::Node& root, const Optimiz
     const char* const key = named[k].first;
     const std::string* const target = named[k].second;
     const std::string at = std::string("output.") + key;
-    const YAML::Node node = root["output"] && root["output"][key] ? root["output"][key] : root;
+    const Document& node = root["output"] && root["output"][key] ? root["output"][key] : root;
     const auto fail = [&](const std::string& rule) {
       yaml::Fail(src, node, at, "'" + *target + "'", rule);
     };
@@ -242,35 +240,33 @@ void CheckOutputs(const yaml::Source& src, const YAML::Node& root, const Optimiz
 
 // The node at `path` ("final_values[0].column", "effort.weight") below `root`, or its
 // deepest ancestor present (a key given by default has no node of its own).
-YAML::Node NodeAt(const YAML::Node& root, const std::string& path) {
-  YAML::Node node = root;
+const Document& NodeAt(const Document& root, const std::string& path) {
+  const Document* node = &root;
   std::size_t at = 0;
   while (at < path.size()) {
     const std::size_t end = path.find_first_of(".[", at);
     const std::string key = path.substr(at, end == std::string::npos ? end : end - at);
-    YAML::Node next;
-    if (!key.empty() && node.IsMap() && node[key]) next = node[key];
-    if (!key.empty() && !next.IsDefined()) return node;
-    if (!key.empty()) node = next;
+    if (!key.empty() && !(*node)[key]) return *node;
+    if (!key.empty()) node = &(*node)[key];
     at = end == std::string::npos ? path.size() : end + 1;
     if (end != std::string::npos && path[end] == '[') {
       const std::size_t close = path.find(']', at);
-      if (close == std::string::npos) return node;
+      if (close == std::string::npos) return *node;
       const std::size_t i = std::stoul(path.substr(at, close - at));
-      if (!node.IsSequence() || i >= node.size()) return node;
-      node = node[i];
+      if (!node->IsSequence() || i >= node->size()) return *node;
+      node = &(*node)[i];
       at = close + 1;
       if (at < path.size() && path[at] == '.') ++at;
     }
   }
-  return node;
+  return *node;
 }
 
 }  // namespace
 
 namespace {
 
-void ReadOptimizer(const yaml::Source& src, const YAML::Node& optimizer, OptimizeOptions& options) {
+void ReadOptimizer(const yaml::Source& src, const Document& optimizer, OptimizeOptions& options) {
   yaml::RequireMap(src, optimizer, "optimizer",
                    {"tolerance", "max_iterations", "max_seconds", "derivatives"});
   if (optimizer["derivatives"]) {
@@ -302,7 +298,7 @@ void ReadOptimizer(const yaml::Source& src, const YAML::Node& optimizer, Optimiz
 
 // Every key of a problem but its base and outputs (a file's), into `file`; `inputs` gains
 // the files it reads (a tracking reference's CSV).
-void ReadProblemBody(const yaml::Source& src, const YAML::Node& root, ProblemFile& file,
+void ReadProblemBody(const yaml::Source& src, const Document& root, ProblemFile& file,
                      std::vector<std::string>& inputs) {
   OptimalControlProblem& problem = file.problem;
   if (root["intervals"]) {
@@ -313,7 +309,7 @@ void ReadProblemBody(const yaml::Source& src, const YAML::Node& root, ProblemFil
     }
     problem.intervals = static_cast<int>(n);
   }
-  const YAML::Node controls = yaml::Required(src, root, "", "controls");
+  const Document& controls = yaml::Required(src, root, "", "controls");
   if (!controls.IsSequence() || controls.size() == 0) {
     yaml::Fail(src, controls, "controls", yaml::Describe(controls),
                "must be a list of at least one control, {actuator: NAME, ...}");
@@ -321,7 +317,7 @@ void ReadProblemBody(const yaml::Source& src, const YAML::Node& root, ProblemFil
   for (std::size_t j = 0; j < controls.size(); ++j) {
     problem.controls.push_back(ReadControl(src, controls[j], Item("controls", j)));
   }
-  if (const YAML::Node finals = root["final_values"]) {
+  if (const Document& finals = root["final_values"]) {
     if (!finals.IsSequence()) {
       yaml::Fail(src, finals, "final_values", yaml::Describe(finals),
                  "must be a list of {column: NODE.COLUMN, value: X} or {column, bounds}");
@@ -330,37 +326,37 @@ void ReadProblemBody(const yaml::Source& src, const YAML::Node& root, ProblemFil
       problem.final_values.push_back(ReadFinal(src, finals[k], Item("final_values", k)));
     }
   }
-  if (const YAML::Node bounds = root["path_bounds"]) {
+  if (const Document& bounds = root["path_bounds"]) {
     ReadList(src, bounds, "path_bounds", "{column: NAME, bounds: [lower, upper]}",
-             [&](const YAML::Node& n, const std::string& at) {
+             [&](const Document& n, const std::string& at) {
                problem.path_bounds.push_back(ReadPathBound(src, n, at));
              });
   }
-  if (const YAML::Node terms = root["tracking"]) {
+  if (const Document& terms = root["tracking"]) {
     ReadList(src, terms, "tracking", "{column: NAME, reference: {...}, weight: W}",
-             [&](const YAML::Node& n, const std::string& at) {
+             [&](const Document& n, const std::string& at) {
                problem.tracking.push_back(ReadTracking(src, n, at, inputs));
              });
   }
-  if (const YAML::Node terms = root["terminal"]) {
+  if (const Document& terms = root["terminal"]) {
     ReadList(src, terms, "terminal", "{column: NAME, target: X, weight: W}",
-             [&](const YAML::Node& n, const std::string& at) {
+             [&](const Document& n, const std::string& at) {
                problem.terminal.push_back(ReadTerminal(src, n, at));
              });
   }
-  if (const YAML::Node free = root["parameters"]) {
+  if (const Document& free = root["parameters"]) {
     ReadList(src, free, "parameters", "{path: KEY.PATH, bounds: [lower, upper]}",
-             [&](const YAML::Node& n, const std::string& at) {
+             [&](const Document& n, const std::string& at) {
                problem.parameters.push_back(ReadParameter(src, n, at));
              });
   }
-  if (const YAML::Node time = root["final_time"]) problem.final_time = ReadFinalTime(src, time);
-  if (const YAML::Node optimizer = root["optimizer"]) ReadOptimizer(src, optimizer, file.options);
+  if (const Document& time = root["final_time"]) problem.final_time = ReadFinalTime(src, time);
+  if (const Document& optimizer = root["optimizer"]) ReadOptimizer(src, optimizer, file.options);
 }
 
 // The problem against its scenario (an actuator, a column, a parameter it lacks): the
 // message's entry placed in the problem's own text.
-void CheckAgainstScenario(const yaml::Source& src, const YAML::Node& root,
+void CheckAgainstScenario(const yaml::Source& src, const Document& root,
                           const OptimalControlProblem& problem) {
   try {
     CheckProblem(problem);
@@ -375,7 +371,7 @@ void CheckAgainstScenario(const yaml::Source& src, const YAML::Node& root,
 
 ProblemFile LoadProblemFile(const std::string& path) {
   const yaml::Source src{path};
-  const YAML::Node root = yaml::LoadFile(path);
+  const Document& root = yaml::LoadFile(path);
   yaml::RequireMap(src, root, "",
                    {"base", "intervals", "controls", "final_values", "path_bounds", "tracking",
                     "terminal", "parameters", "final_time", "optimizer", "output"});
@@ -387,7 +383,7 @@ ProblemFile LoadProblemFile(const std::string& path) {
   ReadProblemBody(src, root, file, inputs);
   const std::string stem = std::filesystem::path(path).stem().string();
   file.outputs = {stem + "_optimum.yaml", stem + "_optimum.json", stem + "_optimum.csv"};
-  if (const YAML::Node output = root["output"]) {
+  if (const Document& output = root["output"]) {
     yaml::RequireMap(src, output, "output", {"scenario", "summary", "trajectory"});
     for (const auto& [key, target] :
          {std::pair<const char*, std::string*>{"scenario", &file.outputs.scenario},
@@ -404,7 +400,7 @@ ProblemFile LoadProblemFile(const std::string& path) {
 
 ProblemFile ReadProblem(const Document& document, const std::string& name,
                         const Scenario& scenario) {
-  const YAML::Node root = ToYaml(document);
+  const Document& root = document;
   const yaml::Source src{name, name};
   yaml::RequireMap(src, root, "",
                    {"intervals", "controls", "final_values", "path_bounds", "tracking", "terminal",

@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <memory>
 
-#include "io/readers/document_yaml.h"
 #include "io/readers/yaml_fields.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/io/readers/scenario_yaml.h"
@@ -18,11 +17,11 @@ namespace musclesim {
 
 namespace {
 
-SweepAxis ReadAxis(const yaml::Source& src, const YAML::Node& key, const YAML::Node& node,
-                   SweepMode mode) {
+SweepAxis ReadAxis(const yaml::Source& src, const std::string& key, TextPosition key_at,
+                   const Document& node, SweepMode mode) {
   SweepAxis axis;
-  axis.path = key.as<std::string>();
-  axis.place = yaml::Place(src, key);
+  axis.path = key;
+  axis.place = yaml::Place(src, key_at);
   const std::string where = "parameters." + axis.path;
   if (node.IsSequence()) {
     if (node.size() == 0) yaml::Fail(src, node, where, "[]", "needs at least one value");
@@ -33,7 +32,7 @@ SweepAxis ReadAxis(const yaml::Source& src, const YAML::Node& key, const YAML::N
       }
       axis.values.push_back(node[i].Scalar());
       double number = 0.0;
-      if (YAML::convert<double>::decode(node[i], number)) axis.numbers.push_back(number);
+      if (DecodeNumber(node[i].Scalar(), number)) axis.numbers.push_back(number);
     }
     return axis;
   }
@@ -66,7 +65,7 @@ SweepAxis ReadAxis(const yaml::Source& src, const YAML::Node& key, const YAML::N
     }
     return axis;
   }
-  const YAML::Node count_node = yaml::Required(src, node, where, "count");
+  const Document& count_node = yaml::Required(src, node, where, "count");
   axis.count = yaml::ReadInteger(src, count_node, where + ".count");
   if (axis.count < 1)
     yaml::Fail(src, count_node, where + ".count", yaml::Describe(count_node), "must be >= 1");
@@ -74,7 +73,7 @@ SweepAxis ReadAxis(const yaml::Source& src, const YAML::Node& key, const YAML::N
 }
 
 // Requires the product of the axis lengths within kMaxSweepPoints, without overflowing.
-void CheckGridSize(const yaml::Source& src, const YAML::Node& parameters, const SweepSpec& spec) {
+void CheckGridSize(const yaml::Source& src, const Document& parameters, const SweepSpec& spec) {
   long count = 1;
   bool overflow = false;
   std::string lengths;
@@ -90,7 +89,7 @@ void CheckGridSize(const yaml::Source& src, const YAML::Node& parameters, const 
   }
 }
 
-void ReadMode(const yaml::Source& src, const YAML::Node& root, SweepSpec& spec) {
+void ReadMode(const yaml::Source& src, const Document& root, SweepSpec& spec) {
   if (!root["mode"]) return;  // the default
   const std::string mode = yaml::ReadString(src, root["mode"], "mode");
   if (mode == "grid")
@@ -104,7 +103,7 @@ void ReadMode(const yaml::Source& src, const YAML::Node& root, SweepSpec& spec) 
 }
 
 // Mode random's `samples` and `seed`; other modes refuse them.
-void ReadSampling(const yaml::Source& src, const YAML::Node& root, SweepSpec& spec) {
+void ReadSampling(const yaml::Source& src, const Document& root, SweepSpec& spec) {
   if (spec.mode != SweepMode::kRandom) {
     for (const char* key : {"samples", "seed"}) {
       if (root[key]) {
@@ -115,7 +114,7 @@ void ReadSampling(const yaml::Source& src, const YAML::Node& root, SweepSpec& sp
     }
     return;
   }
-  const YAML::Node samples = yaml::Required(src, root, "", "samples");
+  const Document& samples = yaml::Required(src, root, "", "samples");
   const double n = yaml::ReadNumber(src, samples, "samples");
   if (!(n >= 1 && n <= 1e9) || n != std::floor(n)) {
     yaml::Fail(src, samples, "samples", yaml::Describe(samples),
@@ -123,7 +122,7 @@ void ReadSampling(const yaml::Source& src, const YAML::Node& root, SweepSpec& sp
   }
   spec.samples = static_cast<long>(n);
   // no default seed: a documented, reproducible sweep names the seed it draws from
-  const YAML::Node seed = root["seed"];
+  const Document& seed = root["seed"];
   if (!seed) {
     throw InputError(InputFault{yaml::Place(src, root), "seed", std::nullopt,
                                 "missing required key: mode random draws every value from a "
@@ -137,17 +136,19 @@ void ReadSampling(const yaml::Source& src, const YAML::Node& root, SweepSpec& sp
 }
 
 // The axes of `parameters`: zip's all of one length, a grid's product within the limit.
-void ReadAxes(const yaml::Source& src, const YAML::Node& root, SweepSpec& spec) {
-  const YAML::Node parameters = yaml::Required(src, root, "", "parameters");
+void ReadAxes(const yaml::Source& src, const Document& root, SweepSpec& spec) {
+  const Document& parameters = yaml::Required(src, root, "", "parameters");
   if (!parameters.IsMap() || parameters.size() == 0) {
     yaml::Fail(src, parameters, "parameters", yaml::Describe(parameters),
                "must map at least one dotted path to its values");
   }
-  for (const auto& entry : parameters) {
-    spec.axes.push_back(ReadAxis(src, entry.first, entry.second, spec.mode));
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    const Document& values = parameters.items()[i];
+    spec.axes.push_back(
+        ReadAxis(src, parameters.key(i), parameters.key_position(i), values, spec.mode));
     if (spec.mode == SweepMode::kZip &&
         AxisLength(spec.axes.back()) != AxisLength(spec.axes.front())) {
-      yaml::Fail(src, entry.second, "parameters." + spec.axes.back().path,
+      yaml::Fail(src, values, "parameters." + spec.axes.back().path,
                  std::to_string(AxisLength(spec.axes.back())) + " values",
                  "zip needs every axis as long as the first (" +
                      std::to_string(AxisLength(spec.axes.front())) + " values)");
@@ -157,8 +158,8 @@ void ReadAxes(const yaml::Source& src, const YAML::Node& root, SweepSpec& spec) 
 }
 
 // The `metrics` list, parsed; the node, for messages about its entries.
-YAML::Node ReadMetrics(const yaml::Source& src, const YAML::Node& root, SweepSpec& spec) {
-  const YAML::Node metrics = yaml::Required(src, root, "", "metrics");
+const Document& ReadMetrics(const yaml::Source& src, const Document& root, SweepSpec& spec) {
+  const Document& metrics = yaml::Required(src, root, "", "metrics");
   if (!metrics.IsSequence() || metrics.size() == 0) {
     yaml::Fail(src, metrics, "metrics", yaml::Describe(metrics),
                "must be a non-empty list of metric names");
@@ -177,8 +178,8 @@ YAML::Node ReadMetrics(const yaml::Source& src, const YAML::Node& root, SweepSpe
 
 // `metric_options`' window and target_length (its element is read once the base's elements
 // are known).
-void ReadMetricOptions(const yaml::Source& src, const YAML::Node& root, SweepSpec& spec) {
-  const YAML::Node options = root["metric_options"];
+void ReadMetricOptions(const yaml::Source& src, const Document& root, SweepSpec& spec) {
+  const Document& options = root["metric_options"];
   if (!options) return;
   yaml::RequireMap(src, options, "metric_options", {"window", "target_length", "element"});
   if (options["window"]) {
@@ -203,7 +204,7 @@ void ReadMetricOptions(const yaml::Source& src, const YAML::Node& root, SweepSpe
 }
 
 // `trajectories` (which points' trajectories are kept) and `output` (where the summary goes).
-void ReadOutputs(const yaml::Source& src, const YAML::Node& root, SweepSpec& spec) {
+void ReadOutputs(const yaml::Source& src, const Document& root, SweepSpec& spec) {
   if (root["trajectories"]) {
     const std::string policy = yaml::ReadString(src, root["trajectories"], "trajectories");
     if (policy == "none")
@@ -222,7 +223,7 @@ void ReadOutputs(const yaml::Source& src, const YAML::Node& root, SweepSpec& spe
 
 // Everything a sweep file says but its base: the axes, the mode, the metrics and where the
 // summary goes. `base_dir` is where a base path is relative to.
-SweepSpec ReadSweepSpec(const yaml::Source& src, const YAML::Node& root,
+SweepSpec ReadSweepSpec(const yaml::Source& src, const Document& root,
                         const std::string& base_dir) {
   yaml::RequireMap(src, root, "",
                    {"base", "mode", "samples", "seed", "parameters", "metrics", "metric_options",
@@ -234,7 +235,7 @@ SweepSpec ReadSweepSpec(const yaml::Source& src, const YAML::Node& root,
   ReadMode(src, root, spec);
   ReadSampling(src, root, spec);
   ReadAxes(src, root, spec);
-  const YAML::Node metrics = ReadMetrics(src, root, spec);
+  const Document& metrics = ReadMetrics(src, root, spec);
   ReadMetricOptions(src, root, spec);
   for (std::size_t i = 0; i < spec.metrics.size(); ++i) {
     if (spec.metrics[i] == Metric::kTimeToLength && !spec.metric_options.target_length) {
@@ -247,8 +248,7 @@ SweepSpec ReadSweepSpec(const yaml::Source& src, const YAML::Node& root,
 }
 
 // The spec's points made from the base file spec.base, validated.
-SweepPlan PlanFromFile(const yaml::Source& src, const YAML::Node& root, SweepSpec spec,
-                       int threads) {
+SweepPlan PlanFromFile(const yaml::Source& src, const Document& root, SweepSpec spec, int threads) {
   // every point is a full scenario: validate them (or, for a large sweep, a sample of them)
   // before anything runs; a point's error is told in terms of the file at fault
   spec.base_digest = Digest(yaml::ReadText(spec.base));
@@ -271,7 +271,7 @@ SweepPlan PlanFromFile(const yaml::Source& src, const YAML::Node& root, SweepSpe
 }  // namespace
 
 SweepPlan LoadSweep(const std::string& path, int threads) {
-  const YAML::Node root = yaml::LoadFile(path);
+  const Document& root = yaml::LoadFile(path);
   const yaml::Source src{path};
   SweepSpec spec = ReadSweepSpec(src, root, std::filesystem::path(path).parent_path().string());
   return PlanFromFile(src, root, std::move(spec), threads);
@@ -279,7 +279,7 @@ SweepPlan LoadSweep(const std::string& path, int threads) {
 
 SweepPlan ReadSweep(const Document& document, const std::string& name, const Scenario* base,
                     const std::string& base_text, int threads) {
-  const YAML::Node root = ToYaml(document);
+  const Document& root = document;
   const yaml::Source src{name, name};
   SweepSpec spec = ReadSweepSpec(src, root, "");
   if (base == nullptr) return PlanFromFile(src, root, std::move(spec), threads);

@@ -6,11 +6,11 @@
 
 namespace musclesim {
 
-std::string ResolveMetricElement(const yaml::Source& src, const YAML::Node& root,
+std::string ResolveMetricElement(const yaml::Source& src, const Document& root,
                                  const SweepSpec& spec, const MetricElements& elements) {
-  const YAML::Node options = root["metric_options"];
+  const Document& options = root["metric_options"];
   if (options && options["element"]) {
-    const YAML::Node given = options["element"];
+    const Document& given = options["element"];
     const std::string name = yaml::ReadString(src, given, "metric_options.element");
     if (std::find(elements.all.begin(), elements.all.end(), name) == elements.all.end()) {
       yaml::Fail(src, given, "metric_options.element", name,
@@ -24,7 +24,7 @@ std::string ResolveMetricElement(const yaml::Source& src, const YAML::Node& root
   }
   if (elements.actuators.size() == 1) return elements.actuators.front();
   // the metrics read one element, and with none or several actuators none is the obvious one
-  const YAML::Node at = options ? options : root["metrics"];
+  const Document& at = options ? options : root["metrics"];
   const std::string actuators = elements.actuators.empty()
                                     ? "no actuator"
                                     : std::to_string(elements.actuators.size()) + " actuators (" +

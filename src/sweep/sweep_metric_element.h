@@ -2,8 +2,6 @@
 // it is the only actuator of the base (in the single-actuator form, always its actuator).
 #pragma once
 
-#include <yaml-cpp/yaml.h>
-
 #include <string>
 
 #include "io/readers/yaml_fields.h"
@@ -16,7 +14,7 @@ namespace musclesim {
 // file `root` (read from `src`) read. Throws InputError at metric_options.element when it
 // names no element of them, listing them; at metric_options (or metrics, without it) when
 // it is left out and a network has no actuator or several, naming them.
-std::string ResolveMetricElement(const yaml::Source& src, const YAML::Node& root,
+std::string ResolveMetricElement(const yaml::Source& src, const Document& root,
                                  const SweepSpec& spec, const MetricElements& elements);
 
 }  // namespace musclesim

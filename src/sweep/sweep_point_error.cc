@@ -13,9 +13,9 @@ namespace {
 // The position of the deepest node of `root` that the key path `path` (model.velocity.n,
 // load[0].after) reaches; the key itself rather than its value when `want_key` and the path
 // ends in a key that exists. Messages name such paths first; "(top level)" reaches the root.
-YAML::Mark Reach(const YAML::Node& root, const std::string& path, bool want_key) {
-  YAML::Node node = root;
-  YAML::Mark mark = root.Mark();
+TextPosition Reach(const Document& root, const std::string& path, bool want_key) {
+  const Document* node = &root;
+  TextPosition mark = root.position();
   std::size_t i = 0;
   while (i < path.size()) {
     if (path[i] == '.') ++i;
@@ -28,24 +28,24 @@ YAML::Mark Reach(const YAML::Node& root, const std::string& path, bool want_key)
         break;
       }
       const std::size_t index = std::stoul(digits);
-      if (node.IsSequence() && index < node.size()) {
-        node.reset(node[index]);
-      } else if (!(node.IsMap() && index == 0)) {  // a single load written as a map is load[0]
+      if (node->IsSequence() && index < node->size()) {
+        node = &(*node)[index];
+      } else if (!(node->IsMap() && index == 0)) {  // a single load written as a map is load[0]
         break;
       }
-      mark = node.Mark();
+      mark = node->position();
       i = close + 1;
       continue;
     }
     const std::size_t end = path.find_first_of(".[", i);
     const std::string key = path.substr(i, end == std::string::npos ? std::string::npos : end - i);
-    if (key.empty() || !node.IsMap()) break;
+    if (key.empty() || !node->IsMap()) break;
     bool found = false;
-    for (const auto& entry : node) {
-      if (entry.first.IsScalar() && entry.first.Scalar() == key) {
+    for (std::size_t k = 0; k < node->size(); ++k) {
+      if (node->key(k) == key) {
         const bool last = end == std::string::npos;
-        mark = last && want_key ? entry.first.Mark() : entry.second.Mark();
-        node.reset(entry.second);
+        mark = last && want_key ? node->key_position(k) : node->items()[k].position();
+        node = &node->items()[k];
         found = true;
         break;
       }
@@ -92,7 +92,7 @@ InputError PointErrorExplainer::Restore(const InputError& error) const {
       fault.place->column != lost.column) {
     return error;
   }
-  const YAML::Mark mark = Reach(base_root_, fault.key, !fault.value.has_value());
+  const TextPosition mark = Reach(base_root_, fault.key, !fault.value.has_value());
   fault.place = InputPlace{spec_.base, mark.line + 1, mark.column + 1};
   return error.WithFault(fault);
 }

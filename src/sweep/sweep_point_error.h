@@ -5,8 +5,6 @@
 // the axis (path, value, point, and its line:column in the sweep file) in the second.
 #pragma once
 
-#include <yaml-cpp/yaml.h>
-
 #include <optional>
 #include <string>
 
@@ -37,7 +35,7 @@ class PointErrorExplainer {
 
  private:
   // The error with the base file's position restored where the scenario reader could not
-  // know it (an overridden copy of the base has none: yaml-cpp's Clone drops them).
+  // know it.
   InputError Restore(const InputError& error) const;
   // The base scenario's own fault, wherever in the base it is placed.
   bool IsBaseError(const InputError& error) const;
@@ -46,7 +44,7 @@ class PointErrorExplainer {
 
   const SweepSpec& spec_;
   const ScenarioTemplate& base_;
-  YAML::Node base_root_;                  // the base file as written, with positions
+  Document base_root_;                    // the base file as written, with positions
   std::optional<InputError> base_error_;  // the base scenario's own error, if any
 };
 

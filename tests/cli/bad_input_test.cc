@@ -96,6 +96,17 @@ std::string Scenario(const std::string& from = "", const std::string& to = "") {
   const std::string text = std::string(kModel) + kRest;
   return from.empty() ? text : Edit(text, from, to);
 }
+// A top-level key whose value is ten aliases of a list of ten aliases, seven levels deep.
+std::string AliasBomb() {
+  std::ostringstream text;
+  text << "a0: &a0 [1, 1, 1, 1, 1, 1, 1, 1, 1, 1]\n";
+  for (int level = 1; level < 7; ++level) {
+    text << "a" << level << ": &a" << level << " [";
+    for (int i = 0; i < 10; ++i) text << (i ? ", *a" : "*a") << level - 1;
+    text << "]\n";
+  }
+  return text.str();
+}
 std::string ModelOnly(const std::string& from, const std::string& to) {
   return Edit(kModel, from, to);
 }
@@ -139,7 +150,10 @@ const std::vector<Case> kCases = {
     {"LongValueShownByItsStart", "run {file} -o -", Scenario("name: bad_input", "name: @[" + std::string(400, '1') + "]"), 2,
      {"name = [" + std::string(116, '1') + "... ({at}): must be a text value"}},
     {"AliasCycle", "run {file} -o -", Scenario("  f_iso: 100.0", "  f_iso: @&f [*f]"), 2,
-     {"model.f_iso = &1 [*1] ({at}): must be a number"}},
+     {"model.f_iso[0] ({at}): an alias inside the value it names (a cycle)"}},
+    // ten aliases of ten aliases, seven deep: seven lines of text that expand to 10^7 values
+    {"AliasesMultiplied", "run {file} -o -", Scenario() + AliasBomb(), 2,
+     {"the document's aliases expand it past 1000000 values"}},
     {"Directory", "run {dir} -o -", "", 2, {"is a directory; give a YAML file"}},
     {"MissingFile", "run {dir}/none.yaml -o -", "", 2, {"none.yaml: cannot open the file"}},
     // --- scenario: keys -------------------------------------------------------------------

@@ -41,7 +41,7 @@ std::string At(const std::string& text, const std::string& needle) {
 // building the system.
 Scenario ReadParts(const std::string& text) {
   const yaml::Source src{kFile};
-  const YAML::Node root = yaml::Parse(kFile, text);
+  const Document root = yaml::Parse(kFile, text);
   Scenario s;
   s.space = ReadSpace(src, root);
   const int d = s.space.dimensions;
@@ -378,7 +378,7 @@ TEST(SpatialNetworkYaml, ALoadActsAlongADirectionOnlyInAPlaneOrSpace) {
 // reader relocates them (yaml::ValidateAt) to the entry of the list they index.
 TEST(SpatialNetworkYaml, TheSystemsErrorsAtCoordinatesAndViaPointsFindTheirEntry) {
   const yaml::Source src{kFile};
-  const YAML::Node root = yaml::Parse(kFile, kPlanar);
+  const Document root = yaml::Parse(kFile, kPlanar);
   const auto relocated = [&](const std::string& path, const std::string& value) {
     return ErrorOf([&] {
       yaml::ValidateAt(src, root, "", [&] { throw ParameterError(path, value, "the rule"); });

@@ -48,8 +48,8 @@ std::string ErrorOf(Read read) {
 class YamlFields : public ::testing::Test {
  protected:
   const yaml::Source source{"f.yaml"};
-  const YAML::Node root = yaml::Parse("f.yaml", kText);
-  const YAML::Node block = root["block"];
+  const Document root = yaml::Parse("f.yaml", kText);
+  const Document& block = root["block"];
 };
 
 TEST_F(YamlFields, ReadsEachKindOfValue) {

@@ -14,9 +14,9 @@ namespace {
 using yaml::Required;
 using yaml::ValidateAt;
 
-void ReadLimits(const yaml::Source& src, const YAML::Node& limits, ActuatorScenarioSpec& s) {
+void ReadLimits(const yaml::Source& src, const Document& limits, ActuatorScenarioSpec& s) {
   yaml::RequireMap(src, limits, "limits", {"min_length", "max_length"});
-  if (const YAML::Node min = limits["min_length"]) {
+  if (const Document& min = limits["min_length"]) {
     const double value = yaml::ReadNumber(src, min, "limits.min_length");
     if (!(value >= 0.0 && value < s.initial_length)) {
       yaml::Fail(
@@ -25,7 +25,7 @@ void ReadLimits(const yaml::Source& src, const YAML::Node& limits, ActuatorScena
     }
     s.min_length = value;
   }
-  if (const YAML::Node max = limits["max_length"]) {
+  if (const Document& max = limits["max_length"]) {
     const double value = yaml::ReadNumber(src, max, "limits.max_length");
     if (!(value > s.initial_length && value <= kLengthRange.max)) {
       yaml::Fail(src, max, "limits.max_length", yaml::Describe(max),
@@ -46,14 +46,14 @@ void ReadLimits(const yaml::Source& src, const YAML::Node& limits, ActuatorScena
 
 }  // namespace
 
-ActuatorScenarioSpec ReadActuatorScenarioSpec(const yaml::Source& src, const YAML::Node& root) {
+ActuatorScenarioSpec ReadActuatorScenarioSpec(const yaml::Source& src, const Document& root) {
   yaml::RequireMap(src, root, "", kScenarioKeys);
   ActuatorScenarioSpec s;
   s.source = src.file;
   if (root["name"]) s.name = yaml::ReadString(src, root["name"], "name");
   s.model = ReadModelSpec(src, Required(src, root, "", "model"), "model");
 
-  const YAML::Node actuator = Required(src, root, "", "actuator");
+  const Document& actuator = Required(src, root, "", "actuator");
   yaml::RequireMap(src, actuator, "actuator", {"mass", "damping", "stiffness", "rest_length"});
   s.actuator.mass = yaml::ReadNumberIn(src, Required(src, actuator, "actuator", "mass"),
                                        "actuator.mass", kMassRange);
@@ -69,7 +69,7 @@ ActuatorScenarioSpec ReadActuatorScenarioSpec(const yaml::Source& src, const YAM
   s.t_start = time.start;
   s.t_end = time.end;
 
-  const YAML::Node initial = Required(src, root, "", "initial");
+  const Document& initial = Required(src, root, "", "initial");
   yaml::RequireMap(src, initial, "initial", {"length", "lengthening_rate", "activation"});
   s.initial_length = yaml::ReadNumberIn(src, Required(src, initial, "initial", "length"),
                                         "initial.length", kLengthRange);
@@ -89,8 +89,8 @@ ActuatorScenarioSpec ReadActuatorScenarioSpec(const yaml::Source& src, const YAM
   s.activation = std::move(drive.activation);
   s.excitation = std::move(drive.excitation);
 
-  if (const YAML::Node load = root["load"]) {
-    const auto read = [&](const YAML::Node& node, const std::string& at) {
+  if (const Document& load = root["load"]) {
+    const auto read = [&](const Document& node, const std::string& at) {
       s.loads.push_back(ReadLoad(src, node, at));
       if (s.loads.back().kind == LoadKind::kForce) {
         CheckPulses(src, node, at, s.loads.back().force, s.t_start, s.t_end);
@@ -107,22 +107,22 @@ ActuatorScenarioSpec ReadActuatorScenarioSpec(const yaml::Source& src, const YAM
     }
   }
 
-  if (const YAML::Node solver = root["solver"]) {
+  if (const Document& solver = root["solver"]) {
     s.solver = ReadSolver(src, solver, "solver", s.t_start, s.t_end);
   }
-  if (const YAML::Node output = root["output"]) {
+  if (const Document& output = root["output"]) {
     s.output = ReadOutput(src, output, "output", s.t_start, s.t_end);
   } else {
     s.output.interval = (s.t_end - s.t_start) / 1000.0;
   }
-  if (const YAML::Node limits = root["limits"]) ReadLimits(src, limits, s);
-  if (const YAML::Node list = root["sensitivities"]) {
+  if (const Document& limits = root["limits"]) ReadLimits(src, limits, s);
+  if (const Document& list = root["sensitivities"]) {
     ReadSensitivities(src, list, s.sensitivities, s.sensitivities_at);
   }
   return s;
 }
 
-Scenario ReadActuatorScenario(const yaml::Source& src, const YAML::Node& root) {
+Scenario ReadActuatorScenario(const yaml::Source& src, const Document& root) {
   ActuatorScenarioSpec spec = ReadActuatorScenarioSpec(src, root);
   Scenario scenario;
   // every part was validated as it was read; what is left is how they fit

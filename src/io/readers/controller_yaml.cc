@@ -18,7 +18,7 @@ using yaml::ValidateAt;
 constexpr const char* kControllerTypes = "pid";
 
 // A waveform of any kind at `node`, its values within `values` (nullptr: any finite value).
-Waveform ReadSignal(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+Waveform ReadSignal(const yaml::Source& src, const Document& node, const std::string& path,
                     const InputRange* values, double t_start, double t_end) {
   const std::string type = ReadType(src, node, path);
   WaveformKind kind{};
@@ -31,10 +31,10 @@ Waveform ReadSignal(const yaml::Source& src, const YAML::Node& node, const std::
 
 // A node's measured coordinate, `coordinate: x` (y, z): optional on a line, where it can
 // only be x, required in 2 or 3 `dimensions`.
-int ReadCoordinate(const yaml::Source& src, const YAML::Node& node, const std::string& at,
+int ReadCoordinate(const yaml::Source& src, const Document& node, const std::string& at,
                    int dimensions) {
   const std::string path = Join(at, "coordinate");
-  const YAML::Node coordinate = node["coordinate"];
+  const Document& coordinate = node["coordinate"];
   const std::string names = dimensions == 1 ? "x" : dimensions == 2 ? "x or y" : "x, y or z";
   if (!coordinate) {
     if (dimensions == 1) return Measurement::kNoCoordinate;
@@ -56,9 +56,9 @@ int ReadCoordinate(const yaml::Source& src, const YAML::Node& node, const std::s
   return c;
 }
 
-Measurement ReadMeasurement(const yaml::Source& src, const YAML::Node& item,
-                            const std::string& path, int dimensions) {
-  const YAML::Node node = Required(src, item, path, "measure");
+Measurement ReadMeasurement(const yaml::Source& src, const Document& item, const std::string& path,
+                            int dimensions) {
+  const Document& node = Required(src, item, path, "measure");
   const std::string at = Join(path, "measure");
   yaml::RequireMap(src, node, at, {"element", "node", "quantity", "coordinate"});
   if (static_cast<bool>(node["element"]) == static_cast<bool>(node["node"])) {
@@ -69,7 +69,7 @@ Measurement ReadMeasurement(const yaml::Source& src, const YAML::Node& item,
   Measurement m;
   if (node["element"]) {
     m.element = yaml::ReadString(src, node["element"], Join(at, "element"));
-    if (const YAML::Node coordinate = node["coordinate"]) {
+    if (const Document& coordinate = node["coordinate"]) {
       yaml::Fail(src, coordinate, Join(at, "coordinate"), yaml::Describe(coordinate),
                  "only a node's position has coordinates: an element's length and tension are "
                  "numbers");
@@ -78,14 +78,14 @@ Measurement ReadMeasurement(const yaml::Source& src, const YAML::Node& item,
     m.node = yaml::ReadString(src, node["node"], Join(at, "node"));
     m.coordinate = ReadCoordinate(src, node, at, dimensions);
   }
-  const YAML::Node quantity = Required(src, node, at, "quantity");
+  const Document& quantity = Required(src, node, at, "quantity");
   const std::string text = yaml::ReadString(src, quantity, Join(at, "quantity"));
   ValidateAt(src, node, at, [&] { m.quantity = ParseMeasuredQuantity(text); });
   return m;
 }
 
-PidGains ReadGains(const yaml::Source& src, const YAML::Node& item, const std::string& path) {
-  const YAML::Node node = Required(src, item, path, "gains");
+PidGains ReadGains(const yaml::Source& src, const Document& item, const std::string& path) {
+  const Document& node = Required(src, item, path, "gains");
   const std::string at = Join(path, "gains");
   yaml::RequireMap(src, node, at, {"kp", "ki", "kd"});
   PidGains gains;
@@ -95,10 +95,10 @@ PidGains ReadGains(const yaml::Source& src, const YAML::Node& item, const std::s
   return gains;
 }
 
-CoContraction ReadCoContraction(const yaml::Source& src, const YAML::Node& node,
+CoContraction ReadCoContraction(const yaml::Source& src, const Document& node,
                                 const std::string& at, double t_start, double t_end) {
   yaml::RequireMap(src, node, at, {"actuators", "level"});
-  const YAML::Node actuators = Required(src, node, at, "actuators");
+  const Document& actuators = Required(src, node, at, "actuators");
   const std::string list = Join(at, "actuators");
   if (!actuators.IsSequence() || actuators.size() != 2) {
     yaml::Fail(src, actuators, list, yaml::Describe(actuators),
@@ -114,7 +114,7 @@ CoContraction ReadCoContraction(const yaml::Source& src, const YAML::Node& node,
   return pair;
 }
 
-Controller ReadController(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+Controller ReadController(const yaml::Source& src, const Document& item, const std::string& path,
                           int dimensions, double t_start, double t_end) {
   if (!item.IsMap()) {
     yaml::Fail(src, item, path, yaml::Describe(item),
@@ -126,7 +126,7 @@ Controller ReadController(const yaml::Source& src, const YAML::Node& item, const
       {"name", "type", "measure", "reference", "gains", "feedforward", "drives", "co_contraction"});
   Controller c;
   c.name = ReadName(src, item, path);
-  const YAML::Node type = Required(src, item, path, "type");
+  const Document& type = Required(src, item, path, "type");
   const std::string kind = yaml::ReadString(src, type, Join(path, "type"));
   if (kind != kControllerTypes) {
     yaml::Fail(src, type, Join(path, "type"), kind,
@@ -139,12 +139,12 @@ Controller ReadController(const yaml::Source& src, const YAML::Node& item, const
   c.reference = ReadSignal(src, Required(src, item, path, "reference"), Join(path, "reference"),
                            unit, t_start, t_end);
   c.gains = ReadGains(src, item, path);
-  if (const YAML::Node node = item["feedforward"]) {
+  if (const Document& node = item["feedforward"]) {
     c.feedforward =
         ReadSignal(src, node, Join(path, "feedforward"), &kFeedforwardRange, t_start, t_end);
   }
-  const YAML::Node drives = item["drives"];
-  const YAML::Node pair = item["co_contraction"];
+  const Document& drives = item["drives"];
+  const Document& pair = item["co_contraction"];
   if (static_cast<bool>(drives) == static_cast<bool>(pair)) {
     yaml::Fail(src, item, path, drives ? "drives and co_contraction" : "neither",
                "give exactly one of drives (the actuator driven) or co_contraction "
@@ -161,7 +161,7 @@ Controller ReadController(const yaml::Source& src, const YAML::Node& item, const
 
 }  // namespace
 
-std::vector<Controller> ReadControllers(const yaml::Source& src, const YAML::Node& node,
+std::vector<Controller> ReadControllers(const yaml::Source& src, const Document& node,
                                         int dimensions, double t_start, double t_end) {
   RequireList(src, node, "controllers",
               "controllers, each {name, type: pid, measure, reference, gains, drives or "
@@ -189,20 +189,20 @@ DrivenActuators DrivenActuatorsOf(const std::vector<Controller>& controllers) {
   return driven;
 }
 
-Element ReadControlledActuator(const yaml::Source& src, const YAML::Node& item,
+Element ReadControlledActuator(const yaml::Source& src, const Document& item,
                                const std::string& path, const std::string& name,
                                const std::string& from, const std::string& to,
                                std::shared_ptr<const TensionModel> model,
                                const ControllerRef& driver) {
   for (const char* key : {"activation", "excitation"}) {
-    if (const YAML::Node own = item[key]) {
+    if (const Document& own = item[key]) {
       yaml::Fail(src, own, Join(path, key), yaml::Describe(own),
                  "actuator " + name + " is driven by controllers[" + std::to_string(driver.index) +
                      "] (" + driver.name + "): it has no activation of its own");
     }
   }
-  const YAML::Node dynamics = item["activation_dynamics"];
-  const YAML::Node initial = item["initial_activation"];
+  const Document& dynamics = item["activation_dynamics"];
+  const Document& initial = item["initial_activation"];
   const std::string initial_path = Join(path, "initial_activation");
   Element e;
   if (!dynamics) {

@@ -31,7 +31,7 @@ using DrivenActuators = std::map<std::string, ControllerRef>;
 // `node` is the value of `controllers` (a list); pulses are checked against [t_start, t_end].
 // A measured node's `coordinate` (x, y, z) is required in 2 or 3 `dimensions` and optional on
 // a line, where it can only be x; an element's measure has none.
-std::vector<Controller> ReadControllers(const yaml::Source& src, const YAML::Node& node,
+std::vector<Controller> ReadControllers(const yaml::Source& src, const Document& node,
                                         int dimensions, double t_start, double t_end);
 
 DrivenActuators DrivenActuatorsOf(const std::vector<Controller>& controllers);
@@ -40,7 +40,7 @@ DrivenActuators DrivenActuatorsOf(const std::vector<Controller>& controllers);
 // `driver` drives: Element::ControlledActuator, with activation dynamics when the map has
 // `activation_dynamics` (and `initial_activation`, by default 0). An `activation` or
 // `excitation` key is an InputError naming the controller.
-Element ReadControlledActuator(const yaml::Source& src, const YAML::Node& item,
+Element ReadControlledActuator(const yaml::Source& src, const Document& item,
                                const std::string& path, const std::string& name,
                                const std::string& from, const std::string& to,
                                std::shared_ptr<const TensionModel> model,

@@ -5,7 +5,6 @@
 #include <set>
 
 #include "musclesim/core/key_path.h"
-#include "io/readers/document_yaml.h"
 #include "io/readers/yaml_fields.h"
 
 namespace musclesim {
@@ -27,7 +26,7 @@ std::string Relative(const std::string& base_dir, const std::string& file) {
   return (std::filesystem::path(base_dir) / file).lexically_normal().string();
 }
 
-SeriesSpec ReadSeries(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+SeriesSpec ReadSeries(const yaml::Source& src, const Document& node, const std::string& path,
                       const std::string& base_dir, SeriesValues values) {
   if (values == SeriesValues::kInMemory) {
     // the caller holds the values: an entry gives at most their noise levels
@@ -42,42 +41,42 @@ SeriesSpec ReadSeries(const yaml::Source& src, const YAML::Node& node, const std
                "give csv (the measured values, to fit) or noise (the columns and their noise "
                "levels, enough for an experiment design)");
   }
-  if (const YAML::Node csv = node["csv"]) {
+  if (const Document& csv = node["csv"]) {
     const std::string file = yaml::ReadString(src, csv, path + ".csv");
     if (file.empty()) yaml::Fail(src, csv, path + ".csv", "\"\"", "must name a CSV file");
     series.csv = Relative(base_dir, file);
     series.csv_at = yaml::Place(src, csv);
   }
-  if (const YAML::Node noise = node["noise"]) {
+  if (const Document& noise = node["noise"]) {
     if (!noise.IsMap() || noise.size() == 0) {
       yaml::Fail(src, noise, path + ".noise", yaml::Describe(noise),
                  "must be a map from column names to standard deviations, e.g. {length: 2.0e-5}");
     }
-    for (const auto& entry : noise) {
-      const std::string column = yaml::ReadString(src, entry.first, path + ".noise");
-      series.noise.emplace_back(
-          column, yaml::ReadNumberIn(src, entry.second, path + ".noise." + column, kNoiseRange));
+    for (std::size_t i = 0; i < noise.size(); ++i) {
+      const std::string& column = noise.key(i);
+      series.noise.emplace_back(column, yaml::ReadNumberIn(src, noise.items()[i],
+                                                           path + ".noise." + column, kNoiseRange));
     }
   }
   return series;
 }
 
-SeriesParameterSpec ReadParameter(const yaml::Source& src, const YAML::Node& node,
+SeriesParameterSpec ReadParameter(const yaml::Source& src, const Document& node,
                                   const std::string& path) {
   yaml::RequireMap(src, node, path, {"path", "start", "bounds"});
   SeriesParameterSpec parameter;
   parameter.at = yaml::Place(src, node);
-  const YAML::Node name = yaml::Required(src, node, path, "path");
+  const Document& name = yaml::Required(src, node, path, "path");
   parameter.path = yaml::ReadString(src, name, path + ".path");
   const auto steps = SplitKeyPath(parameter.path);
   if (!steps || steps->empty()) {
     yaml::Fail(src, name, path + ".path", yaml::Describe(name),
                "must be a dotted key path into the scenario, e.g. model.f_iso or load[0].value");
   }
-  if (const YAML::Node start = node["start"]) {
+  if (const Document& start = node["start"]) {
     parameter.start = yaml::ReadNumberIn(src, start, path + ".start", kParameterRange);
   }
-  if (const YAML::Node bounds = node["bounds"]) {
+  if (const Document& bounds = node["bounds"]) {
     const std::vector<double> values = yaml::ReadNumbers(src, bounds, path + ".bounds", 2);
     for (std::size_t i = 0; i < 2; ++i) {
       if (!kParameterRange.Contains(values[i])) {
@@ -102,7 +101,7 @@ SeriesParameterSpec ReadParameter(const yaml::Source& src, const YAML::Node& nod
 }  // namespace
 
 bool IsIdentifySeriesFile(const std::string& path) {
-  const YAML::Node root = yaml::LoadFile(path);
+  const Document& root = yaml::LoadFile(path);
   return root.IsMap() && root["scenario"];
 }
 
@@ -113,20 +112,20 @@ IdentifySeriesSpec LoadIdentifySeriesSpec(const std::string& path) {
 
 namespace {
 
-IdentifySeriesSpec ReadSpec(const yaml::Source& src, const YAML::Node& root,
+IdentifySeriesSpec ReadSpec(const yaml::Source& src, const Document& root,
                             const std::string& base_dir, SeriesValues values) {
   const std::string& source = src.file;
   yaml::RequireMap(src, root, "", {"scenario", "series", "parameters"});
   IdentifySeriesSpec spec;
   spec.source = source;
 
-  const YAML::Node scenario = yaml::Required(src, root, "", "scenario");
+  const Document& scenario = yaml::Required(src, root, "", "scenario");
   const std::string file = yaml::ReadString(src, scenario, "scenario");
   if (file.empty()) yaml::Fail(src, scenario, "scenario", "\"\"", "must name a scenario file");
   spec.scenario = Relative(base_dir, file);
   spec.scenario_at = yaml::Place(src, scenario);
 
-  const YAML::Node series = yaml::Required(src, root, "", "series");
+  const Document& series = yaml::Required(src, root, "", "series");
   if (!series.IsSequence() || series.size() == 0) {
     yaml::Fail(src, series, "series", yaml::Describe(series),
                values == SeriesValues::kCsvFiles
@@ -138,7 +137,7 @@ IdentifySeriesSpec ReadSpec(const yaml::Source& src, const YAML::Node& root,
         ReadSeries(src, series[i], "series[" + std::to_string(i) + "]", base_dir, values));
   }
 
-  const YAML::Node parameters = yaml::Required(src, root, "", "parameters");
+  const Document& parameters = yaml::Required(src, root, "", "parameters");
   if (!parameters.IsSequence() || parameters.size() == 0) {
     yaml::Fail(src, parameters, "parameters", yaml::Describe(parameters),
                "must be a list of one or more parameters, each {path: P, start: V, "
@@ -165,7 +164,7 @@ IdentifySeriesSpec ParseIdentifySeriesSpec(const std::string& source, const std:
 
 IdentifySeriesSpec ReadIdentifySeriesSpec(const Document& document, const std::string& name,
                                           const std::string& base_dir, SeriesValues values) {
-  return ReadSpec(yaml::Source{name, name}, ToYaml(document), base_dir, values);
+  return ReadSpec(yaml::Source{name, name}, document, base_dir, values);
 }
 
 }  // namespace musclesim

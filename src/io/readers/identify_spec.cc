@@ -7,7 +7,7 @@
 namespace musclesim {
 
 IdentifySpec LoadIdentifySpec(const std::string& path) {
-  const YAML::Node root = yaml::LoadFile(path);
+  const Document& root = yaml::LoadFile(path);
   const yaml::Source src{path};
   yaml::RequireMap(src, root, "", {"passive", "active", "velocity"});
   if (root.size() == 0) {
@@ -16,18 +16,18 @@ IdentifySpec LoadIdentifySpec(const std::string& path) {
   IdentifySpec spec;
   spec.source = path;
   // a CSV path relative to the data file, and where the data file names it
-  const auto csv = [&](const YAML::Node& block, const std::string& name, InputPlace& at) {
-    const YAML::Node node = yaml::Required(src, block, name, "csv");
+  const auto csv = [&](const Document& block, const std::string& name, InputPlace& at) {
+    const Document& node = yaml::Required(src, block, name, "csv");
     const std::string file = yaml::ReadString(src, node, name + ".csv");
     if (file.empty()) yaml::Fail(src, node, name + ".csv", "\"\"", "must name a CSV file");
     at = yaml::Place(src, node);
     return (std::filesystem::path(path).parent_path() / file).lexically_normal().string();
   };
-  if (const YAML::Node passive = root["passive"]) {
+  if (const Document& passive = root["passive"]) {
     yaml::RequireMap(src, passive, "passive", {"csv"});
     spec.passive_csv = csv(passive, "passive", spec.passive_csv_at);
   }
-  if (const YAML::Node active = root["active"]) {
+  if (const Document& active = root["active"]) {
     yaml::RequireMap(src, active, "active", {"csv", "count", "nonnegative"});
     spec.active_csv = csv(active, "active", spec.active_csv_at);
     if (active["count"]) {
@@ -41,7 +41,7 @@ IdentifySpec LoadIdentifySpec(const std::string& path) {
       spec.active_nonnegative = yaml::ReadBool(src, active["nonnegative"], "active.nonnegative");
     }
   }
-  if (const YAML::Node velocity = root["velocity"]) {
+  if (const Document& velocity = root["velocity"]) {
     yaml::RequireMap(src, velocity, "velocity", {"csv", "f_iso"});
     spec.velocity_csv = csv(velocity, "velocity", spec.velocity_csv_at);
     if (velocity["f_iso"]) {

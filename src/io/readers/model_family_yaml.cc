@@ -15,14 +15,14 @@ using yaml::Join;
 using yaml::Required;
 
 // Each of `fields` whose key `node` holds takes its value; an absent one keeps its default.
-void ReadOptionalNumbers(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+void ReadOptionalNumbers(const yaml::Source& src, const Document& node, const std::string& path,
                          std::initializer_list<std::pair<const char*, double*>> fields) {
   for (const auto& [key, value] : fields) {
     *value = yaml::ReadOptionalNumber(src, node, path, key, *value);
   }
 }
 
-void ReadDeGroote(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+void ReadDeGroote(const yaml::Source& src, const Document& node, const std::string& path,
                   DeGrooteParams& p) {
   p.optimal_fiber_length = yaml::ReadNumber(src, Required(src, node, path, "optimal_fiber_length"),
                                             Join(path, "optimal_fiber_length"));
@@ -34,7 +34,7 @@ void ReadDeGroote(const yaml::Source& src, const YAML::Node& node, const std::st
        {"fiber_damping", &p.fiber_damping}});
 }
 
-void ReadMujoco(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+void ReadMujoco(const yaml::Source& src, const Document& node, const std::string& path,
                 MujocoMuscleParams& p) {
   const std::vector<double> lengthrange = yaml::ReadNumbers(
       src, Required(src, node, path, "lengthrange"), Join(path, "lengthrange"), 2);
@@ -55,7 +55,7 @@ void ReadMujoco(const yaml::Source& src, const YAML::Node& node, const std::stri
 
 }  // namespace
 
-ModelSpec ReadFamilyModelSpec(const yaml::Source& src, const YAML::Node& node,
+ModelSpec ReadFamilyModelSpec(const yaml::Source& src, const Document& node,
                               const std::string& path, CurveFamily family) {
   ModelSpec model;
   ModelParams& p = model.params;

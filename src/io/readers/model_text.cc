@@ -1,6 +1,5 @@
 #include "musclesim/io/readers/model_text.h"
 
-#include "io/readers/document_yaml.h"
 #include "io/readers/model_yaml_node.h"
 
 namespace musclesim {
@@ -11,7 +10,7 @@ ModelSpec ParseModelSpec(const std::string& source, const std::string& text) {
 }
 
 ModelSpec ReadModelSpec(const Document& block, const std::string& source) {
-  return ReadModelSpec(yaml::Source{source, source}, ToYaml(block), "model");
+  return ReadModelSpec(yaml::Source{source, source}, block, "model");
 }
 
 }  // namespace musclesim

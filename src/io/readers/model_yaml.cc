@@ -10,8 +10,7 @@ namespace {
 using yaml::Join;
 using yaml::Required;
 
-PassiveParams ReadPassive(const yaml::Source& src, const YAML::Node& node,
-                          const std::string& path) {
+PassiveParams ReadPassive(const yaml::Source& src, const Document& node, const std::string& path) {
   yaml::RequireMap(src, node, path, {"k_p", "alpha", "slack_length"});
   PassiveParams p;
   p.k_p = yaml::ReadNumber(src, Required(src, node, path, "k_p"), Join(path, "k_p"));
@@ -22,7 +21,7 @@ PassiveParams ReadPassive(const yaml::Source& src, const YAML::Node& node,
 }
 
 // The curvature n of eq. 12: an integer 1..1000, written as a number ("3" or "3.0").
-int ReadExponent(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+int ReadExponent(const yaml::Source& src, const Document& node, const std::string& path) {
   const double value = yaml::ReadNumber(src, node, path);
   if (!(value >= 1.0 && value <= kMaxVelocityExponent) || value != std::floor(value)) {
     yaml::Fail(src, node, path, yaml::Describe(node), "must be an integer >= 1 (at most 1000)");
@@ -32,7 +31,7 @@ int ReadExponent(const yaml::Source& src, const YAML::Node& node, const std::str
 
 // `eccentric: {v_max, n, limit}`, every key optional (docs/model.md section 9); the rules
 // between keys are the model's Validate.
-EccentricParams ReadEccentric(const yaml::Source& src, const YAML::Node& node,
+EccentricParams ReadEccentric(const yaml::Source& src, const Document& node,
                               const std::string& path) {
   yaml::RequireMap(src, node, path, {"v_max", "n", "limit"});
   EccentricParams e;
@@ -42,7 +41,7 @@ EccentricParams ReadEccentric(const yaml::Source& src, const YAML::Node& node,
   return e;
 }
 
-VelocityParams ReadVelocity(const yaml::Source& src, const YAML::Node& node,
+VelocityParams ReadVelocity(const yaml::Source& src, const Document& node,
                             const std::string& path) {
   yaml::RequireMap(src, node, path, {"v_max", "n", "epsilon", "eccentric"});
   VelocityParams p;
@@ -55,7 +54,7 @@ VelocityParams ReadVelocity(const yaml::Source& src, const YAML::Node& node,
   return p;
 }
 
-std::vector<TargetPoint> ReadPoints(const yaml::Source& src, const YAML::Node& node,
+std::vector<TargetPoint> ReadPoints(const yaml::Source& src, const Document& node,
                                     const std::string& path) {
   if (!node.IsSequence()) {
     yaml::Fail(src, node, path, yaml::Describe(node), "must be a list of [x, y] pairs");
@@ -76,7 +75,7 @@ std::vector<TargetPoint> ReadPoints(const yaml::Source& src, const YAML::Node& n
   return points;
 }
 
-FitSpec ReadFitSpec(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+FitSpec ReadFitSpec(const yaml::Source& src, const Document& node, const std::string& path) {
   yaml::RequireMap(
       src, node, path,
       {"count", "target", "points", "nonnegative", "widths", "centers", "name", "optimal_length"});
@@ -104,7 +103,7 @@ FitSpec ReadFitSpec(const yaml::Source& src, const YAML::Node& node, const std::
     spec.centers = yaml::ReadNumbers(src, node["centers"], Join(path, "centers"));
     for (std::size_t k = 0; k < spec.centers.size(); ++k) {
       if (!kPositionRange.Contains(spec.centers[k])) {
-        const YAML::Node center = node["centers"][k];
+        const Document& center = node["centers"][k];
         yaml::Fail(src, center, Join(path, "centers") + "[" + std::to_string(k) + "]",
                    yaml::Describe(center), kPositionRange.Rule());
       }
@@ -120,7 +119,7 @@ FitSpec ReadFitSpec(const yaml::Source& src, const YAML::Node& node, const std::
   return spec;
 }
 
-std::vector<Gaussian> ReadGaussians(const yaml::Source& src, const YAML::Node& node,
+std::vector<Gaussian> ReadGaussians(const yaml::Source& src, const Document& node,
                                     const std::string& path) {
   if (!node.IsSequence() || node.size() == 0) {
     yaml::Fail(src, node, path, yaml::Describe(node),
@@ -129,7 +128,7 @@ std::vector<Gaussian> ReadGaussians(const yaml::Source& src, const YAML::Node& n
   std::vector<Gaussian> gaussians;
   for (std::size_t k = 0; k < node.size(); ++k) {
     const std::string at = path + "[" + std::to_string(k) + "]";
-    const YAML::Node item = node[k];
+    const Document& item = node[k];
     yaml::RequireMap(src, item, at, {"amplitude", "width", "center"});
     gaussians.push_back(
         {yaml::ReadNumber(src, Required(src, item, at, "amplitude"), Join(at, "amplitude")),
@@ -141,7 +140,7 @@ std::vector<Gaussian> ReadGaussians(const yaml::Source& src, const YAML::Node& n
 
 // The paper's active_length block into `model` (its Gaussians listed or fitted at load);
 // whether they were fitted.
-bool ReadActiveLength(const yaml::Source& src, const YAML::Node& active,
+bool ReadActiveLength(const yaml::Source& src, const Document& active,
                       const std::string& active_path, ModelSpec& model) {
   ModelParams& p = model.params;
   yaml::RequireMap(src, active, active_path, {"optimal_range", "sigma", "gaussians", "fit"});
@@ -175,7 +174,7 @@ bool ReadActiveLength(const yaml::Source& src, const YAML::Node& active,
     if (const std::optional<double> l_opt = model.fit->optimal_length;
         model.fit->target == FitTargetKind::kPreset && l_opt &&
         !(*l_opt >= range[0] && *l_opt <= range[1])) {
-      const YAML::Node at = active["fit"]["optimal_length"];
+      const Document& at = active["fit"]["optimal_length"];
       yaml::Fail(src, at, Join(fit_path, "optimal_length"), yaml::Describe(at),
                  "must lie within optimal_range [" + FormatNumber(range[0]) + ", " +
                      FormatNumber(range[1]) +
@@ -193,9 +192,9 @@ bool ReadActiveLength(const yaml::Source& src, const YAML::Node& active,
 
 }  // namespace
 
-ModelSpec ReadModelSpec(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+ModelSpec ReadModelSpec(const yaml::Source& src, const Document& node, const std::string& path) {
   if (node.IsMap() && node["family"]) {
-    const YAML::Node family = node["family"];
+    const Document& family = node["family"];
     const std::string text = yaml::ReadString(src, family, Join(path, "family"));
     const std::optional<CurveFamily> parsed = ParseCurveFamily(text);
     if (!parsed) {
@@ -215,7 +214,7 @@ ModelSpec ReadModelSpec(const yaml::Source& src, const YAML::Node& node, const s
   p.velocity = ReadVelocity(src, Required(src, node, path, "velocity"), Join(path, "velocity"));
 
   const std::string active_path = Join(path, "active_length");
-  const YAML::Node active = Required(src, node, path, "active_length");
+  const Document& active = Required(src, node, path, "active_length");
   const bool has_fit = ReadActiveLength(src, active, active_path, model);
 
   // the model's constructor validates everything, including that f_L can be normalised
@@ -224,7 +223,7 @@ ModelSpec ReadModelSpec(const yaml::Source& src, const YAML::Node& node, const s
   } catch (const ParameterError& error) {
     // components nobody wrote came from the fit: the message names the fit's target
     if (has_fit && error.path().rfind("active_length.gaussians", 0) == 0) {
-      const YAML::Node fit = active["fit"];
+      const Document& fit = active["fit"];
       const bool has_points = static_cast<bool>(fit["points"]);
       const std::string target_path = Join(active_path, has_points ? "fit.points" : "fit");
       yaml::Fail(
@@ -242,10 +241,9 @@ namespace {
 
 // A model file, or a scenario read whole: only `name` and `model` make a model file; any
 // other key of the scenario vocabulary makes it a scenario, which must then be valid.
-ModelSpec ReadModelFile(const yaml::Source& src, const YAML::Node& root) {
+ModelSpec ReadModelFile(const yaml::Source& src, const Document& root) {
   yaml::RequireMap(src, root, "", kScenarioKeys);
-  for (const auto& entry : root) {
-    const std::string& key = entry.first.Scalar();
+  for (const std::string& key : root.keys()) {
     if (key != "model" && key != "name")
       return ReadActuatorScenario(src, root).models.at("model").spec;
   }
@@ -259,17 +257,17 @@ ModelSpec LoadModelSpec(const std::string& path) {
 }
 
 ModelSpec LoadModelFit(const std::string& path) {
-  const YAML::Node root = yaml::LoadFile(path);
+  const Document& root = yaml::LoadFile(path);
   const yaml::Source src{path};
   ModelSpec model = ReadModelFile(src, root);
   if (model.params.family != CurveFamily::kPaper) {
-    const YAML::Node family = root["model"]["family"];
+    const Document& family = root["model"]["family"];
     yaml::Fail(src, family, "model.family", yaml::Describe(family),
                "has its own curves and no Gaussians to fit: `musclesim fit` fits the paper's "
                "model (family paper)");
   }
   if (!model.fit_result) {
-    const YAML::Node gaussians = root["model"]["active_length"]["gaussians"];
+    const Document& gaussians = root["model"]["active_length"]["gaussians"];
     yaml::Fail(src, gaussians, "model.active_length.gaussians",
                std::to_string(gaussians.size()) + " components",
                "explicit components leave nothing to fit: give model.active_length.fit instead "

@@ -15,11 +15,10 @@ inline constexpr std::initializer_list<const char*> kScenarioKeys = {
     "load", "time",  "solver",   "output",  "limits",     "sensitivities"};
 
 // A block whose `family` is not the paper's (model_family_yaml.cc).
-ModelSpec ReadFamilyModelSpec(const yaml::Source& source, const YAML::Node& node,
+ModelSpec ReadFamilyModelSpec(const yaml::Source& source, const Document& node,
                               const std::string& path, CurveFamily family);
 
 // `node` is the value of the `model` key, `path` its key path ("model").
-ModelSpec ReadModelSpec(const yaml::Source& source, const YAML::Node& node,
-                        const std::string& path);
+ModelSpec ReadModelSpec(const yaml::Source& source, const Document& node, const std::string& path);
 
 }  // namespace musclesim

@@ -41,7 +41,7 @@ std::string CoordinateNames(int dimensions, const char* prefix) {
 
 // A list of exactly `dimensions` numbers (2 or 3) at `node`, each within `range`; the
 // coordinates past them 0. `prefix` names them in messages (CoordinateNames).
-Coordinates ReadCoordinateList(const yaml::Source& src, const YAML::Node& node,
+Coordinates ReadCoordinateList(const yaml::Source& src, const Document& node,
                                const std::string& path, int dimensions, const InputRange& range,
                                const char* prefix) {
   const auto d = static_cast<std::size_t>(dimensions);
@@ -59,7 +59,7 @@ Coordinates ReadCoordinateList(const yaml::Source& src, const YAML::Node& node,
 
 // A node's point (its `fixed`, `position` or `velocity`): one number, x, on a line, a list
 // of `dimensions` numbers otherwise.
-Coordinates ReadPoint(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+Coordinates ReadPoint(const yaml::Source& src, const Document& node, const std::string& path,
                       int dimensions, const InputRange& range, const char* prefix) {
   if (dimensions > 1) return ReadCoordinateList(src, node, path, dimensions, range, prefix);
   if (node.IsSequence()) {
@@ -70,7 +70,7 @@ Coordinates ReadPoint(const yaml::Source& src, const YAML::Node& node, const std
   return {yaml::ReadNumberIn(src, node, path, range), 0.0, 0.0};
 }
 
-Waveform ReadMotion(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+Waveform ReadMotion(const yaml::Source& src, const Document& node, const std::string& path) {
   const std::string type = ReadType(src, node, path);
   WaveformKind kind{};
   ValidateAt(src, node, path, [&] { kind = ParseWaveformKind(type); });
@@ -83,7 +83,7 @@ Waveform ReadMotion(const yaml::Source& src, const YAML::Node& node, const std::
 }
 
 // A prescribed node's motion: one waveform on a line, a list of one per coordinate otherwise.
-void ReadPrescribed(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+void ReadPrescribed(const yaml::Source& src, const Document& node, const std::string& path,
                     int dimensions, Node& out) {
   if (dimensions == 1) {
     if (node.IsSequence()) {
@@ -108,7 +108,7 @@ void ReadPrescribed(const yaml::Source& src, const YAML::Node& node, const std::
   }
 }
 
-Node ReadNode(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+Node ReadNode(const yaml::Source& src, const Document& item, const std::string& path,
               int dimensions) {
   if (!item.IsMap()) {
     yaml::Fail(src, item, path, yaml::Describe(item),
@@ -151,7 +151,7 @@ Node ReadNode(const yaml::Source& src, const YAML::Node& item, const std::string
     }
     set_position(ReadPoint(src, Required(src, item, path, "position"), Join(path, "position"),
                            dimensions, kPositionRange, ""));
-    if (const YAML::Node velocity = item["velocity"]) {
+    if (const Document& velocity = item["velocity"]) {
       const Coordinates v =
           ReadPoint(src, velocity, Join(path, "velocity"), dimensions, kSpeedRange, "v");
       node.velocity = v[0];
@@ -162,9 +162,9 @@ Node ReadNode(const yaml::Source& src, const YAML::Node& item, const std::string
   return node;
 }
 
-std::shared_ptr<const TensionModel> FindModel(const yaml::Source& src, const YAML::Node& item,
+std::shared_ptr<const TensionModel> FindModel(const yaml::Source& src, const Document& item,
                                               const std::string& path, const NamedModels& models) {
-  const YAML::Node node = Required(src, item, path, "model");
+  const Document& node = Required(src, item, path, "model");
   const std::string name = yaml::ReadString(src, node, Join(path, "model"));
   const auto found = models.by_name.find(name);
   if (found == models.by_name.end()) {
@@ -179,7 +179,7 @@ std::shared_ptr<const TensionModel> FindModel(const yaml::Source& src, const YAM
 
 // The keys an element of `kind` may have: a misspelt one is an error before any is read.
 // `via` comes last, so that the messages of files on a line read as they always have.
-void RequireElementKeys(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+void RequireElementKeys(const yaml::Source& src, const Document& item, const std::string& path,
                         ElementKind kind) {
   switch (kind) {
     case ElementKind::kActuator:
@@ -202,14 +202,14 @@ void RequireElementKeys(const yaml::Source& src, const YAML::Node& item, const s
   }
 }
 
-double NumberIn(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+double NumberIn(const yaml::Source& src, const Document& item, const std::string& path,
                 const char* key, const InputRange& range) {
   return yaml::ReadNumberIn(src, Required(src, item, path, key), Join(path, key), range);
 }
 
 // An actuator's model and its input: a controller's (`driven` names it), or its own
 // activation or excitation.
-void ReadActuator(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+void ReadActuator(const yaml::Source& src, const Document& item, const std::string& path,
                   const NamedModels& models, const DrivenActuators& driven, double t_start,
                   double t_end, Element& e) {
   e.model = FindModel(src, item, path, models);
@@ -238,11 +238,11 @@ void ReadActuator(const yaml::Source& src, const YAML::Node& item, const std::st
 constexpr double kDeGrooteTendonStrain = 0.049;
 
 // A tendon's slack length and its stiffness: linear, exponential or De Groote's, exactly one.
-void ReadTendon(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+void ReadTendon(const yaml::Source& src, const Document& item, const std::string& path,
                 Element& e) {
   e.slack_length = NumberIn(src, item, path, "slack_length", kPositionRange);
-  const YAML::Node exponential = item["exponential"];
-  const YAML::Node degroote = item["degroote2016"];
+  const Document& exponential = item["exponential"];
+  const Document& degroote = item["degroote2016"];
   std::string laws;  // the laws given, "stiffness and exponential"
   for (const char* key : {"stiffness", "exponential", "degroote2016"}) {
     if (item[key]) laws += (laws.empty() ? "" : " and ") + std::string(key);
@@ -278,7 +278,7 @@ void ReadTendon(const yaml::Source& src, const YAML::Node& item, const std::stri
 
 // An element's `via` points: each a node's name (NetworkSystem resolves it) or a fixed
 // point, a list of `dimensions` coordinates.
-std::vector<ViaPoint> ReadVia(const yaml::Source& src, const YAML::Node& node,
+std::vector<ViaPoint> ReadVia(const yaml::Source& src, const Document& node,
                               const std::string& path, int dimensions) {
   if (dimensions == 1) {
     yaml::Fail(src, node, path, yaml::Describe(node),
@@ -293,7 +293,7 @@ std::vector<ViaPoint> ReadVia(const yaml::Source& src, const YAML::Node& node,
   }
   std::vector<ViaPoint> via;
   for (std::size_t k = 0; k < node.size(); ++k) {
-    const YAML::Node entry = node[k];
+    const Document& entry = node[k];
     const std::string at = Indexed(path, k);
     if (entry.IsSequence()) {
       via.push_back(
@@ -310,11 +310,11 @@ std::vector<ViaPoint> ReadVia(const yaml::Source& src, const YAML::Node& node,
 
 // A load's `direction` in the map `item`: on a line x (the key refused), otherwise a list of
 // `dimensions` numbers, not all zero (the system makes it a unit vector).
-Coordinates ReadDirection(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+Coordinates ReadDirection(const yaml::Source& src, const Document& item, const std::string& path,
                           int dimensions) {
   const std::string at = Join(path, "direction");
   if (dimensions == 1) {
-    if (const YAML::Node node = item["direction"]) {
+    if (const Document& node = item["direction"]) {
       yaml::Fail(src, node, at, yaml::Describe(node),
                  "needs dimensions: 2 or 3 at the top level (on a line a load acts along x)");
     }
@@ -327,7 +327,7 @@ Coordinates ReadDirection(const yaml::Source& src, const YAML::Node& item, const
                                     std::to_string(dimensions) + " numbers " +
                                     CoordinateNames(dimensions, "d")});
   }
-  const YAML::Node node = item["direction"];
+  const Document& node = item["direction"];
   const Coordinates d = ReadCoordinateList(src, node, at, dimensions, kDirectionRange, "d");
   // a length that underflows would make no unit vector either
   if (!(std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) > 0.0)) {
@@ -337,7 +337,7 @@ Coordinates ReadDirection(const yaml::Source& src, const YAML::Node& item, const
   return d;
 }
 
-Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::string& path,
+Element ReadElement(const yaml::Source& src, const Document& item, const std::string& path,
                     const NamedModels& models, const DrivenActuators& driven, int dimensions,
                     double t_start, double t_end) {
   const std::string type = ReadType(src, item, path);
@@ -349,7 +349,7 @@ Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::
   e.to = yaml::ReadString(src, Required(src, item, path, "to"), Join(path, "to"));
   // read before the kind's fields, kept after them: a controlled actuator is made afresh
   std::vector<ViaPoint> via;
-  if (const YAML::Node node = item["via"]) via = ReadVia(src, node, Join(path, "via"), dimensions);
+  if (const Document& node = item["via"]) via = ReadVia(src, node, Join(path, "via"), dimensions);
   switch (e.kind) {
     case ElementKind::kActuator:
       ReadActuator(src, item, path, models, driven, t_start, t_end, e);
@@ -370,15 +370,15 @@ Element ReadElement(const yaml::Source& src, const YAML::Node& item, const std::
 
 }  // namespace
 
-void RequireList(const yaml::Source& src, const YAML::Node& node, const char* list,
+void RequireList(const yaml::Source& src, const Document& node, const char* list,
                  const char* what) {
   if (!node.IsSequence()) {
     yaml::Fail(src, node, list, yaml::Describe(node), std::string("must be a list of ") + what);
   }
 }
 
-std::string ReadName(const yaml::Source& src, const YAML::Node& item, const std::string& path) {
-  const YAML::Node node = Required(src, item, path, "name");
+std::string ReadName(const yaml::Source& src, const Document& item, const std::string& path) {
+  const Document& node = Required(src, item, path, "name");
   const std::string name = yaml::ReadString(src, node, Join(path, "name"));
   bool plain = !name.empty();
   for (const char c : name) {
@@ -393,9 +393,9 @@ std::string ReadName(const yaml::Source& src, const YAML::Node& item, const std:
   return name;
 }
 
-Space ReadSpace(const yaml::Source& src, const YAML::Node& root) {
+Space ReadSpace(const yaml::Source& src, const Document& root) {
   Space space;
-  if (const YAML::Node node = root["dimensions"]) {
+  if (const Document& node = root["dimensions"]) {
     const int d = yaml::ReadInteger(src, node, "dimensions");
     if (d < 1 || d > 3) {
       yaml::Fail(src, node, "dimensions", yaml::Describe(node),
@@ -403,7 +403,7 @@ Space ReadSpace(const yaml::Source& src, const YAML::Node& root) {
     }
     space.dimensions = d;
   }
-  if (const YAML::Node node = root["gravity"]) {
+  if (const Document& node = root["gravity"]) {
     if (space.dimensions == 1) {
       yaml::Fail(src, node, "gravity", yaml::Describe(node),
                  "needs dimensions: 2 or 3 at the top level; on a line hang a weight with a "
@@ -415,7 +415,7 @@ Space ReadSpace(const yaml::Source& src, const YAML::Node& root) {
   return space;
 }
 
-std::vector<Node> ReadNodes(const yaml::Source& src, const YAML::Node& node, int dimensions) {
+std::vector<Node> ReadNodes(const yaml::Source& src, const Document& node, int dimensions) {
   RequireList(src, node, "nodes", "nodes, each a name and one of fixed, prescribed or mass");
   std::vector<Node> nodes;
   for (std::size_t i = 0; i < node.size(); ++i) {
@@ -424,7 +424,7 @@ std::vector<Node> ReadNodes(const yaml::Source& src, const YAML::Node& node, int
   return nodes;
 }
 
-std::vector<Element> ReadElements(const yaml::Source& src, const YAML::Node& node,
+std::vector<Element> ReadElements(const yaml::Source& src, const Document& node,
                                   const NamedModels& models, const DrivenActuators& driven,
                                   int dimensions, double t_start, double t_end) {
   RequireList(src, node, "elements", "elements, each {name, type, from, to, ...}");
@@ -436,13 +436,13 @@ std::vector<Element> ReadElements(const yaml::Source& src, const YAML::Node& nod
   return elements;
 }
 
-std::vector<NodeLoad> ReadNodeLoads(const yaml::Source& src, const YAML::Node& node, int dimensions,
+std::vector<NodeLoad> ReadNodeLoads(const yaml::Source& src, const Document& node, int dimensions,
                                     double t_start, double t_end) {
   RequireList(src, node, "loads", "loads, each {node, type, ...}");
   std::vector<NodeLoad> loads;
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string path = Item("loads", i);
-    const YAML::Node item = node[i];
+    const Document& item = node[i];
     NodeLoad load;
     load.load = ReadLoad(src, item, path, {"node", "direction"});
     load.node = yaml::ReadString(src, Required(src, item, path, "node"), Join(path, "node"));
@@ -455,7 +455,7 @@ std::vector<NodeLoad> ReadNodeLoads(const yaml::Source& src, const YAML::Node& n
   return loads;
 }
 
-std::vector<LengthLimit> ReadLengthLimits(const yaml::Source& src, const YAML::Node& node,
+std::vector<LengthLimit> ReadLengthLimits(const yaml::Source& src, const Document& node,
                                           const NetworkSystem& system, double t_start) {
   RequireList(src, node, "limits", "limits, each {element, min_length, max_length}");
   std::vector<double> y(static_cast<std::size_t>(system.state_size()));
@@ -463,10 +463,10 @@ std::vector<LengthLimit> ReadLengthLimits(const yaml::Source& src, const YAML::N
   std::vector<LengthLimit> limits;
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string path = Item("limits", i);
-    const YAML::Node item = node[i];
+    const Document& item = node[i];
     yaml::RequireMap(src, item, path, {"element", "min_length", "max_length"});
     LengthLimit limit;
-    const YAML::Node element = Required(src, item, path, "element");
+    const Document& element = Required(src, item, path, "element");
     limit.element = yaml::ReadString(src, element, Join(path, "element"));
     const int e = system.FindElement(limit.element);
     if (e < 0) {
@@ -482,7 +482,7 @@ std::vector<LengthLimit> ReadLengthLimits(const yaml::Source& src, const YAML::N
     const double length = system.Length(e, t_start, y.data());
     const std::string initial =
         limit.element + "'s initial length = " + FormatNumber(length) + " [m]";
-    if (const YAML::Node min = item["min_length"]) {
+    if (const Document& min = item["min_length"]) {
       const double value = yaml::ReadNumber(src, min, Join(path, "min_length"));
       if (!(value >= 0.0 && value < length)) {
         yaml::Fail(src, min, Join(path, "min_length"), yaml::Describe(min),
@@ -490,7 +490,7 @@ std::vector<LengthLimit> ReadLengthLimits(const yaml::Source& src, const YAML::N
       }
       limit.min_length = value;
     }
-    if (const YAML::Node max = item["max_length"]) {
+    if (const Document& max = item["max_length"]) {
       const double value = yaml::ReadNumber(src, max, Join(path, "max_length"));
       if (!(value > length && value <= kLengthRange.max)) {
         yaml::Fail(src, max, Join(path, "max_length"), yaml::Describe(max),

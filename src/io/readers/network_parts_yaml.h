@@ -24,42 +24,41 @@ struct NamedModels {
 };
 
 // Requires `node`, the value of the top-level key `list`, to be a list of `what`.
-void RequireList(const yaml::Source& src, const YAML::Node& node, const char* list,
-                 const char* what);
+void RequireList(const yaml::Source& src, const Document& node, const char* list, const char* what);
 
 // The `name` of the map `item` (key path `path`): a node's, element's or controller's name
 // heads CSV columns ("load.position"), so it must be a plain name, which keeps the header
 // one comma-separated line whose names split at their last dot.
-std::string ReadName(const yaml::Source& src, const YAML::Node& item, const std::string& path);
+std::string ReadName(const yaml::Source& src, const Document& item, const std::string& path);
 
 // The space of the top-level map `root` (docs/model.md 12): `dimensions`, 1, 2 or 3 (1 when
 // absent), and `gravity`, a list of `dimensions` numbers [m/s^2] (zero when absent; refused
 // on a line, where a hanging weight is a load of type mass).
-Space ReadSpace(const yaml::Source& src, const YAML::Node& root);
+Space ReadSpace(const yaml::Source& src, const Document& root);
 
 // `node` is the value of `nodes` (a list), in a space of `dimensions`: a coordinate (`fixed`,
 // `position`, `velocity`) is a number on a line and a list of `dimensions` numbers otherwise,
 // as a prescribed node's `prescribed` is one motion or a list of one per coordinate.
 // Prescribed motions must be continuous.
-std::vector<Node> ReadNodes(const yaml::Source& src, const YAML::Node& node, int dimensions);
+std::vector<Node> ReadNodes(const yaml::Source& src, const Document& node, int dimensions);
 
 // `node` is the value of `elements` (a list); an actuator's `model` must name one of `models`.
 // An actuator `driven` names is a controlled one (ReadControlledActuator). In 2 or 3
 // `dimensions` an element may pass through `via` points, each a node's name (resolved by
 // NetworkSystem) or a list of `dimensions` coordinates; on a line `via` is refused.
-std::vector<Element> ReadElements(const yaml::Source& src, const YAML::Node& node,
+std::vector<Element> ReadElements(const yaml::Source& src, const Document& node,
                                   const NamedModels& models, const DrivenActuators& driven,
                                   int dimensions, double t_start, double t_end);
 
 // `node` is the value of `loads` (a list of loads, each with the `node` it acts on). In 2 or
 // 3 `dimensions` each has a `direction`, a list of `dimensions` numbers, not all zero; on a
 // line `direction` is refused.
-std::vector<NodeLoad> ReadNodeLoads(const yaml::Source& src, const YAML::Node& node, int dimensions,
+std::vector<NodeLoad> ReadNodeLoads(const yaml::Source& src, const Document& node, int dimensions,
                                     double t_start, double t_end);
 
 // `node` is the value of `limits` (a list); each limit's element must be one of `system`'s
 // and its lengths must lie on either side of that element's length at t_start.
-std::vector<LengthLimit> ReadLengthLimits(const yaml::Source& src, const YAML::Node& node,
+std::vector<LengthLimit> ReadLengthLimits(const yaml::Source& src, const Document& node,
                                           const NetworkSystem& system, double t_start);
 
 }  // namespace musclesim

@@ -25,17 +25,17 @@ constexpr std::initializer_list<const char*> kNetworkKeys = {
     "name",   "models", "nodes",         "elements",    "loads",      "time",   "solver",
     "output", "limits", "sensitivities", "controllers", "dimensions", "gravity"};
 
-NamedModels ReadModels(const yaml::Source& src, const YAML::Node& node, Scenario& s) {
+NamedModels ReadModels(const yaml::Source& src, const Document& node, Scenario& s) {
   if (!node.IsMap()) {
     yaml::Fail(src, node, "models", yaml::Describe(node),
                "must be a map of named model blocks (name: {f_iso, passive, active_length, "
                "velocity})");
   }
   NamedModels models;
-  for (const auto& entry : node) {
-    const std::string name = entry.first.Scalar();  // CheckDocument: keys are plain names
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string& name = node.key(i);
     // the reader has validated the block and run its fit: AddModel builds it once more
-    ModelSpec spec = ReadModelSpec(src, entry.second, "models." + name);
+    ModelSpec spec = ReadModelSpec(src, node.items()[i], "models." + name);
     models.by_name[name] = s.AddModel(name, std::move(spec));
     models.names.push_back(name);
   }
@@ -43,10 +43,10 @@ NamedModels ReadModels(const yaml::Source& src, const YAML::Node& node, Scenario
 }
 
 // The actuators' names in the file's elements list, as written (the elements are read later).
-std::vector<std::string> ActuatorNames(const YAML::Node& elements) {
+std::vector<std::string> ActuatorNames(const Document& elements) {
   std::vector<std::string> names;
   if (!elements || !elements.IsSequence()) return names;
-  for (const YAML::Node& item : elements) {
+  for (const Document& item : elements) {
     if (!item.IsMap() || !item["type"] || !item["name"]) continue;
     if (!item["type"].IsScalar() || item["type"].Scalar() != "actuator") continue;
     if (item["name"].IsScalar()) names.push_back(item["name"].Scalar());
@@ -56,10 +56,10 @@ std::vector<std::string> ActuatorNames(const YAML::Node& elements) {
 
 // A controller driving no actuator of the network (a misspelt name) is told at its own key,
 // before the actuator it meant is blamed for lacking an input.
-void RequireDrivenActuators(const yaml::Source& src, const YAML::Node& controllers,
-                            const std::vector<Controller>& read, const YAML::Node& elements) {
+void RequireDrivenActuators(const yaml::Source& src, const Document& controllers,
+                            const std::vector<Controller>& read, const Document& elements) {
   const std::vector<std::string> actuators = ActuatorNames(elements);
-  const auto require = [&](const YAML::Node& at, const std::string& path, const std::string& name) {
+  const auto require = [&](const Document& at, const std::string& path, const std::string& name) {
     if (std::find(actuators.begin(), actuators.end(), name) != actuators.end()) return;
     yaml::Fail(src, at, path, name,
                actuators.empty()
@@ -67,10 +67,10 @@ void RequireDrivenActuators(const yaml::Source& src, const YAML::Node& controlle
                    : "must name an actuator of the network: " + CommaSeparated(actuators));
   };
   for (std::size_t k = 0; k < read.size(); ++k) {
-    const YAML::Node item = controllers[k];
+    const Document& item = controllers[k];
     const std::string path = "controllers[" + std::to_string(k) + "]";
     if (read[k].co_contraction) {
-      const YAML::Node pair = item["co_contraction"]["actuators"];
+      const Document& pair = item["co_contraction"]["actuators"];
       const std::string list = path + ".co_contraction.actuators";
       require(pair[0], list + "[0]", read[k].co_contraction->first);
       require(pair[1], list + "[1]", read[k].co_contraction->second);
@@ -82,7 +82,7 @@ void RequireDrivenActuators(const yaml::Source& src, const YAML::Node& controlle
 
 }  // namespace
 
-Scenario ReadNetworkScenario(const yaml::Source& src, const YAML::Node& root) {
+Scenario ReadNetworkScenario(const yaml::Source& src, const Document& root) {
   yaml::RequireMap(src, root, "", kNetworkKeys);
   Scenario s;
   s.source = src.file;
@@ -96,16 +96,16 @@ Scenario ReadNetworkScenario(const yaml::Source& src, const YAML::Node& root) {
   s.t_end = time.end;
 
   NamedModels models;
-  if (const YAML::Node node = root["models"]) models = ReadModels(src, node, s);
+  if (const Document& node = root["models"]) models = ReadModels(src, node, s);
   s.nodes = ReadNodes(src, Required(src, root, "", "nodes"), dimensions);
   // before the elements: an actuator a controller drives has no activation of its own
-  if (const YAML::Node node = root["controllers"]) {
+  if (const Document& node = root["controllers"]) {
     s.controllers = ReadControllers(src, node, dimensions, s.t_start, s.t_end);
     RequireDrivenActuators(src, node, s.controllers, root["elements"]);
   }
   s.elements = ReadElements(src, Required(src, root, "", "elements"), models,
                             DrivenActuatorsOf(s.controllers), dimensions, s.t_start, s.t_end);
-  if (const YAML::Node node = root["loads"]) {
+  if (const Document& node = root["loads"]) {
     s.loads = ReadNodeLoads(src, node, dimensions, s.t_start, s.t_end);
   }
 
@@ -119,7 +119,7 @@ Scenario ReadNetworkScenario(const yaml::Source& src, const YAML::Node& root) {
     system->CheckInitialState(s.t_start, y.data());
   });
 
-  if (const YAML::Node node = root["solver"]) {
+  if (const Document& node = root["solver"]) {
     s.solver = ReadSolver(src, node, "solver", s.t_start, s.t_end);
     const int states = system->state_size();
     if (s.solver.linear_solver == LinearSolverKind::kSmall && states > kSmallSystemMaxSize) {
@@ -129,15 +129,15 @@ Scenario ReadNetworkScenario(const yaml::Source& src, const YAML::Node& root) {
                      ": use auto, dense, band or sparse");
     }
   }
-  if (const YAML::Node node = root["output"]) {
+  if (const Document& node = root["output"]) {
     s.output = ReadOutput(src, node, "output", s.t_start, s.t_end);
   } else {
     s.output.interval = (s.t_end - s.t_start) / 1000.0;
   }
-  if (const YAML::Node node = root["limits"]) {
+  if (const Document& node = root["limits"]) {
     s.limits = ReadLengthLimits(src, node, *system, s.t_start);
   }
-  if (const YAML::Node node = root["sensitivities"]) {
+  if (const Document& node = root["sensitivities"]) {
     ReadSensitivities(src, node, s.sensitivities, s.sensitivities_at);
   }
   return s;

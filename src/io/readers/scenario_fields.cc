@@ -16,9 +16,9 @@ namespace {
 
 // A table's `points`: [t, value] pairs, t in the time range and the values in `values`
 // (any number when null); at most kMaxBreakpoints of them.
-std::vector<TablePoint> ReadTablePoints(const yaml::Source& src, const YAML::Node& node,
+std::vector<TablePoint> ReadTablePoints(const yaml::Source& src, const Document& node,
                                         const std::string& path, const InputRange* values) {
-  const YAML::Node points = Required(src, node, path, "points");
+  const Document& points = Required(src, node, path, "points");
   const std::string at = Join(path, "points");
   if (!points.IsSequence()) {
     yaml::Fail(src, points, at, yaml::Describe(points), "must be a list of [t, value] pairs");
@@ -44,13 +44,13 @@ std::vector<TablePoint> ReadTablePoints(const yaml::Source& src, const YAML::Nod
 
 }  // namespace
 
-Waveform ReadWaveform(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+Waveform ReadWaveform(const yaml::Source& src, const Document& node, const std::string& path,
                       WaveformKind kind, const InputRange* values,
                       std::initializer_list<const char*> extra) {
   Waveform w;
   w.kind = kind;
   const auto value = [&](const char* key) {
-    const YAML::Node item = Required(src, node, path, key);
+    const Document& item = Required(src, node, path, key);
     return values ? yaml::ReadNumberIn(src, item, Join(path, key), *values)
                   : yaml::ReadNumber(src, item, Join(path, key));
   };
@@ -103,12 +103,12 @@ Waveform ReadWaveform(const yaml::Source& src, const YAML::Node& node, const std
   return w;
 }
 
-std::string ReadType(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+std::string ReadType(const yaml::Source& src, const Document& node, const std::string& path) {
   if (!node.IsMap()) yaml::Fail(src, node, path, yaml::Describe(node), "must be a map with a type");
   return yaml::ReadString(src, Required(src, node, path, "type"), Join(path, "type"));
 }
 
-Waveform ReadActivation(const yaml::Source& src, const YAML::Node& node, const std::string& path) {
+Waveform ReadActivation(const yaml::Source& src, const Document& node, const std::string& path) {
   const std::string type = ReadType(src, node, path);
   WaveformKind kind{};
   ValidateAt(src, node, path, [&] { kind = ParseWaveformKind(type); });
@@ -117,11 +117,11 @@ Waveform ReadActivation(const yaml::Source& src, const YAML::Node& node, const s
   return w;
 }
 
-ActivationDynamics ReadActivationDynamics(const yaml::Source& src, const YAML::Node& node,
+ActivationDynamics ReadActivationDynamics(const yaml::Source& src, const Document& node,
                                           const std::string& path) {
   ActivationDynamics d;
   if (node.IsMap() && node["family"]) {
-    const YAML::Node family = node["family"];
+    const Document& family = node["family"];
     const std::string text = yaml::ReadString(src, family, Join(path, "family"));
     if (text == "degroote2016") {
       d.family = ActivationFamily::kDeGroote2016;
@@ -160,12 +160,12 @@ ActivationDynamics ReadActivationDynamics(const yaml::Source& src, const YAML::N
   return d;
 }
 
-ActuatorDrive ReadActuatorDrive(const yaml::Source& src, const YAML::Node& owner,
-                                const std::string& path, const YAML::Node& initial,
+ActuatorDrive ReadActuatorDrive(const yaml::Source& src, const Document& owner,
+                                const std::string& path, const Document& initial,
                                 const std::string& initial_path, double t_start, double t_end) {
-  const YAML::Node activation = owner["activation"];
-  const YAML::Node excitation = owner["excitation"];
-  const YAML::Node dynamics = owner["activation_dynamics"];
+  const Document& activation = owner["activation"];
+  const Document& excitation = owner["excitation"];
+  const Document& dynamics = owner["activation_dynamics"];
   const std::string activation_path = Join(path, "activation");
   const std::string excitation_path = Join(path, "excitation");
   const std::string dynamics_path = Join(path, "activation_dynamics");
@@ -217,7 +217,7 @@ ActuatorDrive ReadActuatorDrive(const yaml::Source& src, const YAML::Node& owner
   return drive;
 }
 
-Load ReadLoad(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+Load ReadLoad(const yaml::Source& src, const Document& node, const std::string& path,
               std::initializer_list<const char*> extra) {
   const std::string type = ReadType(src, node, path);
   Load load;
@@ -249,18 +249,18 @@ Load ReadLoad(const yaml::Source& src, const YAML::Node& node, const std::string
   return load;
 }
 
-void CheckPulses(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+void CheckPulses(const yaml::Source& src, const Document& node, const std::string& path,
                  const Waveform& w, double t_start, double t_end) {
   try {
     CheckPulseTrain(w, t_start, t_end);
   } catch (const ParameterError& error) {
     // the period or width at fault, as written
-    const YAML::Node at = node[error.path()];
+    const Document& at = node[error.path()];
     yaml::Fail(src, at, Join(path, error.path()), yaml::Describe(at), error.rule());
   }
 }
 
-TimeSpan ReadTime(const yaml::Source& src, const YAML::Node& time) {
+TimeSpan ReadTime(const yaml::Source& src, const Document& time) {
   yaml::RequireMap(src, time, "time", {"start", "end"});
   TimeSpan span;
   span.start =
@@ -277,7 +277,7 @@ TimeSpan ReadTime(const yaml::Source& src, const YAML::Node& time) {
   return span;
 }
 
-SolverOptions ReadSolver(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+SolverOptions ReadSolver(const yaml::Source& src, const Document& node, const std::string& path,
                          double t_start, double t_end) {
   SolverOptions o;
   yaml::RequireMap(
@@ -322,7 +322,7 @@ SolverOptions ReadSolver(const yaml::Source& src, const YAML::Node& node, const 
   return o;
 }
 
-OutputRequest ReadOutput(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+OutputRequest ReadOutput(const yaml::Source& src, const Document& node, const std::string& path,
                          double t_start, double t_end) {
   OutputRequest output;
   yaml::RequireMap(src, node, path, {"file", "interval", "phase_tolerance"});
@@ -334,7 +334,7 @@ OutputRequest ReadOutput(const yaml::Source& src, const YAML::Node& node, const 
   }
   const double span = t_end - t_start;
   output.interval = span / 1000.0;
-  if (const YAML::Node interval = node["interval"]) {
+  if (const Document& interval = node["interval"]) {
     if (interval.IsScalar() && interval.Scalar() == "steps") {
       output.every_step = true;
       output.interval = 0.0;
@@ -358,7 +358,7 @@ OutputRequest ReadOutput(const yaml::Source& src, const YAML::Node& node, const 
   return output;
 }
 
-void ReadSensitivities(const yaml::Source& src, const YAML::Node& node,
+void ReadSensitivities(const yaml::Source& src, const Document& node,
                        std::vector<std::string>& paths, std::vector<std::string>& where) {
   if (!node.IsSequence()) {
     yaml::Fail(src, node, "sensitivities", yaml::Describe(node),

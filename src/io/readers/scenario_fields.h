@@ -18,17 +18,17 @@
 namespace musclesim {
 
 // The `type` of a map that must have one (a waveform, a load, an element).
-std::string ReadType(const yaml::Source& src, const YAML::Node& node, const std::string& path);
+std::string ReadType(const yaml::Source& src, const Document& node, const std::string& path);
 
 // Reads one waveform of `kind`. `values` bounds its values (a force's, a position's); nullptr
 // leaves them to ValidateActivation, which keeps an activation within [0, 1]. `extra` are
 // more keys the map may hold besides the waveform's, read by the caller.
-Waveform ReadWaveform(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+Waveform ReadWaveform(const yaml::Source& src, const Document& node, const std::string& path,
                       WaveformKind kind, const InputRange* values,
                       std::initializer_list<const char*> extra = {});
 
 // An activation u(t): any waveform kind, validated within [0, 1].
-Waveform ReadActivation(const yaml::Source& src, const YAML::Node& node, const std::string& path);
+Waveform ReadActivation(const yaml::Source& src, const Document& node, const std::string& path);
 
 // How an actuator's activation is given: `activation` (u(t) itself) or `excitation` with
 // `activation_dynamics` (docs/model.md section 8), exactly one.
@@ -40,7 +40,7 @@ struct ActuatorDrive {
 // Reads an `activation_dynamics` map: its time constants, its `family` (thelen2003, the
 // default, degroote2016 or mujoco: docs/model.md 8.1) and that family's smoothing
 // (`smoothing`, `tausmooth`), each key checked against its range.
-ActivationDynamics ReadActivationDynamics(const yaml::Source& src, const YAML::Node& node,
+ActivationDynamics ReadActivationDynamics(const yaml::Source& src, const Document& node,
                                           const std::string& path);
 
 // Reads the drive of the map `owner` at key path `path` (the top level of a single-actuator
@@ -48,17 +48,17 @@ ActivationDynamics ReadActivationDynamics(const yaml::Source& src, const YAML::N
 // `activation_dynamics`; and the initial activation from `initial` at `initial_path` (an
 // undefined node when absent), allowed only with an excitation. Pulses are checked against
 // the run [t_start, t_end] (CheckPulses).
-ActuatorDrive ReadActuatorDrive(const yaml::Source& src, const YAML::Node& owner,
-                                const std::string& path, const YAML::Node& initial,
+ActuatorDrive ReadActuatorDrive(const yaml::Source& src, const Document& owner,
+                                const std::string& path, const Document& initial,
                                 const std::string& initial_path, double t_start, double t_end);
 
 // One load: a force waveform, a spring or a mass. `extra` as for ReadWaveform.
-Load ReadLoad(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+Load ReadLoad(const yaml::Source& src, const Document& node, const std::string& path,
               std::initializer_list<const char*> extra = {});
 
 // A pulse train's edges become stop times: its period and width must be resolved at the
 // run's times, and the run may hold at most kMaxBreakpoints edges. Nothing for other kinds.
-void CheckPulses(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+void CheckPulses(const yaml::Source& src, const Document& node, const std::string& path,
                  const Waveform& w, double t_start, double t_end);
 
 // The `time` block: start and end [s], the span at least kMinSpanRelative of the time scale.
@@ -66,20 +66,20 @@ struct TimeSpan {
   double start = 0.0;  // [s]
   double end = 1.0;    // [s], > start
 };
-TimeSpan ReadTime(const yaml::Source& src, const YAML::Node& time);
+TimeSpan ReadTime(const yaml::Source& src, const Document& time);
 
 // The `solver` block (`path` its key path) of a run over [t_start, t_end].
-SolverOptions ReadSolver(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+SolverOptions ReadSolver(const yaml::Source& src, const Document& node, const std::string& path,
                          double t_start, double t_end);
 
 // The `output` block (`path` its key path) of a run over [t_start, t_end]; the interval
 // defaults to a thousandth of the span.
-OutputRequest ReadOutput(const yaml::Source& src, const YAML::Node& node, const std::string& path,
+OutputRequest ReadOutput(const yaml::Source& src, const Document& node, const std::string& path,
                          double t_start, double t_end);
 
 // The `sensitivities` list of parameter paths (strings), and where each is (file:line:column).
 // Whether each names a parameter is checked when a run resolves it.
-void ReadSensitivities(const yaml::Source& src, const YAML::Node& node,
+void ReadSensitivities(const yaml::Source& src, const Document& node,
                        std::vector<std::string>& paths, std::vector<std::string>& where);
 
 }  // namespace musclesim

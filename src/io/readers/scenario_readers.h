@@ -3,8 +3,6 @@
 // a model file that is a scenario as one).
 #pragma once
 
-#include <yaml-cpp/yaml.h>
-
 #include "io/readers/yaml_fields.h"
 #include "musclesim/scenario/actuator_scenario.h"
 #include "musclesim/scenario/scenario.h"
@@ -13,11 +11,11 @@ namespace musclesim {
 
 // The single-actuator form of the top-level map `root`, as written (InputError naming
 // file:line:column, key path, value and rule).
-ActuatorScenarioSpec ReadActuatorScenarioSpec(const yaml::Source& source, const YAML::Node& root);
+ActuatorScenarioSpec ReadActuatorScenarioSpec(const yaml::Source& source, const Document& root);
 // The same, built into its network (docs/model.md 7.4).
-Scenario ReadActuatorScenario(const yaml::Source& source, const YAML::Node& root);
+Scenario ReadActuatorScenario(const yaml::Source& source, const Document& root);
 
 // The network form of the top-level map `root` (a `nodes:` key), validated as a whole.
-Scenario ReadNetworkScenario(const yaml::Source& source, const YAML::Node& root);
+Scenario ReadNetworkScenario(const yaml::Source& source, const Document& root);
 
 }  // namespace musclesim

@@ -3,7 +3,6 @@
 // is validated exactly as the file's own value would be.
 #include "musclesim/io/readers/scenario_yaml.h"
 
-#include "io/readers/document_yaml.h"
 #include "io/readers/scenario_readers.h"
 #include "io/readers/yaml_override.h"
 
@@ -11,11 +10,11 @@ namespace musclesim {
 
 namespace {
 
-ScenarioForm FormOf(const YAML::Node& root) {
+ScenarioForm FormOf(const Document& root) {
   return root.IsMap() && root["nodes"] ? ScenarioForm::kNetwork : ScenarioForm::kActuator;
 }
 
-Scenario Read(const yaml::Source& src, const YAML::Node& root) {
+Scenario Read(const yaml::Source& src, const Document& root) {
   return FormOf(root) == ScenarioForm::kNetwork ? ReadNetworkScenario(src, root)
                                                 : ReadActuatorScenario(src, root);
 }
@@ -23,7 +22,7 @@ Scenario Read(const yaml::Source& src, const YAML::Node& root) {
 }  // namespace
 
 struct ScenarioTemplate::Parsed {
-  YAML::Node root;
+  Document root;
 };
 
 ScenarioTemplate::ScenarioTemplate(const std::string& path)
@@ -48,31 +47,25 @@ bool ScenarioTemplate::has_sensitivities() const {
 Scenario ScenarioTemplate::Instantiate(const Overrides& overrides) const {
   const yaml::Source src{path_, overrides.label};
   if (overrides.texts.empty()) return Read(src, parsed_->root);
-  // overrides must not touch the template, so they go into a copy. yaml-cpp's Clone is fast
-  // but gives no node its file position; errors are rare, so a failing scenario is read
-  // again from its text parsed afresh, whose nodes keep their file:line:column for the
-  // message (and the overridden nodes, which have none, say the overrides' label)
-  try {
-    YAML::Node root = YAML::Clone(parsed_->root);
-    yaml::ApplyOverrides(root, overrides, path_);
-    return Read(src, root);
-  } catch (const InputError&) {
-    YAML::Node root = yaml::Parse(path_, text_);
-    yaml::ApplyOverrides(root, overrides, path_);
-    return Read(src, root);
-  }
+  // overrides must not touch the template, so they go into a copy, whose values keep their
+  // file positions (the overridden ones, which have none, say the overrides' label)
+  Document root = parsed_->root;
+  yaml::ApplyOverrides(root, overrides, path_);
+  return Read(src, root);
 }
 
 Scenario ReadScenario(const Document& document, const std::string& name,
                       const Overrides& overrides) {
-  YAML::Node root = ToYaml(document);
-  if (document.kind() == Document::Kind::kNull) throw InputError(name + ": the document is empty");
+  if (document.IsNull() || (document.IsMap() && document.size() == 0)) {
+    throw InputError(name + ": the document is empty");
+  }
+  Document root = document;
   yaml::ApplyOverrides(root, overrides, name);
   return Read(yaml::Source{name, name}, root);
 }
 
 ActuatorScenarioSpec LoadActuatorScenarioSpec(const std::string& path, const Overrides& overrides) {
-  YAML::Node root = yaml::LoadFile(path);
+  Document root = yaml::LoadFile(path);
   yaml::ApplyOverrides(root, overrides, path);
   if (FormOf(root) == ScenarioForm::kNetwork) {
     throw InputError(path + ": a network (it has nodes:), not the single-actuator form");
@@ -89,8 +82,7 @@ Scenario LoadScenario(const std::string& path, const Overrides& overrides) {
 
 Scenario LoadScenario(const std::string& path, const Overrides& overrides,
                       const std::string& name) {
-  // read once, so no clone is needed: the nodes not overridden keep their file positions
-  YAML::Node root = yaml::Parse(name, yaml::ReadText(path));
+  Document root = yaml::Parse(name, yaml::ReadText(path));
   yaml::ApplyOverrides(root, overrides, name);
   return Read(yaml::Source{name, overrides.label}, root);
 }

@@ -9,25 +9,30 @@
 
 #include "musclesim/core/key_path.h"
 #include "musclesim/io/readers/input_file.h"
+#include "io/readers/document_yaml.h"
 #include "io/readers/yaml_document_check.h"
 
 namespace musclesim::yaml {
 
-InputPlace Place(const Source& source, const YAML::Node& node) {
-  const YAML::Mark mark = node.Mark();
-  if (mark.is_null()) return {source.unplaced};  // an override's, or a document built in code
-  return {source.file, mark.line + 1, mark.column + 1};
+InputPlace Place(const Source& source, TextPosition position) {
+  // none: an override's value, or a document built in code
+  if (!position.known()) return {source.unplaced};
+  return {source.file, position.line + 1, position.column + 1};
 }
 
-std::string Location(const Source& source, const YAML::Node& node) {
+InputPlace Place(const Source& source, const Document& node) {
+  return Place(source, node.position());
+}
+
+std::string Location(const Source& source, const Document& node) {
   return PlaceText(Place(source, node));
 }
 
-std::string Describe(const YAML::Node& node) {
+std::string Describe(const Document& node) {
   if (!node.IsDefined() || node.IsNull()) return "~";
   if (node.IsScalar()) return node.Scalar();
   YAML::Emitter out;
-  out << YAML::Flow << node;
+  out << YAML::Flow << ToYaml(node);
   // a message is one line, and a long list is shown by its start
   std::string text = out.c_str();
   for (char& c : text) c = c == '\n' ? ' ' : c;
@@ -36,7 +41,7 @@ std::string Describe(const YAML::Node& node) {
   return text;
 }
 
-void Fail(const Source& source, const YAML::Node& node, const std::string& path,
+void Fail(const Source& source, const Document& node, const std::string& path,
           const std::string& value, const std::string& rule) {
   throw InputError(InputFault{Place(source, node), path, value, rule});
 }
@@ -45,17 +50,14 @@ std::string Join(const std::string& path, const std::string& key) {
   return path.empty() ? key : path + "." + key;
 }
 
-void RequireMap(const Source& source, const YAML::Node& node, const std::string& path,
+void RequireMap(const Source& source, const Document& node, const std::string& path,
                 std::initializer_list<const char*> allowed,
                 std::initializer_list<const char*> extra) {
   if (!node.IsMap()) {
     Fail(source, node, path, Describe(node), "must be a map of keys");
   }
-  for (const auto& entry : node) {
-    if (!entry.first.IsScalar()) {
-      Fail(source, entry.first, path, Describe(entry.first), "keys must be plain names");
-    }
-    const std::string key = entry.first.Scalar();
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string& key = node.key(i);
     bool known = false;
     std::string list;
     for (const char* name : allowed) {
@@ -67,15 +69,15 @@ void RequireMap(const Source& source, const YAML::Node& node, const std::string&
       list += ", " + std::string(name);
     }
     if (!known) {
-      throw InputError(InputFault{Place(source, entry.first), Join(path, key), std::nullopt,
-                                  "unknown key; allowed here: " + list});
+      throw InputError(InputFault{Place(source, node.key_position(i)), Join(path, key),
+                                  std::nullopt, "unknown key; allowed here: " + list});
     }
   }
 }
 
-YAML::Node Required(const Source& source, const YAML::Node& map, const std::string& path,
-                    const char* key) {
-  const YAML::Node node = map[key];
+const Document& Required(const Source& source, const Document& map, const std::string& path,
+                         const char* key) {
+  const Document& node = map[key];
   if (!node.IsDefined()) {
     throw InputError(
         InputFault{Place(source, map), Join(path, key), std::nullopt, "missing required key"});
@@ -83,32 +85,33 @@ YAML::Node Required(const Source& source, const YAML::Node& map, const std::stri
   return node;
 }
 
-double ReadNumber(const Source& source, const YAML::Node& node, const std::string& path) {
+double ReadNumber(const Source& source, const Document& node, const std::string& path) {
   double value = 0.0;
-  if (!node.IsScalar() || !YAML::convert<double>::decode(node, value)) {
+  if (node.kind() == Document::Kind::kNumber) return node.number();
+  if (node.kind() != Document::Kind::kText || !DecodeNumber(node.text(), value)) {
     Fail(source, node, path, Describe(node), "must be a number");
   }
   return value;
 }
 
-double ReadOptionalNumber(const Source& source, const YAML::Node& map, const std::string& path,
+double ReadOptionalNumber(const Source& source, const Document& map, const std::string& path,
                           const char* key, double fallback) {
   return map[key] ? ReadNumber(source, map[key], Join(path, key)) : fallback;
 }
 
-double ReadNumberIn(const Source& source, const YAML::Node& node, const std::string& path,
+double ReadNumberIn(const Source& source, const Document& node, const std::string& path,
                     const InputRange& range) {
   const double value = ReadNumber(source, node, path);
   if (!range.Contains(value)) Fail(source, node, path, Describe(node), range.Rule());
   return value;
 }
 
-double ReadOptionalNumberIn(const Source& source, const YAML::Node& map, const std::string& path,
+double ReadOptionalNumberIn(const Source& source, const Document& map, const std::string& path,
                             const char* key, const InputRange& range, double fallback) {
   return map[key] ? ReadNumberIn(source, map[key], Join(path, key), range) : fallback;
 }
 
-int ReadInteger(const Source& source, const YAML::Node& node, const std::string& path) {
+int ReadInteger(const Source& source, const Document& node, const std::string& path) {
   const double value = ReadNumber(source, node, path);
   if (!(std::abs(value) <= 1e9) || value != std::floor(value)) {
     Fail(source, node, path, Describe(node), "must be an integer");
@@ -116,21 +119,22 @@ int ReadInteger(const Source& source, const YAML::Node& node, const std::string&
   return static_cast<int>(value);
 }
 
-bool ReadBool(const Source& source, const YAML::Node& node, const std::string& path) {
+bool ReadBool(const Source& source, const Document& node, const std::string& path) {
   bool value = false;
-  if (!node.IsScalar() || !YAML::convert<bool>::decode(node, value)) {
+  if (node.kind() == Document::Kind::kBool) return node.bool_value();
+  if (node.kind() != Document::Kind::kText || !DecodeBool(node.text(), value)) {
     Fail(source, node, path, Describe(node), "must be true or false");
   }
   return value;
 }
 
-std::string ReadString(const Source& source, const YAML::Node& node, const std::string& path) {
+std::string ReadString(const Source& source, const Document& node, const std::string& path) {
   if (!node.IsScalar()) Fail(source, node, path, Describe(node), "must be a text value");
   return node.Scalar();
 }
 
-std::vector<double> ReadNumbers(const Source& source, const YAML::Node& node,
-                                const std::string& path, std::size_t exact_length) {
+std::vector<double> ReadNumbers(const Source& source, const Document& node, const std::string& path,
+                                std::size_t exact_length) {
   if (!node.IsSequence()) Fail(source, node, path, Describe(node), "must be a list of numbers");
   if (exact_length != 0 && node.size() != exact_length) {
     Fail(source, node, path, Describe(node),
@@ -146,8 +150,8 @@ std::vector<double> ReadNumbers(const Source& source, const YAML::Node& node,
 namespace {
 
 // The node at steps[i..] below `node`, or the deepest one that exists on the way.
-// Recursive on const nodes: assigning yaml-cpp nodes would write into the document.
-YAML::Node Deepest(const YAML::Node& node, const std::vector<KeyPathStep>& steps, std::size_t i) {
+const Document& Deepest(const Document& node, const std::vector<KeyPathStep>& steps,
+                        std::size_t i) {
   if (i == steps.size()) return node;
   const KeyPathStep& step = steps[i];
   if (step.key.empty()) {
@@ -160,7 +164,7 @@ YAML::Node Deepest(const YAML::Node& node, const std::vector<KeyPathStep>& steps
 
 }  // namespace
 
-void Relocate(const Source& source, const YAML::Node& block, const std::string& block_path,
+void Relocate(const Source& source, const Document& block, const std::string& block_path,
               const ParameterError& error) {
   // the library writes these paths well formed; a malformed one still points at the block
   const auto steps = SplitKeyPath(error.path());
@@ -178,7 +182,7 @@ InputPlace MarkPlace(const std::string& file, const YAML::Mark& mark) {
 
 std::string ReadText(const std::string& path) { return ReadInputFile(path, "a YAML file"); }
 
-YAML::Node Parse(const std::string& path, const std::string& text) {
+Document Parse(const std::string& path, const std::string& text) {
   try {
     YAML::Node root = YAML::Load(text);
     // an empty document has no position; say so here rather than at an unplaced node
@@ -186,7 +190,7 @@ YAML::Node Parse(const std::string& path, const std::string& text) {
       throw InputError(InputFault{InputPlace{path}, "", std::nullopt, "the file is empty"});
     }
     CheckDocument(path, text);
-    return root;
+    return FromYaml(root, path);
   } catch (const YAML::DeepRecursion& e) {
     throw InputError(InputFault{MarkPlace(path, e.mark), "", std::nullopt, TooDeep(e.depth())});
   } catch (const YAML::ParserException& e) {
@@ -195,6 +199,6 @@ YAML::Node Parse(const std::string& path, const std::string& text) {
   }
 }
 
-YAML::Node LoadFile(const std::string& path) { return Parse(path, ReadText(path)); }
+Document LoadFile(const std::string& path) { return Parse(path, ReadText(path)); }
 
 }  // namespace musclesim::yaml

@@ -16,13 +16,13 @@ bool IsOptionalBlock(const std::string& key) {
 
 }  // namespace
 
-void ApplyOverrides(YAML::Node root, const Overrides& overrides, const std::string& file) {
+void ApplyOverrides(Document& root, const Overrides& overrides, const std::string& file) {
   for (const std::string& text : overrides.texts) {
     ApplyOverride(root, text, file, overrides.label);
   }
 }
 
-void ApplyOverride(YAML::Node root, const std::string& text, const std::string& file,
+void ApplyOverride(Document& root, const std::string& text, const std::string& file,
                    const std::string& label) {
   // messages are headed "LABEL KEY=VALUE: "; the fault names the key and value given
   const std::string head = label + " " + text + ": ";
@@ -48,7 +48,7 @@ void ApplyOverride(YAML::Node root, const std::string& text, const std::string& 
          "joined by dots, list indices in brackets from 0 to 999999999)");
   }
   const std::vector<KeyPathStep>& steps = *split;
-  YAML::Node node = root;  // handles share the document: assignment below edits it
+  Document* node = &root;
   std::string walked;
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const KeyPathStep& step = steps[i];
@@ -56,78 +56,47 @@ void ApplyOverride(YAML::Node root, const std::string& text, const std::string& 
     const std::string here = step.key.empty()
                                  ? walked + "[" + std::to_string(step.index) + "]"
                                  : (walked.empty() ? step.key : walked + "." + step.key);
-    YAML::Node next;
+    Document* next = nullptr;
     if (step.key.empty()) {
-      if (node.IsMap() && walked == "load" && step.index == 0) {
-        next.reset(node);  // a single load written as a map is load[0]
-      } else if (node.IsMap()) {
+      if (node->IsMap() && walked == "load" && step.index == 0) {
+        next = node;  // a single load written as a map is load[0]
+      } else if (node->IsMap()) {
         const std::string map = walked.empty() ? "the file's top level" : walked;
         fail(map + " is a map, not a list, in " + file +
              ": an index on it has no meaning (name a key instead)");
-      } else if (!node.IsSequence() || step.index >= node.size()) {
+      } else if (!node->IsSequence() || step.index >= node->size()) {
         fail(here + " does not exist in " + file);
       } else {
-        next.reset(node[step.index]);
-      }
-    } else {
-      if (!node.IsMap()) {
-        fail((walked.empty() ? "the file" : walked) + " is not a map in " + file);
-      }
-      if (!node[step.key] && !last) {
-        if (!IsOptionalBlock(step.key)) {
-          fail(here + " does not exist in " + file);
-        }
-        node[step.key] = YAML::Node(YAML::NodeType::Map);  // filled by the steps below
+        next = &node->Item(step.index);
       }
       if (last) {
-        if (node[step.key] && !node[step.key].IsScalar() && !node[step.key].IsNull()) {
+        if (!next->IsScalar()) {
           fail(here + " is a map or list; an override replaces single values only");
         }
-        node[step.key] = YAML::Node(value);
+        *next = Document::Text(value);
         return;
       }
-      next.reset(node[step.key]);
-    }
-    if (last) {
-      if (!next.IsScalar()) {
-        fail(here + " is a map or list; an override replaces single values only");
+    } else {
+      if (!node->IsMap()) {
+        fail((walked.empty() ? "the file" : walked) + " is not a map in " + file);
       }
-      next = YAML::Node(value);
-      return;
+      next = node->Find(step.key);
+      if (last) {
+        if (next != nullptr && !next->IsScalar() && !next->IsNull()) {
+          fail(here + " is a map or list; an override replaces single values only");
+        }
+        node->Set(step.key, Document::Text(value));
+        return;
+      }
+      if (next == nullptr) {
+        if (!IsOptionalBlock(step.key)) fail(here + " does not exist in " + file);
+        node->Set(step.key, Document::Map({}));  // filled by the steps below
+        next = node->Find(step.key);
+      }
     }
-    node.reset(next);
+    node = next;
     walked = here;
   }
-}
-
-std::optional<std::string> ScalarAt(const YAML::Node& root, const std::string& path) {
-  const auto split = SplitKeyPath(path);
-  if (!split || split->empty()) return std::nullopt;
-  YAML::Node node;
-  node.reset(root);
-  std::string walked;
-  for (const KeyPathStep& step : *split) {
-    YAML::Node next;
-    if (step.key.empty()) {
-      if (node.IsMap() && walked == "load" && step.index == 0) {
-        next.reset(node);
-      } else if (node.IsSequence() && step.index < node.size()) {
-        const YAML::Node& list = node;
-        next.reset(list[step.index]);
-      } else {
-        return std::nullopt;
-      }
-      walked = "[]";  // only whether the parent is the top-level `load` matters
-    } else {
-      const YAML::Node& map = node;  // const: a missing key is not created
-      if (!map.IsMap() || !map[step.key]) return std::nullopt;
-      next.reset(map[step.key]);
-      walked = walked.empty() ? step.key : "." + step.key;
-    }
-    node.reset(next);
-  }
-  if (!node.IsScalar()) return std::nullopt;
-  return node.Scalar();
 }
 
 }  // namespace musclesim::yaml

@@ -3,9 +3,6 @@
 // is validated exactly as the file's own value would be. Used by both forms of a scenario file.
 #pragma once
 
-#include <yaml-cpp/yaml.h>
-
-#include <optional>
 #include <string>
 
 #include "musclesim/io/readers/document.h"
@@ -17,13 +14,9 @@ namespace musclesim::yaml {
 // (model.velocity.eccentric) is created when the file leaves it out. Throws InputError when
 // the text is not KEY=VALUE, the path is malformed, leads nowhere, or names a map or list.
 // `label` starts each message ("--set", "axis": the caller's word for overrides).
-void ApplyOverride(YAML::Node root, const std::string& text, const std::string& file,
+void ApplyOverride(Document& root, const std::string& text, const std::string& file,
                    const std::string& label);
 // Each of `overrides`, in order.
-void ApplyOverrides(YAML::Node root, const Overrides& overrides, const std::string& file);
-
-// The scalar at `path` in `root` (as ApplyOverride walks it, a single load map being
-// load[0]), or nullopt when the path is malformed, leads nowhere or names a map or list.
-std::optional<std::string> ScalarAt(const YAML::Node& root, const std::string& path);
+void ApplyOverrides(Document& root, const Overrides& overrides, const std::string& file);
 
 }  // namespace musclesim::yaml

@@ -20,18 +20,27 @@ std::string Emit(const YAML::Node& root, const std::vector<std::string>& header)
 
 }  // namespace
 
+Document RewrittenDocument(const std::string& path, const Overrides& overrides) {
+  Document root = yaml::Parse(path, yaml::ReadText(path));
+  yaml::ApplyOverrides(root, overrides, path);
+  return root;
+}
+
+Document RewrittenDocument(const Document& document, const std::string& name,
+                           const Overrides& overrides) {
+  Document root = document;
+  yaml::ApplyOverrides(root, overrides, name);
+  return root;
+}
+
 std::string RewriteScenario(const std::string& path, const Overrides& overrides,
                             const std::vector<std::string>& header) {
-  YAML::Node root = yaml::Parse(path, yaml::ReadText(path));
-  yaml::ApplyOverrides(root, overrides, path);
-  return Emit(root, header);
+  return Emit(ToYaml(RewrittenDocument(path, overrides)), header);
 }
 
 std::string RewriteScenario(const Document& document, const std::string& name,
                             const Overrides& overrides, const std::vector<std::string>& header) {
-  YAML::Node root = ToYaml(document);
-  yaml::ApplyOverrides(root, overrides, name);
-  return Emit(root, header);
+  return Emit(ToYaml(RewrittenDocument(document, name, overrides)), header);
 }
 
 }  // namespace musclesim

@@ -22,4 +22,10 @@ std::string RewriteScenario(const std::string& path, const Overrides& overrides,
 std::string RewriteScenario(const Document& document, const std::string& name,
                             const Overrides& overrides, const std::vector<std::string>& header);
 
+// The documents the two write: the scenario's document with `overrides` applied, in memory,
+// for a caller that goes on editing it (the optimum's control tables, say).
+Document RewrittenDocument(const std::string& path, const Overrides& overrides);
+Document RewrittenDocument(const Document& document, const std::string& name,
+                           const Overrides& overrides);
+
 }  // namespace musclesim
