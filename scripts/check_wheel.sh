@@ -16,7 +16,15 @@ trap 'rm -rf "$work"' EXIT
 "$python" -m venv "$work/venv"
 venv="$work/venv/bin"
 "$venv/python" -m pip install -q --upgrade pip
-"$venv/python" -m pip wheel -q --no-deps -w "$work/dist" .
+# in build-wheel/, beside build/ and with its warnings flags, so that ccache (where installed)
+# serves the objects the two builds share rather than compiling them again
+settings=(-C build-dir=build-wheel -C cmake.define.MUSCLESIM_WARNINGS_AS_ERRORS=ON)
+if command -v ccache >/dev/null; then
+  export CCACHE_BASEDIR=$PWD
+  settings+=(-C cmake.define.CMAKE_C_COMPILER_LAUNCHER=ccache
+             -C cmake.define.CMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
+"$venv/python" -m pip wheel -q --no-deps "${settings[@]}" -w "$work/dist" .
 wheel=$(echo "$work"/dist/musclesim-*.whl)
 # the package with its extras, the test tools, and NumPy, pinned: the versions it is tested with
 "$venv/python" -m pip install -q "$wheel[plot,pandas,test]" "numpy==2.4.6" "matplotlib==3.11.2" \

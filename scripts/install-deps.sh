@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
+  ccache                # compiler cache: the wheel's build (scripts/check_wheel.sh) reuses build/'s objects
   libsundials-dev       # CVODES: the stiff integrator and its forward sensitivities
   libsuitesparse-dev    # KLU, the sparse direct solver behind linear_solver: sparse
   libeigen3-dev         # linear algebra of the Gaussian fit

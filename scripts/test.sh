@@ -30,7 +30,7 @@ esac
 
 jobs=$(nproc)
 "$cmake" -S . -B "$dir" -DMUSCLESIM_WARNINGS_AS_ERRORS=ON -DMUSCLESIM_BUILD_TESTS=ON \
-  -DPYTHON_EXECUTABLE="$python" "${options[@]}"
+  -DPYTHON_EXECUTABLE="$python" "${launcher[@]}" "${options[@]}"
 "$cmake" --build "$dir" -j"$jobs"
 "$ctest" --test-dir "$dir" --output-on-failure -j"$jobs"
 # the installed package, used from outside as find_package(musclesim) (Release build only)

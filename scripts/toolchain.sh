@@ -8,3 +8,10 @@
 cmake=${MUSCLESIM_CMAKE:-/usr/bin/cmake}
 ctest=${MUSCLESIM_CTEST:-/usr/bin/ctest}
 python=${MUSCLESIM_PYTHON:-/usr/bin/python3}
+# ccache in front of the compilers, with paths taken relative to the repository, so that
+# two build directories of the same flags (build/ and the wheel's build-wheel/) share objects
+launcher=()
+if command -v ccache >/dev/null; then
+  export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
+  launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi

@@ -164,6 +164,43 @@ TEST(IdentifyActive, IsometricTensionWithinItsStandardError) {
   }
 }
 
+// The spread of each estimate over many noisy replicates of one curve, against the standard
+// error each fit reports (a linearisation at its optimum). At 0.1 N of noise on a 20 N peak
+// the fit is close to linear, so the two agree up to the replicates' own scatter: 400 fits
+// estimate a standard deviation to about 1/sqrt(2 x 400) = 3.5%, and 20% leaves room for that
+// and for the linearisation (the reported errors are within 6% of the spread here).
+TEST(IdentifyActive, EachGaussiansStandardErrorMatchesTheSpreadOverReplicates) {
+  constexpr int kReplicates = 400;
+  constexpr double kNoise = 0.1;  // N
+  // per estimate (f_iso, then a, b, d of each Gaussian ordered by centre): sums of the value,
+  // its square and the reported standard error
+  std::vector<double> sum(7, 0.0), squares(7, 0.0), reported(7, 0.0);
+  for (int r = 0; r < kReplicates; ++r) {
+    const ActiveIdentification fit =
+        IdentifyActive(ActiveData(kNoise, 1000 + static_cast<std::uint64_t>(r)), 2, true);
+    ASSERT_EQ(fit.centers.size(), 2u);
+    const std::size_t first = fit.centers[0].value < fit.centers[1].value ? 0 : 1;
+    std::vector<Estimate> estimates = {fit.f_iso};
+    for (std::size_t k : {first, 1 - first}) {
+      estimates.push_back(fit.amplitudes[k]);
+      estimates.push_back(fit.precisions[k]);
+      estimates.push_back(fit.centers[k]);
+    }
+    for (std::size_t q = 0; q < estimates.size(); ++q) {
+      sum[q] += estimates[q].value;
+      squares[q] += estimates[q].value * estimates[q].value;
+      reported[q] += estimates[q].standard_error;
+    }
+  }
+  const char* names[] = {"f_iso", "a_1", "b_1", "d_1", "a_2", "b_2", "d_2"};
+  for (std::size_t q = 0; q < sum.size(); ++q) {
+    const double n = kReplicates;
+    const double mean = sum[q] / n;
+    const double spread = std::sqrt((squares[q] - n * mean * mean) / (n - 1.0));
+    EXPECT_NEAR(reported[q] / n, spread, 0.2 * spread) << names[q];
+  }
+}
+
 TEST(ReferenceFits, SplineAndPolynomialsReproduceWhatTheyCan) {
   std::vector<DataPoint> line, cubic;
   for (int i = 0; i < 9; ++i) {

@@ -21,35 +21,26 @@ Scenario Read(const yaml::Source& src, const Document& root) {
 
 }  // namespace
 
-struct ScenarioTemplate::Parsed {
-  Document root;
-};
-
 ScenarioTemplate::ScenarioTemplate(const std::string& path)
-    : ScenarioTemplate(path, yaml::ReadText(path)) {}
+    : ScenarioTemplate(path, std::make_shared<const Document>(yaml::LoadFile(path))) {}
 
-ScenarioTemplate::ScenarioTemplate(std::string path, std::string text)
-    : path_(std::move(path)),
-      text_(std::move(text)),
-      parsed_(std::make_unique<Parsed>(Parsed{yaml::Parse(path_, text_)})),
-      form_(FormOf(parsed_->root)) {}
-
-ScenarioTemplate::~ScenarioTemplate() = default;
+ScenarioTemplate::ScenarioTemplate(std::string path, std::shared_ptr<const Document> document)
+    : path_(std::move(path)), document_(std::move(document)), form_(FormOf(*document_)) {}
 
 std::unique_ptr<ScenarioTemplate> ScenarioTemplate::Copy() const {
-  return std::unique_ptr<ScenarioTemplate>(new ScenarioTemplate(path_, text_));
+  return std::unique_ptr<ScenarioTemplate>(new ScenarioTemplate(path_, document_));
 }
 
 bool ScenarioTemplate::has_sensitivities() const {
-  return parsed_->root.IsMap() && parsed_->root["sensitivities"].IsDefined();
+  return document_->IsMap() && (*document_)["sensitivities"].IsDefined();
 }
 
 Scenario ScenarioTemplate::Instantiate(const Overrides& overrides) const {
   const yaml::Source src{path_, overrides.label};
-  if (overrides.texts.empty()) return Read(src, parsed_->root);
+  if (overrides.texts.empty()) return Read(src, *document_);
   // overrides must not touch the template, so they go into a copy, whose values keep their
   // file positions (the overridden ones, which have none, say the overrides' label)
-  Document root = parsed_->root;
+  Document root = *document_;
   yaml::ApplyOverrides(root, overrides, path_);
   return Read(src, root);
 }
@@ -59,9 +50,11 @@ Scenario ReadScenario(const Document& document, const std::string& name,
   if (document.IsNull() || (document.IsMap() && document.size() == 0)) {
     throw InputError(name + ": the document is empty");
   }
+  const yaml::Source src{name, name};
+  if (overrides.texts.empty()) return Read(src, document);
   Document root = document;
   yaml::ApplyOverrides(root, overrides, name);
-  return Read(yaml::Source{name, name}, root);
+  return Read(src, root);
 }
 
 ActuatorScenarioSpec LoadActuatorScenarioSpec(const std::string& path, const Overrides& overrides) {

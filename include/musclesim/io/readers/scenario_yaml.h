@@ -34,17 +34,16 @@ Scenario ReadScenario(const Document& document, const std::string& name,
                       const Overrides& overrides = {});
 
 // A scenario file read and parsed once, from which many scenarios are made by overrides (a
-// sweep's points whose axes are not numbers). Not shared between threads: each thread makes
-// its own Copy().
+// sweep's points whose axes are not numbers). Its document is never changed once parsed, so
+// threads may instantiate from one template, and a Copy() shares it.
 class ScenarioTemplate {
  public:
   // Throws InputError if the file cannot be read or is not YAML.
   explicit ScenarioTemplate(const std::string& path);
-  ~ScenarioTemplate();
   ScenarioTemplate(const ScenarioTemplate&) = delete;
   ScenarioTemplate& operator=(const ScenarioTemplate&) = delete;
 
-  // An independent template parsed from the same text.
+  // A template of the same document, shared rather than parsed again.
   std::unique_ptr<ScenarioTemplate> Copy() const;
 
   // The scenario with `overrides` applied, validated as LoadScenario does.
@@ -56,11 +55,9 @@ class ScenarioTemplate {
   bool has_sensitivities() const;
 
  private:
-  ScenarioTemplate(std::string path, std::string text);
-  struct Parsed;  // the document, kept out of this header (yaml-cpp is private to io)
+  ScenarioTemplate(std::string path, std::shared_ptr<const Document> document);
   std::string path_;
-  std::string text_;
-  std::unique_ptr<Parsed> parsed_;
+  std::shared_ptr<const Document> document_;
   ScenarioForm form_ = ScenarioForm::kActuator;
 };
 
