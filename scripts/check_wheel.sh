@@ -16,15 +16,22 @@ trap 'rm -rf "$work"' EXIT
 "$python" -m venv "$work/venv"
 venv="$work/venv/bin"
 "$venv/python" -m pip install -q --upgrade pip
-# in build-wheel/, beside build/ and with its warnings flags, so that ccache (where installed)
-# serves the objects the two builds share rather than compiling them again
-settings=(-C build-dir=build-wheel -C cmake.define.MUSCLESIM_WARNINGS_AS_ERRORS=ON)
+# in build-wheel/, beside build/, with its generator (make compiles from each folder of the
+# build tree, ninja from its top: the relative paths ccache compares would differ), its
+# compilers by the names CMake gives build/ (ccache tells c++ from g++) and its warnings
+# flags, so that ccache (where installed) serves the objects the two builds share rather
+# than compiling them again
+settings=(-C build-dir=build-wheel -C cmake.define.MUSCLESIM_WARNINGS_AS_ERRORS=ON
+          -C cmake.define.CMAKE_C_COMPILER=cc -C cmake.define.CMAKE_CXX_COMPILER=c++)
+export CMAKE_GENERATOR="Unix Makefiles" CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-$(nproc)}
 if command -v ccache >/dev/null; then
   export CCACHE_BASEDIR=$PWD
   settings+=(-C cmake.define.CMAKE_C_COMPILER_LAUNCHER=ccache
              -C cmake.define.CMAKE_CXX_COMPILER_LAUNCHER=ccache)
 fi
-"$venv/python" -m pip wheel -q --no-deps "${settings[@]}" -w "$work/dist" .
+# Debian's CMake first on the PATH, as scripts/test.sh uses: scikit-build-core then takes it
+# (rather than fetching one), and the compile lines match build/'s to the argument
+PATH="/usr/bin:$PATH" "$venv/python" -m pip wheel -q --no-deps "${settings[@]}" -w "$work/dist" .
 wheel=$(echo "$work"/dist/musclesim-*.whl)
 # the package with its extras, the test tools, and NumPy, pinned: the versions it is tested with
 "$venv/python" -m pip install -q "$wheel[plot,pandas,test]" "numpy==2.4.6" "matplotlib==3.11.2" \
