@@ -30,6 +30,7 @@ verbs:
   optimize the activations that reach a problem's final values with the least effort
            (multiple shooting, IPOPT); write the optimum as a scenario, a summary and a CSV
   import   write a scenario for each muscle of an OpenSim (.osim) or MuJoCo (MJCF) model
+  reference print a part's keys with their units, defaults, ranges and meaning (Markdown)
 
 exit codes: 0 success, 1 other failure, 2 invalid input, 3 solver failure,
             130 sweep interrupted
@@ -61,6 +62,7 @@ int main(int argc, char** argv) {
     if (verb == "fit") return cli::FitCommand(argc, argv);
     if (verb == "optimize") return cli::OptimizeCommand(argc, argv);
     if (verb == "import") return cli::ImportCommand(argc, argv);
+    if (verb == "reference") return cli::ReferenceCommand(argc, argv);
     std::cerr << "musclesim: unknown verb '" << PrintableText(verb) << "' (see musclesim --help)\n";
     return kExitInvalidInput;
   } catch (const cli::UsageError& e) {

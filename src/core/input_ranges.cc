@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/core/part_fields.h"
 
 namespace musclesim {
 
@@ -11,11 +12,15 @@ double TimeScale(double t_start, double t_end) {
   return std::max({1.0, std::abs(t_start), std::abs(t_end)});
 }
 
-std::string InputRange::Rule() const {
-  const std::string bounds = min_exclusive
-                                 ? "must be > " + FormatNumber(min) + " and <= " + FormatNumber(max)
-                                 : "must be from " + FormatNumber(min) + " to " + FormatNumber(max);
-  return bounds + " [" + unit + "]: " + why;
+std::string InputRange::Bounds() const {
+  return min_exclusive ? "> " + FormatNumber(min) + " and <= " + FormatNumber(max)
+                       : "from " + FormatNumber(min) + " to " + FormatNumber(max);
+}
+
+std::string InputRange::Rule() const { return "must be " + Bounds() + " [" + unit + "]: " + why; }
+
+void RequireInRange(std::string_view key, double value, const InputRange& range) {
+  Require(range.Contains(value), key, value, range.Rule());
 }
 
 }  // namespace musclesim

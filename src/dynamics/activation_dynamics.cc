@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/dynamics/activation_families.h"
 
 namespace musclesim {
 
@@ -18,23 +19,7 @@ const char* ActivationFamilyName(ActivationFamily family) {
 }
 
 void Validate(const ActivationDynamics& d) {
-  const std::string rule = "must be from " + FormatNumber(kMinActivationTimeConstant) + " to " +
-                           FormatNumber(kMaxActivationTimeConstant) +
-                           " [s]: muscles take 5 to 60 ms; shorter is in effect instantaneous "
-                           "(give the activation itself), longer is no muscle-like actuator";
-  for (const auto& [key, value] : {std::pair{"tau_activation", d.tau_activation},
-                                   std::pair{"tau_deactivation", d.tau_deactivation}}) {
-    Require(value >= kMinActivationTimeConstant && value <= kMaxActivationTimeConstant, key, value,
-            rule);
-  }
-  if (d.family == ActivationFamily::kDeGroote2016) {
-    Require(kActivationSmoothingRange.Contains(d.smoothing), "smoothing", d.smoothing,
-            kActivationSmoothingRange.Rule());
-  }
-  if (d.family == ActivationFamily::kMujoco) {
-    Require(kTauSmoothRange.Contains(d.tausmooth), "tausmooth", d.tausmooth,
-            kTauSmoothRange.Rule());
-  }
+  ValidateFields(*VariantOf(ActivationFamilies(), d), d);
 }
 
 void Validate(const ExcitationInput& input) {

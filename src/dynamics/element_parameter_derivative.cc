@@ -5,17 +5,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include "musclesim/dynamics/element_laws.h"
 #include "musclesim/dynamics/parameter_derivative.h"
 
 namespace musclesim {
 
 namespace {
 
-enum class ElementParameter { kStiffness, kRestLength, kSlackLength, kScale, kRate, kDamping };
-
 class ElementDerivative final : public ParameterDerivative {
  public:
-  ElementDerivative(const NetworkSystem& system, int element, ElementParameter parameter)
+  ElementDerivative(const NetworkSystem& system, int element, ElementPartial parameter)
       : system_(system), element_(element), parameter_(parameter) {}
 
   void RightHandSide(double t, const double* y, double* dfdp, NetworkScratch&) const override {
@@ -35,26 +34,26 @@ class ElementDerivative final : public ParameterDerivative {
   double Partial(double t, const double* y) const {
     const Element& e = system_.elements()[static_cast<std::size_t>(element_)];
     const double l = system_.Length(element_, t, y);
-    if (parameter_ == ElementParameter::kDamping) return system_.LengtheningRate(element_, t, y);
+    if (parameter_ == ElementPartial::kDamping) return system_.LengtheningRate(element_, t, y);
     if (e.kind == ElementKind::kSpring) {
-      return parameter_ == ElementParameter::kStiffness ? l - e.rest_length : -e.stiffness;
+      return parameter_ == ElementPartial::kStiffness ? l - e.rest_length : -e.stiffness;
     }
     const double stretch = l - e.slack_length;
     if (stretch <= 0.0 && !e.pushes_below_slack) return 0.0;  // slack: no tension at all
     if (!e.exponential()) {
-      return parameter_ == ElementParameter::kStiffness ? stretch : -e.stiffness;
+      return parameter_ == ElementPartial::kStiffness ? stretch : -e.stiffness;
     }
     const double grow = std::exp(e.alpha * stretch);
     switch (parameter_) {
-      case ElementParameter::kScale: return grow - 1.0;
-      case ElementParameter::kRate: return e.k * stretch * grow;
+      case ElementPartial::kScale: return grow - 1.0;
+      case ElementPartial::kRate: return e.k * stretch * grow;
       default: return -e.k * e.alpha * grow;  // the slack length
     }
   }
 
   const NetworkSystem& system_;
   int element_;
-  ElementParameter parameter_;
+  ElementPartial parameter_;
 };
 
 }  // namespace
@@ -62,28 +61,13 @@ class ElementDerivative final : public ParameterDerivative {
 std::unique_ptr<ParameterDerivative> ElementParameterDerivative(const NetworkSystem& system,
                                                                 int element,
                                                                 const std::string& path) {
-  const Element& e = system.elements().at(static_cast<std::size_t>(element));
-  const auto make = [&](ElementParameter p) {
-    return std::make_unique<ElementDerivative>(system, element, p);
-  };
-  switch (e.kind) {
-    case ElementKind::kSpring:
-      if (path == "stiffness") return make(ElementParameter::kStiffness);
-      if (path == "rest_length") return make(ElementParameter::kRestLength);
-      break;
-    case ElementKind::kTendon:
-      // De Groote's tendon: its rate follows its slack length (alpha = ln 6 / (strain l_s)),
-      // which the closed form at fixed alpha leaves out: a difference quotient
-      if (e.pushes_below_slack) break;
-      if (path == "slack_length") return make(ElementParameter::kSlackLength);
-      if (!e.exponential() && path == "stiffness") return make(ElementParameter::kStiffness);
-      if (e.exponential() && path == "exponential.k") return make(ElementParameter::kScale);
-      if (e.exponential() && path == "exponential.alpha") return make(ElementParameter::kRate);
-      break;
-    case ElementKind::kDamper:
-      if (path == "damping") return make(ElementParameter::kDamping);
-      break;
-    case ElementKind::kActuator: break;
+  // the field's tag, if its law gives it one (De Groote's tendon gives none: its rate
+  // follows its slack length, which the closed form at fixed alpha leaves out)
+  const ElementLaw* law = LawOf(system.elements().at(static_cast<std::size_t>(element)));
+  const ElementField* field = law == nullptr ? nullptr : FindField(*law, path);
+  if (field != nullptr && field->partial >= 0) {
+    return std::make_unique<ElementDerivative>(system, element,
+                                               static_cast<ElementPartial>(field->partial));
   }
   return nullptr;
 }

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/dynamics/load_kinds.h"
 
 namespace musclesim {
 
@@ -12,15 +13,7 @@ void Validate(const Load& load) {
   switch (load.kind) {
     case LoadKind::kForce: Validate(load.force); break;
     case LoadKind::kSpring:
-      Require(std::isfinite(load.stiffness) && load.stiffness >= 0.0, "stiffness", load.stiffness,
-              "must be finite and >= 0 [N/m]");
-      Require(std::isfinite(load.anchor), "anchor", load.anchor, "must be finite [m]");
-      break;
-    case LoadKind::kMass:
-      Require(std::isfinite(load.mass) && load.mass > 0.0, "mass", load.mass,
-              "must be finite and > 0 [kg]");
-      Require(std::isfinite(load.gravity), "gravity", load.gravity, "must be finite [m/s^2]");
-      break;
+    case LoadKind::kMass: ValidateFields(*VariantOf(LoadVariants(), load), load); break;
   }
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/dynamics/element_laws.h"
 #include "musclesim/core/input_ranges.h"
 #include "musclesim/core/enum_names.h"
 
@@ -180,6 +181,31 @@ Node Node::Free(std::string name, double mass, double position, double velocity)
   return Validated(std::move(node));
 }
 
+namespace {
+
+// A passive element's numbers against its law's ranges (dynamics/element_laws.h). De Groote's
+// tendon is checked as the exponential it is stored as: its strain, recomputed from alpha,
+// may round past the bound it was given at (Element::DeGrooteTendon checks what it is given).
+void ValidateLaw(const Element& e) {
+  // a k that is not > 0 reads as a linear tendon: it must be 0 then
+  if (e.kind == ElementKind::kTendon && !e.exponential() && e.k != 0.0) {
+    RequireInRange("exponential.k", e.k, kPositiveForceRange);
+  }
+  const ElementLaw* law = LawOf(e);
+  if (law == nullptr) {
+    throw ParameterError("pushes_below_slack", "true", "needs an exponential tendon (De Groote's)");
+  }
+  if (e.pushes_below_slack) {
+    RequireInRange("slack_length", e.slack_length, kDeGrooteSlackRange);
+    Element stored = e;
+    stored.pushes_below_slack = false;
+    law = LawOf(stored);
+  }
+  ValidateFields(*law, e);
+}
+
+}  // namespace
+
 void Validate(const Element& e) {
   switch (e.kind) {
     case ElementKind::kActuator:
@@ -196,32 +222,8 @@ void Validate(const Element& e) {
       }
       break;
     case ElementKind::kSpring:
-      Require(std::isfinite(e.stiffness) && e.stiffness >= 0.0, "stiffness", e.stiffness,
-              "must be finite and >= 0 [N/m]");
-      Require(std::isfinite(e.rest_length), "rest_length", e.rest_length, "must be finite [m]");
-      break;
     case ElementKind::kTendon:
-      Require(std::isfinite(e.slack_length) && e.slack_length >= 0.0, "slack_length",
-              e.slack_length, "must be finite and >= 0 [m]");
-      if (e.exponential()) {
-        Require(std::isfinite(e.k) && e.k > 0.0 && e.k <= kPositiveForceRange.max, "exponential.k",
-                e.k, "must be > 0 and at most 1e9 [N]: " + std::string(kPositiveForceRange.why));
-        Require(std::isfinite(e.alpha) && e.alpha > 0.0, "exponential.alpha", e.alpha,
-                "must be finite and > 0 [1/m]");
-      } else {
-        Require(e.k == 0.0, "exponential.k", e.k, "must be finite and > 0 [N]");
-        if (e.pushes_below_slack) {
-          throw ParameterError("pushes_below_slack", "true",
-                               "needs an exponential tendon (De Groote's)");
-        }
-        Require(std::isfinite(e.stiffness) && e.stiffness >= 0.0, "stiffness", e.stiffness,
-                "must be finite and >= 0 [N/m]");
-      }
-      break;
-    case ElementKind::kDamper:
-      Require(std::isfinite(e.damping) && e.damping >= 0.0, "damping", e.damping,
-              "must be finite and >= 0 [N s/m]");
-      break;
+    case ElementKind::kDamper: ValidateLaw(e); break;
   }
   for (std::size_t v = 0; v < e.via.size(); ++v) {
     if (!e.via[v].node.empty()) continue;
@@ -300,15 +302,10 @@ Element Element::LinearTendon(std::string name, std::string from, std::string to
 Element Element::DeGrooteTendon(std::string name, std::string from, std::string to,
                                 double slack_length, double max_isometric_force,
                                 double strain_at_one_norm_force) {
-  Require(std::isfinite(max_isometric_force) && max_isometric_force > 0.0 &&
-              max_isometric_force <= kPositiveForceRange.max,
-          "degroote2016.max_isometric_force", max_isometric_force,
-          "must be > 0 and at most 1e9 [N]: " + std::string(kPositiveForceRange.why));
-  Require(std::isfinite(strain_at_one_norm_force) && strain_at_one_norm_force > 0.0,
-          "degroote2016.strain_at_one_norm_force", strain_at_one_norm_force,
-          "must be finite and > 0 [-]");
-  Require(std::isfinite(slack_length) && slack_length > 0.0, "slack_length", slack_length,
-          "must be finite and > 0 [m]: De Groote's tendon is normalised by it");
+  RequireInRange("degroote2016.max_isometric_force", max_isometric_force, kPositiveForceRange);
+  RequireInRange("degroote2016.strain_at_one_norm_force", strain_at_one_norm_force,
+                 kTendonStrainRange);
+  RequireInRange("slack_length", slack_length, kDeGrooteSlackRange);
   Element e = Make(std::move(name), ElementKind::kTendon, std::move(from), std::move(to));
   e.slack_length = slack_length;
   // f_T = c1 exp(kT (l~ - c2)) - c3 with c1 = c3 = 0.2, c2 = 1: kT = ln((1 + c3) / c1) / strain
@@ -325,7 +322,7 @@ Element Element::ExponentialTendon(std::string name, std::string from, std::stri
   e.k = k;
   e.alpha = alpha;
   // k = 0 would read as a linear tendon: name the rule here
-  Require(std::isfinite(k) && k > 0.0, "exponential.k", k, "must be finite and > 0 [N]");
+  RequireInRange("exponential.k", k, kPositiveForceRange);
   return Validated(std::move(e));
 }
 

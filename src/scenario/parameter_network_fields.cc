@@ -10,6 +10,9 @@
 
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
+#include "musclesim/dynamics/activation_families.h"
+#include "musclesim/dynamics/element_laws.h"
+#include "musclesim/dynamics/load_kinds.h"
 #include "musclesim/scenario/actuator_scenario.h"
 
 namespace musclesim {
@@ -107,18 +110,16 @@ void ParameterResolver::Element(std::size_t i) {
           i + 2, [at](Scenario& s) -> Waveform& { return at(s).excitation->signal; }, nullptr);
     }
     if (key == "activation_dynamics" && element.excitation) {
-      End(i + 3);
-      const std::string& leaf = Key(i + 2);
-      if (leaf != "tau_activation" && leaf != "tau_deactivation") {
-        Fail("names no time constant (tau_activation, tau_deactivation)");
+      const ActivationFamilyVariant& family =
+          *VariantOf(ActivationFamilies(), element.excitation->dynamics);
+      const auto* field = FindField(family, PathFrom(i + 2));
+      if (field == nullptr) {
+        Fail("names no number of " + std::string(family.name) + "'s activation dynamics (" +
+             FieldKeys(family) + ")");
       }
-      const bool rise = leaf == "tau_activation";
-      return Number(
-          [at, rise](Scenario& s) -> double& {
-            ActivationDynamics& d = at(s).excitation->dynamics;
-            return rise ? d.tau_activation : d.tau_deactivation;
-          },
-          &kActivationTimeConstantRange);
+      return Field(*field, Locate<ActivationDynamics>([at](Scenario& s) -> ActivationDynamics& {
+                     return at(s).excitation->dynamics;
+                   }));
     }
     if (key == "initial_activation" && element.excitation) {
       End(i + 2);
@@ -132,39 +133,18 @@ void ParameterResolver::Element(std::size_t i) {
     }
     Fail("names no number of this actuator");
   }
-  // a spring's, tendon's or damper's own coefficient: its sensitivity has a closed form
+  // a spring's, tendon's or damper's field, as its law describes it (element_laws.h); the
+  // element and path let the sensitivities find its closed-form derivative
+  const ElementLaw* law = LawOf(element);
+  const std::string field_path = PathFrom(i + 1);
+  const ElementField* field = law == nullptr ? nullptr : FindField(*law, field_path);
+  if (law == nullptr) Fail("names no number of this element");
+  if (field == nullptr) {
+    Fail("names no number of this " + std::string(law->name) + " (" + FieldKeys(*law) + ")");
+  }
   p_.element_ = static_cast<int>(e);
-  std::vector<KeyPathStep> rest(steps_.begin() + static_cast<long>(i) + 1, steps_.end());
-  p_.element_path_ = Canonical(rest);
-  const auto coefficient = [&](double musclesim::Element::*member, const InputRange* range) {
-    Number([at, member](Scenario& s) -> double& { return at(s).*member; }, range);
-  };
-  if (element.pushes_below_slack) return DeGrooteTendon(i, e);
-  if (key == "exponential" && element.exponential()) {
-    End(i + 3);
-    if (Key(i + 2) == "k") return coefficient(&musclesim::Element::k, &kPositiveForceRange);
-    if (Key(i + 2) == "alpha") return coefficient(&musclesim::Element::alpha, nullptr);
-  }
-  End(i + 2);
-  switch (element.kind) {
-    case ElementKind::kSpring:
-      if (key == "stiffness") return coefficient(&musclesim::Element::stiffness, &kStiffnessRange);
-      if (key == "rest_length")
-        return coefficient(&musclesim::Element::rest_length, &kPositionRange);
-      break;
-    case ElementKind::kTendon:
-      if (key == "slack_length")
-        return coefficient(&musclesim::Element::slack_length, &kPositionRange);
-      if (key == "stiffness" && !element.exponential()) {
-        return coefficient(&musclesim::Element::stiffness, &kStiffnessRange);
-      }
-      break;
-    case ElementKind::kDamper:
-      if (key == "damping") return coefficient(&musclesim::Element::damping, &kDampingRange);
-      break;
-    case ElementKind::kActuator: break;
-  }
-  Fail("names no number of this " + std::string(ToString(element.kind)));
+  p_.element_path_ = field_path;
+  Field(*field, at);
 }
 
 void ParameterResolver::Via(std::size_t i, std::size_t e) {
@@ -180,52 +160,8 @@ void ParameterResolver::Via(std::size_t i, std::size_t e) {
          &kPositionRange);
 }
 
-// De Groote's tendon's slack length: > 0, the law is normalised by it.
-constexpr InputRange kDeGrooteSlackRange{
-    0.0, kPositionRange.max, "m", "De Groote's tendon is normalised by its slack length", true};
-
-void ParameterResolver::DeGrooteTendon(std::size_t i, std::size_t e) {
-  // its YAML keys, each setting what the law holds (k = 0.2 F0, alpha = ln 6 / (strain l_s)):
-  // its slack length keeps the strain, as a scenario read with it would
-  const std::string& key = Key(i + 1);
-  const auto number = [&](std::function<double(const musclesim::Element&)> get,
-                          std::function<void(musclesim::Element&, double)> set,
-                          const InputRange& range) {
-    p_.get_ = [e, get](const Scenario& s) { return get(s.elements[e]); };
-    p_.set_ = [e, set](Scenario& s, double v) { set(s.elements[e], v); };
-    p_.range_ = range;
-    p_.bounded_ = true;
-  };
-  if (key == "slack_length") {
-    End(i + 2);
-    return number([](const musclesim::Element& x) { return x.slack_length; },
-                  [](musclesim::Element& x, double v) {
-                    x.alpha *= x.slack_length / v;
-                    x.slack_length = v;
-                  },
-                  kDeGrooteSlackRange);
-  }
-  if (key == "degroote2016") {
-    End(i + 3);
-    if (Key(i + 2) == "max_isometric_force") {
-      return number([](const musclesim::Element& x) { return x.k / 0.2; },
-                    [](musclesim::Element& x, double v) { x.k = 0.2 * v; }, kPositiveForceRange);
-    }
-    if (Key(i + 2) == "strain_at_one_norm_force") {
-      return number(
-          [](const musclesim::Element& x) { return std::log(6.0) / (x.alpha * x.slack_length); },
-          [](musclesim::Element& x, double v) { x.alpha = std::log(6.0) / (v * x.slack_length); },
-          kTendonStrainRange);
-    }
-  }
-  Fail(
-      "names no number of this De Groote tendon (slack_length, "
-      "degroote2016.max_isometric_force, degroote2016.strain_at_one_norm_force)");
-}
-
 void ParameterResolver::Load(std::size_t i) {
   const std::size_t k = Index(i, scenario_.loads.size(), "loads");
-  const std::string& key = Key(i + 1);
   const musclesim::Load& load = scenario_.loads[k].load;
   const Locate<musclesim::Load> at = [k](Scenario& s) -> musclesim::Load& {
     return s.loads[k].load;
@@ -234,18 +170,12 @@ void ParameterResolver::Load(std::size_t i) {
     return WaveformField(
         i + 1, [at](Scenario& s) -> Waveform& { return at(s).force; }, &kForceRange);
   }
-  End(i + 2);
-  const auto field = [&](double musclesim::Load::*member, const InputRange& range) {
-    Number([at, member](Scenario& s) -> double& { return at(s).*member; }, &range);
-  };
-  if (load.kind == LoadKind::kSpring) {
-    if (key == "stiffness") return field(&musclesim::Load::stiffness, kStiffnessRange);
-    if (key == "anchor") return field(&musclesim::Load::anchor, kPositionRange);
-  } else {
-    if (key == "mass") return field(&musclesim::Load::mass, kMassRange);
-    if (key == "gravity") return field(&musclesim::Load::gravity, kGravityRange);
+  const LoadVariant& variant = *VariantOf(LoadVariants(), load);
+  const NumberField<musclesim::Load>* field = FindField(variant, PathFrom(i + 1));
+  if (field == nullptr) {
+    Fail("names no number of this " + std::string(variant.name) + " (" + FieldKeys(variant) + ")");
   }
-  Fail("names no number of this load");
+  Field(*field, at);
 }
 
 void ParameterResolver::Controller(std::size_t i) {

@@ -13,6 +13,7 @@
 #include "musclesim/core/errors.h"
 #include "musclesim/core/input_ranges.h"
 #include "musclesim/core/key_path.h"
+#include "musclesim/core/part_fields.h"
 #include "musclesim/scenario/parameter.h"
 #include "musclesim/scenario/scenario.h"
 
@@ -53,6 +54,10 @@ class ParameterResolver {
     }
     return steps_[i].index;
   }
+  // The steps from i on, written back the one way: "exponential.k".
+  std::string PathFrom(std::size_t i) const {
+    return Canonical(std::vector<KeyPathStep>(steps_.begin() + static_cast<long>(i), steps_.end()));
+  }
   void End(std::size_t i) const {
     if (i != steps_.size()) Fail("names a block, not one number");
   }
@@ -67,8 +72,16 @@ class ParameterResolver {
     }
   }
 
+  // A described field (core/part_fields.h) of the part at `at`, with its range.
+  template <typename Part>
+  void Field(const NumberField<Part>& field, Locate<Part> at) {
+    p_.get_ = [at, get = field.get](const Scenario& s) { return get(at(const_cast<Scenario&>(s))); };
+    p_.set_ = [at, set = field.set](Scenario& s, double v) { set(at(s), v); };
+    p_.range_ = field.range;
+    p_.bounded_ = true;
+  }
+
   void Top();
-  void DeGrooteTendon(std::size_t i, std::size_t e);
   void Model(std::size_t i);
   void ModelField(std::size_t i, bool fitted);
   // A key of a model block of another family than the paper's (docs/model.md 14.1).

@@ -93,12 +93,13 @@ TEST(Loads, FactoriesFillTheirKindAndFields) {
 TEST(Loads, FactoriesRejectEachRule) {
   using testing::Rejection;
   EXPECT_THAT(Rejection([] { Load::Spring(-1.0, 0.1); }),
-              HasSubstr("stiffness = -1: must be finite and >= 0 [N/m]"));
+              HasSubstr("stiffness = -1: must be from 0 to 1e+12 [N/m]"));
   EXPECT_THAT(Rejection([] { Load::Spring(10.0, INFINITY); }),
-              HasSubstr("anchor = inf: must be finite [m]"));
+              HasSubstr("anchor = inf: must be from -1000 to 1000 [m]"));
   EXPECT_THAT(Rejection([] { Load::Mass(0.0); }),
-              HasSubstr("mass = 0: must be finite and > 0 [kg]"));
-  EXPECT_THAT(Rejection([] { Load::Mass(1.0, NAN); }), HasSubstr("gravity = nan: must be finite"));
+              HasSubstr("mass = 0: must be from 1e-09 to 1e+09 [kg]"));
+  EXPECT_THAT(Rejection([] { Load::Mass(1.0, NAN); }),
+              HasSubstr("gravity = nan: must be from -1000 to 1000 [m/s^2]"));
   EXPECT_THAT(Rejection([] { Load::Constant(NAN); }), HasSubstr("value = nan: must be finite"));
   EXPECT_EQ(Rejection([] { Load::Spring(0.0, 0.1); }), "accepted");  // a slack spring is allowed
 }

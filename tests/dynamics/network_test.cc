@@ -139,14 +139,15 @@ TEST(Network, NonFiniteCauseNamesTheElementItsTensionAndTheTime) {
 }
 
 TEST(Network, NonFiniteCauseNamesANodeWhoseFiniteForcesOverflowOverItsMass) {
-  // 1e300 N/m stretched 10 m is 1e301 N, finite; over 1e-10 kg it is not
-  const NetworkSystem system({Node::Fixed("wall", 0.0), Node::Free("light", 1e-10, 10.1)},
-                             {Element::Spring("spring", "wall", "light", 1e300, 0.1)}, {});
+  // 1e12 N/m (the stiffest a spring may be) stretched 10 m is 1e13 N, finite; over 1e-300 kg
+  // it is not
+  const NetworkSystem system({Node::Fixed("wall", 0.0), Node::Free("light", 1e-300, 10.1)},
+                             {Element::Spring("spring", "wall", "light", 1e12, 0.1)}, {});
   const double y[2] = {10.1, 0.0};
   const std::string cause = system.NonFiniteCause(0.5, y);
   EXPECT_EQ(cause,
             "node light's acceleration is -inf m/s^2: the forces on it, each finite, over "
-            "its mass of 1e-10 kg overflow at t = 0.5 s")
+            "its mass of 1e-300 kg overflow at t = 0.5 s")
       << cause;
 }
 

@@ -24,6 +24,8 @@ struct InputRange {
   }
   // "must be from -1e+09 to 1e+09 [s]: <why>" or "must be > 0 and <= 1000 [m]: <why>"
   std::string Rule() const;
+  // The bounds alone: "from -1e+09 to 1e+09", "> 0 and <= 1000".
+  std::string Bounds() const;
 };
 
 // Times [s]: start and end of the run, waveform times.
@@ -49,6 +51,17 @@ inline constexpr InputRange kLengthRange{
 inline constexpr InputRange kPositionRange{
     -1e3, 1e3, "m",
     "a kilometre is beyond any actuator, and keeps stiffness times length within range"};
+
+// A tendon's slack length [m]: from 0 (taut from the start), and De Groote's tendon's, > 0
+// (its law is normalised by it).
+inline constexpr InputRange kSlackLengthRange{
+    0.0, 1e3, "m", "a slack length is a length, and a kilometre is beyond any actuator"};
+inline constexpr InputRange kDeGrooteSlackRange{
+    0.0, 1e3, "m", "De Groote's tendon is normalised by its slack length", true};
+
+// An exponential tendon's rate alpha [1/m]: its tension grows e-fold over 1/alpha.
+inline constexpr InputRange kTendonRateRange{
+    0.0, 1e9, "1/m", "a tension growing e-fold over less than a nanometre is no tendon's", true};
 
 // Speeds [m/s]: the initial lengthening rate, the phase tolerance.
 inline constexpr InputRange kSpeedRange{-1e3, 1e3, "m/s",

@@ -5,6 +5,8 @@
 
 #include "musclesim/core/number_format.h"
 #include "musclesim/core/printable_text.h"
+#include "musclesim/dynamics/activation_families.h"
+#include "musclesim/io/writers/part_fields_yaml.h"
 #include "musclesim/model/tension.h"
 
 namespace musclesim {
@@ -32,12 +34,8 @@ std::string Pair(const double (&values)[2]) {
 // The `activation_dynamics:` line of the tool's lag, its family's smoothing included.
 std::string FormatActivationDynamics(const ActivationDynamics& d) {
   std::ostringstream out;
-  out << "activation_dynamics: {family: " << ActivationFamilyName(d.family)
-      << ", tau_activation: " << FormatNumber(d.tau_activation)
-      << ", tau_deactivation: " << FormatNumber(d.tau_deactivation);
-  if (d.family == ActivationFamily::kDeGroote2016)
-    out << ", smoothing: " << FormatNumber(d.smoothing);
-  if (d.family == ActivationFamily::kMujoco) out << ", tausmooth: " << FormatNumber(d.tausmooth);
+  out << "activation_dynamics: {family: " << ActivationFamilyName(d.family) << ", "
+      << FlowFields(*VariantOf(ActivationFamilies(), d), d);
   out << "}   # s";
   return out.str();
 }

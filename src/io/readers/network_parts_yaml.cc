@@ -3,8 +3,10 @@
 #include <cmath>
 
 #include "io/readers/controller_yaml.h"
+#include "io/readers/part_fields_yaml.h"
 #include "io/readers/scenario_fields.h"
 #include "musclesim/core/input_ranges.h"
+#include "musclesim/dynamics/element_laws.h"
 #include "musclesim/scenario/element_limits.h"
 
 namespace musclesim {
@@ -177,34 +179,21 @@ std::shared_ptr<const TensionModel> FindModel(const yaml::Source& src, const Doc
   return found->second;
 }
 
-// The keys an element of `kind` may have: a misspelt one is an error before any is read.
+// The keys an element of `type` may have: a misspelt one is an error before any is read. An
+// actuator's are its model's and input's, a passive element's its laws' (element_laws.h).
 // `via` comes last, so that the messages of files on a line read as they always have.
 void RequireElementKeys(const yaml::Source& src, const Document& item, const std::string& path,
-                        ElementKind kind) {
-  switch (kind) {
-    case ElementKind::kActuator:
-      yaml::RequireMap(src, item, path,
-                       {"name", "type", "from", "to", "model", "activation", "excitation",
-                        "activation_dynamics", "initial_activation", "via"});
-      break;
-    case ElementKind::kSpring:
-      yaml::RequireMap(src, item, path,
-                       {"name", "type", "from", "to", "stiffness", "rest_length", "via"});
-      break;
-    case ElementKind::kTendon:
-      yaml::RequireMap(src, item, path,
-                       {"name", "type", "from", "to", "slack_length", "stiffness", "exponential",
-                        "degroote2016", "via"});
-      break;
-    case ElementKind::kDamper:
-      yaml::RequireMap(src, item, path, {"name", "type", "from", "to", "damping", "via"});
-      break;
+                        ElementKind kind, const std::string& type) {
+  if (kind == ElementKind::kActuator) {
+    yaml::RequireMap(src, item, path,
+                     {"name", "type", "from", "to", "model", "activation", "excitation",
+                      "activation_dynamics", "initial_activation", "via"});
+    return;
   }
-}
-
-double NumberIn(const yaml::Source& src, const Document& item, const std::string& path,
-                const char* key, const InputRange& range) {
-  return yaml::ReadNumberIn(src, Required(src, item, path, key), Join(path, key), range);
+  std::vector<std::string> keys{"name", "type", "from", "to"};
+  for (std::string& key : VariantKeys(ElementLaws(), type)) keys.push_back(std::move(key));
+  keys.emplace_back("via");
+  yaml::RequireMap(src, item, path, keys);
 }
 
 // An actuator's model and its input: a controller's (`driven` names it), or its own
@@ -232,48 +221,6 @@ void ReadActuator(const yaml::Source& src, const Document& item, const std::stri
                                           Join(path, "initial_activation"), t_start, t_end);
   e.activation = std::move(drive.activation);
   e.excitation = std::move(drive.excitation);
-}
-
-// OpenSim's default tendon strain at the maximum isometric force [-].
-constexpr double kDeGrooteTendonStrain = 0.049;
-
-// A tendon's slack length and its stiffness: linear, exponential or De Groote's, exactly one.
-void ReadTendon(const yaml::Source& src, const Document& item, const std::string& path,
-                Element& e) {
-  e.slack_length = NumberIn(src, item, path, "slack_length", kPositionRange);
-  const Document& exponential = item["exponential"];
-  const Document& degroote = item["degroote2016"];
-  std::string laws;  // the laws given, "stiffness and exponential"
-  for (const char* key : {"stiffness", "exponential", "degroote2016"}) {
-    if (item[key]) laws += (laws.empty() ? "" : " and ") + std::string(key);
-  }
-  if (laws.empty() || laws.find(" and ") != std::string::npos) {
-    yaml::Fail(src, item, path, laws.empty() ? "neither" : laws,
-               "give exactly one of stiffness (a linear tendon [N/m]), exponential "
-               "({k, alpha}: k (exp(alpha (l - slack_length)) - 1)) or degroote2016 "
-               "({max_isometric_force, strain_at_one_norm_force}: OpenSim's De Groote tendon)");
-  }
-  if (degroote) {
-    const std::string at = Join(path, "degroote2016");
-    yaml::RequireMap(src, degroote, at, {"max_isometric_force", "strain_at_one_norm_force"});
-    const double f_iso = yaml::ReadNumberIn(src, Required(src, degroote, at, "max_isometric_force"),
-                                            Join(at, "max_isometric_force"), kPositiveForceRange);
-    const double strain = yaml::ReadOptionalNumberIn(src, degroote, at, "strain_at_one_norm_force",
-                                                     kTendonStrainRange, kDeGrooteTendonStrain);
-    ValidateAt(src, item, path, [&] {
-      e = Element::DeGrooteTendon(e.name, e.from, e.to, e.slack_length, f_iso, strain);
-    });
-    return;
-  }
-  if (exponential) {
-    const std::string at = Join(path, "exponential");
-    yaml::RequireMap(src, exponential, at, {"k", "alpha"});
-    e.k = yaml::ReadNumberIn(src, Required(src, exponential, at, "k"), Join(at, "k"),
-                             kPositiveForceRange);
-    e.alpha = yaml::ReadNumber(src, Required(src, exponential, at, "alpha"), Join(at, "alpha"));
-  } else {
-    e.stiffness = NumberIn(src, item, path, "stiffness", kStiffnessRange);
-  }
 }
 
 // An element's `via` points: each a node's name (NetworkSystem resolves it) or a fixed
@@ -343,25 +290,19 @@ Element ReadElement(const yaml::Source& src, const Document& item, const std::st
   const std::string type = ReadType(src, item, path);
   Element e;
   ValidateAt(src, item, path, [&] { e.kind = ParseElementKind(type); });
-  RequireElementKeys(src, item, path, e.kind);
+  RequireElementKeys(src, item, path, e.kind, type);
   e.name = ReadName(src, item, path);
   e.from = yaml::ReadString(src, Required(src, item, path, "from"), Join(path, "from"));
   e.to = yaml::ReadString(src, Required(src, item, path, "to"), Join(path, "to"));
   // read before the kind's fields, kept after them: a controlled actuator is made afresh
   std::vector<ViaPoint> via;
   if (const Document& node = item["via"]) via = ReadVia(src, node, Join(path, "via"), dimensions);
-  switch (e.kind) {
-    case ElementKind::kActuator:
-      ReadActuator(src, item, path, models, driven, t_start, t_end, e);
-      break;
-    case ElementKind::kSpring:
-      e.stiffness = NumberIn(src, item, path, "stiffness", kStiffnessRange);
-      e.rest_length = NumberIn(src, item, path, "rest_length", kPositionRange);
-      break;
-    case ElementKind::kTendon: ReadTendon(src, item, path, e); break;
-    case ElementKind::kDamper:
-      e.damping = NumberIn(src, item, path, "damping", kDampingRange);
-      break;
+  if (e.kind == ElementKind::kActuator) {
+    ReadActuator(src, item, path, models, driven, t_start, t_end, e);
+  } else {
+    const ElementLaw& law = *SelectVariant(src, item, path, ElementLaws(), type);
+    law.make(e);
+    ReadFields(src, item, path, law, e);
   }
   e.via = std::move(via);
   ValidateAt(src, item, path, [&] { Validate(e); });

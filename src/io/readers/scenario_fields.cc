@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "io/readers/part_fields_yaml.h"
 #include "musclesim/core/input_ranges.h"
+#include "musclesim/dynamics/activation_families.h"
+#include "musclesim/dynamics/load_kinds.h"
 
 namespace musclesim {
 
@@ -132,31 +135,12 @@ ActivationDynamics ReadActivationDynamics(const yaml::Source& src, const Documen
                  "must be thelen2003, degroote2016 or mujoco (docs/model.md 8.1)");
     }
   }
-  // each family's own smoothing key, and no other's
-  switch (d.family) {
-    case ActivationFamily::kThelen2003:
-      yaml::RequireMap(src, node, path, {"tau_activation", "tau_deactivation", "family"});
-      break;
-    case ActivationFamily::kDeGroote2016:
-      yaml::RequireMap(src, node, path,
-                       {"tau_activation", "tau_deactivation", "family", "smoothing"});
-      break;
-    case ActivationFamily::kMujoco:
-      yaml::RequireMap(src, node, path,
-                       {"tau_activation", "tau_deactivation", "family", "tausmooth"});
-      break;
-  }
-  const auto number = [&](const char* key, const InputRange& range) {
-    return yaml::ReadNumberIn(src, Required(src, node, path, key), Join(path, key), range);
-  };
-  d.tau_activation = number("tau_activation", kActivationTimeConstantRange);
-  d.tau_deactivation = number("tau_deactivation", kActivationTimeConstantRange);
-  if (d.family == ActivationFamily::kDeGroote2016 && node["smoothing"]) {
-    d.smoothing = number("smoothing", kActivationSmoothingRange);
-  }
-  if (d.family == ActivationFamily::kMujoco && node["tausmooth"]) {
-    d.tausmooth = number("tausmooth", kTauSmoothRange);
-  }
+  // each family's own keys (activation_families.h), and no other's
+  const char* family = ActivationFamilyName(d.family);
+  std::vector<std::string> keys = VariantKeys(ActivationFamilies(), family);
+  keys.emplace_back("family");
+  yaml::RequireMap(src, node, path, keys);
+  ReadFields(src, node, path, *SelectVariant(src, node, path, ActivationFamilies(), family), d);
   return d;
 }
 
@@ -221,19 +205,13 @@ Load ReadLoad(const yaml::Source& src, const Document& node, const std::string& 
               std::initializer_list<const char*> extra) {
   const std::string type = ReadType(src, node, path);
   Load load;
-  if (type == "spring") {
-    yaml::RequireMap(src, node, path, {"type", "stiffness", "anchor"}, extra);
-    load.kind = LoadKind::kSpring;
-    load.stiffness = yaml::ReadNumberIn(src, Required(src, node, path, "stiffness"),
-                                        Join(path, "stiffness"), kStiffnessRange);
-    load.anchor = yaml::ReadNumberIn(src, Required(src, node, path, "anchor"), Join(path, "anchor"),
-                                     kPositionRange);
-  } else if (type == "mass") {
-    yaml::RequireMap(src, node, path, {"type", "mass", "gravity"}, extra);
-    load.kind = LoadKind::kMass;
-    load.mass =
-        yaml::ReadNumberIn(src, Required(src, node, path, "mass"), Join(path, "mass"), kMassRange);
-    load.gravity = yaml::ReadOptionalNumberIn(src, node, path, "gravity", kGravityRange, 9.81);
+  if (const LoadVariant* variant = SelectVariant(src, node, path, LoadVariants(), type)) {
+    std::vector<std::string> keys{"type"};
+    for (std::string& key : VariantKeys(LoadVariants(), type)) keys.push_back(std::move(key));
+    keys.insert(keys.end(), extra.begin(), extra.end());
+    yaml::RequireMap(src, node, path, keys);
+    variant->make(load);
+    ReadFields(src, node, path, *variant, load);
   } else {
     WaveformKind kind{};
     try {

@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/depthguard.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -51,28 +52,26 @@ std::string Join(const std::string& path, const std::string& key) {
 }
 
 void RequireMap(const Source& source, const Document& node, const std::string& path,
-                std::initializer_list<const char*> allowed,
-                std::initializer_list<const char*> extra) {
+                const std::vector<std::string>& allowed) {
   if (!node.IsMap()) {
     Fail(source, node, path, Describe(node), "must be a map of keys");
   }
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string& key = node.key(i);
-    bool known = false;
+    if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
     std::string list;
-    for (const char* name : allowed) {
-      known = known || key == name;
-      list += (list.empty() ? "" : ", ") + std::string(name);
-    }
-    for (const char* name : extra) {
-      known = known || key == name;
-      list += ", " + std::string(name);
-    }
-    if (!known) {
-      throw InputError(InputFault{Place(source, node.key_position(i)), Join(path, key),
-                                  std::nullopt, "unknown key; allowed here: " + list});
-    }
+    for (const std::string& name : allowed) list.append(list.empty() ? "" : ", ").append(name);
+    throw InputError(InputFault{Place(source, node.key_position(i)), Join(path, key),
+                                std::nullopt, "unknown key; allowed here: " + list});
   }
+}
+
+void RequireMap(const Source& source, const Document& node, const std::string& path,
+                std::initializer_list<const char*> allowed,
+                std::initializer_list<const char*> extra) {
+  std::vector<std::string> keys(allowed.begin(), allowed.end());
+  keys.insert(keys.end(), extra.begin(), extra.end());
+  RequireMap(source, node, path, keys);
 }
 
 const Document& Required(const Source& source, const Document& map, const std::string& path,

@@ -43,6 +43,8 @@ std::string Describe(const Document& node);
 void RequireMap(const Source& source, const Document& node, const std::string& path,
                 std::initializer_list<const char*> allowed,
                 std::initializer_list<const char*> extra = {});
+void RequireMap(const Source& source, const Document& node, const std::string& path,
+                const std::vector<std::string>& allowed);
 
 // A key that must be present in a map.
 const Document& Required(const Source& source, const Document& map, const std::string& path,

@@ -1,0 +1,91 @@
+// A part's numbers described once (in the manner of Drake's Serialize(Archive*)): each field's
+// key, unit, range with its reason, default and meaning, and how it sets the part. The file
+// readers, the parameter handles (--set, sweeps, sensitivities, identification), the closed-form
+// derivatives, the parts' validation and the reference tables in the docs are derived from the
+// descriptions (docs/layout.md, "How to add a key").
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "musclesim/core/input_ranges.h"
+
+namespace musclesim {
+
+// One number of a part of type `Part`.
+template <typename Part>
+struct NumberField {
+  const char* key = "";      // below the part: "stiffness", or nested "exponential.k"
+  InputRange range;          // the values a file may give it, its unit and why
+  std::optional<double> default_value;  // absent: the key is required
+  const char* doc = "";      // what it is, for the reference table
+  double (*get)(const Part&) = nullptr;
+  // Sets it, keeping what the part's other keys mean (a De Groote tendon's slack length keeps
+  // its strain): a file's fields are set in the order listed.
+  void (*set)(Part&, double) = nullptr;
+  int partial = -1;  // the closed-form derivative's tag (the part's own enum); -1: none
+};
+
+// One variant of a part (an element law, a kind of load): the `type` a file names and, when
+// a type has several variants, the key whose presence selects this one.
+template <typename Part>
+struct PartVariant {
+  const char* type = "";         // the file's `type:` value ("tendon")
+  const char* name = "";         // in messages and tables ("exponential tendon")
+  const char* selector = nullptr;  // a key only this variant of its type has; nullptr: the
+                                   // type's only variant
+  const char* selector_doc = "";   // the selector in a message: "stiffness (a linear tendon)"
+  const char* law = "";            // its equation, for the table ("T = k (l - l0)")
+  std::vector<NumberField<Part>> fields;
+  std::function<bool(const Part&)> is;  // whether a part is of this variant
+  std::function<void(Part&)> make;      // gives a part this variant's kind, before its fields
+};
+
+// The field of `variant` whose key is `key` ("exponential.k"); null when it has none.
+template <typename Part>
+const NumberField<Part>* FindField(const PartVariant<Part>& variant, std::string_view key) {
+  for (const NumberField<Part>& field : variant.fields) {
+    if (key == field.key) return &field;
+  }
+  return nullptr;
+}
+
+// The variant `part` is of among `variants`; null for none (an actuator among element laws).
+template <typename Part>
+const PartVariant<Part>* VariantOf(const std::vector<PartVariant<Part>>& variants,
+                                   const Part& part) {
+  for (const PartVariant<Part>& variant : variants) {
+    if (variant.is(part)) return &variant;
+  }
+  return nullptr;
+}
+
+// "stiffness, rest_length": the keys of a variant, for messages.
+template <typename Part>
+std::string FieldKeys(const PartVariant<Part>& variant) {
+  std::string keys;
+  for (const NumberField<Part>& field : variant.fields) {
+    keys.append(keys.empty() ? "" : ", ").append(field.key);
+  }
+  return keys;
+}
+
+// The first key of a field's path: "exponential" of "exponential.k".
+inline std::string_view HeadKey(std::string_view key) { return key.substr(0, key.find('.')); }
+
+// Throws ParameterError(key, value, rule) unless `value` lies in `range` (NaN never does).
+void RequireInRange(std::string_view key, double value, const InputRange& range);
+
+// Throws ParameterError(key, value, rule) for the first field of `variant` outside its range:
+// what a C++ caller meets, with the same rule a file's reader states.
+template <typename Part>
+void ValidateFields(const PartVariant<Part>& variant, const Part& part) {
+  for (const NumberField<Part>& field : variant.fields) {
+    RequireInRange(field.key, field.get(part), field.range);
+  }
+}
+
+}  // namespace musclesim

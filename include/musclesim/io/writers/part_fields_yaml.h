@@ -1,0 +1,33 @@
+// Writing a described part's numbers (core/part_fields.h) as YAML flow-map text, in its
+// fields' order, nested fields in their own maps: "tau_activation: 0.01, tau_deactivation:
+// 0.04", "slack_length: 0.2, exponential: {k: 1, alpha: 30}". Numbers as FormatNumber gives
+// them (the shortest text that reads back the same double).
+#pragma once
+
+#include <sstream>
+#include <string>
+
+#include "musclesim/core/number_format.h"
+#include "musclesim/core/part_fields.h"
+
+namespace musclesim {
+
+template <typename Part>
+std::string FlowFields(const PartVariant<Part>& variant, const Part& part) {
+  std::ostringstream out;  // not operator+: GCC 12 warns falsely (-Wrestrict) on such chains
+  std::string_view open;   // the nested map being written ("exponential"), or none
+  for (const NumberField<Part>& field : variant.fields) {
+    const std::string_view key = field.key;
+    const std::string_view head = HeadKey(key);
+    const bool nested = head != key;
+    if (!open.empty() && open != head) out << "}";
+    if (&field != &variant.fields.front()) out << ", ";
+    if (nested && open != head) out << head << ": {";
+    out << (nested ? key.substr(head.size() + 1) : key) << ": " << FormatNumber(field.get(part));
+    open = nested ? head : std::string_view();
+  }
+  if (!open.empty()) out << "}";
+  return out.str();
+}
+
+}  // namespace musclesim

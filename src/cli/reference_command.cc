@@ -1,0 +1,50 @@
+// musclesim reference PART: prints the reference table of a described part (core/part_fields.h)
+// as Markdown, the tables docs/guide/ holds (tests/io/reference_table_test.cc checks them).
+#include <iostream>
+#include <string>
+
+#include "cli/arguments.h"
+#include "cli/commands.h"
+#include "musclesim/dynamics/activation_families.h"
+#include "musclesim/dynamics/element_laws.h"
+#include "musclesim/dynamics/load_kinds.h"
+#include "musclesim/io/writers/reference_table.h"
+
+namespace musclesim::cli {
+
+namespace {
+
+constexpr const char* kHelp = R"(usage: musclesim reference PART
+
+Prints, as a Markdown table, every key of PART with its unit, default, accepted values and
+their reason, and its meaning: what the readers, --set and the parameter handles apply.
+PART is one of
+  elements  the laws of springs, tendons and dampers (a network's elements)
+  loads     the spring and mass loads (a force load is a waveform)
+  activation_dynamics
+            the families of activation dynamics (their `family:` in place of `type:`)
+)";
+
+}  // namespace
+
+int ReferenceCommand(int argc, char** argv) {
+  const Arguments args = Parse(argc, argv, 2, {}, {"--help", "-h"});
+  if (args.Has("--help") || args.Has("-h")) {
+    std::cout << kHelp;
+    return 0;
+  }
+  if (args.positional.size() != 1) throw UsageError("expected one part (see --help)");
+  const std::string& part = args.positional[0];
+  if (part == "elements") {
+    std::cout << ReferenceTable(ElementLaws());
+  } else if (part == "loads") {
+    std::cout << ReferenceTable(LoadVariants());
+  } else if (part == "activation_dynamics") {
+    std::cout << ReferenceTable(ActivationFamilies(), "family");
+  } else {
+    throw UsageError("unknown part '" + part + "': elements, loads or activation_dynamics (see --help)");
+  }
+  return 0;
+}
+
+}  // namespace musclesim::cli
