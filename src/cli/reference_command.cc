@@ -8,6 +8,7 @@
 #include "musclesim/dynamics/activation_families.h"
 #include "musclesim/dynamics/element_laws.h"
 #include "musclesim/dynamics/load_kinds.h"
+#include "musclesim/dynamics/waveform_shapes.h"
 #include "musclesim/io/writers/reference_table.h"
 
 namespace musclesim::cli {
@@ -21,6 +22,8 @@ their reason, and its meaning: what the readers, --set and the parameter handles
 PART is one of
   elements  the laws of springs, tendons and dampers (a network's elements)
   loads     the spring and mass loads (a force load is a waveform)
+  waveforms the shapes of a signal over time (activations, excitations, force loads,
+            prescribed motions, references)
   activation_dynamics
             the families of activation dynamics (their `family:` in place of `type:`)
 )";
@@ -39,10 +42,13 @@ int ReferenceCommand(int argc, char** argv) {
     std::cout << ReferenceTable(ElementLaws());
   } else if (part == "loads") {
     std::cout << ReferenceTable(LoadVariants());
+  } else if (part == "waveforms") {
+    std::cout << ReferenceTable(WaveformShapes());
   } else if (part == "activation_dynamics") {
     std::cout << ReferenceTable(ActivationFamilies(), "family");
   } else {
-    throw UsageError("unknown part '" + part + "': elements, loads or activation_dynamics (see --help)");
+    throw UsageError("unknown part '" + part +
+                     "': elements, loads, waveforms or activation_dynamics (see --help)");
   }
   return 0;
 }

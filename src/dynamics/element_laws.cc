@@ -18,8 +18,8 @@ ElementLaw Spring() {
   law.law = "T = stiffness (l - rest_length), pushing when compressed";
   law.fields = {
       {"stiffness", kStiffnessRange, std::nullopt, "the force per metre of stretch",
-       [](const Element& e) { return e.stiffness; },
-       [](Element& e, double v) { e.stiffness = v; }, Tag(ElementPartial::kStiffness)},
+       [](const Element& e) { return e.stiffness; }, [](Element& e, double v) { e.stiffness = v; },
+       Tag(ElementPartial::kStiffness)},
       {"rest_length", kPositionRange, std::nullopt, "the length at which it pulls nothing",
        [](const Element& e) { return e.rest_length; },
        [](Element& e, double v) { e.rest_length = v; }, Tag(ElementPartial::kRestLength)},
@@ -30,10 +30,13 @@ ElementLaw Spring() {
 }
 
 ElementField SlackLength() {
-  return {"slack_length", kSlackLengthRange, std::nullopt,
+  return {"slack_length",
+          kSlackLengthRange,
+          std::nullopt,
           "the length below which it pulls nothing",
           [](const Element& e) { return e.slack_length; },
-          [](Element& e, double v) { e.slack_length = v; }, Tag(ElementPartial::kSlackLength)};
+          [](Element& e, double v) { e.slack_length = v; },
+          Tag(ElementPartial::kSlackLength)};
 }
 
 ElementLaw LinearTendon() {
@@ -46,8 +49,8 @@ ElementLaw LinearTendon() {
   law.fields = {
       SlackLength(),
       {"stiffness", kStiffnessRange, std::nullopt, "the force per metre of stretch",
-       [](const Element& e) { return e.stiffness; },
-       [](Element& e, double v) { e.stiffness = v; }, Tag(ElementPartial::kStiffness)},
+       [](const Element& e) { return e.stiffness; }, [](Element& e, double v) { e.stiffness = v; },
+       Tag(ElementPartial::kStiffness)},
   };
   law.is = [](const Element& e) {
     return e.kind == ElementKind::kTendon && !e.exponential() && !e.pushes_below_slack;

@@ -26,8 +26,8 @@ LoadVariant Mass() {
   mass.name = "hanging mass";
   mass.law = "F = mass gravity, and the mass joins the moving mass";
   mass.fields = {
-      {"mass", kMassRange, std::nullopt, "the weight's mass",
-       [](const Load& l) { return l.mass; }, [](Load& l, double v) { l.mass = v; }},
+      {"mass", kMassRange, std::nullopt, "the weight's mass", [](const Load& l) { return l.mass; },
+       [](Load& l, double v) { l.mass = v; }},
       {"gravity", kGravityRange, 9.81, "the acceleration along +x (lengthening)",
        [](const Load& l) { return l.gravity; }, [](Load& l, double v) { l.gravity = v; }},
   };

@@ -13,6 +13,7 @@
 #include "musclesim/dynamics/activation_families.h"
 #include "musclesim/dynamics/element_laws.h"
 #include "musclesim/dynamics/load_kinds.h"
+#include "musclesim/dynamics/waveform_shapes.h"
 #include "musclesim/scenario/actuator_scenario.h"
 
 namespace musclesim {
@@ -118,8 +119,8 @@ void ParameterResolver::Element(std::size_t i) {
              FieldKeys(family) + ")");
       }
       return Field(*field, Locate<ActivationDynamics>([at](Scenario& s) -> ActivationDynamics& {
-                     return at(s).excitation->dynamics;
-                   }));
+        return at(s).excitation->dynamics;
+      }));
     }
     if (key == "initial_activation" && element.excitation) {
       End(i + 2);
@@ -271,54 +272,24 @@ void ParameterResolver::WaveformField(std::size_t i, Locate<Waveform> at,
   // constant, the shape in the context of this waveform: its time fields are times, the rest
   // values of the signal
   const Waveform& w = at(const_cast<Scenario&>(scenario_));
-  const std::string& key = Key(i);
-  const auto field = [&](double Waveform::*member, const InputRange* range) {
-    End(i + 1);
-    Number([at, member](Scenario& s) -> double& { return at(s).*member; }, range);
-  };
-  switch (w.kind) {
-    case WaveformKind::kConstant:
-      if (key == "value") return field(&Waveform::value, values);
-      break;
-    case WaveformKind::kStep:
-      if (key == "time") return field(&Waveform::time, &kTimeRange);
-      if (key == "before") return field(&Waveform::before, values);
-      if (key == "after") return field(&Waveform::after, values);
-      break;
-    case WaveformKind::kRamp:
-      if (key == "start") return field(&Waveform::start, &kTimeRange);
-      if (key == "end") return field(&Waveform::end, &kTimeRange);
-      if (key == "from") return field(&Waveform::from, values);
-      if (key == "to") return field(&Waveform::to, values);
-      break;
-    case WaveformKind::kSine:
-      if (key == "offset") return field(&Waveform::offset, values);
-      if (key == "amplitude") return field(&Waveform::amplitude, values);
-      if (key == "frequency") return field(&Waveform::frequency, &kFrequencyRange);
-      if (key == "phase") return field(&Waveform::phase, nullptr);
-      break;
-    case WaveformKind::kPulses:
-      if (key == "start") return field(&Waveform::start, &kTimeRange);
-      if (key == "period") return field(&Waveform::period, nullptr);
-      if (key == "width") return field(&Waveform::width, nullptr);
-      if (key == "low") return field(&Waveform::low, values);
-      if (key == "high") return field(&Waveform::high, values);
-      break;
-    case WaveformKind::kTable:
-      if (key == "points") {
-        const std::size_t k = Index(i + 1, w.points.size(), "points");
-        const std::size_t column = Index(i + 2, 2, "a [t, value] point");
-        End(i + 3);
-        return Number(
-            [at, k, column](Scenario& s) -> double& {
-              TablePoint& point = at(s).points[k];
-              return column == 0 ? point.t : point.value;
-            },
-            column == 0 ? &kTimeRange : values);
-      }
-      break;
+  const WaveformShape& shape = WaveformShapes()[static_cast<std::size_t>(w.kind)];
+  if (w.kind == WaveformKind::kTable && Key(i) == "points") {
+    const std::size_t k = Index(i + 1, w.points.size(), "points");
+    const std::size_t column = Index(i + 2, 2, "a [t, value] point");
+    End(i + 3);
+    return Number(
+        [at, k, column](Scenario& s) -> double& {
+          TablePoint& point = at(s).points[k];
+          return column == 0 ? point.t : point.value;
+        },
+        column == 0 ? &kTimeRange : values);
   }
-  Fail("names no field of this " + std::string(ToString(w.kind)) + " waveform");
+  const NumberField<Waveform>* field = FindField(shape, PathFrom(i));
+  if (field == nullptr) {
+    Fail("names no field of this " + std::string(shape.name) + " waveform (" +
+         (w.kind == WaveformKind::kTable ? "points[k][0], points[k][1]" : FieldKeys(shape)) + ")");
+  }
+  Field(*field, at, field->values == FieldValues::kSignal ? values : nullptr);
 }
 
 }  // namespace musclesim

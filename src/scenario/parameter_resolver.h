@@ -72,13 +72,21 @@ class ParameterResolver {
     }
   }
 
-  // A described field (core/part_fields.h) of the part at `at`, with its range.
+  // A described field (core/part_fields.h) of the part at `at`: bounded by its own range, by
+  // `signal` for a value of the signal (nullptr: unbounded), not at all for any finite number.
   template <typename Part>
-  void Field(const NumberField<Part>& field, Locate<Part> at) {
-    p_.get_ = [at, get = field.get](const Scenario& s) { return get(at(const_cast<Scenario&>(s))); };
+  void Field(const NumberField<Part>& field, Locate<Part> at, const InputRange* signal = nullptr) {
+    p_.get_ = [at, get = field.get](const Scenario& s) {
+      return get(at(const_cast<Scenario&>(s)));
+    };
     p_.set_ = [at, set = field.set](Scenario& s, double v) { set(at(s), v); };
-    p_.range_ = field.range;
-    p_.bounded_ = true;
+    const InputRange* range = field.values == FieldValues::kRange    ? &field.range
+                              : field.values == FieldValues::kSignal ? signal
+                                                                     : nullptr;
+    if (range != nullptr) {
+      p_.range_ = *range;
+      p_.bounded_ = true;
+    }
   }
 
   void Top();

@@ -15,6 +15,7 @@
 #include "musclesim/dynamics/activation_families.h"
 #include "musclesim/dynamics/element_laws.h"
 #include "musclesim/dynamics/load_kinds.h"
+#include "musclesim/dynamics/waveform_shapes.h"
 #include "musclesim/io/readers/document.h"
 #include "musclesim/io/readers/scenario_yaml.h"
 
@@ -56,6 +57,11 @@ TEST(ReferenceTable, LoadsInTheScenariosGuideAreTheDescriptions) {
 TEST(ReferenceTable, ActivationFamiliesInTheScenariosGuideAreTheDescriptions) {
   EXPECT_EQ(Block(Read("docs/guide/scenarios.md"), "activation dynamics"),
             ReferenceTable(ActivationFamilies(), "family"))
+      << kRewrite;
+}
+
+TEST(ReferenceTable, WaveformShapesInTheScenariosGuideAreTheDescriptions) {
+  EXPECT_EQ(Block(Read("docs/guide/scenarios.md"), "waveforms"), ReferenceTable(WaveformShapes()))
       << kRewrite;
 }
 
@@ -112,8 +118,7 @@ TEST(ReferenceTable, TheReaderAppliesEachLawsRanges) {
     for (const ElementField& field : law.fields) {
       SCOPED_TRACE(std::string(law.name) + " " + field.key);
       const double past_max = field.range.max * 2.0;
-      const double below_min = field.range.min_exclusive ? field.range.min
-                                                         : field.range.min - 1.0;
+      const double below_min = field.range.min_exclusive ? field.range.min : field.range.min - 1.0;
       for (const double bad : {past_max, below_min}) {
         const std::string message = ElementError(text_of(law, field, bad));
         EXPECT_THAT(message, HasSubstr("elements[0]." + std::string(field.key) + " = "));

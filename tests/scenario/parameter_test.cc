@@ -12,9 +12,11 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/core/number_format.h"
 #include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/scenario/actuator_scenario.h"
 #include "musclesim/scenario/run.h"
@@ -486,6 +488,32 @@ TEST(Parameter, AModelsHandleRebuildsItAsTheFileWithSetDoes) {
   EXPECT_TRUE(SameRecordedRun(in_code, from_file));
   // and not the run it was: f_iso moved it
   EXPECT_FALSE(SameRecordedRun(in_code, RunScenario(LoadScenario(path))));
+}
+
+// The smoothing of OpenSim's and MuJoCo's activation dynamics (their families' own keys,
+// dynamics/activation_families.h) as handles: set in code, the run is the file's with that
+// value, and not the run it was.
+TEST(Parameter, AnActivationFamilysSmoothingIsAHandleAsInTheFile) {
+  const std::string path = ScenarioPath("twitches.yaml");
+  for (const auto& [family, key, value] :
+       {std::tuple{"degroote2016", "smoothing", 0.5}, std::tuple{"mujoco", "tausmooth", 0.3}}) {
+    SCOPED_TRACE(family);
+    const std::string family_set = std::string("activation_dynamics.family=") + family;
+    const std::string at = std::string("activation_dynamics.") + key;
+    Scenario s = LoadScenario(path, {family_set});
+    const Parameter handle = s.parameter(at);
+    EXPECT_THROW(handle.Check(1e10), ParameterError);  // past its range
+    handle.Set(s, value);
+    const RecordedRun in_code = RunScenario(s);
+    ASSERT_EQ(in_code.stats.status, RunStatus::kCompleted) << in_code.stats.message;
+    EXPECT_TRUE(SameRecordedRun(
+        in_code, RunScenario(LoadScenario(path, {family_set, at + "=" + FormatNumber(value)}))));
+    EXPECT_FALSE(SameRecordedRun(in_code, RunScenario(LoadScenario(path, {family_set}))));
+  }
+  // thelen2003 has neither: the refusal lists its keys
+  EXPECT_THAT(Refusal(LoadScenario(path), "activation_dynamics.smoothing"),
+              HasSubstr("names no number of thelen2003's activation dynamics (tau_activation, "
+                        "tau_deactivation)"));
 }
 
 TEST(Parameter, AFittedBlockIsFittedAgainWhenWhatTheFitDependsOnChanges) {

@@ -15,31 +15,41 @@
 
 namespace musclesim {
 
+// Where a field's accepted values come from.
+enum class FieldValues {
+  kRange,   // its own `range`
+  kSignal,  // the signal's the part carries (a waveform's value: a force's, a position's; an
+            // activation's [0, 1], which the signal's validation checks): the reader's context
+  kFinite,  // any finite number; the part's Validate states the rule (a pulse's period)
+};
+
 // One number of a part of type `Part`.
 template <typename Part>
 struct NumberField {
-  const char* key = "";      // below the part: "stiffness", or nested "exponential.k"
-  InputRange range;          // the values a file may give it, its unit and why
+  const char* key = "";                 // below the part: "stiffness", or nested "exponential.k"
+  InputRange range;                     // the values a file may give it, its unit and why
   std::optional<double> default_value;  // absent: the key is required
-  const char* doc = "";      // what it is, for the reference table
-  double (*get)(const Part&) = nullptr;
+  const char* doc = "";                 // what it is, for the reference table
+  std::function<double(const Part&)> get;
   // Sets it, keeping what the part's other keys mean (a De Groote tendon's slack length keeps
   // its strain): a file's fields are set in the order listed.
-  void (*set)(Part&, double) = nullptr;
+  std::function<void(Part&, double)> set;
   int partial = -1;  // the closed-form derivative's tag (the part's own enum); -1: none
+  FieldValues values = FieldValues::kRange;
 };
 
 // One variant of a part (an element law, a kind of load): the `type` a file names and, when
 // a type has several variants, the key whose presence selects this one.
 template <typename Part>
 struct PartVariant {
-  const char* type = "";         // the file's `type:` value ("tendon")
-  const char* name = "";         // in messages and tables ("exponential tendon")
+  const char* type = "";           // the file's `type:` value ("tendon")
+  const char* name = "";           // in messages and tables ("exponential tendon")
   const char* selector = nullptr;  // a key only this variant of its type has; nullptr: the
                                    // type's only variant
   const char* selector_doc = "";   // the selector in a message: "stiffness (a linear tendon)"
   const char* law = "";            // its equation, for the table ("T = k (l - l0)")
   std::vector<NumberField<Part>> fields;
+  std::vector<const char*> other_keys;  // keys read by the part's own reader (a table's points)
   std::function<bool(const Part&)> is;  // whether a part is of this variant
   std::function<void(Part&)> make;      // gives a part this variant's kind, before its fields
 };
@@ -79,12 +89,15 @@ inline std::string_view HeadKey(std::string_view key) { return key.substr(0, key
 // Throws ParameterError(key, value, rule) unless `value` lies in `range` (NaN never does).
 void RequireInRange(std::string_view key, double value, const InputRange& range);
 
-// Throws ParameterError(key, value, rule) for the first field of `variant` outside its range:
+// Throws ParameterError(key, value, rule) for the first field of `variant` outside its own
+// range (fields whose values are the signal's or any finite number are left to the part):
 // what a C++ caller meets, with the same rule a file's reader states.
 template <typename Part>
 void ValidateFields(const PartVariant<Part>& variant, const Part& part) {
   for (const NumberField<Part>& field : variant.fields) {
-    RequireInRange(field.key, field.get(part), field.range);
+    if (field.values == FieldValues::kRange) {
+      RequireInRange(field.key, field.get(part), field.range);
+    }
   }
 }
 

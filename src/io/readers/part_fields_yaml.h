@@ -25,6 +25,7 @@ std::vector<std::string> VariantKeys(const std::vector<PartVariant<Part>>& varia
       for (const std::string& key : keys) seen = seen || key == head;
       if (!seen) keys.push_back(head);
     }
+    keys.insert(keys.end(), variant.other_keys.begin(), variant.other_keys.end());
   }
   return keys;
 }
@@ -46,7 +47,10 @@ const PartVariant<Part>* SelectVariant(const yaml::Source& src, const Document& 
   std::string rule = "give exactly one of ";
   for (std::size_t v = 0; v < of_type.size(); ++v) {
     const PartVariant<Part>* variant = of_type[v];
-    rule.append(v == 0 ? "" : v + 1 == of_type.size() ? " or " : ", ").append(variant->selector_doc);
+    rule.append(v == 0                    ? ""
+                : v + 1 == of_type.size() ? " or "
+                                          : ", ")
+        .append(variant->selector_doc);
     if (item[variant->selector]) {
       given.append(given.empty() ? "" : " and ").append(variant->selector);
       chosen = variant;
@@ -60,9 +64,10 @@ const PartVariant<Part>* SelectVariant(const yaml::Source& src, const Document& 
 
 // Reads every field of `variant` from the map `item` into `part`, in the order listed: a
 // nested field ("exponential.k") from its map, whose keys are checked when it is first met.
+// `signal` bounds the fields whose values are the signal's (nullptr: any number).
 template <typename Part>
 void ReadFields(const yaml::Source& src, const Document& item, const std::string& path,
-                const PartVariant<Part>& variant, Part& part) {
+                const PartVariant<Part>& variant, Part& part, const InputRange* signal = nullptr) {
   std::vector<std::string> opened;  // the nested maps checked so far
   for (const NumberField<Part>& field : variant.fields) {
     const std::string key = field.key;
@@ -91,8 +96,12 @@ void ReadFields(const yaml::Source& src, const Document& item, const std::string
       field.set(part, *field.default_value);
       continue;
     }
-    field.set(part, yaml::ReadNumberIn(src, yaml::Required(src, *map, at, leaf.c_str()),
-                                       yaml::Join(at, leaf), field.range));
+    const InputRange* range = field.values == FieldValues::kRange    ? &field.range
+                              : field.values == FieldValues::kSignal ? signal
+                                                                     : nullptr;
+    const Document& given = yaml::Required(src, *map, at, leaf.c_str());
+    field.set(part, range != nullptr ? yaml::ReadNumberIn(src, given, yaml::Join(at, leaf), *range)
+                                     : yaml::ReadNumber(src, given, yaml::Join(at, leaf)));
   }
 }
 

@@ -7,6 +7,7 @@
 #include "musclesim/core/input_ranges.h"
 #include "musclesim/dynamics/activation_families.h"
 #include "musclesim/dynamics/load_kinds.h"
+#include "musclesim/dynamics/waveform_shapes.h"
 
 namespace musclesim {
 
@@ -50,59 +51,16 @@ std::vector<TablePoint> ReadTablePoints(const yaml::Source& src, const Document&
 Waveform ReadWaveform(const yaml::Source& src, const Document& node, const std::string& path,
                       WaveformKind kind, const InputRange* values,
                       std::initializer_list<const char*> extra) {
+  // its shape's keys and fields (waveform_shapes.h); a table's points read here
+  const WaveformShape& shape = WaveformShapes()[static_cast<std::size_t>(kind)];
+  std::vector<std::string> keys{"type"};
+  for (std::string& key : VariantKeys(WaveformShapes(), shape.type)) keys.push_back(std::move(key));
+  keys.insert(keys.end(), extra.begin(), extra.end());
+  yaml::RequireMap(src, node, path, keys);
   Waveform w;
-  w.kind = kind;
-  const auto value = [&](const char* key) {
-    const Document& item = Required(src, node, path, key);
-    return values ? yaml::ReadNumberIn(src, item, Join(path, key), *values)
-                  : yaml::ReadNumber(src, item, Join(path, key));
-  };
-  const auto time = [&](const char* key) {
-    return yaml::ReadNumberIn(src, Required(src, node, path, key), Join(path, key), kTimeRange);
-  };
-  const auto number = [&](const char* key) {
-    return yaml::ReadNumber(src, Required(src, node, path, key), Join(path, key));
-  };
-  switch (kind) {
-    case WaveformKind::kConstant:
-      yaml::RequireMap(src, node, path, {"type", "value"}, extra);
-      w.value = value("value");
-      break;
-    case WaveformKind::kStep:
-      yaml::RequireMap(src, node, path, {"type", "time", "before", "after"}, extra);
-      w.time = time("time");
-      w.before = value("before");
-      w.after = value("after");
-      break;
-    case WaveformKind::kRamp:
-      yaml::RequireMap(src, node, path, {"type", "start", "end", "from", "to"}, extra);
-      w.start = time("start");
-      w.end = time("end");
-      w.from = value("from");
-      w.to = value("to");
-      break;
-    case WaveformKind::kSine:
-      yaml::RequireMap(src, node, path, {"type", "offset", "amplitude", "frequency", "phase"},
-                       extra);
-      w.offset = value("offset");
-      w.amplitude = value("amplitude");
-      w.frequency = yaml::ReadNumberIn(src, Required(src, node, path, "frequency"),
-                                       Join(path, "frequency"), kFrequencyRange);
-      w.phase = ReadOptionalNumber(src, node, path, "phase", 0.0);
-      break;
-    case WaveformKind::kPulses:
-      yaml::RequireMap(src, node, path, {"type", "start", "period", "width", "low", "high"}, extra);
-      w.start = time("start");
-      w.period = number("period");  // checked against the run's time scale by CheckPulses
-      w.width = number("width");
-      w.low = value("low");
-      w.high = value("high");
-      break;
-    case WaveformKind::kTable:
-      yaml::RequireMap(src, node, path, {"type", "points"}, extra);
-      w.points = ReadTablePoints(src, node, path, values);
-      break;
-  }
+  shape.make(w);
+  ReadFields(src, node, path, shape, w, values);
+  if (kind == WaveformKind::kTable) w.points = ReadTablePoints(src, node, path, values);
   return w;
 }
 

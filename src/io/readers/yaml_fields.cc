@@ -61,8 +61,8 @@ void RequireMap(const Source& source, const Document& node, const std::string& p
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
     std::string list;
     for (const std::string& name : allowed) list.append(list.empty() ? "" : ", ").append(name);
-    throw InputError(InputFault{Place(source, node.key_position(i)), Join(path, key),
-                                std::nullopt, "unknown key; allowed here: " + list});
+    throw InputError(InputFault{Place(source, node.key_position(i)), Join(path, key), std::nullopt,
+                                "unknown key; allowed here: " + list});
   }
 }
 

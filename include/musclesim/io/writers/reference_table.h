@@ -13,34 +13,42 @@ namespace musclesim {
 
 // `key` heads the column of the variants' names: the key that names one in a file ("type",
 // "family").
+// The accepted-values cell of `field`: its bounds and why, or where they come from.
+template <typename Part>
+std::string AcceptedCell(const NumberField<Part>& field) {
+  switch (field.values) {
+    case FieldValues::kRange: return field.range.Bounds() + ": " + field.range.why;
+    case FieldValues::kSignal: return "the signal's range";
+    case FieldValues::kFinite: return "any finite number; the rule in its meaning";
+  }
+  return "";
+}
+
+// `key` heads the column of the variants' names: the key that names one in a file ("type",
+// "family").
 template <typename Part>
 std::string ReferenceTable(const std::vector<PartVariant<Part>>& variants,
                            const std::string& key = "type") {
   std::string table = "| " + key + " | law | key | unit | default | accepted | meaning |\n";
   table += "|---|---|---|---|---|---|---|\n";
   for (const PartVariant<Part>& variant : variants) {
-    bool first = true;
+    std::string type = std::string("`") + variant.type + "`";
+    if (std::string_view(variant.name) != variant.type) {
+      type.append(" (").append(variant.name).append(")");
+    }
+    // the first row names the variant and its law
+    const auto row = [&table, &type, &variant](const std::string& cells) {
+      table.append("| ").append(type).append(" | ").append(type.empty() ? "" : variant.law);
+      table.append(" | ").append(cells).append(" |\n");
+      type.clear();
+    };
     for (const NumberField<Part>& field : variant.fields) {
-      std::string type = std::string("`") + variant.type + "`";
-      if (std::string_view(variant.name) != variant.type) type.append(" (").append(variant.name).append(")");
-      table.append("| ")
-          .append(first ? type : "")
-          .append(" | ")
-          .append(first ? variant.law : "")
-          .append(" | `")
-          .append(field.key)
-          .append("` | ")
-          .append(field.range.unit)
-          .append(" | ")
-          .append(field.default_value ? FormatNumber(*field.default_value) : "required")
-          .append(" | ")
-          .append(field.range.Bounds())
-          .append(": ")
-          .append(field.range.why)
-          .append(" | ")
-          .append(field.doc)
-          .append(" |\n");
-      first = false;
+      row(std::string("`") + field.key + "` | " + field.range.unit + " | " +
+          (field.default_value ? FormatNumber(*field.default_value) : "required") + " | " +
+          AcceptedCell(field) + " | " + field.doc);
+    }
+    for (const char* other : variant.other_keys) {
+      row(std::string("`") + other + "` | | required | as its law says | ");
     }
   }
   return table;
