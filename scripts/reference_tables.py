@@ -18,6 +18,7 @@ BLOCKS = {
     "waveforms": ("docs/guide/scenarios.md", "waveforms"),
     "loads": ("docs/guide/scenarios.md", "loads"),
     "activation dynamics": ("docs/guide/scenarios.md", "activation_dynamics"),
+    "model families": ("docs/guide/model.md", "models"),
 }
 
 

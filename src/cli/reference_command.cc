@@ -10,6 +10,7 @@
 #include "musclesim/dynamics/load_kinds.h"
 #include "musclesim/dynamics/waveform_shapes.h"
 #include "musclesim/io/writers/reference_table.h"
+#include "musclesim/model/family_fields.h"
 
 namespace musclesim::cli {
 
@@ -24,6 +25,7 @@ PART is one of
   loads     the spring and mass loads (a force load is a waveform)
   waveforms the shapes of a signal over time (activations, excitations, force loads,
             prescribed motions, references)
+  models    the model blocks of the degroote2016 and mujoco curve families
   activation_dynamics
             the families of activation dynamics (their `family:` in place of `type:`)
 )";
@@ -44,11 +46,13 @@ int ReferenceCommand(int argc, char** argv) {
     std::cout << ReferenceTable(LoadVariants());
   } else if (part == "waveforms") {
     std::cout << ReferenceTable(WaveformShapes());
+  } else if (part == "models") {
+    std::cout << ReferenceTable(ModelFamilies(), "family");
   } else if (part == "activation_dynamics") {
     std::cout << ReferenceTable(ActivationFamilies(), "family");
   } else {
     throw UsageError("unknown part '" + part +
-                     "': elements, loads, waveforms or activation_dynamics (see --help)");
+                     "': elements, loads, waveforms, models or activation_dynamics (see --help)");
   }
   return 0;
 }

@@ -25,14 +25,6 @@ void Validate(const MujocoMuscleParams& p) {
               " [m] (MuJoCo computes it; `musclesim import` copies it)");
   Require(std::isfinite(p.lmin) && p.lmin >= 0.0 && p.lmin < 1.0, "lmin", p.lmin,
           "must be in [0, 1) [-]: the active curve peaks at 1");
-  Require(std::isfinite(p.lmax) && p.lmax > 1.0 && p.lmax <= 1e3, "lmax", p.lmax,
-          "must be > 1 and at most 1e3 [-]: the active curve peaks at 1");
-  Require(std::isfinite(p.vmax) && p.vmax > 0.0 && p.vmax <= 1e6, "vmax", p.vmax,
-          "must be > 0 and at most 1e6 [L0/s]");
-  Require(std::isfinite(p.fpmax) && p.fpmax >= 0.0 && p.fpmax <= 1e3, "fpmax", p.fpmax,
-          "must be >= 0 and at most 1e3 [-]");
-  Require(std::isfinite(p.fvmax) && p.fvmax > 1.0 && p.fvmax <= 1e3, "fvmax", p.fvmax,
-          "must be > 1 and at most 1e3 [-]: the lengthening branch rises from 1 to fvmax");
 }
 
 }  // namespace musclesim

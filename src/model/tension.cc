@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/model/family_fields.h"
 #include "musclesim/core/input_ranges.h"
 
 namespace musclesim {
@@ -33,8 +34,11 @@ void Validate(const ModelParams& params) {
           "pennation_angle", params.pennation_angle,
           "must be >= 0 and below pi/2 [rad] (the angle at the optimal fiber length)");
   switch (params.family) {
-    case CurveFamily::kDeGroote2016: return Validate(params.degroote2016);
-    case CurveFamily::kMujoco: return Validate(params.mujoco);
+    case CurveFamily::kDeGroote2016:
+      return ValidateFields(*VariantOf(ModelFamilies(), params), params);
+    case CurveFamily::kMujoco:
+      ValidateFields(*VariantOf(ModelFamilies(), params), params);
+      return Validate(params.mujoco);  // its lists and the rules between its fields
     case CurveFamily::kPaper: break;
   }
   WithPrefix("passive", [&] { Validate(params.passive); });

@@ -9,6 +9,7 @@
 
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
+#include "musclesim/model/family_fields.h"
 #include "musclesim/scenario/actuator_scenario.h"
 
 namespace musclesim {
@@ -27,34 +28,7 @@ void ParameterResolver::Model(std::size_t i) {
 void ParameterResolver::FamilyField(std::size_t i, CurveFamily family) {
   fitted_ = false;
   const std::string& key = Key(i);
-  const auto number = [&](Locate<double, ModelSpec> at) {
-    End(i + 1);
-    ModelNumber(std::move(at));
-  };
-  if (key == "f_iso") return number([](ModelSpec& m) -> double& { return m.params.f_iso; });
-  if (key == "pennation_angle") {
-    return number([](ModelSpec& m) -> double& { return m.params.pennation_angle; });
-  }
-  if (family == CurveFamily::kDeGroote2016) {
-    using Field = double DeGrooteParams::*;
-    static const std::pair<const char*, Field> kFields[] = {
-        {"optimal_fiber_length", &DeGrooteParams::optimal_fiber_length},
-        {"max_contraction_velocity", &DeGrooteParams::max_contraction_velocity},
-        {"active_force_width_scale", &DeGrooteParams::active_force_width_scale},
-        {"passive_fiber_strain_at_one_norm_force",
-         &DeGrooteParams::passive_fiber_strain_at_one_norm_force},
-        {"fiber_damping", &DeGrooteParams::fiber_damping}};
-    for (const auto& [name, field] : kFields) {
-      if (key != name) continue;
-      const Field member = field;
-      return number([member](ModelSpec& m) -> double& { return m.params.degroote2016.*member; });
-    }
-    Fail(
-        "names no parameter of a degroote2016 model (f_iso, pennation_angle, "
-        "optimal_fiber_length, max_contraction_velocity, active_force_width_scale, "
-        "passive_fiber_strain_at_one_norm_force, fiber_damping)");
-  }
-  if (key == "range" || key == "lengthrange") {
+  if (family == CurveFamily::kMujoco && (key == "range" || key == "lengthrange")) {
     const std::size_t end = Index(i + 1, 2, key == "range" ? "range" : "lengthrange");
     End(i + 2);
     if (key == "range") {
@@ -62,20 +36,19 @@ void ParameterResolver::FamilyField(std::size_t i, CurveFamily family) {
     }
     return ModelNumber([end](ModelSpec& m) -> double& { return m.params.mujoco.lengthrange[end]; });
   }
-  using Field = double MujocoMuscleParams::*;
-  static const std::pair<const char*, Field> kFields[] = {{"lmin", &MujocoMuscleParams::lmin},
-                                                          {"lmax", &MujocoMuscleParams::lmax},
-                                                          {"vmax", &MujocoMuscleParams::vmax},
-                                                          {"fpmax", &MujocoMuscleParams::fpmax},
-                                                          {"fvmax", &MujocoMuscleParams::fvmax}};
-  for (const auto& [name, field] : kFields) {
-    if (key != name) continue;
-    const Field member = field;
-    return number([member](ModelSpec& m) -> double& { return m.params.mujoco.*member; });
+  // the family's described fields (model/family_fields.h)
+  const ModelFamily* described = nullptr;
+  for (const ModelFamily& f : ModelFamilies()) {
+    if (ToString(family) == std::string_view(f.type)) described = &f;
   }
-  Fail(
-      "names no parameter of a mujoco model (f_iso, pennation_angle, range, lengthrange, lmin, "
-      "lmax, vmax, fpmax, fvmax)");
+  const NumberField<ModelParams>* field = FindField(*described, PathFrom(i));
+  if (field == nullptr) {
+    std::string keys = FieldKeys(*described);
+    for (const char* other : described->other_keys) keys.append(", ").append(other);
+    Fail("names no parameter of a " + std::string(described->type) + " model (" + keys + ")");
+  }
+  ModelValue([get = field->get](const ModelSpec& m) { return get(m.params); },
+             [set = field->set](ModelSpec& m, double v) { set(m.params, v); });
 }
 
 void ParameterResolver::ModelField(std::size_t i, bool fitted) {

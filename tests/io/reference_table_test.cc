@@ -10,6 +10,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "musclesim/core/errors.h"
 #include "musclesim/dynamics/activation_families.h"
@@ -17,7 +19,9 @@
 #include "musclesim/dynamics/load_kinds.h"
 #include "musclesim/dynamics/waveform_shapes.h"
 #include "musclesim/io/readers/document.h"
+#include "musclesim/io/readers/model_text.h"
 #include "musclesim/io/readers/scenario_yaml.h"
+#include "musclesim/model/family_fields.h"
 
 namespace musclesim {
 namespace {
@@ -62,6 +66,12 @@ TEST(ReferenceTable, ActivationFamiliesInTheScenariosGuideAreTheDescriptions) {
 
 TEST(ReferenceTable, WaveformShapesInTheScenariosGuideAreTheDescriptions) {
   EXPECT_EQ(Block(Read("docs/guide/scenarios.md"), "waveforms"), ReferenceTable(WaveformShapes()))
+      << kRewrite;
+}
+
+TEST(ReferenceTable, ModelFamiliesInTheModelGuideAreTheDescriptions) {
+  EXPECT_EQ(Block(Read("docs/guide/model.md"), "model families"),
+            ReferenceTable(ModelFamilies(), "family"))
       << kRewrite;
 }
 
@@ -125,6 +135,51 @@ TEST(ReferenceTable, TheReaderAppliesEachLawsRanges) {
         EXPECT_THAT(message, HasSubstr(field.range.Rule()));
       }
       EXPECT_EQ(ElementError(text_of(law, field, field.range.max)), "(read)");
+    }
+  }
+}
+
+// The same for the other families' model blocks: each ranged field past each bound refused
+// with its rule at model.KEY, and its largest value read.
+TEST(ReferenceTable, TheReaderAppliesEachModelFamilysRanges) {
+  // what each family requires, in order; the field under test replaces or joins them
+  const auto required = [](const ModelFamily& family) {
+    return std::string_view(family.type) == "mujoco"
+               ? std::vector<std::pair<std::string, std::string>>{{"f_iso", "100"},
+                                                                  {"lengthrange", "[0.1, 0.2]"}}
+               : std::vector<std::pair<std::string, std::string>>{{"f_iso", "100"},
+                                                                  {"optimal_fiber_length", "0.1"}};
+  };
+  const auto error = [](const std::string& text) {
+    try {
+      ParseModelSpec("model.yaml", text);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(read)");
+  };
+  for (const ModelFamily& family : ModelFamilies()) {
+    for (const NumberField<ModelParams>& field : family.fields) {
+      if (field.values != FieldValues::kRange) continue;
+      SCOPED_TRACE(std::string(family.type) + " " + field.key);
+      const auto text = [&](double value) {
+        auto fields = required(family);
+        bool replaced = false;
+        for (auto& [key, given] : fields) {
+          if (key == field.key) given = FormatNumber(value), replaced = true;
+        }
+        if (!replaced) fields.emplace_back(field.key, FormatNumber(value));
+        std::string block = std::string("{family: ") + family.type;
+        for (const auto& [key, given] : fields) block += ", " + key + ": " + given;
+        return block + "}";
+      };
+      const double below = field.range.min_exclusive ? field.range.min : field.range.min - 1.0;
+      for (const double bad : {field.range.max * 2.0, below}) {
+        const std::string message = error(text(bad));
+        EXPECT_THAT(message, HasSubstr("model." + std::string(field.key) + " = "));
+        EXPECT_THAT(message, HasSubstr(field.range.Rule()));
+      }
+      EXPECT_EQ(error(text(field.range.max)), "(read)");
     }
   }
 }

@@ -223,7 +223,7 @@ TEST(CurveFamilyValidation, EachFamilysBoundsAreNamedByKey) {
     FAIL() << "a width scale below 1 was accepted";
   } catch (const ParameterError& e) {
     EXPECT_EQ(e.path(), "active_force_width_scale");
-    EXPECT_THAT(e.rule(), HasSubstr(">= 1"));
+    EXPECT_THAT(e.rule(), HasSubstr("must be from 1 to 1000"));
   }
   ModelParams m;
   m.family = CurveFamily::kMujoco;

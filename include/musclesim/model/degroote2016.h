@@ -19,8 +19,8 @@ struct DeGrooteParams {
   double fiber_damping = 0;  // beta [-], >= 0: F0 beta v~ beside the curves
 };
 
-// Throws ParameterError with the key as its path.
-void Validate(const DeGrooteParams& params);
+// Its fields' ranges are its description's (model/family_fields.h), which Validate(ModelParams)
+// checks.
 
 namespace degroote2016 {
 

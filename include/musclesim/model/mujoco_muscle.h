@@ -19,7 +19,9 @@ struct MujocoMuscleParams {
   double fvmax = 1.2;                  // lengthening force, over F0 [-]
 };
 
-// Throws ParameterError with the key as its path ("range", "lengthrange", "lmin", ...).
+// Throws ParameterError with the key as its path ("range[1]", "lengthrange[0]", "lmin"): the
+// lists and lmin, whose rules are not a range; the other fields' ranges are its description's
+// (model/family_fields.h), which Validate(ModelParams) checks.
 void Validate(const MujocoMuscleParams& params);
 
 namespace mujoco_muscle {

@@ -1,6 +1,6 @@
-// Reading a `model:` block given as text rather than as a file: for callers that hold the
-// block in memory (the Python module turns a dict into JSON, which is YAML). The same reader
-// and the same rules as LoadModelSpec, so a block is accepted or refused alike either way.
+// Reading a `model:` block given as text or as a document rather than as a file: for callers
+// that hold the block in memory (the Python module's dict, as a document). The same reader and
+// the same rules as LoadModelSpec, so a block is accepted or refused alike either way.
 #pragma once
 
 #include <string>

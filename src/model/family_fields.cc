@@ -1,0 +1,119 @@
+#include "musclesim/model/family_fields.h"
+
+#include <utility>
+
+namespace musclesim {
+
+namespace {
+
+using Field = NumberField<ModelParams>;
+
+// A normalised quantity's range [-]: 1e3 is far beyond any muscle's curve.
+constexpr InputRange Normalised(double min, bool min_exclusive, const char* why) {
+  return {min, 1e3, "-", why, min_exclusive};
+}
+
+// f_iso and the pennation angle, every family's.
+std::vector<Field> Common() {
+  Field pennation{"pennation_angle",
+                  InputRange{0.0, 0.0, "rad", ""},
+                  0.0,
+                  "at the optimal fiber length, >= 0 and below pi/2",
+                  [](const ModelParams& p) { return p.pennation_angle; },
+                  [](ModelParams& p, double v) { p.pennation_angle = v; }};
+  pennation.values = FieldValues::kFinite;
+  return {
+      {"f_iso", kPositiveForceRange, std::nullopt, "the maximum isometric force",
+       [](const ModelParams& p) { return p.f_iso; }, [](ModelParams& p, double v) { p.f_iso = v; }},
+      std::move(pennation)};
+}
+
+// A field of DeGrooteParams' member `member`.
+Field DeGroote(const char* key, double DeGrooteParams::*member, const InputRange& range,
+               std::optional<double> fallback, const char* doc) {
+  return {key,
+          range,
+          fallback,
+          doc,
+          [member](const ModelParams& p) { return p.degroote2016.*member; },
+          [member](ModelParams& p, double v) { p.degroote2016.*member = v; }};
+}
+
+Field Mujoco(const char* key, double MujocoMuscleParams::*member, const InputRange& range,
+             double fallback, const char* doc) {
+  return {key,
+          range,
+          fallback,
+          doc,
+          [member](const ModelParams& p) { return p.mujoco.*member; },
+          [member](ModelParams& p, double v) { p.mujoco.*member = v; }};
+}
+
+ModelFamily Family(CurveFamily family, const char* law, std::vector<Field> own) {
+  ModelFamily variant;
+  variant.type = ToString(family);
+  variant.name = variant.type;
+  variant.law = law;
+  variant.fields = Common();
+  for (Field& field : own) variant.fields.push_back(std::move(field));
+  variant.is = [family](const ModelParams& p) { return p.family == family; };
+  variant.make = [family](ModelParams& p) { p.family = family; };
+  return variant;
+}
+
+ModelFamily DeGroote2016() {
+  const DeGrooteParams d;  // OpenSim's defaults
+  return Family(CurveFamily::kDeGroote2016,
+                "OpenSim's DeGrooteFregly2016Muscle: its active, passive and force-velocity curves",
+                {DeGroote("optimal_fiber_length", &DeGrooteParams::optimal_fiber_length,
+                          kLengthRange, std::nullopt, "l_opt, where the active force peaks"),
+                 DeGroote("max_contraction_velocity", &DeGrooteParams::max_contraction_velocity,
+                          InputRange{0.0, 1e6, "l_opt/s", "faster than any muscle by far", true},
+                          d.max_contraction_velocity, "the shortening speed of zero active force"),
+                 DeGroote("active_force_width_scale", &DeGrooteParams::active_force_width_scale,
+                          Normalised(1.0, false, "OpenSim's rule: the curve only widens"),
+                          d.active_force_width_scale, "w, the active curve's widening"),
+                 DeGroote("passive_fiber_strain_at_one_norm_force",
+                          &DeGrooteParams::passive_fiber_strain_at_one_norm_force,
+                          Normalised(0.0, true, "a strain, far beyond any fiber's"),
+                          d.passive_fiber_strain_at_one_norm_force, "e0, the fiber's strain at F0"),
+                 DeGroote("fiber_damping", &DeGrooteParams::fiber_damping,
+                          Normalised(0.0, false, "OpenSim's default 0, its suggestion 0.01"),
+                          d.fiber_damping, "beta: F0 beta v~ beside the curves")});
+}
+
+ModelFamily MuJoCo() {
+  const MujocoMuscleParams m;  // MuJoCo's defaults
+  ModelFamily family = Family(
+      CurveFamily::kMujoco, "MuJoCo's muscle: its piecewise-quadratic curves (mju_muscleGain)",
+      {[&] {
+         Field lmin = Mujoco("lmin", &MujocoMuscleParams::lmin, InputRange{0.0, 0.0, "-", ""},
+                             m.lmin, "where the active curve vanishes below 1, in [0, 1)");
+         lmin.values = FieldValues::kFinite;
+         return lmin;
+       }(),
+       Mujoco("lmax", &MujocoMuscleParams::lmax,
+              Normalised(1.0, true, "the active curve peaks at 1"), m.lmax,
+              "where it vanishes above 1"),
+       Mujoco("vmax", &MujocoMuscleParams::vmax,
+              InputRange{0.0, 1e6, "L0/s", "faster than any muscle by far", true}, m.vmax,
+              "the shortening speed of zero force"),
+       Mujoco("fpmax", &MujocoMuscleParams::fpmax,
+              Normalised(0.0, false, "far beyond any muscle's passive force"), m.fpmax,
+              "the passive force at lmax, over F0"),
+       Mujoco("fvmax", &MujocoMuscleParams::fvmax,
+              Normalised(1.0, true, "the lengthening branch rises from 1 to fvmax"), m.fvmax,
+              "the lengthening force, over F0")});
+  // lists of two, read and checked with the rules between them by the family's reader
+  family.other_keys = {"range", "lengthrange"};
+  return family;
+}
+
+}  // namespace
+
+const std::vector<ModelFamily>& ModelFamilies() {
+  static const std::vector<ModelFamily> families{DeGroote2016(), MuJoCo()};
+  return families;
+}
+
+}  // namespace musclesim
