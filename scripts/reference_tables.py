@@ -19,6 +19,7 @@ BLOCKS = {
     "loads": ("docs/guide/scenarios.md", "loads"),
     "activation dynamics": ("docs/guide/scenarios.md", "activation_dynamics"),
     "model families": ("docs/guide/model.md", "models"),
+    "gains": ("docs/guide/control.md", "gains"),
 }
 
 

@@ -6,6 +6,7 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "musclesim/dynamics/activation_families.h"
+#include "musclesim/dynamics/controller_gains.h"
 #include "musclesim/dynamics/element_laws.h"
 #include "musclesim/dynamics/load_kinds.h"
 #include "musclesim/dynamics/waveform_shapes.h"
@@ -25,6 +26,7 @@ PART is one of
   loads     the spring and mass loads (a force load is a waveform)
   waveforms the shapes of a signal over time (activations, excitations, force loads,
             prescribed motions, references)
+  gains     a controller's gains
   models    the model blocks of the degroote2016 and mujoco curve families
   activation_dynamics
             the families of activation dynamics (their `family:` in place of `type:`)
@@ -46,13 +48,16 @@ int ReferenceCommand(int argc, char** argv) {
     std::cout << ReferenceTable(LoadVariants());
   } else if (part == "waveforms") {
     std::cout << ReferenceTable(WaveformShapes());
+  } else if (part == "gains") {
+    std::cout << ReferenceTable(ControllerGains());
   } else if (part == "models") {
     std::cout << ReferenceTable(ModelFamilies(), "family");
   } else if (part == "activation_dynamics") {
     std::cout << ReferenceTable(ActivationFamilies(), "family");
   } else {
-    throw UsageError("unknown part '" + part +
-                     "': elements, loads, waveforms, models or activation_dynamics (see --help)");
+    throw UsageError(
+        "unknown part '" + part +
+        "': elements, loads, waveforms, gains, models or activation_dynamics (see --help)");
   }
   return 0;
 }

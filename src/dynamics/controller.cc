@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/dynamics/controller_gains.h"
 #include "musclesim/core/enum_names.h"
 
 namespace musclesim {
@@ -77,10 +78,11 @@ void Validate(const Controller& c) {
   ValidateMeasurement(c.measure);
   ValidateUnder("reference", c.reference, [](const Waveform& w) { Validate(w); });
   ValidateUnder("feedforward", c.feedforward, [](const Waveform& w) { Validate(w); });
-  const char* rule = "must be finite and within +-1e9 (beyond it the loop is a switch)";
-  Require(std::abs(c.gains.kp) <= kMaxGain, "gains.kp", c.gains.kp, rule);
-  Require(std::abs(c.gains.ki) <= kMaxGain, "gains.ki", c.gains.ki, rule);
-  Require(std::abs(c.gains.kd) <= kMaxGain, "gains.kd", c.gains.kd, rule);
+  try {
+    ValidateFields(ControllerGains().front(), c.gains);
+  } catch (const ParameterError& error) {
+    throw ParameterError("gains." + error.path(), error.value(), error.rule());
+  }
   if (c.measure.quantity == MeasuredQuantity::kTension) {
     // d(err)/dt would need dT/dt, which depends on the accelerations being computed
     Require(c.gains.kd == 0.0, "gains.kd", c.gains.kd,

@@ -11,6 +11,7 @@
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
 #include "musclesim/dynamics/activation_families.h"
+#include "musclesim/dynamics/controller_gains.h"
 #include "musclesim/dynamics/element_laws.h"
 #include "musclesim/dynamics/load_kinds.h"
 #include "musclesim/dynamics/waveform_shapes.h"
@@ -187,15 +188,9 @@ void ParameterResolver::Controller(std::size_t i) {
     return s.controllers[c];
   };
   if (key == "gains") {
-    End(i + 3);
-    const std::string& leaf = Key(i + 2);
-    double PidGains::*member = leaf == "kp"   ? &PidGains::kp
-                               : leaf == "ki" ? &PidGains::ki
-                               : leaf == "kd" ? &PidGains::kd
-                                              : nullptr;
-    if (member == nullptr) Fail("names no gain (kp, ki, kd)");
-    return Number([at, member](Scenario& s) -> double& { return at(s).gains.*member; },
-                  &kGainRange);
+    const NumberField<PidGains>* field = FindField(ControllerGains().front(), PathFrom(i + 2));
+    if (field == nullptr) Fail("names no gain (" + FieldKeys(ControllerGains().front()) + ")");
+    return Field(*field, Locate<PidGains>([at](Scenario& s) -> PidGains& { return at(s).gains; }));
   }
   if (key == "reference") {
     const bool tension = controller.measure.quantity == MeasuredQuantity::kTension;

@@ -15,6 +15,7 @@
 
 #include "musclesim/core/errors.h"
 #include "musclesim/dynamics/activation_families.h"
+#include "musclesim/dynamics/controller_gains.h"
 #include "musclesim/dynamics/element_laws.h"
 #include "musclesim/dynamics/load_kinds.h"
 #include "musclesim/dynamics/waveform_shapes.h"
@@ -72,6 +73,11 @@ TEST(ReferenceTable, WaveformShapesInTheScenariosGuideAreTheDescriptions) {
 TEST(ReferenceTable, ModelFamiliesInTheModelGuideAreTheDescriptions) {
   EXPECT_EQ(Block(Read("docs/guide/model.md"), "model families"),
             ReferenceTable(ModelFamilies(), "family"))
+      << kRewrite;
+}
+
+TEST(ReferenceTable, GainsInTheControlGuideAreTheDescription) {
+  EXPECT_EQ(Block(Read("docs/guide/control.md"), "gains"), ReferenceTable(ControllerGains()))
       << kRewrite;
 }
 

@@ -3,8 +3,10 @@
 #include <utility>
 
 #include "io/readers/network_parts_yaml.h"
+#include "io/readers/part_fields_yaml.h"
 #include "io/readers/scenario_fields.h"
 #include "musclesim/core/input_ranges.h"
+#include "musclesim/dynamics/controller_gains.h"
 
 namespace musclesim {
 
@@ -87,11 +89,9 @@ Measurement ReadMeasurement(const yaml::Source& src, const Document& item, const
 PidGains ReadGains(const yaml::Source& src, const Document& item, const std::string& path) {
   const Document& node = Required(src, item, path, "gains");
   const std::string at = Join(path, "gains");
-  yaml::RequireMap(src, node, at, {"kp", "ki", "kd"});
+  yaml::RequireMap(src, node, at, VariantKeys(ControllerGains(), "pid"));
   PidGains gains;
-  gains.kp = yaml::ReadOptionalNumberIn(src, node, at, "kp", kGainRange, 0.0);
-  gains.ki = yaml::ReadOptionalNumberIn(src, node, at, "ki", kGainRange, 0.0);
-  gains.kd = yaml::ReadOptionalNumberIn(src, node, at, "kd", kGainRange, 0.0);
+  ReadFields(src, node, at, ControllerGains().front(), gains);
   return gains;
 }
 
