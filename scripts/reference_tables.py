@@ -14,6 +14,7 @@ import sys
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 # block name -> (page, part)
 BLOCKS = {
+    "actuator": ("docs/guide/scenarios.md", "actuator"),
     "element laws": ("docs/guide/networks.md", "elements"),
     "waveforms": ("docs/guide/scenarios.md", "waveforms"),
     "loads": ("docs/guide/scenarios.md", "loads"),

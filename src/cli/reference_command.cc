@@ -6,6 +6,7 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "musclesim/dynamics/activation_families.h"
+#include "musclesim/dynamics/actuator_fields.h"
 #include "musclesim/dynamics/controller_gains.h"
 #include "musclesim/dynamics/element_laws.h"
 #include "musclesim/dynamics/load_kinds.h"
@@ -22,6 +23,7 @@ constexpr const char* kHelp = R"(usage: musclesim reference PART
 Prints, as a Markdown table, every key of PART with its unit, default, accepted values and
 their reason, and its meaning: what the readers, --set and the parameter handles apply.
 PART is one of
+  actuator  the single actuator's `actuator:` block
   elements  the laws of springs, tendons and dampers (a network's elements)
   loads     the spring and mass loads (a force load is a waveform)
   waveforms the shapes of a signal over time (activations, excitations, force loads,
@@ -42,7 +44,9 @@ int ReferenceCommand(int argc, char** argv) {
   }
   if (args.positional.size() != 1) throw UsageError("expected one part (see --help)");
   const std::string& part = args.positional[0];
-  if (part == "elements") {
+  if (part == "actuator") {
+    std::cout << ReferenceTable(ActuatorBlock(), "block");
+  } else if (part == "elements") {
     std::cout << ReferenceTable(ElementLaws());
   } else if (part == "loads") {
     std::cout << ReferenceTable(LoadVariants());
@@ -55,9 +59,9 @@ int ReferenceCommand(int argc, char** argv) {
   } else if (part == "activation_dynamics") {
     std::cout << ReferenceTable(ActivationFamilies(), "family");
   } else {
-    throw UsageError(
-        "unknown part '" + part +
-        "': elements, loads, waveforms, gains, models or activation_dynamics (see --help)");
+    throw UsageError("unknown part '" + part +
+                     "': actuator, elements, loads, waveforms, gains, models or "
+                     "activation_dynamics (see --help)");
   }
   return 0;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/dynamics/actuator_fields.h"
 
 namespace musclesim {
 
@@ -48,14 +49,7 @@ const ExcitationInput& CheckedExcitation(const ExcitationInput& input) {
 
 }  // namespace
 
-void Validate(const ActuatorParams& p) {
-  Require(std::isfinite(p.mass) && p.mass > 0.0, "mass", p.mass, "must be finite and > 0 [kg]");
-  Require(std::isfinite(p.damping) && p.damping >= 0.0, "damping", p.damping,
-          "must be finite and >= 0 [N s/m]");
-  Require(std::isfinite(p.stiffness) && p.stiffness >= 0.0, "stiffness", p.stiffness,
-          "must be finite and >= 0 [N/m]");
-  Require(std::isfinite(p.rest_length), "rest_length", p.rest_length, "must be finite [m]");
-}
+void Validate(const ActuatorParams& p) { ValidateFields(ActuatorBlock().front(), p); }
 
 ActuatorSystem::ActuatorSystem(std::shared_ptr<const TensionModel> model,
                                const ActuatorParams& actuator, Waveform activation,

@@ -184,8 +184,9 @@ Node Node::Free(std::string name, double mass, double position, double velocity)
 namespace {
 
 // A passive element's numbers against its law's ranges (dynamics/element_laws.h). De Groote's
-// tendon is checked as the exponential it is stored as: its strain, recomputed from alpha,
-// may round past the bound it was given at (Element::DeGrooteTendon checks what it is given).
+// tendon is stored as k = 0.2 F0, alpha = ln 6 / strain / l_s: its F0 and strain, recomputed,
+// may round past the bounds they were given at (Element::DeGrooteTendon checks what it is
+// given), so what is checked here is what the law needs, under the keys a file gives.
 void ValidateLaw(const Element& e) {
   // a k that is not > 0 reads as a linear tendon: it must be 0 then
   if (e.kind == ElementKind::kTendon && !e.exponential() && e.k != 0.0) {
@@ -195,13 +196,12 @@ void ValidateLaw(const Element& e) {
   if (law == nullptr) {
     throw ParameterError("pushes_below_slack", "true", "needs an exponential tendon (De Groote's)");
   }
-  if (e.pushes_below_slack) {
-    RequireInRange("slack_length", e.slack_length, kDeGrooteSlackRange);
-    Element stored = e;
-    stored.pushes_below_slack = false;
-    law = LawOf(stored);
-  }
-  ValidateFields(*law, e);
+  if (!e.pushes_below_slack) return ValidateFields(*law, e);
+  RequireInRange("slack_length", e.slack_length, kDeGrooteSlackRange);
+  Require(e.k <= 0.2 * kPositiveForceRange.max, "degroote2016.max_isometric_force", e.k / 0.2,
+          kPositiveForceRange.Rule());
+  Require(std::isfinite(e.alpha) && e.alpha > 0.0, "degroote2016.strain_at_one_norm_force",
+          std::log(6.0) / (e.alpha * e.slack_length), kTendonStrainRange.Rule());
 }
 
 }  // namespace

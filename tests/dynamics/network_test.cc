@@ -445,5 +445,35 @@ TEST(NetworkElements, DeGrooteTendonIsOpenSims) {
   }
 }
 
+// De Groote's tendon is stored as an exponential whose alpha = ln 6 / (strain l_s) may be far
+// past an exponential tendon's own bound: a micrometre tendon at 0.1 % strain (alpha about
+// 1.8e9 1/m) is accepted and carries F0 at its strain, and what is refused is named by the
+// keys a file gives it.
+TEST(NetworkElements, ADeGrooteTendonIsCheckedUnderItsOwnKeys) {
+  const double slack = 1e-6, strain = 1e-3, f_iso = 50.0;
+  const Element tiny = Element::DeGrooteTendon("tendon", "wall", "end", slack, f_iso, strain);
+  EXPECT_GT(tiny.alpha, 1e9);
+  const NetworkSystem system({Node::Fixed("wall", 0.0), Node::Free("end", 1.0, slack)}, {tiny});
+  ElementSample sample;
+  const double y[2] = {slack * (1.0 + strain), 0.0};
+  system.ObserveElement(0, 0.0, y, sample);
+  EXPECT_NEAR(sample.tension, f_iso, 1e-9 * f_iso);  // F0 (0.2 exp(ln 6) - 0.2) = F0
+
+  Element broken = tiny;
+  broken.slack_length = 0.0;
+  try {
+    Validate(broken);
+    FAIL() << "a slack length of 0 was accepted";
+  } catch (const ParameterError& e) {
+    EXPECT_EQ(e.path(), "slack_length");
+  }
+  try {
+    Element::DeGrooteTendon("tendon", "wall", "end", slack, 0.0, strain);
+    FAIL() << "F0 = 0 was accepted";
+  } catch (const ParameterError& e) {
+    EXPECT_EQ(e.path(), "degroote2016.max_isometric_force");
+  }
+}
+
 }  // namespace
 }  // namespace musclesim

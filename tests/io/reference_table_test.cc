@@ -15,6 +15,7 @@
 
 #include "musclesim/core/errors.h"
 #include "musclesim/dynamics/activation_families.h"
+#include "musclesim/dynamics/actuator_fields.h"
 #include "musclesim/dynamics/controller_gains.h"
 #include "musclesim/dynamics/element_laws.h"
 #include "musclesim/dynamics/load_kinds.h"
@@ -81,6 +82,12 @@ TEST(ReferenceTable, GainsInTheControlGuideAreTheDescription) {
       << kRewrite;
 }
 
+TEST(ReferenceTable, TheActuatorBlockInTheScenariosGuideIsTheDescription) {
+  EXPECT_EQ(Block(Read("docs/guide/scenarios.md"), "actuator"),
+            ReferenceTable(ActuatorBlock(), "block"))
+      << kRewrite;
+}
+
 TEST(ReferenceTable, RendersEachFieldOnceWithItsDefaultAndBounds) {
   const std::string table = ReferenceTable(LoadVariants());
   EXPECT_THAT(table, HasSubstr("| `mass` (hanging mass) | F = mass gravity"));
@@ -88,12 +95,8 @@ TEST(ReferenceTable, RendersEachFieldOnceWithItsDefaultAndBounds) {
   EXPECT_THAT(table, HasSubstr("| `stiffness` | N/m | required | from 0 to 1e+12: "));
 }
 
-// A network with one element written as `element` (a map's inner text), read from memory.
-std::string ElementError(const std::string& element) {
-  const std::string text =
-      "nodes:\n  - {name: wall, fixed: 0.0}\n  - {name: load, mass: 1.0, position: 0.1}\n"
-      "elements:\n  - {name: e, from: wall, to: load, " +
-      element + "}\ntime: {start: 0.0, end: 0.1}\n";
+// The message of reading the network file `text` from memory, or "(read)".
+std::string NetworkError(const std::string& text) {
   try {
     ReadScenario(ParseDocument("net.yaml", text), "net.yaml");
   } catch (const InputError& error) {
@@ -102,47 +105,90 @@ std::string ElementError(const std::string& element) {
   return "(read)";
 }
 
-// Every field of every law: its value just past each bound is refused with the bound's rule,
-// by the reader, at its key path; a default applies when the key is absent.
-TEST(ReferenceTable, TheReaderAppliesEachLawsRanges) {
-  const auto text_of = [](const ElementLaw& law, const ElementField& changed, double value) {
-    std::string keys = std::string("type: ") + law.type;
-    std::string nested;  // "exponential: {k: 1, alpha: 2}"
-    std::string head;
-    for (const ElementField& field : law.fields) {
-      const double v = &field == &changed ? value : field.range.max / 2.0;
-      const std::string key = field.key;
-      const std::string number = FormatNumber(v);
-      if (key.find('.') == std::string::npos) {
-        keys += ", " + key + ": " + number;
-        continue;
-      }
-      const std::string h(HeadKey(key));
-      if (h != head) {
-        if (!nested.empty()) keys += ", " + nested + "}";
-        nested = h + ": {";
-        head = h;
-      } else {
-        nested += ", ";
-      }
-      nested += key.substr(h.size() + 1) + ": " + number;
+// The inner text of a map holding every field of `variant` (`name_key: type` first), nested
+// fields in their own maps: `changed` at `value`, each other ranged field at half its maximum.
+template <typename Part>
+std::string FieldsText(const PartVariant<Part>& variant, const NumberField<Part>& changed,
+                       double value, const std::string& name_key) {
+  std::string keys = name_key + ": " + variant.type;
+  std::string nested;  // "exponential: {k: 1, alpha: 2"
+  std::string head;
+  for (const NumberField<Part>& field : variant.fields) {
+    const double v = &field == &changed ? value : field.range.max / 2.0;
+    const std::string key = field.key;
+    const std::string number = FormatNumber(v);
+    if (key.find('.') == std::string::npos) {
+      keys += ", " + key + ": " + number;
+      continue;
     }
-    if (!nested.empty()) keys += ", " + nested + "}";
-    return keys;
-  };
-  for (const ElementLaw& law : ElementLaws()) {
-    for (const ElementField& field : law.fields) {
-      SCOPED_TRACE(std::string(law.name) + " " + field.key);
-      const double past_max = field.range.max * 2.0;
-      const double below_min = field.range.min_exclusive ? field.range.min : field.range.min - 1.0;
-      for (const double bad : {past_max, below_min}) {
-        const std::string message = ElementError(text_of(law, field, bad));
-        EXPECT_THAT(message, HasSubstr("elements[0]." + std::string(field.key) + " = "));
+    const std::string h(HeadKey(key));
+    if (h != head) {
+      if (!nested.empty()) keys += ", " + nested + "}";
+      nested = h + ": {";
+      head = h;
+    } else {
+      nested += ", ";
+    }
+    nested += key.substr(h.size() + 1) + ": " + number;
+  }
+  if (!nested.empty()) keys += ", " + nested + "}";
+  return keys;
+}
+
+// Every ranged field of every variant, through the reader: its value just past each bound is
+// refused with the bound's rule at `prefix` + its key, and its largest value is read.
+// `file(fields)` is a network file holding the part written as `fields`.
+template <typename Part, typename File>
+void ExpectEachBoundRefused(const std::vector<PartVariant<Part>>& variants,
+                            const std::string& name_key, const std::string& prefix, File file) {
+  for (const PartVariant<Part>& variant : variants) {
+    for (const NumberField<Part>& field : variant.fields) {
+      if (field.values != FieldValues::kRange) continue;
+      SCOPED_TRACE(std::string(variant.name) + " " + field.key);
+      const auto text = [&](double value) {
+        return file(FieldsText(variant, field, value, name_key));
+      };
+      const double below = field.range.min_exclusive ? field.range.min : field.range.min - 1.0;
+      for (const double bad : {field.range.max * 2.0, below}) {
+        const std::string message = NetworkError(text(bad));
+        EXPECT_THAT(message, HasSubstr(prefix + field.key + " = "));
         EXPECT_THAT(message, HasSubstr(field.range.Rule()));
       }
-      EXPECT_EQ(ElementError(text_of(law, field, field.range.max)), "(read)");
+      EXPECT_EQ(NetworkError(text(field.range.max)), "(read)");
     }
   }
+}
+
+constexpr const char* kTwoNodes =
+    "nodes:\n  - {name: wall, fixed: 0.0}\n  - {name: load, mass: 1.0, position: 0.1}\n";
+constexpr const char* kTime = "time: {start: 0.0, end: 0.1}\n";
+
+TEST(ReferenceTable, TheReaderAppliesEachLawsRanges) {
+  ExpectEachBoundRefused(ElementLaws(), "type", "elements[0].", [](const std::string& fields) {
+    return std::string(kTwoNodes) + "elements:\n  - {name: e, from: wall, to: load, " + fields +
+           "}\n" + kTime;
+  });
+}
+
+TEST(ReferenceTable, TheReaderAppliesEachLoadsRanges) {
+  ExpectEachBoundRefused(LoadVariants(), "type", "loads[0].", [](const std::string& fields) {
+    return std::string(kTwoNodes) +
+           "elements:\n  - {name: e, type: spring, from: wall, to: load, stiffness: 10, "
+           "rest_length: 0.1}\nloads:\n  - {node: load, " +
+           fields + "}\n" + kTime;
+  });
+}
+
+TEST(ReferenceTable, TheReaderAppliesEachActivationFamilysRanges) {
+  ExpectEachBoundRefused(
+      ActivationFamilies(), "family", "elements[0].activation_dynamics.",
+      [](const std::string& fields) {
+        return std::string(kTwoNodes) +
+               "models:\n  m: {family: degroote2016, f_iso: 100, optimal_fiber_length: 0.1}\n"
+               "elements:\n  - {name: e, type: actuator, from: wall, to: load, model: m, "
+               "excitation: {type: constant, value: 0.5}, activation_dynamics: {" +
+               fields + "}}\n" + kTime;
+      });
 }
 
 // The same for the other families' model blocks: each ranged field past each bound refused

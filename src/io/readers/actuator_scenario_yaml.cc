@@ -2,8 +2,10 @@
 #include <cmath>
 
 #include "musclesim/core/input_ranges.h"
+#include "musclesim/dynamics/actuator_fields.h"
 #include "musclesim/model/passive.h"
 #include "io/readers/model_yaml_node.h"
+#include "io/readers/part_fields_yaml.h"
 #include "io/readers/scenario_fields.h"
 #include "io/readers/scenario_readers.h"
 
@@ -54,15 +56,8 @@ ActuatorScenarioSpec ReadActuatorScenarioSpec(const yaml::Source& src, const Doc
   s.model = ReadModelSpec(src, Required(src, root, "", "model"), "model");
 
   const Document& actuator = Required(src, root, "", "actuator");
-  yaml::RequireMap(src, actuator, "actuator", {"mass", "damping", "stiffness", "rest_length"});
-  s.actuator.mass = yaml::ReadNumberIn(src, Required(src, actuator, "actuator", "mass"),
-                                       "actuator.mass", kMassRange);
-  s.actuator.damping =
-      yaml::ReadOptionalNumberIn(src, actuator, "actuator", "damping", kDampingRange, 0.0);
-  s.actuator.stiffness =
-      yaml::ReadOptionalNumberIn(src, actuator, "actuator", "stiffness", kStiffnessRange, 0.0);
-  s.actuator.rest_length =
-      yaml::ReadOptionalNumberIn(src, actuator, "actuator", "rest_length", kPositionRange, 0.0);
+  yaml::RequireMap(src, actuator, "actuator", VariantKeys(ActuatorBlock(), "actuator"));
+  ReadFields(src, actuator, "actuator", ActuatorBlock().front(), s.actuator);
   ValidateAt(src, actuator, "actuator", [&] { Validate(s.actuator); });
   // before what needs it: the shortest interval, step and pulse are measured against it
   const TimeSpan time = ReadTime(src, Required(src, root, "", "time"));

@@ -51,7 +51,7 @@ const PartVariant<Part>* SelectVariant(const yaml::Source& src, const Document& 
                 : v + 1 == of_type.size() ? " or "
                                           : ", ")
         .append(variant->selector_doc);
-    if (item[variant->selector]) {
+    if (variant->selector != nullptr && item[variant->selector]) {
       given.append(given.empty() ? "" : " and ").append(variant->selector);
       chosen = variant;
     }

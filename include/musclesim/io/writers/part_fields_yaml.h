@@ -1,7 +1,9 @@
 // Writing a described part's numbers (core/part_fields.h) as YAML flow-map text, in its
 // fields' order, nested fields in their own maps: "tau_activation: 0.01, tau_deactivation:
-// 0.04", "slack_length: 0.2, exponential: {k: 1, alpha: 30}". Numbers as FormatNumber gives
-// them (the shortest text that reads back the same double).
+// 0.04", "slack_length: 0.2, exponential: {k: 1, alpha: 30}": one level of nesting, each
+// nested map's fields listed together. Each number is its getter's, as FormatNumber writes it
+// (the shortest text that reads back as that double); a field derived from others (a De Groote
+// tendon's strain) may be an ulp from the value it was made from.
 #pragma once
 
 #include <sstream>

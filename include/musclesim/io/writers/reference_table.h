@@ -11,8 +11,6 @@
 
 namespace musclesim {
 
-// `key` heads the column of the variants' names: the key that names one in a file ("type",
-// "family").
 // The accepted-values cell of `field`: its bounds and why, or where they come from.
 template <typename Part>
 std::string AcceptedCell(const NumberField<Part>& field) {
@@ -48,7 +46,7 @@ std::string ReferenceTable(const std::vector<PartVariant<Part>>& variants,
           AcceptedCell(field) + " | " + field.doc);
     }
     for (const char* other : variant.other_keys) {
-      row(std::string("`") + other + "` | | required | as its law says | ");
+      row(std::string("`") + other + "` | | | its own rules (above) | ");
     }
   }
   return table;
