@@ -6,7 +6,7 @@
 #include "musclesim/core/number_format.h"
 #include "musclesim/core/printable_text.h"
 #include "musclesim/dynamics/activation_families.h"
-#include "musclesim/io/writers/part_fields_yaml.h"
+#include "musclesim/io/writers/flow_fields.h"
 #include "musclesim/model/tension.h"
 
 namespace musclesim {
