@@ -191,6 +191,20 @@ TEST(ReferenceTable, TheReaderAppliesEachActivationFamilysRanges) {
       });
 }
 
+TEST(ReferenceTable, TheReaderAppliesEachGainsRange) {
+  // FieldsText writes `type: pid` first, the controller's own type key
+  ExpectEachBoundRefused(
+      ControllerGains(), "type", "controllers[0].gains.", [](std::string fields) {
+        fields.replace(0, std::string("type: pid, ").size(), "");  // the gains' own map
+        return std::string(kTwoNodes) +
+               "models:\n  m: {family: degroote2016, f_iso: 100, optimal_fiber_length: 0.1}\n"
+               "elements:\n  - {name: e, type: actuator, from: wall, to: load, model: m}\n"
+               "controllers:\n  - {name: c, type: pid, measure: {element: e, quantity: length}, "
+               "reference: {type: constant, value: 0.1}, drives: e, gains: {" +
+               fields + "}}\n" + kTime;
+      });
+}
+
 // The same for the other families' model blocks: each ranged field past each bound refused
 // with its rule at model.KEY, and its largest value read.
 TEST(ReferenceTable, TheReaderAppliesEachModelFamilysRanges) {
