@@ -7,27 +7,17 @@ namespace {
 // kGainRange in the gain's own unit.
 NumberField<PidGains> Gain(const char* key, double PidGains::*member, const char* unit,
                            const char* doc) {
-  return {key,
-          InputRange{kGainRange.min, kGainRange.max, unit, kGainRange.why},
-          0.0,
-          doc,
-          [member](const PidGains& g) { return g.*member; },
-          [member](PidGains& g, double v) { g.*member = v; }};
+  return MemberField(key, member, InputRange{kGainRange.min, kGainRange.max, unit, kGainRange.why},
+                     0.0, doc);
 }
 
 PartVariant<PidGains> Pid() {
-  PartVariant<PidGains> pid;
-  pid.type = "pid";
-  pid.name = "pid";
-  pid.law = "c = u_ff + kp err + ki z + kd (r' - y'), z' = err, clamped to [0, 1]";
-  pid.fields = {
-      Gain("kp", &PidGains::kp, "1/unit", "negative where more activation lowers the error"),
-      Gain("ki", &PidGains::ki, "1/(unit s)", "0 gives the controller no integral state"),
-      Gain("kd", &PidGains::kd, "s/unit", "0 on a tension (its rate would be an algebraic loop)"),
-  };
-  pid.is = [](const PidGains&) { return true; };
-  pid.make = [](PidGains&) {};
-  return pid;
+  return OnlyVariant<PidGains>(
+      "pid", "c = u_ff + kp err + ki z + kd (r' - y'), z' = err, clamped to [0, 1]",
+      {Gain("kp", &PidGains::kp, "1/unit", "negative where more activation lowers the error"),
+       Gain("ki", &PidGains::ki, "1/(unit s)", "0 gives the controller no integral state"),
+       Gain("kd", &PidGains::kd, "s/unit",
+            "0 on a tension (its rate would be an algebraic loop)")});
 }
 
 }  // namespace

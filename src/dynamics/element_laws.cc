@@ -11,18 +11,21 @@ constexpr double kDeGrooteTendonStrain = 0.049;
 
 int Tag(ElementPartial partial) { return static_cast<int>(partial); }
 
+// A spring's or linear tendon's stiffness.
+ElementField Stiffness() {
+  return MemberField("stiffness", &Element::stiffness, kStiffnessRange, std::nullopt,
+                     "the force per metre of stretch", Tag(ElementPartial::kStiffness));
+}
+
 ElementLaw Spring() {
   ElementLaw law;
   law.type = "spring";
   law.name = "spring";
   law.law = "T = stiffness (l - rest_length), pushing when compressed";
   law.fields = {
-      {"stiffness", kStiffnessRange, std::nullopt, "the force per metre of stretch",
-       [](const Element& e) { return e.stiffness; }, [](Element& e, double v) { e.stiffness = v; },
-       Tag(ElementPartial::kStiffness)},
-      {"rest_length", kPositionRange, std::nullopt, "the length at which it pulls nothing",
-       [](const Element& e) { return e.rest_length; },
-       [](Element& e, double v) { e.rest_length = v; }, Tag(ElementPartial::kRestLength)},
+      Stiffness(),
+      MemberField("rest_length", &Element::rest_length, kPositionRange, std::nullopt,
+                  "the length at which it pulls nothing", Tag(ElementPartial::kRestLength)),
   };
   law.is = [](const Element& e) { return e.kind == ElementKind::kSpring; };
   law.make = [](Element& e) { e.kind = ElementKind::kSpring; };
@@ -30,13 +33,8 @@ ElementLaw Spring() {
 }
 
 ElementField SlackLength() {
-  return {"slack_length",
-          kSlackLengthRange,
-          std::nullopt,
-          "the length below which it pulls nothing",
-          [](const Element& e) { return e.slack_length; },
-          [](Element& e, double v) { e.slack_length = v; },
-          Tag(ElementPartial::kSlackLength)};
+  return MemberField("slack_length", &Element::slack_length, kSlackLengthRange, std::nullopt,
+                     "the length below which it pulls nothing", Tag(ElementPartial::kSlackLength));
 }
 
 ElementLaw LinearTendon() {
@@ -48,9 +46,7 @@ ElementLaw LinearTendon() {
   law.law = "T = stiffness (l - slack_length) above the slack length, else 0";
   law.fields = {
       SlackLength(),
-      {"stiffness", kStiffnessRange, std::nullopt, "the force per metre of stretch",
-       [](const Element& e) { return e.stiffness; }, [](Element& e, double v) { e.stiffness = v; },
-       Tag(ElementPartial::kStiffness)},
+      Stiffness(),
   };
   law.is = [](const Element& e) {
     return e.kind == ElementKind::kTendon && !e.exponential() && !e.pushes_below_slack;
@@ -68,13 +64,11 @@ ElementLaw ExponentialTendon() {
   law.law = "T = k (exp(alpha (l - slack_length)) - 1) above the slack length, else 0";
   law.fields = {
       SlackLength(),
-      {"exponential.k", kPositiveForceRange, std::nullopt, "the tension's scale",
-       [](const Element& e) { return e.k; }, [](Element& e, double v) { e.k = v; },
-       Tag(ElementPartial::kScale)},
-      {"exponential.alpha", kTendonRateRange, std::nullopt,
-       "the rate: the tension grows e-fold over 1/alpha of stretch",
-       [](const Element& e) { return e.alpha; }, [](Element& e, double v) { e.alpha = v; },
-       Tag(ElementPartial::kRate)},
+      MemberField("exponential.k", &Element::k, kPositiveForceRange, std::nullopt,
+                  "the tension's scale", Tag(ElementPartial::kScale)),
+      MemberField("exponential.alpha", &Element::alpha, kTendonRateRange, std::nullopt,
+                  "the rate: the tension grows e-fold over 1/alpha of stretch",
+                  Tag(ElementPartial::kRate)),
   };
   law.is = [](const Element& e) {
     return e.kind == ElementKind::kTendon && e.exponential() && !e.pushes_below_slack;
@@ -130,9 +124,8 @@ ElementLaw Damper() {
   law.name = "damper";
   law.law = "T = damping dl/dt";
   law.fields = {
-      {"damping", kDampingRange, std::nullopt, "the force per metre per second of lengthening",
-       [](const Element& e) { return e.damping; }, [](Element& e, double v) { e.damping = v; },
-       Tag(ElementPartial::kDamping)},
+      MemberField("damping", &Element::damping, kDampingRange, std::nullopt,
+                  "the force per metre per second of lengthening", Tag(ElementPartial::kDamping)),
   };
   law.is = [](const Element& e) { return e.kind == ElementKind::kDamper; };
   law.make = [](Element& e) { e.kind = ElementKind::kDamper; };

@@ -12,12 +12,7 @@ using Member = double Waveform::*;
 // The field of the member `member`: a time (kTimeRange), a value of the signal, or any
 // finite number (Validate(Waveform) states its rule).
 Field Of(const char* key, Member member, const InputRange& range, const char* doc) {
-  return {key,
-          range,
-          std::nullopt,
-          doc,
-          [member](const Waveform& w) { return w.*member; },
-          [member](Waveform& w, double v) { w.*member = v; }};
+  return MemberField(key, member, range, std::nullopt, doc);
 }
 
 Field Time(const char* key, Member member, const char* doc) {

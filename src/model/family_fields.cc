@@ -15,38 +15,36 @@ constexpr InputRange Normalised(double min, bool min_exclusive, const char* why)
 
 // f_iso and the pennation angle, every family's.
 std::vector<Field> Common() {
-  Field pennation{"pennation_angle",
-                  InputRange{0.0, 0.0, "rad", ""},
-                  0.0,
-                  "at the optimal fiber length, >= 0 and below pi/2",
-                  [](const ModelParams& p) { return p.pennation_angle; },
-                  [](ModelParams& p, double v) { p.pennation_angle = v; }};
+  Field pennation =
+      MemberField("pennation_angle", &ModelParams::pennation_angle, InputRange{0.0, 0.0, "rad", ""},
+                  0.0, "at the optimal fiber length, >= 0 and below pi/2");
   pennation.values = FieldValues::kFinite;
-  return {
-      {"f_iso", kPositiveForceRange, std::nullopt, "the maximum isometric force",
-       [](const ModelParams& p) { return p.f_iso; }, [](ModelParams& p, double v) { p.f_iso = v; }},
-      std::move(pennation)};
+  return {MemberField("f_iso", &ModelParams::f_iso, kPositiveForceRange, std::nullopt,
+                      "the maximum isometric force"),
+          std::move(pennation)};
 }
 
-// A field of DeGrooteParams' member `member`.
-Field DeGroote(const char* key, double DeGrooteParams::*member, const InputRange& range,
-               std::optional<double> fallback, const char* doc) {
+// A field of a family's own block `block` (ModelParams::degroote2016, ::mujoco): its member
+// `member`.
+template <typename Block>
+Field Own(const char* key, Block ModelParams::*block, double Block::*member,
+          const InputRange& range, std::optional<double> fallback, const char* doc) {
   return {key,
           range,
           fallback,
           doc,
-          [member](const ModelParams& p) { return p.degroote2016.*member; },
-          [member](ModelParams& p, double v) { p.degroote2016.*member = v; }};
+          [block, member](const ModelParams& p) { return p.*block.*member; },
+          [block, member](ModelParams& p, double v) { p.*block.*member = v; }};
+}
+
+Field DeGroote(const char* key, double DeGrooteParams::*member, const InputRange& range,
+               std::optional<double> fallback, const char* doc) {
+  return Own(key, &ModelParams::degroote2016, member, range, fallback, doc);
 }
 
 Field Mujoco(const char* key, double MujocoMuscleParams::*member, const InputRange& range,
              double fallback, const char* doc) {
-  return {key,
-          range,
-          fallback,
-          doc,
-          [member](const ModelParams& p) { return p.mujoco.*member; },
-          [member](ModelParams& p, double v) { p.mujoco.*member = v; }};
+  return Own(key, &ModelParams::mujoco, member, range, fallback, doc);
 }
 
 ModelFamily Family(CurveFamily family, const char* law, std::vector<Field> own) {

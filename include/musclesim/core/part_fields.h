@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "musclesim/core/input_ranges.h"
@@ -53,6 +54,34 @@ struct PartVariant {
   std::function<bool(const Part&)> is;  // whether a part is of this variant
   std::function<void(Part&)> make;      // gives a part this variant's kind, before its fields
 };
+
+// The field of the number `member` of a Part.
+template <typename Part>
+NumberField<Part> MemberField(const char* key, double Part::*member, const InputRange& range,
+                              std::optional<double> fallback, const char* doc, int partial = -1) {
+  return {key,
+          range,
+          fallback,
+          doc,
+          [member](const Part& part) { return part.*member; },
+          [member](Part& part, double v) { part.*member = v; },
+          partial};
+}
+
+// A part of one variant only (a block of numbers such as a controller's gains): every part
+// is of it, and making one changes nothing.
+template <typename Part>
+PartVariant<Part> OnlyVariant(const char* type, const char* law,
+                              std::vector<NumberField<Part>> fields) {
+  PartVariant<Part> variant;
+  variant.type = type;
+  variant.name = type;
+  variant.law = law;
+  variant.fields = std::move(fields);
+  variant.is = [](const Part&) { return true; };
+  variant.make = [](Part&) {};
+  return variant;
+}
 
 // The field of `variant` whose key is `key` ("exponential.k"); null when it has none.
 template <typename Part>
