@@ -85,12 +85,16 @@ mutation passive-kink-strict include/musclesim/model/passive.h \
 mutation passive-slope-drops-alpha include/musclesim/model/passive.h \
   'params.k_p * params.alpha * growth' \
   'params.k_p * growth' "$t_passive" "$r_passive"
+# the curve's ranges, in its description (PassiveBlock)
 mutation passive-kp-zero-refused src/model/passive.cc \
-  'params.k_p >= 0.0, "k_p"' \
-  'params.k_p > 0.0, "k_p"' "$t_passive" "$r_passive"
+  'InputRange{0.0, kPositiveForceRange.max, "N", kPositiveForceRange.why}' \
+  'InputRange{0.0, kPositiveForceRange.max, "N", kPositiveForceRange.why, true}' \
+  "$t_passive" "$r_passive"
 mutation passive-alpha-zero-accepted src/model/passive.cc \
-  'params.alpha > 0.0, "alpha"' \
-  'params.alpha >= 0.0, "alpha"' "$t_passive" "$r_passive"
+  '"actuator'"'"'s",
+                              true},' \
+  '"actuator'"'"'s",
+                              false},' "$t_passive" "$r_passive"
 
 # --- tension-velocity g_eps and its slope (eq. 12, section 4) ---
 # (alpha - 1) / 2 is now one helper, HalfExponent, of both the shortening and the
@@ -254,12 +258,16 @@ mutation loads-added-mass-last-only src/dynamics/loads.cc \
 mutation loads-breakpoints-unsorted src/dynamics/loads.cc \
   '  SortUnique(times);' \
   '  // SortUnique(times);' "$t_loads" "$r_loads"
-mutation loads-zero-mass-accepted src/dynamics/loads.cc \
-  'load.mass > 0.0, "mass"' \
-  'load.mass >= 0.0, "mass"' "$t_loads" "$r_loads"
-mutation loads-zero-stiffness-refused src/dynamics/loads.cc \
-  'load.stiffness >= 0.0, "stiffness"' \
-  'load.stiffness > 0.0, "stiffness"' "$t_loads" "$r_loads"
+# the spring's and the mass's ranges, in their kinds' descriptions (LoadVariants), which
+# Validate(Load) checks
+mutation loads-zero-mass-accepted src/dynamics/load_kinds.cc \
+  'MemberField("mass", &Load::mass, kMassRange, std::nullopt,' \
+  'MemberField("mass", &Load::mass, InputRange{0.0, kMassRange.max, "kg", kMassRange.why}, std::nullopt,' \
+  "$t_loads" "$r_loads"
+mutation loads-zero-stiffness-refused src/dynamics/load_kinds.cc \
+  'MemberField("stiffness", &Load::stiffness, kStiffnessRange, std::nullopt,' \
+  'MemberField("stiffness", &Load::stiffness, InputRange{0.0, kStiffnessRange.max, "N/m", kStiffnessRange.why, true}, std::nullopt,' \
+  "$t_loads" "$r_loads"
 mutation loads-error-index-off-by-one src/dynamics/loads.cc \
   '"load[" + std::to_string(i) + "]."' \
   '"load[" + std::to_string(i + 1) + "]."' "$t_loads" "$r_loads"
@@ -283,38 +291,44 @@ mutation actuator-ignores-load-mass src/dynamics/actuator.cc \
 
 # --- the integration: roots and output rows (src/solver) ---
 mutation simulation-root-sign src/solver/run_roots.h \
-  ': system.Length(root.element, t, y) - root.level;' \
-  ': root.level - system.Length(root.element, t, y);' "$t_solver" "$r_solver" \
-  'the root watch (src/solver/root_watch.h, crossing.h) reads only whether g is zero and whether two values share a sign, and its Illinois/secant iteration is invariant under g -> -g bit for bit (a - b = -(b - a) exactly in IEEE arithmetic, and the secant step is a ratio of differences); the run reads only which root was found'
+  'default: return system.Length(root.element, t, y) - root.level;' \
+  'default: return root.level - system.Length(root.element, t, y);' "$t_solver" "$r_solver" \
+  'the root watch (src/solver/root_watch.h, crossing.h) reads only whether g is zero and whether two values share a sign, and its Illinois/secant iteration is invariant under g -> -g bit for bit (a - b = -(b - a) exactly in IEEE arithmetic, and the secant step is a ratio of differences); its search for dips between a step'"'"'s ends (FindDips), which reads signed slopes, watches only segment roots (kShortSegment, not this branch); the run reads only which root was found'
 mutation simulation-last-output-past-end src/solver/output_rows.h \
   'return k >= count_ ? end_ : start_ + k * interval_;' \
   'return k > count_ ? end_ : start_ + k * interval_;' "$t_solver" "$r_solver"
 mutation simulation-first-output-repeated src/solver/output_rows.h \
-  '    if (explicit_) count_ = static_cast<long>(grid.times.size()) - skipped_;
+  '      while (count_ > 1 && start + (count_ - 1) * interval_ >= end - merge) --count_;
+    }
     next_ = 1;' \
-  '    if (explicit_) count_ = static_cast<long>(grid.times.size()) - skipped_;
+  '      while (count_ > 1 && start + (count_ - 1) * interval_ >= end - merge) --count_;
+    }
     next_ = 0;' "$t_solver" "$r_solver"
 
 # --- the network (docs/model.md section 7) ---
+# the right-hand side of a network of several free nodes on a line (RightHandSide; a single
+# free node has its own, SingleNodeRightHandSide, and a plane or space network its own)
 mutation network-from-node-pushed src/dynamics/network.cc \
-  'if (a.state >= 0) ydot[a.state + 1] += tension;' \
-  'if (a.state >= 0) ydot[a.state + 1] -= tension;' "$t_network" "$r_network"
+  'if (a.rate >= 0) ydot[a.rate] += tension;' \
+  'if (a.rate >= 0) ydot[a.rate] -= tension;' "$t_network" "$r_network"
 mutation network-mass-unscaled src/dynamics/network.cc \
-  'for (const FreeNode& f : free_nodes_) ydot[ends_[f.node].state + 1] *= f.inverse_mass;' \
-  'for (const FreeNode& f : free_nodes_) ydot[ends_[f.node].state + 1] *= 1.0;' "$t_network" "$r_network"
+  'if (!f.massless) ydot[ends_[f.node].rate] *= f.inverse_mass;' \
+  'if (!f.massless) ydot[ends_[f.node].rate] *= 1.0;' "$t_network" "$r_network"
 mutation network-jacobian-rate-sign src/dynamics/network.cc \
   'const double by_state[4] = {-tension.by_length, -tension.by_rate, tension.by_length,' \
   'const double by_state[4] = {-tension.by_length, tension.by_rate, tension.by_length,' "$t_network" "$r_network"
 mutation network-tendon-pushes-when-slack src/dynamics/element_tension.h \
-  'if (stretch <= 0.0) return {0.0, 0.0, 0.0, 0.0};' \
-  'if (stretch < -1.0) return {0.0, 0.0, 0.0, 0.0};' "$t_network" "$r_network"
+  'if (stretch <= 0.0 && !element.pushes_below_slack) return {0.0, 0.0, 0.0, 0.0};' \
+  'if (stretch < -1.0 && !element.pushes_below_slack) return {0.0, 0.0, 0.0, 0.0};' \
+  "$t_network" "$r_network"
 mutation network-prescribed-still src/dynamics/network.cc \
   'return nodes_[end.node].motion.Slope(t);' \
   'return 0.0;' "$t_network" "$r_network"
 mutation network-exponential-slope-drops-alpha src/dynamics/element_tension.h \
   'return {element.k * (grow - 1.0), element.k * element.alpha * grow, 0.0, 0.0};' \
   'return {element.k * (grow - 1.0), element.k * grow, 0.0, 0.0};' "$t_network" "$r_network"
-mutation network-band-skips-lower src/dynamics/network.cc \
+# the Jacobian's pattern, built with the network (network_build.cc)
+mutation network-band-skips-lower src/dynamics/network_build.cc \
   'pattern_.lower_bandwidth = std::max(pattern_.lower_bandwidth, r - c);' \
   'pattern_.lower_bandwidth = std::max(pattern_.lower_bandwidth, r - c - 1);' "$t_network" "$r_network"
 

@@ -246,7 +246,7 @@ def test_bad_model_files_name_the_file(tmp_path):
     params = json.loads(json.dumps(MODEL))
     params["velocity"]["v_max"] = 0.0
     path.write_text(json.dumps({"name": "t", "model": params}))
-    with pytest.raises(INPUT_ERROR, match=r"model\.velocity\.v_max = 0 \(.*bad\.yaml:1:"):
+    with pytest.raises(INPUT_ERROR, match=r"model\.velocity\.v_max = 0\.0 \(.*bad\.yaml:1:"):
         ms.load_model(str(path))
 
 

@@ -29,7 +29,7 @@ PART is one of
   waveforms the shapes of a signal over time (activations, excitations, force loads,
             prescribed motions, references)
   gains     a controller's gains
-  models    the model blocks of the degroote2016 and mujoco curve families
+  models    the model blocks of the curve families (paper, degroote2016, mujoco)
   activation_dynamics
             the families of activation dynamics (their `family:` in place of `type:`)
 )";

@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "musclesim/model/tension_parameter.h"
+
 namespace musclesim {
 
 namespace {
@@ -15,12 +17,13 @@ constexpr InputRange Normalised(double min, bool min_exclusive, const char* why)
 
 // f_iso and the pennation angle, every family's.
 std::vector<Field> Common() {
+  using Kind = TensionParameterKind;
   Field pennation =
       MemberField("pennation_angle", &ModelParams::pennation_angle, InputRange{0.0, 0.0, "rad", ""},
                   0.0, "at the optimal fiber length, >= 0 and below pi/2");
   pennation.values = FieldValues::kFinite;
   return {MemberField("f_iso", &ModelParams::f_iso, kPositiveForceRange, std::nullopt,
-                      "the maximum isometric force"),
+                      "the maximum isometric force", static_cast<int>(Kind::kIsometricTension)),
           std::move(pennation)};
 }
 
@@ -57,6 +60,33 @@ ModelFamily Family(CurveFamily family, const char* law, std::vector<Field> own) 
   variant.is = [family](const ModelParams& p) { return p.family == family; };
   variant.make = [family](ModelParams& p) { p.family = family; };
   return variant;
+}
+
+// The paper's block (docs/model.md 2-5, 9): its passive and velocity curves described where
+// they are defined (model/passive.h, model/velocity.h), and active_length's sigma; the
+// Gaussians, listed or fitted, and L_opt are read by the paper's reader.
+ModelFamily Paper() {
+  // in the order of the block's keys in files: f_iso, passive, active_length, velocity
+  std::vector<Field> common = Common();
+  std::vector<Field> fields{common.front()};
+  for (Field& field : NestedFields("passive", &ModelParams::passive, PassiveBlock().fields)) {
+    fields.push_back(std::move(field));
+  }
+  fields.push_back({"active_length.sigma", InputRange{0.0, 0.0, "-", ""}, 1.0,
+                    "the common scale of the widths, > 0: only width / sigma shapes the curve",
+                    [](const ModelParams& p) { return p.active_length.sigma; },
+                    [](ModelParams& p, double v) { p.active_length.sigma = v; },
+                    static_cast<int>(TensionParameterKind::kSigma), FieldValues::kFinite});
+  for (Field& field : NestedFields("velocity", &ModelParams::velocity, VelocityBlock().fields)) {
+    fields.push_back(std::move(field));
+  }
+  fields.push_back(common.back());
+  ModelFamily family =
+      Family(CurveFamily::kPaper, "T = T_p(x) + u f_iso f_L(x) g_eps(v) (docs/model.md 1-5)", {});
+  family.fields = std::move(fields);
+  family.other_keys = {"active_length.optimal_range", "active_length.gaussians",
+                       "active_length.fit"};
+  return family;
 }
 
 ModelFamily DeGroote2016() {
@@ -110,7 +140,7 @@ ModelFamily MuJoCo() {
 }  // namespace
 
 const std::vector<ModelFamily>& ModelFamilies() {
-  static const std::vector<ModelFamily> families{DeGroote2016(), MuJoCo()};
+  static const std::vector<ModelFamily> families{Paper(), DeGroote2016(), MuJoCo()};
   return families;
 }
 

@@ -4,17 +4,30 @@
 
 #include "musclesim/core/errors.h"
 #include "musclesim/core/input_ranges.h"
+#include "musclesim/model/tension_parameter.h"
 
 namespace musclesim {
 
-void Validate(const PassiveParams& params) {
-  Require(std::isfinite(params.k_p) && params.k_p >= 0.0 && params.k_p <= kPositiveForceRange.max,
-          "k_p", params.k_p,
-          "must be >= 0 and at most 1e9 [N]: " + std::string(kPositiveForceRange.why));
-  Require(std::isfinite(params.alpha) && params.alpha > 0.0, "alpha", params.alpha,
-          "must be finite and > 0 [1/m]");
-  Require(std::isfinite(params.slack_length), "slack_length", params.slack_length,
-          "must be finite [m]");
+const PartVariant<PassiveParams>& PassiveBlock() {
+  using Kind = TensionParameterKind;
+  static const PartVariant<PassiveParams> block = OnlyVariant<PassiveParams>(
+      "passive", "T_p = k_p (exp(alpha (x - slack_length)) - 1) above slack_length, else 0",
+      {MemberField("k_p", &PassiveParams::k_p,
+                   InputRange{0.0, kPositiveForceRange.max, "N", kPositiveForceRange.why},
+                   std::nullopt, "the tension scale (0: no passive tension)",
+                   static_cast<int>(Kind::kPassiveScale)),
+       MemberField("alpha", &PassiveParams::alpha,
+                   InputRange{0.0, 1e9, "1/m",
+                              "a tension growing e-fold over less than a nanometre is no "
+                              "actuator's",
+                              true},
+                   std::nullopt, "the exponential rate", static_cast<int>(Kind::kPassiveRate)),
+       MemberField("slack_length", &PassiveParams::slack_length, kPositionRange, std::nullopt,
+                   "the length where passive tension starts",
+                   static_cast<int>(Kind::kSlackLength))});
+  return block;
 }
+
+void Validate(const PassiveParams& params) { ValidateFields(PassiveBlock(), params); }
 
 }  // namespace musclesim

@@ -5,7 +5,6 @@
 
 #include "musclesim/core/errors.h"
 #include "musclesim/model/family_fields.h"
-#include "musclesim/core/input_ranges.h"
 
 namespace musclesim {
 
@@ -24,24 +23,17 @@ void WithPrefix(const char* block, Check check) {
 }  // namespace
 
 void Validate(const ModelParams& params) {
-  // as every force (input_ranges.h): the tension and its sums stay finite
-  Require(
-      std::isfinite(params.f_iso) && params.f_iso > 0.0 && params.f_iso <= kPositiveForceRange.max,
-      "f_iso", params.f_iso,
-      "must be > 0 and at most 1e9 [N]: " + std::string(kPositiveForceRange.why));
+  // each field's range (model/family_fields.h), then the rules between fields
+  ValidateFields(*VariantOf(ModelFamilies(), params), params);
   Require(std::isfinite(params.pennation_angle) && params.pennation_angle >= 0.0 &&
               params.pennation_angle < 0.5 * std::numbers::pi,
           "pennation_angle", params.pennation_angle,
           "must be >= 0 and below pi/2 [rad] (the angle at the optimal fiber length)");
   switch (params.family) {
-    case CurveFamily::kDeGroote2016:
-      return ValidateFields(*VariantOf(ModelFamilies(), params), params);
-    case CurveFamily::kMujoco:
-      ValidateFields(*VariantOf(ModelFamilies(), params), params);
-      return Validate(params.mujoco);  // its lists and the rules between its fields
+    case CurveFamily::kDeGroote2016: return;
+    case CurveFamily::kMujoco: return Validate(params.mujoco);  // its lists and their rules
     case CurveFamily::kPaper: break;
   }
-  WithPrefix("passive", [&] { Validate(params.passive); });
   WithPrefix("active_length", [&] { Validate(params.active_length); });
   WithPrefix("velocity", [&] { Validate(params.velocity); });
 }

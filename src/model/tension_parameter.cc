@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/model/family_fields.h"
 
 namespace musclesim {
 
@@ -50,6 +51,18 @@ std::optional<std::vector<PathStep>> SplitPath(std::string_view path) {
   return steps;
 }
 
+// The paper's block (model/family_fields.h): its fields with a closed-form derivative carry
+// their kind as their tag.
+const ModelFamily& Paper() { return *VariantOf(ModelFamilies(), ModelParams{}); }
+
+// The described field whose tag is `kind`; null for a kind of a list (L_opt, a Gaussian).
+const NumberField<ModelParams>* FieldOf(Kind kind) {
+  for (const NumberField<ModelParams>& field : Paper().fields) {
+    if (field.partial == static_cast<int>(kind)) return &field;
+  }
+  return nullptr;
+}
+
 std::optional<TensionParameter> Match(const std::vector<PathStep>& s) {
   const auto is = [&s](std::size_t i, std::string_view key) {
     return i < s.size() && !s[i].key.empty() && s[i].key == key;
@@ -59,33 +72,23 @@ std::optional<TensionParameter> Match(const std::vector<PathStep>& s) {
     return std::optional<TensionParameter>(TensionParameter{k, gaussian});
   };
 
-  if (s.size() == 1 && is(0, "f_iso")) return kind(Kind::kIsometricTension);
-  if (s.size() == 2 && is(0, "passive")) {
-    if (is(1, "k_p")) return kind(Kind::kPassiveScale);
-    if (is(1, "alpha")) return kind(Kind::kPassiveRate);
-    if (is(1, "slack_length")) return kind(Kind::kSlackLength);
+  if (is(0, "active_length") && s.size() == 3 && is(1, "optimal_range") && is_index(2)) {
+    if (s[2].index == 0) return kind(Kind::kOptimalMin);
+    if (s[2].index == 1) return kind(Kind::kOptimalMax);
   }
-  if (is(0, "active_length")) {
-    if (s.size() == 2 && is(1, "sigma")) return kind(Kind::kSigma);
-    if (s.size() == 3 && is(1, "optimal_range") && is_index(2)) {
-      if (s[2].index == 0) return kind(Kind::kOptimalMin);
-      if (s[2].index == 1) return kind(Kind::kOptimalMax);
-    }
-    if (s.size() == 4 && is(1, "gaussians") && is_index(2)) {
-      if (is(3, "amplitude")) return kind(Kind::kAmplitude, s[2].index);
-      if (is(3, "width")) return kind(Kind::kWidth, s[2].index);
-      if (is(3, "center")) return kind(Kind::kCenter, s[2].index);
-    }
+  if (is(0, "active_length") && s.size() == 4 && is(1, "gaussians") && is_index(2)) {
+    if (is(3, "amplitude")) return kind(Kind::kAmplitude, s[2].index);
+    if (is(3, "width")) return kind(Kind::kWidth, s[2].index);
+    if (is(3, "center")) return kind(Kind::kCenter, s[2].index);
   }
-  if (is(0, "velocity")) {
-    if (s.size() == 2 && is(1, "v_max")) return kind(Kind::kMaxVelocity);
-    if (s.size() == 2 && is(1, "epsilon")) return kind(Kind::kEpsilon);
-    if (s.size() == 3 && is(1, "eccentric") && is(2, "v_max")) {
-      return kind(Kind::kEccentricMaxVelocity);
-    }
-    if (s.size() == 3 && is(1, "eccentric") && is(2, "limit")) return kind(Kind::kEccentricLimit);
+  std::string key;  // "velocity.eccentric.v_max"
+  for (const PathStep& step : s) {
+    if (step.key.empty()) return std::nullopt;
+    key.append(key.empty() ? "" : ".").append(step.key);
   }
-  return std::nullopt;
+  const NumberField<ModelParams>* field = FindField(Paper(), key);
+  if (field == nullptr || field->partial < 0) return std::nullopt;
+  return kind(static_cast<Kind>(field->partial));
 }
 
 // Throws ParameterError when `params` lacks `p` (see ParameterValue).
@@ -157,44 +160,26 @@ std::string ToString(const TensionParameter& parameter) {
   const std::string gaussian =
       "active_length.gaussians[" + std::to_string(parameter.gaussian) + "].";
   switch (parameter.kind) {
-    case Kind::kIsometricTension: return "f_iso";
-    case Kind::kPassiveScale: return "passive.k_p";
-    case Kind::kPassiveRate: return "passive.alpha";
-    case Kind::kSlackLength: return "passive.slack_length";
     case Kind::kOptimalMin: return "active_length.optimal_range[0]";
     case Kind::kOptimalMax: return "active_length.optimal_range[1]";
-    case Kind::kSigma: return "active_length.sigma";
     case Kind::kAmplitude: return gaussian + "amplitude";
     case Kind::kWidth: return gaussian + "width";
     case Kind::kCenter: return gaussian + "center";
-    case Kind::kMaxVelocity: return "velocity.v_max";
-    case Kind::kEpsilon: return "velocity.epsilon";
-    case Kind::kEccentricMaxVelocity: return "velocity.eccentric.v_max";
-    case Kind::kEccentricLimit: return "velocity.eccentric.limit";
+    default: return FieldOf(parameter.kind)->key;
   }
-  return "?";
 }
 
 double ParameterValue(const ModelParams& params, const TensionParameter& parameter) {
   RequirePresent(params, parameter);
   const ActiveLengthParams& active = params.active_length;
   switch (parameter.kind) {
-    case Kind::kIsometricTension: return params.f_iso;
-    case Kind::kPassiveScale: return params.passive.k_p;
-    case Kind::kPassiveRate: return params.passive.alpha;
-    case Kind::kSlackLength: return params.passive.slack_length;
     case Kind::kOptimalMin: return active.optimal_min;
     case Kind::kOptimalMax: return active.optimal_max;
-    case Kind::kSigma: return active.sigma;
     case Kind::kAmplitude: return active.gaussians[parameter.gaussian].amplitude;
     case Kind::kWidth: return active.gaussians[parameter.gaussian].precision;
     case Kind::kCenter: return active.gaussians[parameter.gaussian].center;
-    case Kind::kMaxVelocity: return params.velocity.v_max;
-    case Kind::kEpsilon: return params.velocity.epsilon;
-    case Kind::kEccentricMaxVelocity: return *params.velocity.eccentric.v_max;
-    case Kind::kEccentricLimit: return *params.velocity.eccentric.limit;
+    default: return FieldOf(parameter.kind)->get(params);
   }
-  return 0.0;
 }
 
 TensionParameterDerivative::TensionParameterDerivative(const TensionModel& model,

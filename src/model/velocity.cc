@@ -1,24 +1,102 @@
 #include "musclesim/model/velocity.h"
 
 #include <algorithm>
+#include <functional>
+#include <limits>
+#include <utility>
+#include <vector>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/core/number_format.h"
+#include "musclesim/model/tension_parameter.h"
 
 namespace musclesim {
 
 namespace {
-
-bool IsExponent(int n) { return n >= 1 && n <= kMaxVelocityExponent; }
 
 // (alpha - 1) / 2, the power of v^2 + eps^2 in phi_eps (docs/model.md section 4).
 double HalfExponent(double alpha) { return 0.5 * (alpha - 1.0); }
 
 }  // namespace
 
+namespace {
+
+using Field = NumberField<VelocityParams>;
+
+// v_max's range, the concentric and the eccentric one's.
+constexpr InputRange kMaxVelocityRange{
+    0.0, 1e12, "m/s",
+    "a v_max far above every speed of the run makes g flat (a tension independent of the "
+    "velocity), and epsilon's bounds, 1e-12 v_max to v_max, stay in range",
+    true};
+constexpr InputRange kExponentRange{1.0, kMaxVelocityExponent, "-",
+                                    "the power 1/n; at 1000 it is 0.001, the curve a step"};
+
+Field Exponent(const char* key, std::function<double(const VelocityParams&)> get,
+               std::function<void(VelocityParams&, double)> set, const char* doc) {
+  Field field{key, kExponentRange, std::nullopt, doc, std::move(get), std::move(set)};
+  field.integer = true;
+  return field;
+}
+
+std::vector<Field> VelocityFields() {
+  using Kind = TensionParameterKind;
+  Field epsilon = MemberField("epsilon", &VelocityParams::epsilon, InputRange{0.0, 0.0, "m/s", ""},
+                              std::nullopt,
+                              "the regularisation width: from 1e-12 v_max (below, too stiff to "
+                              "integrate) to v_max (above, it replaces the power law)",
+                              static_cast<int>(Kind::kEpsilon));
+  epsilon.values = FieldValues::kFinite;
+  Field eccentric_v_max{
+      "eccentric.v_max",
+      kMaxVelocityRange,
+      std::nullopt,
+      "the lengthening branch's v_max (absent: v_max); epsilon's rule holds for it too",
+      [](const VelocityParams& v) { return v.eccentric.v_max.value_or(v.v_max); },
+      [](VelocityParams& v, double x) { v.eccentric.v_max = x; },
+      static_cast<int>(Kind::kEccentricMaxVelocity)};
+  eccentric_v_max.given = [](const VelocityParams& v) { return v.eccentric.v_max.has_value(); };
+  Field eccentric_n = Exponent(
+      "eccentric.n", [](const VelocityParams& v) { return double(v.eccentric.n.value_or(v.n)); },
+      [](VelocityParams& v, double x) { v.eccentric.n = static_cast<int>(x); },
+      "the lengthening branch's n (absent: n)");
+  eccentric_n.given = [](const VelocityParams& v) { return v.eccentric.n.has_value(); };
+  Field limit{"eccentric.limit",
+              InputRange{1.0, kMaxEccentricLimit, "-",
+                         "the bound of g as the lengthening velocity grows lies above g(0) = 1, "
+                         "and a bound beyond 1e6 bounds nothing (leave it out for none)",
+                         true},
+              std::nullopt,
+              "L, the bound of g as the lengthening velocity grows (absent: none)",
+              [](const VelocityParams& v) {
+                return v.eccentric.limit.value_or(std::numeric_limits<double>::infinity());
+              },
+              [](VelocityParams& v, double x) { v.eccentric.limit = x; },
+              static_cast<int>(Kind::kEccentricLimit)};
+  limit.given = [](const VelocityParams& v) { return v.eccentric.limit.has_value(); };
+  return {MemberField("v_max", &VelocityParams::v_max, kMaxVelocityRange, std::nullopt,
+                      "the shortening velocity of zero active tension",
+                      static_cast<int>(Kind::kMaxVelocity)),
+          Exponent(
+              "n", [](const VelocityParams& v) { return double(v.n); },
+              [](VelocityParams& v, double x) { v.n = static_cast<int>(x); },
+              "the curvature: g follows the power 1/n of the velocity"),
+          std::move(epsilon),
+          std::move(eccentric_v_max),
+          std::move(eccentric_n),
+          std::move(limit)};
+}
+
+}  // namespace
+
+const PartVariant<VelocityParams>& VelocityBlock() {
+  static const PartVariant<VelocityParams> block = OnlyVariant<VelocityParams>(
+      "velocity", "g_eps(v) = 1 - phi_eps(v) / v_max^(1/n) (docs/model.md 4, 9)", VelocityFields());
+  return block;
+}
+
 void Validate(const VelocityParams& params) {
-  Require(std::isfinite(params.v_max) && params.v_max > 0.0, "v_max", params.v_max,
-          "must be finite and > 0 [m/s]");
-  Require(IsExponent(params.n), "n", params.n, "must be an integer >= 1 (at most 1000)");
+  ValidateFields(VelocityBlock(), params);
   // Below 1e-12 v_max the slope at v = 0, (eps / v_max)^(1/n - 1) / v_max, reaches 1e12 / v_max:
   // the actuator's time constant falls below what double-precision time can resolve (and
   // eps^2 underflows further down). Above v_max the regularisation swamps the curve.
@@ -28,27 +106,13 @@ void Validate(const VelocityParams& params) {
           "must be between 1e-12 v_max and v_max = " + FormatNumber(params.v_max) +
               " [m/s] (smaller: too stiff to integrate in double precision; larger: the "
               "regularisation replaces the power law)");
-
-  const EccentricParams& e = params.eccentric;
-  if (e.v_max) {
-    Require(std::isfinite(*e.v_max) && *e.v_max > 0.0, "eccentric.v_max", *e.v_max,
-            "must be finite and > 0 [m/s]");
-    // the lengthening branch is regularised with the same eps: the same rule, read for v_max_e
-    Require(params.epsilon >= 1e-12 * *e.v_max && params.epsilon <= *e.v_max, "eccentric.v_max",
-            *e.v_max,
+  // the lengthening branch is regularised with the same eps: the same rule, read for v_max_e
+  if (const std::optional<double> v_max = params.eccentric.v_max) {
+    Require(params.epsilon >= 1e-12 * *v_max && params.epsilon <= *v_max, "eccentric.v_max", *v_max,
             "must be between epsilon = " + FormatNumber(params.epsilon) +
                 " and 1e12 epsilon "
                 "[m/s] (epsilon's rule, between 1e-12 v_max and v_max, holds for the eccentric "
                 "v_max too)");
-  }
-  if (e.n) {
-    Require(IsExponent(*e.n), "eccentric.n", *e.n, "must be an integer >= 1 (at most 1000)");
-  }
-  if (e.limit) {
-    Require(std::isfinite(*e.limit) && *e.limit > 1.0 && *e.limit <= kMaxEccentricLimit,
-            "eccentric.limit", *e.limit,
-            "must be > 1 and <= 1e6 [-]: the bound of g as the lengthening velocity grows lies "
-            "above g(0) = 1, and a bound beyond 1e6 bounds nothing (leave it out for none)");
   }
 }
 

@@ -1,11 +1,10 @@
-// A model block's keys as parameter handles: the paper's curves (passive, velocity and its
-// eccentric branch, active length and its Gaussians) and the other families' fields.
+// A model block's keys as parameter handles: each family's described fields
+// (model/family_fields.h), the paper's L_opt, Gaussians and fit, and MuJoCo's lists of two.
 #include "scenario/parameter_resolver.h"
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <limits>
 
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
@@ -20,13 +19,11 @@ void ParameterResolver::Model(std::size_t i) {
   p_.model_ = found->first;
   std::vector<KeyPathStep> rest(steps_.begin() + static_cast<long>(i) + 1, steps_.end());
   p_.model_path_ = Canonical(rest);
-  const CurveFamily family = found->second.spec.params.family;
-  if (family != CurveFamily::kPaper) return FamilyField(i + 1, family);
-  ModelField(i + 1, found->second.spec.fit.has_value());
+  fitted_ = found->second.spec.fit.has_value();
+  FamilyField(i + 1, found->second.spec.params.family);
 }
 
 void ParameterResolver::FamilyField(std::size_t i, CurveFamily family) {
-  fitted_ = false;
   const std::string& key = Key(i);
   if (family == CurveFamily::kMujoco && (key == "range" || key == "lengthrange")) {
     const std::size_t end = Index(i + 1, 2, key == "range" ? "range" : "lengthrange");
@@ -36,36 +33,31 @@ void ParameterResolver::FamilyField(std::size_t i, CurveFamily family) {
     }
     return ModelNumber([end](ModelSpec& m) -> double& { return m.params.mujoco.lengthrange[end]; });
   }
+  // the paper's L_opt and Gaussians, listed or fitted
+  if (family == CurveFamily::kPaper && key == "active_length" && Key(i + 1) != "sigma") {
+    return ActiveLengthField(i + 1);
+  }
   // the family's described fields (model/family_fields.h)
   const ModelFamily* described = nullptr;
   for (const ModelFamily& f : ModelFamilies()) {
     if (ToString(family) == std::string_view(f.type)) described = &f;
   }
-  const NumberField<ModelParams>* field = FindField(*described, PathFrom(i));
+  const std::string key_path = PathFrom(i);
+  const NumberField<ModelParams>* field = FindField(*described, key_path);
+  for (const NumberField<ModelParams>& f : described->fields) {
+    if (field == nullptr && f.key.rfind(key_path + ".", 0) == 0)
+      Fail("names a block, not one number");
+  }
   if (field == nullptr) {
     std::string keys = FieldKeys(*described);
     for (const char* other : described->other_keys) keys.append(", ").append(other);
     Fail("names no parameter of a " + std::string(described->type) + " model (" + keys + ")");
   }
+  p_.integer_ = field->integer;
+  // a fitted model's Gaussians are fitted again for a new L_opt or sigma
   ModelValue([get = field->get](const ModelSpec& m) { return get(m.params); },
-             [set = field->set](ModelSpec& m, double v) { set(m.params, v); });
-}
-
-void ParameterResolver::ModelField(std::size_t i, bool fitted) {
-  fitted_ = fitted;
-  const std::string& block = Key(i);
-  if (block == "f_iso") {
-    End(i + 1);
-    return ModelNumber([](ModelSpec& m) -> double& { return m.params.f_iso; });
-  }
-  if (block == "pennation_angle") {
-    End(i + 1);
-    return ModelNumber([](ModelSpec& m) -> double& { return m.params.pennation_angle; });
-  }
-  if (block == "passive") return PassiveField(i + 1);
-  if (block == "velocity") return VelocityField(i + 1);
-  if (block == "active_length") return ActiveLengthField(i + 1);
-  Fail("names no numeric parameter of a model block");
+             [set = field->set](ModelSpec& m, double v) { set(m.params, v); },
+             key == "active_length");
 }
 
 void ParameterResolver::ModelNumber(Locate<double, ModelSpec> at, bool refits) {
@@ -81,70 +73,6 @@ void ParameterResolver::ModelValue(std::function<double(const ModelSpec&)> get,
   p_.refits_ = refits && fitted_;
 }
 
-void ParameterResolver::PassiveField(std::size_t i) {
-  End(i + 1);
-  const std::string& key = Key(i);
-  if (key == "k_p")
-    return ModelNumber([](ModelSpec& m) -> double& { return m.params.passive.k_p; });
-  if (key == "alpha") {
-    return ModelNumber([](ModelSpec& m) -> double& { return m.params.passive.alpha; });
-  }
-  if (key == "slack_length") {
-    return ModelNumber([](ModelSpec& m) -> double& { return m.params.passive.slack_length; });
-  }
-  Fail("names no parameter of the passive curve (k_p, alpha, slack_length)");
-}
-
-void ParameterResolver::VelocityField(std::size_t i) {
-  const std::string& key = Key(i);
-  if (key == "eccentric") return EccentricField(i + 1);
-  End(i + 1);
-  if (key == "v_max") {
-    return ModelNumber([](ModelSpec& m) -> double& { return m.params.velocity.v_max; });
-  }
-  if (key == "epsilon") {
-    return ModelNumber([](ModelSpec& m) -> double& { return m.params.velocity.epsilon; });
-  }
-  if (key == "n") {
-    p_.integer_ = true;
-    return ModelValue([](const ModelSpec& m) { return static_cast<double>(m.params.velocity.n); },
-                      [](ModelSpec& m, double v) { m.params.velocity.n = static_cast<int>(v); });
-  }
-  Fail("names no parameter of the velocity curve (v_max, n, epsilon, eccentric)");
-}
-
-void ParameterResolver::EccentricField(std::size_t i) {
-  // each optional, its value when left out the one the curve takes (docs/model.md 9)
-  End(i + 1);
-  const std::string& key = Key(i);
-  if (key == "v_max") {
-    return ModelValue(
-        [](const ModelSpec& m) {
-          const VelocityParams& v = m.params.velocity;
-          return v.eccentric.v_max.value_or(v.v_max);
-        },
-        [](ModelSpec& m, double v) { m.params.velocity.eccentric.v_max = v; });
-  }
-  if (key == "n") {
-    p_.integer_ = true;
-    return ModelValue(
-        [](const ModelSpec& m) {
-          const VelocityParams& v = m.params.velocity;
-          return static_cast<double>(v.eccentric.n.value_or(v.n));
-        },
-        [](ModelSpec& m, double v) { m.params.velocity.eccentric.n = static_cast<int>(v); });
-  }
-  if (key == "limit") {
-    return ModelValue(
-        [](const ModelSpec& m) {
-          return m.params.velocity.eccentric.limit.value_or(
-              std::numeric_limits<double>::infinity());
-        },
-        [](ModelSpec& m, double v) { m.params.velocity.eccentric.limit = v; });
-  }
-  Fail("names no parameter of the eccentric branch (v_max, n, limit)");
-}
-
 void ParameterResolver::ActiveLengthField(std::size_t i) {
   const std::string& key = Key(i);
   if (key == "optimal_range") {
@@ -156,10 +84,6 @@ void ParameterResolver::ActiveLengthField(std::size_t i) {
           return end == 0 ? a.optimal_min : a.optimal_max;
         },
         true);
-  }
-  if (key == "sigma") {
-    End(i + 1);
-    return ModelNumber([](ModelSpec& m) -> double& { return m.params.active_length.sigma; }, true);
   }
   if (key == "gaussians") return GaussianField(i + 1);
   if (key == "fit" && fitted_) {

@@ -91,15 +91,12 @@ class ParameterResolver {
 
   void Top();
   void Model(std::size_t i);
-  void ModelField(std::size_t i, bool fitted);
-  // A key of a model block of another family than the paper's (docs/model.md 14.1).
+  // A key of a model block of its family (docs/model.md 14.1), step i its first.
   void FamilyField(std::size_t i, CurveFamily family);
   void ModelNumber(Locate<double, ModelSpec> at, bool refits = false);
   void ModelValue(std::function<double(const ModelSpec&)> get,
                   std::function<void(ModelSpec&, double)> set, bool refits = false);
-  void PassiveField(std::size_t i);
-  void VelocityField(std::size_t i);
-  void EccentricField(std::size_t i);
+  // The paper's active_length keys other than sigma: optimal_range, gaussians, fit.
   void ActiveLengthField(std::size_t i);
   void GaussianField(std::size_t i);
   // The coordinate step i names of a node's `key` (fixed, prescribed, position, velocity):

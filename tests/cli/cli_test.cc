@@ -247,7 +247,7 @@ TEST(Cli, SmallLinearSolverRefusesANetworkOfMoreThanSixteenStates) {
 TEST(Cli, RunRejectsInvalidInputWithExitTwo) {
   Outcome r = RunCli("run " + Scenario("concentric.yaml") + " -o - --set model.velocity.n=0");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_THAT(r.err, HasSubstr("model.velocity.n = 0 (--set): must be an integer >= 1"));
+  EXPECT_THAT(r.err, HasSubstr("model.velocity.n = 0 (--set): must be an integer from 1 to 1000"));
   r = RunCli("run " + Scenario("concentric.yaml") + " -o - --set solver.rtol=-1");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.err, HasSubstr("solver.rtol = -1 (--set): must be >= 1e-14"));

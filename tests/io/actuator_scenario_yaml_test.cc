@@ -102,7 +102,8 @@ TEST(Scenario, SetOverridesAnyScalarByItsPath) {
 
 TEST(Scenario, SetIsValidatedLikeTheFile) {
   EXPECT_EQ(ErrorFor("", "", {"model.velocity.n=0"}),
-            "model.velocity.n = 0 (override): must be an integer >= 1 (at most 1000)");
+            "model.velocity.n = 0 (override): must be an integer from 1 to 1000 [-]: the power "
+            "1/n; at 1000 it is 0.001, the curve a step");
   EXPECT_THAT(ErrorFor("", "", {"model.velocity.m=3"}),
               HasSubstr("model.velocity.m (override): unknown key"));
   EXPECT_EQ(ErrorFor("", "", {"model.speed.n=3"}),

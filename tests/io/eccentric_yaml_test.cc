@@ -76,7 +76,8 @@ TEST(EccentricYaml, UnknownKeyListsTheAllowedOnes) {
               HasSubstr("model.velocity.eccentric = 3 (" + At(scalar, "3") + ")"));
   const std::string fraction = ", eccentric: {n: 2.5}";
   EXPECT_EQ(ModelError(fraction), "model.velocity.eccentric.n = 2.5 (" + At(fraction, "2.5") +
-                                      "): must be an integer >= 1 (at most 1000)");
+                                      "): must be an integer from 1 to 1000 [-]: the power 1/n; at "
+                                      "1000 it is 0.001, the curve a step");
   const std::string slow = ", eccentric: {v_max: 1e-5}";
   EXPECT_EQ(ModelError(slow),
             "model.velocity.eccentric.v_max = 1e-05 (" + At(slow, "1e-5") +

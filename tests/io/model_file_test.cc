@@ -64,22 +64,24 @@ TEST(ModelFile, RunsTheFitAtLoadTime) {
 
 TEST(ModelFile, ErrorsNameKeyValueLocationAndRule) {
   EXPECT_EQ(LoadError(Edited("n: 3", "n: 0")),
-            "model.velocity.n = 0 (FILE:8:29): must be an integer >= 1 (at most 1000)");
+            "model.velocity.n = 0 (FILE:8:29): must be an integer from 1 to 1000 [-]: the power "
+            "1/n; at 1000 it is 0.001, the curve a step");
   EXPECT_EQ(LoadError(Edited("k_p: 2.0", "k_p: -2.0")),
-            "model.passive.k_p = -2 (FILE:3:18): must be >= 0 and at most 1e9 [N]: 1e9 N "
+            "model.passive.k_p = -2.0 (FILE:3:18): must be from 0 to 1e+09 [N]: 1e9 N "
             "(100,000 tonnes-force) is beyond any actuator or rig, and sums of loads stay finite");
 }
 
 TEST(ModelFile, RejectsEveryBrokenRule) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {Edited("f_iso: 100.0", "f_iso: 0"),
-       "model.f_iso = 0 (FILE:2:10): must be > 0 and at most 1e9 [N]"},
+       "model.f_iso = 0 (FILE:2:10): must be > 0 and <= 1e+09 [N]"},
       {Edited("f_iso: 100.0", "f_iso: 2e9"),
-       "model.f_iso = 2e+09 (FILE:2:10): must be > 0 and at most 1e9 [N]"},
-      {Edited("f_iso: 100.0", "f_iso: .nan"), "model.f_iso = nan"},
+       "model.f_iso = 2e9 (FILE:2:10): must be > 0 and <= 1e+09 [N]"},
+      {Edited("f_iso: 100.0", "f_iso: .nan"), "model.f_iso = .nan (FILE:2:10): must be > 0"},
       {Edited("f_iso: 100.0", "f_iso: lots"), "model.f_iso = lots (FILE:2:10): must be a number"},
       {Edited("alpha: 30.0", "alpha: 0.0"), "model.passive.alpha = 0"},
-      {Edited("slack_length: 0.105", "slack_length: .inf"), "model.passive.slack_length = inf"},
+      {Edited("slack_length: 0.105", "slack_length: .inf"),
+       "model.passive.slack_length = .inf (FILE:3:50): must be from -1000 to 1000 [m]"},
       {Edited("[0.095, 0.105]", "[0.105, 0.095]"),
        "model.active_length.optimal_range[1] = 0.095 (FILE:5:28): must be finite and greater"},
       {Edited("[0.095, 0.105]", "[0.095]"), "must be a list of exactly 2 numbers"},
@@ -89,7 +91,8 @@ TEST(ModelFile, RejectsEveryBrokenRule) {
        "model.active_length.gaussians[0].width = 0 (FILE:7:34): must be finite and > 0"},
       {Edited("amplitude: 0.05", "amplitude: -0.05"),
        "must be positive somewhere on optimal_range"},
-      {Edited("n: 3", "n: 2.5"), "model.velocity.n = 2.5 (FILE:8:29): must be an integer >= 1"},
+      {Edited("n: 3", "n: 2.5"),
+       "model.velocity.n = 2.5 (FILE:8:29): must be an integer from 1 to 1000"},
       {Edited("v_max: 1.0", "v_max: -1"), "model.velocity.v_max = -1"},
       {Edited("epsilon: 1.0e-3", "epsilon: 0"), "model.velocity.epsilon = 0"},
       {Edited("f_iso: 100.0", "f_iso: 100.0\n  fiso: 3"),

@@ -228,20 +228,20 @@ TEST(EccentricVelocity, ExtremeAllowedValuesGiveFiniteValuesAndSlopes) {
 TEST(EccentricVelocity, ValidateRejectsEachRule) {
   auto broken = [](VelocityParams p) { return testing::Rejection([&] { Validate(p); }); };
   EXPECT_THAT(broken(Asymmetric(0.0, 2, 1.5)),
-              HasSubstr("eccentric.v_max = 0: must be finite and > 0"));
+              HasSubstr("eccentric.v_max = 0: must be > 0 and <= 1e+12 [m/s]"));
   EXPECT_THAT(broken(Asymmetric(INFINITY, 2, 1.5)),
-              HasSubstr("eccentric.v_max = inf: must be finite"));
+              HasSubstr("eccentric.v_max = inf: must be > 0 and <= 1e+12"));
   EXPECT_THAT(
       broken(Asymmetric(1e-4, 2, 1.5)),
       HasSubstr("eccentric.v_max = 1e-04: must be between epsilon = 0.001 and 1e12 epsilon"));
   EXPECT_THAT(broken(Asymmetric(2e9, 2, 1.5)),
               HasSubstr("eccentric.v_max = 2e+09: must be between"));
   EXPECT_THAT(broken(Asymmetric(0.5, 0, 1.5)),
-              HasSubstr("eccentric.n = 0: must be an integer >= 1"));
+              HasSubstr("eccentric.n = 0: must be an integer from 1 to 1000"));
   EXPECT_THAT(broken(Asymmetric(0.5, 1001, 1.5)),
               HasSubstr("eccentric.n = 1001: must be an integer"));
   EXPECT_THAT(broken(Asymmetric(0.5, 2, 1.0)),
-              HasSubstr("eccentric.limit = 1: must be > 1 and <= 1e6"));
+              HasSubstr("eccentric.limit = 1: must be > 1 and <= 1e+06 [-]"));
   EXPECT_THAT(broken(Asymmetric(0.5, 2, 0.5)), HasSubstr("eccentric.limit = 0.5: must be > 1"));
   EXPECT_THAT(broken(Asymmetric(0.5, 2, 2e6)), HasSubstr("eccentric.limit = 2e+06: must be > 1"));
   EXPECT_THAT(broken(Asymmetric(0.5, 2, NAN)), HasSubstr("eccentric.limit = nan: must be > 1"));

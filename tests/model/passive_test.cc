@@ -56,11 +56,16 @@ TEST(Passive, SlopeMatchesFiniteDifference) {
 
 TEST(Passive, ValidateRejectsEachRule) {
   auto broken = [](PassiveParams p) { return testing::Rejection([&] { Validate(p); }); };
-  EXPECT_THAT(broken({-1.0, 30.0, 0.1}), HasSubstr("k_p = -1: must be >= 0 and at most 1e9 [N]"));
-  EXPECT_THAT(broken({2e9, 30.0, 0.1}), HasSubstr("k_p = 2e+09: must be >= 0 and at most 1e9 [N]"));
-  EXPECT_THAT(broken({1.0, 0.0, 0.1}), HasSubstr("alpha = 0: must be finite and > 0"));
+  EXPECT_THAT(broken({-1.0, 30.0, 0.1}), HasSubstr("k_p = -1: must be from 0 to 1e+09 [N]"));
+  EXPECT_THAT(broken({2e9, 30.0, 0.1}), HasSubstr("k_p = 2e+09: must be from 0 to 1e+09 [N]"));
+  EXPECT_THAT(broken({1.0, 0.0, 0.1}), HasSubstr("alpha = 0: must be > 0 and <= 1e+09 [1/m]"));
+  EXPECT_THAT(broken({1.0, 2e9, 0.1}), HasSubstr("alpha = 2e+09: must be > 0 and <= 1e+09"));
   EXPECT_THAT(broken({1.0, 30.0, std::numeric_limits<double>::quiet_NaN()}),
-              HasSubstr("slack_length = nan: must be finite"));
+              HasSubstr("slack_length = nan: must be from -1000 to 1000 [m]"));
+  EXPECT_THAT(broken({1.0, 30.0, -2e3}), HasSubstr("slack_length = -2000: must be from -1000"));
+  // each bound itself is accepted: no passive tension, the steepest rate, the farthest slack
+  EXPECT_EQ(broken({0.0, 30.0, 0.1}), "accepted");
+  EXPECT_EQ(broken({1e9, 1e9, -1e3}), "accepted");
   EXPECT_THAT(broken({std::numeric_limits<double>::infinity(), 30.0, 0.1}), HasSubstr("k_p = inf"));
   EXPECT_EQ(broken(kParams), "accepted");
 }

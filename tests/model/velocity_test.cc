@@ -92,8 +92,13 @@ TEST(Velocity, SlopeMatchesFiniteDifference) {
 
 TEST(Velocity, ValidateRejectsEachRule) {
   auto broken = [](VelocityParams p) { return testing::Rejection([&] { Validate(p); }); };
-  EXPECT_THAT(broken({0.0, 3, 1e-3}), HasSubstr("v_max = 0: must be finite and > 0"));
-  EXPECT_THAT(broken({1.0, 0, 1e-3}), HasSubstr("n = 0: must be an integer >= 1"));
+  EXPECT_THAT(broken({0.0, 3, 1e-3}), HasSubstr("v_max = 0: must be > 0 and <= 1e+12 [m/s]"));
+  EXPECT_THAT(broken({2e12, 3, 1.0}), HasSubstr("v_max = 2e+12: must be > 0 and <= 1e+12"));
+  EXPECT_THAT(broken({1.0, 0, 1e-3}), HasSubstr("n = 0: must be an integer from 1 to 1000"));
+  EXPECT_THAT(broken({1.0, 1001, 1e-3}), HasSubstr("n = 1001: must be an integer from 1 to 1000"));
+  // the bounds themselves: the flattest curve, the steepest power
+  EXPECT_EQ(broken({1e12, 1000, 1.0}), "accepted");
+  EXPECT_EQ(broken({1.0, 1, 1e-3}), "accepted");
   EXPECT_THAT(broken({1.0, 3, -1e-3}), HasSubstr("epsilon = -0.001: must be between 1e-12 v_max"));
   EXPECT_THROW(VelocityCurve({1.0, -2, 1e-3}), ParameterError);
 }

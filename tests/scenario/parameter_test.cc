@@ -76,6 +76,7 @@ TEST(Parameter, EverySingleActuatorKeyReadsItsPartOfTheNetwork) {
              {"model.velocity.epsilon", m.velocity.epsilon},
              // the eccentric branch's keys the file leaves out: the concentric ones, and no limit
              {"model.velocity.eccentric.v_max", m.velocity.v_max},
+             {"model.velocity.eccentric.n", static_cast<double>(m.velocity.n), false, true},
              {"model.velocity.eccentric.limit", std::numeric_limits<double>::infinity()},
              {"actuator.mass", tip.mass},
              {"actuator.damping", damper.damping},
@@ -227,8 +228,13 @@ TEST(Parameter, PathsThatNameNoNumberAreRefused) {
   EXPECT_THAT(Refusal(actuator, "load[3].value"), HasSubstr("indexes past the end of loads"));
   EXPECT_THAT(Refusal(actuator, "activation.amplitude"),
               HasSubstr("names no field of this step waveform"));
-  EXPECT_THAT(Refusal(actuator, "model.velocity"), HasSubstr("model.velocity: "));
-  EXPECT_THAT(Refusal(actuator, "model.colour"), HasSubstr("model.colour: "));
+  EXPECT_THAT(Refusal(actuator, "model.velocity"),
+              HasSubstr("model.velocity: names a block, not one number"));
+  EXPECT_THAT(Refusal(actuator, "model.velocity.eccentric"),
+              HasSubstr("model.velocity.eccentric: names a block, not one number"));
+  EXPECT_THAT(Refusal(actuator, "model.colour"),
+              HasSubstr("model.colour: names no parameter of a paper model (f_iso, passive.k_p, "
+                        "passive.alpha, passive.slack_length, active_length.sigma, "));
   EXPECT_THAT(Refusal(actuator, "output.phase_tolerance"),
               HasSubstr("names no numeric setting"));  // the file gives none
 

@@ -5,6 +5,7 @@
 // descriptions (docs/layout.md, "How to add a key").
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <string>
@@ -12,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "musclesim/core/errors.h"
 #include "musclesim/core/input_ranges.h"
 
 namespace musclesim {
@@ -27,9 +29,9 @@ enum class FieldValues {
 // One number of a part of type `Part`.
 template <typename Part>
 struct NumberField {
-  const char* key = "";                 // below the part: "stiffness", or nested "exponential.k"
+  std::string key;                      // below the part: "stiffness", or nested "exponential.k"
   InputRange range;                     // the values a file may give it, its unit and why
-  std::optional<double> default_value;  // absent: the key is required
+  std::optional<double> default_value;  // absent: the key is required, unless `given` is set
   const char* doc = "";                 // what it is, for the reference table
   std::function<double(const Part&)> get;
   // Sets it, keeping what the part's other keys mean (a De Groote tendon's slack length keeps
@@ -37,7 +39,26 @@ struct NumberField {
   std::function<void(Part&, double)> set;
   int partial = -1;  // the closed-form derivative's tag (the part's own enum); -1: none
   FieldValues values = FieldValues::kRange;
+  bool integer = false;  // a count or an exponent: a whole number within `range`
+  // An optional key with no default: whether the part has it (`get` then gives the value the
+  // part uses in its place, an eccentric v_max the concentric one). Null: not optional.
+  std::function<bool(const Part&)> given{};
 };
+
+// The rule a file's value of `field` must meet: its range's, for an integer field "must be an
+// integer from 1 to 1000 [-]: why".
+template <typename Part>
+std::string FieldRule(const NumberField<Part>& field) {
+  if (!field.integer) return field.range.Rule();
+  return "must be an integer " + field.range.Bounds() + " [" + field.range.unit +
+         "]: " + field.range.why;
+}
+
+// Whether `value` is one `field` accepts: within its range, and whole for an integer field.
+template <typename Part>
+bool FieldAccepts(const NumberField<Part>& field, double value) {
+  return field.range.Contains(value) && (!field.integer || value == std::floor(value));
+}
 
 // One variant of a part (an element law, a kind of load): the `type` a file names and, when
 // a type has several variants, the key whose presence selects this one.
@@ -66,6 +87,31 @@ NumberField<Part> MemberField(const char* key, double Part::*member, const Input
           [member](const Part& part) { return part.*member; },
           [member](Part& part, double v) { part.*member = v; },
           partial};
+}
+
+// The fields of a part's member block `member` (a model's passive curve) as the part's own,
+// their keys below `prefix` ("passive"): the block described once, where it is read alone
+// and where it is read inside the part.
+template <typename Outer, typename Inner>
+std::vector<NumberField<Outer>> NestedFields(const std::string& prefix, Inner Outer::*member,
+                                             const std::vector<NumberField<Inner>>& fields) {
+  std::vector<NumberField<Outer>> nested;
+  for (const NumberField<Inner>& field : fields) {
+    NumberField<Outer> outer{prefix + "." + field.key,
+                             field.range,
+                             field.default_value,
+                             field.doc,
+                             [member, get = field.get](const Outer& o) { return get(o.*member); },
+                             [member, set = field.set](Outer& o, double v) { set(o.*member, v); },
+                             field.partial,
+                             field.values,
+                             field.integer};
+    if (field.given) {
+      outer.given = [member, given = field.given](const Outer& o) { return given(o.*member); };
+    }
+    nested.push_back(std::move(outer));
+  }
+  return nested;
 }
 
 // A part of one variant only (a block of numbers such as a controller's gains): every part
@@ -119,14 +165,15 @@ inline std::string_view HeadKey(std::string_view key) { return key.substr(0, key
 void RequireInRange(std::string_view key, double value, const InputRange& range);
 
 // Throws ParameterError(key, value, rule) for the first field of `variant` outside its own
-// range (fields whose values are the signal's or any finite number are left to the part):
-// what a C++ caller meets, with the same rule a file's reader states.
+// range or not whole where it must be (fields whose values are the signal's or any finite
+// number, and optional ones the part lacks, are left out): what a C++ caller meets, with the
+// same rule a file's reader states.
 template <typename Part>
 void ValidateFields(const PartVariant<Part>& variant, const Part& part) {
   for (const NumberField<Part>& field : variant.fields) {
-    if (field.values == FieldValues::kRange) {
-      RequireInRange(field.key, field.get(part), field.range);
-    }
+    if (field.values != FieldValues::kRange || (field.given && !field.given(part))) continue;
+    const double value = field.get(part);
+    if (!FieldAccepts(field, value)) Require(false, field.key, value, FieldRule(field));
   }
 }
 

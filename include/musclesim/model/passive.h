@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "musclesim/core/part_fields.h"
 #include "musclesim/model/curve_point.h"
 
 namespace musclesim {
@@ -14,7 +15,11 @@ struct PassiveParams {
   double slack_length = 0.0;  // length where passive tension starts [m], finite
 };
 
-// Throws ParameterError (paths "k_p", "alpha", "slack_length") for a broken rule.
+// The curve's keys (core/part_fields.h): k_p, alpha, slack_length, with their ranges; the
+// model block's `passive:` map (model/family_fields.h).
+const PartVariant<PassiveParams>& PassiveBlock();
+
+// Throws ParameterError (paths "k_p", "alpha", "slack_length") for a value outside its range.
 void Validate(const PassiveParams& params);
 
 // T_p(x) and dT_p/dx (eq. 1). The slope jumps from 0 to k_p * alpha at the slack length;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 
+#include "musclesim/core/part_fields.h"
 #include "musclesim/model/curve_point.h"
 
 namespace musclesim {
@@ -35,8 +36,14 @@ struct VelocityParams {
   EccentricParams eccentric = {};  // the lengthening branch; empty: symmetric (eq. 12)
 };
 
+// The curve's keys (core/part_fields.h): v_max, n, epsilon and the optional eccentric.v_max,
+// eccentric.n, eccentric.limit, with their ranges; the model block's `velocity:` map
+// (model/family_fields.h).
+const PartVariant<VelocityParams>& VelocityBlock();
+
 // Throws ParameterError ("v_max", "n", "epsilon", "eccentric.v_max", "eccentric.n",
-// "eccentric.limit"). epsilon's rule (between 1e-12 v_max and v_max) holds for the eccentric
+// "eccentric.limit"): each field's range (VelocityBlock), then the rules between them.
+// epsilon's rule (between 1e-12 v_max and v_max) holds for the eccentric
 // v_max too; breaking it there is reported at "eccentric.v_max".
 void Validate(const VelocityParams& params);
 

@@ -1,7 +1,9 @@
 #include "io/readers/model_yaml_node.h"
 
-#include "musclesim/core/input_ranges.h"
+#include "io/readers/part_fields_yaml.h"
 #include "io/readers/scenario_readers.h"
+#include "musclesim/core/input_ranges.h"
+#include "musclesim/model/family_fields.h"
 
 namespace musclesim {
 
@@ -9,50 +11,6 @@ namespace {
 
 using yaml::Join;
 using yaml::Required;
-
-PassiveParams ReadPassive(const yaml::Source& src, const Document& node, const std::string& path) {
-  yaml::RequireMap(src, node, path, {"k_p", "alpha", "slack_length"});
-  PassiveParams p;
-  p.k_p = yaml::ReadNumber(src, Required(src, node, path, "k_p"), Join(path, "k_p"));
-  p.alpha = yaml::ReadNumber(src, Required(src, node, path, "alpha"), Join(path, "alpha"));
-  p.slack_length =
-      yaml::ReadNumber(src, Required(src, node, path, "slack_length"), Join(path, "slack_length"));
-  return p;
-}
-
-// The curvature n of eq. 12: an integer 1..1000, written as a number ("3" or "3.0").
-int ReadExponent(const yaml::Source& src, const Document& node, const std::string& path) {
-  const double value = yaml::ReadNumber(src, node, path);
-  if (!(value >= 1.0 && value <= kMaxVelocityExponent) || value != std::floor(value)) {
-    yaml::Fail(src, node, path, yaml::Describe(node), "must be an integer >= 1 (at most 1000)");
-  }
-  return static_cast<int>(value);
-}
-
-// `eccentric: {v_max, n, limit}`, every key optional (docs/model.md section 9); the rules
-// between keys are the model's Validate.
-EccentricParams ReadEccentric(const yaml::Source& src, const Document& node,
-                              const std::string& path) {
-  yaml::RequireMap(src, node, path, {"v_max", "n", "limit"});
-  EccentricParams e;
-  if (node["v_max"]) e.v_max = yaml::ReadNumber(src, node["v_max"], Join(path, "v_max"));
-  if (node["n"]) e.n = ReadExponent(src, node["n"], Join(path, "n"));
-  if (node["limit"]) e.limit = yaml::ReadNumber(src, node["limit"], Join(path, "limit"));
-  return e;
-}
-
-VelocityParams ReadVelocity(const yaml::Source& src, const Document& node,
-                            const std::string& path) {
-  yaml::RequireMap(src, node, path, {"v_max", "n", "epsilon", "eccentric"});
-  VelocityParams p;
-  p.v_max = yaml::ReadNumber(src, Required(src, node, path, "v_max"), Join(path, "v_max"));
-  p.n = ReadExponent(src, Required(src, node, path, "n"), Join(path, "n"));
-  p.epsilon = yaml::ReadNumber(src, Required(src, node, path, "epsilon"), Join(path, "epsilon"));
-  if (node["eccentric"]) {
-    p.eccentric = ReadEccentric(src, node["eccentric"], Join(path, "eccentric"));
-  }
-  return p;
-}
 
 std::vector<TargetPoint> ReadPoints(const yaml::Source& src, const Document& node,
                                     const std::string& path) {
@@ -138,19 +96,16 @@ std::vector<Gaussian> ReadGaussians(const yaml::Source& src, const Document& nod
   return gaussians;
 }
 
-// The paper's active_length block into `model` (its Gaussians listed or fitted at load);
-// whether they were fitted.
+// The paper's active_length block into `model` (its Gaussians listed or fitted at load),
+// whose keys and sigma ReadFields has read; whether they were fitted.
 bool ReadActiveLength(const yaml::Source& src, const Document& active,
                       const std::string& active_path, ModelSpec& model) {
   ModelParams& p = model.params;
-  yaml::RequireMap(src, active, active_path, {"optimal_range", "sigma", "gaussians", "fit"});
   const std::vector<double> range =
       yaml::ReadNumbers(src, Required(src, active, active_path, "optimal_range"),
                         Join(active_path, "optimal_range"), 2);
   p.active_length.optimal_min = range[0];
   p.active_length.optimal_max = range[1];
-  p.active_length.sigma =
-      yaml::ReadOptionalNumber(src, active, active_path, "sigma", p.active_length.sigma);
   const bool has_list = static_cast<bool>(active["gaussians"]);
   const bool has_fit = static_cast<bool>(active["fit"]);
   if (has_list == has_fit) {
@@ -203,15 +158,14 @@ ModelSpec ReadModelSpec(const yaml::Source& src, const Document& node, const std
     }
     if (*parsed != CurveFamily::kPaper) return ReadFamilyModelSpec(src, node, path, *parsed);
   }
-  // the paper's block: none of another family's keys
-  yaml::RequireMap(src, node, path,
-                   {"f_iso", "passive", "active_length", "velocity", "family", "pennation_angle"});
+  // the paper's block (model/family_fields.h): none of another family's keys
+  const char* paper = ToString(CurveFamily::kPaper);
+  std::vector<std::string> keys = VariantKeys(ModelFamilies(), paper);
+  keys.emplace_back("family");
+  yaml::RequireMap(src, node, path, keys);
   ModelSpec model;
   ModelParams& p = model.params;
-  p.f_iso = yaml::ReadNumber(src, Required(src, node, path, "f_iso"), Join(path, "f_iso"));
-  p.pennation_angle = yaml::ReadOptionalNumber(src, node, path, "pennation_angle", 0.0);
-  p.passive = ReadPassive(src, Required(src, node, path, "passive"), Join(path, "passive"));
-  p.velocity = ReadVelocity(src, Required(src, node, path, "velocity"), Join(path, "velocity"));
+  ReadFields(src, node, path, *SelectVariant(src, node, path, ModelFamilies(), paper), p);
 
   const std::string active_path = Join(path, "active_length");
   const Document& active = Required(src, node, path, "active_length");

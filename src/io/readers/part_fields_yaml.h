@@ -3,13 +3,24 @@
 // maps. The messages name file:line:column, key path, value and rule, as every reader's do.
 #pragma once
 
+#include <algorithm>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "io/readers/yaml_fields.h"
 #include "musclesim/core/part_fields.h"
 
 namespace musclesim {
+
+// Adds `key` to `keys` unless it is there.
+inline void AddKey(std::vector<std::string>& keys, std::string key) {
+  for (const std::string& k : keys) {
+    if (k == key) return;
+  }
+  keys.push_back(std::move(key));
+}
 
 // The keys of the variants of `type`, each once, in order: "slack_length, stiffness,
 // exponential, degroote2016" for a tendon.
@@ -19,14 +30,26 @@ std::vector<std::string> VariantKeys(const std::vector<PartVariant<Part>>& varia
   std::vector<std::string> keys;
   for (const PartVariant<Part>& variant : variants) {
     if (type != variant.type) continue;
-    for (const NumberField<Part>& field : variant.fields) {
-      const std::string head(HeadKey(field.key));
-      bool seen = false;
-      for (const std::string& key : keys) seen = seen || key == head;
-      if (!seen) keys.push_back(head);
-    }
-    keys.insert(keys.end(), variant.other_keys.begin(), variant.other_keys.end());
+    for (const NumberField<Part>& field : variant.fields)
+      AddKey(keys, std::string(HeadKey(field.key)));
+    for (const char* other : variant.other_keys) AddKey(keys, std::string(HeadKey(other)));
   }
+  return keys;
+}
+
+// The keys a nested map of `variant` may hold: the next step of every field and other key
+// below `prefix` ("velocity" gives v_max, n, epsilon, eccentric).
+template <typename Part>
+std::vector<std::string> NestedKeys(const PartVariant<Part>& variant, const std::string& prefix) {
+  std::vector<std::string> keys;
+  const auto add = [&](std::string_view key) {
+    if (key.size() > prefix.size() && key.substr(0, prefix.size()) == prefix &&
+        key[prefix.size()] == '.') {
+      AddKey(keys, std::string(HeadKey(key.substr(prefix.size() + 1))));
+    }
+  };
+  for (const NumberField<Part>& field : variant.fields) add(field.key);
+  for (const char* other : variant.other_keys) add(other);
   return keys;
 }
 
@@ -63,45 +86,55 @@ const PartVariant<Part>* SelectVariant(const yaml::Source& src, const Document& 
 }
 
 // Reads every field of `variant` from the map `item` into `part`, in the order listed: a
-// nested field ("exponential.k") from its map, whose keys are checked when it is first met.
-// `signal` bounds the fields whose values are the signal's (nullptr: any number).
+// nested field ("velocity.eccentric.n") from its maps, whose keys are checked when each is
+// first met; a map may be left out when its fields have defaults or are optional. `signal`
+// bounds the fields whose values are the signal's (nullptr: any number).
 template <typename Part>
 void ReadFields(const yaml::Source& src, const Document& item, const std::string& path,
                 const PartVariant<Part>& variant, Part& part, const InputRange* signal = nullptr) {
-  std::vector<std::string> opened;  // the nested maps checked so far
+  std::vector<std::string> opened;  // the nested maps checked so far, by their prefixes
   for (const NumberField<Part>& field : variant.fields) {
-    const std::string key = field.key;
-    const std::string head(HeadKey(key));
+    const bool may_be_absent = field.default_value || field.given;
     const Document* map = &item;
     std::string at = path;
-    std::string leaf = key;
-    if (head != key) {
-      map = &yaml::Required(src, item, path, head.c_str());
-      at = yaml::Join(path, head);
-      leaf = key.substr(head.size() + 1);
-      bool checked = false;
-      for (const std::string& name : opened) checked = checked || name == head;
-      if (!checked) {
-        std::vector<std::string> allowed;
-        for (const NumberField<Part>& other : variant.fields) {
-          const std::string other_key = other.key;
-          if (HeadKey(other_key) == head) allowed.push_back(other_key.substr(head.size() + 1));
-        }
-        yaml::RequireMap(src, *map, at, allowed);
-        opened.push_back(head);
+    std::size_t begin = 0;  // of the field's key's step below `map`
+    bool absent = false;
+    for (std::size_t dot = field.key.find('.'); dot != std::string::npos;
+         dot = field.key.find('.', begin)) {
+      const std::string head = field.key.substr(begin, dot - begin);
+      if (!(*map)[head] && may_be_absent) {
+        absent = true;
+        break;
       }
+      map = &yaml::Required(src, *map, at, head.c_str());
+      at = yaml::Join(at, head);
+      const std::string prefix = field.key.substr(0, dot);
+      if (std::find(opened.begin(), opened.end(), prefix) == opened.end()) {
+        yaml::RequireMap(src, *map, at, NestedKeys(variant, prefix));
+        opened.push_back(prefix);
+      }
+      begin = dot + 1;
     }
-    const Document& node = (*map)[leaf];
-    if (!node && field.default_value) {
-      field.set(part, *field.default_value);
+    const std::string leaf = field.key.substr(begin);
+    if (absent || (!(*map)[leaf] && may_be_absent)) {
+      if (field.default_value) field.set(part, *field.default_value);
       continue;
     }
+    const Document& given = yaml::Required(src, *map, at, leaf.c_str());
+    const std::string key_path = yaml::Join(at, leaf);
     const InputRange* range = field.values == FieldValues::kRange    ? &field.range
                               : field.values == FieldValues::kSignal ? signal
                                                                      : nullptr;
-    const Document& given = yaml::Required(src, *map, at, leaf.c_str());
-    field.set(part, range != nullptr ? yaml::ReadNumberIn(src, given, yaml::Join(at, leaf), *range)
-                                     : yaml::ReadNumber(src, given, yaml::Join(at, leaf)));
+    if (field.integer) {
+      const double value = yaml::ReadNumber(src, given, key_path);
+      if (!FieldAccepts(field, value)) {
+        yaml::Fail(src, given, key_path, yaml::Describe(given), FieldRule(field));
+      }
+      field.set(part, value);
+      continue;
+    }
+    field.set(part, range != nullptr ? yaml::ReadNumberIn(src, given, key_path, *range)
+                                     : yaml::ReadNumber(src, given, key_path));
   }
 }
 

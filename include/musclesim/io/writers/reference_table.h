@@ -15,7 +15,8 @@ namespace musclesim {
 template <typename Part>
 std::string AcceptedCell(const NumberField<Part>& field) {
   switch (field.values) {
-    case FieldValues::kRange: return field.range.Bounds() + ": " + field.range.why;
+    case FieldValues::kRange:
+      return (field.integer ? "an integer " : "") + field.range.Bounds() + ": " + field.range.why;
     case FieldValues::kSignal: return "the signal's range";
     case FieldValues::kFinite: return "any finite number; the rule in its meaning";
   }
@@ -42,8 +43,10 @@ std::string ReferenceTable(const std::vector<PartVariant<Part>>& variants,
     };
     for (const NumberField<Part>& field : variant.fields) {
       row(std::string("`") + field.key + "` | " + field.range.unit + " | " +
-          (field.default_value ? FormatNumber(*field.default_value) : "required") + " | " +
-          AcceptedCell(field) + " | " + field.doc);
+          (field.default_value ? FormatNumber(*field.default_value)
+           : field.given       ? "optional"
+                               : "required") +
+          " | " + AcceptedCell(field) + " | " + field.doc);
     }
     for (const char* other : variant.other_keys) {
       row(std::string("`") + other + "` | | | its own rules (above) | ");
