@@ -2,6 +2,7 @@
 #include "musclesim/identify/identified_model.h"
 
 #include <cmath>
+#include <string>
 
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
@@ -10,6 +11,18 @@
 namespace musclesim {
 
 namespace {
+
+// Runs `check` of a drafted block; its ParameterError re-thrown at the key path in the
+// model file ("model.velocity.v_max"): the data gave a value the model cannot take.
+template <typename Check>
+void WithPath(const char* block, Check check) {
+  try {
+    check();
+  } catch (const ParameterError& e) {
+    throw ParameterError("model." + std::string(block) + "." + e.path(), e.value(),
+                         e.rule() + " (the value the data give: no model file is written)");
+  }
+}
 
 // "value +- standard error", or "+- n/a" when the error cannot be estimated.
 std::string PlusMinus(const Estimate& e) {
@@ -37,6 +50,7 @@ ModelYamlPart<PassiveParams> DraftPassive(const std::optional<PassiveIdentificat
   if (passive) {
     part.params =
         PassiveParams{passive->k_p.value, passive->alpha.value, passive->slack_length.value};
+    WithPath("passive", [&] { Validate(*part.params); });  // a file the model can read back
     part.comments = {"k_p = " + PlusMinus(passive->k_p) +
                      " N, alpha = " + PlusMinus(passive->alpha) +
                      " 1/m, slack_length = " + PlusMinus(passive->slack_length) + " m; RMSE " +
@@ -104,6 +118,12 @@ ModelYamlPart<VelocityParams> DraftVelocity(const VelocityIdentification& veloci
   const VelocityCandidate& best = velocity.best;
   VelocityDraft v;
   v.params = {best.v_max.value, best.n, StandInEpsilon(best.v_max.value)};
+  // the concentric curve must be one the model takes (a curve flatter than any v_max within
+  // range is refused here, not written as a file that cannot be read); only then may a
+  // refusal below blame the eccentric branch
+  WithPath("velocity", [&] {
+    Validate(VelocityParams{v.params.v_max, v.params.n, v.params.epsilon});
+  });
   const std::string others = OtherExponents("other n:", velocity.candidates, best.n);
   if (velocity.eccentric) {
     const EccentricIdentification& e = *velocity.eccentric;

@@ -3,8 +3,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <string>
 
 #include "musclesim/io/writers/curves_csv.h"
@@ -193,6 +197,31 @@ TEST(EccentricYaml, AnEstimateTheModelCannotTakeIsLeftOutWithTheReason) {
               HasSubstr("# eccentric branch left out: it gives velocity.eccentric.v_max = "));
   const VelocityParams read = LoadModelSpec(out).params.velocity;  // and the model loads
   EXPECT_FALSE(read.eccentric.v_max || read.eccentric.n || read.eccentric.limit);
+}
+
+TEST(EccentricYaml, AConcentricCurveFlatterThanAnyVMaxIsRefusedAndNoFileWritten) {
+  // exact data of n = 10 and v_max = 2e12 m/s, beyond the model's 1e12: the eccentric branch is
+  // not blamed, and no model file that cannot be read back is written
+  std::string csv = "shortening_velocity,tension\n";
+  for (int i = 0; i <= 40; ++i) {
+    const double v = 0.025 * i;
+    csv += FormatFull(v) + "," + FormatFull(100.0 * (1.0 - std::pow(v / 2e12, 0.1))) + "\n";
+  }
+  WriteTempFile("flat.csv", csv);
+  const std::string data = WriteTempFile(
+      "flat.yaml",
+      "velocity: {csv: " +
+          std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+          "_flat.csv}\n");
+  const std::string out = ::testing::TempDir() + "flat_model.yaml";
+  std::remove(out.c_str());
+  const std::string err = ::testing::TempDir() + "flat.err";
+  const int status = std::system(
+      (std::string(MUSCLESIM_BINARY) + " identify " + data + " -o " + out + " 2> " + err).c_str());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << status;
+  EXPECT_THAT(ReadFile(err), HasSubstr("model.velocity.v_max = "));
+  EXPECT_THAT(ReadFile(err), HasSubstr("must be > 0 and <= 1e+12 [m/s]"));
+  EXPECT_FALSE(std::ifstream(out).good());
 }
 
 }  // namespace
