@@ -2,6 +2,9 @@
 
 #include <pybind11/stl.h>
 
+#include "musclesim/model/family_fields.h"
+#include "part_dict.h"
+
 namespace py = pybind11;
 
 namespace musclesim::python {
@@ -11,58 +14,22 @@ py::dict GaussianDict(const Gaussian& g) {
                   py::arg("center") = g.center);
 }
 
-namespace {
-
-// A family's block (docs/model.md 14.1): its own keys, as the `model:` block has them.
-py::dict FamilyDict(const ModelParams& p) {
-  py::dict out(py::arg("family") = ToString(p.family), py::arg("f_iso") = p.f_iso);
-  if (p.family == CurveFamily::kDeGroote2016) {
-    const DeGrooteParams& d = p.degroote2016;
-    out["optimal_fiber_length"] = d.optimal_fiber_length;
-    out["max_contraction_velocity"] = d.max_contraction_velocity;
-    out["active_force_width_scale"] = d.active_force_width_scale;
-    out["passive_fiber_strain_at_one_norm_force"] = d.passive_fiber_strain_at_one_norm_force;
-    out["fiber_damping"] = d.fiber_damping;
-  } else {
-    const MujocoMuscleParams& m = p.mujoco;
-    out["range"] = py::make_tuple(m.range[0], m.range[1]);
-    out["lengthrange"] = py::make_tuple(m.lengthrange[0], m.lengthrange[1]);
-    out["lmin"] = m.lmin;
-    out["lmax"] = m.lmax;
-    out["vmax"] = m.vmax;
-    out["fpmax"] = m.fpmax;
-    out["fvmax"] = m.fvmax;
-  }
-  if (p.pennation_angle != 0.0) out["pennation_angle"] = p.pennation_angle;
-  return out;
-}
-
-}  // namespace
-
 py::dict ParamsDict(const ModelParams& p) {
-  if (p.family != CurveFamily::kPaper) return FamilyDict(p);
-  py::list gaussians;
-  for (const Gaussian& g : p.active_length.gaussians) gaussians.append(GaussianDict(g));
-  py::dict velocity(py::arg("v_max") = p.velocity.v_max, py::arg("n") = p.velocity.n,
-                    py::arg("epsilon") = p.velocity.epsilon);
-  const EccentricParams& e = p.velocity.eccentric;
-  if (e.v_max || e.n || e.limit) {
-    py::dict eccentric;
-    if (e.v_max) eccentric["v_max"] = *e.v_max;
-    if (e.n) eccentric["n"] = *e.n;
-    if (e.limit) eccentric["limit"] = *e.limit;
-    velocity["eccentric"] = eccentric;
+  // the described fields (model/family_fields.h), then the lists each family reads itself
+  py::dict out;
+  if (p.family != CurveFamily::kPaper) out["family"] = ToString(p.family);
+  AddFields(*VariantOf(ModelFamilies(), p), p, out);
+  if (p.family == CurveFamily::kMujoco) {
+    out["range"] = py::make_tuple(p.mujoco.range[0], p.mujoco.range[1]);
+    out["lengthrange"] = py::make_tuple(p.mujoco.lengthrange[0], p.mujoco.lengthrange[1]);
+  } else if (p.family == CurveFamily::kPaper) {
+    py::list gaussians;
+    for (const Gaussian& g : p.active_length.gaussians) gaussians.append(GaussianDict(g));
+    py::dict active = out["active_length"].cast<py::dict>();
+    active["optimal_range"] =
+        py::make_tuple(p.active_length.optimal_min, p.active_length.optimal_max);
+    active["gaussians"] = gaussians;
   }
-  py::dict out(py::arg("f_iso") = p.f_iso,
-               py::arg("passive") =
-                   py::dict(py::arg("k_p") = p.passive.k_p, py::arg("alpha") = p.passive.alpha,
-                            py::arg("slack_length") = p.passive.slack_length),
-               py::arg("active_length") = py::dict(
-                   py::arg("optimal_range") =
-                       py::make_tuple(p.active_length.optimal_min, p.active_length.optimal_max),
-                   py::arg("sigma") = p.active_length.sigma, py::arg("gaussians") = gaussians),
-               py::arg("velocity") = velocity);
-  if (p.pennation_angle != 0.0) out["pennation_angle"] = p.pennation_angle;
   return out;
 }
 

@@ -372,6 +372,26 @@ def degroote_tension(x, v, u, f_iso, l_opt, v_max, damping):
     return f_iso * (u * active * f_v + passive + damping * vm)
 
 
+def test_params_hold_every_key_of_the_block_with_its_default_and_only_given_optional_ones():
+    # the dict is the block as the reader completes it: defaults filled in, integers as ints,
+    # an eccentric key only where the block gives one
+    params = ms.Model(MODEL).params
+    assert params["pennation_angle"] == 0.0
+    assert params["active_length"]["sigma"] == 1.0
+    assert type(params["velocity"]["n"]) is int and params["velocity"]["n"] == MODEL["velocity"]["n"]
+    assert "eccentric" not in params["velocity"]
+    partial = json.loads(json.dumps(MODEL))
+    partial["velocity"]["eccentric"] = {"n": 2}
+    assert ms.Model(partial).params["velocity"]["eccentric"] == {"n": 2}
+    degroote = ms.Model({"family": "degroote2016", "f_iso": 400.0,
+                         "optimal_fiber_length": 0.1}).params
+    # OpenSim's defaults, as the reader fills them in
+    assert degroote == {"family": "degroote2016", "f_iso": 400.0, "pennation_angle": 0.0,
+                        "optimal_fiber_length": 0.1, "max_contraction_velocity": 10.0,
+                        "active_force_width_scale": 1.0,
+                        "passive_fiber_strain_at_one_norm_force": 0.6, "fiber_damping": 0.0}
+
+
 def test_a_family_model_round_trips_and_evaluates_its_tools_curves():
     block = {"family": "degroote2016", "f_iso": 400.0, "optimal_fiber_length": 0.1,
              "max_contraction_velocity": 10.0, "fiber_damping": 0.02}

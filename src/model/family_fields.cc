@@ -17,13 +17,12 @@ constexpr InputRange Normalised(double min, bool min_exclusive, const char* why)
 
 // f_iso and the pennation angle, every family's.
 std::vector<Field> Common() {
-  using Kind = TensionParameterKind;
   Field pennation =
       MemberField("pennation_angle", &ModelParams::pennation_angle, InputRange{0.0, 0.0, "rad", ""},
                   0.0, "at the optimal fiber length, >= 0 and below pi/2");
   pennation.values = FieldValues::kFinite;
   return {MemberField("f_iso", &ModelParams::f_iso, kPositiveForceRange, std::nullopt,
-                      "the maximum isometric force", static_cast<int>(Kind::kIsometricTension)),
+                      "the maximum isometric force"),
           std::move(pennation)};
 }
 
@@ -69,10 +68,12 @@ ModelFamily Paper() {
   // in the order of the block's keys in files: f_iso, passive, active_length, velocity
   std::vector<Field> common = Common();
   std::vector<Field> fields{common.front()};
+  fields.front().partial = static_cast<int>(TensionParameterKind::kIsometricTension);
   for (Field& field : NestedFields("passive", &ModelParams::passive, PassiveBlock().fields)) {
     fields.push_back(std::move(field));
   }
-  fields.push_back({"active_length.sigma", InputRange{0.0, 0.0, "-", ""}, 1.0,
+  fields.push_back({"active_length.sigma", InputRange{0.0, 0.0, "-", ""},
+                    ActiveLengthParams{}.sigma,
                     "the common scale of the widths, > 0: only width / sigma shapes the curve",
                     [](const ModelParams& p) { return p.active_length.sigma; },
                     [](ModelParams& p, double v) { p.active_length.sigma = v; },
