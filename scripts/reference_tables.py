@@ -21,6 +21,7 @@ BLOCKS = {
     "activation dynamics": ("docs/guide/scenarios.md", "activation_dynamics"),
     "model families": ("docs/guide/model.md", "models"),
     "gains": ("docs/guide/control.md", "gains"),
+    "solver": ("docs/guide/scenarios.md", "solver"),
 }
 
 

@@ -13,6 +13,7 @@
 #include "musclesim/dynamics/waveform_shapes.h"
 #include "musclesim/io/writers/reference_table.h"
 #include "musclesim/model/family_fields.h"
+#include "musclesim/solver/solver_fields.h"
 
 namespace musclesim::cli {
 
@@ -32,6 +33,7 @@ PART is one of
   models    the model blocks of the curve families (paper, degroote2016, mujoco)
   activation_dynamics
             the families of activation dynamics (their `family:` in place of `type:`)
+  solver    the `solver:` block: CVODES' tolerances, step guards, method and linear solver
 )";
 
 }  // namespace
@@ -58,10 +60,12 @@ int ReferenceCommand(int argc, char** argv) {
     std::cout << ReferenceTable(ModelFamilies(), "family");
   } else if (part == "activation_dynamics") {
     std::cout << ReferenceTable(ActivationFamilies(), "family");
+  } else if (part == "solver") {
+    std::cout << ReferenceTable(SolverBlock(), "block");
   } else {
     throw UsageError("unknown part '" + part +
-                     "': actuator, elements, loads, waveforms, gains, models or "
-                     "activation_dynamics (see --help)");
+                     "': actuator, elements, loads, waveforms, gains, models, "
+                     "activation_dynamics or solver (see --help)");
   }
   return 0;
 }

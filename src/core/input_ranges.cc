@@ -13,8 +13,11 @@ double TimeScale(double t_start, double t_end) {
 }
 
 std::string InputRange::Bounds() const {
-  return min_exclusive ? "> " + FormatNumber(min) + " and <= " + FormatNumber(max)
-                       : "from " + FormatNumber(min) + " to " + FormatNumber(max);
+  if (!min_exclusive && !max_exclusive) {
+    return "from " + FormatNumber(min) + " to " + FormatNumber(max);
+  }
+  return (min_exclusive ? "> " : ">= ") + FormatNumber(min) +
+         (max_exclusive ? " and < " : " and <= ") + FormatNumber(max);
 }
 
 std::string InputRange::Rule() const { return "must be " + Bounds() + " [" + unit + "]: " + why; }

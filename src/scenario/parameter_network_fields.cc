@@ -16,6 +16,7 @@
 #include "musclesim/dynamics/load_kinds.h"
 #include "musclesim/dynamics/waveform_shapes.h"
 #include "musclesim/scenario/actuator_scenario.h"
+#include "musclesim/solver/solver_fields.h"
 
 namespace musclesim {
 
@@ -236,18 +237,10 @@ void ParameterResolver::Setting(std::size_t i) {
                   &kTimeRange);
   }
   if (block == "solver") {
-    if (key == "rtol") return Number([](Scenario& s) -> double& { return s.solver.rtol; }, nullptr);
-    if (key == "atol") return Number([](Scenario& s) -> double& { return s.solver.atol; }, nullptr);
-    if (key == "max_step") {
-      return Number([](Scenario& s) -> double& { return s.solver.max_step; }, nullptr);
-    }
-    if (key == "max_steps") {
-      p_.integer_ = true;
-      p_.get_ = [](const Scenario& s) { return static_cast<double>(s.solver.max_steps); };
-      p_.set_ = [](Scenario& s, double v) { s.solver.max_steps = static_cast<long>(v); };
-      p_.range_ = InputRange{1.0, 1e12, "-", "a guard on the steps of one run"};
-      p_.bounded_ = true;
-      return;
+    const NumberField<SolverOptions>* field = FindField(SolverBlock().front(), key);
+    if (field != nullptr) {
+      return Field(*field,
+                   Locate<SolverOptions>([](Scenario& s) -> SolverOptions& { return s.solver; }));
     }
   }
   if (block == "output") {

@@ -80,6 +80,7 @@ class ParameterResolver {
       return get(at(const_cast<Scenario&>(s)));
     };
     p_.set_ = [at, set = field.set](Scenario& s, double v) { set(at(s), v); };
+    p_.integer_ = field.integer;
     const InputRange* range = field.values == FieldValues::kRange    ? &field.range
                               : field.values == FieldValues::kSignal ? signal
                                                                      : nullptr;

@@ -10,40 +10,6 @@
 
 namespace musclesim {
 
-constexpr EnumName<IntegrationMethod> kMethodNames[] = {
-    {IntegrationMethod::kBdf, "bdf"},
-    {IntegrationMethod::kAdams, "adams"},
-};
-
-std::string_view ToString(IntegrationMethod method) { return ToString(kMethodNames, method); }
-
-IntegrationMethod ParseIntegrationMethod(std::string_view text) {
-  return Parse(kMethodNames, "method", text);
-}
-
-constexpr EnumName<JacobianKind> kJacobianNames[] = {
-    {JacobianKind::kAnalytic, "analytic"},
-    {JacobianKind::kDifferenceQuotient, "difference_quotient"},
-};
-
-std::string_view ToString(JacobianKind kind) { return ToString(kJacobianNames, kind); }
-
-JacobianKind ParseJacobianKind(std::string_view text) {
-  return Parse(kJacobianNames, "jacobian", text);
-}
-
-constexpr EnumName<LinearSolverKind> kLinearSolverNames[] = {
-    {LinearSolverKind::kDense, "dense"},   {LinearSolverKind::kBand, "band"},
-    {LinearSolverKind::kSparse, "sparse"}, {LinearSolverKind::kAuto, "auto"},
-    {LinearSolverKind::kSmall, "small"},
-};
-
-std::string_view ToString(LinearSolverKind kind) { return ToString(kLinearSolverNames, kind); }
-
-LinearSolverKind ParseLinearSolverKind(std::string_view text) {
-  return Parse(kLinearSolverNames, "linear_solver", text);
-}
-
 LinearSolverKind ChooseLinearSolver(const JacobianPattern& pattern) {
   // up to a few dozen states a dense LU costs less than band or sparse bookkeeping, and a
   // fixed-size one with its own vector least (docs/solver.md)
@@ -66,19 +32,6 @@ constexpr EnumName<RunStatus> kStatusNames[] = {
 };
 
 std::string_view ToString(RunStatus status) { return ToString(kStatusNames, status); }
-
-void Validate(const SolverOptions& o) {
-  // below ~100 ulps double precision cannot meet a tolerance (CVODE: CV_TOO_MUCH_ACC); at 1
-  // or more the error allowed is as large as the value itself
-  Require(o.rtol >= kMinTolerance && o.rtol < 1.0, "rtol", o.rtol,
-          "must be >= 1e-14 (what double precision can meet) and < 1 (an error as large as "
-          "the value)");
-  // an absolute error of a metre or a metre per second says nothing about an actuator
-  Require(o.atol > 0.0 && o.atol < 1.0, "atol", o.atol, "must be > 0 and < 1 [m and m/s]");
-  Require(std::isfinite(o.max_step) && o.max_step >= 0.0, "max_step", o.max_step,
-          "must be finite and >= 0 (0: no limit) [s]");
-  Require(o.max_steps >= 1, "max_steps", static_cast<double>(o.max_steps), "must be >= 1");
-}
 
 namespace {
 

@@ -24,6 +24,7 @@
 #include "musclesim/io/readers/model_text.h"
 #include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/model/family_fields.h"
+#include "musclesim/solver/solver_fields.h"
 
 namespace musclesim {
 namespace {
@@ -88,11 +89,23 @@ TEST(ReferenceTable, TheActuatorBlockInTheScenariosGuideIsTheDescription) {
       << kRewrite;
 }
 
+TEST(ReferenceTable, TheSolverBlockInTheScenariosGuideIsTheDescription) {
+  EXPECT_EQ(Block(Read("docs/guide/scenarios.md"), "solver"),
+            ReferenceTable(SolverBlock(), "block"))
+      << kRewrite;
+}
+
 TEST(ReferenceTable, RendersEachFieldOnceWithItsDefaultAndBounds) {
   const std::string table = ReferenceTable(LoadVariants());
   EXPECT_THAT(table, HasSubstr("| `mass` (hanging mass) | F = mass gravity"));
   EXPECT_THAT(table, HasSubstr("| `gravity` | m/s^2 | 9.81 | from -1000 to 1000: about 100 g"));
   EXPECT_THAT(table, HasSubstr("| `stiffness` | N/m | required | from 0 to 1e+12: "));
+  // a word field: its default and the names it accepts
+  EXPECT_THAT(ReferenceTable(SolverBlock(), "block"),
+              HasSubstr("| `method` | | bdf | a name: bdf, adams | "));
+  // an open upper bound
+  EXPECT_THAT(ReferenceTable(SolverBlock(), "block"),
+              HasSubstr("| `rtol` | - | 1e-06 | >= 1e-14 and < 1: "));
 }
 
 // The message of reading the network file `text` from memory, or "(read)".
@@ -149,12 +162,16 @@ void ExpectEachBoundRefused(const std::vector<PartVariant<Part>>& variants,
         return file(FieldsText(variant, field, value, name_key));
       };
       const double below = field.range.min_exclusive ? field.range.min : field.range.min - 1.0;
-      for (const double bad : {field.range.max * 2.0, below}) {
+      const double above = field.range.max_exclusive ? field.range.max : field.range.max * 2.0;
+      for (const double bad : {above, below}) {
         const std::string message = NetworkError(text(bad));
         EXPECT_THAT(message, HasSubstr(prefix + field.key + " = "));
-        EXPECT_THAT(message, HasSubstr(field.range.Rule()));
+        EXPECT_THAT(message, HasSubstr(FieldRule(field)));
       }
-      EXPECT_EQ(NetworkError(text(field.range.max)), "(read)");
+      // the largest value accepted: the bound, or a few roundoffs below an open one
+      const double largest =
+          field.range.max_exclusive ? field.range.max * (1.0 - 1e-15) : field.range.max;
+      EXPECT_EQ(NetworkError(text(largest)), "(read)");
     }
   }
 }
@@ -203,6 +220,16 @@ TEST(ReferenceTable, TheReaderAppliesEachGainsRange) {
                "reference: {type: constant, value: 0.1}, drives: e, gains: {" +
                fields + "}}\n" + kTime;
       });
+}
+
+TEST(ReferenceTable, TheReaderAppliesEachSolverRange) {
+  ExpectEachBoundRefused(SolverBlock(), "type", "solver.", [](std::string fields) {
+    fields.replace(0, std::string("type: solver, ").size(), "");  // the block has no type
+    return std::string(kTwoNodes) +
+           "elements:\n  - {name: e, type: spring, from: wall, to: load, stiffness: 10, "
+           "rest_length: 0.1}\n" +
+           kTime + "solver: {" + fields + "}\n";
+  });
 }
 
 // The same for the other families' model blocks: each ranged field past each bound refused

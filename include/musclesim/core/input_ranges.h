@@ -17,14 +17,16 @@ struct InputRange {
   const char* unit = "";       // printed after the bounds ("s", "m", "N") [-]
   const char* why = "";        // why the bounds are where they are, for messages [-]
   bool min_exclusive = false;  // refuse `min` itself (> min rather than >= min) [-]
+  bool max_exclusive = false;  // refuse `max` itself (< max rather than <= max) [-]
 
   // False for NaN.
   bool Contains(double value) const {
-    return (min_exclusive ? value > min : value >= min) && value <= max;
+    return (min_exclusive ? value > min : value >= min) &&
+           (max_exclusive ? value < max : value <= max);
   }
   // "must be from -1e+09 to 1e+09 [s]: <why>" or "must be > 0 and <= 1000 [m]: <why>"
   std::string Rule() const;
-  // The bounds alone: "from -1e+09 to 1e+09", "> 0 and <= 1000".
+  // The bounds alone: "from -1e+09 to 1e+09", "> 0 and <= 1000", ">= 1e-14 and < 1".
   std::string Bounds() const;
 };
 

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "musclesim/core/enum_names.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/core/input_ranges.h"
 
@@ -60,6 +61,34 @@ bool FieldAccepts(const NumberField<Part>& field, double value) {
   return field.range.Contains(value) && (!field.integer || value == std::floor(value));
 }
 
+// One name of a part, chosen from a list (a solver's method: bdf or adams).
+template <typename Part>
+struct WordField {
+  std::string key;
+  std::vector<std::string_view> names;  // the names a file may give, in the docs' order
+  std::string_view default_name;        // what an absent key means
+  const char* doc = "";
+  std::function<std::string_view(const Part&)> get;
+  // Sets it to one of `names`.
+  std::function<void(Part&, std::string_view)> set;
+};
+
+// The word field of the enum `member` of a Part, its names those of `table` (core/enum_names.h).
+template <typename Part, typename Enum, std::size_t N>
+WordField<Part> EnumField(const char* key, Enum Part::*member, const EnumName<Enum> (&table)[N],
+                          const char* doc) {
+  WordField<Part> field;
+  field.key = key;
+  for (const EnumName<Enum>& entry : table) field.names.push_back(entry.name);
+  field.default_name = ToString(table, Part{}.*member);
+  field.doc = doc;
+  field.get = [member, &table](const Part& part) { return ToString(table, part.*member); };
+  field.set = [member, &table, key](Part& part, std::string_view name) {
+    part.*member = Parse(table, key, name);
+  };
+  return field;
+}
+
 // One variant of a part (an element law, a kind of load): the `type` a file names and, when
 // a type has several variants, the key whose presence selects this one.
 template <typename Part>
@@ -71,6 +100,7 @@ struct PartVariant {
   const char* selector_doc = "";   // the selector in a message: "stiffness (a linear tendon)"
   const char* law = "";            // its equation, for the table ("T = k (l - l0)")
   std::vector<NumberField<Part>> fields;
+  std::vector<WordField<Part>> words;   // its names chosen from a list, read after the numbers
   std::vector<const char*> other_keys;  // keys read by the part's own reader (a table's points)
   std::function<bool(const Part&)> is;  // whether a part is of this variant
   std::function<void(Part&)> make;      // gives a part this variant's kind, before its fields

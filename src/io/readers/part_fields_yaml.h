@@ -1,6 +1,7 @@
 // Private: reading a described part (core/part_fields.h) from its map: which variant the map
-// names, the keys it may hold, and each field against its range, nested fields in their own
-// maps. The messages name file:line:column, key path, value and rule, as every reader's do.
+// names, the keys it may hold, each number against its range, nested fields in their own
+// maps, and each word among its names. The messages name file:line:column, key path, value
+// and rule, as every reader's do.
 #pragma once
 
 #include <algorithm>
@@ -32,6 +33,7 @@ std::vector<std::string> VariantKeys(const std::vector<PartVariant<Part>>& varia
     if (type != variant.type) continue;
     for (const NumberField<Part>& field : variant.fields)
       AddKey(keys, std::string(HeadKey(field.key)));
+    for (const WordField<Part>& word : variant.words) AddKey(keys, word.key);
     for (const char* other : variant.other_keys) AddKey(keys, std::string(HeadKey(other)));
   }
   return keys;
@@ -85,6 +87,26 @@ const PartVariant<Part>* SelectVariant(const yaml::Source& src, const Document& 
   return chosen;
 }
 
+// Reads the word fields of `variant` from the map `item` into `part`: each a name among its
+// names, its default where absent.
+template <typename Part>
+void ReadWords(const yaml::Source& src, const Document& item, const std::string& path,
+               const PartVariant<Part>& variant, Part& part) {
+  for (const WordField<Part>& word : variant.words) {
+    const Document& given = item[word.key];
+    if (!given) {
+      word.set(part, word.default_name);
+      continue;
+    }
+    const std::string key_path = yaml::Join(path, word.key);
+    const std::string name = yaml::ReadString(src, given, key_path);
+    if (std::find(word.names.begin(), word.names.end(), name) == word.names.end()) {
+      yaml::Fail(src, given, key_path, name, MustBeOneOf(word.names));
+    }
+    word.set(part, name);
+  }
+}
+
 // Reads every field of `variant` from the map `item` into `part`, in the order listed: a
 // nested field ("velocity.eccentric.n") from its maps, whose keys are checked when each is
 // first met; a map may be left out when its fields have defaults or are optional. `signal`
@@ -136,6 +158,7 @@ void ReadFields(const yaml::Source& src, const Document& item, const std::string
     field.set(part, range != nullptr ? yaml::ReadNumberIn(src, given, key_path, *range)
                                      : yaml::ReadNumber(src, given, key_path));
   }
+  ReadWords(src, item, path, variant, part);
 }
 
 }  // namespace musclesim

@@ -8,6 +8,7 @@
 #include "musclesim/dynamics/activation_families.h"
 #include "musclesim/dynamics/load_kinds.h"
 #include "musclesim/dynamics/waveform_shapes.h"
+#include "musclesim/solver/solver_fields.h"
 
 namespace musclesim {
 
@@ -216,34 +217,8 @@ TimeSpan ReadTime(const yaml::Source& src, const Document& time) {
 SolverOptions ReadSolver(const yaml::Source& src, const Document& node, const std::string& path,
                          double t_start, double t_end) {
   SolverOptions o;
-  yaml::RequireMap(
-      src, node, path,
-      {"method", "rtol", "atol", "jacobian", "max_step", "max_steps", "linear_solver"});
-  if (node["method"]) {
-    const std::string text = yaml::ReadString(src, node["method"], Join(path, "method"));
-    ValidateAt(src, node, path, [&] { o.method = ParseIntegrationMethod(text); });
-  }
-  if (node["jacobian"]) {
-    const std::string text = yaml::ReadString(src, node["jacobian"], Join(path, "jacobian"));
-    ValidateAt(src, node, path, [&] { o.jacobian = ParseJacobianKind(text); });
-  }
-  if (node["linear_solver"]) {
-    const std::string text =
-        yaml::ReadString(src, node["linear_solver"], Join(path, "linear_solver"));
-    ValidateAt(src, node, path, [&] { o.linear_solver = ParseLinearSolverKind(text); });
-  }
-  o.rtol = ReadOptionalNumber(src, node, path, "rtol", o.rtol);
-  o.atol = ReadOptionalNumber(src, node, path, "atol", o.atol);
-  o.max_step = ReadOptionalNumber(src, node, path, "max_step", o.max_step);
-  if (node["max_steps"]) {
-    const double steps = yaml::ReadNumber(src, node["max_steps"], Join(path, "max_steps"));
-    if (!(steps >= 1.0 && steps <= 1e12) || steps != std::floor(steps)) {
-      yaml::Fail(src, node["max_steps"], Join(path, "max_steps"), yaml::Describe(node["max_steps"]),
-                 "must be an integer from 1 to 1e12");
-    }
-    o.max_steps = static_cast<long>(steps);
-  }
-  ValidateAt(src, node, path, [&] { Validate(o); });
+  yaml::RequireMap(src, node, path, VariantKeys(SolverBlock(), "solver"));
+  ReadFields(src, node, path, SolverBlock().front(), o);
   // a step limit the run could never finish with, or one below the time resolution
   const double span = t_end - t_start;
   const double shortest = std::max(kMinIntervalRelative * TimeScale(t_start, t_end),

@@ -1,6 +1,7 @@
 // The reference table of a described part (core/part_fields.h) in Markdown: a row per field
 // of each variant, with its key, unit, default, accepted values and their reason, and its
-// meaning. The tables in docs/guide/ are these, checked by tests/io/reference_table_test.cc.
+// meaning; a row per word field, with the names it accepts. The tables in docs/guide/ are
+// these, checked by tests/io/reference_table_test.cc.
 #pragma once
 
 #include <string>
@@ -47,6 +48,12 @@ std::string ReferenceTable(const std::vector<PartVariant<Part>>& variants,
            : field.given       ? "optional"
                                : "required") +
           " | " + AcceptedCell(field) + " | " + field.doc);
+    }
+    for (const WordField<Part>& word : variant.words) {
+      std::string names;
+      for (std::string_view name : word.names) names.append(names.empty() ? "" : ", ").append(name);
+      row(std::string("`") + word.key + "` | | " + std::string(word.default_name) +
+          " | a name: " + names + " | " + word.doc);
     }
     for (const char* other : variant.other_keys) {
       row(std::string("`") + other + "` | | | its own rules (above) | ");
