@@ -15,6 +15,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 # block name -> (page, part)
 BLOCKS = {
     "actuator": ("docs/guide/scenarios.md", "actuator"),
+    "nodes": ("docs/guide/networks.md", "nodes"),
     "element laws": ("docs/guide/networks.md", "elements"),
     "waveforms": ("docs/guide/scenarios.md", "waveforms"),
     "loads": ("docs/guide/scenarios.md", "loads"),

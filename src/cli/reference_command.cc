@@ -10,6 +10,7 @@
 #include "musclesim/dynamics/controller_gains.h"
 #include "musclesim/dynamics/element_laws.h"
 #include "musclesim/dynamics/load_kinds.h"
+#include "musclesim/dynamics/node_kinds.h"
 #include "musclesim/dynamics/waveform_shapes.h"
 #include "musclesim/io/writers/reference_table.h"
 #include "musclesim/model/family_fields.h"
@@ -25,6 +26,7 @@ Prints, as a Markdown table, every key of PART with its unit, default, accepted 
 their reason, and its meaning: what the readers, --set and the parameter handles apply.
 PART is one of
   actuator  the single actuator's `actuator:` block
+  nodes     a network's nodes: fixed, prescribed and free
   elements  the laws of springs, tendons and dampers (a network's elements)
   loads     the spring and mass loads (a force load is a waveform)
   waveforms the shapes of a signal over time (activations, excitations, force loads,
@@ -48,6 +50,8 @@ int ReferenceCommand(int argc, char** argv) {
   const std::string& part = args.positional[0];
   if (part == "actuator") {
     std::cout << ReferenceTable(ActuatorBlock(), "block");
+  } else if (part == "nodes") {
+    std::cout << ReferenceTable(NodeKinds(), "node");
   } else if (part == "elements") {
     std::cout << ReferenceTable(ElementLaws());
   } else if (part == "loads") {
@@ -64,7 +68,7 @@ int ReferenceCommand(int argc, char** argv) {
     std::cout << ReferenceTable(SolverBlock(), "block");
   } else {
     throw UsageError("unknown part '" + part +
-                     "': actuator, elements, loads, waveforms, gains, models, "
+                     "': actuator, nodes, elements, loads, waveforms, gains, models, "
                      "activation_dynamics or solver (see --help)");
   }
   return 0;

@@ -6,6 +6,7 @@
 
 #include "musclesim/core/errors.h"
 #include "musclesim/dynamics/element_laws.h"
+#include "musclesim/dynamics/node_kinds.h"
 #include "musclesim/core/input_ranges.h"
 #include "musclesim/core/enum_names.h"
 
@@ -74,41 +75,31 @@ void ValidateMotion(const Waveform& motion, const std::string& key) {
 }  // namespace
 
 void Validate(const Node& node) {
-  switch (node.kind) {
-    case NodeKind::kFixed:
-      Require(std::isfinite(node.position), "fixed", node.position, "must be finite [m]");
-      for (int c = 0; c < 2; ++c) {
-        Require(std::isfinite(node.position_yz[c]),
-                Indexed("fixed", static_cast<std::size_t>(c) + 1), node.position_yz[c],
-                "must be finite [m]");
-      }
-      break;
-    case NodeKind::kPrescribed:
-      ValidateMotion(node.motion, "prescribed");
-      for (int c = 0; c < 2; ++c) {
-        ValidateMotion(node.motion_yz[c], Indexed("prescribed", static_cast<std::size_t>(c) + 1));
-      }
-      break;
-    case NodeKind::kFree:
-      Require(std::isfinite(node.mass) && node.mass >= 0.0, "mass", node.mass,
-              "must be finite and >= 0 [kg] (0: a massless junction, docs/model.md 14.4)");
-      // a massless junction's velocity is the root of its balance, not an initial condition
-      Require(
-          node.mass > 0.0 || (node.velocity == 0.0 && node.velocity_yz == std::array<double, 2>{}),
-          "velocity", node.velocity,
-          "must be absent (or 0) on a massless junction: its velocity follows from its "
-          "force balance");
-      Require(std::isfinite(node.position), "position", node.position, "must be finite [m]");
-      Require(std::isfinite(node.velocity), "velocity", node.velocity, "must be finite [m/s]");
-      for (int c = 0; c < 2; ++c) {
-        Require(std::isfinite(node.position_yz[c]),
-                Indexed("position", static_cast<std::size_t>(c) + 1), node.position_yz[c],
-                "must be finite [m]");
-        Require(std::isfinite(node.velocity_yz[c]),
-                Indexed("velocity", static_cast<std::size_t>(c) + 1), node.velocity_yz[c],
-                "must be finite [m/s]");
-      }
-      break;
+  const NodeVariant* kind = VariantOf(NodeKinds(), node);
+  assert(kind != nullptr);  // every NodeKind has its variant
+  // finite, not a file's ranges: a program may build past them (a chain longer than a
+  // kilometre; a mass too small for its forces, whose overflow NonFiniteCause then names)
+  for (const PointField<Node>& point : kind->points) {
+    const FieldPoint x = point.get(node);
+    for (std::size_t c = 0; c < x.size(); ++c) {
+      Require(std::isfinite(x[c]), CoordinateKey(point.key, c), x[c],
+              std::string("must be finite [") + point.range.unit + "]");
+    }
+  }
+  if (node.kind == NodeKind::kPrescribed) {
+    ValidateMotion(node.motion, "prescribed");
+    for (int c = 0; c < 2; ++c) {
+      ValidateMotion(node.motion_yz[c], Indexed("prescribed", static_cast<std::size_t>(c) + 1));
+    }
+  }
+  if (node.kind == NodeKind::kFree) {
+    Require(std::isfinite(node.mass) && node.mass >= 0.0, "mass", node.mass,
+            "must be finite and >= 0 [kg] (0: a massless junction, docs/model.md 14.4)");
+    // a massless junction's velocity is the root of its balance, not an initial condition
+    Require(node.mass > 0.0 || node.VelocityCoordinates() == Coordinates{}, "velocity",
+            node.velocity,
+            "must be absent (or 0) on a massless junction: its velocity follows from its force "
+            "balance");
   }
 }
 

@@ -14,6 +14,7 @@
 #include "musclesim/dynamics/controller_gains.h"
 #include "musclesim/dynamics/element_laws.h"
 #include "musclesim/dynamics/load_kinds.h"
+#include "musclesim/dynamics/node_kinds.h"
 #include "musclesim/dynamics/waveform_shapes.h"
 #include "musclesim/scenario/actuator_scenario.h"
 #include "musclesim/solver/solver_fields.h"
@@ -51,14 +52,10 @@ void ParameterResolver::Node(std::size_t i) {
   const std::string& key = Key(i + 1);
   const NodeKind kind = scenario_.nodes[n].kind;
   const Locate<musclesim::Node> node = [n](Scenario& s) -> musclesim::Node& { return s.nodes[n]; };
-  // in 2 or 3 dimensions a coordinate is indexed (nodes[1].position[1] is y): x is the
-  // scalar field, y and z the _yz ones
-  const bool coordinates = (kind == NodeKind::kFixed && key == "fixed") ||
-                           (kind == NodeKind::kPrescribed && key == "prescribed") ||
-                           (kind == NodeKind::kFree && (key == "position" || key == "velocity"));
-  const std::size_t c = coordinates ? Coordinate(i + 2, key) : 0;
-  const std::size_t next = scenario_.space.dimensions > 1 && coordinates ? i + 3 : i + 2;
+  // in 2 or 3 dimensions a coordinate is indexed (nodes[1].position[1] is y)
+  const std::size_t next = scenario_.space.dimensions > 1 ? i + 3 : i + 2;
   if (kind == NodeKind::kPrescribed && key == "prescribed") {
+    const std::size_t c = Coordinate(i + 2, key);
     return WaveformField(
         next,
         [node, c](Scenario& s) -> Waveform& {
@@ -66,31 +63,17 @@ void ParameterResolver::Node(std::size_t i) {
         },
         &kPositionRange);
   }
-  End(next);
-  if (kind == NodeKind::kFixed && key == "fixed") {
-    return Number(
-        [node, c](Scenario& s) -> double& {
-          return c == 0 ? node(s).position : node(s).position_yz[c - 1];
-        },
-        &kPositionRange);
+  const NodeVariant& variant = *VariantOf(NodeKinds(), scenario_.nodes[n]);
+  if (const PointField<musclesim::Node>* point = FindPoint(variant, key)) {
+    const std::size_t c = Coordinate(i + 2, key);
+    End(next);
+    // the single actuator's node: its position is the actuator's length, above 0
+    const bool length = scenario_.form == ScenarioForm::kActuator && key == "position";
+    return Point(*point, node, c, length ? kLengthRange : point->range);
   }
-  if (kind == NodeKind::kFree) {
-    if (key == "mass")
-      return Number([node](Scenario& s) -> double& { return node(s).mass; }, &kMassRange);
-    if (key == "position") {
-      return Number(
-          [node, c](Scenario& s) -> double& {
-            return c == 0 ? node(s).position : node(s).position_yz[c - 1];
-          },
-          scenario_.form == ScenarioForm::kActuator ? &kLengthRange : &kPositionRange);
-    }
-    if (key == "velocity") {
-      return Number(
-          [node, c](Scenario& s) -> double& {
-            return c == 0 ? node(s).velocity : node(s).velocity_yz[c - 1];
-          },
-          &kSpeedRange);
-    }
+  End(i + 2);
+  if (const NumberField<musclesim::Node>* field = FindField(variant, key)) {
+    return Field(*field, node);
   }
   Fail("names no number of this " + std::string(ToString(kind)) + " node");
 }

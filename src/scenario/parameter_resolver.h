@@ -90,6 +90,24 @@ class ParameterResolver {
     }
   }
 
+  // Coordinate c of a described point field (core/part_fields.h) of the part at `at`, bounded
+  // by `range` (the field's own, unless the context narrows it).
+  template <typename Part>
+  void Point(const PointField<Part>& point, Locate<Part> at, std::size_t c,
+             const InputRange& range) {
+    p_.get_ = [at, get = point.get, c](const Scenario& s) {
+      return get(at(const_cast<Scenario&>(s)))[c];
+    };
+    p_.set_ = [at, get = point.get, set = point.set, c](Scenario& s, double v) {
+      Part& part = at(s);
+      FieldPoint x = get(part);
+      x[c] = v;
+      set(part, x);
+    };
+    p_.range_ = range;
+    p_.bounded_ = true;
+  }
+
   void Top();
   void Model(std::size_t i);
   // A key of a model block of its family (docs/model.md 14.1), step i its first.

@@ -408,7 +408,7 @@ const std::vector<Case> kCases = {
     {"NetworkUnknownTopLevelKey", "run {file} -o -", Network("loads:", "@load:"), 2,
      {"load ({at}): unknown key; allowed here: name, models, nodes, elements, loads, time"}},
     {"NetworkNodeWithTwoKinds", "run {file} -o -", Network("  - {name: wall, fixed: 0.0}", "  - @{name: wall, fixed: 0.0, mass: 1}"), 2,
-     {"nodes[0] = {name: wall, fixed: 0.0, mass: 1} ({at}): give exactly one of fixed"}},
+     {"nodes[0] = fixed and mass ({at}): give exactly one of fixed (its position [m]), prescribed (its motion) or mass"}},
     {"NetworkNodeNameNotPlain", "run {file} -o -", Network("{name: crank,", "{name: @\"cr,ank\","), 2,
      {"nodes[2].name = cr,ank ({at}): must be a plain name of letters, digits, _ and -"}},
     {"NetworkElementTypeUnknown", "run {file} -o -", Network("type: damper,", "type: @dashpot,"), 2,

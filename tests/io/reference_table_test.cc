@@ -19,6 +19,7 @@
 #include "musclesim/dynamics/controller_gains.h"
 #include "musclesim/dynamics/element_laws.h"
 #include "musclesim/dynamics/load_kinds.h"
+#include "musclesim/dynamics/node_kinds.h"
 #include "musclesim/dynamics/waveform_shapes.h"
 #include "musclesim/io/readers/document.h"
 #include "musclesim/io/readers/model_text.h"
@@ -50,6 +51,11 @@ std::string Block(const std::string& page, const std::string& name) {
 constexpr const char* kRewrite =
     "the docs' table differs from the part's description: python3 scripts/reference_tables.py "
     "rewrites it";
+
+TEST(ReferenceTable, NodeKindsInTheNetworksGuideAreTheDescriptions) {
+  EXPECT_EQ(Block(Read("docs/guide/networks.md"), "nodes"), ReferenceTable(NodeKinds(), "node"))
+      << kRewrite;
+}
 
 TEST(ReferenceTable, ElementLawsInTheNetworksGuideAreTheDescriptions) {
   EXPECT_EQ(Block(Read("docs/guide/networks.md"), "element laws"), ReferenceTable(ElementLaws()))
@@ -230,6 +236,66 @@ TEST(ReferenceTable, TheReaderAppliesEachSolverRange) {
            "rest_length: 0.1}\n" +
            kTime + "solver: {" + fields + "}\n";
   });
+}
+
+// A point written for `dimensions`: x itself on a line, else a list with `value` at
+// coordinate c and 0 elsewhere.
+std::string PointText(int dimensions, double value, std::size_t c) {
+  if (dimensions == 1) return FormatNumber(value);
+  std::string list = "[";
+  for (std::size_t k = 0; k < static_cast<std::size_t>(dimensions); ++k) {
+    list += (k == 0 ? "" : ", ") + FormatNumber(k == c ? value : 0.0);
+  }
+  return list + "]";
+}
+
+// Every bound of every node field and point, through the reader, on a line and in the plane:
+// node x (nodes[2], of each kind in turn, its other keys at half their maxima) joined by a
+// spring to a free node on a spring to the wall.
+TEST(ReferenceTable, TheReaderAppliesEachNodesRanges) {
+  for (const int d : {1, 2}) {
+    for (const NodeVariant& variant : NodeKinds()) {
+      const auto text = [&](const std::string& key, std::size_t c, double value) {
+        std::string x = "{name: x";
+        for (const NumberField<Node>& f : variant.fields) {
+          x += ", " + f.key + ": " + FormatNumber(f.key == key ? value : f.range.max / 2.0);
+        }
+        for (const PointField<Node>& p : variant.points) {
+          x += ", " + p.key + ": " +
+               (p.key == key ? PointText(d, value, c) : PointText(d, p.range.max / 2.0, 0));
+        }
+        return std::string(d == 1 ? "" : "dimensions: 2\n") +
+               "nodes:\n  - {name: wall, fixed: " + PointText(d, 0.0, 0) +
+               "}\n  - {name: load, mass: 1.0, position: " + PointText(d, 0.1, 0) + "}\n  - " + x +
+               "}\nelements:\n  - {name: a, type: spring, from: wall, to: load, stiffness: 10, "
+               "rest_length: 0.1}\n  - {name: b, type: spring, from: load, to: x, stiffness: "
+               "10, rest_length: 0.1}\n" +
+               kTime;
+      };
+      for (const NumberField<Node>& field : variant.fields) {
+        SCOPED_TRACE(std::string(variant.name) + " " + field.key);
+        for (const double bad : {field.range.max * 2.0, field.range.min - 1.0}) {
+          const std::string message = NetworkError(text(field.key, 0, bad));
+          EXPECT_THAT(message, HasSubstr("nodes[2]." + field.key + " = "));
+          EXPECT_THAT(message, HasSubstr(FieldRule(field)));
+        }
+        EXPECT_EQ(NetworkError(text(field.key, 0, field.range.max)), "(read)");
+      }
+      for (const PointField<Node>& point : variant.points) {
+        for (std::size_t c = 0; c < static_cast<std::size_t>(d); ++c) {
+          SCOPED_TRACE(std::string(variant.name) + " " + point.key + " coordinate " +
+                       std::to_string(c) + " of " + std::to_string(d));
+          const std::string at = d == 1 ? point.key : point.key + "[" + std::to_string(c) + "]";
+          for (const double bad : {point.range.max * 2.0, point.range.min * 2.0}) {
+            const std::string message = NetworkError(text(point.key, c, bad));
+            EXPECT_THAT(message, HasSubstr("nodes[2]." + at + " = "));
+            EXPECT_THAT(message, HasSubstr(point.range.Rule()));
+          }
+          EXPECT_EQ(NetworkError(text(point.key, c, point.range.max)), "(read)");
+        }
+      }
+    }
+  }
 }
 
 // The same for the other families' model blocks: each ranged field past each bound refused

@@ -5,6 +5,7 @@
 // descriptions (docs/layout.md, "How to add a key").
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -16,6 +17,7 @@
 #include "musclesim/core/enum_names.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/core/input_ranges.h"
+#include "musclesim/core/number_format.h"
 
 namespace musclesim {
 
@@ -44,21 +46,52 @@ struct NumberField {
   // An optional key with no default: whether the part has it (`get` then gives the value the
   // part uses in its place, an eccentric v_max the concentric one). Null: not optional.
   std::function<bool(const Part&)> given{};
+  // A value outside `range` a file may give too, and what it means (a free node's mass 0: a
+  // massless junction). A parameter handle keeps to `range`: the value changes the part's kind.
+  std::optional<double> also{};
+  const char* also_means = "";
 };
 
 // The rule a file's value of `field` must meet: its range's, for an integer field "must be an
 // integer from 1 to 1000 [-]: why".
+// With `also`: "...; or exactly 0, a massless junction ...".
 template <typename Part>
 std::string FieldRule(const NumberField<Part>& field) {
-  if (!field.integer) return field.range.Rule();
-  return "must be an integer " + field.range.Bounds() + " [" + field.range.unit +
-         "]: " + field.range.why;
+  std::string rule = !field.integer ? field.range.Rule()
+                                    : "must be an integer " + field.range.Bounds() + " [" +
+                                          field.range.unit + "]: " + field.range.why;
+  if (field.also) rule += "; or exactly " + FormatNumber(*field.also) + ", " + field.also_means;
+  return rule;
 }
 
-// Whether `value` is one `field` accepts: within its range, and whole for an integer field.
+// Whether `value` is one `field` accepts: within its range and whole for an integer field,
+// or its `also`.
 template <typename Part>
 bool FieldAccepts(const NumberField<Part>& field, double value) {
-  return field.range.Contains(value) && (!field.integer || value == std::floor(value));
+  return (field.range.Contains(value) && (!field.integer || value == std::floor(value))) ||
+         (field.also && value == *field.also);
+}
+
+// The coordinates (x, y, z) of a point of a part; on a line x alone, in the plane x and y.
+using FieldPoint = std::array<double, 3>;
+
+// A point of a part: in a file one number on a line, a list of 2 or 3 in the plane or in
+// space (the scenario's `dimensions`), each coordinate within `range`, those past them 0.
+template <typename Part>
+struct PointField {
+  std::string key;
+  InputRange range;         // of each coordinate
+  bool required = true;     // else absent is the origin (at rest, for a velocity)
+  const char* prefix = "";  // before each coordinate's name in messages: "v" gives [vx, vy]
+  const char* doc = "";
+  std::function<FieldPoint(const Part&)> get;
+  std::function<void(Part&, const FieldPoint&)> set;
+};
+
+// Where coordinate c of a point field is reported: at its key for x ("position"), else
+// indexed ("position[1]" is y).
+inline std::string CoordinateKey(const std::string& key, std::size_t c) {
+  return c == 0 ? key : key + "[" + std::to_string(c) + "]";
 }
 
 // One name of a part, chosen from a list (a solver's method: bdf or adams).
@@ -100,10 +133,11 @@ struct PartVariant {
   const char* selector_doc = "";   // the selector in a message: "stiffness (a linear tendon)"
   const char* law = "";            // its equation, for the table ("T = k (l - l0)")
   std::vector<NumberField<Part>> fields;
-  std::vector<WordField<Part>> words;   // its names chosen from a list, read after the numbers
-  std::vector<const char*> other_keys;  // keys read by the part's own reader (a table's points)
-  std::function<bool(const Part&)> is;  // whether a part is of this variant
-  std::function<void(Part&)> make;      // gives a part this variant's kind, before its fields
+  std::vector<PointField<Part>> points;  // its points, read after the numbers
+  std::vector<WordField<Part>> words;    // its names chosen from a list, read after the points
+  std::vector<const char*> other_keys;   // keys read by the part's own reader (a table's points)
+  std::function<bool(const Part&)> is;   // whether a part is of this variant
+  std::function<void(Part&)> make;       // gives a part this variant's kind, before its fields
 };
 
 // The field of the number `member` of a Part.
@@ -168,6 +202,15 @@ const NumberField<Part>* FindField(const PartVariant<Part>& variant, std::string
   return nullptr;
 }
 
+// The point field of `variant` whose key is `key`; null when it has none.
+template <typename Part>
+const PointField<Part>* FindPoint(const PartVariant<Part>& variant, std::string_view key) {
+  for (const PointField<Part>& point : variant.points) {
+    if (key == point.key) return &point;
+  }
+  return nullptr;
+}
+
 // The variant `part` is of among `variants`; null for none (an actuator among element laws).
 template <typename Part>
 const PartVariant<Part>* VariantOf(const std::vector<PartVariant<Part>>& variants,
@@ -196,14 +239,21 @@ void RequireInRange(std::string_view key, double value, const InputRange& range)
 
 // Throws ParameterError(key, value, rule) for the first field of `variant` outside its own
 // range or not whole where it must be (fields whose values are the signal's or any finite
-// number, and optional ones the part lacks, are left out): what a C++ caller meets, with the
-// same rule a file's reader states.
+// number, and optional ones the part lacks, are left out), then for the first coordinate of
+// a point outside its range: what a C++ caller meets, with the same rule a file's reader
+// states.
 template <typename Part>
 void ValidateFields(const PartVariant<Part>& variant, const Part& part) {
   for (const NumberField<Part>& field : variant.fields) {
     if (field.values != FieldValues::kRange || (field.given && !field.given(part))) continue;
     const double value = field.get(part);
     if (!FieldAccepts(field, value)) Require(false, field.key, value, FieldRule(field));
+  }
+  for (const PointField<Part>& point : variant.points) {
+    const FieldPoint x = point.get(part);
+    for (std::size_t c = 0; c < x.size(); ++c) {
+      RequireInRange(CoordinateKey(point.key, c), x[c], point.range);
+    }
   }
 }
 

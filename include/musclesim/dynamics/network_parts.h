@@ -67,7 +67,9 @@ struct Node {
                    const Coordinates& velocity = {});
 };
 
-// Throws ParameterError (paths as the YAML keys of a node: "mass", "prescribed.type").
+// Throws ParameterError (paths as the YAML keys of a node: "mass", "position[1]",
+// "prescribed.type") unless every coordinate is finite, a mass >= 0 and a motion continuous.
+// A file's ranges (node_kinds.h) are its reader's: a program may build past them.
 void Validate(const Node& node);
 
 // A point an element's path passes through between its ends (docs/model.md 12.1): a node of

@@ -3,10 +3,12 @@
 #include <cmath>
 
 #include "io/readers/controller_yaml.h"
+#include "io/readers/coordinates_yaml.h"
 #include "io/readers/part_fields_yaml.h"
 #include "io/readers/scenario_fields.h"
 #include "musclesim/core/input_ranges.h"
 #include "musclesim/dynamics/element_laws.h"
+#include "musclesim/dynamics/node_kinds.h"
 #include "musclesim/scenario/element_limits.h"
 
 namespace musclesim {
@@ -19,57 +21,6 @@ using yaml::ValidateAt;
 
 std::string Item(const char* list, std::size_t i) {
   return std::string(list) + "[" + std::to_string(i) + "]";
-}
-
-// path + "[i]", built by appending (GCC 12 warns falsely on "[" + std::to_string(i)).
-std::string Indexed(std::string path, std::size_t i) {
-  path.append("[").append(std::to_string(i)).append("]");
-  return path;
-}
-
-// What a rule of the space says it follows from: "the scenario has dimensions: 2".
-std::string HasDimensions(int dimensions) {
-  return "the scenario has dimensions: " + std::to_string(dimensions);
-}
-
-// The coordinates of a list in messages, each name after `prefix`: "[x, y]", "[vx, vy, vz]".
-std::string CoordinateNames(int dimensions, const char* prefix) {
-  std::string names = "[";
-  for (int c = 0; c < dimensions; ++c) {
-    names.append(c == 0 ? "" : ", ").append(prefix).push_back("xyz"[c]);
-  }
-  return names + "]";
-}
-
-// A list of exactly `dimensions` numbers (2 or 3) at `node`, each within `range`; the
-// coordinates past them 0. `prefix` names them in messages (CoordinateNames).
-Coordinates ReadCoordinateList(const yaml::Source& src, const Document& node,
-                               const std::string& path, int dimensions, const InputRange& range,
-                               const char* prefix) {
-  const auto d = static_cast<std::size_t>(dimensions);
-  if (!node.IsSequence() || node.size() != d) {
-    yaml::Fail(src, node, path, yaml::Describe(node),
-               "must be a list of " + std::to_string(d) + " numbers " +
-                   CoordinateNames(dimensions, prefix) + ": " + HasDimensions(dimensions));
-  }
-  Coordinates x{};
-  for (std::size_t c = 0; c < d; ++c) {
-    x[c] = yaml::ReadNumberIn(src, node[c], Indexed(path, c), range);
-  }
-  return x;
-}
-
-// A node's point (its `fixed`, `position` or `velocity`): one number, x, on a line, a list
-// of `dimensions` numbers otherwise.
-Coordinates ReadPoint(const yaml::Source& src, const Document& node, const std::string& path,
-                      int dimensions, const InputRange& range, const char* prefix) {
-  if (dimensions > 1) return ReadCoordinateList(src, node, path, dimensions, range, prefix);
-  if (node.IsSequence()) {
-    yaml::Fail(src, node, path, yaml::Describe(node),
-               "must be a number in 1 dimension: a list of coordinates needs dimensions: 2 or 3 "
-               "at the top level");
-  }
-  return {yaml::ReadNumberIn(src, node, path, range), 0.0, 0.0};
 }
 
 Waveform ReadMotion(const yaml::Source& src, const Document& node, const std::string& path) {
@@ -117,48 +68,20 @@ Node ReadNode(const yaml::Source& src, const Document& item, const std::string& 
                "must be a map: a name and one of fixed, prescribed or mass");
   }
   // a misspelt key first: it would otherwise read as a missing kind
-  yaml::RequireMap(src, item, path,
-                   {"name", "fixed", "prescribed", "mass", "position", "velocity"});
+  std::vector<std::string> keys{"name"};
+  for (std::string& key : VariantKeys(NodeKinds(), "node")) keys.push_back(std::move(key));
+  yaml::RequireMap(src, item, path, keys);
   Node node;
   node.name = ReadName(src, item, path);
-  const int kinds = static_cast<int>(static_cast<bool>(item["fixed"])) +
-                    static_cast<int>(static_cast<bool>(item["prescribed"])) +
-                    static_cast<int>(static_cast<bool>(item["mass"]));
-  if (kinds != 1) {
-    yaml::Fail(src, item, path, yaml::Describe(item),
-               "give exactly one of fixed (its position [m]), prescribed (its motion) or mass "
-               "(a free node [kg], with position and velocity)");
-  }
-  // x in position, velocity and motion, y and z in their _yz fields
-  const auto set_position = [&node](const Coordinates& x) {
-    node.position = x[0];
-    node.position_yz = {x[1], x[2]};
-  };
-  if (item["fixed"]) {
-    yaml::RequireMap(src, item, path, {"name", "fixed"});
-    node.kind = NodeKind::kFixed;
-    set_position(
-        ReadPoint(src, item["fixed"], Join(path, "fixed"), dimensions, kPositionRange, ""));
-  } else if (item["prescribed"]) {
-    yaml::RequireMap(src, item, path, {"name", "prescribed"});
-    node.kind = NodeKind::kPrescribed;
+  // its kind by the key only that kind has: fixed, prescribed or mass
+  const NodeVariant& kind = *SelectVariant(src, item, path, NodeKinds(), "node");
+  keys = {"name"};
+  AddVariantKeys(kind, keys);
+  yaml::RequireMap(src, item, path, keys);
+  kind.make(node);
+  ReadFields(src, item, path, kind, node, nullptr, dimensions);
+  if (node.kind == NodeKind::kPrescribed) {
     ReadPrescribed(src, item["prescribed"], Join(path, "prescribed"), dimensions, node);
-  } else {
-    yaml::RequireMap(src, item, path, {"name", "mass", "position", "velocity"});
-    node.kind = NodeKind::kFree;
-    // exactly 0: a massless junction (docs/model.md 14.4); else a mass within the range
-    node.mass = yaml::ReadNumber(src, item["mass"], Join(path, "mass"));
-    if (node.mass != 0.0) {
-      node.mass = yaml::ReadNumberIn(src, item["mass"], Join(path, "mass"), kNodeMassRange);
-    }
-    set_position(ReadPoint(src, Required(src, item, path, "position"), Join(path, "position"),
-                           dimensions, kPositionRange, ""));
-    if (const Document& velocity = item["velocity"]) {
-      const Coordinates v =
-          ReadPoint(src, velocity, Join(path, "velocity"), dimensions, kSpeedRange, "v");
-      node.velocity = v[0];
-      node.velocity_yz = {v[1], v[2]};
-    }
   }
   ValidateAt(src, item, path, [&] { Validate(node); });
   return node;

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/readers/coordinates_yaml.h"
 #include "io/readers/yaml_fields.h"
 #include "musclesim/core/part_fields.h"
 
@@ -23,6 +24,18 @@ inline void AddKey(std::vector<std::string>& keys, std::string key) {
   keys.push_back(std::move(key));
 }
 
+// Adds the keys of `variant`'s map to `keys`, each once, in order: its numbers', points',
+// words' and other keys' first steps.
+template <typename Part>
+void AddVariantKeys(const PartVariant<Part>& variant, std::vector<std::string>& keys) {
+  for (const NumberField<Part>& field : variant.fields) {
+    AddKey(keys, std::string(HeadKey(field.key)));
+  }
+  for (const PointField<Part>& point : variant.points) AddKey(keys, point.key);
+  for (const WordField<Part>& word : variant.words) AddKey(keys, word.key);
+  for (const char* other : variant.other_keys) AddKey(keys, std::string(HeadKey(other)));
+}
+
 // The keys of the variants of `type`, each once, in order: "slack_length, stiffness,
 // exponential, degroote2016" for a tendon.
 template <typename Part>
@@ -30,11 +43,7 @@ std::vector<std::string> VariantKeys(const std::vector<PartVariant<Part>>& varia
                                      std::string_view type) {
   std::vector<std::string> keys;
   for (const PartVariant<Part>& variant : variants) {
-    if (type != variant.type) continue;
-    for (const NumberField<Part>& field : variant.fields)
-      AddKey(keys, std::string(HeadKey(field.key)));
-    for (const WordField<Part>& word : variant.words) AddKey(keys, word.key);
-    for (const char* other : variant.other_keys) AddKey(keys, std::string(HeadKey(other)));
+    if (type == variant.type) AddVariantKeys(variant, keys);
   }
   return keys;
 }
@@ -107,13 +116,31 @@ void ReadWords(const yaml::Source& src, const Document& item, const std::string&
   }
 }
 
+// Reads the point fields of `variant` from the map `item` into `part`, in `dimensions`
+// coordinates; an optional one absent is the origin.
+template <typename Part>
+void ReadPoints(const yaml::Source& src, const Document& item, const std::string& path,
+                const PartVariant<Part>& variant, Part& part, int dimensions) {
+  for (const PointField<Part>& point : variant.points) {
+    const Document& given = item[point.key];
+    if (!given && !point.required) {
+      point.set(part, FieldPoint{});
+      continue;
+    }
+    point.set(part, ReadPoint(src, yaml::Required(src, item, path, point.key.c_str()),
+                              yaml::Join(path, point.key), dimensions, point.range, point.prefix));
+  }
+}
+
 // Reads every field of `variant` from the map `item` into `part`, in the order listed: a
 // nested field ("velocity.eccentric.n") from its maps, whose keys are checked when each is
-// first met; a map may be left out when its fields have defaults or are optional. `signal`
-// bounds the fields whose values are the signal's (nullptr: any number).
+// first met; a map may be left out when its fields have defaults or are optional. Then its
+// points, in `dimensions` coordinates, and its words. `signal` bounds the fields whose values
+// are the signal's (nullptr: any number).
 template <typename Part>
 void ReadFields(const yaml::Source& src, const Document& item, const std::string& path,
-                const PartVariant<Part>& variant, Part& part, const InputRange* signal = nullptr) {
+                const PartVariant<Part>& variant, Part& part, const InputRange* signal = nullptr,
+                int dimensions = 1) {
   std::vector<std::string> opened;  // the nested maps checked so far, by their prefixes
   for (const NumberField<Part>& field : variant.fields) {
     const bool may_be_absent = field.default_value || field.given;
@@ -147,7 +174,7 @@ void ReadFields(const yaml::Source& src, const Document& item, const std::string
     const InputRange* range = field.values == FieldValues::kRange    ? &field.range
                               : field.values == FieldValues::kSignal ? signal
                                                                      : nullptr;
-    if (field.integer) {
+    if (field.integer || field.also) {
       const double value = yaml::ReadNumber(src, given, key_path);
       if (!FieldAccepts(field, value)) {
         yaml::Fail(src, given, key_path, yaml::Describe(given), FieldRule(field));
@@ -158,6 +185,7 @@ void ReadFields(const yaml::Source& src, const Document& item, const std::string
     field.set(part, range != nullptr ? yaml::ReadNumberIn(src, given, key_path, *range)
                                      : yaml::ReadNumber(src, given, key_path));
   }
+  ReadPoints(src, item, path, variant, part, dimensions);
   ReadWords(src, item, path, variant, part);
 }
 

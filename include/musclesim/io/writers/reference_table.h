@@ -1,7 +1,7 @@
 // The reference table of a described part (core/part_fields.h) in Markdown: a row per field
 // of each variant, with its key, unit, default, accepted values and their reason, and its
-// meaning; a row per word field, with the names it accepts. The tables in docs/guide/ are
-// these, checked by tests/io/reference_table_test.cc.
+// meaning; a row per point and per word field, with the names a word accepts. The tables in
+// docs/guide/ are these, checked by tests/io/reference_table_test.cc.
 #pragma once
 
 #include <string>
@@ -17,7 +17,9 @@ template <typename Part>
 std::string AcceptedCell(const NumberField<Part>& field) {
   switch (field.values) {
     case FieldValues::kRange:
-      return (field.integer ? "an integer " : "") + field.range.Bounds() + ": " + field.range.why;
+      return (field.integer ? "an integer " : "") + field.range.Bounds() + ": " + field.range.why +
+             (field.also ? "; or exactly " + FormatNumber(*field.also) + ", " + field.also_means
+                         : "");
     case FieldValues::kSignal: return "the signal's range";
     case FieldValues::kFinite: return "any finite number; the rule in its meaning";
   }
@@ -48,6 +50,13 @@ std::string ReferenceTable(const std::vector<PartVariant<Part>>& variants,
            : field.given       ? "optional"
                                : "required") +
           " | " + AcceptedCell(field) + " | " + field.doc);
+    }
+    for (const PointField<Part>& point : variant.points) {
+      row(std::string("`") + point.key + "` | " + point.range.unit + " | " +
+          (point.required ? "required" : "0") +
+          " | a number on a line, a list of 2 or 3 in the plane or in space (`dimensions`), "
+          "each " +
+          point.range.Bounds() + ": " + point.range.why + " | " + point.doc);
     }
     for (const WordField<Part>& word : variant.words) {
       std::string names;

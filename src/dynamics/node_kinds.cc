@@ -1,0 +1,83 @@
+#include "musclesim/dynamics/node_kinds.h"
+
+#include <utility>
+
+namespace musclesim {
+
+namespace {
+
+NodeVariant Kind(NodeKind kind, const char* name, const char* selector, const char* selector_doc,
+                 const char* law) {
+  NodeVariant variant;
+  variant.type = "node";
+  variant.name = name;
+  variant.selector = selector;
+  variant.selector_doc = selector_doc;
+  variant.law = law;
+  variant.is = [kind](const Node& n) { return n.kind == kind; };
+  variant.make = [kind](Node& n) { n.kind = kind; };
+  return variant;
+}
+
+// The node's position: x in `position`, y and z in `position_yz`.
+PointField<Node> Position(const char* key, const char* doc) {
+  return {key,
+          kPositionRange,
+          true,
+          "",
+          doc,
+          [](const Node& n) { return n.PositionCoordinates(); },
+          [](Node& n, const FieldPoint& x) {
+            n.position = x[0];
+            n.position_yz = {x[1], x[2]};
+          }};
+}
+
+NodeVariant Fixed() {
+  NodeVariant variant = Kind(NodeKind::kFixed, "fixed", "fixed", "fixed (its position [m])",
+                             "held at its position: an anchor of the network");
+  variant.points = {Position("fixed", "where it is held")};
+  return variant;
+}
+
+NodeVariant Free() {
+  NodeVariant variant =
+      Kind(NodeKind::kFree, "free", "mass", "mass (a free node [kg], with position and velocity)",
+           "mass xddot = the forces of its elements and loads (docs/model.md 7)");
+  NumberField<Node> mass = MemberField("mass", &Node::mass, kMassRange, std::nullopt,
+                                       "its mass (its hanging mass loads add to it)");
+  mass.also = 0.0;
+  mass.also_means =
+      "a massless junction whose velocity its force balance fixes (docs/model.md 14.4)";
+  variant.fields = {std::move(mass)};
+  PointField<Node> velocity{
+      "velocity",
+      kSpeedRange,
+      false,
+      "v",
+      "its velocity at the start; absent on a massless junction, whose velocity follows",
+      [](const Node& n) { return n.VelocityCoordinates(); },
+      [](Node& n, const FieldPoint& v) {
+        n.velocity = v[0];
+        n.velocity_yz = {v[1], v[2]};
+      }};
+  variant.points = {Position("position", "its position at the start"), std::move(velocity)};
+  return variant;
+}
+
+NodeVariant Prescribed() {
+  NodeVariant variant =
+      Kind(NodeKind::kPrescribed, "prescribed", "prescribed", "prescribed (its motion)",
+           "moves as its motion x(t) says, whatever the forces");
+  variant.other_keys = {"prescribed"};
+  return variant;
+}
+
+}  // namespace
+
+const std::vector<NodeVariant>& NodeKinds() {
+  static const std::vector<NodeVariant> variants{Fixed(), Prescribed(), Free()};
+  return variants;
+}
+
+}  // namespace musclesim
