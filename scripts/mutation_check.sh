@@ -332,6 +332,19 @@ mutation network-band-skips-lower src/dynamics/network_build.cc \
   'pattern_.lower_bandwidth = std::max(pattern_.lower_bandwidth, r - c);' \
   'pattern_.lower_bandwidth = std::max(pattern_.lower_bandwidth, r - c - 1);' "$t_network" "$r_network"
 
+
+# --- the described parts (core/part_fields.h): what a file's reader and a handle apply ---
+t_described="reference_table_test parameter_test junction_test"
+r_described=$(suites ReferenceTable Parameter MasslessJunction)
+mutation field-also-inverted include/musclesim/core/part_fields.h \
+  '(field.also && value == *field.also)' \
+  '(field.also && value != *field.also)' "$t_described" "$r_described"
+mutation range-open-max-closed include/musclesim/core/input_ranges.h \
+  '(max_exclusive ? value < max : value <= max)' \
+  '(value <= max)' "$t_described" "$r_described"
+mutation point-handle-sets-x src/scenario/parameter_resolver.h \
+  '      x[c] = v;' \
+  '      x[0] = v;' "$t_described" "$r_described"
 # ---------------------------------------------------------------------------------------
 
 # Literal single-occurrence replace: apply (default) or only check (--check).
