@@ -453,37 +453,37 @@ class SolverOptions:
     @property
     def atol(self) -> float:
         """
-        The absolute tolerance on positions [m] and velocities [m/s].
+        The absolute tolerance on positions and velocities [m and m/s]; > 0 and < 1.
         """
     @property
     def jacobian(self) -> str:
         """
-        The Newton iteration's Jacobian: 'analytic' or 'difference_quotient'.
+        The Newton iteration's Jacobian: the analytic one, or a difference quotient: one of 'analytic', 'difference_quotient'.
         """
     @property
     def linear_solver(self) -> str:
         """
-        'auto', 'small', 'dense', 'band' or 'sparse': how the Newton systems are solved.
+        How the Newton systems are solved: auto picks small, band or sparse by the system's size and structure (docs/solver.md): one of 'dense', 'band', 'sparse', 'auto', 'small'.
         """
     @property
     def max_step(self) -> float:
         """
-        The largest internal step [s]; 0: no limit.
+        The largest internal step (0: no limit) [s]; from 0 to 2e+09.
         """
     @property
     def max_steps(self) -> int:
         """
-        The internal steps one run may take (a guard) [-].
+        The internal steps one run may take before it fails (CV_TOO_MUCH_WORK) [-]; an integer from 1 to 1e+12.
         """
     @property
     def method(self) -> str:
         """
-        'bdf' (stiff problems) or 'adams'.
+        The integration method: bdf (stiff problems: the default) or adams (nonstiff): one of 'bdf', 'adams'.
         """
     @property
     def rtol(self) -> float:
         """
-        The relative tolerance [-], in [1e-14, 1).
+        The relative tolerance of the local error test [-]; >= 1e-14 and < 1.
         """
 class Stepper:
     """

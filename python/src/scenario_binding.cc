@@ -12,6 +12,8 @@
 #include "musclesim/core/errors.h"
 #include "musclesim/io/readers/document.h"
 #include "musclesim/io/readers/scenario_yaml.h"
+#include "musclesim/solver/solver_fields.h"
+#include "part_attributes.h"
 #include "py_scenario.h"
 #include "run_data.h"
 #include "typed_objects.h"
@@ -121,34 +123,19 @@ void BindResult(py::module_& m) {
 }
 
 void BindSolverTypes(py::module_& m) {
-  py::class_<SolverOptions>(
+  py::class_<SolverOptions> solver(
       m, "SolverOptions",
       "How CVODES integrates a scenario (its `solver:` block): method 'bdf' or 'adams', rtol "
       "[-], atol [m and m/s], jacobian 'analytic' or 'difference_quotient', max_step [s] (0: "
       "no limit), max_steps, linear_solver 'auto', 'small', 'dense', 'band' or 'sparse'. "
-      "Scenario.solver gives a copy; Scenario.set('solver.rtol', ...) changes a scenario's.")
-      .def(py::init<>(), "The defaults: bdf, rtol 1e-6, atol 1e-9, analytic Jacobian, auto.")
-      .def_property_readonly(
-          "method", [](const SolverOptions& o) { return std::string(ToString(o.method)); },
-          "'bdf' (stiff problems) or 'adams'.")
-      .def_readonly("rtol", &SolverOptions::rtol, "The relative tolerance [-], in [1e-14, 1).")
-      .def_readonly("atol", &SolverOptions::atol,
-                    "The absolute tolerance on positions [m] and velocities [m/s].")
-      .def_property_readonly(
-          "jacobian", [](const SolverOptions& o) { return std::string(ToString(o.jacobian)); },
-          "The Newton iteration's Jacobian: 'analytic' or 'difference_quotient'.")
-      .def_readonly("max_step", &SolverOptions::max_step,
-                    "The largest internal step [s]; 0: no limit.")
-      .def_readonly("max_steps", &SolverOptions::max_steps,
-                    "The internal steps one run may take (a guard) [-].")
-      .def_property_readonly(
-          "linear_solver",
-          [](const SolverOptions& o) { return std::string(ToString(o.linear_solver)); },
-          "'auto', 'small', 'dense', 'band' or 'sparse': how the Newton systems are solved.")
+      "Scenario.solver gives a copy; Scenario.set('solver.rtol', ...) changes a scenario's.");
+  solver.def(py::init<>(), "The defaults: bdf, rtol 1e-6, atol 1e-9, analytic Jacobian, auto.")
       .def("__repr__", [](const SolverOptions& o) {
         return "<musclesim.SolverOptions " + std::string(ToString(o.method)) + " rtol " +
                FormatNumber(o.rtol) + " atol " + FormatNumber(o.atol) + ">";
       });
+  // its attributes, one per key of the solver block
+  DefFieldAttributes(solver, SolverBlock().front());
   py::class_<RunStats>(
       m, "RunStats",
       "A run's solver counters (Result.run_stats; the same as the dict Result.stats): steps, "

@@ -276,3 +276,25 @@ def test_a_scenario_shared_by_threads_runs_while_another_sets():
     assert errors == [] and finals == [0.02] * 30
     # one value per key, its last
     assert scenario.overrides == ["time.end=0.02", "load[0].after=24.0"]
+
+
+def test_solver_options_hold_each_key_of_the_solver_block_as_the_file_gave_it():
+    # every key `musclesim reference solver` lists is an attribute, with the file's value
+    # (set here through --set, as a file would give it) or the table's default
+    table = subprocess.run([CLI, "reference", "solver"], check=True, capture_output=True,
+                           text=True).stdout
+    rows = [line.split("|") for line in table.splitlines()[2:]]
+    defaults = {row[3].strip().strip("`"): row[5].strip() for row in rows}
+    assert set(defaults) == {"rtol", "atol", "max_step", "max_steps", "method", "jacobian",
+                             "linear_solver"}
+    given = {"solver.rtol": 1e-8, "solver.max_steps": 500, "solver.linear_solver": "dense",
+             "solver.method": "adams"}
+    solver = musclesim.load_scenario(scenario_path("concentric.yaml"), set=given).solver
+    for key, default in defaults.items():
+        value = getattr(solver, key)
+        if "solver." + key in given:
+            assert value == given["solver." + key], key
+        elif isinstance(value, str):
+            assert value == default, key
+    assert isinstance(solver.max_steps, int)
+    assert "an integer from 1 to 1e+12" in type(solver).max_steps.__doc__

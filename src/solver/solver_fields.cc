@@ -60,13 +60,13 @@ PartVariant<SolverOptions> Describe() {
                      {MemberField("rtol", &O::rtol, kRelativeToleranceRange, defaults.rtol,
                                   "the relative tolerance of the local error test"),
                       MemberField("atol", &O::atol, kAbsoluteToleranceRange, defaults.atol,
-                                  "the absolute tolerance on positions [m] and velocities [m/s]"),
+                                  "the absolute tolerance on positions and velocities"),
                       MemberField("max_step", &O::max_step, kMaxStepRange, defaults.max_step,
-                                  "the largest internal step; 0: no limit"),
+                                  "the largest internal step (0: no limit)"),
                       std::move(max_steps)});
   block.words = {
       EnumField("method", &O::method, kMethodNames,
-                "bdf (stiff problems: the default) or adams (nonstiff)"),
+                "the integration method: bdf (stiff problems: the default) or adams (nonstiff)"),
       EnumField("jacobian", &O::jacobian, kJacobianNames,
                 "the Newton iteration's Jacobian: the analytic one, or a difference quotient"),
       EnumField("linear_solver", &O::linear_solver, kLinearSolverNames,
