@@ -22,7 +22,9 @@ BLOCKS = {
     "activation dynamics": ("docs/guide/scenarios.md", "activation_dynamics"),
     "model families": ("docs/guide/model.md", "models"),
     "gains": ("docs/guide/control.md", "gains"),
+    "time": ("docs/guide/scenarios.md", "time"),
     "solver": ("docs/guide/scenarios.md", "solver"),
+    "output": ("docs/guide/scenarios.md", "output"),
 }
 
 

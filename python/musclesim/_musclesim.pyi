@@ -468,7 +468,7 @@ class SolverOptions:
     @property
     def max_step(self) -> float:
         """
-        The largest internal step (0: no limit) [s]; from 0 to 2e+09.
+        The largest internal step (0: no limit) [s]; >= 0 and finite.
         """
     @property
     def max_steps(self) -> int:

@@ -14,6 +14,7 @@
 #include "musclesim/dynamics/waveform_shapes.h"
 #include "musclesim/io/writers/reference_table.h"
 #include "musclesim/model/family_fields.h"
+#include "musclesim/scenario/setting_fields.h"
 #include "musclesim/solver/solver_fields.h"
 
 namespace musclesim::cli {
@@ -35,7 +36,9 @@ PART is one of
   models    the model blocks of the curve families (paper, degroote2016, mujoco)
   activation_dynamics
             the families of activation dynamics (their `family:` in place of `type:`)
+  time      the `time:` span
   solver    the `solver:` block: CVODES' tolerances, step guards, method and linear solver
+  output    the `output:` block's numbers (its file and interval have their own rules)
 )";
 
 }  // namespace
@@ -64,12 +67,16 @@ int ReferenceCommand(int argc, char** argv) {
     std::cout << ReferenceTable(ModelFamilies(), "family");
   } else if (part == "activation_dynamics") {
     std::cout << ReferenceTable(ActivationFamilies(), "family");
+  } else if (part == "time") {
+    std::cout << ReferenceTable(TimeBlock(), "block");
+  } else if (part == "output") {
+    std::cout << ReferenceTable(OutputBlock(), "block");
   } else if (part == "solver") {
     std::cout << ReferenceTable(SolverBlock(), "block");
   } else {
     throw UsageError("unknown part '" + part +
                      "': actuator, nodes, elements, loads, waveforms, gains, models, "
-                     "activation_dynamics or solver (see --help)");
+                     "activation_dynamics, time, solver or output (see --help)");
   }
   return 0;
 }

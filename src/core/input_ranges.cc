@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "musclesim/core/errors.h"
 #include "musclesim/core/part_fields.h"
@@ -13,6 +14,10 @@ double TimeScale(double t_start, double t_end) {
 }
 
 std::string InputRange::Bounds() const {
+  // no bound above but the largest double: any finite number from min
+  if (max == std::numeric_limits<double>::max() && !max_exclusive) {
+    return (min_exclusive ? "> " : ">= ") + FormatNumber(min) + " and finite";
+  }
   if (!min_exclusive && !max_exclusive) {
     return "from " + FormatNumber(min) + " to " + FormatNumber(max);
   }

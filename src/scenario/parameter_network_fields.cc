@@ -17,6 +17,7 @@
 #include "musclesim/dynamics/node_kinds.h"
 #include "musclesim/dynamics/waveform_shapes.h"
 #include "musclesim/scenario/actuator_scenario.h"
+#include "musclesim/scenario/setting_fields.h"
 #include "musclesim/solver/solver_fields.h"
 
 namespace musclesim {
@@ -214,10 +215,13 @@ void ParameterResolver::Setting(std::size_t i) {
         &kLimitRange);
   }
   End(i + 2);
-  if (block == "time" && (key == "start" || key == "end")) {
-    const bool start = key == "start";
-    return Number([start](Scenario& s) -> double& { return start ? s.t_start : s.t_end; },
-                  &kTimeRange);
+  if (block == "time") {
+    // the span's fields are the scenario's own t_start and t_end
+    if (const NumberField<TimeSpan>* field = FindField(TimeBlock().front(), key)) {
+      const bool start = key == "start";
+      return Number([start](Scenario& s) -> double& { return start ? s.t_start : s.t_end; },
+                    &field->range);
+    }
   }
   if (block == "solver") {
     const NumberField<SolverOptions>* field = FindField(SolverBlock().front(), key);
@@ -230,9 +234,10 @@ void ParameterResolver::Setting(std::size_t i) {
     if (key == "interval" && !scenario_.output.every_step) {
       return Number([](Scenario& s) -> double& { return s.output.interval; }, nullptr);
     }
-    if (key == "phase_tolerance" && scenario_.output.phase_tolerance) {
-      return Number([](Scenario& s) -> double& { return *s.output.phase_tolerance; },
-                    &kPhaseToleranceRange);
+    const NumberField<OutputRequest>* field = FindField(OutputBlock().front(), key);
+    if (field != nullptr && (!field->given || field->given(scenario_.output))) {
+      return Field(*field,
+                   Locate<OutputRequest>([](Scenario& s) -> OutputRequest& { return s.output; }));
     }
   }
   Fail("names no numeric setting of the scenario");

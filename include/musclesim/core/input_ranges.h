@@ -86,13 +86,6 @@ inline constexpr InputRange kMassRange{
     "a microgram to a million tonnes: accelerations F/m stay finite (1e9 N / 1e-9 kg = "
     "1e18 m/s^2)"};
 
-// A network node's mass [kg] other than 0 (which makes it a massless junction).
-inline constexpr InputRange kNodeMassRange{
-    1e-9, 1e9, "kg",
-    "a microgram to a million tonnes: accelerations F/m stay finite (1e9 N / 1e-9 kg = "
-    "1e18 m/s^2); or exactly 0, a massless junction whose velocity its force balance fixes "
-    "(docs/model.md 14.4)"};
-
 // A tendon's strain at its maximum isometric force [-] (De Groote's tendon, OpenSim's 0.049
 // by default).
 inline constexpr InputRange kTendonStrainRange{

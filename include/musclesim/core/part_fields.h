@@ -84,8 +84,8 @@ struct PointField {
   bool required = true;     // else absent is the origin (at rest, for a velocity)
   const char* prefix = "";  // before each coordinate's name in messages: "v" gives [vx, vy]
   const char* doc = "";
-  std::function<FieldPoint(const Part&)> get;
-  std::function<void(Part&, const FieldPoint&)> set;
+  std::function<FieldPoint(const Part&)> get{};
+  std::function<void(Part&, const FieldPoint&)> set{};
 };
 
 // Where coordinate c of a point field is reported: at its key for x ("position"), else
@@ -106,7 +106,8 @@ struct WordField {
   std::function<void(Part&, std::string_view)> set;
 };
 
-// The word field of the enum `member` of a Part, its names those of `table` (core/enum_names.h).
+// The word field of the enum `member` of a Part, its names those of `table` (core/enum_names.h),
+// which must outlive the field (a namespace-scope constexpr table: its get and set read it).
 template <typename Part, typename Enum, std::size_t N>
 WordField<Part> EnumField(const char* key, Enum Part::*member, const EnumName<Enum> (&table)[N],
                           const char* doc) {

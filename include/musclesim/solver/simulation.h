@@ -62,11 +62,13 @@ struct SolverOptions {
   double atol = 1e-9;  // absolute tolerance on x [m] and xdot [m/s], in (0, 1)
   JacobianKind jacobian = JacobianKind::kAnalytic;  // of the Newton iteration
   double max_step = 0.0;                            // largest internal step [s], >= 0; 0: no limit
-  long max_steps = 10000000;  // internal steps allowed in one run, >= 1 (a guard)
+  long max_steps = 10000000;  // internal steps allowed in one run, 1 to 1e12 (a guard)
   LinearSolverKind linear_solver = LinearSolverKind::kAuto;
 };
 
-// Throws ParameterError ("method", "rtol", "atol", "max_step", "max_steps", "linear_solver").
+// Throws ParameterError ("rtol", "atol", "max_step", "max_steps") for the first number outside
+// its range in the solver block's description (solver_fields.h), with the rule a file's
+// reader states. (Defined in solver_fields.cc.)
 void Validate(const SolverOptions& options);
 
 // What one run integrates: the time span, the initial state, the output grid, the limits.

@@ -91,7 +91,11 @@ const PartVariant<Part>* SelectVariant(const yaml::Source& src, const Document& 
     }
   }
   if (given.empty() || given.find(" and ") != std::string::npos) {
-    yaml::Fail(src, item, path, given.empty() ? "neither" : given, rule);
+    yaml::Fail(src, item, path,
+               !given.empty()        ? given
+               : of_type.size() == 2 ? "neither"
+                                     : "none",
+               rule);
   }
   return chosen;
 }

@@ -198,11 +198,9 @@ void CheckPulses(const yaml::Source& src, const Document& node, const std::strin
 }
 
 TimeSpan ReadTime(const yaml::Source& src, const Document& time) {
-  yaml::RequireMap(src, time, "time", {"start", "end"});
+  yaml::RequireMap(src, time, "time", VariantKeys(TimeBlock(), "time"));
   TimeSpan span;
-  span.start =
-      yaml::ReadNumberIn(src, Required(src, time, "time", "start"), "time.start", kTimeRange);
-  span.end = yaml::ReadNumberIn(src, Required(src, time, "time", "end"), "time.end", kTimeRange);
+  ReadFields(src, time, "time", TimeBlock().front(), span);
   const double shortest = kMinSpanRelative * TimeScale(span.start, span.end);
   if (!(span.end - span.start >= shortest)) {
     yaml::Fail(src, time["end"], "time.end", yaml::Describe(time["end"]),
@@ -236,7 +234,7 @@ SolverOptions ReadSolver(const yaml::Source& src, const Document& node, const st
 OutputRequest ReadOutput(const yaml::Source& src, const Document& node, const std::string& path,
                          double t_start, double t_end) {
   OutputRequest output;
-  yaml::RequireMap(src, node, path, {"file", "interval", "phase_tolerance"});
+  yaml::RequireMap(src, node, path, VariantKeys(OutputBlock(), "output"));
   if (node["file"]) {
     output.file = yaml::ReadString(src, node["file"], Join(path, "file"));
     if (output.file.empty()) {
@@ -262,10 +260,7 @@ OutputRequest ReadOutput(const yaml::Source& src, const Document& node, const st
       }
     }
   }
-  if (node["phase_tolerance"]) {
-    output.phase_tolerance = yaml::ReadNumberIn(
-        src, node["phase_tolerance"], Join(path, "phase_tolerance"), kPhaseToleranceRange);
-  }
+  ReadFields(src, node, path, OutputBlock().front(), output);
   return output;
 }
 

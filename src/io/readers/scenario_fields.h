@@ -13,6 +13,7 @@
 #include "musclesim/dynamics/loads.h"
 #include "musclesim/dynamics/waveform.h"
 #include "musclesim/scenario/scenario.h"
+#include "musclesim/scenario/setting_fields.h"
 #include "musclesim/solver/simulation.h"
 
 namespace musclesim {
@@ -61,11 +62,8 @@ Load ReadLoad(const yaml::Source& src, const Document& node, const std::string& 
 void CheckPulses(const yaml::Source& src, const Document& node, const std::string& path,
                  const Waveform& w, double t_start, double t_end);
 
-// The `time` block: start and end [s], the span at least kMinSpanRelative of the time scale.
-struct TimeSpan {
-  double start = 0.0;  // [s]
-  double end = 1.0;    // [s], > start
-};
+// The `time` block (setting_fields.h): start and end [s], the span at least
+// kMinSpanRelative of the time scale.
 TimeSpan ReadTime(const yaml::Source& src, const Document& time);
 
 // The `solver` block (`path` its key path) of a run over [t_start, t_end].
