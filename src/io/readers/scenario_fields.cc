@@ -13,7 +13,6 @@
 namespace musclesim {
 
 using yaml::Join;
-using yaml::ReadOptionalNumber;
 using yaml::Required;
 using yaml::ValidateAt;
 
