@@ -1,23 +1,31 @@
 // Private: the tension law of each kind of element (docs/model.md 7.1) with its derivatives,
 // defined inline so that the right-hand side, which needs only the value, inlines it and
-// computes no derivative for nothing. Included by network.cc and network_control.cc.
+// computes no derivative for nothing. Included by the evaluations
+// that need it.
 #pragma once
 
 #include <cmath>
 
-#include "musclesim/dynamics/network.h"
+#include "dynamics/network_control.h"
+#include "musclesim/dynamics/network_model.h"
 
-namespace musclesim {
+namespace musclesim::network {
 
-inline NetworkSystem::Tension NetworkSystem::TensionOf(int e, double t, double l, double ldot,
-                                                       const double* y) const {
-  const Element& element = elements_[e];
+// T, dT/dl, dT/d(dl/dt) and dT/du of element e at length l and lengthening rate ldot (an
+// actuator's u read from y when it is a state, else its waveform's or its controller's at t).
+struct Tension {
+  double value, by_length, by_rate, by_activation;
+};
+
+inline Tension TensionOf(const NetworkModel& m, int e, double t, double l, double ldot,
+                         const double* y) {
+  const Element& element = m.elements[e];
   switch (element.kind) {
     case ElementKind::kActuator: {
-      const int state = links_[e].activation;
-      const double u = state >= 0            ? y[state]
-                       : links_[e].loop >= 0 ? ControlOutput(e, t, y)
-                                             : element.activation.Evaluate(t);
+      const int state = m.links[e].activation;
+      const double u = state >= 0             ? y[state]
+                       : m.links[e].loop >= 0 ? ControlOutput(m, e, t, y)
+                                              : element.activation.Evaluate(t);
       const TensionSample s = element.model->Evaluate(l, -ldot, u);
       return {s.total, s.d_length, -s.d_velocity, s.d_activation};  // v = -ldot
     }
@@ -37,4 +45,4 @@ inline NetworkSystem::Tension NetworkSystem::TensionOf(int e, double t, double l
   return {0.0, 0.0, 0.0, 0.0};
 }
 
-}  // namespace musclesim
+}  // namespace musclesim::network

@@ -1,18 +1,21 @@
 // Feedback control of a network (docs/model.md section 11): the controllers' commands, their
 // integral states, their terms in the Jacobian and their place in the pattern.
+#include "dynamics/network_control.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
 #include <utility>
 
-#include "musclesim/dynamics/network.h"
-
 #include "dynamics/element_tension.h"
+#include "dynamics/network_build.h"
+#include "dynamics/network_evaluation.h"
+#include "dynamics/network_space.h"
 #include "musclesim/core/errors.h"
 #include "part_paths.h"
 
-namespace musclesim {
+namespace musclesim::network {
 
 namespace {
 
@@ -33,52 +36,52 @@ void RequireEveryControlledDriven(const std::vector<Element>& elements,
 
 }  // namespace
 
-void NetworkSystem::ResolveControllers(int& states) {
-  std::vector<int> driver(elements_.size(), -1);
-  for (std::size_t k = 0; k < controllers_.size(); ++k) {
-    Loop loop = MeasuredLoop(k);
-    AttachDriven(k, loop, driver);
-    if (controllers_[k].gains.ki != 0.0) {
+void ResolveControllers(NetworkModel& m, int& states) {
+  std::vector<int> driver(m.elements.size(), -1);
+  for (std::size_t k = 0; k < m.controllers.size(); ++k) {
+    Loop loop = MeasuredLoop(m, k);
+    AttachDriven(m, k, loop, driver);
+    if (m.controllers[k].gains.ki != 0.0) {
       loop.integral = states++;
-      ++integral_count_;
+      ++m.integral_count;
     }
-    loops_.push_back(loop);
+    m.loops.push_back(loop);
   }
-  RequireEveryControlledDriven(elements_, driver);
-  for (std::size_t k = 0; k < loops_.size(); ++k) {
-    RequireNoAlgebraicLoop(k, driver);
-    PlaceLoopColumns(k);
+  RequireEveryControlledDriven(m.elements, driver);
+  for (std::size_t k = 0; k < m.loops.size(); ++k) {
+    RequireNoAlgebraicLoop(m, k, driver);
+    PlaceLoopColumns(m, k);
   }
 }
 
-NetworkSystem::Loop NetworkSystem::MeasuredLoop(std::size_t k) const {
-  const Controller& c = controllers_[k];
+Loop MeasuredLoop(const NetworkModel& m, std::size_t k) {
+  const Controller& c = m.controllers[k];
   Loop loop;
   std::fill(std::begin(loop.columns), std::end(loop.columns), -1);
   if (!c.measure.element.empty()) {
-    loop.element = FindElement(c.measure.element);
+    loop.element = FindElement(m, c.measure.element);
     if (loop.element < 0) {
       throw ParameterError(Entry("controllers", k, "measure.element"), c.measure.element,
-                           "names no element; the elements are: " + KnownNames(elements_));
+                           "names no element; the elements are: " + KnownNames(m.elements));
     }
   } else {
-    loop.node = FindNode(c.measure.node);
+    loop.node = FindNode(m, c.measure.node);
     if (loop.node < 0) {
       throw ParameterError(Entry("controllers", k, "measure.node"), c.measure.node,
-                           "names no node; the nodes are: " + KnownNames(nodes_));
+                           "names no node; the nodes are: " + KnownNames(m.nodes));
     }
-    if (nodes_[loop.node].kind != NodeKind::kFree) {
+    if (m.nodes[loop.node].kind != NodeKind::kFree) {
       throw ParameterError(Entry("controllers", k, "measure.node"), c.measure.node,
                            "must name a free node (one with a mass): it is " +
-                               std::string(ToString(nodes_[loop.node].kind)));
+                               std::string(ToString(m.nodes[loop.node].kind)));
     }
-    RequireCoordinate(k);
+    RequireCoordinate(m, k);
   }
   return loop;
 }
 
-void NetworkSystem::RequireCoordinate(std::size_t k) const {
-  const int c = controllers_[k].measure.coordinate, d = space_.dimensions;
+void RequireCoordinate(const NetworkModel& m, std::size_t k) {
+  const int c = m.controllers[k].measure.coordinate, d = m.space.dimensions;
   const std::string path = Entry("controllers", k, "measure.coordinate");
   if (c == Measurement::kNoCoordinate) {
     if (d == 1) return;  // on a line the position is x
@@ -94,19 +97,19 @@ void NetworkSystem::RequireCoordinate(std::size_t k) const {
   }
 }
 
-int NetworkSystem::DrivableActuator(std::size_t k, const char* key, const std::string& name,
-                                    const std::vector<int>& driver) const {
-  const int e = FindElement(name);
+int DrivableActuator(const NetworkModel& m, std::size_t k, const char* key, const std::string& name,
+                     const std::vector<int>& driver) {
+  const int e = FindElement(m, name);
   if (e < 0) {
     throw ParameterError(Entry("controllers", k, key), name,
-                         "names no element; the elements are: " + KnownNames(elements_));
+                         "names no element; the elements are: " + KnownNames(m.elements));
   }
-  if (elements_[e].kind != ElementKind::kActuator) {
+  if (m.elements[e].kind != ElementKind::kActuator) {
     throw ParameterError(
         Entry("controllers", k, key), name,
-        "must name an actuator; it is a " + std::string(ToString(elements_[e].kind)));
+        "must name an actuator; it is a " + std::string(ToString(m.elements[e].kind)));
   }
-  if (!elements_[e].controlled) {
+  if (!m.elements[e].controlled) {
     throw ParameterError(Entry("controllers", k, key), name,
                          "drives an actuator that has an activation of its own: a "
                          "controlled actuator has none (no `activation:` or `excitation:`)");
@@ -119,54 +122,54 @@ int NetworkSystem::DrivableActuator(std::size_t k, const char* key, const std::s
   return e;
 }
 
-void NetworkSystem::AttachDriven(std::size_t k, Loop& loop, std::vector<int>& driver) {
-  const Controller& c = controllers_[k];
+void AttachDriven(NetworkModel& m, std::size_t k, Loop& loop, std::vector<int>& driver) {
+  const Controller& c = m.controllers[k];
   const bool pair = c.co_contraction.has_value();
   const std::string names[2] = {pair ? c.co_contraction->first : c.drives,
                                 pair ? c.co_contraction->second : std::string()};
   const char* key = pair ? "co_contraction.actuators" : "drives";
   for (int i = 0; i < (pair ? 2 : 1); ++i) {
-    const int e = DrivableActuator(k, key, names[i], driver);
+    const int e = DrivableActuator(m, k, key, names[i], driver);
     driver[e] = static_cast<int>(k);
-    links_[e].loop = static_cast<int>(k);
-    links_[e].side = i == 0 ? 1 : -1;
+    m.links[e].loop = static_cast<int>(k);
+    m.links[e].side = i == 0 ? 1 : -1;
     loop.driven[i] = e;
-    kinks_.push_back({Kink::kCommand, e, 0.0});
-    kinks_.push_back({Kink::kCommand, e, 1.0});
+    m.kinks.push_back({Kink::kCommand, e, 0.0});
+    m.kinks.push_back({Kink::kCommand, e, 1.0});
   }
 }
 
-void NetworkSystem::RequireNoAlgebraicLoop(std::size_t k, const std::vector<int>& driver) const {
-  const int m = loops_[k].element;
-  if (m >= 0 && controllers_[k].measure.quantity == MeasuredQuantity::kTension &&
-      elements_[m].controlled && !elements_[m].excitation) {
+void RequireNoAlgebraicLoop(const NetworkModel& m, std::size_t k, const std::vector<int>& driver) {
+  const int measured = m.loops[k].element;
+  if (measured >= 0 && m.controllers[k].measure.quantity == MeasuredQuantity::kTension &&
+      m.elements[measured].controlled && !m.elements[measured].excitation) {
     // its tension depends on a controller's output, computed from the state now: an
     // algebraic loop when it is this controller's, a chain of them otherwise
     throw ParameterError(
-        Entry("controllers", k, "measure.element"), elements_[m].name,
-        (driver[m] == static_cast<int>(k)
+        Entry("controllers", k, "measure.element"), m.elements[measured].name,
+        (driver[measured] == static_cast<int>(k)
              ? std::string("is the actuator this controller drives")
-             : "is driven by controllers[" + std::to_string(driver[m]) + "]") +
+             : "is driven by controllers[" + std::to_string(driver[measured]) + "]") +
             ", without activation dynamics: its tension would be an algebraic function of "
             "a controller's output; give it activation_dynamics (docs/model.md 11)");
   }
 }
 
-void NetworkSystem::PlaceLoopColumns(std::size_t k) {
-  if (space_.dimensions > 1) return PlaceSpaceLoopColumns(k);
-  Loop& loop = loops_[k];
-  const int m = loop.element;
+void PlaceLoopColumns(NetworkModel& m, std::size_t k) {
+  if (m.space.dimensions > 1) return PlaceSpaceLoopColumns(m, k);
+  Loop& loop = m.loops[k];
+  const int measured = loop.element;
   const auto place = [&](int node, int column) {
-    const int state = ends_[node].state;
+    const int state = m.ends[node].state;
     if (state < 0) return;
     loop.columns[column] = state;
     loop.columns[column + 1] = state + 1;
   };
-  if (m >= 0) {
-    place(links_[m].from, kFromPosition);
-    place(links_[m].to, kToPosition);
-    if (controllers_[k].measure.quantity == MeasuredQuantity::kTension) {
-      loop.columns[kMeasuredActivation] = links_[m].activation;
+  if (measured >= 0) {
+    place(m.links[measured].from, kFromPosition);
+    place(m.links[measured].to, kToPosition);
+    if (m.controllers[k].measure.quantity == MeasuredQuantity::kTension) {
+      loop.columns[kMeasuredActivation] = m.links[measured].activation;
     }
   } else {
     place(loop.node, kToPosition);
@@ -174,9 +177,9 @@ void NetworkSystem::PlaceLoopColumns(std::size_t k) {
   loop.columns[kIntegral] = loop.integral;
 }
 
-void NetworkSystem::AddControlPattern(std::vector<std::pair<int, int>>& pairs) const {
-  if (space_.dimensions > 1) return AddSpaceControlPattern(pairs);
-  for (const Loop& loop : loops_) {
+void AddControlPattern(const NetworkModel& m, std::vector<std::pair<int, int>>& pairs) {
+  if (m.space.dimensions > 1) return AddSpaceControlPattern(m, pairs);
+  for (const Loop& loop : m.loops) {
     const auto add_row = [&](int row) {
       if (row < 0) return;
       for (int column : loop.columns) {
@@ -185,36 +188,36 @@ void NetworkSystem::AddControlPattern(std::vector<std::pair<int, int>>& pairs) c
     };
     for (int e : loop.driven) {
       if (e < 0) continue;
-      const Link& link = links_[e];
+      const Link& link = m.links[e];
       if (link.activation >= 0) {
         add_row(link.activation);
         continue;
       }
       for (int end : {link.from, link.to}) {
-        if (ends_[end].state >= 0) add_row(ends_[end].state + 1);
+        if (m.ends[end].state >= 0) add_row(m.ends[end].state + 1);
       }
     }
     add_row(loop.integral);
   }
 }
 
-void NetworkSystem::FindControlSlots(const std::vector<std::pair<int, int>>& pairs) {
-  if (space_.dimensions > 1) return FindSpaceControlSlots(pairs);
+void FindControlSlots(NetworkModel& m, const std::vector<std::pair<int, int>>& pairs) {
+  if (m.space.dimensions > 1) return FindSpaceControlSlots(m, pairs);
   const auto slot = [&](int row, int column) {
     if (row < 0 || column < 0) return -1;
     const auto it = std::lower_bound(pairs.begin(), pairs.end(), std::make_pair(column, row));
     return static_cast<int>(it - pairs.begin());
   };
-  for (Loop& loop : loops_) {
+  for (Loop& loop : m.loops) {
     for (int i = 0; i < 2; ++i) {
       const int e = loop.driven[i];
       int rows[2] = {-1, -1};
       if (e >= 0) {
-        const Link& link = links_[e];
+        const Link& link = m.links[e];
         if (link.activation >= 0) {
           rows[0] = link.activation;
         } else {
-          const int from = ends_[link.from].state, to = ends_[link.to].state;
+          const int from = m.ends[link.from].state, to = m.ends[link.to].state;
           rows[0] = from >= 0 ? from + 1 : -1;
           rows[1] = to >= 0 ? to + 1 : -1;
         }
@@ -231,29 +234,29 @@ void NetworkSystem::FindControlSlots(const std::vector<std::pair<int, int>>& pai
   }
 }
 
-NetworkSystem::Command NetworkSystem::CommandOf(int k, double t, const double* y) const {
-  const Controller& c = controllers_[k];
-  const Loop& loop = loops_[k];
+Command CommandOf(const NetworkModel& m, int k, double t, const double* y) {
+  const Controller& c = m.controllers[k];
+  const Loop& loop = m.loops[k];
   Command out{};
   // dy/dstate and d(ydot)/dstate along the columns, y the measured quantity
   double measured_by[kLoopColumns] = {};
   double rate_by[kLoopColumns] = {};
   double rate = 0.0;  // ydot
-  if (space_.dimensions > 1) {
+  if (m.space.dimensions > 1) {
     // its derivatives are SpaceControlJacobian's: measured_by and rate_by stay 0 here
-    out.measured = MeasureInSpace(k, t, y, rate);
+    out.measured = MeasureInSpace(m, k, t, y, rate);
   } else if (loop.node >= 0) {
-    const int s = ends_[loop.node].state;
+    const int s = m.ends[loop.node].state;
     out.measured = y[s];
     rate = y[s + 1];
     measured_by[kToPosition] = 1.0;
     rate_by[kToVelocity] = 1.0;
   } else {
-    const Link& link = links_[loop.element];
-    const End& a = ends_[link.from];
-    const End& b = ends_[link.to];
-    const double l = PositionOf(b, t, y) - PositionOf(a, t, y);
-    const double ldot = VelocityOf(b, t, y) - VelocityOf(a, t, y);
+    const Link& link = m.links[loop.element];
+    const End& a = m.ends[link.from];
+    const End& b = m.ends[link.to];
+    const double l = PositionOf(m, b, t, y) - PositionOf(m, a, t, y);
+    const double ldot = VelocityOf(m, b, t, y) - VelocityOf(m, a, t, y);
     if (c.measure.quantity == MeasuredQuantity::kLength) {
       out.measured = l;
       rate = ldot;
@@ -262,7 +265,7 @@ NetworkSystem::Command NetworkSystem::CommandOf(int k, double t, const double* y
       rate_by[kFromVelocity] = -1.0;
       rate_by[kToVelocity] = 1.0;
     } else {
-      const Tension tension = TensionOf(loop.element, t, l, ldot, y);
+      const Tension tension = TensionOf(m, loop.element, t, l, ldot, y);
       out.measured = tension.value;
       measured_by[kFromPosition] = -tension.by_length;
       measured_by[kToPosition] = tension.by_length;
@@ -294,21 +297,22 @@ NetworkSystem::Command NetworkSystem::CommandOf(int k, double t, const double* y
   return out;
 }
 
-double NetworkSystem::UnclampedOutput(int e, const Command& command, double t) const {
-  const Controller& c = controllers_[links_[e].loop];
+double UnclampedOutput(const NetworkModel& m, int e, const Command& command, double t) {
+  const Controller& c = m.controllers[m.links[e].loop];
   if (!c.co_contraction) return command.value;
-  return c.co_contraction->level.Evaluate(t) + links_[e].side * command.value;
+  return c.co_contraction->level.Evaluate(t) + m.links[e].side * command.value;
 }
 
-double NetworkSystem::ControlOutput(int e, double t, const double* y) const {
-  return std::clamp(UnclampedOutput(e, CommandOf(links_[e].loop, t, y), t), 0.0, 1.0);
+double ControlOutput(const NetworkModel& m, int e, double t, const double* y) {
+  return std::clamp(UnclampedOutput(m, e, CommandOf(m, m.links[e].loop, t, y), t), 0.0, 1.0);
 }
 
-double NetworkSystem::ExcitationOf(int e, double t, const double* y) const {
-  return links_[e].loop >= 0 ? ControlOutput(e, t, y) : elements_[e].excitation->signal.Evaluate(t);
+double ExcitationOf(const NetworkModel& m, int e, double t, const double* y) {
+  return m.links[e].loop >= 0 ? ControlOutput(m, e, t, y)
+                              : m.elements[e].excitation->signal.Evaluate(t);
 }
 
-NetworkSystem::IntegralFade NetworkSystem::FadeOf(const Command& command, double ki) {
+IntegralFade FadeOf(const Command& command, double ki) {
   // the integral moves c toward `high` when ki err > 0, toward `low` when ki err < 0; within
   // kIntegralFadeBand of that bound it fades out linearly, beyond it stops (no wind-up)
   const double push = ki * command.error;
@@ -325,7 +329,7 @@ NetworkSystem::IntegralFade NetworkSystem::FadeOf(const Command& command, double
   return fade;
 }
 
-double NetworkSystem::IntegralRate(const Command& command, double ki, double* by_state) const {
+double IntegralRate(const Command& command, double ki, double* by_state) {
   const IntegralFade fade = FadeOf(command, ki);
   for (int i = 0; i < kLoopColumns; ++i) {
     by_state[i] = fade.weight * command.error_by_state[i] +
@@ -334,86 +338,67 @@ double NetworkSystem::IntegralRate(const Command& command, double ki, double* by
   return fade.weight * command.error;
 }
 
-void NetworkSystem::ControlRightHandSide(double t, const double* y, double* ydot) const {
+void ControlRightHandSide(const NetworkModel& m, double t, const double* y, double* ydot) {
   double unused[kLoopColumns];
-  for (std::size_t k = 0; k < loops_.size(); ++k) {
-    const int z = loops_[k].integral;
+  for (std::size_t k = 0; k < m.loops.size(); ++k) {
+    const int z = m.loops[k].integral;
     if (z < 0) continue;
-    ydot[z] = IntegralRate(CommandOf(static_cast<int>(k), t, y), controllers_[k].gains.ki, unused);
+    ydot[z] =
+        IntegralRate(CommandOf(m, static_cast<int>(k), t, y), m.controllers[k].gains.ki, unused);
   }
 }
 
-void NetworkSystem::ControlJacobian(double t, const double* y, double* values) const {
+void ControlJacobian(const NetworkModel& m, double t, const double* y, double* values) {
   const auto add = [&](const int* slots, double factor, const double* by_state) {
     for (int c = 0; c < kLoopColumns; ++c) {
       if (slots[c] >= 0) values[slots[c]] += factor * by_state[c];
     }
   };
-  for (std::size_t k = 0; k < loops_.size(); ++k) {
-    const Loop& loop = loops_[k];
-    const Command command = CommandOf(static_cast<int>(k), t, y);
+  for (std::size_t k = 0; k < m.loops.size(); ++k) {
+    const Loop& loop = m.loops[k];
+    const Command command = CommandOf(m, static_cast<int>(k), t, y);
     for (int i = 0; i < 2; ++i) {
       const int e = loop.driven[i];
       if (e < 0) continue;
-      const double unclamped = UnclampedOutput(e, command, t);
+      const double unclamped = UnclampedOutput(m, e, command, t);
       if (unclamped <= 0.0 || unclamped >= 1.0) continue;  // clamped: no feedback
-      const Link& link = links_[e];
+      const Link& link = m.links[e];
       if (link.activation >= 0) {
         // the output is the excitation of udot
-        const ExcitationInput& input = *elements_[e].excitation;
+        const ExcitationInput& input = *m.elements[e].excitation;
         const double rate_by_excitation =
             EvaluateActivationRate(input.dynamics, unclamped, y[link.activation]).by_excitation;
         add(loop.slot_driven[i][0], rate_by_excitation * link.side, command.by_state);
         continue;
       }
       // the output is the activation: +T on `from`, -T on `to`
-      const End& a = ends_[link.from];
-      const End& b = ends_[link.to];
-      const double l = PositionOf(b, t, y) - PositionOf(a, t, y);
-      const double ldot = VelocityOf(b, t, y) - VelocityOf(a, t, y);
-      const double by_output = TensionOf(e, t, l, ldot, y).by_activation * link.side;
+      const End& a = m.ends[link.from];
+      const End& b = m.ends[link.to];
+      const double l = PositionOf(m, b, t, y) - PositionOf(m, a, t, y);
+      const double ldot = VelocityOf(m, b, t, y) - VelocityOf(m, a, t, y);
+      const double by_output = TensionOf(m, e, t, l, ldot, y).by_activation * link.side;
       add(loop.slot_driven[i][0], by_output, command.by_state);
       add(loop.slot_driven[i][1], -by_output, command.by_state);
     }
     if (loop.integral >= 0) {
       double by_state[kLoopColumns];
-      IntegralRate(command, controllers_[k].gains.ki, by_state);
+      IntegralRate(command, m.controllers[k].gains.ki, by_state);
       add(loop.slot_integral, 1.0, by_state);
     }
   }
 }
 
-void NetworkSystem::ObserveControllers(double t, const double* y, NetworkSample& sample) const {
-  sample.controllers.resize(controllers_.size());
-  for (std::size_t k = 0; k < controllers_.size(); ++k) {
-    const Command command = CommandOf(static_cast<int>(k), t, y);
+void ObserveControllers(const NetworkModel& m, double t, const double* y, NetworkSample& sample) {
+  sample.controllers.resize(m.controllers.size());
+  for (std::size_t k = 0; k < m.controllers.size(); ++k) {
+    const Command command = CommandOf(m, static_cast<int>(k), t, y);
     ControllerSample& out = sample.controllers[k];
     out.reference = command.reference;
     out.measured = command.measured;
     out.error = command.error;
     out.output =
-        controllers_[k].co_contraction ? command.value : std::clamp(command.value, 0.0, 1.0);
+        m.controllers[k].co_contraction ? command.value : std::clamp(command.value, 0.0, 1.0);
   }
 }
 
-void NetworkSystem::HoldActivation(int e, double value) {
-  const std::string path = "elements[" + std::to_string(e) + "]";
-  if (e < 0 || e >= static_cast<int>(elements_.size())) {
-    throw ParameterError("element", std::to_string(e), "names no element of this network");
-  }
-  Element& element = elements_[e];
-  if (element.kind != ElementKind::kActuator || element.controlled) {
-    throw ParameterError(path, element.name,
-                         "must be an actuator no controller drives: only such an actuator's "
-                         "activation can be set from outside");
-  }
-  Require(std::isfinite(value) && value >= 0.0 && value <= 1.0, path + ".activation", value,
-          "must be finite and in [0, 1]");
-  if (element.excitation) {
-    element.excitation->signal = Waveform::Constant(value);
-  } else {
-    element.activation = Waveform::Constant(value);
-  }
-}
-
-}  // namespace musclesim
+}  // namespace musclesim::network

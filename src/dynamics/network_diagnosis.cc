@@ -1,63 +1,68 @@
 // NonFiniteCause (network.h): which quantity of the network made its right-hand side
 // non-finite, so that a failed run names the element, the quantity and the time rather than
 // only CVODE's flag.
+#include "dynamics/network_diagnosis.h"
+
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include "dynamics/network_evaluation.h"
+#include "dynamics/network_junction.h"
+#include "dynamics/network_space.h"
 #include "musclesim/core/number_format.h"
-#include "musclesim/dynamics/network.h"
 
-namespace musclesim {
+namespace musclesim::network {
 
-std::string NetworkSystem::NonFiniteCause(double t, const double* y) const {
+std::string NonFiniteCause(const NetworkModel& m, double t, const double* y) {
   const std::string at = " at t = " + FormatNumber(t) + " s";
   // a junction's velocity first: every tension at it depends on it
-  for (std::size_t k = 0; k < junctions_.size(); ++k) {
-    const std::string failure = JunctionFailure(static_cast<int>(k), t, y);
+  for (std::size_t k = 0; k < m.junctions.size(); ++k) {
+    const std::string failure = JunctionFailure(m, static_cast<int>(k), t, y);
     if (!failure.empty()) return failure + at;
   }
-  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+  for (std::size_t i = 0; i < m.nodes.size(); ++i) {
     const int node = static_cast<int>(i);
-    for (int c = 0; c < space_.dimensions; ++c) {
-      const double position = NodeCoordinate(node, c, t, y);
-      const double velocity = NodeCoordinateRate(node, c, t, y);
+    for (int c = 0; c < m.space.dimensions; ++c) {
+      const double position = NodeCoordinate(m, node, c, t, y);
+      const double velocity = NodeCoordinateRate(m, node, c, t, y);
       if (!std::isfinite(position) || !std::isfinite(velocity)) {
-        return "node " + nodes_[i].name + "'s position " + FormatNumber(position) +
+        return "node " + m.nodes[i].name + "'s position " + FormatNumber(position) +
                " m, velocity " + FormatNumber(velocity) + " m/s" + at;
       }
     }
   }
   ElementSample sample;
-  for (std::size_t e = 0; e < elements_.size(); ++e) {
-    ObserveElement(static_cast<int>(e), t, y, sample);
+  for (std::size_t e = 0; e < m.elements.size(); ++e) {
+    ObserveElement(m, static_cast<int>(e), t, y, sample);
     if (!std::isfinite(sample.tension)) {
-      return "elements[" + std::to_string(e) + "] (" + elements_[e].name + ")'s tension is " +
+      return "elements[" + std::to_string(e) + "] (" + m.elements[e].name + ")'s tension is " +
              FormatNumber(sample.tension) + " N at length " + FormatNumber(sample.length) +
              " m and lengthening rate " + FormatNumber(sample.lengthening_rate) + " m/s" + at +
              ": its law's parameters overflow at that length";
     }
   }
-  for (std::size_t i = 0; i < nodes_.size(); ++i) {
-    const double load = LoadOn(static_cast<int>(i), t, y);
+  for (std::size_t i = 0; i < m.nodes.size(); ++i) {
+    const double load = LoadOn(m, static_cast<int>(i), t, y);
     if (!std::isfinite(load)) {
-      return "the load on node " + nodes_[i].name + " is " + FormatNumber(load) + " N" + at;
+      return "the load on node " + m.nodes[i].name + " is " + FormatNumber(load) + " N" + at;
     }
   }
   // every part finite, the sum over a node's mass is not: its acceleration overflowed
-  std::vector<double> rate(static_cast<std::size_t>(state_size()));
-  RightHandSide(t, y, rate.data());
-  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+  std::vector<double> rate(static_cast<std::size_t>(StateSize(m)));
+  NetworkScratch scratch;
+  RightHandSide(m, t, y, rate.data(), scratch);
+  for (std::size_t i = 0; i < m.nodes.size(); ++i) {
     // the first velocity's rate (a junction has none: its velocity was checked above)
-    const int v = ends_[i].rate;
+    const int v = m.ends[i].rate;
     const std::size_t a = static_cast<std::size_t>(v);
     if (v >= 0 && !std::isfinite(rate[a])) {
-      return "node " + nodes_[i].name + "'s acceleration is " + FormatNumber(rate[a]) +
+      return "node " + m.nodes[i].name + "'s acceleration is " + FormatNumber(rate[a]) +
              " m/s^2: the forces on it, each finite, over its mass of " +
-             FormatNumber(nodes_[i].mass) + " kg overflow" + at;
+             FormatNumber(m.nodes[i].mass) + " kg overflow" + at;
     }
   }
   return "a rate of the state (an activation or a controller's integral) is not finite" + at;
 }
 
-}  // namespace musclesim
+}  // namespace musclesim::network

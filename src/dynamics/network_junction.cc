@@ -1,18 +1,20 @@
 // Massless junctions on a line (docs/model.md 14.4): a free node of mass 0 whose velocity w is
 // the root of its force balance R(w) = its loads + the forces of its elements = 0, found to
 // machine precision in every evaluation, with dw/dy = -(dR/dw)^-1 dR/dy for the Jacobian.
+#include "dynamics/network_junction.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
 
 #include "dynamics/element_tension.h"
+#include "dynamics/network_evaluation.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
-#include "musclesim/dynamics/network.h"
 #include "part_paths.h"
 
-namespace musclesim {
+namespace musclesim::network {
 
 namespace {
 
@@ -39,43 +41,43 @@ std::string Described(const Element& element) {
 
 }  // namespace
 
-void NetworkSystem::ResolveJunctions() {
-  for (std::size_t f = 0; f < free_nodes_.size(); ++f) {
-    if (!free_nodes_[f].massless) continue;
-    ends_[free_nodes_[f].node].junction = static_cast<int>(junctions_.size());
-    junctions_.push_back(
-        {static_cast<int>(f), ends_[free_nodes_[f].node].state, {}, {}, {}, {}, {}, -1});
+void ResolveJunctions(NetworkModel& m) {
+  for (std::size_t f = 0; f < m.free_nodes.size(); ++f) {
+    if (!m.free_nodes[f].massless) continue;
+    m.ends[m.free_nodes[f].node].junction = static_cast<int>(m.junctions.size());
+    m.junctions.push_back(
+        {static_cast<int>(f), m.ends[m.free_nodes[f].node].state, {}, {}, {}, {}, {}, -1});
   }
-  for (Junction& junction : junctions_) {
-    const int node = free_nodes_[junction.free].node;
-    const std::string name = nodes_[node].name;
-    if (!controllers_.empty()) {
+  for (Junction& junction : m.junctions) {
+    const int node = m.free_nodes[junction.free].node;
+    const std::string name = m.nodes[node].name;
+    if (!m.controllers.empty()) {
       throw ParameterError(Entry("nodes", static_cast<std::size_t>(node), "mass"), "0",
                            "a massless junction and controllers in one network are not "
                            "supported yet (controllers[0] is " +
-                               controllers_.front().name + "): give node " + name + " a mass");
+                               m.controllers.front().name + "): give node " + name + " a mass");
     }
     bool fixes_velocity = false;
     std::string attached;  // every element at the node, for the refusal's message
-    for (std::size_t e = 0; e < links_.size(); ++e) {
-      if (links_[e].from != node && links_[e].to != node) continue;
-      const Element& element = elements_[e];
+    for (std::size_t e = 0; e < m.links.size(); ++e) {
+      if (m.links[e].from != node && m.links[e].to != node) continue;
+      const Element& element = m.elements[e];
       const bool inert = element.kind == ElementKind::kDamper && element.damping == 0.0;
       attached +=
           (attached.empty() ? "" : ", ") + Described(element) + (inert ? " with damping 0" : "");
     }
-    for (const int e : active_links_) {
-      const Link& link = links_[e];
+    for (const int e : m.active_links) {
+      const Link& link = m.links[e];
       if (link.from != node && link.to != node) continue;
       const int other = link.from == node ? link.to : link.from;
-      if (ends_[other].junction >= 0) {
+      if (m.ends[other].junction >= 0) {
         throw ParameterError(
-            Entry("elements", static_cast<std::size_t>(e), "name"), elements_[e].name,
-            "joins two massless junctions (" + name + " and " + nodes_[other].name +
+            Entry("elements", static_cast<std::size_t>(e), "name"), m.elements[e].name,
+            "joins two massless junctions (" + name + " and " + m.nodes[other].name +
                 "), whose balances would couple; give one of them a mass");
       }
       junction.links.push_back(e);
-      fixes_velocity = fixes_velocity || RateDependentAtRest(elements_[e]);
+      fixes_velocity = fixes_velocity || RateDependentAtRest(m.elements[e]);
     }
     if (!fixes_velocity) {
       throw ParameterError(
@@ -90,8 +92,8 @@ void NetworkSystem::ResolveJunctions() {
     std::vector<int>& columns = junction.columns;
     columns.push_back(junction.state);
     for (const int e : junction.links) {
-      const Link& link = links_[e];
-      const End& other = ends_[link.from == node ? link.to : link.from];
+      const Link& link = m.links[e];
+      const End& other = m.ends[link.from == node ? link.to : link.from];
       for (const int state : {other.state, other.rate, link.activation}) {
         if (state >= 0) columns.push_back(state);
       }
@@ -105,33 +107,33 @@ void NetworkSystem::ResolveJunctions() {
     };
     junction.own_column = position(junction.state);
     for (const int e : junction.links) {
-      const Link& link = links_[e];
-      const End& other = ends_[link.from == node ? link.to : link.from];
+      const Link& link = m.links[e];
+      const End& other = m.ends[link.from == node ? link.to : link.from];
       junction.link_columns.push_back(
           {position(other.state), position(other.rate), position(link.activation)});
     }
   }
 }
 
-void NetworkSystem::AddJunctionPattern(std::vector<std::pair<int, int>>& pairs) const {
-  for (const Junction& junction : junctions_) {
-    const int node = free_nodes_[junction.free].node;
+void AddJunctionPattern(const NetworkModel& m, std::vector<std::pair<int, int>>& pairs) {
+  for (const Junction& junction : m.junctions) {
+    const int node = m.free_nodes[junction.free].node;
     for (const int c : junction.columns) pairs.emplace_back(c, junction.state);
     // a neighbour's acceleration depends on w, so on every state w depends on
     for (const int e : junction.links) {
-      const int row = ends_[links_[e].from == node ? links_[e].to : links_[e].from].rate;
+      const int row = m.ends[m.links[e].from == node ? m.links[e].to : m.links[e].from].rate;
       if (row < 0) continue;
       for (const int c : junction.columns) pairs.emplace_back(c, row);
     }
   }
 }
 
-void NetworkSystem::FindJunctionSlots(const std::function<int(int, int)>& slot) {
-  for (Junction& junction : junctions_) {
-    const int node = free_nodes_[junction.free].node;
+void FindJunctionSlots(NetworkModel& m, const std::function<int(int, int)>& slot) {
+  for (Junction& junction : m.junctions) {
+    const int node = m.free_nodes[junction.free].node;
     for (const int c : junction.columns) junction.row_slots.push_back(slot(junction.state, c));
     for (const int e : junction.links) {
-      const int row = ends_[links_[e].from == node ? links_[e].to : links_[e].from].rate;
+      const int row = m.ends[m.links[e].from == node ? m.links[e].to : m.links[e].from].rate;
       for (const int c : junction.columns) {
         junction.neighbour_slots.push_back(row >= 0 ? slot(row, c) : -1);
       }
@@ -139,24 +141,23 @@ void NetworkSystem::FindJunctionSlots(const std::function<int(int, int)>& slot) 
   }
 }
 
-NetworkSystem::Balance NetworkSystem::JunctionBalance(const Junction& junction, double t,
-                                                      const double* y, double w,
-                                                      bool elastic) const {
-  const FreeNode& f = free_nodes_[junction.free];
+Balance JunctionBalance(const NetworkModel& m, const Junction& junction, double t, const double* y,
+                        double w, bool elastic) {
+  const FreeNode& f = m.free_nodes[junction.free];
   Balance balance{0.0, 0.0, 0.0};
   if (elastic) {
     const double load = f.loads.Force(t, y[junction.state]);
     balance = {load, 0.0, std::abs(load)};
   }
   for (const int e : junction.links) {
-    if (Elastic(elements_[e]) != elastic) continue;
-    const Link& link = links_[e];
-    const End& a = ends_[link.from];
-    const End& b = ends_[link.to];
+    if (Elastic(m.elements[e]) != elastic) continue;
+    const Link& link = m.links[e];
+    const End& a = m.ends[link.from];
+    const End& b = m.ends[link.to];
     const bool from = link.from == f.node;
-    const double l = PositionOf(b, t, y) - PositionOf(a, t, y);
-    const double ldot = from ? VelocityOf(b, t, y) - w : w - VelocityOf(a, t, y);
-    const Tension tension = TensionOf(e, t, l, ldot, y);
+    const double l = PositionOf(m, b, t, y) - PositionOf(m, a, t, y);
+    const double ldot = from ? VelocityOf(m, b, t, y) - w : w - VelocityOf(m, a, t, y);
+    const Tension tension = TensionOf(m, e, t, l, ldot, y);
     // +T on `from`, -T on `to`; either way the force falls as w rises, by dT/d(ldot)
     balance.residual += from ? tension.value : -tension.value;
     balance.by_velocity -= tension.by_rate;
@@ -165,18 +166,18 @@ NetworkSystem::Balance NetworkSystem::JunctionBalance(const Junction& junction, 
   return balance;
 }
 
-double NetworkSystem::JunctionVelocity(int k, double t, const double* y) const {
-  const Junction& junction = junctions_[k];
-  const int node = free_nodes_[junction.free].node;
+double JunctionVelocity(const NetworkModel& m, int k, double t, const double* y) {
+  const Junction& junction = m.junctions[k];
+  const int node = m.free_nodes[junction.free].node;
   // the first guess: the mean velocity of the neighbours across elastic elements (a tendon's
   // far end: a stiff tendon carries its end's motion to the junction), else of all neighbours
   double w = 0.0, across_elastic = 0.0;
   int elastic_links = 0;
   for (const int e : junction.links) {
     const double v =
-        VelocityOf(ends_[links_[e].from == node ? links_[e].to : links_[e].from], t, y);
+        VelocityOf(m, m.ends[m.links[e].from == node ? m.links[e].to : m.links[e].from], t, y);
     w += v;
-    if (Elastic(elements_[e])) {
+    if (Elastic(m.elements[e])) {
       across_elastic += v;
       ++elastic_links;
     }
@@ -195,9 +196,9 @@ double NetworkSystem::JunctionVelocity(int k, double t, const double* y) const {
   // steep bend of R between flat stretches), and bisection takes over (as in rtsafe)
   double last_step = kInfinity, step_before = kInfinity;
   // the loads and the elastic elements, once: only the other elements' tensions move with w
-  const Balance elastic = JunctionBalance(junction, t, y, w, true);
+  const Balance elastic = JunctionBalance(m, junction, t, y, w, true);
   for (int iteration = 0; iteration < 400; ++iteration) {
-    Balance balance = JunctionBalance(junction, t, y, w, false);
+    Balance balance = JunctionBalance(m, junction, t, y, w, false);
     balance.residual += elastic.residual;
     balance.magnitude += elastic.magnitude;
     if (!std::isfinite(balance.residual)) return kNaN;
@@ -226,54 +227,54 @@ double NetworkSystem::JunctionVelocity(int k, double t, const double* y) const {
   return kNaN;  // no root within reach: the run fails, and NonFiniteCause names the junction
 }
 
-std::string NetworkSystem::JunctionFailure(int k, double t, const double* y) const {
-  if (std::isfinite(JunctionVelocity(k, t, y))) return "";
-  const Junction& junction = junctions_[k];
-  const int node = free_nodes_[junction.free].node;
+std::string JunctionFailure(const NetworkModel& m, int k, double t, const double* y) {
+  if (std::isfinite(JunctionVelocity(m, k, t, y))) return "";
+  const Junction& junction = m.junctions[k];
+  const int node = m.free_nodes[junction.free].node;
   for (const int e : junction.links) {
-    if (!Elastic(elements_[e])) continue;
+    if (!Elastic(m.elements[e])) continue;
     // an elastic element's tension depends on its length alone: the junction's velocity
     // cannot mend it
-    const double l = Length(e, t, y);
-    const double tension = TensionOf(e, t, l, 0.0, y).value;
+    const double l = Length(m, e, t, y);
+    const double tension = TensionOf(m, e, t, l, 0.0, y).value;
     if (!std::isfinite(tension)) {
-      return "elements[" + std::to_string(e) + "] (" + elements_[e].name + ")'s tension is " +
+      return "elements[" + std::to_string(e) + "] (" + m.elements[e].name + ")'s tension is " +
              FormatNumber(tension) + " N at length " + FormatNumber(l) +
-             " m: its law overflows there, and massless junction " + nodes_[node].name +
+             " m: its law overflows there, and massless junction " + m.nodes[node].name +
              " cannot balance it";
     }
   }
-  return "the force balance of massless junction " + nodes_[node].name +
+  return "the force balance of massless junction " + m.nodes[node].name +
          " at x = " + FormatNumber(y[junction.state]) +
          " m has no finite root: no velocity of it balances the forces of its elements";
 }
 
-const double* NetworkSystem::JunctionVelocities(double t, const double* y,
-                                                std::vector<double>& velocities) const {
-  if (junctions_.empty()) return nullptr;
-  velocities.resize(junctions_.size());
-  for (std::size_t k = 0; k < junctions_.size(); ++k) {
-    velocities[k] = JunctionVelocity(static_cast<int>(k), t, y);
+const double* JunctionVelocities(const NetworkModel& m, double t, const double* y,
+                                 std::vector<double>& velocities) {
+  if (m.junctions.empty()) return nullptr;
+  velocities.resize(m.junctions.size());
+  for (std::size_t k = 0; k < m.junctions.size(); ++k) {
+    velocities[k] = JunctionVelocity(m, static_cast<int>(k), t, y);
   }
   return velocities.data();
 }
 
-double NetworkSystem::JunctionVelocityAlong(int k, double t, const double* y,
-                                            const double* s) const {
-  const Junction& junction = junctions_[k];
-  const FreeNode& f = free_nodes_[junction.free];
-  const double w = JunctionVelocity(k, t, y);
+double JunctionVelocityAlong(const NetworkModel& m, int k, double t, const double* y,
+                             const double* s) {
+  const Junction& junction = m.junctions[k];
+  const FreeNode& f = m.free_nodes[junction.free];
+  const double w = JunctionVelocity(m, k, t, y);
   const auto along = [&](int state) { return state >= 0 ? s[state] : 0.0; };
   const double own = s[junction.state];
   // dR/dy s, term by term as JunctionJacobian's row, and dR/dw
   double by_state = f.loads.ForceSlope() * own, by_velocity = 0.0;
   for (const int e : junction.links) {
-    const Link& link = links_[e];
+    const Link& link = m.links[e];
     const bool from = link.from == f.node;
-    const End& other = ends_[from ? link.to : link.from];
-    const double l = PositionOf(ends_[link.to], t, y) - PositionOf(ends_[link.from], t, y);
-    const double ldot = from ? VelocityOf(other, t, y) - w : w - VelocityOf(other, t, y);
-    const Tension tension = TensionOf(e, t, l, ldot, y);
+    const End& other = m.ends[from ? link.to : link.from];
+    const double l = PositionOf(m, m.ends[link.to], t, y) - PositionOf(m, m.ends[link.from], t, y);
+    const double ldot = from ? VelocityOf(m, other, t, y) - w : w - VelocityOf(m, other, t, y);
+    const Tension tension = TensionOf(m, e, t, l, ldot, y);
     by_state +=
         tension.by_length * (along(other.state) - own) + tension.by_rate * along(other.rate);
     if (link.activation >= 0) {
@@ -284,11 +285,11 @@ double NetworkSystem::JunctionVelocityAlong(int k, double t, const double* y,
   return -by_state / by_velocity;
 }
 
-void NetworkSystem::JunctionJacobian(double t, const double* y, const double* w, double* values,
-                                     std::vector<double>& by_rate) const {
-  for (std::size_t k = 0; k < junctions_.size(); ++k) {
-    const Junction& junction = junctions_[k];
-    const FreeNode& f = free_nodes_[junction.free];
+void JunctionJacobian(const NetworkModel& m, double t, const double* y, const double* w,
+                      double* values, std::vector<double>& by_rate) {
+  for (std::size_t k = 0; k < m.junctions.size(); ++k) {
+    const Junction& junction = m.junctions[k];
+    const FreeNode& f = m.free_nodes[junction.free];
     const std::vector<int>& slots = junction.row_slots;
     // dR/dy in the junction's row first, then scaled into dw/dy
     double by_velocity = 0.0;
@@ -296,13 +297,13 @@ void NetworkSystem::JunctionJacobian(double t, const double* y, const double* w,
     by_rate.resize(junction.links.size());
     for (std::size_t i = 0; i < junction.links.size(); ++i) {
       const int e = junction.links[i];
-      const Link& link = links_[e];
-      const End& a = ends_[link.from];
-      const End& b = ends_[link.to];
+      const Link& link = m.links[e];
+      const End& a = m.ends[link.from];
+      const End& b = m.ends[link.to];
       const bool from = link.from == f.node;
-      const double l = PositionOf(b, t, y) - PositionOf(a, t, y);
-      const double ldot = from ? VelocityOf(b, t, y) - w[k] : w[k] - VelocityOf(a, t, y);
-      const Tension tension = TensionOf(e, t, l, ldot, y);
+      const double l = PositionOf(m, b, t, y) - PositionOf(m, a, t, y);
+      const double ldot = from ? VelocityOf(m, b, t, y) - w[k] : w[k] - VelocityOf(m, a, t, y);
+      const Tension tension = TensionOf(m, e, t, l, ldot, y);
       // the force on the junction, +T as `from`, -T as `to`, with l = x_to - x_from: it
       // falls with the junction's position and rises with the other end's, either way
       const std::array<int, 3>& columns = junction.link_columns[i];
@@ -322,9 +323,9 @@ void NetworkSystem::JunctionJacobian(double t, const double* y, const double* w,
     // end, so its acceleration gains dT/d(ldot) / m dw/dy
     for (std::size_t i = 0; i < junction.links.size(); ++i) {
       const int e = junction.links[i];
-      const int other = links_[e].from == f.node ? links_[e].to : links_[e].from;
-      if (ends_[other].rate < 0) continue;
-      const double gain = by_rate[i] * free_nodes_[ends_[other].free].inverse_mass;
+      const int other = m.links[e].from == f.node ? m.links[e].to : m.links[e].from;
+      if (m.ends[other].rate < 0) continue;
+      const double gain = by_rate[i] * m.free_nodes[m.ends[other].free].inverse_mass;
       for (std::size_t c = 0; c < n; ++c) {
         values[junction.neighbour_slots[i * n + c]] += gain * values[slots[c]];
       }
@@ -332,4 +333,4 @@ void NetworkSystem::JunctionJacobian(double t, const double* y, const double* w,
   }
 }
 
-}  // namespace musclesim
+}  // namespace musclesim::network

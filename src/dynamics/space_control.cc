@@ -2,15 +2,18 @@
 // controller measures there (an element's path length or tension, one coordinate of a free
 // node), its columns, and its terms in the Jacobian and the pattern. The law itself, the
 // clamps and the integral's fade are network_control.cc's, as on a line.
+#include "dynamics/network_control.h"
+
 #include <algorithm>
 #include <array>
 #include <span>
 #include <vector>
 
 #include "dynamics/element_tension.h"
+#include "dynamics/network_evaluation.h"
 #include "dynamics/network_space.h"
 
-namespace musclesim {
+namespace musclesim::network {
 
 namespace {
 
@@ -20,114 +23,114 @@ constexpr int kMaxSpaceLoopColumns = 2 * 3 * static_cast<int>(kMaxPathPoints) + 
 
 }  // namespace
 
-void NetworkSystem::PlaceSpaceLoopColumns(std::size_t k) {
-  Loop& loop = loops_[k];
-  const int d = space_.dimensions;
-  loop.column_begin = static_cast<int>(loop_columns_.size());
+void PlaceSpaceLoopColumns(NetworkModel& m, std::size_t k) {
+  Loop& loop = m.loops[k];
+  const int d = m.space.dimensions;
+  loop.column_begin = static_cast<int>(m.loop_columns.size());
   if (loop.node >= 0) {
     // the node's coordinate, then its rate
-    const int s = ends_[loop.node].state, c = controllers_[k].measure.coordinate;
-    loop_columns_.push_back(s + c);
-    loop_columns_.push_back(s + d + c);
+    const int s = m.ends[loop.node].state, c = m.controllers[k].measure.coordinate;
+    m.loop_columns.push_back(s + c);
+    m.loop_columns.push_back(s + d + c);
   } else {
     // every free point of the path: its positions, then its velocities
     std::vector<int> states;
-    PathStates(links_[loop.element], states);
+    PathStates(m, m.links[loop.element], states);
     for (const int s : states) {
       if (s < 0) continue;
-      for (int c = 0; c < 2 * d; ++c) loop_columns_.push_back(s + c);
+      for (int c = 0; c < 2 * d; ++c) m.loop_columns.push_back(s + c);
     }
-    const int activation = links_[loop.element].activation;
-    if (controllers_[k].measure.quantity == MeasuredQuantity::kTension && activation >= 0) {
-      loop_columns_.push_back(activation);
+    const int activation = m.links[loop.element].activation;
+    if (m.controllers[k].measure.quantity == MeasuredQuantity::kTension && activation >= 0) {
+      m.loop_columns.push_back(activation);
     }
   }
-  if (loop.integral >= 0) loop_columns_.push_back(loop.integral);  // the last column
-  loop.column_end = static_cast<int>(loop_columns_.size());
+  if (loop.integral >= 0) m.loop_columns.push_back(loop.integral);  // the last column
+  loop.column_end = static_cast<int>(m.loop_columns.size());
 }
 
-void NetworkSystem::DrivenRows(int e, std::vector<int>& rows) const {
+void DrivenRows(const NetworkModel& m, int e, std::vector<int>& rows) {
   rows.clear();
-  const Link& link = links_[e];
+  const Link& link = m.links[e];
   if (link.activation >= 0) {
     rows.push_back(link.activation);
     return;
   }
   // T acts on every free point of the path: its d acceleration rows
-  const int d = space_.dimensions;
+  const int d = m.space.dimensions;
   std::vector<int> states;
-  PathStates(link, states);
+  PathStates(m, link, states);
   for (const int s : states) {
     if (s < 0) continue;
     for (int r = 0; r < d; ++r) rows.push_back(s + d + r);
   }
 }
 
-void NetworkSystem::AddSpaceControlPattern(std::vector<std::pair<int, int>>& pairs) const {
+void AddSpaceControlPattern(const NetworkModel& m, std::vector<std::pair<int, int>>& pairs) {
   std::vector<int> rows;
-  for (const Loop& loop : loops_) {
+  for (const Loop& loop : m.loops) {
     const auto add_row = [&](int row) {
       for (int c = loop.column_begin; c < loop.column_end; ++c) {
-        pairs.emplace_back(loop_columns_[static_cast<std::size_t>(c)], row);
+        pairs.emplace_back(m.loop_columns[static_cast<std::size_t>(c)], row);
       }
     };
     for (const int e : loop.driven) {
       if (e < 0) continue;
-      DrivenRows(e, rows);
+      DrivenRows(m, e, rows);
       for (const int row : rows) add_row(row);
     }
     if (loop.integral >= 0) add_row(loop.integral);
   }
 }
 
-void NetworkSystem::FindSpaceControlSlots(const std::vector<std::pair<int, int>>& pairs) {
+void FindSpaceControlSlots(NetworkModel& m, const std::vector<std::pair<int, int>>& pairs) {
   const auto slot = [&](int row, int column) {
     const auto it = std::lower_bound(pairs.begin(), pairs.end(), std::make_pair(column, row));
     return static_cast<int>(it - pairs.begin());
   };
   std::vector<int> rows;
-  for (Loop& loop : loops_) {
+  for (Loop& loop : m.loops) {
     // the order SpaceControlJacobian reads them in: each driven actuator's rows, then the
     // integral's, each row along the loop's columns
-    loop.slot_begin = static_cast<int>(loop_slots_.size());
+    loop.slot_begin = static_cast<int>(m.loop_slots.size());
     const auto add_row = [&](int row) {
       for (int c = loop.column_begin; c < loop.column_end; ++c) {
-        loop_slots_.push_back(slot(row, loop_columns_[static_cast<std::size_t>(c)]));
+        m.loop_slots.push_back(slot(row, m.loop_columns[static_cast<std::size_t>(c)]));
       }
     };
     for (const int e : loop.driven) {
       if (e < 0) continue;
-      DrivenRows(e, rows);
+      DrivenRows(m, e, rows);
       for (const int row : rows) add_row(row);
     }
     if (loop.integral >= 0) add_row(loop.integral);
   }
 }
 
-double NetworkSystem::MeasureInSpace(int k, double t, const double* y, double& rate,
-                                     double* measured_by, double* rate_by) const {
-  const Loop& loop = loops_[k];
-  const int d = space_.dimensions;
+double MeasureInSpace(const NetworkModel& m, int k, double t, const double* y, double& rate,
+                      double* measured_by, double* rate_by) {
+  const Loop& loop = m.loops[k];
+  const int d = m.space.dimensions;
   if (measured_by != nullptr) {
     std::fill(measured_by, measured_by + (loop.column_end - loop.column_begin), 0.0);
     std::fill(rate_by, rate_by + (loop.column_end - loop.column_begin), 0.0);
   }
   if (loop.node >= 0) {
-    const int c = controllers_[k].measure.coordinate;
-    rate = NodeCoordinateRate(loop.node, c, t, y);
+    const int c = m.controllers[k].measure.coordinate;
+    rate = NodeCoordinateRate(m, loop.node, c, t, y);
     if (measured_by != nullptr) {
       measured_by[0] = 1.0;
       rate_by[1] = 1.0;
     }
-    return NodeCoordinate(loop.node, c, t, y);
+    return NodeCoordinate(m, loop.node, c, t, y);
   }
   PathState path;
-  MeasureLink(loop.element, t, y, path);
+  MeasureLink(m, loop.element, t, y, path);
   const PathGeometry& g = path.geometry;
-  const bool tension = controllers_[k].measure.quantity == MeasuredQuantity::kTension;
+  const bool tension = m.controllers[k].measure.quantity == MeasuredQuantity::kTension;
   Tension law{};
   if (tension) {
-    law = TensionOf(loop.element, t, g.length, path.length_rate, y);
+    law = TensionOf(m, loop.element, t, g.length, path.length_rate, y);
     rate = 0.0;  // unused: a tension takes no derivative gain
   } else {
     rate = path.length_rate;
@@ -152,28 +155,28 @@ double NetworkSystem::MeasureInSpace(int k, double t, const double* y, double& r
       }
       column += 2 * d;
     }
-    if (tension && links_[loop.element].activation >= 0) measured_by[column] = law.by_activation;
+    if (tension && m.links[loop.element].activation >= 0) measured_by[column] = law.by_activation;
   }
   return tension ? law.value : g.length;
 }
 
-void NetworkSystem::SpaceControlJacobian(double t, const double* y, double* values) const {
+void SpaceControlJacobian(const NetworkModel& m, double t, const double* y, double* values) {
   std::array<double, kMaxSpaceLoopColumns> measured_by, rate_by, by_state, error_by, integral_by;
   PathState path;
-  for (std::size_t k = 0; k < loops_.size(); ++k) {
-    const Loop& loop = loops_[k];
-    const PidGains& gains = controllers_[k].gains;
+  for (std::size_t k = 0; k < m.loops.size(); ++k) {
+    const Loop& loop = m.loops[k];
+    const PidGains& gains = m.controllers[k].gains;
     const int columns = loop.column_end - loop.column_begin;
-    const Command command = CommandOf(static_cast<int>(k), t, y);
+    const Command command = CommandOf(m, static_cast<int>(k), t, y);
     double rate = 0.0;
-    MeasureInSpace(static_cast<int>(k), t, y, rate, measured_by.data(), rate_by.data());
+    MeasureInSpace(m, static_cast<int>(k), t, y, rate, measured_by.data(), rate_by.data());
     // dc/dy and d(err)/dy along the columns; the integral, when there is one, the last
     for (int i = 0; i < columns; ++i) {
       error_by[i] = -measured_by[i];
       by_state[i] = -gains.kp * measured_by[i] - gains.kd * rate_by[i];
     }
     if (loop.integral >= 0) by_state[columns - 1] = gains.ki;
-    const int* slot = loop_slots_.data() + loop.slot_begin;
+    const int* slot = m.loop_slots.data() + loop.slot_begin;
     const auto add_row = [&](double factor, const double* by) {
       for (int i = 0; i < columns; ++i) values[slot[i]] += factor * by[i];
       slot += columns;
@@ -181,12 +184,12 @@ void NetworkSystem::SpaceControlJacobian(double t, const double* y, double* valu
     for (int i = 0; i < 2; ++i) {
       const int e = loop.driven[i];
       if (e < 0) continue;
-      const Link& link = links_[e];
-      const double unclamped = UnclampedOutput(e, command, t);
+      const Link& link = m.links[e];
+      const double unclamped = UnclampedOutput(m, e, command, t);
       const bool feedback = unclamped > 0.0 && unclamped < 1.0;  // clamped: none
       if (link.activation >= 0) {
         // the output is the excitation of udot
-        const ExcitationInput& input = *elements_[e].excitation;
+        const ExcitationInput& input = *m.elements[e].excitation;
         const double rate_by_excitation =
             feedback ? EvaluateActivationRate(input.dynamics, unclamped, y[link.activation])
                            .by_excitation
@@ -195,13 +198,14 @@ void NetworkSystem::SpaceControlJacobian(double t, const double* y, double* valu
         continue;
       }
       // the output is the activation: F_j = -T G_j on every free point of the path
-      MeasureLink(e, t, y, path);
+      MeasureLink(m, e, t, y, path);
       const PathGeometry& g = path.geometry;
       const double by_output =
-          feedback ? TensionOf(e, t, g.length, path.length_rate, y).by_activation * link.side : 0.0;
+          feedback ? TensionOf(m, e, t, g.length, path.length_rate, y).by_activation * link.side
+                   : 0.0;
       for (std::size_t j = 0; j < g.points(); ++j) {
         if (path.state[j] < 0) continue;
-        for (int r = 0; r < space_.dimensions; ++r) {
+        for (int r = 0; r < m.space.dimensions; ++r) {
           add_row(-by_output * g.gradient[j][r], by_state.data());
         }
       }
@@ -216,4 +220,4 @@ void NetworkSystem::SpaceControlJacobian(double t, const double* y, double* valu
   }
 }
 
-}  // namespace musclesim
+}  // namespace musclesim::network
