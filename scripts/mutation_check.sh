@@ -312,8 +312,8 @@ mutation network-from-node-pushed src/dynamics/network.cc \
   'if (a.rate >= 0) ydot[a.rate] += tension;' \
   'if (a.rate >= 0) ydot[a.rate] -= tension;' "$t_network" "$r_network"
 mutation network-mass-unscaled src/dynamics/network.cc \
-  'if (!f.massless) ydot[ends_[f.node].rate] *= f.inverse_mass;' \
-  'if (!f.massless) ydot[ends_[f.node].rate] *= 1.0;' "$t_network" "$r_network"
+  'if (!f.massless) ydot[m.ends[f.node].rate] *= f.inverse_mass;' \
+  'if (!f.massless) ydot[m.ends[f.node].rate] *= 1.0;' "$t_network" "$r_network"
 mutation network-jacobian-rate-sign src/dynamics/network.cc \
   'const double by_state[4] = {-tension.by_length, -tension.by_rate, tension.by_length,' \
   'const double by_state[4] = {-tension.by_length, tension.by_rate, tension.by_length,' "$t_network" "$r_network"
@@ -322,15 +322,15 @@ mutation network-tendon-pushes-when-slack src/dynamics/element_tension.h \
   'if (stretch < -1.0 && !element.pushes_below_slack) return {0.0, 0.0, 0.0, 0.0};' \
   "$t_network" "$r_network"
 mutation network-prescribed-still src/dynamics/network.cc \
-  'return nodes_[end.node].motion.Slope(t);' \
+  'return m.nodes[end.node].motion.Slope(t);' \
   'return 0.0;' "$t_network" "$r_network"
 mutation network-exponential-slope-drops-alpha src/dynamics/element_tension.h \
   'return {element.k * (grow - 1.0), element.k * element.alpha * grow, 0.0, 0.0};' \
   'return {element.k * (grow - 1.0), element.k * grow, 0.0, 0.0};' "$t_network" "$r_network"
 # the Jacobian's pattern, built with the network (network_build.cc)
 mutation network-band-skips-lower src/dynamics/network_build.cc \
-  'pattern_.lower_bandwidth = std::max(pattern_.lower_bandwidth, r - c);' \
-  'pattern_.lower_bandwidth = std::max(pattern_.lower_bandwidth, r - c - 1);' "$t_network" "$r_network"
+  'm.pattern.lower_bandwidth = std::max(m.pattern.lower_bandwidth, r - c);' \
+  'm.pattern.lower_bandwidth = std::max(m.pattern.lower_bandwidth, r - c - 1);' "$t_network" "$r_network"
 
 
 # --- the described parts (core/part_fields.h): what a file's reader and a handle apply ---

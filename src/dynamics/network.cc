@@ -1,23 +1,18 @@
-// A network evaluated: its initial state, right-hand side, Jacobian, kinks, inputs' breaks,
-// observations and sensitivities' partials on a line (network.h; the plane and space in
-// network_space.cc, space_jacobian.cc).
+// A network evaluated: its initial state, right-hand side, Jacobian, kinks, inputs' breaks
+// and observations on a line (network_evaluation.h; the plane and space in network_space.cc,
+// space_jacobian.cc).
 #include "dynamics/network_evaluation.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <string>
-#include <unordered_map>
-#include <utility>
 
 #include "dynamics/element_tension.h"
-#include "dynamics/network_build.h"
 #include "dynamics/network_control.h"
 #include "dynamics/network_junction.h"
 #include "dynamics/network_space.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
-#include "part_paths.h"
 
 namespace musclesim::network {
 

@@ -1,16 +1,16 @@
 // A network built: its parts validated, resolved into the right-hand side's ends, links,
-// free nodes and kinks, and its Jacobian's pattern and slots found (network.h).
+// free nodes and kinks, and its Jacobian's pattern and slots found (network_build.h).
 #include "dynamics/network_build.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <utility>
 
 #include "dynamics/network_control.h"
-#include "dynamics/network_evaluation.h"
 #include "dynamics/network_junction.h"
 #include "dynamics/network_space.h"
 #include "musclesim/core/errors.h"

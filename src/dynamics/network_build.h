@@ -13,8 +13,8 @@
 
 namespace musclesim::network {
 
-// Validates the parts, indexes them by name and resolves them (ParameterError with the
-// parts' paths, network.h).
+// Validates the parts, indexes them by name, resolves them and builds the Jacobian's pattern
+// and slots (ParameterError with the parts' paths, network.h).
 void Build(NetworkModel& m);
 
 // A part's index by name, -1 if none.

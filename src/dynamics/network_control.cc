@@ -11,7 +11,6 @@
 #include "dynamics/element_tension.h"
 #include "dynamics/network_build.h"
 #include "dynamics/network_evaluation.h"
-#include "dynamics/network_space.h"
 #include "musclesim/core/errors.h"
 #include "part_paths.h"
 
@@ -398,6 +397,26 @@ void ObserveControllers(const NetworkModel& m, double t, const double* y, Networ
     out.error = command.error;
     out.output =
         m.controllers[k].co_contraction ? command.value : std::clamp(command.value, 0.0, 1.0);
+  }
+}
+
+void HoldActivation(NetworkModel& m, int e, double value) {
+  const std::string path = "elements[" + std::to_string(e) + "]";
+  if (e < 0 || e >= static_cast<int>(m.elements.size())) {
+    throw ParameterError("element", std::to_string(e), "names no element of this network");
+  }
+  Element& element = m.elements[e];
+  if (element.kind != ElementKind::kActuator || element.controlled) {
+    throw ParameterError(path, element.name,
+                         "must be an actuator no controller drives: only such an actuator's "
+                         "activation can be set from outside");
+  }
+  Require(std::isfinite(value) && value >= 0.0 && value <= 1.0, path + ".activation", value,
+          "must be finite and in [0, 1]");
+  if (element.excitation) {
+    element.excitation->signal = Waveform::Constant(value);
+  } else {
+    element.activation = Waveform::Constant(value);
   }
 }
 

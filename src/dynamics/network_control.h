@@ -38,7 +38,8 @@ void PlaceLoopColumns(NetworkModel& m, std::size_t k);
 void AddControlPattern(const NetworkModel& m, std::vector<std::pair<int, int>>& pairs);
 void FindControlSlots(NetworkModel& m, const std::vector<std::pair<int, int>>& pairs);
 
-Command CommandOf(const NetworkModel& m, int controller, double t, const double* y);
+// What controller k commands at (t, y).
+Command CommandOf(const NetworkModel& m, int k, double t, const double* y);
 // A controlled actuator's command before its clamp: level +- c, or c.
 double UnclampedOutput(const NetworkModel& m, int e, const Command& command, double t);
 // A controlled actuator's activation (no activation dynamics) or excitation, clamped.
@@ -59,6 +60,9 @@ void ControlRightHandSide(const NetworkModel& m, double t, const double* y, doub
 // 1/m scaling).
 void ControlJacobian(const NetworkModel& m, double t, const double* y, double* values);
 void ObserveControllers(const NetworkModel& m, double t, const double* y, NetworkSample& sample);
+// The one change a model takes after it is built: an actuator's activation (or excitation)
+// held at `value` from now on, by the stepper that owns its copy (NetworkSystem::HoldActivation).
+void HoldActivation(NetworkModel& m, int e, double value);
 
 // In 2 or 3 dimensions (space_control.cc): a loop's columns (the free points of the measured
 // element's path, or the measured node's coordinate and its rate, then an activation state

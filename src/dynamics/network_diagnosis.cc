@@ -1,4 +1,4 @@
-// NonFiniteCause (network.h): which quantity of the network made its right-hand side
+// NonFiniteCause (network_diagnosis.h): which quantity of the network made its right-hand side
 // non-finite, so that a failed run names the element, the quantity and the time rather than
 // only CVODE's flag.
 #include "dynamics/network_diagnosis.h"

@@ -34,11 +34,11 @@ const double* JunctionVelocities(const NetworkModel& m, double t, const double* 
 // The build's step for junctions: each checked (on a line, with no controllers, no two
 // adjacent, a rate-dependent element at it), its links and columns; the pattern's: their
 // entries and slots; the Jacobian's: their rows and the neighbours' terms through w
-// (`rate_slopes`: room for dT/d(ldot) of a junction's elements).
+// (`by_rate`: room for dT/d(ldot) of a junction's elements).
 void ResolveJunctions(NetworkModel& m);
 void AddJunctionPattern(const NetworkModel& m, std::vector<std::pair<int, int>>& pairs);
 void FindJunctionSlots(NetworkModel& m, const std::function<int(int, int)>& slot);
 void JunctionJacobian(const NetworkModel& m, double t, const double* y, const double* w,
-                      double* values, std::vector<double>& rate_slopes);
+                      double* values, std::vector<double>& by_rate);
 
 }  // namespace musclesim::network

@@ -22,8 +22,8 @@ struct PathState {
   double length_rate = 0.0;  // ldot [m/s]
 };
 
-// The build's steps: element e's path resolved; the free nodes' directed loads (gravity and
-// the loads along a direction).
+// The build's steps: element e's path resolved; the free nodes' loads, each along its
+// direction.
 void AddPath(NetworkModel& m, std::size_t e);
 void ResolveSpace(NetworkModel& m);
 // The pattern's: the paths' entries, and their slots.
@@ -42,7 +42,7 @@ void MeasureLink(const NetworkModel& m, int e, double t, const double* y, PathSt
 double SpaceLengtheningRate(const NetworkModel& m, int e, double t, const double* y);
 // The sum of free node f's loads, each along its direction [N].
 Coordinates DirectedLoad(const NetworkModel& m, const FreeNode& f, double t, const double* y);
-// Every segment longer than NetworkSystem::kMinSegmentLength at the start (ParameterError).
+// Every segment longer than kMinSegmentLength at the start (ParameterError).
 void CheckInitialPaths(const NetworkModel& m, double t, const double* y);
 void SpaceRightHandSide(const NetworkModel& m, double t, const double* y, double* ydot);
 void SpaceJacobian(const NetworkModel& m, double t, const double* y, double* values);

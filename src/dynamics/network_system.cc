@@ -2,16 +2,15 @@
 // over it (src/dynamics/network_*.h).
 #include "musclesim/dynamics/network.h"
 
-#include <cmath>
 #include <string>
 #include <utility>
 
 #include "dynamics/network_build.h"
+#include "dynamics/network_control.h"
 #include "dynamics/network_diagnosis.h"
 #include "dynamics/network_evaluation.h"
 #include "dynamics/network_sensitivity.h"
 #include "dynamics/network_space.h"
-#include "musclesim/core/errors.h"
 
 namespace musclesim {
 
@@ -126,23 +125,7 @@ void NetworkSystem::AddTension(int e, double t, const double* y, double tension,
 }
 
 void NetworkSystem::HoldActivation(int e, double value) {
-  const std::string path = "elements[" + std::to_string(e) + "]";
-  if (e < 0 || e >= static_cast<int>(model_.elements.size())) {
-    throw ParameterError("element", std::to_string(e), "names no element of this network");
-  }
-  Element& element = model_.elements[e];
-  if (element.kind != ElementKind::kActuator || element.controlled) {
-    throw ParameterError(path, element.name,
-                         "must be an actuator no controller drives: only such an actuator's "
-                         "activation can be set from outside");
-  }
-  Require(std::isfinite(value) && value >= 0.0 && value <= 1.0, path + ".activation", value,
-          "must be finite and in [0, 1]");
-  if (element.excitation) {
-    element.excitation->signal = Waveform::Constant(value);
-  } else {
-    element.activation = Waveform::Constant(value);
-  }
+  network::HoldActivation(model_, e, value);
 }
 
 }  // namespace musclesim

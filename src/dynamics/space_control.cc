@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "dynamics/element_tension.h"
-#include "dynamics/network_evaluation.h"
 #include "dynamics/network_space.h"
 
 namespace musclesim::network {

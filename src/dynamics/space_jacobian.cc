@@ -9,7 +9,6 @@
 
 #include "dynamics/element_tension.h"
 #include "dynamics/network_control.h"
-#include "dynamics/network_evaluation.h"
 
 namespace musclesim::network {
 

@@ -7,7 +7,6 @@
 #include <span>
 
 #include "dynamics/element_tension.h"
-#include "dynamics/network_evaluation.h"
 #include "dynamics/network_space.h"
 
 namespace musclesim::network {

@@ -351,9 +351,9 @@ NetworkSystem Cranked(double offset) {
 }
 
 // A NetworkSystem is a value: its copy must own everything it evaluates. (It fails today:
-// the implicit copy keeps End::motion, a pointer into the original's nodes_, so the copy
+// the implicit copy keeps End::motion, a pointer into the original's nodes, so the copy
 // reads freed memory once the original is gone; AddressSanitizer reports it as a
-// heap-use-after-free in Waveform::Evaluate from NetworkSystem::PositionOf.)
+// heap-use-after-free in Waveform::Evaluate from PositionOf.)
 TEST(Network, CopyKeepsItsPrescribedMotionWhenTheOriginalIsGone) {
   auto original = std::make_unique<NetworkSystem>(Cranked(0.3));
   const NetworkSystem copy = *original;

@@ -10,10 +10,11 @@
 // 11), in the order the controllers are given. A network without either has exactly the node
 // states. (An activation column couples its actuator's nodes to the end of the state: such a
 // network's Jacobian is not banded, and `auto` gives it the dense or the sparse solver.) The
-// model (network_model.h) is immutable once built and shared by every thread that integrates
-// it; what an evaluation writes besides its results is in a NetworkScratch its caller owns
-// (network_scratch.h). This class is its public face: each method is the algorithm of the same
-// name over the model (src/dynamics/network_*.h).
+// model (network_model.h) is immutable once built (but for HoldActivation, which a stepper
+// applies to its own copy) and shared by every thread that integrates it; what an evaluation
+// writes besides its results is in a NetworkScratch its caller owns (network_scratch.h). This
+// class is its public face: each method is the algorithm of the same name over the model
+// (src/dynamics/network_*.h), or composed of them.
 #pragma once
 
 #include <string>
@@ -157,9 +158,6 @@ class NetworkSystem {
   // on a line +-T on its ends; in 2 or 3 dimensions -T G_j on every free point of its path
   // (G_j at (t, y)).
   void AddTension(int e, double t, const double* y, double tension, double* ydot) const;
-
-  // The model, for the algorithms over it (src/dynamics/network_*.h).
-  const network::NetworkModel& model() const { return model_; }
 
  private:
   network::NetworkModel model_;
