@@ -37,12 +37,17 @@ void Record(std::vector<std::string>& overrides, const std::string& key, const s
 
 }  // namespace
 
-Scenario PyScenario::Read(const std::vector<std::string>& more) const {
+LoadedScenario PyScenario::Read(const std::vector<std::string>& more) const {
   std::vector<std::string> all = overrides;
   all.insert(all.end(), more.begin(), more.end());
-  if (document) return ReadScenario(*document, display, Overrides(all, kOverrideLabel));
+  if (document) return ReadBuiltScenario(*document, display, Overrides(all, kOverrideLabel));
   // messages name the file as the user gave it
-  return LoadScenario(path, Overrides(all, kOverrideLabel), display);
+  return LoadBuiltScenario(path, Overrides(all, kOverrideLabel), display);
+}
+
+void PyScenario::Assign(LoadedScenario loaded) {
+  scenario = std::move(loaded.scenario);
+  system = std::move(loaded.system);
 }
 
 std::string PyScenario::ToYaml() const {
@@ -78,17 +83,18 @@ void PyScenario::Set(const std::string& key, const py::object& value) {
         }
       }
       scenario = std::move(changed);
+      system.reset();  // of the scenario before: the next run builds anew
       Record(overrides, key, text);
       return;
     }
   }
   // a word (a method, a waveform's type), or a key with no number: read again with it
-  Scenario changed;
+  LoadedScenario changed;
   {
     py::gil_scoped_release release;
     changed = Read({text});
   }
-  scenario = std::move(changed);
+  Assign(std::move(changed));
   Record(overrides, key, text);
 }
 
@@ -100,7 +106,7 @@ PyScenario LoadPyScenario(const py::object& given, const py::object& set) {
   s.display = path;
   s.overrides = OverridesFrom(set);
   py::gil_scoped_release release;
-  s.scenario = LoadScenario(path, Overrides(s.overrides, kOverrideLabel));
+  s.Assign(LoadBuiltScenario(path, Overrides(s.overrides, kOverrideLabel), path));
   return s;
 }
 
@@ -109,7 +115,7 @@ PyScenario DocumentPyScenario(Document document, const std::string& name) {
   s.document = std::make_shared<const Document>(std::move(document));
   s.display = name;
   py::gil_scoped_release release;
-  s.scenario = ReadScenario(*s.document, name);
+  s.Assign(ReadBuiltScenario(*s.document, name));
   return s;
 }
 

@@ -15,14 +15,18 @@
 namespace musclesim::python {
 
 struct PyScenario {
-  Scenario scenario;                         // as read, with every set() value
-  std::string path;                          // the file read, absolute; "" for a document
-  std::shared_ptr<const Document> document;  // a dict's document; null for a file
-  std::string display;                       // its name in messages
-  std::vector<std::string> overrides;        // "key=value" since reading, one per key
+  Scenario scenario;                            // as read, with every set() value
+  std::shared_ptr<const NetworkSystem> system;  // scenario.Build()'s, kept from reading for
+                                                // its runs; null once set() changed a number
+  std::string path;                             // the file read, absolute; "" for a document
+  std::shared_ptr<const Document> document;     // a dict's document; null for a file
+  std::string display;                          // its name in messages
+  std::vector<std::string> overrides;           // "key=value" since reading, one per key
 
   // The source read again with `more` overrides after the scenario's own (without the GIL).
-  Scenario Read(const std::vector<std::string>& more) const;
+  LoadedScenario Read(const std::vector<std::string>& more) const;
+  // `loaded` as this scenario and its system.
+  void Assign(LoadedScenario loaded);
   // The scenario as YAML text, its set() values written in (without the GIL).
   std::string ToYaml() const;
   // The same as a document in memory (without the GIL).

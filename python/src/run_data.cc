@@ -36,10 +36,11 @@ class SensitivityRecorder final : public SensitivityRowSink {
   std::vector<double> row_;
 };
 
-RunData WithSensitivities(const Scenario& scenario, const std::vector<std::string>& parameters) {
+RunData WithSensitivities(const Scenario& scenario, const std::vector<std::string>& parameters,
+                          const std::shared_ptr<const NetworkSystem>& system) {
   std::vector<SensitivityRequest> requests;
   for (const std::string& path : parameters) requests.push_back({path, "sensitivities"});
-  const SensitivityRun run(scenario, requests);
+  const SensitivityRun run(scenario, requests, system);
   RunData data;
   data.layout.emplace(run.scenario(), run.system());
   for (const std::string& path : run.paths()) {
@@ -79,11 +80,12 @@ py::array Phases(const RunColumns& layout, std::size_t c, const std::vector<doub
 
 }  // namespace
 
-RunData RunData::Of(const Scenario& scenario, const std::vector<std::string>& parameters) {
+RunData RunData::Of(const Scenario& scenario, const std::vector<std::string>& parameters,
+                    const std::shared_ptr<const NetworkSystem>& system) {
   if (!parameters.empty() || !scenario.sensitivities.empty()) {
-    return WithSensitivities(scenario, parameters);
+    return WithSensitivities(scenario, parameters, system);
   }
-  RecordedRun run = RunScenario(scenario);
+  RecordedRun run = system ? RunScenario(scenario, *system) : RunScenario(scenario);
   RunData data;
   data.layout.emplace(std::move(run.columns));
   data.values = std::move(run.values);

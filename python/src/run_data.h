@@ -3,6 +3,7 @@
 // in between: the numbers are the ones the CSV would print to 17 digits.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,8 +25,10 @@ struct RunData {
   std::vector<SensitivityNote> sensitivities;  // each parameter, with sensitivities
 
   // `scenario` run as `musclesim run` runs it; with `parameters` (key paths) and the
-  // scenario's own `sensitivities:`, as `run --sensitivity`. Needs no GIL.
-  static RunData Of(const Scenario& scenario, const std::vector<std::string>& parameters);
+  // scenario's own `sensitivities:`, as `run --sensitivity`. Needs no GIL. `system`, when not
+  // null, is scenario.Build()'s, not built again.
+  static RunData Of(const Scenario& scenario, const std::vector<std::string>& parameters,
+                    const std::shared_ptr<const NetworkSystem>& system = nullptr);
 };
 
 // One run in Python's hands.

@@ -36,11 +36,13 @@ std::vector<std::string> Paths(const py::object& sensitivities) {
 
 Result Run(const PyScenario& s, const py::object& sensitivities) {
   const std::vector<std::string> paths = Paths(sensitivities);
-  const Scenario scenario = s.scenario;  // taken with the GIL: another thread may set() meanwhile
+  // taken with the GIL: another thread may set() meanwhile
+  const Scenario scenario = s.scenario;
+  const std::shared_ptr<const NetworkSystem> system = s.system;
   RunData data;
   {
     py::gil_scoped_release release;
-    data = RunData::Of(scenario, paths);
+    data = RunData::Of(scenario, paths, system);
   }
   return MakeResult(std::move(data));
 }
@@ -275,7 +277,7 @@ void DefineScenarioCopies(py::class_<PyScenario>& scenario_class) {
             s.display = display;
             s.overrides = state[2].cast<std::vector<std::string>>();
             py::gil_scoped_release release;
-            s.scenario = s.Read({});
+            s.Assign(s.Read({}));
             return s;
           }))
       .def(
@@ -344,11 +346,12 @@ void BindScenarioFunctions(py::module_& m) {
       "_cpp_run_seconds",
       [](const PyScenario& s, int repeats) {
         const Scenario scenario = s.scenario;
+        const std::shared_ptr<const NetworkSystem> system = s.system;  // as Scenario.run()'s
         std::vector<double> seconds;
         py::gil_scoped_release release;
         for (int k = 0; k < repeats; ++k) {
           const auto start = std::chrono::steady_clock::now();
-          const RecordedRun run = RunScenario(scenario);
+          const RecordedRun run = system ? RunScenario(scenario, *system) : RunScenario(scenario);
           seconds.push_back(
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         }

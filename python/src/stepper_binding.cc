@@ -164,7 +164,7 @@ void BindStepper(py::module_& m) {
                } else {
                  const std::vector<std::string> more = OverridesFrom(overrides);
                  py::gil_scoped_release release;
-                 s.scenario = s.Read(more);
+                 s.Assign(s.Read(more));
                }
              }
              return std::make_unique<PyStepper>(s.scenario, rtol, atol);

@@ -40,6 +40,7 @@ struct Job {
   std::optional<Scenario> scenario;
   std::string path;
   std::vector<std::string> overrides;
+  std::shared_ptr<const NetworkSystem> system;  // the Scenario's, when it has one
 };
 
 // One run's outcome, or what it threw.
@@ -60,13 +61,14 @@ std::vector<Job> JobsFrom(const AnyList& given) {
   for (std::size_t k = 0; k < given.size(); ++k) {
     const py::handle item = given[k];
     if (py::isinstance<PyScenario>(item)) {
-      jobs.push_back({item.cast<const PyScenario&>().scenario, "", {}});
+      const PyScenario& s = item.cast<const PyScenario&>();
+      jobs.push_back({s.scenario, "", {}, s.system});
       continue;
     }
     if ((py::isinstance<py::tuple>(item) || py::isinstance<py::list>(item)) && py::len(item) == 2) {
       const py::sequence pair = py::reinterpret_borrow<py::sequence>(item);
       jobs.push_back(
-          {std::nullopt, PathText(pair[0], "run_many: a job's path"), OverridesFrom(pair[1])});
+          {std::nullopt, PathText(pair[0], "run_many: a job's path"), OverridesFrom(pair[1]), {}});
       continue;
     }
     throw py::type_error("jobs[" + std::to_string(k) +
@@ -119,10 +121,13 @@ std::vector<Result> RunMany(const AnyList& given, int threads,
       RunOnThreads(jobs.size(), ThreadCount(threads, jobs.size()), [&](std::size_t k) {
         try {
           const Job& job = jobs[k];
-          outcomes[k].data = RunData::Of(
-              job.scenario ? *job.scenario
-                           : LoadScenario(job.path, Overrides(job.overrides, kOverrideLabel)),
-              sensitivities);
+          if (job.scenario) {
+            outcomes[k].data = RunData::Of(*job.scenario, sensitivities, job.system);
+          } else {
+            const LoadedScenario loaded =
+                LoadBuiltScenario(job.path, Overrides(job.overrides, kOverrideLabel), job.path);
+            outcomes[k].data = RunData::Of(loaded.scenario, sensitivities, loaded.system);
+          }
         } catch (...) {
           outcomes[k].error = std::current_exception();
         }

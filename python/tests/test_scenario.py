@@ -125,6 +125,20 @@ def test_set_changes_the_run(tmp_path):
     assert_same_as_cli(heavy, cli_run(tmp_path, path, sets=["time.end=0.2", "load[0].after=60"]))
 
 
+def test_a_network_run_follows_each_set_after_runs_before_it(tmp_path):
+    # a scenario keeps the system its reading built for its runs; a set() must not leave a run
+    # on the system of the values before it
+    path = scenario_path("antagonist_pair.yaml")
+    scenario = musclesim.load_scenario(path, set={"time.end": 0.2})
+    assert_same_as_cli(scenario.run(), cli_run(tmp_path, path, sets=["time.end=0.2"]))
+    scenario.set("nodes[1].mass", 2.5)  # a number, set in place through its handle
+    assert_same_as_cli(scenario.run(),
+                       cli_run(tmp_path, path, sets=["time.end=0.2", "nodes[1].mass=2.5"]))
+    scenario.set("nodes[1].position", "0.065")  # text: the file read again with it
+    assert_same_as_cli(scenario.run(), cli_run(
+        tmp_path, path, sets=["time.end=0.2", "nodes[1].mass=2.5", "nodes[1].position=0.065"]))
+
+
 def test_bad_set_raises_and_leaves_the_scenario():
     scenario = musclesim.load_scenario(scenario_path("concentric.yaml"))
     with pytest.raises(musclesim.InputError) as bad_key:

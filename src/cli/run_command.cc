@@ -120,15 +120,16 @@ std::string Label(const Scenario& scenario) {
   return scenario.name.empty() ? scenario.source : scenario.name;
 }
 
-int RunPlain(const Arguments& args, const Scenario& scenario) {
+int RunPlain(const Arguments& args, const LoadedScenario& loaded) {
+  const Scenario& scenario = loaded.scenario;
+  const NetworkSystem& system = *loaded.system;
   const std::string output = RunOutputPath(args, scenario.output.file, scenario.source);
-  const NetworkSystem system = scenario.Build();
   // rows stream to PATH.partial as they are recorded; PATH is replaced only on success
   StreamedOutput csv(output);
   RunCsvWriter writer(csv, scenario, system);
   PeakSpeeds watch(writer, scenario, system);
   Simulation simulation;
-  const RunStats stats = simulation.Run(system, scenario.solver, scenario.Request(), watch);
+  const RunStats stats = RunScenario(scenario, system, simulation, watch);
   writer.Flush();
 
   RunOutcome outcome;
@@ -145,11 +146,12 @@ int RunPlain(const Arguments& args, const Scenario& scenario) {
 }
 
 // A run with sensitivities: the same CSV with the derivative columns after it.
-int RunSensitivities(const Arguments& args, const Scenario& scenario,
+int RunSensitivities(const Arguments& args, const LoadedScenario& loaded,
                      const std::vector<std::string>& parameters) {
+  const Scenario& scenario = loaded.scenario;
   std::vector<SensitivityRequest> requests;
   for (const std::string& path : parameters) requests.push_back({path, "--sensitivity"});
-  const SensitivityRun run(scenario, requests);
+  const SensitivityRun run(scenario, requests, loaded.system);
   const std::string output = RunOutputPath(args, scenario.output.file, args.positional[0]);
   StreamedOutput csv(output);
   SensitivityCsvWriter writer(csv, run);
@@ -181,14 +183,15 @@ int RunCommand(int argc, char** argv) {
     return kExitSuccess;
   }
   if (args.positional.size() != 1) throw UsageError("expected one scenario file (see --help)");
-  const Scenario scenario =
-      LoadScenario(args.positional[0], Overrides(args.List("--set"), "--set"));
+  const std::string& path = args.positional[0];
+  const LoadedScenario loaded =
+      LoadBuiltScenario(path, Overrides(args.List("--set"), "--set"), path);
   // a scenario's own `sensitivities:` asks for them too
   const std::vector<std::string> parameters = args.List("--sensitivity");
-  if (!parameters.empty() || !scenario.sensitivities.empty()) {
-    return RunSensitivities(args, scenario, parameters);
+  if (!parameters.empty() || !loaded.scenario.sensitivities.empty()) {
+    return RunSensitivities(args, loaded, parameters);
   }
-  return RunPlain(args, scenario);
+  return RunPlain(args, loaded);
 }
 
 }  // namespace musclesim::cli

@@ -7,7 +7,11 @@
 namespace musclesim {
 
 RunStats RunScenario(const Scenario& scenario, Simulation& simulation, NetworkSink& sink) {
-  const NetworkSystem system = scenario.Build();
+  return RunScenario(scenario, scenario.Build(), simulation, sink);
+}
+
+RunStats RunScenario(const Scenario& scenario, const NetworkSystem& system, Simulation& simulation,
+                     NetworkSink& sink) {
   return simulation.Run(system, scenario.solver, scenario.Request(), sink);
 }
 
@@ -47,7 +51,10 @@ std::size_t ExpectedRows(const Scenario& scenario) {
 }
 
 RecordedRun RunScenario(const Scenario& scenario) {
-  const NetworkSystem system = scenario.Build();
+  return RunScenario(scenario, scenario.Build());
+}
+
+RecordedRun RunScenario(const Scenario& scenario, const NetworkSystem& system) {
   ColumnRecorder recorder(scenario, system);
   recorder.Reserve(ExpectedRows(scenario));
   Simulation simulation;

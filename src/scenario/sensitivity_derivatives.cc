@@ -148,9 +148,9 @@ std::unique_ptr<ParameterDerivative> ClosedForm(const Scenario& scenario,
 
 }  // namespace
 
-BuiltScenario BuildScenario(const Scenario& scenario) {
+BuiltScenario BuildScenario(const Scenario& scenario, std::shared_ptr<const NetworkSystem> system) {
   BuiltScenario built;
-  auto system = std::make_shared<const NetworkSystem>(scenario.Build());
+  if (!system) system = std::make_shared<const NetworkSystem>(scenario.Build());
   built.initial.resize(static_cast<std::size_t>(system->state_size()));
   system->InitialState(scenario.t_start, built.initial.data());
   built.system = std::move(system);

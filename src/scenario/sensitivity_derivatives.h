@@ -19,7 +19,9 @@ struct BuiltScenario {
   std::shared_ptr<const NetworkSystem> system;
   std::vector<double> initial;  // y(t_start)
 };
-BuiltScenario BuildScenario(const Scenario& scenario);
+// `system`, when given, is scenario.Build()'s; otherwise it is built.
+BuiltScenario BuildScenario(const Scenario& scenario,
+                            std::shared_ptr<const NetworkSystem> system = nullptr);
 
 struct ResolvedParameter {
   std::string path;    // written one way

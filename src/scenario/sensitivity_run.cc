@@ -75,7 +75,8 @@ Parameter HandleOf(const Scenario& scenario, const SensitivityRequest& request,
 }  // namespace
 
 SensitivityRun::SensitivityRun(const Scenario& scenario,
-                               const std::vector<SensitivityRequest>& parameters)
+                               const std::vector<SensitivityRequest>& parameters,
+                               std::shared_ptr<const NetworkSystem> system)
     : prepared_(std::make_unique<Prepared>()) {
   Prepared& p = *prepared_;
   p.scenario = scenario;
@@ -85,7 +86,7 @@ SensitivityRun::SensitivityRun(const Scenario& scenario,
     requests.push_back({scenario.sensitivities[i], (at.empty() ? "" : at + ": ") +
                                                        "sensitivities[" + std::to_string(i) + "]"});
   }
-  p.base = BuildScenario(scenario);
+  p.base = BuildScenario(scenario, std::move(system));
   if (!scenario.controllers.empty() && !requests.empty()) {
     // the controllers' terms of the sensitivity equations (docs/model.md 10) are not derived
     const SensitivityRequest& first = requests.front();

@@ -27,11 +27,10 @@ testing::NetworkExperiment Chain10() { return testing::Chain(10); }
 
 class CanonicalNetworkFile : public ::testing::TestWithParam<Canonical> {};
 
-TEST_P(CanonicalNetworkFile, IsTheSystemItsTestsCheck) {
-  const std::string path = std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/" + GetParam().file;
-  const Scenario spec = LoadScenario(path);
-  const NetworkSystem from_file = spec.Build();
-  const testing::NetworkExperiment tested = GetParam().make();
+// `from_file`, of the scenario `spec`, is `tested`'s system: its parts, span, initial state
+// and right-hand side.
+void ExpectTheTestedSystem(const Scenario& spec, const NetworkSystem& from_file,
+                           const testing::NetworkExperiment& tested) {
   const NetworkSystem& in_code = tested.system;
 
   ASSERT_EQ(from_file.nodes().size(), in_code.nodes().size());
@@ -70,6 +69,23 @@ TEST_P(CanonicalNetworkFile, IsTheSystemItsTestsCheck) {
     from_file.RightHandSide(t, y.data(), f_file.data());
     ASSERT_EQ(f_file, f) << "at t = " << t << ", trial " << trial;
   }
+}
+
+std::string PathOf(const Canonical& canonical) {
+  return std::string(MUSCLESIM_SOURCE_DIR) + "/scenarios/" + canonical.file;
+}
+
+TEST_P(CanonicalNetworkFile, IsTheSystemItsTestsCheck) {
+  const Scenario spec = LoadScenario(PathOf(GetParam()));
+  ExpectTheTestedSystem(spec, spec.Build(), GetParam().make());
+}
+
+// The run verb's system, which the reader built while checking the file, is the same one.
+TEST_P(CanonicalNetworkFile, HandsTheRunTheSystemItsTestsCheck) {
+  const std::string path = PathOf(GetParam());
+  const LoadedScenario loaded = LoadBuiltScenario(path, {}, path);
+  ASSERT_NE(loaded.system, nullptr);
+  ExpectTheTestedSystem(loaded.scenario, *loaded.system, GetParam().make());
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenarios, CanonicalNetworkFile,

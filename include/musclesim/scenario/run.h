@@ -19,6 +19,9 @@ namespace musclesim {
 // them, is a status (kFailed) with its message, not an exception; an exception from the sink
 // ends the run and propagates. Throws ParameterError when the scenario's parts do not fit.
 RunStats RunScenario(const Scenario& scenario, Simulation& simulation, NetworkSink& sink);
+// The same on `system`, built from `scenario` (a LoadedScenario's): not built again.
+RunStats RunScenario(const Scenario& scenario, const NetworkSystem& system, Simulation& simulation,
+                     NetworkSink& sink);
 
 // Keeps a run's rows column by column, as RunColumns lays them out.
 class ColumnRecorder final : public NetworkSink {
@@ -64,6 +67,8 @@ struct RecordedRun {
 
 // RunScenario on a new Simulation into a ColumnRecorder.
 RecordedRun RunScenario(const Scenario& scenario);
+// The same on `system`, built from `scenario`.
+RecordedRun RunScenario(const Scenario& scenario, const NetworkSystem& system);
 
 // The number of rows a run of `scenario` records on its output grid (an every-step run: 0,
 // unknown before it runs), for reserving memory.

@@ -96,4 +96,12 @@ struct Scenario {
   double PhaseTolerance(int e) const;
 };
 
+// A scenario and its system, built once. A network's reader builds the system to check how the
+// parts fit, placing every error in the file, and hands it on here, so that a run does not build
+// it again. The system is of the scenario as read: whoever changes the scenario builds anew.
+struct LoadedScenario {
+  Scenario scenario;
+  std::shared_ptr<const NetworkSystem> system;  // scenario.Build()'s; never null once read
+};
+
 }  // namespace musclesim

@@ -85,7 +85,9 @@ class SensitivityRun {
   // setting of the run, a value that cannot move (an integer, or the edge of its range on
   // both sides), a parameter that moves an input breakpoint, and sensitivities of a network
   // with controllers; ParameterError when the scenario's parts do not fit.
-  SensitivityRun(const Scenario& scenario, const std::vector<SensitivityRequest>& parameters);
+  // `system`, when given, is scenario.Build()'s (a LoadedScenario's), not built again.
+  SensitivityRun(const Scenario& scenario, const std::vector<SensitivityRequest>& parameters,
+                 std::shared_ptr<const NetworkSystem> system = nullptr);
   ~SensitivityRun();
   SensitivityRun(const SensitivityRun&) = delete;
   SensitivityRun& operator=(const SensitivityRun&) = delete;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <initializer_list>
 #include <memory>
-#include <optional>
 #include <string>
 
 #include "io/readers/controller_yaml.h"
@@ -82,7 +81,7 @@ void RequireDrivenActuators(const yaml::Source& src, const Document& controllers
 
 }  // namespace
 
-Scenario ReadNetworkScenario(const yaml::Source& src, const Document& root) {
+LoadedScenario ReadNetworkScenario(const yaml::Source& src, const Document& root) {
   yaml::RequireMap(src, root, "", kNetworkKeys);
   Scenario s;
   s.source = src.file;
@@ -111,9 +110,9 @@ Scenario ReadNetworkScenario(const yaml::Source& src, const Document& root) {
 
   // how the parts fit: the system's paths ("elements[2].to", "controllers[0].drives") are the
   // file's key paths
-  std::optional<NetworkSystem> system;
+  std::shared_ptr<const NetworkSystem> system;
   yaml::ValidateAt(src, root, "", [&] {
-    system.emplace(s.Build());
+    system = std::make_shared<const NetworkSystem>(s.Build());
     std::vector<double> y(static_cast<std::size_t>(system->state_size()));
     system->InitialState(s.t_start, y.data());
     system->CheckInitialState(s.t_start, y.data());
@@ -140,7 +139,7 @@ Scenario ReadNetworkScenario(const yaml::Source& src, const Document& root) {
   if (const Document& node = root["sensitivities"]) {
     ReadSensitivities(src, node, s.sensitivities, s.sensitivities_at);
   }
-  return s;
+  return {std::move(s), std::move(system)};
 }
 
 }  // namespace musclesim

@@ -15,7 +15,8 @@ ActuatorScenarioSpec ReadActuatorScenarioSpec(const yaml::Source& source, const 
 // The same, built into its network (docs/model.md 7.4).
 Scenario ReadActuatorScenario(const yaml::Source& source, const Document& root);
 
-// The network form of the top-level map `root` (a `nodes:` key), validated as a whole.
-Scenario ReadNetworkScenario(const yaml::Source& source, const Document& root);
+// The network form of the top-level map `root` (a `nodes:` key), validated as a whole, and the
+// system that validation built.
+LoadedScenario ReadNetworkScenario(const yaml::Source& source, const Document& root);
 
 }  // namespace musclesim

@@ -14,9 +14,36 @@ ScenarioForm FormOf(const Document& root) {
   return root.IsMap() && root["nodes"] ? ScenarioForm::kNetwork : ScenarioForm::kActuator;
 }
 
-Scenario Read(const yaml::Source& src, const Document& root) {
-  return FormOf(root) == ScenarioForm::kNetwork ? ReadNetworkScenario(src, root)
-                                                : ReadActuatorScenario(src, root);
+// The scenario, and its system when reading built one (a network's reader does).
+LoadedScenario Read(const yaml::Source& src, const Document& root) {
+  if (FormOf(root) == ScenarioForm::kNetwork) return ReadNetworkScenario(src, root);
+  return {ReadActuatorScenario(src, root), nullptr};
+}
+
+// `loaded` with its system, built now if reading built none.
+LoadedScenario WithSystem(LoadedScenario loaded) {
+  if (!loaded.system)
+    loaded.system = std::make_shared<const NetworkSystem>(loaded.scenario.Build());
+  return loaded;
+}
+
+// The document `root`, overridden in a copy when there are overrides, read.
+LoadedScenario ReadOverridden(const yaml::Source& src, const Document& root,
+                              const Overrides& overrides, const std::string& name) {
+  if (overrides.texts.empty()) return Read(src, root);
+  // overrides must not touch the caller's document, so they go into a copy, whose values keep
+  // their positions (the overridden ones, which have none, say the overrides' label)
+  Document copy = root;
+  yaml::ApplyOverrides(copy, overrides, name);
+  return Read(src, copy);
+}
+
+// The file `path` parsed, overridden and read; `name` names it in messages.
+LoadedScenario LoadReadScenario(const std::string& path, const Overrides& overrides,
+                                const std::string& name) {
+  Document root = yaml::Parse(name, yaml::ReadText(path));
+  yaml::ApplyOverrides(root, overrides, name);
+  return Read(yaml::Source{name, overrides.label}, root);
 }
 
 }  // namespace
@@ -36,13 +63,15 @@ bool ScenarioTemplate::has_sensitivities() const {
 }
 
 Scenario ScenarioTemplate::Instantiate(const Overrides& overrides) const {
-  const yaml::Source src{path_, overrides.label};
-  if (overrides.texts.empty()) return Read(src, *document_);
-  // overrides must not touch the template, so they go into a copy, whose values keep their
-  // file positions (the overridden ones, which have none, say the overrides' label)
-  Document root = *document_;
-  yaml::ApplyOverrides(root, overrides, path_);
-  return Read(src, root);
+  return ReadOverridden({path_, overrides.label}, *document_, overrides, path_).scenario;
+}
+
+LoadedScenario ReadBuiltScenario(const Document& document, const std::string& name,
+                                 const Overrides& overrides) {
+  if (document.IsNull() || (document.IsMap() && document.size() == 0)) {
+    throw InputError(name + ": the document is empty");
+  }
+  return WithSystem(ReadOverridden({name, name}, document, overrides, name));
 }
 
 Scenario ReadScenario(const Document& document, const std::string& name,
@@ -50,11 +79,7 @@ Scenario ReadScenario(const Document& document, const std::string& name,
   if (document.IsNull() || (document.IsMap() && document.size() == 0)) {
     throw InputError(name + ": the document is empty");
   }
-  const yaml::Source src{name, name};
-  if (overrides.texts.empty()) return Read(src, document);
-  Document root = document;
-  yaml::ApplyOverrides(root, overrides, name);
-  return Read(src, root);
+  return ReadOverridden({name, name}, document, overrides, name).scenario;
 }
 
 ActuatorScenarioSpec LoadActuatorScenarioSpec(const std::string& path, const Overrides& overrides) {
@@ -75,9 +100,12 @@ Scenario LoadScenario(const std::string& path, const Overrides& overrides) {
 
 Scenario LoadScenario(const std::string& path, const Overrides& overrides,
                       const std::string& name) {
-  Document root = yaml::Parse(name, yaml::ReadText(path));
-  yaml::ApplyOverrides(root, overrides, name);
-  return Read(yaml::Source{name, overrides.label}, root);
+  return LoadReadScenario(path, overrides, name).scenario;
+}
+
+LoadedScenario LoadBuiltScenario(const std::string& path, const Overrides& overrides,
+                                 const std::string& name) {
+  return WithSystem(LoadReadScenario(path, overrides, name));
 }
 
 }  // namespace musclesim

@@ -23,6 +23,11 @@ Scenario LoadScenario(const std::string& path, const Overrides& overrides = {});
 // that path made absolute).
 Scenario LoadScenario(const std::string& path, const Overrides& overrides, const std::string& name);
 
+// LoadScenario's scenario and its system, built once: what a run reads. A network's reader
+// builds the system to check how the parts fit; this hands it on rather than dropping it.
+LoadedScenario LoadBuiltScenario(const std::string& path, const Overrides& overrides,
+                                 const std::string& name);
+
 // The single-actuator file `path` as written (MakeActuatorScenario's input: the old form's
 // own fields), read and validated as LoadScenario does; InputError for a network file.
 ActuatorScenarioSpec LoadActuatorScenarioSpec(const std::string& path,
@@ -32,6 +37,9 @@ ActuatorScenarioSpec LoadActuatorScenarioSpec(const std::string& path,
 // as LoadScenario reads a file; `name` names it in messages ("<dict>"), which cannot give lines.
 Scenario ReadScenario(const Document& document, const std::string& name,
                       const Overrides& overrides = {});
+// The same with its system, built once (LoadBuiltScenario).
+LoadedScenario ReadBuiltScenario(const Document& document, const std::string& name,
+                                 const Overrides& overrides = {});
 
 // A scenario file read and parsed once, from which many scenarios are made by overrides (a
 // sweep's points whose axes are not numbers). Its document is never changed once parsed, so
