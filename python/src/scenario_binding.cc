@@ -12,6 +12,7 @@
 #include "musclesim/core/errors.h"
 #include "musclesim/io/readers/document.h"
 #include "musclesim/io/readers/scenario_yaml.h"
+#include "musclesim/scenario/actuator_scenario.h"
 #include "musclesim/solver/solver_fields.h"
 #include "part_attributes.h"
 #include "py_scenario.h"
@@ -216,8 +217,7 @@ void BindParameter(py::module_& m) {
 void DefineScenarioProperties(py::class_<PyScenario>& scenario_class) {
   scenario_class
       .def_property_readonly(
-          "is_network",
-          [](const PyScenario& s) { return s.scenario.form == ScenarioForm::kNetwork; },
+          "is_network", [](const PyScenario& s) { return !IsSingleActuator(s.scenario); },
           "True for a network (a top-level `nodes:` key), False for a single actuator.")
       .def_property_readonly(
           "name", [](const PyScenario& s) { return s.scenario.name; },
@@ -324,8 +324,7 @@ void DefineScenarioUse(py::class_<PyScenario>& scenario_class) {
            "own. A solver failure is a result (status 'failed'), not an exception.")
       .def("__repr__", [](const PyScenario& s) {
         return "<musclesim.Scenario '" + s.scenario.name + "' from " + s.display +
-               (s.scenario.form == ScenarioForm::kNetwork ? " (network)" : " (single actuator)") +
-               ">";
+               (IsSingleActuator(s.scenario) ? " (single actuator)" : " (network)") + ">";
       });
 }
 

@@ -65,9 +65,7 @@ class PeakSpeeds final : public NetworkSink {
       if (element.kind != ElementKind::kActuator) continue;
       // the other families define their curves at every speed (docs/model.md 14.1)
       if (element.model->params().family != CurveFamily::kPaper) continue;
-      const std::string column = scenario.form == ScenarioForm::kActuator
-                                     ? "shortening_velocity"
-                                     : element.name + ".shortening_velocity";
+      const std::string column = ElementColumn(scenario, element.name, "shortening_velocity");
       const auto at = std::find(names.begin(), names.end(), column);
       watched_.push_back({static_cast<int>(e), static_cast<std::size_t>(at - names.begin()), 0.0});
     }
@@ -90,9 +88,7 @@ class PeakSpeeds final : public NetworkSink {
       const Element& element = system_.elements()[static_cast<std::size_t>(w.element)];
       const double v_max = element.model->params().velocity.v_max;
       if (!(w.speed > v_max)) continue;
-      // the single actuator is the scenario's only one: its note names none
-      const std::string who =
-          scenario_.form == ScenarioForm::kActuator ? "" : " of " + element.name;
+      const std::string who = OfElement(scenario_, element.name);
       notes.push_back("note: |shortening velocity|" + who + " reached " + FormatNumber(w.speed) +
                       " m/s, beyond v_max = " + FormatNumber(v_max) +
                       " m/s, where g(v) is the paper's power law extrapolated");
@@ -136,7 +132,7 @@ int RunPlain(const Arguments& args, const LoadedScenario& loaded) {
   outcome.label = Label(scenario);
   outcome.output = output;
   outcome.rows = writer.rows();
-  if (scenario.form == ScenarioForm::kNetwork) {
+  if (!IsSingleActuator(scenario)) {
     outcome.result = std::to_string(writer.rows()) + " rows";
   } else if (writer.rows() > 0) {
     outcome.result = "final length " + FormatNumber(writer.last()[1]) + " m";  // column length

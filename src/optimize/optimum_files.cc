@@ -8,6 +8,7 @@
 #include "musclesim/core/number_format.h"
 #include "io/readers/yaml_fields.h"
 #include "musclesim/io/writers/scenario_rewrite.h"
+#include "musclesim/scenario/actuator_scenario.h"
 
 namespace musclesim {
 
@@ -69,7 +70,7 @@ Document WithControlTables(Document base, const OptimalControlProblem& problem,
     }
     return "activation";
   };
-  if (problem.scenario.form == ScenarioForm::kActuator) {
+  if (IsSingleActuator(problem.scenario)) {
     // the single actuator's own activation (or excitation), at the top: its one control
     if (!result.controls.empty()) base.Set(key(0), Table(result.times, result.controls[0]));
     return base;

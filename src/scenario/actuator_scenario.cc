@@ -87,15 +87,41 @@ std::string ActuatorKeyPath(const std::string& network_path) {
 }
 
 ActuatorSample ActuatorSampleOf(const NetworkSample& s) {
-  const ElementSample& actuator = s.elements[kActuatorElement];
+  return ActuatorSampleOf(s.elements[kActuatorElement], s.load[kActuatorTipNode]);
+}
+
+ActuatorSample ActuatorSampleOf(const ElementSample& actuator, double load) {
   ActuatorSample sample;
   sample.length = actuator.length;
   sample.shortening_velocity = 0.0 - actuator.lengthening_rate;
   sample.activation = actuator.activation;
   sample.excitation = actuator.excitation;
   sample.tension = actuator.parts;
-  sample.load = s.load[kActuatorTipNode];
+  sample.load = load;
   return sample;
+}
+
+bool IsSingleActuator(const Scenario& scenario) { return scenario.form == ScenarioForm::kActuator; }
+
+std::string FileKeyPath(const Scenario& scenario, const std::string& network_path) {
+  return IsSingleActuator(scenario) ? ActuatorKeyPath(network_path) : network_path;
+}
+
+std::optional<std::string> NetworkPathOf(const Scenario& scenario, const std::string& path) {
+  return IsSingleActuator(scenario) ? NetworkKeyPath(path) : path;
+}
+
+std::string ElementColumn(const Scenario& scenario, const std::string& element,
+                          const std::string& quantity) {
+  return IsSingleActuator(scenario) ? quantity : element + "." + quantity;
+}
+
+std::string OfElement(const Scenario& scenario, const std::string& element) {
+  return IsSingleActuator(scenario) ? "" : " of " + element;
+}
+
+std::string InitialLengthName(const Scenario& scenario) {
+  return IsSingleActuator(scenario) ? "initial.length" : "the element's initial length";
 }
 
 ActuatorSystem MakeActuatorSystem(const ActuatorScenarioSpec& spec) {

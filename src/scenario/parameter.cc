@@ -38,11 +38,9 @@ Parameter ParameterResolver::Resolve() {
   }
   p_.path_ = Canonical(*steps);
   p_.network_path_ = p_.path_;
-  if (scenario_.form == ScenarioForm::kActuator) {
-    const std::optional<std::string> translated = NetworkKeyPath(p_.path_);
-    if (!translated) Fail("names no key of a single-actuator scenario");
-    p_.network_path_ = Canonical(*SplitKeyPath(*translated));
-  }
+  const std::optional<std::string> translated = NetworkPathOf(scenario_, p_.path_);
+  if (!translated) Fail("names no key of a single-actuator scenario");
+  if (*translated != p_.path_) p_.network_path_ = Canonical(*SplitKeyPath(*translated));
   steps_ = *SplitKeyPath(p_.network_path_);
   Top();
   return std::move(p_);
@@ -118,9 +116,8 @@ void SetParameters(Scenario& scenario, const std::vector<Parameter>& parameters,
       try {
         scenario.RebuildModel(block);
       } catch (const ParameterError& error) {
-        const std::string prefix =
-            scenario.form == ScenarioForm::kActuator ? "model." : "models." + block + ".";
-        throw ParameterError(prefix + error.path(), error.value(), error.rule());
+        throw ParameterError(FileKeyPath(scenario, "models." + block + "." + error.path()),
+                             error.value(), error.rule());
       }
     }
     // a model's change breaks no rule of the network's: validate it when more than models move

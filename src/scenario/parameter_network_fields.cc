@@ -69,7 +69,7 @@ void ParameterResolver::Node(std::size_t i) {
     const std::size_t c = Coordinate(i + 2, key);
     End(next);
     // the single actuator's node: its position is the actuator's length, above 0
-    const bool length = scenario_.form == ScenarioForm::kActuator && key == "position";
+    const bool length = IsSingleActuator(scenario_) && key == "position";
     return Point(*point, node, c, length ? kLengthRange : point->range);
   }
   End(i + 2);

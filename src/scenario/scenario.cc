@@ -102,8 +102,7 @@ void ValidateNetwork(const Scenario& s) {
   system.InitialState(s.t_start, y.data());
   system.CheckInitialState(s.t_start, y.data());
   // the single actuator's element starts at its initial.length
-  const std::string initial =
-      s.form == ScenarioForm::kActuator ? "initial.length" : "the element's initial length";
+  const std::string initial = InitialLengthName(s);
   for (std::size_t i = 0; i < s.limits.size(); ++i) {
     const LengthLimit& limit = s.limits[i];
     const std::string at = "limits[" + std::to_string(i) + "]";
@@ -146,11 +145,10 @@ void ValidateNetwork(const Scenario& s) {
 }  // namespace
 
 void Scenario::Validate() const {
-  if (form == ScenarioForm::kNetwork) return ValidateNetwork(*this);
   try {
     ValidateNetwork(*this);
   } catch (const ParameterError& error) {
-    throw ParameterError(ActuatorKeyPath(error.path()), error.value(), error.rule());
+    throw ParameterError(FileKeyPath(*this, error.path()), error.value(), error.rule());
   }
 }
 

@@ -16,7 +16,7 @@ class Recorder final : public NetworkSink {
  public:
   Recorder(const Scenario& scenario, const NetworkSystem& system, int element,
            TrajectorySink& metrics, ColumnRecorder* trajectory)
-      : actuator_form_(scenario.form == ScenarioForm::kActuator),
+      : actuator_form_(IsSingleActuator(scenario)),
         system_(system),
         element_(static_cast<std::size_t>(element)),
         metrics_(metrics),
@@ -31,14 +31,7 @@ class Recorder final : public NetworkSink {
       metrics_.Record(ElementPoint(t, element_sample_));
       return true;
     }
-    ActuatorSample sample;
-    sample.length = element_sample_.length;
-    sample.shortening_velocity = 0.0 - element_sample_.lengthening_rate;  // as ActuatorSampleOf
-    sample.activation = element_sample_.activation;
-    sample.excitation = element_sample_.excitation;
-    sample.tension = element_sample_.parts;
-    sample.load = system_.LoadOn(kActuatorTipNode, t, y);
-    metrics_.Record({t, sample});
+    metrics_.Record({t, ActuatorSampleOf(element_sample_, system_.LoadOn(kActuatorTipNode, t, y))});
     return true;
   }
 
@@ -73,6 +66,8 @@ void RequireWindowWithin(const SweepSpec& spec, long index, const Scenario& scen
 }  // namespace
 
 int MetricElementIndex(const Scenario& scenario, const std::string& element) {
+  if (IsSingleActuator(scenario)) return kActuatorElement;
+  if (element.empty()) return -1;
   std::string names;
   for (std::size_t e = 0; e < scenario.elements.size(); ++e) {
     if (scenario.elements[e].name == element) return static_cast<int>(e);
@@ -87,10 +82,10 @@ MetricElements SweepBase::Validate(const SweepSpec& spec, long index, const std:
   Scenario scenario = points_->Make(spec, index);
   RequireWindowWithin(spec, index, scenario);
   MetricElements elements;
-  if (scenario.form == ScenarioForm::kActuator) {
+  MetricElementIndex(scenario, element);
+  if (IsSingleActuator(scenario)) {
     elements = {{"actuator"}, {"actuator"}};
   } else {
-    if (!element.empty()) MetricElementIndex(scenario, element);
     for (const Element& e : scenario.elements) {
       elements.all.push_back(e.name);
       if (e.kind == ElementKind::kActuator) elements.actuators.push_back(e.name);
@@ -105,9 +100,7 @@ void SweepBase::Prepare(const SweepSpec& spec, long index) {
   const long slot = KeptSlot(spec, index);
   if (slot < 0) built_ = points_->Make(spec, index);
   scenario_ = built_ ? &*built_ : &spec.scenarios[static_cast<std::size_t>(slot)];
-  element_ = scenario_->form == ScenarioForm::kActuator
-                 ? kActuatorElement
-                 : MetricElementIndex(*scenario_, spec.metric_options.element);
+  element_ = MetricElementIndex(*scenario_, spec.metric_options.element);
   keep_ = spec.trajectories != TrajectoryPolicy::kNone;
 }
 

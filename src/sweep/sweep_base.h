@@ -55,8 +55,9 @@ class SweepBase {
   std::optional<ColumnRecorder> trajectory_;  // of the last run, when kept
 };
 
-// The index of `element` among the scenario's elements; InputError if it has none of that
-// name (an axis renamed it).
+// The index of the element a point's metrics read: the single actuator's own; a network's
+// `element` (InputError if it has none of that name: an axis renamed it), or -1 while
+// `element` is empty (not yet resolved).
 int MetricElementIndex(const Scenario& scenario, const std::string& element);
 
 }  // namespace musclesim

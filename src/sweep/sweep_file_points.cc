@@ -51,9 +51,7 @@ class FilePointFactory final : public PointFactory {
       try {
         point = template_->Instantiate(Overrides(overrides, kAxisLabel));
         // a text axis may rename the element the metrics read: told as that axis's doing
-        if (point.form == ScenarioForm::kNetwork && !spec.metric_options.element.empty()) {
-          MetricElementIndex(point, spec.metric_options.element);
-        }
+        MetricElementIndex(point, spec.metric_options.element);
       } catch (const InputError& e) {
         throw PointErrorExplainer(spec, *template_).Explain(index, e).error;
       }

@@ -78,9 +78,7 @@ PointErrorExplainer::PointErrorExplainer(const SweepSpec& spec, const ScenarioTe
 
 void PointErrorExplainer::Check(const std::vector<std::string>& overrides) const {
   const Scenario scenario = base_.Instantiate(Overrides(overrides, kAxisLabel));
-  if (scenario.form == ScenarioForm::kNetwork && !spec_.metric_options.element.empty()) {
-    MetricElementIndex(scenario, spec_.metric_options.element);
-  }
+  MetricElementIndex(scenario, spec_.metric_options.element);
 }
 
 InputError PointErrorExplainer::Restore(const InputError& error) const {

@@ -6,6 +6,11 @@
 // The file's single-actuator keys name values of that network; ActuatorKeyPath and
 // NetworkKeyPath translate between the two, so that a parameter, a message or a sensitivity
 // column says `actuator.mass` where the network holds nodes[1].mass.
+//
+// This file is the form's whole vocabulary: code that serves both forms asks the functions
+// taking a Scenario below (FileKeyPath, ElementColumn, ...) what the file calls a part or a
+// value, rather than testing the form itself. Beside them only the columns (run_columns.h,
+// sensitivity_columns.h) and the writers of a form's own keys tell the forms apart.
 #pragma once
 
 #include <optional>
@@ -63,6 +68,26 @@ std::string ActuatorKeyPath(const std::string& network_path);
 // actuator element's length, shortening velocity (+0 rather than -0 at rest), activation,
 // excitation and tension, and the load on the tip.
 ActuatorSample ActuatorSampleOf(const NetworkSample& sample);
+// The same of the actuator element's sample and the load on the tip [N].
+ActuatorSample ActuatorSampleOf(const ElementSample& actuator, double load);
+
+// What the file of `scenario` calls things, for code that serves both forms. A network's file
+// calls each by the network's own name.
+bool IsSingleActuator(const Scenario& scenario);
+// The file's key path of `network_path` (ActuatorKeyPath for the single actuator).
+std::string FileKeyPath(const Scenario& scenario, const std::string& network_path);
+// The network's key path of the file's `path`, or nullopt for a key the single actuator's
+// form does not have (NetworkKeyPath); a network's `path` unchanged.
+std::optional<std::string> NetworkPathOf(const Scenario& scenario, const std::string& path);
+// The CSV column of element `element`'s `quantity` ("shortening_velocity"): the single
+// actuator's bare, a network's "ELEMENT.quantity".
+std::string ElementColumn(const Scenario& scenario, const std::string& element,
+                          const std::string& quantity);
+// " of ELEMENT", naming an element in a message; "" for the single actuator, the only one.
+std::string OfElement(const Scenario& scenario, const std::string& element);
+// An element's initial length as a message names it ("initial.length" for the single
+// actuator, whose element starts there).
+std::string InitialLengthName(const Scenario& scenario);
 
 // The indices of the network's parts.
 inline constexpr int kActuatorTipNode = 1;        // `tip`
