@@ -54,11 +54,11 @@ int ReferenceCommand(int argc, char** argv) {
   if (part == "actuator") {
     std::cout << ReferenceTable(ActuatorBlock(), "block");
   } else if (part == "nodes") {
-    std::cout << ReferenceTable(NodeKinds(), "node");
+    std::cout << ReferenceTable(NodeKinds(), "node", NameRows(NodeNames()));
   } else if (part == "elements") {
-    std::cout << ReferenceTable(ElementLaws());
+    std::cout << ReferenceTable(ElementLaws(), "type", NameRows(ElementNames()));
   } else if (part == "loads") {
-    std::cout << ReferenceTable(LoadVariants());
+    std::cout << ReferenceTable(LoadVariants(), "type", NameRows(LoadNames()));
   } else if (part == "waveforms") {
     std::cout << ReferenceTable(WaveformShapes());
   } else if (part == "gains") {

@@ -142,4 +142,13 @@ const std::vector<ElementLaw>& ElementLaws() {
 
 const ElementLaw* LawOf(const Element& element) { return VariantOf(ElementLaws(), element); }
 
+const std::vector<NameField<Element>>& ElementNames() {
+  static const std::vector<NameField<Element>> names{
+      MemberName("name", &Element::name, "", "the element's name, unique among the elements"),
+      MemberName("from", &Element::from, "a node",
+                 "where it starts: its length is the distance from this node"),
+      MemberName("to", &Element::to, "a node", "where it ends")};
+  return names;
+}
+
 }  // namespace musclesim

@@ -41,4 +41,10 @@ const std::vector<LoadVariant>& LoadVariants() {
   return variants;
 }
 
+const std::vector<NameField<NodeLoad>>& LoadNames() {
+  static const std::vector<NameField<NodeLoad>> names{MemberName(
+      "node", &NodeLoad::node, "a free node", "the node it acts on (a network's loads only)")};
+  return names;
+}
+
 }  // namespace musclesim

@@ -80,4 +80,10 @@ const std::vector<NodeVariant>& NodeKinds() {
   return variants;
 }
 
+const std::vector<NameField<Node>>& NodeNames() {
+  static const std::vector<NameField<Node>> names{MemberName(
+      "name", &Node::name, "", "the node's name, unique among the nodes, which elements join")};
+  return names;
+}
+
 }  // namespace musclesim

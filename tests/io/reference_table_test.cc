@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -55,17 +56,20 @@ constexpr const char* kRewrite =
     "rewrites it";
 
 TEST(ReferenceTable, NodeKindsInTheNetworksGuideAreTheDescriptions) {
-  EXPECT_EQ(Block(Read("docs/guide/networks.md"), "nodes"), ReferenceTable(NodeKinds(), "node"))
+  EXPECT_EQ(Block(Read("docs/guide/networks.md"), "nodes"),
+            ReferenceTable(NodeKinds(), "node", NameRows(NodeNames())))
       << kRewrite;
 }
 
 TEST(ReferenceTable, ElementLawsInTheNetworksGuideAreTheDescriptions) {
-  EXPECT_EQ(Block(Read("docs/guide/networks.md"), "element laws"), ReferenceTable(ElementLaws()))
+  EXPECT_EQ(Block(Read("docs/guide/networks.md"), "element laws"),
+            ReferenceTable(ElementLaws(), "type", NameRows(ElementNames())))
       << kRewrite;
 }
 
 TEST(ReferenceTable, LoadsInTheScenariosGuideAreTheDescriptions) {
-  EXPECT_EQ(Block(Read("docs/guide/scenarios.md"), "loads"), ReferenceTable(LoadVariants()))
+  EXPECT_EQ(Block(Read("docs/guide/scenarios.md"), "loads"),
+            ReferenceTable(LoadVariants(), "type", NameRows(LoadNames())))
       << kRewrite;
 }
 
@@ -120,6 +124,10 @@ TEST(ReferenceTable, RendersEachFieldOnceWithItsDefaultAndBounds) {
   // an open upper bound
   EXPECT_THAT(ReferenceTable(SolverBlock(), "block"),
               HasSubstr("| `rtol` | - | 1e-06 | >= 1e-14 and < 1: "));
+  // names: a part's own, and one it refers to, ahead of the variants
+  const std::string elements = ReferenceTable(ElementLaws(), "type", NameRows(ElementNames()));
+  EXPECT_THAT(elements, HasSubstr("|---|\n| every | | `name` | | required | a plain name of "));
+  EXPECT_THAT(elements, HasSubstr("| every | | `from` | | required | the name of a node | "));
 }
 
 // The message of reading the network file `text` from memory, or "(read)".
@@ -199,6 +207,58 @@ TEST(ReferenceTable, TheReaderAppliesEachLawsRanges) {
   ExpectEachBoundRefused(ElementLaws(), "type", "elements[0].", [](const std::string& fields) {
     return std::string(kTwoNodes) + "elements:\n  - {name: e, from: wall, to: load, " + fields +
            "}\n" + kTime;
+  });
+}
+
+// Every name of a part, through the reader: left out, it is missing at its key path; a
+// part's own name with a dot is refused (it would split a CSV column's name); a reference to
+// no part is refused when the network is built, at the reference's key path. `file(names)`
+// is a network file holding the part with `names` ("name: e, from: wall, to: load").
+template <typename Part, typename File>
+void ExpectEachNameRead(const std::vector<NameField<Part>>& names, const std::string& prefix,
+                        const std::map<std::string, std::string>& valid, File file) {
+  const auto text = [&](const std::string& left_out, const std::string& replaced,
+                        const std::string& by) {
+    std::string written;
+    for (const NameField<Part>& name : names) {
+      if (name.key == left_out) continue;
+      written += (written.empty() ? "" : ", ") + name.key + ": " +
+                 (name.key == replaced ? by : valid.at(name.key));
+    }
+    return file(written);
+  };
+  EXPECT_EQ(NetworkError(text("", "", "")), "(read)");
+  for (const NameField<Part>& name : names) {
+    SCOPED_TRACE(name.key);
+    const std::string at = prefix + name.key;
+    const std::string missing = NetworkError(text(name.key, "", ""));
+    EXPECT_THAT(missing, HasSubstr(at + " ("));
+    EXPECT_THAT(missing, HasSubstr("): missing required key"));
+    const std::string bad = NetworkError(text("", name.key, name.is_own() ? "a.b" : "nowhere"));
+    EXPECT_THAT(bad, HasSubstr(at + " = "));
+    EXPECT_THAT(bad, HasSubstr(name.is_own() ? "must be a plain name" : "nowhere"));
+  }
+}
+
+TEST(ReferenceTable, TheReaderReadsEachName) {
+  ExpectEachNameRead(ElementNames(), "elements[0].",
+                     {{"name", "e"}, {"from", "wall"}, {"to", "load"}},
+                     [](const std::string& names) {
+                       return std::string(kTwoNodes) + "elements:\n  - {type: spring, " + names +
+                              ", stiffness: 10, rest_length: 0.1}\n" + kTime;
+                     });
+  ExpectEachNameRead(LoadNames(), "loads[0].", {{"node", "load"}}, [](const std::string& names) {
+    return std::string(kTwoNodes) +
+           "elements:\n  - {name: e, type: spring, from: wall, to: load, stiffness: 10, "
+           "rest_length: 0.1}\nloads:\n  - {type: constant, value: 1.0, " +
+           names + "}\n" + kTime;
+  });
+  ExpectEachNameRead(NodeNames(), "nodes[1].", {{"name", "load"}}, [](const std::string& names) {
+    return "nodes:\n  - {name: wall, fixed: 0.0}\n  - {mass: 1.0, position: 0.1, " + names +
+           "}\n"
+           "elements:\n  - {name: e, type: spring, from: wall, to: load, stiffness: 10, "
+           "rest_length: 0.1}\n" +
+           kTime;
   });
 }
 

@@ -123,6 +123,42 @@ WordField<Part> EnumField(const char* key, Enum Part::*member, const EnumName<En
   return field;
 }
 
+// A name in a part: its own (`name`, which heads its CSV columns) or another part's that it
+// refers to (an element's `from` node), which the network resolves when it is built.
+template <typename Part>
+struct NameField {
+  std::string key;
+  const char* refers_to = "";  // what a reference names ("a node"); "" for the part's own name
+  const char* doc = "";
+  std::function<std::string(const Part&)> get{};
+  std::function<void(Part&, std::string)> set{};
+
+  bool is_own() const { return *refers_to == '\0'; }
+};
+
+// The name field of the string `member` of a Part; `refers_to` "" for the part's own name.
+template <typename Part>
+NameField<Part> MemberName(const char* key, std::string Part::*member, const char* refers_to,
+                           const char* doc) {
+  return {key, refers_to, doc, [member](const Part& part) { return part.*member; },
+          [member](Part& part, std::string name) { part.*member = std::move(name); }};
+}
+
+// The keys of `names`, in the order a part's map lists them: its own name, then `type` (when
+// the part has one), then the names it refers to.
+template <typename Part>
+std::vector<std::string> NameKeys(const std::vector<NameField<Part>>& names, bool typed) {
+  std::vector<std::string> keys;
+  for (const NameField<Part>& name : names) {
+    if (name.is_own()) keys.push_back(name.key);
+  }
+  if (typed) keys.emplace_back("type");
+  for (const NameField<Part>& name : names) {
+    if (!name.is_own()) keys.push_back(name.key);
+  }
+  return keys;
+}
+
 // One variant of a part (an element law, a kind of load): the `type` a file names and, when
 // a type has several variants, the key whose presence selects this one.
 template <typename Part>

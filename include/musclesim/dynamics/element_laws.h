@@ -21,6 +21,9 @@ enum class ElementPartial : int { kStiffness, kRestLength, kSlackLength, kScale,
 // Every passive law, in the order of the reference table.
 const std::vector<ElementLaw>& ElementLaws();
 
+// The names every element has, an actuator's too: its own and the nodes it joins.
+const std::vector<NameField<Element>>& ElementNames();
+
 // The law `element` follows; null for an actuator (or a tendon marked pushes_below_slack that
 // is not exponential, which Validate refuses).
 const ElementLaw* LawOf(const Element& element);

@@ -8,6 +8,7 @@
 
 #include "musclesim/core/part_fields.h"
 #include "musclesim/dynamics/loads.h"
+#include "musclesim/dynamics/network_parts.h"
 
 namespace musclesim {
 
@@ -15,5 +16,8 @@ using LoadVariant = PartVariant<Load>;
 
 // The spring and the mass, in the order of the reference table.
 const std::vector<LoadVariant>& LoadVariants();
+
+// The name a network's load has, of any kind: the node it acts on.
+const std::vector<NameField<NodeLoad>>& LoadNames();
 
 }  // namespace musclesim

@@ -20,4 +20,7 @@ using NodeVariant = PartVariant<Node>;
 // apart.
 const std::vector<NodeVariant>& NodeKinds();
 
+// The name every node has: its own.
+const std::vector<NameField<Node>>& NodeNames();
+
 }  // namespace musclesim

@@ -8,6 +8,7 @@
 #include "io/readers/scenario_fields.h"
 #include "musclesim/core/input_ranges.h"
 #include "musclesim/dynamics/element_laws.h"
+#include "musclesim/dynamics/load_kinds.h"
 #include "musclesim/dynamics/node_kinds.h"
 #include "musclesim/scenario/element_limits.h"
 
@@ -68,14 +69,14 @@ Node ReadNode(const yaml::Source& src, const Document& item, const std::string& 
                "must be a map: a name and one of fixed, prescribed or mass");
   }
   // a misspelt key first: it would otherwise read as a missing kind
-  std::vector<std::string> keys{"name"};
+  std::vector<std::string> keys = NameKeys(NodeNames(), false);
   for (std::string& key : VariantKeys(NodeKinds(), "node")) keys.push_back(std::move(key));
   yaml::RequireMap(src, item, path, keys);
   Node node;
-  node.name = ReadName(src, item, path);
+  ReadNames(src, item, path, NodeNames(), node);
   // its kind by the key only that kind has: fixed, prescribed or mass
   const NodeVariant& kind = *SelectVariant(src, item, path, NodeKinds(), "node");
-  keys = {"name"};
+  keys = NameKeys(NodeNames(), false);
   AddVariantKeys(kind, keys);
   yaml::RequireMap(src, item, path, keys);
   kind.make(node);
@@ -107,13 +108,13 @@ std::shared_ptr<const TensionModel> FindModel(const yaml::Source& src, const Doc
 // `via` comes last, so that the messages of files on a line read as they always have.
 void RequireElementKeys(const yaml::Source& src, const Document& item, const std::string& path,
                         ElementKind kind, const std::string& type) {
+  std::vector<std::string> keys = NameKeys(ElementNames(), true);
   if (kind == ElementKind::kActuator) {
-    yaml::RequireMap(src, item, path,
-                     {"name", "type", "from", "to", "model", "activation", "excitation",
-                      "activation_dynamics", "initial_activation", "via"});
-    return;
+    for (const char* key :
+         {"model", "activation", "excitation", "activation_dynamics", "initial_activation"}) {
+      keys.emplace_back(key);
+    }
   }
-  std::vector<std::string> keys{"name", "type", "from", "to"};
   for (std::string& key : VariantKeys(ElementLaws(), type)) keys.push_back(std::move(key));
   keys.emplace_back("via");
   yaml::RequireMap(src, item, path, keys);
@@ -214,9 +215,7 @@ Element ReadElement(const yaml::Source& src, const Document& item, const std::st
   Element e;
   ValidateAt(src, item, path, [&] { e.kind = ParseElementKind(type); });
   RequireElementKeys(src, item, path, e.kind, type);
-  e.name = ReadName(src, item, path);
-  e.from = yaml::ReadString(src, Required(src, item, path, "from"), Join(path, "from"));
-  e.to = yaml::ReadString(src, Required(src, item, path, "to"), Join(path, "to"));
+  ReadNames(src, item, path, ElementNames(), e);
   // read before the kind's fields, kept after them: a controlled actuator is made afresh
   std::vector<ViaPoint> via;
   if (const Document& node = item["via"]) via = ReadVia(src, node, Join(path, "via"), dimensions);
@@ -242,19 +241,7 @@ void RequireList(const yaml::Source& src, const Document& node, const char* list
 }
 
 std::string ReadName(const yaml::Source& src, const Document& item, const std::string& path) {
-  const Document& node = Required(src, item, path, "name");
-  const std::string name = yaml::ReadString(src, node, Join(path, "name"));
-  bool plain = !name.empty();
-  for (const char c : name) {
-    plain = plain && ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-                      c == '_' || c == '-');
-  }
-  if (!plain) {
-    yaml::Fail(src, node, Join(path, "name"), name.empty() ? "\"\"" : yaml::Describe(node),
-               "must be a plain name of letters, digits, _ and - (it heads CSV columns such "
-               "as name.position)");
-  }
-  return name;
+  return yaml::ReadPlainName(src, item, path, "name");
 }
 
 Space ReadSpace(const yaml::Source& src, const Document& root) {
@@ -308,8 +295,8 @@ std::vector<NodeLoad> ReadNodeLoads(const yaml::Source& src, const Document& nod
     const std::string path = Item("loads", i);
     const Document& item = node[i];
     NodeLoad load;
-    load.load = ReadLoad(src, item, path, {"node", "direction"});
-    load.node = yaml::ReadString(src, Required(src, item, path, "node"), Join(path, "node"));
+    load.load = ReadLoad(src, item, path, {LoadNames().front().key.c_str(), "direction"});
+    ReadNames(src, item, path, LoadNames(), load);
     load.direction = ReadDirection(src, item, path, dimensions);
     if (load.load.kind == LoadKind::kForce) {
       CheckPulses(src, item, path, load.load.force, t_start, t_end);

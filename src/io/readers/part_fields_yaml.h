@@ -100,6 +100,21 @@ const PartVariant<Part>* SelectVariant(const yaml::Source& src, const Document& 
   return chosen;
 }
 
+// Reads `names` from the map `item` into `part`, in order, each required: the part's own a
+// plain name (yaml::ReadPlainName), a reference any text (the network resolves it when built).
+template <typename Part>
+void ReadNames(const yaml::Source& src, const Document& item, const std::string& path,
+               const std::vector<NameField<Part>>& names, Part& part) {
+  for (const NameField<Part>& name : names) {
+    if (name.is_own()) {
+      name.set(part, yaml::ReadPlainName(src, item, path, name.key));
+    } else {
+      const Document& given = yaml::Required(src, item, path, name.key.c_str());
+      name.set(part, yaml::ReadString(src, given, yaml::Join(path, name.key)));
+    }
+  }
+}
+
 // Reads the word fields of `variant` from the map `item` into `part`: each a name among its
 // names, its default where absent.
 template <typename Part>

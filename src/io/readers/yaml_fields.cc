@@ -132,6 +132,23 @@ std::string ReadString(const Source& source, const Document& node, const std::st
   return node.Scalar();
 }
 
+std::string ReadPlainName(const Source& source, const Document& item, const std::string& path,
+                          const std::string& key) {
+  const Document& node = Required(source, item, path, key.c_str());
+  const std::string name = ReadString(source, node, Join(path, key));
+  bool plain = !name.empty();
+  for (const char c : name) {
+    plain = plain && ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                      c == '_' || c == '-');
+  }
+  if (!plain) {
+    Fail(source, node, Join(path, key), name.empty() ? "\"\"" : Describe(node),
+         "must be a plain name of letters, digits, _ and - (it heads CSV columns such "
+         "as name.position)");
+  }
+  return name;
+}
+
 std::vector<double> ReadNumbers(const Source& source, const Document& node, const std::string& path,
                                 std::size_t exact_length) {
   if (!node.IsSequence()) Fail(source, node, path, Describe(node), "must be a list of numbers");

@@ -66,6 +66,11 @@ double ReadOptionalNumber(const Source& source, const Document& map, const std::
 int ReadInteger(const Source& source, const Document& node, const std::string& path);
 bool ReadBool(const Source& source, const Document& node, const std::string& path);
 std::string ReadString(const Source& source, const Document& node, const std::string& path);
+// The required key `key` of the map `item` (at `path`) as a plain name, of letters, digits, _
+// and -: a part's own name heads CSV columns ("load.position"), so that the header stays one
+// comma-separated line whose names split at their last dot.
+std::string ReadPlainName(const Source& source, const Document& item, const std::string& path,
+                          const std::string& key);
 // A sequence of numbers, optionally of an exact length (0: any length).
 std::vector<double> ReadNumbers(const Source& source, const Document& node, const std::string& path,
                                 std::size_t exact_length = 0);

@@ -26,13 +26,33 @@ std::string AcceptedCell(const NumberField<Part>& field) {
   return "";
 }
 
+// The accepted-values cell of a name field.
+template <typename Part>
+std::string AcceptedCell(const NameField<Part>& name) {
+  return name.is_own() ? "a plain name of letters, digits, _ and -: it heads the CSV's columns"
+                       : std::string("the name of ") + name.refers_to;
+}
+
+// The rows of the names every variant of a part has (an element's `name`, `from`, `to`), for
+// the head of its table.
+template <typename Owner>
+std::string NameRows(const std::vector<NameField<Owner>>& names) {
+  std::string rows;
+  for (const NameField<Owner>& name : names) {
+    rows.append("| every | | `").append(name.key).append("` | | required | ");
+    rows.append(AcceptedCell(name)).append(" | ").append(name.doc).append(" |\n");
+  }
+  return rows;
+}
+
 // `key` heads the column of the variants' names: the key that names one in a file ("type",
-// "family").
+// "family"). `name_rows` (NameRows) come first.
 template <typename Part>
 std::string ReferenceTable(const std::vector<PartVariant<Part>>& variants,
-                           const std::string& key = "type") {
+                           const std::string& key = "type", const std::string& name_rows = "") {
   std::string table = "| " + key + " | law | key | unit | default | accepted | meaning |\n";
   table += "|---|---|---|---|---|---|---|\n";
+  table += name_rows;
   for (const PartVariant<Part>& variant : variants) {
     std::string type = std::string("`") + variant.type + "`";
     if (std::string_view(variant.name) != variant.type) {
