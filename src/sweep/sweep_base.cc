@@ -79,7 +79,7 @@ int MetricElementIndex(const Scenario& scenario, const std::string& element) {
 
 MetricElements SweepBase::Validate(const SweepSpec& spec, long index, const std::string& element,
                                    SweepSpec* keep, long slot) const {
-  Scenario scenario = points_->Make(spec, index);
+  Scenario scenario = points_->Make(spec, index).scenario;
   RequireWindowWithin(spec, index, scenario);
   MetricElements elements;
   MetricElementIndex(scenario, element);
@@ -96,10 +96,10 @@ MetricElements SweepBase::Validate(const SweepSpec& spec, long index, const std:
 }
 
 void SweepBase::Prepare(const SweepSpec& spec, long index) {
-  built_.reset();
+  made_.reset();
   const long slot = KeptSlot(spec, index);
-  if (slot < 0) built_ = points_->Make(spec, index);
-  scenario_ = built_ ? &*built_ : &spec.scenarios[static_cast<std::size_t>(slot)];
+  if (slot < 0) made_ = points_->Make(spec, index);
+  scenario_ = made_ ? &made_->scenario : &spec.scenarios[static_cast<std::size_t>(slot)];
   element_ = MetricElementIndex(*scenario_, spec.metric_options.element);
   keep_ = spec.trajectories != TrajectoryPolicy::kNone;
 }
@@ -107,9 +107,10 @@ void SweepBase::Prepare(const SweepSpec& spec, long index) {
 RunStats SweepBase::Run(Simulation& simulation, TrajectorySink& metrics) {
   const Scenario& s = *scenario_;
   trajectory_.reset();
-  // built in place: a NetworkSystem holds pointers into its own parts
-  system_.reset();
-  system_.emplace(s.Build());
+  // the system making the point built, else built now (in place: a NetworkSystem holds
+  // pointers into its own parts)
+  system_ =
+      made_ && made_->system ? made_->system : std::make_shared<const NetworkSystem>(s.Build());
   if (keep_) trajectory_.emplace(s, *system_);
   Recorder recorder(s, *system_, element_, metrics, keep_ ? &*trajectory_ : nullptr);
   return simulation.Run(*system_, s.solver, s.Request(), recorder);

@@ -47,12 +47,12 @@ class SweepBase {
 
  private:
   std::unique_ptr<PointFactory> points_;
-  std::optional<Scenario> built_;             // the point, when not kept in the spec
-  const Scenario* scenario_ = nullptr;        // the prepared point
-  int element_ = 0;                           // the metric element's index
-  bool keep_ = false;                         // the spec keeps trajectories
-  std::optional<NetworkSystem> system_;       // of the last run
-  std::optional<ColumnRecorder> trajectory_;  // of the last run, when kept
+  std::optional<LoadedScenario> made_;           // the point, when not kept in the spec
+  const Scenario* scenario_ = nullptr;           // the prepared point
+  int element_ = 0;                              // the metric element's index
+  bool keep_ = false;                            // the spec keeps trajectories
+  std::shared_ptr<const NetworkSystem> system_;  // of the last run
+  std::optional<ColumnRecorder> trajectory_;     // of the last run, when kept
 };
 
 // The index of the element a point's metrics read: the single actuator's own; a network's

@@ -42,21 +42,23 @@ class FilePointFactory final : public PointFactory {
     return std::make_unique<FilePointFactory>(*this);
   }
 
-  Scenario Make(const SweepSpec& spec, long index) const override {
+  LoadedScenario Make(const SweepSpec& spec, long index) const override {
     const std::vector<std::string> overrides = DocumentOverrides(spec, index);
-    Scenario point;
+    LoadedScenario made;
     if (base_ && overrides.empty()) {
-      point = *base_;
+      made.scenario = *base_;
     } else {
       try {
-        point = template_->Instantiate(Overrides(overrides, kAxisLabel));
+        made = template_->InstantiateLoaded(Overrides(overrides, kAxisLabel));
         // a text axis may rename the element the metrics read: told as that axis's doing
-        MetricElementIndex(point, spec.metric_options.element);
+        MetricElementIndex(made.scenario, spec.metric_options.element);
       } catch (const InputError& e) {
         throw PointErrorExplainer(spec, *template_).Explain(index, e).error;
       }
     }
-    if (numeric_.empty()) return point;
+    if (numeric_.empty()) return made;
+    made.system.reset();  // of the numbers before the handles set theirs
+    Scenario& point = made.scenario;
     const std::vector<double> all = PointNumbers(spec, index);
     std::vector<double> numbers;
     for (std::size_t k : numeric_) numbers.push_back(all[k]);
@@ -68,7 +70,7 @@ class FilePointFactory final : public PointFactory {
       throw ExplainInvalidPoint(spec, index, overrides.empty() ? *base_ : point, numeric_, handles,
                                 all, error);
     }
-    return point;
+    return made;
   }
 
  private:

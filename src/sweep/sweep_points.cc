@@ -35,7 +35,7 @@ class ParameterPointFactory final : public PointFactory {
     return std::make_unique<ParameterPointFactory>(base_, handles_);
   }
 
-  Scenario Make(const SweepSpec& spec, long index) const override {
+  LoadedScenario Make(const SweepSpec& spec, long index) const override {
     Scenario point = base_;
     const std::vector<double> numbers = PointNumbers(spec, index);
     try {
@@ -45,7 +45,7 @@ class ParameterPointFactory final : public PointFactory {
       for (std::size_t k = 0; k < axes.size(); ++k) axes[k] = k;
       throw ExplainInvalidPoint(spec, index, base_, axes, handles_, numbers, error);
     }
-    return point;
+    return {std::move(point), nullptr};
   }
 
  private:
@@ -60,11 +60,11 @@ class FunctionPointFactory final : public PointFactory {
   std::unique_ptr<PointFactory> Copy() const override {
     return std::make_unique<FunctionPointFactory>(make_);
   }
-  Scenario Make(const SweepSpec& spec, long index) const override {
+  LoadedScenario Make(const SweepSpec& spec, long index) const override {
     try {
       Scenario point = (*make_)(index, PointNumbers(spec, index));
       point.Validate();
-      return point;
+      return {std::move(point), nullptr};
     } catch (const std::invalid_argument& error) {  // ParameterError among them
       throw InputError("point " + std::to_string(index) + " (" +
                        Describe(spec, PointValues(spec, index)) +

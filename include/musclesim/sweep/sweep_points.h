@@ -21,9 +21,11 @@ class PointFactory {
  public:
   virtual ~PointFactory() = default;
   virtual std::unique_ptr<PointFactory> Copy() const = 0;
-  // The scenario of point `index` of `spec`. Throws InputError, complete and printable,
-  // naming the axis (or axes) whose values make it invalid and the rule they break.
-  virtual Scenario Make(const SweepSpec& spec, long index) const = 0;
+  // The scenario of point `index` of `spec`, and its system when making it built one (a
+  // network read with the point's words); null otherwise, and the run builds it. Throws
+  // InputError, complete and printable, naming the axis (or axes) whose values make it
+  // invalid and the rule they break.
+  virtual LoadedScenario Make(const SweepSpec& spec, long index) const = 0;
 };
 
 // Points that are `base` with each axis's number set through the parameter handle at the

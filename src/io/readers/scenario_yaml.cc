@@ -63,7 +63,11 @@ bool ScenarioTemplate::has_sensitivities() const {
 }
 
 Scenario ScenarioTemplate::Instantiate(const Overrides& overrides) const {
-  return ReadOverridden({path_, overrides.label}, *document_, overrides, path_).scenario;
+  return InstantiateLoaded(overrides).scenario;
+}
+
+LoadedScenario ScenarioTemplate::InstantiateLoaded(const Overrides& overrides) const {
+  return ReadOverridden({path_, overrides.label}, *document_, overrides, path_);
 }
 
 LoadedScenario ReadBuiltScenario(const Document& document, const std::string& name,

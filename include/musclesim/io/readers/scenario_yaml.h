@@ -56,6 +56,9 @@ class ScenarioTemplate {
 
   // The scenario with `overrides` applied, validated as LoadScenario does.
   Scenario Instantiate(const Overrides& overrides) const;
+  // The same, with the system reading built (a network's; null for the single actuator,
+  // whose reader builds none).
+  LoadedScenario InstantiateLoaded(const Overrides& overrides) const;
   const std::string& path() const { return path_; }
   // How the file is written (a network: a top-level `nodes:` key).
   ScenarioForm form() const { return form_; }
