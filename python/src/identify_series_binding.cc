@@ -151,7 +151,8 @@ Identification Identify(const py::object& scenario, const py::object& spec_dict,
     // the estimated scenario: the estimates set in place, and written as values set for
     // to_yaml()
     PyScenario estimated = base;
-    estimated.scenario = EstimatedScenario(base.scenario, out.result);
+    // its system is built anew at its first run: the base's is of the values before the fit
+    estimated.Assign({EstimatedScenario(base.scenario, out.result), nullptr});
     for (const std::string& o : EstimateOverrides(out.result)) estimated.overrides.push_back(o);
     out.scenario = py::cast(std::move(estimated));
   }

@@ -219,6 +219,19 @@ def test_estimated_scenario_runs_to_the_fitted_model():
                                rtol=0, atol=0)
 
 
+def test_an_estimated_scenario_as_read_runs_to_the_fitted_model_not_the_one_read():
+    # no set() before the fit: the scenario as read, whose runs use the system its reading
+    # built; its estimate's runs must use the fitted values, as a scenario read with them does
+    truth = release(**TRUTH).run()
+    result = musclesim.identify_series(
+        release(), [{"t": truth["t"], "length": truth["length"]}],
+        [{"path": "model.f_iso", "start": 70.0}, "model.velocity.v_max"])
+    fitted = release(f_iso=result.estimates["model.f_iso"],
+                     v_max=result.estimates["model.velocity.v_max"])
+    np.testing.assert_array_equal(result.scenario.run()["length"], fitted.run()["length"])
+    assert np.abs(result.scenario.run()["length"] - release().run()["length"]).max() > 1e-4
+
+
 # --- warnings: results kept, as the CLI writes them ------------------------------------------
 
 def test_a_fit_out_of_evaluations_warns_and_returns():

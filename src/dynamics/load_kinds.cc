@@ -43,7 +43,8 @@ const std::vector<LoadVariant>& LoadVariants() {
 
 const std::vector<NameField<NodeLoad>>& LoadNames() {
   static const std::vector<NameField<NodeLoad>> names{MemberName(
-      "node", &NodeLoad::node, "a free node", "the node it acts on (a network's loads only)")};
+      "node", &NodeLoad::node, "a free node",
+      "the node it acts on; a network's loads only (the single actuator's act on its tip)")};
   return names;
 }
 

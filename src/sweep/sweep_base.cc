@@ -1,5 +1,7 @@
 #include "sweep/sweep_base.h"
 
+#include <stdexcept>
+
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
 #include "musclesim/io/writers/run_csv.h"
@@ -101,14 +103,15 @@ void SweepBase::Prepare(const SweepSpec& spec, long index) {
   if (slot < 0) made_ = points_->Make(spec, index);
   scenario_ = made_ ? &made_->scenario : &spec.scenarios[static_cast<std::size_t>(slot)];
   element_ = MetricElementIndex(*scenario_, spec.metric_options.element);
+  // the sweep's reader resolves the element before any point runs
+  if (element_ < 0) throw std::logic_error("sweep: a network's point runs with no metric element");
   keep_ = spec.trajectories != TrajectoryPolicy::kNone;
 }
 
 RunStats SweepBase::Run(Simulation& simulation, TrajectorySink& metrics) {
   const Scenario& s = *scenario_;
   trajectory_.reset();
-  // the system making the point built, else built now (in place: a NetworkSystem holds
-  // pointers into its own parts)
+  // the system making the point built, else built now
   system_ =
       made_ && made_->system ? made_->system : std::make_shared<const NetworkSystem>(s.Build());
   if (keep_) trajectory_.emplace(s, *system_);

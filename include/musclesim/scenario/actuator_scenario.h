@@ -9,8 +9,10 @@
 //
 // This file is the form's whole vocabulary: code that serves both forms asks the functions
 // taking a Scenario below (FileKeyPath, ElementColumn, ...) what the file calls a part or a
-// value, rather than testing the form itself. Beside them only the columns (run_columns.h,
-// sensitivity_columns.h) and the writers of a form's own keys tell the forms apart.
+// value, rather than testing the form itself. Beside them only the reader that tells the form,
+// the columns (run_columns.h, sensitivity_columns.h), the writers of a form's own keys and a
+// sweep's signature (which leaves the single actuator's metric element out, as sweeps written
+// before networks have it) tell the forms apart.
 #pragma once
 
 #include <optional>

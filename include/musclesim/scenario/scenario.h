@@ -101,7 +101,9 @@ struct Scenario {
 // it again. The system is of the scenario as read: whoever changes the scenario builds anew.
 struct LoadedScenario {
   Scenario scenario;
-  std::shared_ptr<const NetworkSystem> system;  // scenario.Build()'s; never null once read
+  // scenario.Build()'s: never null from LoadBuiltScenario and ReadBuiltScenario; null where a
+  // maker built none (ScenarioTemplate::InstantiateLoaded, a sweep's PointFactory)
+  std::shared_ptr<const NetworkSystem> system;
 };
 
 }  // namespace musclesim
