@@ -10,26 +10,18 @@ namespace py = pybind11;
 namespace musclesim::python {
 
 py::dict GaussianDict(const Gaussian& g) {
-  return py::dict(py::arg("amplitude") = g.amplitude, py::arg("width") = g.precision,
-                  py::arg("center") = g.center);
+  py::dict out;
+  AddFields(OnlyVariant<Gaussian>("gaussian", "", GaussianFields()), g, out);
+  return out;
 }
 
 py::dict ParamsDict(const ModelParams& p) {
-  // the described fields (model/family_fields.h), then the lists each family reads itself
+  // the described fields and lists (model/family_fields.h)
   py::dict out;
   if (p.family != CurveFamily::kPaper) out["family"] = ToString(p.family);
-  AddFields(*VariantOf(ModelFamilies(), p), p, out);
-  if (p.family == CurveFamily::kMujoco) {
-    out["range"] = py::make_tuple(p.mujoco.range[0], p.mujoco.range[1]);
-    out["lengthrange"] = py::make_tuple(p.mujoco.lengthrange[0], p.mujoco.lengthrange[1]);
-  } else if (p.family == CurveFamily::kPaper) {
-    py::list gaussians;
-    for (const Gaussian& g : p.active_length.gaussians) gaussians.append(GaussianDict(g));
-    py::dict active = out["active_length"].cast<py::dict>();
-    active["optimal_range"] =
-        py::make_tuple(p.active_length.optimal_min, p.active_length.optimal_max);
-    active["gaussians"] = gaussians;
-  }
+  const ModelFamily& family = *VariantOf(ModelFamilies(), p);
+  AddFields(family, p, out);
+  AddLists(family, p, out);
   return out;
 }
 

@@ -61,9 +61,46 @@ ModelFamily Family(CurveFamily family, const char* law, std::vector<Field> own) 
   return variant;
 }
 
+// A number of a Gaussian: finite, its rules (a width > 0) the model's own.
+NumberField<Gaussian> GaussianNumber(const char* key, double Gaussian::*member, const char* unit,
+                                     const char* doc, TensionParameterKind kind) {
+  NumberField<Gaussian> field = MemberField(key, member, InputRange{0.0, 0.0, unit, ""},
+                                            std::nullopt, doc, static_cast<int>(kind));
+  field.values = FieldValues::kFinite;
+  return field;
+}
+
+// An end of L_opt [m], finite: that it is a range of positive lengths is the model's rule.
+Field OptimalEnd(std::size_t end, const char* doc, TensionParameterKind kind) {
+  Field field{std::string("active_length.optimal_range[") + std::to_string(end) + "]",
+              InputRange{0.0, 0.0, "m", ""},
+              std::nullopt,
+              doc,
+              [end](const ModelParams& p) {
+                return end == 0 ? p.active_length.optimal_min : p.active_length.optimal_max;
+              },
+              [end](ModelParams& p, double v) {
+                (end == 0 ? p.active_length.optimal_min : p.active_length.optimal_max) = v;
+              },
+              static_cast<int>(kind),
+              FieldValues::kFinite};
+  return field;
+}
+
+// The paper's Gaussians (docs/model.md 3): listed, or fitted at load when `fit` is given
+// instead (which its reader handles, with the rule that exactly one of them is).
+ListField<ModelParams> Gaussians() {
+  ListField<ModelParams> list = ItemList<ModelParams, Gaussian>(
+      "active_length.gaussians", "a Gaussian",
+      "the components a_k, b_k, d_k of f_L; or `fit` instead, fitted at load",
+      [](auto& p) -> auto& { return p.active_length.gaussians; }, GaussianFields());
+  list.required = false;
+  return list;
+}
+
 // The paper's block (docs/model.md 2-5, 9): its passive and velocity curves described where
-// they are defined (model/passive.h, model/velocity.h), and active_length's sigma; the
-// Gaussians, listed or fitted, and L_opt are read by the paper's reader.
+// they are defined (model/passive.h, model/velocity.h), active_length's sigma, L_opt and
+// Gaussians; a fit in their place is its reader's own.
 ModelFamily Paper() {
   // in the order of the block's keys in files: f_iso, passive, active_length, velocity
   std::vector<Field> common = Common();
@@ -78,6 +115,9 @@ ModelFamily Paper() {
                     [](const ModelParams& p) { return p.active_length.sigma; },
                     [](ModelParams& p, double v) { p.active_length.sigma = v; },
                     static_cast<int>(TensionParameterKind::kSigma), FieldValues::kFinite});
+  fields.push_back(OptimalEnd(0, "l1, where L_opt, the range f_L is normalised over, begins",
+                              TensionParameterKind::kOptimalMin));
+  fields.push_back(OptimalEnd(1, "l2, where it ends, > l1 > 0", TensionParameterKind::kOptimalMax));
   for (Field& field : NestedFields("velocity", &ModelParams::velocity, VelocityBlock().fields)) {
     fields.push_back(std::move(field));
   }
@@ -85,8 +125,8 @@ ModelFamily Paper() {
   ModelFamily family =
       Family(CurveFamily::kPaper, "T = T_p(x) + u f_iso f_L(x) g_eps(v) (docs/model.md 1-5)", {});
   family.fields = std::move(fields);
-  family.other_keys = {"active_length.optimal_range", "active_length.gaussians",
-                       "active_length.fit"};
+  family.lists = {Gaussians()};
+  family.other_keys = {"active_length.fit"};
   return family;
 }
 
@@ -133,12 +173,45 @@ ModelFamily MuJoCo() {
        Mujoco("fvmax", &MujocoMuscleParams::fvmax,
               Normalised(1.0, true, "the lengthening branch rises from 1 to fvmax"), m.fvmax,
               "the lengthening force, over F0")});
-  // lists of two, read and checked with the rules between them by the family's reader
-  family.other_keys = {"range", "lengthrange"};
+  // lists of two, their rules (each pair increasing) the model's
+  const auto end = [](const char* list, std::size_t i, double(MujocoMuscleParams::*pair)[2],
+                      const char* unit, std::optional<double> fallback, const char* doc) {
+    Field field{std::string(list) + "[" + std::to_string(i) + "]",
+                InputRange{0.0, 0.0, unit, ""},
+                fallback,
+                doc,
+                [pair, i](const ModelParams& p) { return (p.mujoco.*pair)[i]; },
+                [pair, i](ModelParams& p, double v) { (p.mujoco.*pair)[i] = v; },
+                -1,
+                FieldValues::kFinite};
+    return field;
+  };
+  family.fields.push_back(end("range", 0, &MujocoMuscleParams::range, "-", m.range[0],
+                              "the normalised length at lengthrange[0]"));
+  family.fields.push_back(end("range", 1, &MujocoMuscleParams::range, "-", m.range[1],
+                              "the normalised length at lengthrange[1], > range[0]"));
+  family.fields.push_back(end("lengthrange", 0, &MujocoMuscleParams::lengthrange, "m", std::nullopt,
+                              "the shortest actuator length MuJoCo scales by"));
+  family.fields.push_back(end("lengthrange", 1, &MujocoMuscleParams::lengthrange, "m", std::nullopt,
+                              "the longest, > lengthrange[0]"));
   return family;
 }
 
 }  // namespace
+
+const std::vector<NumberField<Gaussian>>& GaussianFields() {
+  using Kind = TensionParameterKind;
+  static const std::vector<NumberField<Gaussian>> fields{
+      GaussianNumber("amplitude", &Gaussian::amplitude, "-", "a_k, finite, may be negative",
+                     Kind::kAmplitude),
+      GaussianNumber(
+          "width", &Gaussian::precision, "1/m^2",
+          "b_k, > 0, the inverse-variance factor (its unit for sigma 1): larger is narrower",
+          Kind::kWidth),
+      GaussianNumber("center", &Gaussian::center, "m", "d_k, where the component peaks",
+                     Kind::kCenter)};
+  return fields;
+}
 
 const std::vector<ModelFamily>& ModelFamilies() {
   static const std::vector<ModelFamily> families{Paper(), DeGroote2016(), MuJoCo()};

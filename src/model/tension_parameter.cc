@@ -55,7 +55,7 @@ std::optional<std::vector<PathStep>> SplitPath(std::string_view path) {
 // their kind as their tag.
 const ModelFamily& Paper() { return *VariantOf(ModelFamilies(), ModelParams{}); }
 
-// The described field whose tag is `kind`; null for a kind of a list (L_opt, a Gaussian).
+// The described field whose tag is `kind`; null for a kind of a list's items (a Gaussian's).
 const NumberField<ModelParams>* FieldOf(Kind kind) {
   for (const NumberField<ModelParams>& field : Paper().fields) {
     if (field.partial == static_cast<int>(kind)) return &field;
@@ -63,32 +63,41 @@ const NumberField<ModelParams>* FieldOf(Kind kind) {
   return nullptr;
 }
 
-std::optional<TensionParameter> Match(const std::vector<PathStep>& s) {
-  const auto is = [&s](std::size_t i, std::string_view key) {
-    return i < s.size() && !s[i].key.empty() && s[i].key == key;
-  };
-  const auto is_index = [&s](std::size_t i) { return i < s.size() && s[i].key.empty(); };
-  const auto kind = [](Kind k, std::size_t gaussian = 0) {
-    return std::optional<TensionParameter>(TensionParameter{k, gaussian});
-  };
+// The field of item k of a list of the paper's block whose tag is `kind`, with its key path
+// ("active_length.gaussians[1].width"); none for a kind of no list.
+std::optional<std::pair<std::string, NumberField<ModelParams>>> ItemFieldOf(Kind kind,
+                                                                            std::size_t k) {
+  for (const ListField<ModelParams>& list : Paper().lists) {
+    for (NumberField<ModelParams>& field : list.item_fields(k)) {
+      if (field.partial != static_cast<int>(kind)) continue;
+      return std::pair{list.key + "[" + std::to_string(k) + "]." + field.key, std::move(field)};
+    }
+  }
+  return std::nullopt;
+}
 
-  if (is(0, "active_length") && s.size() == 3 && is(1, "optimal_range") && is_index(2)) {
-    if (s[2].index == 0) return kind(Kind::kOptimalMin);
-    if (s[2].index == 1) return kind(Kind::kOptimalMax);
-  }
-  if (is(0, "active_length") && s.size() == 4 && is(1, "gaussians") && is_index(2)) {
-    if (is(3, "amplitude")) return kind(Kind::kAmplitude, s[2].index);
-    if (is(3, "width")) return kind(Kind::kWidth, s[2].index);
-    if (is(3, "center")) return kind(Kind::kCenter, s[2].index);
-  }
-  std::string key;  // "velocity.eccentric.v_max"
+std::optional<TensionParameter> Match(const std::vector<PathStep>& s) {
+  std::string key;  // "velocity.eccentric.v_max", "active_length.gaussians[1].width"
   for (const PathStep& step : s) {
-    if (step.key.empty()) return std::nullopt;
-    key.append(key.empty() ? "" : ".").append(step.key);
+    if (step.key.empty()) {
+      key.append("[").append(std::to_string(step.index)).append("]");
+    } else {
+      key.append(key.empty() ? "" : ".").append(step.key);
+    }
   }
-  const NumberField<ModelParams>* field = FindField(Paper(), key);
-  if (field == nullptr || field->partial < 0) return std::nullopt;
-  return kind(static_cast<Kind>(field->partial));
+  int partial = -1;
+  std::size_t gaussian = 0;
+  if (const std::optional<ListItemKey<ModelParams>> item = FindListItem(Paper(), key)) {
+    if (!item->index) return std::nullopt;
+    for (const NumberField<ModelParams>& field : item->list->item_fields(*item->index)) {
+      if (field.key == item->leaf) partial = field.partial;
+    }
+    gaussian = *item->index;
+  } else if (const NumberField<ModelParams>* field = FindField(Paper(), key)) {
+    partial = field->partial;
+  }
+  if (partial < 0) return std::nullopt;
+  return TensionParameter{static_cast<Kind>(partial), gaussian};
 }
 
 // Throws ParameterError when `params` lacks `p` (see ParameterValue).
@@ -157,29 +166,16 @@ std::optional<TensionParameter> ParseTensionParameter(std::string_view path) {
 }
 
 std::string ToString(const TensionParameter& parameter) {
-  const std::string gaussian =
-      "active_length.gaussians[" + std::to_string(parameter.gaussian) + "].";
-  switch (parameter.kind) {
-    case Kind::kOptimalMin: return "active_length.optimal_range[0]";
-    case Kind::kOptimalMax: return "active_length.optimal_range[1]";
-    case Kind::kAmplitude: return gaussian + "amplitude";
-    case Kind::kWidth: return gaussian + "width";
-    case Kind::kCenter: return gaussian + "center";
-    default: return FieldOf(parameter.kind)->key;
-  }
+  if (const auto item = ItemFieldOf(parameter.kind, parameter.gaussian)) return item->first;
+  return FieldOf(parameter.kind)->key;
 }
 
 double ParameterValue(const ModelParams& params, const TensionParameter& parameter) {
   RequirePresent(params, parameter);
-  const ActiveLengthParams& active = params.active_length;
-  switch (parameter.kind) {
-    case Kind::kOptimalMin: return active.optimal_min;
-    case Kind::kOptimalMax: return active.optimal_max;
-    case Kind::kAmplitude: return active.gaussians[parameter.gaussian].amplitude;
-    case Kind::kWidth: return active.gaussians[parameter.gaussian].precision;
-    case Kind::kCenter: return active.gaussians[parameter.gaussian].center;
-    default: return FieldOf(parameter.kind)->get(params);
+  if (const auto item = ItemFieldOf(parameter.kind, parameter.gaussian)) {
+    return item->second.get(params);
   }
+  return FieldOf(parameter.kind)->get(params);
 }
 
 TensionParameterDerivative::TensionParameterDerivative(const TensionModel& model,

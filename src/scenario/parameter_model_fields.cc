@@ -1,5 +1,5 @@
-// A model block's keys as parameter handles: each family's described fields
-// (model/family_fields.h), the paper's L_opt, Gaussians and fit, and MuJoCo's lists of two.
+// A model block's keys as parameter handles: each family's described fields and lists of
+// sub-parts (model/family_fields.h), and a fitted paper model's fit settings.
 #include "scenario/parameter_resolver.h"
 
 #include <algorithm>
@@ -24,18 +24,8 @@ void ParameterResolver::Model(std::size_t i) {
 }
 
 void ParameterResolver::FamilyField(std::size_t i, CurveFamily family) {
-  const std::string& key = Key(i);
-  if (family == CurveFamily::kMujoco && (key == "range" || key == "lengthrange")) {
-    const std::size_t end = Index(i + 1, 2, key == "range" ? "range" : "lengthrange");
-    End(i + 2);
-    if (key == "range") {
-      return ModelNumber([end](ModelSpec& m) -> double& { return m.params.mujoco.range[end]; });
-    }
-    return ModelNumber([end](ModelSpec& m) -> double& { return m.params.mujoco.lengthrange[end]; });
-  }
-  // the paper's L_opt and Gaussians, listed or fitted
-  if (family == CurveFamily::kPaper && key == "active_length" && Key(i + 1) != "sigma") {
-    return ActiveLengthField(i + 1);
+  if (family == CurveFamily::kPaper && Key(i) == "active_length" && Key(i + 1) == "fit") {
+    return FitField(i + 2);
   }
   // the family's described fields (model/family_fields.h)
   const ModelFamily* described = nullptr;
@@ -43,13 +33,18 @@ void ParameterResolver::FamilyField(std::size_t i, CurveFamily family) {
     if (ToString(family) == std::string_view(f.type)) described = &f;
   }
   const std::string key_path = PathFrom(i);
+  if (const std::optional<ListItemKey<ModelParams>> item = FindListItem(*described, key_path)) {
+    return ListItemField(*item);
+  }
   const NumberField<ModelParams>* field = FindField(*described, key_path);
   for (const NumberField<ModelParams>& f : described->fields) {
     if (field == nullptr && f.key.rfind(key_path + ".", 0) == 0)
       Fail("names a block, not one number");
   }
+  if (field == nullptr) RequireListIndex(*described, key_path);
   if (field == nullptr) {
     std::string keys = FieldKeys(*described);
+    for (const ListField<ModelParams>& list : described->lists) keys.append(", ").append(list.key);
     for (const char* other : described->other_keys) keys.append(", ").append(other);
     Fail("names no parameter of a " + std::string(described->type) + " model (" + keys + ")");
   }
@@ -57,13 +52,18 @@ void ParameterResolver::FamilyField(std::size_t i, CurveFamily family) {
   // a fitted model's Gaussians are fitted again for a new L_opt or sigma
   ModelValue([get = field->get](const ModelSpec& m) { return get(m.params); },
              [set = field->set](ModelSpec& m, double v) { set(m.params, v); },
-             key == "active_length");
+             key_path.rfind("active_length.", 0) == 0);
 }
 
-void ParameterResolver::ModelNumber(Locate<double, ModelSpec> at, bool refits) {
-  p_.model_get_ = [at](const ModelSpec& m) { return at(const_cast<ModelSpec&>(m)); };
-  p_.model_set_ = [at](ModelSpec& m, double v) { at(m) = v; };
-  p_.refits_ = refits && fitted_;
+void ParameterResolver::RequireListIndex(const PartVariant<ModelParams>& family,
+                                         const std::string& key_path) const {
+  const std::optional<ListElement> element = ElementOf(key_path);
+  const std::string list = element ? std::string(element->list) : key_path;
+  const std::size_t length = ListLength(family, list);
+  if (length == 0) return;
+  const std::string name = list.substr(list.rfind('.') + 1);  // "optimal_range"
+  if (!element) Fail("needs an index of " + name);
+  Fail("indexes past the end of " + name + " (" + std::to_string(length) + ")");
 }
 
 void ParameterResolver::ModelValue(std::function<double(const ModelSpec&)> get,
@@ -73,50 +73,37 @@ void ParameterResolver::ModelValue(std::function<double(const ModelSpec&)> get,
   p_.refits_ = refits && fitted_;
 }
 
-void ParameterResolver::ActiveLengthField(std::size_t i) {
-  const std::string& key = Key(i);
-  if (key == "optimal_range") {
-    const std::size_t end = Index(i + 1, 2, "optimal_range");
-    End(i + 2);
-    return ModelNumber(
-        [end](ModelSpec& m) -> double& {
-          ActiveLengthParams& a = m.params.active_length;
-          return end == 0 ? a.optimal_min : a.optimal_max;
-        },
-        true);
+void ParameterResolver::FitField(std::size_t i) {
+  if (!fitted_) Fail("names no numeric parameter of the active length curve");
+  End(i + 1);
+  if (Key(i) == "count") {
+    p_.integer_ = true;
+    return ModelValue([](const ModelSpec& m) { return static_cast<double>(m.fit->count); },
+                      [](ModelSpec& m, double v) { m.fit->count = static_cast<int>(v); }, true);
   }
-  if (key == "gaussians") return GaussianField(i + 1);
-  if (key == "fit" && fitted_) {
-    End(i + 2);
-    const std::string& leaf = Key(i + 1);
-    if (leaf == "count") {
-      p_.integer_ = true;
-      return ModelValue([](const ModelSpec& m) { return static_cast<double>(m.fit->count); },
-                        [](ModelSpec& m, double v) { m.fit->count = static_cast<int>(v); }, true);
-    }
-    if (leaf == "optimal_length") {
-      return ModelValue([](const ModelSpec& m) { return m.fit->optimal_length.value_or(0.0); },
-                        [](ModelSpec& m, double v) { m.fit->optimal_length = v; }, true);
-    }
+  if (Key(i) == "optimal_length") {
+    return ModelValue([](const ModelSpec& m) { return m.fit->optimal_length.value_or(0.0); },
+                      [](ModelSpec& m, double v) { m.fit->optimal_length = v; }, true);
   }
   Fail("names no numeric parameter of the active length curve");
 }
 
-void ParameterResolver::GaussianField(std::size_t i) {
+void ParameterResolver::ListItemField(const ListItemKey<ModelParams>& key) {
+  const ListField<ModelParams>& list = *key.list;
   if (fitted_) Fail("is fitted when the model is built: change the fit's settings instead");
-  const std::size_t count =
-      scenario_.models.at(p_.model_).spec.params.active_length.gaussians.size();
-  const std::size_t k = Index(i, count, "gaussians");
-  End(i + 2);
-  const std::string& leaf = Key(i + 1);
-  using Member = double Gaussian::*;
-  const Member member = leaf == "amplitude" ? &Gaussian::amplitude
-                        : leaf == "width"   ? &Gaussian::precision
-                        : leaf == "center"  ? &Gaussian::center
-                                            : nullptr;
-  if (member == nullptr) Fail("names no field of a Gaussian (amplitude, width, center)");
-  ModelNumber(
-      [k, member](ModelSpec& m) -> double& { return m.params.active_length.gaussians[k].*member; });
+  const std::string name = list.key.substr(list.key.rfind('.') + 1);  // "gaussians"
+  if (!key.index) Fail("needs an index of " + name);
+  const std::size_t count = list.size(scenario_.models.at(p_.model_).spec.params);
+  if (*key.index >= count) {
+    Fail("indexes past the end of " + name + " (" + std::to_string(count) + ")");
+  }
+  if (key.leaf.empty()) Fail("names a block, not one number");
+  for (const NumberField<ModelParams>& field : list.item_fields(*key.index)) {
+    if (field.key != key.leaf) continue;
+    return ModelValue([get = field.get](const ModelSpec& m) { return get(m.params); },
+                      [set = field.set](ModelSpec& m, double v) { set(m.params, v); });
+  }
+  Fail(std::string("names no field of ") + list.item + " (" + ItemKeys(list) + ")");
 }
 
 }  // namespace musclesim

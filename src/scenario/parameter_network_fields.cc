@@ -231,9 +231,6 @@ void ParameterResolver::Setting(std::size_t i) {
     }
   }
   if (block == "output") {
-    if (key == "interval" && !scenario_.output.every_step) {
-      return Number([](Scenario& s) -> double& { return s.output.interval; }, nullptr);
-    }
     const NumberField<OutputRequest>* field = FindField(OutputBlock().front(), key);
     if (field != nullptr && (!field->given || field->given(scenario_.output))) {
       return Field(*field,

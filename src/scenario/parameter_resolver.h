@@ -112,12 +112,14 @@ class ParameterResolver {
   void Model(std::size_t i);
   // A key of a model block of its family (docs/model.md 14.1), step i its first.
   void FamilyField(std::size_t i, CurveFamily family);
-  void ModelNumber(Locate<double, ModelSpec> at, bool refits = false);
   void ModelValue(std::function<double(const ModelSpec&)> get,
                   std::function<void(ModelSpec&, double)> set, bool refits = false);
-  // The paper's active_length keys other than sigma: optimal_range, gaussians, fit.
-  void ActiveLengthField(std::size_t i);
-  void GaussianField(std::size_t i);
+  // The fit's settings of a fitted paper model (active_length.fit), step i the leaf.
+  void FitField(std::size_t i);
+  // A number of an item of a list of sub-parts of the model (a Gaussian's width).
+  void ListItemField(const ListItemKey<ModelParams>& key);
+  // Fails unless `key_path` is a list of numbers of `family` indexed within it.
+  void RequireListIndex(const PartVariant<ModelParams>& family, const std::string& key_path) const;
   // The coordinate step i names of a node's `key` (fixed, prescribed, position, velocity):
   // none on a line (0), an index below the dimensions in 2 or 3.
   std::size_t Coordinate(std::size_t i, const std::string& key) const;

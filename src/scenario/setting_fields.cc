@@ -25,9 +25,34 @@ PartVariant<OutputRequest> DescribeOutput() {
       [](const OutputRequest& o) { return o.phase_tolerance.value_or(0.0); },
       [](OutputRequest& o, double v) { o.phase_tolerance = v; }};
   tolerance.given = [](const OutputRequest& o) { return o.phase_tolerance.has_value(); };
-  PartVariant<OutputRequest> block =
-      OnlyVariant<OutputRequest>("output", "the rows a run records", {std::move(tolerance)});
-  block.other_keys = {"file", "interval"};
+  // its rule is against the span (the reader's): a time rather than a range of its own
+  NumberField<OutputRequest> interval{
+      "interval",
+      InputRange{0.0, 0.0, "s", ""},
+      std::nullopt,
+      "the time between rows: at most 1e8 rows over the span, and at least 1e-12 of the "
+      "time scale, the largest of 1 s and the magnitudes of start and end; absent: a "
+      "thousandth of the span",
+      [](const OutputRequest& o) { return o.interval; },
+      [](OutputRequest& o, double v) {
+        o.interval = v;
+        o.every_step = false;
+      }};
+  interval.values = FieldValues::kFinite;
+  interval.given = [](const OutputRequest& o) { return !o.every_step; };
+  interval.word = "steps";
+  interval.word_means = "a row per internal step";
+  interval.set_word = [](OutputRequest& o) {
+    o.every_step = true;
+    o.interval = 0.0;
+  };
+  PartVariant<OutputRequest> block = OnlyVariant<OutputRequest>(
+      "output", "the rows a run records", {std::move(interval), std::move(tolerance)});
+  block.texts = {{"file",
+                  "the CSV the rows go to, relative to the working directory; `-` standard "
+                  "output; `-o PATH` overrides it, and must be given when it is absent",
+                  [](const OutputRequest& o) { return o.file; },
+                  [](OutputRequest& o, std::string file) { o.file = std::move(file); }}};
   return block;
 }
 

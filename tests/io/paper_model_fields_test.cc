@@ -5,12 +5,15 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
+#include "musclesim/io/writers/flow_fields.h"
 #include "musclesim/io/readers/model_text.h"
 #include "musclesim/model/family_fields.h"
 
@@ -132,6 +135,58 @@ TEST(PaperModelFields, ANestedMapHoldsOnlyItsKeys) {
               HasSubstr("unknown key; allowed here: v_max, n, limit"));
   EXPECT_THAT(Error("active_length.sigmas", "1"),
               HasSubstr("allowed here: sigma, optimal_range, gaussians, fit"));
+}
+
+// The Gaussians, a list of sub-parts: each item's numbers read into its own component (the
+// file's width is b_k, Gaussian::precision), the item map holding only their keys, the list
+// not empty; L_opt a list of exactly two numbers.
+TEST(PaperModelFields, EachGaussianIsReadIntoItsComponent) {
+  Keys keys = Base();
+  keys[5].second =
+      "[{amplitude: 0.05, width: 90, center: 0.097}, {amplitude: -0.01, width: 40, center: 0.1}]";
+  const ModelSpec model = ParseModelSpec("model.yaml", Flow(keys) + "\n");
+  const std::vector<Gaussian>& g = model.params.active_length.gaussians;
+  ASSERT_EQ(g.size(), 2u);
+  EXPECT_EQ(g[0].amplitude, 0.05);
+  EXPECT_EQ(g[0].precision, 90.0);
+  EXPECT_EQ(g[0].center, 0.097);
+  EXPECT_EQ(g[1].amplitude, -0.01);
+  EXPECT_EQ(g[1].precision, 40.0);
+  EXPECT_EQ(g[1].center, 0.1);
+  EXPECT_EQ(model.params.active_length.optimal_min, 0.095);
+  EXPECT_EQ(model.params.active_length.optimal_max, 0.105);
+
+  const std::string misspelt = Error("active_length.gaussians",
+                                     "[{amplitude: 0.05, width: 90, center: 0.097}, "
+                                     "{amplitude: 0.05, widht: 90, center: 0.097}]");
+  EXPECT_THAT(misspelt, HasSubstr("model.active_length.gaussians[1].widht (model.yaml:1:"));
+  EXPECT_THAT(misspelt, HasSubstr("allowed here: amplitude, width, center"));
+  EXPECT_THAT(Error("active_length.gaussians", "[{amplitude: 0.05, center: 0.097}]"),
+              HasSubstr("model.active_length.gaussians[0].width"));
+  EXPECT_THAT(Error("active_length.gaussians", "[]"),
+              HasSubstr("must be a non-empty list of {amplitude, width, center}"));
+  const std::string one_end = Error("active_length.optimal_range", "[0.095]");
+  EXPECT_THAT(one_end, HasSubstr("model.active_length.optimal_range = "));
+  EXPECT_THAT(one_end, HasSubstr("2"));
+}
+
+// A block written by its description reads back as the same numbers: MuJoCo's lists of two
+// as lists, the nested maps as maps.
+TEST(PaperModelFields, AFamilysFieldsWrittenReadBack) {
+  const ModelFamily& mujoco =
+      *std::find_if(ModelFamilies().begin(), ModelFamilies().end(),
+                    [](const ModelFamily& f) { return std::string_view(f.type) == "mujoco"; });
+  const ModelSpec given = ParseModelSpec(
+      "model.yaml",
+      "{family: mujoco, f_iso: 100, lmax: 1.5, range: [0.7, 1.1], lengthrange: [0.1, 0.3]}\n");
+  const std::string text = FlowFields(mujoco, given.params);
+  EXPECT_THAT(text, HasSubstr("range: [0.7, 1.1], lengthrange: [0.1, 0.3]"));
+  const ModelSpec back = ParseModelSpec("model.yaml", "{family: mujoco, " + text + "}\n");
+  for (const NumberField<ModelParams>& field : mujoco.fields) {
+    EXPECT_EQ(field.get(back.params), field.get(given.params)) << field.key;
+  }
+  const std::string paper = FlowFields(Paper(), ParseModelSpec("m.yaml", Flow(Base())).params);
+  EXPECT_THAT(paper, HasSubstr("active_length: {sigma: 1, optimal_range: [0.095, 0.105]}"));
 }
 
 }  // namespace

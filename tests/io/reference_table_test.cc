@@ -27,6 +27,8 @@
 #include "musclesim/io/readers/model_text.h"
 #include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/model/family_fields.h"
+#include "musclesim/scenario/parameter.h"
+#include "musclesim/scenario/scenario.h"
 #include "musclesim/scenario/setting_fields.h"
 #include "musclesim/solver/solver_fields.h"
 
@@ -140,6 +142,16 @@ std::string NetworkError(const std::string& text) {
   return "(read)";
 }
 
+// The rule a handle of `path` on `scenario` is refused with, or "found".
+std::string ParameterRefusal(const Scenario& scenario, const std::string& path) {
+  try {
+    scenario.parameter(path);
+  } catch (const ParameterError& error) {
+    return error.rule();
+  }
+  return "found";
+}
+
 // The inner text of a map holding every field of `variant` (`name_key: type` first), nested
 // fields in their own maps: `changed` at `value`, each other ranged field at half its maximum.
 template <typename Part>
@@ -202,6 +214,38 @@ void ExpectEachBoundRefused(const std::vector<PartVariant<Part>>& variants,
 constexpr const char* kTwoNodes =
     "nodes:\n  - {name: wall, fixed: 0.0}\n  - {name: load, mass: 1.0, position: 0.1}\n";
 constexpr const char* kTime = "time: {start: 0.0, end: 0.1}\n";
+
+// The output block through the reader and as handles: `interval` a time or the word `steps`
+// (a row per step, and then no number to vary), absent a thousandth of the span; `file` any
+// text but the empty one, absent the verb's own.
+TEST(ReferenceTable, TheReaderReadsTheOutputBlock) {
+  const auto file = [](const std::string& output) {
+    return std::string(kTwoNodes) +
+           "elements:\n  - {name: e, type: spring, from: wall, to: load, stiffness: 10, "
+           "rest_length: 0.1}\n" +
+           kTime + output;
+  };
+  const auto read = [&file](const std::string& output) {
+    return ReadScenario(ParseDocument("net.yaml", file(output)), "net.yaml");
+  };
+  const Scenario steps = read("output: {interval: steps, file: rows.csv}\n");
+  EXPECT_TRUE(steps.output.every_step);
+  EXPECT_EQ(steps.output.interval, 0.0);
+  EXPECT_EQ(steps.output.file, "rows.csv");
+  EXPECT_THAT(ParameterRefusal(steps, "output.interval"), HasSubstr("names no numeric setting"));
+  Scenario timed = read("output: {interval: 0.002}\n");
+  EXPECT_FALSE(timed.output.every_step);
+  EXPECT_EQ(timed.output.interval, 0.002);
+  EXPECT_EQ(timed.output.file, "");
+  EXPECT_EQ(timed.parameter("output.interval").Get(timed), 0.002);
+  timed.parameter("output.interval").Set(timed, 0.004);
+  EXPECT_EQ(timed.output.interval, 0.004);
+  EXPECT_EQ(read("output: {phase_tolerance: 0.01}\n").output.interval, 0.1 / 1000.0);
+  EXPECT_THAT(NetworkError(file("output: {file: \"\"}\n")),
+              HasSubstr("output.file = \"\" (net.yaml:7:16): must not be empty"));
+  EXPECT_THAT(NetworkError(file("output: {interval: step}\n")),
+              HasSubstr("output.interval = step (net.yaml:7:20): must be a number"));
+}
 
 TEST(ReferenceTable, TheReaderAppliesEachLawsRanges) {
   ExpectEachBoundRefused(ElementLaws(), "type", "elements[0].", [](const std::string& fields) {

@@ -249,6 +249,46 @@ TEST(Parameter, PathsThatNameNoNumberAreRefused) {
   EXPECT_THAT(Refusal(network, "colour"), HasSubstr("names no numeric value of the scenario"));
 }
 
+// A model's lists (model/family_fields.h): L_opt and MuJoCo's pairs are lists of numbers, the
+// Gaussians a list of sub-parts; each item's number is a handle, an index past the list or a
+// list named whole is refused.
+TEST(Parameter, AModelsListsAreIndexedWithinThem) {
+  const Scenario paper = LoadScenario(FixturePath("actuator.yaml"));
+  EXPECT_EQ(paper.models.at("model").spec.params.active_length.gaussians.size(), 1u);
+  EXPECT_THAT(Refusal(paper, "model.active_length.optimal_range"),
+              HasSubstr("needs an index of optimal_range"));
+  EXPECT_THAT(Refusal(paper, "model.active_length.optimal_range[2]"),
+              HasSubstr("indexes past the end of optimal_range (2)"));
+  EXPECT_THAT(Refusal(paper, "model.active_length.gaussians"),
+              HasSubstr("needs an index of gaussians"));
+  EXPECT_THAT(Refusal(paper, "model.active_length.gaussians[1].width"),
+              HasSubstr("indexes past the end of gaussians (1)"));
+  EXPECT_THAT(Refusal(paper, "model.active_length.gaussians[0]"),
+              HasSubstr("names a block, not one number"));
+  EXPECT_THAT(Refusal(paper, "model.active_length.gaussians[0].widht"),
+              HasSubstr("names no field of a Gaussian (amplitude, width, center)"));
+
+  const std::string path = testing::WriteTempFile(
+      "mujoco_lists.yaml",
+      "models:\n  m: {family: mujoco, f_iso: 100, range: [0.7, 1.1], lengthrange: [0.1, 0.3]}\n"
+      "nodes:\n  - {name: wall, fixed: 0.0}\n  - {name: tip, mass: 1.0, position: 0.2}\n"
+      "elements:\n  - {name: m1, type: actuator, from: wall, to: tip, model: m, "
+      "activation: {type: constant, value: 0.5}}\n"
+      "time: {start: 0.0, end: 0.1}\n");
+  Scenario mujoco = LoadScenario(path);
+  const MujocoMuscleParams& m = mujoco.models.at("m").spec.params.mujoco;
+  EXPECT_EQ(m.range[0], 0.7);
+  EXPECT_EQ(m.range[1], 1.1);
+  EXPECT_EQ(m.lengthrange[0], 0.1);
+  EXPECT_EQ(m.lengthrange[1], 0.3);
+  ExpectKeysRead(mujoco, {{"models.m.range[1]", 1.1}, {"models.m.lengthrange[0]", 0.1}});
+  mujoco.parameter("models.m.lengthrange[1]").Set(mujoco, 0.4);
+  EXPECT_EQ(mujoco.models.at("m").spec.params.mujoco.lengthrange[1], 0.4);
+  EXPECT_THAT(Refusal(mujoco, "models.m.range"), HasSubstr("needs an index of range"));
+  EXPECT_THAT(Refusal(mujoco, "models.m.lengthrange[2]"),
+              HasSubstr("indexes past the end of lengthrange (2)"));
+}
+
 // In 2 or 3 dimensions a node's coordinate is indexed, nodes[i].position[1] its y, and the
 // gravity is gravity[c]; on a line neither takes an index. (Built in code: Get and Assign
 // check nothing of the network, so this holds whatever the engine does in the plane.)

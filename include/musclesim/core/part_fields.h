@@ -50,6 +50,11 @@ struct NumberField {
   // massless junction). A parameter handle keeps to `range`: the value changes the part's kind.
   std::optional<double> also{};
   const char* also_means = "";
+  // A word a file may give in the number's place, what it means, and how it sets the part (an
+  // output interval's `steps`: a row per step); `given` then tells the part lacks a number.
+  const char* word = nullptr;
+  const char* word_means = "";
+  std::function<void(Part&)> set_word{};
 };
 
 // The rule a file's value of `field` must meet: its range's, for an integer field "must be an
@@ -93,6 +98,16 @@ struct PointField {
 inline std::string CoordinateKey(const std::string& key, std::size_t c) {
   return c == 0 ? key : key + "[" + std::to_string(c) + "]";
 }
+
+// A text of a part that is no name and no choice (the output's file path): any text but the
+// empty one where given; absent leaves the part's own (its default, told in `doc`).
+template <typename Part>
+struct TextField {
+  std::string key;
+  const char* doc = "";
+  std::function<std::string(const Part&)> get{};
+  std::function<void(Part&, std::string)> set{};
+};
 
 // One name of a part, chosen from a list (a solver's method: bdf or adams).
 template <typename Part>
@@ -159,6 +174,90 @@ std::vector<std::string> NameKeys(const std::vector<NameField<Part>>& names, boo
   return keys;
 }
 
+// A number of a list of numbers in a part ("lengthrange: [0.5, 1.5]") is a field whose key
+// ends in its index: "lengthrange[1]". A list's fields come together, from index 0 on, and a
+// file gives the list with exactly as many numbers.
+struct ListElement {
+  std::string_view list;  // the list's key: "lengthrange"
+  std::size_t index = 0;
+};
+
+// The index "[i]" at the start of `text` and the rest after it; none when it has none.
+inline std::optional<std::pair<std::size_t, std::string_view>> LeadingIndex(std::string_view text) {
+  const std::size_t close = text.find(']');
+  if (text.empty() || text.front() != '[' || close == std::string_view::npos || close < 2) {
+    return std::nullopt;
+  }
+  std::size_t index = 0;
+  for (const char c : text.substr(1, close - 1)) {
+    if (c < '0' || c > '9') return std::nullopt;
+    index = index * 10 + static_cast<std::size_t>(c - '0');
+  }
+  return std::pair{index, text.substr(close + 1)};
+}
+
+// The list and index of a field's key that ends in "[i]"; none for any other key.
+inline std::optional<ListElement> ElementOf(std::string_view key) {
+  const std::size_t open = key.rfind('[');
+  if (open == std::string_view::npos || open == 0) return std::nullopt;
+  const auto index = LeadingIndex(key.substr(open));
+  if (!index || !index->second.empty()) return std::nullopt;
+  return ListElement{key.substr(0, open), index->first};
+}
+
+// A list of sub-parts of a part, each a map of the same numbers (the paper's Gaussians, each
+// {amplitude, width, center}). Its items' fields are the part's own, made for item k: their
+// keys the item's ("width"), their get and set on the part's item k.
+template <typename Part>
+struct ListField {
+  std::string key;            // "active_length.gaussians"
+  const char* item = "";      // one item, in messages: "a Gaussian"
+  const char* doc = "";       // what the list is, for the reference table
+  bool required = true;       // else absent leaves the part's list as it is
+  std::size_t min_items = 1;  // a file's list has at least these
+  std::function<std::size_t(const Part&)> size{};
+  std::function<void(Part&, std::size_t)> resize{};  // to n items, the new ones default
+  std::function<std::vector<NumberField<Part>>(std::size_t)> item_fields{};
+};
+
+// The list field of the items `items(part)` (a generic lambda giving the part's vector, for a
+// const part and a mutable one), each described by `fields` of its type.
+template <typename Part, typename Item, typename Items>
+ListField<Part> ItemList(const char* key, const char* item, const char* doc, Items items,
+                         std::vector<NumberField<Item>> fields) {
+  ListField<Part> list{key, item, doc};
+  list.size = [items](const Part& part) { return items(part).size(); };
+  list.resize = [items](Part& part, std::size_t n) { items(part).resize(n); };
+  list.item_fields = [items, fields = std::move(fields)](std::size_t k) {
+    std::vector<NumberField<Part>> of_item;
+    for (const NumberField<Item>& field : fields) {
+      NumberField<Part> outer = {
+          field.key,
+          field.range,
+          field.default_value,
+          field.doc,
+          [items, k, get = field.get](const Part& part) { return get(items(part)[k]); },
+          [items, k, set = field.set](Part& part, double v) { set(items(part)[k], v); },
+          field.partial,
+          field.values,
+          field.integer};
+      of_item.push_back(std::move(outer));
+    }
+    return of_item;
+  };
+  return list;
+}
+
+// "amplitude, width, center": the keys of an item of `list`.
+template <typename Part>
+std::string ItemKeys(const ListField<Part>& list) {
+  std::string keys;
+  for (const NumberField<Part>& field : list.item_fields(0)) {
+    keys.append(keys.empty() ? "" : ", ").append(field.key);
+  }
+  return keys;
+}
+
 // One variant of a part (an element law, a kind of load): the `type` a file names and, when
 // a type has several variants, the key whose presence selects this one.
 template <typename Part>
@@ -172,6 +271,8 @@ struct PartVariant {
   std::vector<NumberField<Part>> fields;
   std::vector<PointField<Part>> points;  // its points, read after the numbers
   std::vector<WordField<Part>> words;    // its names chosen from a list, read after the points
+  std::vector<ListField<Part>> lists;    // its lists of sub-parts, read after the words
+  std::vector<TextField<Part>> texts;    // its free texts (a path), read last
   std::vector<const char*> other_keys;   // keys read by the part's own reader (a table's points)
   std::function<bool(const Part&)> is;   // whether a part is of this variant
   std::function<void(Part&)> make;       // gives a part this variant's kind, before its fields
@@ -230,6 +331,19 @@ PartVariant<Part> OnlyVariant(const char* type, const char* law,
   return variant;
 }
 
+// How many numbers the list `list` of `variant` has: its fields "list[i]".
+template <typename Part>
+std::size_t ListLength(const PartVariant<Part>& variant, std::string_view list) {
+  std::size_t length = 0;
+  for (const NumberField<Part>& field : variant.fields) {
+    const std::string_view key = field.key;
+    if (key.substr(0, list.size()) != list) continue;
+    const auto index = LeadingIndex(key.substr(list.size()));
+    if (index && index->second.empty()) ++length;
+  }
+  return length;
+}
+
 // The field of `variant` whose key is `key` ("exponential.k"); null when it has none.
 template <typename Part>
 const NumberField<Part>* FindField(const PartVariant<Part>& variant, std::string_view key) {
@@ -268,8 +382,38 @@ std::string FieldKeys(const PartVariant<Part>& variant) {
   return keys;
 }
 
-// The first key of a field's path: "exponential" of "exponential.k".
-inline std::string_view HeadKey(std::string_view key) { return key.substr(0, key.find('.')); }
+// The first key of a field's path: "exponential" of "exponential.k", "range" of "range[1]".
+inline std::string_view HeadKey(std::string_view key) {
+  return key.substr(0, key.find_first_of(".["));
+}
+
+// An item field of one of `variant`'s lists that a key path names
+// ("active_length.gaussians[1].width"): the list, the item's index (maybe past the part's
+// items), and the field's key in the item ("width"), maybe none of its fields.
+template <typename Part>
+struct ListItemKey {
+  const ListField<Part>* list = nullptr;
+  std::optional<std::size_t> index;  // none: the list itself
+  std::string leaf;
+};
+
+// The item field `key` names among `variant`'s lists; none when it is of no list. The list's
+// key alone has no index, and with an index and no field below it the leaf is "".
+template <typename Part>
+std::optional<ListItemKey<Part>> FindListItem(const PartVariant<Part>& variant,
+                                              std::string_view key) {
+  for (const ListField<Part>& list : variant.lists) {
+    if (key.substr(0, list.key.size()) != list.key) continue;
+    std::string_view rest = key.substr(list.key.size());
+    if (rest.empty()) return ListItemKey<Part>{&list, std::nullopt, ""};
+    const auto index = LeadingIndex(rest);
+    if (!index || (!index->second.empty() && index->second.front() != '.')) continue;
+    rest = index->second;
+    return ListItemKey<Part>{&list, index->first,
+                             std::string(rest.empty() ? rest : rest.substr(1))};
+  }
+  return std::nullopt;
+}
 
 // Throws ParameterError(key, value, rule) unless `value` lies in `range` (NaN never does).
 void RequireInRange(std::string_view key, double value, const InputRange& range);

@@ -4,8 +4,9 @@
 // attributes), with their keys, units, ranges, defaults and meaning. Their readers, their
 // parameter handles, the closed-form derivatives' names (model/tension_parameter.h),
 // Validate(ModelParams) and the table in docs/guide/model.md derive from these. A family's
-// `type` is its `family:` name. The paper's Gaussians and L_opt, and MuJoCo's lists of two,
-// are their readers' own (`other_keys`).
+// `type` is its `family:` name. The paper's L_opt and MuJoCo's lists of two are lists of
+// numbers ("range[1]"), the paper's Gaussians a list of sub-parts; a fit in their place is
+// the paper's reader's own (`other_keys`).
 #pragma once
 
 #include <vector>
@@ -16,6 +17,10 @@
 namespace musclesim {
 
 using ModelFamily = PartVariant<ModelParams>;
+
+// A Gaussian's numbers: amplitude, width (Gaussian::precision), center; each finite, their
+// rules the model's. Tagged with their TensionParameterKind.
+const std::vector<NumberField<Gaussian>>& GaussianFields();
 
 // paper, degroote2016, mujoco.
 const std::vector<ModelFamily>& ModelFamilies();

@@ -1,7 +1,8 @@
 // The run's settings described once (core/part_fields.h): the `time:` span and the numbers of
-// the `output:` block. Their readers, their `time.*` and `output.phase_tolerance` parameter
-// handles and their reference tables derive from these; the rules between keys (the span
-// against the time scale, the output interval against the span) stay the readers'.
+// the `output:` block. Their readers, their `time.*`, `output.interval` and
+// `output.phase_tolerance` parameter handles and their reference tables derive from these;
+// the rules between keys (the span against the time scale, the output interval against the
+// span) stay the readers'.
 #pragma once
 
 #include <vector>
@@ -20,8 +21,8 @@ struct TimeSpan {
 // One variant, `time`: start and end, both required.
 const std::vector<PartVariant<TimeSpan>>& TimeBlock();
 
-// One variant, `output`: phase_tolerance, optional; `file` and `interval` (a time or `steps`)
-// are its reader's own keys.
+// One variant, `output`: interval (a time or `steps`; its rule against the span the reader's)
+// and phase_tolerance, both optional, and the text `file`.
 const std::vector<PartVariant<OutputRequest>>& OutputBlock();
 
 }  // namespace musclesim

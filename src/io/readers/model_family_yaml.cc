@@ -11,27 +11,6 @@
 
 namespace musclesim {
 
-namespace {
-
-using yaml::Join;
-using yaml::Required;
-
-// MuJoCo's lists of two, `lengthrange` required and `range` optional.
-void ReadMujocoLists(const yaml::Source& src, const Document& node, const std::string& path,
-                     MujocoMuscleParams& p) {
-  const std::vector<double> lengthrange = yaml::ReadNumbers(
-      src, Required(src, node, path, "lengthrange"), Join(path, "lengthrange"), 2);
-  p.lengthrange[0] = lengthrange[0];
-  p.lengthrange[1] = lengthrange[1];
-  if (node["range"]) {
-    const std::vector<double> range = yaml::ReadNumbers(src, node["range"], Join(path, "range"), 2);
-    p.range[0] = range[0];
-    p.range[1] = range[1];
-  }
-}
-
-}  // namespace
-
 ModelSpec ReadFamilyModelSpec(const yaml::Source& src, const Document& node,
                               const std::string& path, CurveFamily family) {
   ModelSpec model;
@@ -44,7 +23,6 @@ ModelSpec ReadFamilyModelSpec(const yaml::Source& src, const Document& node,
   yaml::RequireMap(src, node, path, keys);
   described.make(p);
   ReadFields(src, node, path, described, p);
-  if (family == CurveFamily::kMujoco) ReadMujocoLists(src, node, path, p.mujoco);
   try {
     TensionModel check(p);
   } catch (const ParameterError& error) {

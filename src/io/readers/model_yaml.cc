@@ -77,35 +77,12 @@ FitSpec ReadFitSpec(const yaml::Source& src, const Document& node, const std::st
   return spec;
 }
 
-std::vector<Gaussian> ReadGaussians(const yaml::Source& src, const Document& node,
-                                    const std::string& path) {
-  if (!node.IsSequence() || node.size() == 0) {
-    yaml::Fail(src, node, path, yaml::Describe(node),
-               "must be a non-empty list of {amplitude, width, center}");
-  }
-  std::vector<Gaussian> gaussians;
-  for (std::size_t k = 0; k < node.size(); ++k) {
-    const std::string at = path + "[" + std::to_string(k) + "]";
-    const Document& item = node[k];
-    yaml::RequireMap(src, item, at, {"amplitude", "width", "center"});
-    gaussians.push_back(
-        {yaml::ReadNumber(src, Required(src, item, at, "amplitude"), Join(at, "amplitude")),
-         yaml::ReadNumber(src, Required(src, item, at, "width"), Join(at, "width")),
-         yaml::ReadNumber(src, Required(src, item, at, "center"), Join(at, "center"))});
-  }
-  return gaussians;
-}
-
-// The paper's active_length block into `model` (its Gaussians listed or fitted at load),
-// whose keys and sigma ReadFields has read; whether they were fitted.
+// The paper's active_length block into `model`: its Gaussians listed, which ReadFields has
+// read with its keys, sigma and L_opt, or fitted at load; whether they were fitted.
 bool ReadActiveLength(const yaml::Source& src, const Document& active,
                       const std::string& active_path, ModelSpec& model) {
   ModelParams& p = model.params;
-  const std::vector<double> range =
-      yaml::ReadNumbers(src, Required(src, active, active_path, "optimal_range"),
-                        Join(active_path, "optimal_range"), 2);
-  p.active_length.optimal_min = range[0];
-  p.active_length.optimal_max = range[1];
+  const double range[2] = {p.active_length.optimal_min, p.active_length.optimal_max};
   const bool has_list = static_cast<bool>(active["gaussians"]);
   const bool has_fit = static_cast<bool>(active["fit"]);
   if (has_list == has_fit) {
@@ -118,10 +95,7 @@ bool ReadActiveLength(const yaml::Source& src, const Document& active,
   range_only.gaussians = {Gaussian{1.0, 1.0, 0.0}};
   yaml::ValidateAt(src, active, active_path, [&] { Validate(range_only); });
 
-  if (has_list) {
-    p.active_length.gaussians =
-        ReadGaussians(src, active["gaussians"], Join(active_path, "gaussians"));
-  } else {
+  if (!has_list) {
     const std::string fit_path = Join(active_path, "fit");
     model.fit = ReadFitSpec(src, active["fit"], fit_path);
     // a preset peaks at its optimal length: f_L, normalised over L_opt, follows it only if

@@ -33,6 +33,8 @@ void AddVariantKeys(const PartVariant<Part>& variant, std::vector<std::string>& 
   }
   for (const PointField<Part>& point : variant.points) AddKey(keys, point.key);
   for (const WordField<Part>& word : variant.words) AddKey(keys, word.key);
+  for (const ListField<Part>& list : variant.lists) AddKey(keys, std::string(HeadKey(list.key)));
+  for (const TextField<Part>& text : variant.texts) AddKey(keys, text.key);
   for (const char* other : variant.other_keys) AddKey(keys, std::string(HeadKey(other)));
 }
 
@@ -60,6 +62,7 @@ std::vector<std::string> NestedKeys(const PartVariant<Part>& variant, const std:
     }
   };
   for (const NumberField<Part>& field : variant.fields) add(field.key);
+  for (const ListField<Part>& list : variant.lists) add(list.key);
   for (const char* other : variant.other_keys) add(other);
   return keys;
 }
@@ -151,11 +154,16 @@ void ReadPoints(const yaml::Source& src, const Document& item, const std::string
   }
 }
 
+template <typename Part>
+void ReadLists(const yaml::Source& src, const Document& item, const std::string& path,
+               const PartVariant<Part>& variant, Part& part);
+
 // Reads every field of `variant` from the map `item` into `part`, in the order listed: a
 // nested field ("velocity.eccentric.n") from its maps, whose keys are checked when each is
-// first met; a map may be left out when its fields have defaults or are optional. Then its
-// points, in `dimensions` coordinates, and its words. `signal` bounds the fields whose values
-// are the signal's (nullptr: any number).
+// first met; a map may be left out when its fields have defaults or are optional; a list's
+// numbers ("range[0]", "range[1]") from a list of exactly as many. Then its points, in
+// `dimensions` coordinates, its words, its lists of sub-parts and its texts. `signal` bounds the
+// fields whose values are the signal's (nullptr: any number).
 template <typename Part>
 void ReadFields(const yaml::Source& src, const Document& item, const std::string& path,
                 const PartVariant<Part>& variant, Part& part, const InputRange* signal = nullptr,
@@ -184,12 +192,29 @@ void ReadFields(const yaml::Source& src, const Document& item, const std::string
       begin = dot + 1;
     }
     const std::string leaf = field.key.substr(begin);
-    if (absent || (!(*map)[leaf] && may_be_absent)) {
+    const std::optional<ListElement> element = ElementOf(leaf);
+    const std::string map_key = element ? std::string(element->list) : leaf;
+    if (absent || (!(*map)[map_key] && may_be_absent)) {
       if (field.default_value) field.set(part, *field.default_value);
       continue;
     }
-    const Document& given = yaml::Required(src, *map, at, leaf.c_str());
-    const std::string key_path = yaml::Join(at, leaf);
+    const Document* value_node = &yaml::Required(src, *map, at, map_key.c_str());
+    std::string key_path = yaml::Join(at, map_key);
+    if (element) {
+      // the list's shape once, at its first number
+      if (element->index == 0) {
+        const std::string list_key = field.key.substr(0, begin) + map_key;
+        yaml::ReadNumbers(src, *value_node, key_path, ListLength(variant, list_key));
+      }
+      value_node = &(*value_node)[element->index];
+      // appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "[" + std::string
+      key_path.append("[").append(std::to_string(element->index)).append("]");
+    }
+    const Document& given = *value_node;
+    if (field.word != nullptr && given.IsScalar() && given.Scalar() == field.word) {
+      field.set_word(part);
+      continue;
+    }
     const InputRange* range = field.values == FieldValues::kRange    ? &field.range
                               : field.values == FieldValues::kSignal ? signal
                                                                      : nullptr;
@@ -206,6 +231,59 @@ void ReadFields(const yaml::Source& src, const Document& item, const std::string
   }
   ReadPoints(src, item, path, variant, part, dimensions);
   ReadWords(src, item, path, variant, part);
+  ReadLists(src, item, path, variant, part);
+  for (const TextField<Part>& text : variant.texts) {
+    const Document& given = item[text.key];
+    if (!given) continue;
+    const std::string key_path = yaml::Join(path, text.key);
+    std::string value = yaml::ReadString(src, given, key_path);
+    if (value.empty()) yaml::Fail(src, given, key_path, "\"\"", "must not be empty");
+    text.set(part, std::move(value));
+  }
+}
+
+// Reads the list of sub-parts `list` at `node` into `part`: at least its fewest items, each a
+// map of the item's fields.
+template <typename Part>
+void ReadList(const yaml::Source& src, const Document& node, const std::string& path,
+              const ListField<Part>& list, Part& part) {
+  if (!node.IsSequence() || node.size() < list.min_items) {
+    yaml::Fail(src, node, path, yaml::Describe(node),
+               std::string("must be a ") + (list.min_items > 0 ? "non-empty " : "") + "list of {" +
+                   ItemKeys(list) + "}");
+  }
+  list.resize(part, node.size());
+  for (std::size_t k = 0; k < node.size(); ++k) {
+    const std::string at = path + "[" + std::to_string(k) + "]";
+    const PartVariant<Part> item = OnlyVariant<Part>(list.item, "", list.item_fields(k));
+    std::vector<std::string> keys;
+    AddVariantKeys(item, keys);
+    yaml::RequireMap(src, node[k], at, keys);
+    ReadFields(src, node[k], at, item, part);
+  }
+}
+
+// Reads the lists of sub-parts of `variant` from the map `item` into `part`, each from its
+// nested maps (checked by ReadFields where a field opened them); one not required may be
+// absent, with its maps.
+template <typename Part>
+void ReadLists(const yaml::Source& src, const Document& item, const std::string& path,
+               const PartVariant<Part>& variant, Part& part) {
+  for (const ListField<Part>& list : variant.lists) {
+    const Document* map = &item;
+    std::string at = path;
+    std::size_t begin = 0;
+    for (std::size_t dot = list.key.find('.'); map != nullptr && dot != std::string::npos;
+         dot = list.key.find('.', begin)) {
+      const std::string head = list.key.substr(begin, dot - begin);
+      map = (*map)[head] || list.required ? &yaml::Required(src, *map, at, head.c_str()) : nullptr;
+      at = yaml::Join(at, head);
+      begin = dot + 1;
+    }
+    const std::string leaf = list.key.substr(begin);
+    if (map == nullptr || (!(*map)[leaf] && !list.required)) continue;
+    ReadList(src, yaml::Required(src, *map, at, leaf.c_str()), yaml::Join(at, leaf), list, part);
+  }
 }
 
 }  // namespace musclesim

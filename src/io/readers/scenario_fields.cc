@@ -234,32 +234,19 @@ OutputRequest ReadOutput(const yaml::Source& src, const Document& node, const st
                          double t_start, double t_end) {
   OutputRequest output;
   yaml::RequireMap(src, node, path, VariantKeys(OutputBlock(), "output"));
-  if (node["file"]) {
-    output.file = yaml::ReadString(src, node["file"], Join(path, "file"));
-    if (output.file.empty()) {
-      yaml::Fail(src, node["file"], Join(path, "file"), "\"\"", "must not be empty");
-    }
-  }
   const double span = t_end - t_start;
   output.interval = span / 1000.0;
-  if (const Document& interval = node["interval"]) {
-    if (interval.IsScalar() && interval.Scalar() == "steps") {
-      output.every_step = true;
-      output.interval = 0.0;
-    } else {
-      output.interval = yaml::ReadNumber(src, interval, Join(path, "interval"));
-      const double shortest = kMinIntervalRelative * TimeScale(t_start, t_end);
-      if (!(output.interval >= shortest && span / output.interval <= 1e8)) {
-        yaml::Fail(src, interval, Join(path, "interval"), yaml::Describe(interval),
-                   "must be `steps` or a time [s] giving at most 1e8 rows (at least " +
-                       FormatNumber(span / 1e8) + " s here) and at least " +
-                       FormatNumber(shortest) +
-                       " s, 1e-12 of the time scale max(1 s, |start|, |end|), so that "
-                       "double precision tells the output times apart");
-      }
+  ReadFields(src, node, path, OutputBlock().front(), output);
+  if (const Document& interval = node["interval"]; interval && !output.every_step) {
+    const double shortest = kMinIntervalRelative * TimeScale(t_start, t_end);
+    if (!(output.interval >= shortest && span / output.interval <= 1e8)) {
+      yaml::Fail(src, interval, Join(path, "interval"), yaml::Describe(interval),
+                 "must be `steps` or a time [s] giving at most 1e8 rows (at least " +
+                     FormatNumber(span / 1e8) + " s here) and at least " + FormatNumber(shortest) +
+                     " s, 1e-12 of the time scale max(1 s, |start|, |end|), so that "
+                     "double precision tells the output times apart");
     }
   }
-  ReadFields(src, node, path, OutputBlock().front(), output);
   return output;
 }
 

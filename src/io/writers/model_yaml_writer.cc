@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "musclesim/io/writers/output_file.h"
+#include "musclesim/model/family_fields.h"
 
 namespace musclesim {
 
@@ -44,9 +45,16 @@ std::string TrailingComment(const std::vector<std::string>& comments) {
   return joined.empty() ? "" : "   # " + joined;
 }
 
+// "{amplitude: a, width: b, center: d}": its fields (model/family_fields.h).
 std::string GaussianMap(const Gaussian& g, NumberFormat number) {
-  return "{amplitude: " + number(g.amplitude) + ", width: " + number(g.precision) +
-         ", center: " + number(g.center) + "}";
+  std::string map;
+  for (const NumberField<Gaussian>& field : GaussianFields()) {
+    map.append(map.empty() ? "{" : ", ")
+        .append(field.key)
+        .append(": ")
+        .append(number(field.get(g)));
+  }
+  return map + "}";
 }
 
 std::string PassiveMap(const PassiveParams& p, NumberFormat number) {

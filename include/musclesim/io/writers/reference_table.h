@@ -1,6 +1,7 @@
 // The reference table of a described part (core/part_fields.h) in Markdown: a row per field
 // of each variant, with its key, unit, default, accepted values and their reason, and its
-// meaning; a row per point and per word field, with the names a word accepts. The tables in
+// meaning; a row per point and per word field, with the names a word accepts; a row per list
+// of sub-parts and per field of its items. The tables in
 // docs/guide/ are these, checked by tests/io/reference_table_test.cc.
 #pragma once
 
@@ -21,7 +22,10 @@ std::string AcceptedCell(const NumberField<Part>& field) {
              (field.also ? "; or exactly " + FormatNumber(*field.also) + ", " + field.also_means
                          : "");
     case FieldValues::kSignal: return "the signal's range";
-    case FieldValues::kFinite: return "any finite number; the rule in its meaning";
+    case FieldValues::kFinite:
+      return std::string("any finite number") +
+             (field.word ? std::string(", or `") + field.word + "`, " + field.word_means : "") +
+             "; the rule in its meaning";
   }
   return "";
 }
@@ -83,6 +87,19 @@ std::string ReferenceTable(const std::vector<PartVariant<Part>>& variants,
       for (std::string_view name : word.names) names.append(names.empty() ? "" : ", ").append(name);
       row(std::string("`") + word.key + "` | | " + std::string(word.default_name) +
           " | a name: " + names + " | " + word.doc);
+    }
+    for (const ListField<Part>& list : variant.lists) {
+      row(std::string("`") + list.key + "` | | " + (list.required ? "required" : "optional") +
+          " | a " + (list.min_items > 0 ? "non-empty " : "") + "list of {" + ItemKeys(list) +
+          "} | " + list.doc);
+      for (const NumberField<Part>& field : list.item_fields(0)) {
+        row(std::string("`") + list.key + "[k]." + field.key + "` | " + field.range.unit +
+            " | required | " + AcceptedCell(field) + " | " + field.doc);
+      }
+    }
+    for (const TextField<Part>& text : variant.texts) {
+      row(std::string("`") + text.key + "` | | optional | any text but the empty one | " +
+          text.doc);
     }
     for (const char* other : variant.other_keys) {
       row(std::string("`") + other + "` | | | its own rules (above) | ");
