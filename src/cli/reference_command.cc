@@ -38,7 +38,7 @@ PART is one of
             the families of activation dynamics (their `family:` in place of `type:`)
   time      the `time:` span
   solver    the `solver:` block: CVODES' tolerances, step guards, method and linear solver
-  output    the `output:` block's numbers (its file and interval have their own rules)
+  output    the `output:` block: the rows' interval (a time or `steps`), phase tolerance and file
 )";
 
 }  // namespace

@@ -22,6 +22,23 @@ PartVariant<PidGains> Pid() {
 
 }  // namespace
 
+const std::vector<NameField<Controller>>& ControllerNames() {
+  static const std::vector<NameField<Controller>> names{
+      MemberName("name", &Controller::name, "", "the controller's name, heading its CSV columns"),
+      MemberName("drives", &Controller::drives, "an actuator",
+                 "the actuator it drives; or co_contraction, a pair, instead", false)};
+  return names;
+}
+
+const std::vector<NameField<Measurement>>& MeasureNames() {
+  static const std::vector<NameField<Measurement>> names{
+      MemberName("element", &Measurement::element, "an element",
+                 "the element measured, its length or tension; or node instead", false),
+      MemberName("node", &Measurement::node, "a free node",
+                 "the node measured, its position; or element instead", false)};
+  return names;
+}
+
 const std::vector<PartVariant<PidGains>>& ControllerGains() {
   static const std::vector<PartVariant<PidGains>> gains{Pid()};
   return gains;

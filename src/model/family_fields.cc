@@ -173,27 +173,25 @@ ModelFamily MuJoCo() {
        Mujoco("fvmax", &MujocoMuscleParams::fvmax,
               Normalised(1.0, true, "the lengthening branch rises from 1 to fvmax"), m.fvmax,
               "the lengthening force, over F0")});
-  // lists of two, their rules (each pair increasing) the model's
+  // lists of two, each pair's order the model's rule
   const auto end = [](const char* list, std::size_t i, double(MujocoMuscleParams::*pair)[2],
-                      const char* unit, std::optional<double> fallback, const char* doc) {
-    Field field{std::string(list) + "[" + std::to_string(i) + "]",
-                InputRange{0.0, 0.0, unit, ""},
-                fallback,
-                doc,
-                [pair, i](const ModelParams& p) { return (p.mujoco.*pair)[i]; },
-                [pair, i](ModelParams& p, double v) { (p.mujoco.*pair)[i] = v; },
-                -1,
-                FieldValues::kFinite};
-    return field;
+                      const InputRange& range, std::optional<double> fallback, const char* doc) {
+    return Field{std::string(list) + "[" + std::to_string(i) + "]",
+                 range,
+                 fallback,
+                 doc,
+                 [pair, i](const ModelParams& p) { return (p.mujoco.*pair)[i]; },
+                 [pair, i](ModelParams& p, double v) { (p.mujoco.*pair)[i] = v; }};
   };
-  family.fields.push_back(end("range", 0, &MujocoMuscleParams::range, "-", m.range[0],
+  const InputRange normalised{0.0, 1e3, "-", "a length over the optimal one", true};
+  family.fields.push_back(end("range", 0, &MujocoMuscleParams::range, normalised, m.range[0],
                               "the normalised length at lengthrange[0]"));
-  family.fields.push_back(end("range", 1, &MujocoMuscleParams::range, "-", m.range[1],
+  family.fields.push_back(end("range", 1, &MujocoMuscleParams::range, normalised, m.range[1],
                               "the normalised length at lengthrange[1], > range[0]"));
-  family.fields.push_back(end("lengthrange", 0, &MujocoMuscleParams::lengthrange, "m", std::nullopt,
-                              "the shortest actuator length MuJoCo scales by"));
-  family.fields.push_back(end("lengthrange", 1, &MujocoMuscleParams::lengthrange, "m", std::nullopt,
-                              "the longest, > lengthrange[0]"));
+  family.fields.push_back(end("lengthrange", 0, &MujocoMuscleParams::lengthrange, kPositionRange,
+                              std::nullopt, "the shortest actuator length MuJoCo scales by"));
+  family.fields.push_back(end("lengthrange", 1, &MujocoMuscleParams::lengthrange, kPositionRange,
+                              std::nullopt, "the longest, > lengthrange[0]"));
   return family;
 }
 

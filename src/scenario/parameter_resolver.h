@@ -118,7 +118,8 @@ class ParameterResolver {
   void FitField(std::size_t i);
   // A number of an item of a list of sub-parts of the model (a Gaussian's width).
   void ListItemField(const ListItemKey<ModelParams>& key);
-  // Fails unless `key_path` is a list of numbers of `family` indexed within it.
+  // Fails when `key_path`, which names no field of `family`, names one of its lists of
+  // numbers: without an index, or with one past its end; returns for any other path.
   void RequireListIndex(const PartVariant<ModelParams>& family, const std::string& key_path) const;
   // The coordinate step i names of a node's `key` (fixed, prescribed, position, velocity):
   // none on a line (0), an index below the dimensions in 2 or 3.

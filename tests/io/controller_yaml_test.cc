@@ -250,8 +250,8 @@ TEST(ControllerYaml, EntryRefusalsNameFileLineAndKey) {
       {edit("kd: -1.0", "kd: -1.0, kf: 2"), "kf",
        "controllers[0].gains.kf (@): unknown key; allowed here: kp, ki, kd"},
       {edit("    drives: muscle\n", "    drives: muscle\n    colour: red\n"), "colour",
-       "controllers[0].colour (@): unknown key; allowed here: name, type, measure, reference, "
-       "gains, feedforward, drives, co_contraction"},
+       "controllers[0].colour (@): unknown key; allowed here: name, type, drives, measure, "
+       "reference, gains, feedforward, co_contraction"},
       {edit("    gains: {kp: -200.0, ki: -2000.0, kd: -1.0}\n", ""), "name: hold",
        "controllers[0].gains (@): missing required key"},
       {edit("name: hold", "name: \"ho,ld\""), "\"ho,ld\"",

@@ -147,6 +147,9 @@ struct NameField {
   const char* doc = "";
   std::function<std::string(const Part&)> get{};
   std::function<void(Part&, std::string)> set{};
+  // Else absent leaves it empty: one of several a rule between keys chooses among (a
+  // controller's `drives` or its `co_contraction`), which the part's reader states.
+  bool required = true;
 
   bool is_own() const { return *refers_to == '\0'; }
 };
@@ -154,9 +157,13 @@ struct NameField {
 // The name field of the string `member` of a Part; `refers_to` "" for the part's own name.
 template <typename Part>
 NameField<Part> MemberName(const char* key, std::string Part::*member, const char* refers_to,
-                           const char* doc) {
-  return {key, refers_to, doc, [member](const Part& part) { return part.*member; },
-          [member](Part& part, std::string name) { part.*member = std::move(name); }};
+                           const char* doc, bool required = true) {
+  return {key,
+          refers_to,
+          doc,
+          [member](const Part& part) { return part.*member; },
+          [member](Part& part, std::string name) { part.*member = std::move(name); },
+          required};
 }
 
 // The keys of `names`, in the order a part's map lists them: its own name, then `type` (when

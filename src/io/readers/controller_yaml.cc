@@ -62,22 +62,23 @@ Measurement ReadMeasurement(const yaml::Source& src, const Document& item, const
                             int dimensions) {
   const Document& node = Required(src, item, path, "measure");
   const std::string at = Join(path, "measure");
-  yaml::RequireMap(src, node, at, {"element", "node", "quantity", "coordinate"});
+  std::vector<std::string> keys = NameKeys(MeasureNames(), false);
+  keys.insert(keys.end(), {"quantity", "coordinate"});
+  yaml::RequireMap(src, node, at, keys);
   if (static_cast<bool>(node["element"]) == static_cast<bool>(node["node"])) {
     yaml::Fail(src, node, at, yaml::Describe(node),
                "give exactly one of element (its quantity length or tension) or node (its "
                "quantity position)");
   }
   Measurement m;
+  ReadNames(src, node, at, MeasureNames(), m);
   if (node["element"]) {
-    m.element = yaml::ReadString(src, node["element"], Join(at, "element"));
     if (const Document& coordinate = node["coordinate"]) {
       yaml::Fail(src, coordinate, Join(at, "coordinate"), yaml::Describe(coordinate),
                  "only a node's position has coordinates: an element's length and tension are "
                  "numbers");
     }
   } else {
-    m.node = yaml::ReadString(src, node["node"], Join(at, "node"));
     m.coordinate = ReadCoordinate(src, node, at, dimensions);
   }
   const Document& quantity = Required(src, node, at, "quantity");
@@ -121,11 +122,11 @@ Controller ReadController(const yaml::Source& src, const Document& item, const s
                "must be a map: {name, type: pid, measure, reference, gains, drives or "
                "co_contraction}");
   }
-  yaml::RequireMap(
-      src, item, path,
-      {"name", "type", "measure", "reference", "gains", "feedforward", "drives", "co_contraction"});
+  std::vector<std::string> keys = NameKeys(ControllerNames(), true);
+  keys.insert(keys.end(), {"measure", "reference", "gains", "feedforward", "co_contraction"});
+  yaml::RequireMap(src, item, path, keys);
   Controller c;
-  c.name = ReadName(src, item, path);
+  ReadNames(src, item, path, ControllerNames(), c);
   const Document& type = Required(src, item, path, "type");
   const std::string kind = yaml::ReadString(src, type, Join(path, "type"));
   if (kind != kControllerTypes) {
@@ -150,9 +151,7 @@ Controller ReadController(const yaml::Source& src, const Document& item, const s
                "give exactly one of drives (the actuator driven) or co_contraction "
                "({actuators: [FIRST, SECOND], level}: an antagonist pair)");
   }
-  if (drives) {
-    c.drives = yaml::ReadString(src, drives, Join(path, "drives"));
-  } else {
+  if (!drives) {
     c.co_contraction = ReadCoContraction(src, pair, Join(path, "co_contraction"), t_start, t_end);
   }
   ValidateAt(src, item, path, [&] { Validate(c); });

@@ -240,10 +240,6 @@ void RequireList(const yaml::Source& src, const Document& node, const char* list
   }
 }
 
-std::string ReadName(const yaml::Source& src, const Document& item, const std::string& path) {
-  return yaml::ReadPlainName(src, item, path, "name");
-}
-
 Space ReadSpace(const yaml::Source& src, const Document& root) {
   Space space;
   if (const Document& node = root["dimensions"]) {

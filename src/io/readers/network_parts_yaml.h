@@ -26,11 +26,6 @@ struct NamedModels {
 // Requires `node`, the value of the top-level key `list`, to be a list of `what`.
 void RequireList(const yaml::Source& src, const Document& node, const char* list, const char* what);
 
-// The `name` of the map `item` (key path `path`): a node's, element's or controller's name
-// heads CSV columns ("load.position"), so it must be a plain name, which keeps the header
-// one comma-separated line whose names split at their last dot.
-std::string ReadName(const yaml::Source& src, const Document& item, const std::string& path);
-
 // The space of the top-level map `root` (docs/model.md 12): `dimensions`, 1, 2 or 3 (1 when
 // absent), and `gravity`, a list of `dimensions` numbers [m/s^2] (zero when absent; refused
 // on a line, where a hanging weight is a load of type mass).

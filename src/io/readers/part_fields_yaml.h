@@ -25,7 +25,8 @@ inline void AddKey(std::vector<std::string>& keys, std::string key) {
 }
 
 // Adds the keys of `variant`'s map to `keys`, each once, in order: its numbers', points',
-// words' and other keys' first steps.
+// words', lists', texts' and other keys' first steps (a list of numbers' key without its
+// index).
 template <typename Part>
 void AddVariantKeys(const PartVariant<Part>& variant, std::vector<std::string>& keys) {
   for (const NumberField<Part>& field : variant.fields) {
@@ -50,8 +51,8 @@ std::vector<std::string> VariantKeys(const std::vector<PartVariant<Part>>& varia
   return keys;
 }
 
-// The keys a nested map of `variant` may hold: the next step of every field and other key
-// below `prefix` ("velocity" gives v_max, n, epsilon, eccentric).
+// The keys a nested map of `variant` may hold: the next step of every field, list and other
+// key below `prefix` ("velocity" gives v_max, n, epsilon, eccentric).
 template <typename Part>
 std::vector<std::string> NestedKeys(const PartVariant<Part>& variant, const std::string& prefix) {
   std::vector<std::string> keys;
@@ -103,12 +104,14 @@ const PartVariant<Part>* SelectVariant(const yaml::Source& src, const Document& 
   return chosen;
 }
 
-// Reads `names` from the map `item` into `part`, in order, each required: the part's own a
-// plain name (yaml::ReadPlainName), a reference any text (the network resolves it when built).
+// Reads `names` from the map `item` into `part`, in order, each required unless marked not
+// (then absent is empty): the part's own a plain name (yaml::ReadPlainName), a reference any
+// text (the network resolves it when built).
 template <typename Part>
 void ReadNames(const yaml::Source& src, const Document& item, const std::string& path,
                const std::vector<NameField<Part>>& names, Part& part) {
   for (const NameField<Part>& name : names) {
+    if (!name.required && !item[name.key]) continue;
     if (name.is_own()) {
       name.set(part, yaml::ReadPlainName(src, item, path, name.key));
     } else {
@@ -211,7 +214,8 @@ void ReadFields(const yaml::Source& src, const Document& item, const std::string
       key_path.append("[").append(std::to_string(element->index)).append("]");
     }
     const Document& given = *value_node;
-    if (field.word != nullptr && given.IsScalar() && given.Scalar() == field.word) {
+    if (field.word != nullptr && field.set_word && given.IsScalar() &&
+        given.Scalar() == field.word) {
       field.set_word(part);
       continue;
     }

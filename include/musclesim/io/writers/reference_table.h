@@ -43,7 +43,8 @@ template <typename Owner>
 std::string NameRows(const std::vector<NameField<Owner>>& names) {
   std::string rows;
   for (const NameField<Owner>& name : names) {
-    rows.append("| every | | `").append(name.key).append("` | | required | ");
+    rows.append("| every | | `").append(name.key).append("` | | ");
+    rows.append(name.required ? "required | " : "optional | ");
     rows.append(AcceptedCell(name)).append(" | ").append(name.doc).append(" |\n");
   }
   return rows;
