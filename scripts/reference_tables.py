@@ -25,6 +25,7 @@ BLOCKS = {
     "time": ("docs/guide/scenarios.md", "time"),
     "solver": ("docs/guide/scenarios.md", "solver"),
     "output": ("docs/guide/scenarios.md", "output"),
+    "identify": ("docs/guide/identification.md", "identify"),
 }
 
 

@@ -12,6 +12,7 @@
 #include "musclesim/dynamics/load_kinds.h"
 #include "musclesim/dynamics/node_kinds.h"
 #include "musclesim/dynamics/waveform_shapes.h"
+#include "musclesim/io/readers/identify_spec.h"
 #include "musclesim/io/writers/reference_table.h"
 #include "musclesim/model/family_fields.h"
 #include "musclesim/scenario/setting_fields.h"
@@ -39,6 +40,7 @@ PART is one of
   time      the `time:` span
   solver    the `solver:` block: CVODES' tolerances, step guards, method and linear solver
   output    the `output:` block: the rows' interval (a time or `steps`), phase tolerance and file
+  identify  the blocks of `musclesim identify`'s data file: passive, active and velocity
 )";
 
 }  // namespace
@@ -73,10 +75,12 @@ int ReferenceCommand(int argc, char** argv) {
     std::cout << ReferenceTable(OutputBlock(), "block");
   } else if (part == "solver") {
     std::cout << ReferenceTable(SolverBlock(), "block");
+  } else if (part == "identify") {
+    std::cout << ReferenceTable(IdentifyDataBlocks(), "block");
   } else {
     throw UsageError("unknown part '" + part +
                      "': actuator, nodes, elements, loads, waveforms, gains, models, "
-                     "activation_dynamics, time, solver or output (see --help)");
+                     "activation_dynamics, time, solver, output or identify (see --help)");
   }
   return 0;
 }

@@ -566,7 +566,7 @@ const std::vector<Case> kCases = {
     {"IdentifyCsvIsADirectory", "identify {file}", Data("csv: passive.csv", "csv: @sub"), 2,
      {"passive.csv = {dir}/sub ({at}): {dir}/sub: is a directory"}},
     {"IdentifyCsvEmptyName", "identify {file}", Data("csv: passive.csv", "csv: @\"\""), 2,
-     {"passive.csv = \"\" ({at}): must name a CSV file"}},
+     {"passive.csv = \"\" ({at}): must not be empty"}},
     // --- sweep --------------------------------------------------------------------------------
     {"SweepDuplicateAxis", "sweep {file} --quiet", Sweep("  model.velocity.n:", "  @actuator.mass: [0.3]\n  model.velocity.n:"), 2,
      {"parameters.actuator.mass ({at}): duplicate key: already given at line 4"}},

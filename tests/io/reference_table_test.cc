@@ -25,6 +25,7 @@
 #include "musclesim/dynamics/node_kinds.h"
 #include "musclesim/dynamics/waveform_shapes.h"
 #include "musclesim/io/readers/document.h"
+#include "musclesim/io/readers/identify_spec.h"
 #include "musclesim/io/readers/model_text.h"
 #include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/model/family_fields.h"
@@ -115,6 +116,12 @@ TEST(ReferenceTable, TheTimeAndOutputBlocksInTheScenariosGuideAreTheDescriptions
   const std::string page = Read("docs/guide/scenarios.md");
   EXPECT_EQ(Block(page, "time"), ReferenceTable(TimeBlock(), "block")) << kRewrite;
   EXPECT_EQ(Block(page, "output"), ReferenceTable(OutputBlock(), "block")) << kRewrite;
+}
+
+TEST(ReferenceTable, TheIdentifyBlocksInTheIdentificationGuideAreTheDescriptions) {
+  EXPECT_EQ(Block(Read("docs/guide/identification.md"), "identify"),
+            ReferenceTable(IdentifyDataBlocks(), "block"))
+      << kRewrite;
 }
 
 TEST(ReferenceTable, RendersEachFieldOnceWithItsDefaultAndBounds) {
@@ -259,6 +266,7 @@ TEST(ReferenceTable, EachListOfNumbersIsContiguous) {
   ExpectListsContiguous(OutputBlock());
   ExpectListsContiguous(TimeBlock());
   ExpectListsContiguous(ActuatorBlock());
+  ExpectListsContiguous(IdentifyDataBlocks());
 }
 
 TEST(ReferenceTable, TheReaderReadsTheOutputBlock) {

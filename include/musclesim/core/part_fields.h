@@ -100,14 +100,34 @@ inline std::string CoordinateKey(const std::string& key, std::size_t c) {
 }
 
 // A text of a part that is no name and no choice (the output's file path): any text but the
-// empty one where given; absent leaves the part's own (its default, told in `doc`).
+// empty one where given; absent leaves the part's own (its default, told in `doc`), unless
+// it is required.
 template <typename Part>
 struct TextField {
   std::string key;
   const char* doc = "";
   std::function<std::string(const Part&)> get{};
   std::function<void(Part&, std::string)> set{};
+  bool required = false;
 };
+
+// A yes/no of a part (an identification's nonnegative amplitudes): true or false in a file,
+// absent its default.
+template <typename Part>
+struct FlagField {
+  std::string key;
+  bool default_value = false;
+  const char* doc = "";
+  std::function<bool(const Part&)> get{};
+  std::function<void(Part&, bool)> set{};
+};
+
+// The flag field of the bool `member` of a Part.
+template <typename Part>
+FlagField<Part> MemberFlag(const char* key, bool Part::*member, bool fallback, const char* doc) {
+  return {key, fallback, doc, [member](const Part& part) { return part.*member; },
+          [member](Part& part, bool value) { part.*member = value; }};
+}
 
 // One name of a part, chosen from a list (a solver's method: bdf or adams).
 template <typename Part>
@@ -279,7 +299,8 @@ struct PartVariant {
   std::vector<PointField<Part>> points;  // its points, read after the numbers
   std::vector<WordField<Part>> words;    // its names chosen from a list, read after the points
   std::vector<ListField<Part>> lists;    // its lists of sub-parts, read after the words
-  std::vector<TextField<Part>> texts;    // its free texts (a path), read last
+  std::vector<TextField<Part>> texts;    // its free texts (a path), read after the lists
+  std::vector<FlagField<Part>> flags;    // its yes/no fields, read last
   std::vector<const char*> other_keys;   // keys read by the part's own reader (a table's points)
   std::function<bool(const Part&)> is;   // whether a part is of this variant
   std::function<void(Part&)> make;       // gives a part this variant's kind, before its fields

@@ -1,53 +1,46 @@
-// Reads the data file of `musclesim identify`.
+// Reads the data file of `musclesim identify`: its blocks as described (identify_spec_fields.cc).
 #include <filesystem>
 
-#include "musclesim/io/readers/identify_spec.h"
+#include "io/readers/part_fields_yaml.h"
 #include "io/readers/yaml_fields.h"
+#include "musclesim/io/readers/identify_spec.h"
 
 namespace musclesim {
+
+namespace {
+
+// Where the data file names each block's CSV, in the order of IdentifyDataBlocks().
+constexpr InputPlace IdentifySpec::*kCsvPlaces[] = {
+    &IdentifySpec::passive_csv_at, &IdentifySpec::active_csv_at, &IdentifySpec::velocity_csv_at};
+
+}  // namespace
 
 IdentifySpec LoadIdentifySpec(const std::string& path) {
   const Document& root = yaml::LoadFile(path);
   const yaml::Source src{path};
-  yaml::RequireMap(src, root, "", {"passive", "active", "velocity"});
+  const std::vector<PartVariant<IdentifySpec>>& blocks = IdentifyDataBlocks();
+  std::vector<std::string> keys;
+  for (const PartVariant<IdentifySpec>& block : blocks) keys.emplace_back(block.type);
+  yaml::RequireMap(src, root, "", keys);
   if (root.size() == 0) {
     yaml::Fail(src, root, "", "{}", "give at least one of passive, active, velocity");
   }
   IdentifySpec spec;
   spec.source = path;
-  // a CSV path relative to the data file, and where the data file names it
-  const auto csv = [&](const Document& block, const std::string& name, InputPlace& at) {
-    const Document& node = yaml::Required(src, block, name, "csv");
-    const std::string file = yaml::ReadString(src, node, name + ".csv");
-    if (file.empty()) yaml::Fail(src, node, name + ".csv", "\"\"", "must name a CSV file");
-    at = yaml::Place(src, node);
-    return (std::filesystem::path(path).parent_path() / file).lexically_normal().string();
-  };
-  if (const Document& passive = root["passive"]) {
-    yaml::RequireMap(src, passive, "passive", {"csv"});
-    spec.passive_csv = csv(passive, "passive", spec.passive_csv_at);
-  }
-  if (const Document& active = root["active"]) {
-    yaml::RequireMap(src, active, "active", {"csv", "count", "nonnegative"});
-    spec.active_csv = csv(active, "active", spec.active_csv_at);
-    if (active["count"]) {
-      spec.active_count = yaml::ReadInteger(src, active["count"], "active.count");
-      if (spec.active_count < 1 || spec.active_count > 12) {
-        yaml::Fail(src, active["count"], "active.count", yaml::Describe(active["count"]),
-                   "must be an integer from 1 to 12");
-      }
-    }
-    if (active["nonnegative"]) {
-      spec.active_nonnegative = yaml::ReadBool(src, active["nonnegative"], "active.nonnegative");
-    }
-  }
-  if (const Document& velocity = root["velocity"]) {
-    yaml::RequireMap(src, velocity, "velocity", {"csv", "f_iso"});
-    spec.velocity_csv = csv(velocity, "velocity", spec.velocity_csv_at);
-    if (velocity["f_iso"]) {
-      spec.velocity_f_iso =
-          yaml::ReadNumberIn(src, velocity["f_iso"], "velocity.f_iso", kPositiveForceRange);
-    }
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const PartVariant<IdentifySpec>& block = blocks[b];
+    const Document& node = root[block.type];
+    if (!node) continue;
+    std::vector<std::string> block_keys;
+    AddVariantKeys(block, block_keys);
+    yaml::RequireMap(src, node, block.type, block_keys);
+    ReadFields(src, node, block.type, block, spec);
+    // its CSV relative to the data file, and where the data file names it
+    const TextField<IdentifySpec>& csv = block.texts.front();
+    spec.*kCsvPlaces[b] = yaml::Place(src, node[csv.key]);
+    csv.set(
+        spec,
+        (std::filesystem::path(path).parent_path() / csv.get(spec)).lexically_normal().string());
   }
   return spec;
 }

@@ -25,7 +25,7 @@ inline void AddKey(std::vector<std::string>& keys, std::string key) {
 }
 
 // Adds the keys of `variant`'s map to `keys`, each once, in order: its numbers', points',
-// words', lists', texts' and other keys' first steps (a list of numbers' key without its
+// words', lists', texts', flags' and other keys' first steps (a list of numbers' key without its
 // index).
 template <typename Part>
 void AddVariantKeys(const PartVariant<Part>& variant, std::vector<std::string>& keys) {
@@ -36,6 +36,7 @@ void AddVariantKeys(const PartVariant<Part>& variant, std::vector<std::string>& 
   for (const WordField<Part>& word : variant.words) AddKey(keys, word.key);
   for (const ListField<Part>& list : variant.lists) AddKey(keys, std::string(HeadKey(list.key)));
   for (const TextField<Part>& text : variant.texts) AddKey(keys, text.key);
+  for (const FlagField<Part>& flag : variant.flags) AddKey(keys, flag.key);
   for (const char* other : variant.other_keys) AddKey(keys, std::string(HeadKey(other)));
 }
 
@@ -165,8 +166,8 @@ void ReadLists(const yaml::Source& src, const Document& item, const std::string&
 // nested field ("velocity.eccentric.n") from its maps, whose keys are checked when each is
 // first met; a map may be left out when its fields have defaults or are optional; a list's
 // numbers ("range[0]", "range[1]") from a list of exactly as many. Then its points, in
-// `dimensions` coordinates, its words, its lists of sub-parts and its texts. `signal` bounds the
-// fields whose values are the signal's (nullptr: any number).
+// `dimensions` coordinates, its words, its lists of sub-parts, its texts and its flags.
+// `signal` bounds the fields whose values are the signal's (nullptr: any number).
 template <typename Part>
 void ReadFields(const yaml::Source& src, const Document& item, const std::string& path,
                 const PartVariant<Part>& variant, Part& part, const InputRange* signal = nullptr,
@@ -237,12 +238,17 @@ void ReadFields(const yaml::Source& src, const Document& item, const std::string
   ReadWords(src, item, path, variant, part);
   ReadLists(src, item, path, variant, part);
   for (const TextField<Part>& text : variant.texts) {
-    const Document& given = item[text.key];
-    if (!given) continue;
+    if (!item[text.key] && !text.required) continue;
+    const Document& given = yaml::Required(src, item, path, text.key.c_str());
     const std::string key_path = yaml::Join(path, text.key);
     std::string value = yaml::ReadString(src, given, key_path);
     if (value.empty()) yaml::Fail(src, given, key_path, "\"\"", "must not be empty");
     text.set(part, std::move(value));
+  }
+  for (const FlagField<Part>& flag : variant.flags) {
+    const Document& given = item[flag.key];
+    flag.set(part,
+             given ? yaml::ReadBool(src, given, yaml::Join(path, flag.key)) : flag.default_value);
   }
 }
 

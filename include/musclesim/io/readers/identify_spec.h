@@ -4,8 +4,10 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/core/part_fields.h"
 
 namespace musclesim {
 
@@ -21,6 +23,11 @@ struct IdentifySpec {
   // where each csv is named (data.yaml:1:11), so that errors in its data point back [-]
   InputPlace passive_csv_at, active_csv_at, velocity_csv_at;
 };
+
+// The data file's blocks passive, active and velocity, each described once (core/part_fields.h):
+// a block's `type` is its key, its fields' keys are within it. LoadIdentifySpec and
+// `musclesim reference identify` derive from them.
+const std::vector<PartVariant<IdentifySpec>>& IdentifyDataBlocks();
 
 // Reads a data file; CSV paths are relative to it. Throws InputError with file:line:column.
 IdentifySpec LoadIdentifySpec(const std::string& path);

@@ -1,7 +1,7 @@
 // The reference table of a described part (core/part_fields.h) in Markdown: a row per field
 // of each variant, with its key, unit, default, accepted values and their reason, and its
 // meaning; a row per point and per word field, with the names a word accepts; a row per list
-// of sub-parts and per field of its items. The tables in
+// of sub-parts and per field of its items; a row per text and per flag. The tables in
 // docs/guide/ are these, checked by tests/io/reference_table_test.cc.
 #pragma once
 
@@ -99,8 +99,12 @@ std::string ReferenceTable(const std::vector<PartVariant<Part>>& variants,
       }
     }
     for (const TextField<Part>& text : variant.texts) {
-      row(std::string("`") + text.key + "` | | optional | any text but the empty one | " +
-          text.doc);
+      row(std::string("`") + text.key + "` | | " + (text.required ? "required" : "optional") +
+          " | any text but the empty one | " + text.doc);
+    }
+    for (const FlagField<Part>& flag : variant.flags) {
+      row(std::string("`") + flag.key + "` | | " + (flag.default_value ? "true" : "false") +
+          " | true or false | " + flag.doc);
     }
     for (const char* other : variant.other_keys) {
       row(std::string("`") + other + "` | | | its own rules (above) | ");
