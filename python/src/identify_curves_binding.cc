@@ -32,7 +32,8 @@ namespace {
 // c_style: data() then walks the values in order, even for a column of a 2-d array
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-// The data file's rule for active.count (identify_spec.cc), here for the argument.
+// The data file's bound of active.count (kGaussianCountRange, identify_spec_fields.cc), here
+// for the argument.
 constexpr int kMaxActiveCount = 12;
 
 // One curve's columns as given: x (a length [m] or a shortening velocity [m/s]) and tension [N].

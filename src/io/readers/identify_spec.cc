@@ -9,7 +9,8 @@ namespace musclesim {
 
 namespace {
 
-// Where the data file names each block's CSV, in the order of IdentifyDataBlocks().
+// Where the data file names each block's CSV, in the order of IdentifyDataBlocks(), each of
+// whose blocks has its `csv` as its one text (a block added there needs its place here).
 constexpr InputPlace IdentifySpec::*kCsvPlaces[] = {
     &IdentifySpec::passive_csv_at, &IdentifySpec::active_csv_at, &IdentifySpec::velocity_csv_at};
 

@@ -1,7 +1,7 @@
 // Private: reading a described part (core/part_fields.h) from its map: which variant the map
 // names, the keys it may hold, each number against its range, nested fields in their own
-// maps, and each word among its names. The messages name file:line:column, key path, value
-// and rule, as every reader's do.
+// maps, each word among its names, its lists, texts and flags. The messages name file:line:column,
+// key path, value and rule, as every reader's do.
 #pragma once
 
 #include <algorithm>
