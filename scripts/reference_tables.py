@@ -21,10 +21,11 @@ BLOCKS = {
     "loads": ("docs/guide/scenarios.md", "loads"),
     "activation dynamics": ("docs/guide/scenarios.md", "activation_dynamics"),
     "model families": ("docs/guide/model.md", "models"),
-    "gains": ("docs/guide/control.md", "gains"),
+    "controllers": ("docs/guide/control.md", "controllers"),
     "time": ("docs/guide/scenarios.md", "time"),
     "solver": ("docs/guide/scenarios.md", "solver"),
     "output": ("docs/guide/scenarios.md", "output"),
+    "sweep": ("docs/guide/sweeps.md", "sweep"),
     "identify": ("docs/guide/identification.md", "identify"),
 }
 

@@ -6,6 +6,7 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "musclesim/dynamics/activation_families.h"
+#include "musclesim/dynamics/actuator_signals.h"
 #include "musclesim/dynamics/actuator_fields.h"
 #include "musclesim/dynamics/controller_gains.h"
 #include "musclesim/dynamics/element_laws.h"
@@ -17,6 +18,7 @@
 #include "musclesim/model/family_fields.h"
 #include "musclesim/scenario/setting_fields.h"
 #include "musclesim/solver/solver_fields.h"
+#include "musclesim/sweep/sweep_file.h"
 
 namespace musclesim::cli {
 
@@ -29,17 +31,22 @@ their reason, and its meaning: what the readers, --set and the parameter handles
 PART is one of
   actuator  the single actuator's `actuator:` block
   nodes     a network's nodes: fixed, prescribed and free
-  elements  the laws of springs, tendons and dampers (a network's elements)
+  elements  the laws of springs, tendons and dampers (a network's elements), and an
+            actuator's activation or excitation
   loads     the spring and mass loads (a force load is a waveform)
   waveforms the shapes of a signal over time (activations, excitations, force loads,
             prescribed motions, references)
   gains     a controller's gains
+  controllers
+            a controller's names, signals (reference, feedforward, co_contraction.level) and
+            gains
   models    the model blocks of the curve families (paper, degroote2016, mujoco)
   activation_dynamics
             the families of activation dynamics (their `family:` in place of `type:`)
   time      the `time:` span
   solver    the `solver:` block: CVODES' tolerances, step guards, method and linear solver
   output    the `output:` block: the rows' interval (a time or `steps`), phase tolerance and file
+  sweep     the keys of a sweep file (`musclesim sweep`)
   identify  the blocks of `musclesim identify`'s data file: passive, active and velocity
 )";
 
@@ -56,15 +63,21 @@ int ReferenceCommand(int argc, char** argv) {
   if (part == "actuator") {
     std::cout << ReferenceTable(ActuatorBlock(), "block");
   } else if (part == "nodes") {
-    std::cout << ReferenceTable(NodeKinds(), "node", NameRows(NodeNames()));
+    std::cout << ReferenceTable(NodeKinds(), "node", NameRows(NodeNames()),
+                                SignalCells(NodeSignals()));
   } else if (part == "elements") {
-    std::cout << ReferenceTable(ElementLaws(), "type", NameRows(ElementNames()));
+    std::cout << ReferenceTable(ElementLaws(), "type", NameRows(ElementNames()))
+              << SignalRows(ActuatorSignals<Element>(), "`actuator`");
   } else if (part == "loads") {
     std::cout << ReferenceTable(LoadVariants(), "type", NameRows(LoadNames()));
   } else if (part == "waveforms") {
     std::cout << ReferenceTable(WaveformShapes());
   } else if (part == "gains") {
     std::cout << ReferenceTable(ControllerGains());
+  } else if (part == "controllers") {
+    std::cout << ReferenceTable(
+        ControllerTypes(), "type",
+        NameRows(ControllerNames()) + SignalRows(ControllerSignals(), "every"));
   } else if (part == "models") {
     std::cout << ReferenceTable(ModelFamilies(), "family");
   } else if (part == "activation_dynamics") {
@@ -75,12 +88,14 @@ int ReferenceCommand(int argc, char** argv) {
     std::cout << ReferenceTable(OutputBlock(), "block");
   } else if (part == "solver") {
     std::cout << ReferenceTable(SolverBlock(), "block");
+  } else if (part == "sweep") {
+    std::cout << ReferenceTable(SweepFileBlock(), "block");
   } else if (part == "identify") {
     std::cout << ReferenceTable(IdentifyDataBlocks(), "block");
   } else {
     throw UsageError("unknown part '" + part +
-                     "': actuator, nodes, elements, loads, waveforms, gains, models, "
-                     "activation_dynamics, time, solver, output or identify (see --help)");
+                     "': actuator, nodes, elements, loads, waveforms, gains, controllers, models, "
+                     "activation_dynamics, time, solver, output, sweep or identify (see --help)");
   }
   return 0;
 }

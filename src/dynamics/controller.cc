@@ -37,16 +37,6 @@ int ParseCoordinate(std::string_view text) {
 
 namespace {
 
-// Validate(waveform) with its path put under `key`.
-template <typename Check>
-void ValidateUnder(const std::string& key, const Waveform& waveform, Check check) {
-  try {
-    check(waveform);
-  } catch (const ParameterError& e) {
-    throw ParameterError(key + "." + e.path(), e.value(), e.rule());
-  }
-}
-
 void ValidateMeasurement(const Measurement& m) {
   if (m.element.empty() == m.node.empty()) {
     throw ParameterError("measure", m.element.empty() ? "neither" : "both",
@@ -76,8 +66,7 @@ void ValidateMeasurement(const Measurement& m) {
 
 void Validate(const Controller& c) {
   ValidateMeasurement(c.measure);
-  ValidateUnder("reference", c.reference, [](const Waveform& w) { Validate(w); });
-  ValidateUnder("feedforward", c.feedforward, [](const Waveform& w) { Validate(w); });
+  ValidateSignals(ControllerSignals(), c);
   try {
     ValidateFields(ControllerGains().front(), c.gains);
   } catch (const ParameterError& error) {
@@ -98,8 +87,6 @@ void Validate(const Controller& c) {
       throw ParameterError("co_contraction.actuators", pair.first + ", " + pair.second,
                            "must name two different actuators");
     }
-    ValidateUnder("co_contraction.level", pair.level,
-                  [](const Waveform& w) { ValidateActivation(w); });
   }
 }
 

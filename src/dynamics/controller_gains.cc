@@ -39,9 +39,53 @@ const std::vector<NameField<Measurement>>& MeasureNames() {
   return names;
 }
 
+const std::vector<SignalField<Controller>>& ControllerSignals() {
+  static const std::vector<SignalField<Controller>> signals = [] {
+    SignalField<Controller> reference = Signal<Controller>(
+        "reference", "m or N",
+        "r(t), in the measured quantity's unit: a position or length [m], "
+        "a tension [N]",
+        [](auto& c, std::size_t) { return &c.reference; }, nullptr, CheckWaveform);
+    reference.accepted = "a position's or length's " + kPositionRange.Bounds() +
+                         " m, a tension's " + kForceRange.Bounds() + " N";
+    reference.values = [](const Controller& c) {
+      return c.measure.quantity == MeasuredQuantity::kTension ? &kForceRange : &kPositionRange;
+    };
+    SignalField<Controller> feedforward = Signal<Controller>(
+        "feedforward", "-", "u_ff(t), added to the command; 0 when absent",
+        [](auto& c, std::size_t) { return &c.feedforward; }, &kFeedforwardRange, CheckWaveform);
+    feedforward.required = false;
+    SignalField<Controller> level = Signal<Controller>(
+        "co_contraction.level", "-",
+        "with co_contraction (its actuators: [FIRST, SECOND]), the pair's common activation: "
+        "FIRST takes level + c, SECOND level - c",
+        [](auto& c, std::size_t) { return c.co_contraction ? &c.co_contraction->level : nullptr; },
+        nullptr, CheckActivation);
+    level.accepted = ActivationValues();
+    return std::vector{std::move(reference), std::move(feedforward), std::move(level)};
+  }();
+  return signals;
+}
+
 const std::vector<PartVariant<PidGains>>& ControllerGains() {
   static const std::vector<PartVariant<PidGains>> gains{Pid()};
   return gains;
+}
+
+}  // namespace musclesim
+
+namespace musclesim {
+
+const std::vector<PartVariant<Controller>>& ControllerTypes() {
+  static const std::vector<PartVariant<Controller>> types = [] {
+    std::vector<PartVariant<Controller>> of_gains;
+    for (const PartVariant<PidGains>& law : ControllerGains()) {
+      of_gains.push_back(OnlyVariant<Controller>(
+          law.type, law.law, NestedFields("gains", &Controller::gains, law.fields)));
+    }
+    return of_gains;
+  }();
+  return types;
 }
 
 }  // namespace musclesim

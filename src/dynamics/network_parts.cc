@@ -5,6 +5,7 @@
 #include <string>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/dynamics/actuator_signals.h"
 #include "musclesim/dynamics/element_laws.h"
 #include "musclesim/dynamics/node_kinds.h"
 #include "musclesim/core/input_ranges.h"
@@ -56,24 +57,6 @@ void Validate(const Space& space) {
           "must be 0 on a line: hang a weight with a load of type mass (docs/guide/networks.md)");
 }
 
-namespace {
-
-// A prescribed coordinate's motion, its errors at `key` ("prescribed", "prescribed[1]").
-void ValidateMotion(const Waveform& motion, const std::string& key) {
-  try {
-    Validate(motion);
-  } catch (const ParameterError& e) {
-    throw ParameterError(key + "." + e.path(), e.value(), e.rule());
-  }
-  // a jump in position would move the node at infinite speed
-  if (motion.kind == WaveformKind::kStep || motion.kind == WaveformKind::kPulses) {
-    throw ParameterError(key + ".type", std::string(ToString(motion.kind)),
-                         "must be continuous in time: constant, ramp, sine or table");
-  }
-}
-
-}  // namespace
-
 void Validate(const Node& node) {
   const NodeVariant* kind = VariantOf(NodeKinds(), node);
   assert(kind != nullptr);  // every NodeKind has its variant
@@ -86,12 +69,7 @@ void Validate(const Node& node) {
               std::string("must be finite [") + point.range.unit + "]");
     }
   }
-  if (node.kind == NodeKind::kPrescribed) {
-    ValidateMotion(node.motion, "prescribed");
-    for (int c = 0; c < 2; ++c) {
-      ValidateMotion(node.motion_yz[c], Indexed("prescribed", static_cast<std::size_t>(c) + 1));
-    }
-  }
+  ValidateSignals(NodeSignals(), node);
   if (node.kind == NodeKind::kFree) {
     Require(std::isfinite(node.mass) && node.mass >= 0.0, "mass", node.mass,
             "must be finite and >= 0 [kg] (0: a massless junction, docs/model.md 14.4)");
@@ -201,16 +179,9 @@ void Validate(const Element& e) {
   switch (e.kind) {
     case ElementKind::kActuator:
       if (e.model == nullptr) throw ParameterError("model", "none", "an actuator needs a model");
-      if (e.excitation) {
-        Validate(*e.excitation);  // paths already the element's keys
-        break;
-      }
-      if (e.controlled) break;  // its activation is a controller's output
-      try {
-        ValidateActivation(e.activation);
-      } catch (const ParameterError& error) {
-        throw ParameterError("activation." + error.path(), error.value(), error.rule());
-      }
+      // a controlled actuator's activation is the controller's output
+      if (!e.controlled) ValidateSignals(ActuatorSignals<Element>(), e);
+      if (e.excitation) Validate(*e.excitation);  // its dynamics; paths the element's keys
       break;
     case ElementKind::kSpring:
     case ElementKind::kTendon:

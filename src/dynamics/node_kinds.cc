@@ -80,6 +80,24 @@ const std::vector<NodeVariant>& NodeKinds() {
   return variants;
 }
 
+const std::vector<SignalField<Node>>& NodeSignals() {
+  static const std::vector<SignalField<Node>> signals = [] {
+    SignalField<Node> motion = Signal<Node>(
+        "prescribed", "m",
+        "its motion x(t); in 2 or 3 dimensions a list [x(t), y(t)] or [x(t), y(t), z(t)]",
+        [](auto& n, std::size_t c) {
+          if (n.kind != NodeKind::kPrescribed) return decltype(&n.motion){nullptr};
+          return c == 0 ? &n.motion : &n.motion_yz[c - 1];
+        },
+        &kPositionRange, CheckWaveform);
+    motion.continuous = true;
+    motion.per_coordinate = true;
+    motion.coordinate_noun = "motion";
+    return std::vector{std::move(motion)};
+  }();
+  return signals;
+}
+
 const std::vector<NameField<Node>>& NodeNames() {
   static const std::vector<NameField<Node>> names{MemberName(
       "name", &Node::name, "", "the node's name, unique among the nodes, which elements join")};

@@ -11,6 +11,7 @@
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
 #include "musclesim/dynamics/activation_families.h"
+#include "musclesim/dynamics/actuator_signals.h"
 #include "musclesim/dynamics/controller_gains.h"
 #include "musclesim/dynamics/element_laws.h"
 #include "musclesim/dynamics/load_kinds.h"
@@ -53,17 +54,9 @@ void ParameterResolver::Node(std::size_t i) {
   const std::string& key = Key(i + 1);
   const NodeKind kind = scenario_.nodes[n].kind;
   const Locate<musclesim::Node> node = [n](Scenario& s) -> musclesim::Node& { return s.nodes[n]; };
+  if (Signal(i + 1, NodeSignals(), scenario_.nodes[n], node)) return;
   // in 2 or 3 dimensions a coordinate is indexed (nodes[1].position[1] is y)
   const std::size_t next = scenario_.space.dimensions > 1 ? i + 3 : i + 2;
-  if (kind == NodeKind::kPrescribed && key == "prescribed") {
-    const std::size_t c = Coordinate(i + 2, key);
-    return WaveformField(
-        next,
-        [node, c](Scenario& s) -> Waveform& {
-          return c == 0 ? node(s).motion : node(s).motion_yz[c - 1];
-        },
-        &kPositionRange);
-  }
   const NodeVariant& variant = *VariantOf(NodeKinds(), scenario_.nodes[n]);
   if (const PointField<musclesim::Node>* point = FindPoint(variant, key)) {
     const std::size_t c = Coordinate(i + 2, key);
@@ -88,13 +81,9 @@ void ParameterResolver::Element(std::size_t i) {
   };
   if (key == "via") return Via(i + 2, e);
   if (element.kind == ElementKind::kActuator) {
-    if (key == "activation" && !element.excitation && !element.controlled) {
-      return WaveformField(
-          i + 2, [at](Scenario& s) -> Waveform& { return at(s).activation; }, nullptr);
-    }
-    if (key == "excitation" && element.excitation && !element.controlled) {
-      return WaveformField(
-          i + 2, [at](Scenario& s) -> Waveform& { return at(s).excitation->signal; }, nullptr);
+    // a controlled actuator's activation is its controller's output
+    if (!element.controlled && Signal(i + 1, ActuatorSignals<musclesim::Element>(), element, at)) {
+      return;
     }
     if (key == "activation_dynamics" && element.excitation) {
       const ActivationFamilyVariant& family =
@@ -177,20 +166,7 @@ void ParameterResolver::Controller(std::size_t i) {
     if (field == nullptr) Fail("names no gain (" + FieldKeys(ControllerGains().front()) + ")");
     return Field(*field, Locate<PidGains>([at](Scenario& s) -> PidGains& { return at(s).gains; }));
   }
-  if (key == "reference") {
-    const bool tension = controller.measure.quantity == MeasuredQuantity::kTension;
-    return WaveformField(
-        i + 2, [at](Scenario& s) -> Waveform& { return at(s).reference; },
-        tension ? &kForceRange : &kPositionRange);
-  }
-  if (key == "feedforward") {
-    return WaveformField(
-        i + 2, [at](Scenario& s) -> Waveform& { return at(s).feedforward; }, &kFeedforwardRange);
-  }
-  if (key == "co_contraction" && controller.co_contraction && Key(i + 2) == "level") {
-    return WaveformField(
-        i + 3, [at](Scenario& s) -> Waveform& { return at(s).co_contraction->level; }, nullptr);
-  }
+  if (Signal(i + 1, ControllerSignals(), controller, at)) return;
   Fail("names no number of this controller");
 }
 

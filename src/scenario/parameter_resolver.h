@@ -14,6 +14,7 @@
 #include "musclesim/core/input_ranges.h"
 #include "musclesim/core/key_path.h"
 #include "musclesim/core/part_fields.h"
+#include "musclesim/dynamics/signal_fields.h"
 #include "musclesim/scenario/parameter.h"
 #include "musclesim/scenario/scenario.h"
 
@@ -106,6 +107,36 @@ class ParameterResolver {
     };
     p_.range_ = range;
     p_.bounded_ = true;
+  }
+
+  // The signal among `signals` (dynamics/signal_fields.h) of `part`, at `at`, that the steps
+  // from i name, and its waveform's field after them; in 2 or 3 dimensions a per-coordinate
+  // signal's coordinate comes first ("prescribed[1].to"). False when they name none that the
+  // part has.
+  template <typename Part>
+  bool Signal(std::size_t i, const std::vector<SignalField<Part>>& signals, const Part& part,
+              Locate<Part> at) {
+    for (const SignalField<Part>& signal : signals) {
+      std::size_t next = i;
+      bool named = true;  // by the steps from i, one per step of the signal's key
+      for (std::size_t begin = 0; named;) {
+        const std::size_t dot = signal.key.find('.', begin);
+        named = Key(next++) == signal.key.substr(begin, dot - begin);
+        if (dot == std::string::npos) break;
+        begin = dot + 1;
+      }
+      if (!named || signal.get(part, 0) == nullptr) continue;
+      std::size_t c = 0;
+      if (signal.per_coordinate) {
+        c = Coordinate(next, signal.key);
+        if (scenario_.space.dimensions > 1) ++next;
+      }
+      WaveformField(
+          next, [at, c, pick = signal.at](Scenario& s) -> Waveform& { return *pick(at(s), c); },
+          signal.values(part));
+      return true;
+    }
+    return false;
   }
 
   void Top();

@@ -6,24 +6,15 @@
 #include "musclesim/core/enum_names.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
+#include "sweep/sweep_names.h"
 
 namespace musclesim {
 
-constexpr EnumName<SweepMode> kModeNames[] = {
-    {SweepMode::kGrid, "grid"},
-    {SweepMode::kZip, "zip"},
-    {SweepMode::kRandom, "random"},
-};
+std::string_view ToString(SweepMode mode) { return ToString(kSweepModeNames, mode); }
 
-std::string_view ToString(SweepMode mode) { return ToString(kModeNames, mode); }
-
-constexpr EnumName<TrajectoryPolicy> kPolicyNames[] = {
-    {TrajectoryPolicy::kNone, "none"},
-    {TrajectoryPolicy::kAll, "all"},
-    {TrajectoryPolicy::kFailed, "failed"},
-};
-
-std::string_view ToString(TrajectoryPolicy policy) { return ToString(kPolicyNames, policy); }
+std::string_view ToString(TrajectoryPolicy policy) {
+  return ToString(kTrajectoryPolicyNames, policy);
+}
 
 namespace {
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "io/readers/part_fields_yaml.h"
 #include "io/readers/yaml_fields.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/io/readers/scenario_yaml.h"
@@ -89,21 +90,9 @@ void CheckGridSize(const yaml::Source& src, const Document& parameters, const Sw
   }
 }
 
-void ReadMode(const yaml::Source& src, const Document& root, SweepSpec& spec) {
-  if (!root["mode"]) return;  // the default
-  const std::string mode = yaml::ReadString(src, root["mode"], "mode");
-  if (mode == "grid")
-    spec.mode = SweepMode::kGrid;
-  else if (mode == "zip")
-    spec.mode = SweepMode::kZip;
-  else if (mode == "random")
-    spec.mode = SweepMode::kRandom;
-  else
-    yaml::Fail(src, root["mode"], "mode", mode, "must be grid, zip or random");
-}
-
-// Mode random's `samples` and `seed`; other modes refuse them.
-void ReadSampling(const yaml::Source& src, const Document& root, SweepSpec& spec) {
+// Mode random's `samples` and `seed` required, other modes' refused (their values are read
+// with the file's other fields).
+void CheckSampling(const yaml::Source& src, const Document& root, const SweepSpec& spec) {
   if (spec.mode != SweepMode::kRandom) {
     for (const char* key : {"samples", "seed"}) {
       if (root[key]) {
@@ -114,25 +103,13 @@ void ReadSampling(const yaml::Source& src, const Document& root, SweepSpec& spec
     }
     return;
   }
-  const Document& samples = yaml::Required(src, root, "", "samples");
-  const double n = yaml::ReadNumber(src, samples, "samples");
-  if (!(n >= 1 && n <= 1e9) || n != std::floor(n)) {
-    yaml::Fail(src, samples, "samples", yaml::Describe(samples),
-               "must be an integer from 1 to 1e9");
-  }
-  spec.samples = static_cast<long>(n);
+  yaml::Required(src, root, "", "samples");
   // no default seed: a documented, reproducible sweep names the seed it draws from
-  const Document& seed = root["seed"];
-  if (!seed) {
+  if (!root["seed"]) {
     throw InputError(InputFault{yaml::Place(src, root), "seed", std::nullopt,
                                 "missing required key: mode random draws every value from a "
                                 "hash of (seed, index, axis); give an integer >= 0"});
   }
-  const double value = yaml::ReadNumber(src, seed, "seed");
-  if (!(value >= 0 && value <= 9.007199254740992e15) || value != std::floor(value)) {
-    yaml::Fail(src, seed, "seed", yaml::Describe(seed), "must be an integer from 0 to 2^53");
-  }
-  spec.seed = static_cast<std::uint64_t>(value);
 }
 
 // The axes of `parameters`: zip's all of one length, a grid's product within the limit.
@@ -176,48 +153,21 @@ const Document& ReadMetrics(const yaml::Source& src, const Document& root, Sweep
   return metrics;
 }
 
-// `metric_options`' window and target_length (its element is read once the base's elements
-// are known).
-void ReadMetricOptions(const yaml::Source& src, const Document& root, SweepSpec& spec) {
-  const Document& options = root["metric_options"];
-  if (!options) return;
-  yaml::RequireMap(src, options, "metric_options", {"window", "target_length", "element"});
-  if (options["window"]) {
-    const std::vector<double> w =
-        yaml::ReadNumbers(src, options["window"], "metric_options.window", 2);
-    if (!(std::isfinite(w[0]) && std::isfinite(w[1]) && w[1] > w[0])) {
-      yaml::Fail(src, options["window"], "metric_options.window", yaml::Describe(options["window"]),
-                 "must be [start, end] with end > start [s]");
+// The rules between the metric options and the metrics: the window's end after its start,
+// time_to_length's target.
+void CheckMetricOptions(const yaml::Source& src, const Document& root, const Document& metrics,
+                        const SweepSpec& spec) {
+  const MetricOptions& options = spec.metric_options;
+  if (options.window_start && !(*options.window_end > *options.window_start)) {
+    const Document& window = root["metric_options"]["window"];
+    yaml::Fail(src, window, "metric_options.window", yaml::Describe(window),
+               "must be [start, end] with end > start [s]");
+  }
+  for (std::size_t i = 0; i < spec.metrics.size(); ++i) {
+    if (spec.metrics[i] == Metric::kTimeToLength && !options.target_length) {
+      yaml::Fail(src, metrics[i], "metrics[" + std::to_string(i) + "]", "time_to_length",
+                 "needs metric_options.target_length");
     }
-    spec.metric_options.window_start = w[0];
-    spec.metric_options.window_end = w[1];
-  }
-  if (options["target_length"]) {
-    const double target =
-        yaml::ReadNumber(src, options["target_length"], "metric_options.target_length");
-    if (!(std::isfinite(target) && target > 0.0)) {
-      yaml::Fail(src, options["target_length"], "metric_options.target_length",
-                 yaml::Describe(options["target_length"]), "must be finite and > 0 [m]");
-    }
-    spec.metric_options.target_length = target;
-  }
-}
-
-// `trajectories` (which points' trajectories are kept) and `output` (where the summary goes).
-void ReadOutputs(const yaml::Source& src, const Document& root, SweepSpec& spec) {
-  if (root["trajectories"]) {
-    const std::string policy = yaml::ReadString(src, root["trajectories"], "trajectories");
-    if (policy == "none")
-      spec.trajectories = TrajectoryPolicy::kNone;
-    else if (policy == "all")
-      spec.trajectories = TrajectoryPolicy::kAll;
-    else if (policy == "failed")
-      spec.trajectories = TrajectoryPolicy::kFailed;
-    else
-      yaml::Fail(src, root["trajectories"], "trajectories", policy, "must be none, all or failed");
-  }
-  if (root["output"]) {
-    spec.output = yaml::ReadString(src, root["output"], "output");
   }
 }
 
@@ -225,25 +175,14 @@ void ReadOutputs(const yaml::Source& src, const Document& root, SweepSpec& spec)
 // summary goes. `base_dir` is where a base path is relative to.
 SweepSpec ReadSweepSpec(const yaml::Source& src, const Document& root,
                         const std::string& base_dir) {
-  yaml::RequireMap(src, root, "",
-                   {"base", "mode", "samples", "seed", "parameters", "metrics", "metric_options",
-                    "trajectories", "output"});
+  yaml::RequireMap(src, root, "", VariantKeys(SweepFileBlock(), "sweep"));
   SweepSpec spec;
   spec.source = src.file;
-  const std::string base = yaml::ReadString(src, yaml::Required(src, root, "", "base"), "base");
-  spec.base = (std::filesystem::path(base_dir) / base).lexically_normal().string();
-  ReadMode(src, root, spec);
-  ReadSampling(src, root, spec);
+  ReadFields(src, root, "", SweepFileBlock().front(), spec);
+  spec.base = (std::filesystem::path(base_dir) / spec.base).lexically_normal().string();
+  CheckSampling(src, root, spec);
   ReadAxes(src, root, spec);
-  const Document& metrics = ReadMetrics(src, root, spec);
-  ReadMetricOptions(src, root, spec);
-  for (std::size_t i = 0; i < spec.metrics.size(); ++i) {
-    if (spec.metrics[i] == Metric::kTimeToLength && !spec.metric_options.target_length) {
-      yaml::Fail(src, metrics[i], "metrics[" + std::to_string(i) + "]", "time_to_length",
-                 "needs metric_options.target_length");
-    }
-  }
-  ReadOutputs(src, root, spec);
+  CheckMetricOptions(src, root, ReadMetrics(src, root, spec), spec);
   return spec;
 }
 

@@ -230,7 +230,7 @@ TEST(ControllerYaml, EntryRefusalsNameFileLineAndKey) {
       "{name: again, type: pid, measure: {node: load, quantity: position}, "
       "reference: {type: constant, value: 0.1}, gains: {kp: 1}, drives: muscle}";
   const std::vector<Case> cases = {
-      {edit("type: pid", "type: lqr"), "lqr", "controllers[0].type = lqr (@): must be one of pid"},
+      {edit("type: pid", "type: lqr"), "lqr", "controllers[0].type = lqr (@): must be pid"},
       {edit("drives: muscle",
             "drives: muscle\n    co_contraction: {actuators: [muscle, spring], "
             "level: {type: constant, value: 0}}"),
@@ -251,7 +251,7 @@ TEST(ControllerYaml, EntryRefusalsNameFileLineAndKey) {
        "controllers[0].gains.kf (@): unknown key; allowed here: kp, ki, kd"},
       {edit("    drives: muscle\n", "    drives: muscle\n    colour: red\n"), "colour",
        "controllers[0].colour (@): unknown key; allowed here: name, type, drives, measure, "
-       "reference, gains, feedforward, co_contraction"},
+       "reference, feedforward, co_contraction, gains"},
       {edit("    gains: {kp: -200.0, ki: -2000.0, kd: -1.0}\n", ""), "name: hold",
        "controllers[0].gains (@): missing required key"},
       {edit("name: hold", "name: \"ho,ld\""), "\"ho,ld\"",

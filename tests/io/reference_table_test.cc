@@ -18,6 +18,7 @@
 
 #include "musclesim/core/errors.h"
 #include "musclesim/dynamics/activation_families.h"
+#include "musclesim/dynamics/actuator_signals.h"
 #include "musclesim/dynamics/actuator_fields.h"
 #include "musclesim/dynamics/controller_gains.h"
 #include "musclesim/dynamics/element_laws.h"
@@ -33,6 +34,7 @@
 #include "musclesim/scenario/scenario.h"
 #include "musclesim/scenario/setting_fields.h"
 #include "musclesim/solver/solver_fields.h"
+#include "musclesim/sweep/sweep_file.h"
 
 namespace musclesim {
 namespace {
@@ -62,13 +64,14 @@ constexpr const char* kRewrite =
 
 TEST(ReferenceTable, NodeKindsInTheNetworksGuideAreTheDescriptions) {
   EXPECT_EQ(Block(Read("docs/guide/networks.md"), "nodes"),
-            ReferenceTable(NodeKinds(), "node", NameRows(NodeNames())))
+            ReferenceTable(NodeKinds(), "node", NameRows(NodeNames()), SignalCells(NodeSignals())))
       << kRewrite;
 }
 
 TEST(ReferenceTable, ElementLawsInTheNetworksGuideAreTheDescriptions) {
   EXPECT_EQ(Block(Read("docs/guide/networks.md"), "element laws"),
-            ReferenceTable(ElementLaws(), "type", NameRows(ElementNames())))
+            ReferenceTable(ElementLaws(), "type", NameRows(ElementNames())) +
+                SignalRows(ActuatorSignals<Element>(), "`actuator`"))
       << kRewrite;
 }
 
@@ -95,8 +98,10 @@ TEST(ReferenceTable, ModelFamiliesInTheModelGuideAreTheDescriptions) {
       << kRewrite;
 }
 
-TEST(ReferenceTable, GainsInTheControlGuideAreTheDescription) {
-  EXPECT_EQ(Block(Read("docs/guide/control.md"), "gains"), ReferenceTable(ControllerGains()))
+TEST(ReferenceTable, ControllersInTheControlGuideAreTheDescriptions) {
+  EXPECT_EQ(Block(Read("docs/guide/control.md"), "controllers"),
+            ReferenceTable(ControllerTypes(), "type",
+                           NameRows(ControllerNames()) + SignalRows(ControllerSignals(), "every")))
       << kRewrite;
 }
 
@@ -116,6 +121,11 @@ TEST(ReferenceTable, TheTimeAndOutputBlocksInTheScenariosGuideAreTheDescriptions
   const std::string page = Read("docs/guide/scenarios.md");
   EXPECT_EQ(Block(page, "time"), ReferenceTable(TimeBlock(), "block")) << kRewrite;
   EXPECT_EQ(Block(page, "output"), ReferenceTable(OutputBlock(), "block")) << kRewrite;
+}
+
+TEST(ReferenceTable, TheSweepFileInTheSweepsGuideIsTheDescription) {
+  EXPECT_EQ(Block(Read("docs/guide/sweeps.md"), "sweep"), ReferenceTable(SweepFileBlock(), "block"))
+      << kRewrite;
 }
 
 TEST(ReferenceTable, TheIdentifyBlocksInTheIdentificationGuideAreTheDescriptions) {
@@ -227,13 +237,15 @@ constexpr const char* kTime = "time: {start: 0.0, end: 0.1}\n";
 // The output block through the reader and as handles: `interval` a time or the word `steps`
 // (a row per step, and then no number to vary), absent a thousandth of the span; `file` any
 // text but the empty one, absent the verb's own.
-// A list's numbers come together from index 0 and none is optional on its own, which the
-// writers and the Python dicts rely on (they take the list whole at its first number).
+// A list's numbers come together from index 0 and none is optional on its own (an optional
+// list's are optional together), which the writers and the Python dicts rely on (they take
+// the list whole at its first number).
 template <typename Part>
 void ExpectListsContiguous(const std::vector<PartVariant<Part>>& variants) {
   for (const PartVariant<Part>& variant : variants) {
     std::string list;  // the list being walked, "" between lists
     std::size_t next = 0;
+    bool optional = false;  // the list's first number's
     for (const NumberField<Part>& field : variant.fields) {
       const std::optional<ListElement> element = ElementOf(field.key);
       const std::string head = element ? std::string(element->list) : "";
@@ -242,12 +254,13 @@ void ExpectListsContiguous(const std::vector<PartVariant<Part>>& variants) {
         list.clear();
         continue;
       }
-      EXPECT_FALSE(field.given);
       if (head != list) {
         EXPECT_EQ(element->index, 0u);
         list = head;
         next = 0;
+        optional = static_cast<bool>(field.given);
       }
+      EXPECT_EQ(static_cast<bool>(field.given), optional);
       EXPECT_EQ(element->index, next++);
       EXPECT_LT(element->index, ListLength(variant, head));
     }
@@ -267,6 +280,7 @@ TEST(ReferenceTable, EachListOfNumbersIsContiguous) {
   ExpectListsContiguous(TimeBlock());
   ExpectListsContiguous(ActuatorBlock());
   ExpectListsContiguous(IdentifyDataBlocks());
+  ExpectListsContiguous(SweepFileBlock());
 }
 
 TEST(ReferenceTable, TheReaderReadsTheOutputBlock) {

@@ -6,11 +6,19 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
+#include "musclesim/core/part_fields.h"
 #include "musclesim/io/readers/document.h"
 #include "musclesim/sweep/sweep_points.h"
 
 namespace musclesim {
+
+// The sweep file's keys, described once (core/part_fields.h): one variant, `sweep`. Its
+// `parameters` (the axes), `metrics` and metric_options.element have their reader's own rules,
+// as have those between keys: samples and seed for mode random only, and required there;
+// the window's end after its start; time_to_length's target_length.
+const std::vector<PartVariant<SweepSpec>>& SweepFileBlock();
 
 // Reads and validates a sweep file and its points (PlanSweep), and resolves the element the
 // metrics read (metric_options.element; by default the only actuator). Throws InputError:

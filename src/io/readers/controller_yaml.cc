@@ -1,11 +1,15 @@
 #include "io/readers/controller_yaml.h"
 
+#include <algorithm>
+#include <string_view>
 #include <utility>
 
 #include "io/readers/network_parts_yaml.h"
 #include "io/readers/part_fields_yaml.h"
 #include "io/readers/scenario_fields.h"
+#include "io/readers/signal_fields_yaml.h"
 #include "musclesim/core/input_ranges.h"
+#include "musclesim/dynamics/actuator_signals.h"
 #include "musclesim/dynamics/controller_gains.h"
 
 namespace musclesim {
@@ -15,21 +19,6 @@ namespace {
 using yaml::Join;
 using yaml::Required;
 using yaml::ValidateAt;
-
-// The controller types a file may name.
-constexpr const char* kControllerTypes = "pid";
-
-// A waveform of any kind at `node`, its values within `values` (nullptr: any finite value).
-Waveform ReadSignal(const yaml::Source& src, const Document& node, const std::string& path,
-                    const InputRange* values, double t_start, double t_end) {
-  const std::string type = ReadType(src, node, path);
-  WaveformKind kind{};
-  ValidateAt(src, node, path, [&] { kind = ParseWaveformKind(type); });
-  Waveform w = ReadWaveform(src, node, path, kind, values);
-  ValidateAt(src, node, path, [&] { Validate(w); });
-  CheckPulses(src, node, path, w, t_start, t_end);
-  return w;
-}
 
 // A node's measured coordinate, `coordinate: x` (y, z): optional on a line, where it can
 // only be x, required in 2 or 3 `dimensions`.
@@ -96,8 +85,9 @@ PidGains ReadGains(const yaml::Source& src, const Document& item, const std::str
   return gains;
 }
 
+// The pair's actuators; its level is one of the controller's signals.
 CoContraction ReadCoContraction(const yaml::Source& src, const Document& node,
-                                const std::string& at, double t_start, double t_end) {
+                                const std::string& at) {
   yaml::RequireMap(src, node, at, {"actuators", "level"});
   const Document& actuators = Required(src, node, at, "actuators");
   const std::string list = Join(at, "actuators");
@@ -109,9 +99,6 @@ CoContraction ReadCoContraction(const yaml::Source& src, const Document& node,
   CoContraction pair;
   pair.first = yaml::ReadString(src, actuators[0], list + "[0]");
   pair.second = yaml::ReadString(src, actuators[1], list + "[1]");
-  const std::string level = Join(at, "level");
-  pair.level = ReadActivation(src, Required(src, node, at, "level"), level);
-  CheckPulses(src, node["level"], level, pair.level, t_start, t_end);
   return pair;
 }
 
@@ -123,27 +110,21 @@ Controller ReadController(const yaml::Source& src, const Document& item, const s
                "co_contraction}");
   }
   std::vector<std::string> keys = NameKeys(ControllerNames(), true);
-  keys.insert(keys.end(), {"measure", "reference", "gains", "feedforward", "co_contraction"});
+  keys.emplace_back("measure");
+  for (std::string& key : SignalKeys(ControllerSignals())) keys.push_back(std::move(key));
+  keys.emplace_back("gains");
   yaml::RequireMap(src, item, path, keys);
   Controller c;
   ReadNames(src, item, path, ControllerNames(), c);
   const Document& type = Required(src, item, path, "type");
   const std::string kind = yaml::ReadString(src, type, Join(path, "type"));
-  if (kind != kControllerTypes) {
-    yaml::Fail(src, type, Join(path, "type"), kind,
-               std::string("must be one of ") + kControllerTypes);
+  std::vector<std::string_view> types;
+  for (const PartVariant<Controller>& variant : ControllerTypes()) types.push_back(variant.type);
+  if (std::find(types.begin(), types.end(), kind) == types.end()) {
+    yaml::Fail(src, type, Join(path, "type"), kind, MustBeOneOf(types));
   }
   c.measure = ReadMeasurement(src, item, path, dimensions);
-  // a reference in the measured quantity's unit
-  const InputRange* unit =
-      c.measure.quantity == MeasuredQuantity::kTension ? &kForceRange : &kPositionRange;
-  c.reference = ReadSignal(src, Required(src, item, path, "reference"), Join(path, "reference"),
-                           unit, t_start, t_end);
   c.gains = ReadGains(src, item, path);
-  if (const Document& node = item["feedforward"]) {
-    c.feedforward =
-        ReadSignal(src, node, Join(path, "feedforward"), &kFeedforwardRange, t_start, t_end);
-  }
   const Document& drives = item["drives"];
   const Document& pair = item["co_contraction"];
   if (static_cast<bool>(drives) == static_cast<bool>(pair)) {
@@ -151,8 +132,12 @@ Controller ReadController(const yaml::Source& src, const Document& item, const s
                "give exactly one of drives (the actuator driven) or co_contraction "
                "({actuators: [FIRST, SECOND], level}: an antagonist pair)");
   }
-  if (!drives) {
-    c.co_contraction = ReadCoContraction(src, pair, Join(path, "co_contraction"), t_start, t_end);
+  if (!drives) c.co_contraction = ReadCoContraction(src, pair, Join(path, "co_contraction"));
+  // after the measure, whose quantity is the reference's unit, and the pair, which holds its
+  // level
+  for (const SignalField<Controller>& signal : ControllerSignals()) {
+    if (signal.get(c, 0) != nullptr)
+      ReadSignal(src, item, path, signal, c, dimensions, t_start, t_end);
   }
   ValidateAt(src, item, path, [&] { Validate(c); });
   return c;
@@ -193,9 +178,9 @@ Element ReadControlledActuator(const yaml::Source& src, const Document& item,
                                const std::string& from, const std::string& to,
                                std::shared_ptr<const TensionModel> model,
                                const ControllerRef& driver) {
-  for (const char* key : {"activation", "excitation"}) {
-    if (const Document& own = item[key]) {
-      yaml::Fail(src, own, Join(path, key), yaml::Describe(own),
+  for (const SignalField<Element>& signal : ActuatorSignals<Element>()) {
+    if (const Document& own = item[signal.key]) {
+      yaml::Fail(src, own, Join(path, signal.key), yaml::Describe(own),
                  "actuator " + name + " is driven by controllers[" + std::to_string(driver.index) +
                      "] (" + driver.name + "): it has no activation of its own");
     }

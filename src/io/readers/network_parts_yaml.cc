@@ -6,7 +6,9 @@
 #include "io/readers/coordinates_yaml.h"
 #include "io/readers/part_fields_yaml.h"
 #include "io/readers/scenario_fields.h"
+#include "io/readers/signal_fields_yaml.h"
 #include "musclesim/core/input_ranges.h"
+#include "musclesim/dynamics/actuator_signals.h"
 #include "musclesim/dynamics/element_laws.h"
 #include "musclesim/dynamics/load_kinds.h"
 #include "musclesim/dynamics/node_kinds.h"
@@ -22,44 +24,6 @@ using yaml::ValidateAt;
 
 std::string Item(const char* list, std::size_t i) {
   return std::string(list) + "[" + std::to_string(i) + "]";
-}
-
-Waveform ReadMotion(const yaml::Source& src, const Document& node, const std::string& path) {
-  const std::string type = ReadType(src, node, path);
-  WaveformKind kind{};
-  ValidateAt(src, node, path, [&] { kind = ParseWaveformKind(type); });
-  if (kind == WaveformKind::kStep || kind == WaveformKind::kPulses) {
-    yaml::Fail(src, node["type"], Join(path, "type"), type,
-               "must be continuous in time: constant, ramp, sine or table (a jump in position "
-               "would move the node at infinite speed)");
-  }
-  return ReadWaveform(src, node, path, kind, &kPositionRange);
-}
-
-// A prescribed node's motion: one waveform on a line, a list of one per coordinate otherwise.
-void ReadPrescribed(const yaml::Source& src, const Document& node, const std::string& path,
-                    int dimensions, Node& out) {
-  if (dimensions == 1) {
-    if (node.IsSequence()) {
-      yaml::Fail(src, node, path, yaml::Describe(node),
-                 "must be one motion (a waveform) in 1 dimension: a list of motions, one per "
-                 "coordinate, needs dimensions: 2 or 3 at the top level");
-    }
-    out.motion = ReadMotion(src, node, path);
-    return;
-  }
-  const auto d = static_cast<std::size_t>(dimensions);
-  if (!node.IsSequence() || node.size() != d) {
-    yaml::Fail(
-        src, node, path, yaml::Describe(node),
-        "must be a list of " + std::to_string(d) + " motions " +
-            (d == 2 ? "[x(t), y(t)]" : "[x(t), y(t), z(t)]") +
-            ", each a waveform (constant, ramp, sine or table): " + HasDimensions(dimensions));
-  }
-  out.motion = ReadMotion(src, node[0], Indexed(path, 0));
-  for (std::size_t c = 1; c < d; ++c) {
-    out.motion_yz[c - 1] = ReadMotion(src, node[c], Indexed(path, c));
-  }
 }
 
 Node ReadNode(const yaml::Source& src, const Document& item, const std::string& path,
@@ -81,8 +45,9 @@ Node ReadNode(const yaml::Source& src, const Document& item, const std::string& 
   yaml::RequireMap(src, item, path, keys);
   kind.make(node);
   ReadFields(src, item, path, kind, node, nullptr, dimensions);
-  if (node.kind == NodeKind::kPrescribed) {
-    ReadPrescribed(src, item["prescribed"], Join(path, "prescribed"), dimensions, node);
+  // a motion is continuous, no pulse train: it needs no run span to resolve its edges
+  for (const SignalField<Node>& signal : NodeSignals()) {
+    if (signal.get(node, 0) != nullptr) ReadSignal(src, item, path, signal, node, dimensions, 0, 0);
   }
   ValidateAt(src, item, path, [&] { Validate(node); });
   return node;
@@ -110,10 +75,9 @@ void RequireElementKeys(const yaml::Source& src, const Document& item, const std
                         ElementKind kind, const std::string& type) {
   std::vector<std::string> keys = NameKeys(ElementNames(), true);
   if (kind == ElementKind::kActuator) {
-    for (const char* key :
-         {"model", "activation", "excitation", "activation_dynamics", "initial_activation"}) {
-      keys.emplace_back(key);
-    }
+    keys.emplace_back("model");
+    for (std::string& key : SignalKeys(ActuatorSignals<Element>())) keys.push_back(std::move(key));
+    keys.insert(keys.end(), {"activation_dynamics", "initial_activation"});
   }
   for (std::string& key : VariantKeys(ElementLaws(), type)) keys.push_back(std::move(key));
   keys.emplace_back("via");

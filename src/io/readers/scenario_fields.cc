@@ -4,8 +4,10 @@
 #include <cmath>
 
 #include "io/readers/part_fields_yaml.h"
+#include "io/readers/signal_fields_yaml.h"
 #include "musclesim/core/input_ranges.h"
 #include "musclesim/dynamics/activation_families.h"
+#include "musclesim/dynamics/actuator_signals.h"
 #include "musclesim/dynamics/load_kinds.h"
 #include "musclesim/dynamics/waveform_shapes.h"
 #include "musclesim/solver/solver_fields.h"
@@ -46,6 +48,16 @@ std::vector<TablePoint> ReadTablePoints(const yaml::Source& src, const Document&
   return table;
 }
 
+// Reads the signal `drive` was made for: its activation, or with an excitation that.
+void ReadDriveSignal(const yaml::Source& src, const Document& owner, const std::string& path,
+                     ActuatorDrive& drive, double t_start, double t_end) {
+  for (const SignalField<ActuatorDrive>& signal : ActuatorSignals<ActuatorDrive>()) {
+    if (signal.get(drive, 0) != nullptr) {
+      ReadSignal(src, owner, path, signal, drive, 1, t_start, t_end);
+    }
+  }
+}
+
 }  // namespace
 
 Waveform ReadWaveform(const yaml::Source& src, const Document& node, const std::string& path,
@@ -69,12 +81,21 @@ std::string ReadType(const yaml::Source& src, const Document& node, const std::s
   return yaml::ReadString(src, Required(src, node, path, "type"), Join(path, "type"));
 }
 
-Waveform ReadActivation(const yaml::Source& src, const Document& node, const std::string& path) {
+Waveform ReadSignalWaveform(const yaml::Source& src, const Document& node, const std::string& path,
+                            const InputRange* values,
+                            const std::function<void(const Waveform&)>& check, bool continuous,
+                            double t_start, double t_end) {
   const std::string type = ReadType(src, node, path);
   WaveformKind kind{};
   ValidateAt(src, node, path, [&] { kind = ParseWaveformKind(type); });
-  Waveform w = ReadWaveform(src, node, path, kind, nullptr);
-  ValidateAt(src, node, path, [&] { ValidateActivation(w); });
+  if (continuous && (kind == WaveformKind::kStep || kind == WaveformKind::kPulses)) {
+    yaml::Fail(src, node["type"], Join(path, "type"), type,
+               "must be continuous in time: constant, ramp, sine or table (a jump in position "
+               "would move the node at infinite speed)");
+  }
+  Waveform w = ReadWaveform(src, node, path, kind, values);
+  ValidateAt(src, node, path, [&] { check(w); });
+  CheckPulses(src, node, path, w, t_start, t_end);
   return w;
 }
 
@@ -134,18 +155,12 @@ ActuatorDrive ReadActuatorDrive(const yaml::Source& src, const Document& owner,
                  "only with excitation and activation_dynamics: activation: gives u(t) "
                  "itself, its start included");
     }
-    drive.activation = ReadActivation(src, activation, activation_path);
-    CheckPulses(src, activation, activation_path, drive.activation, t_start, t_end);
+    ReadDriveSignal(src, owner, path, drive, t_start, t_end);
     return drive;
   }
 
-  ExcitationInput input;
-  const std::string type = ReadType(src, excitation, excitation_path);
-  WaveformKind kind{};
-  ValidateAt(src, excitation, excitation_path, [&] { kind = ParseWaveformKind(type); });
-  input.signal = ReadWaveform(src, excitation, excitation_path, kind, nullptr);
-  ValidateAt(src, excitation, excitation_path, [&] { ValidateExcitation(input.signal); });
-  CheckPulses(src, excitation, excitation_path, input.signal, t_start, t_end);
+  ExcitationInput& input = drive.excitation.emplace();
+  ReadDriveSignal(src, owner, path, drive, t_start, t_end);
   if (!dynamics) {
     yaml::Fail(src, excitation, excitation_path, yaml::Describe(excitation),
                "needs activation_dynamics: {tau_activation, tau_deactivation} [s] beside it, "
@@ -155,7 +170,6 @@ ActuatorDrive ReadActuatorDrive(const yaml::Source& src, const Document& owner,
   if (initial) {
     input.initial_activation = yaml::ReadNumberIn(src, initial, initial_path, kActivationRange);
   }
-  drive.excitation = std::move(input);
   return drive;
 }
 

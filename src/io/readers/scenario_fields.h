@@ -4,6 +4,7 @@
 // naming file:line:column, key path, value and rule.
 #pragma once
 
+#include <functional>
 #include <initializer_list>
 #include <optional>
 #include <string>
@@ -28,8 +29,13 @@ Waveform ReadWaveform(const yaml::Source& src, const Document& node, const std::
                       WaveformKind kind, const InputRange* values,
                       std::initializer_list<const char*> extra = {});
 
-// An activation u(t): any waveform kind, validated within [0, 1].
-Waveform ReadActivation(const yaml::Source& src, const Document& node, const std::string& path);
+// Reads a signal's waveform (dynamics/signal_fields.h) at `node`, its `type` any shape or,
+// `continuous`, constant, ramp, sine or table; its values within `values` (nullptr: any
+// number), then `check`ed and its pulses checked against the run [t_start, t_end].
+Waveform ReadSignalWaveform(const yaml::Source& src, const Document& node, const std::string& path,
+                            const InputRange* values,
+                            const std::function<void(const Waveform&)>& check, bool continuous,
+                            double t_start, double t_end);
 
 // How an actuator's activation is given: `activation` (u(t) itself) or `excitation` with
 // `activation_dynamics` (docs/model.md section 8), exactly one.

@@ -6,10 +6,12 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "musclesim/core/number_format.h"
 #include "musclesim/core/part_fields.h"
+#include "musclesim/dynamics/signal_fields.h"
 
 namespace musclesim {
 
@@ -50,11 +52,49 @@ std::string NameRows(const std::vector<NameField<Owner>>& names) {
   return rows;
 }
 
-// `key` heads the column of the variants' names: the key that names one in a file ("type",
-// "family"). `name_rows` (NameRows) come first.
+// The cells after the key of each of `signals` (dynamics/signal_fields.h), by key: its unit,
+// whether it is required, the waveforms it accepts with its values' bounds, and its meaning.
 template <typename Part>
-std::string ReferenceTable(const std::vector<PartVariant<Part>>& variants,
-                           const std::string& key = "type", const std::string& name_rows = "") {
+std::vector<std::pair<std::string, std::string>> SignalCells(
+    const std::vector<SignalField<Part>>& signals) {
+  std::vector<std::pair<std::string, std::string>> cells;
+  for (const SignalField<Part>& signal : signals) {
+    const InputRange* values = signal.values(Part{});
+    std::string accepted =
+        signal.continuous ? "a waveform, constant, ramp, sine or table" : "a waveform of any shape";
+    if (signal.per_coordinate) accepted += ", one per coordinate (`dimensions`)";
+    if (!signal.accepted.empty()) {
+      accepted += "; its values " + signal.accepted;
+    } else if (values != nullptr) {
+      accepted += "; its values " + values->Bounds() + " " + values->unit + ": " + values->why;
+    }
+    cells.emplace_back(signal.key, std::string(signal.unit) + " | " +
+                                       (signal.required ? "required" : "optional") + " | " +
+                                       accepted + " | " + signal.doc);
+  }
+  return cells;
+}
+
+// The rows of `signals` every part has (a controller's reference), after `first`, the type
+// column's cell ("every").
+template <typename Part>
+std::string SignalRows(const std::vector<SignalField<Part>>& signals, const std::string& first) {
+  std::string rows;
+  for (const auto& [key, cells] : SignalCells(signals)) {
+    rows.append("| ").append(first).append(" | | `").append(key).append("` | ");
+    rows.append(cells).append(" |\n");
+  }
+  return rows;
+}
+
+// `key` heads the column of the variants' names: the key that names one in a file ("type",
+// "family"). `name_rows` (NameRows) come first. An other key (one its part's reader reads)
+// found in `other_cells` (SignalCells) has those cells, any other "its own rules".
+template <typename Part>
+std::string ReferenceTable(
+    const std::vector<PartVariant<Part>>& variants, const std::string& key = "type",
+    const std::string& name_rows = "",
+    const std::vector<std::pair<std::string, std::string>>& other_cells = {}) {
   std::string table = "| " + key + " | law | key | unit | default | accepted | meaning |\n";
   table += "|---|---|---|---|---|---|---|\n";
   table += name_rows;
@@ -107,7 +147,11 @@ std::string ReferenceTable(const std::vector<PartVariant<Part>>& variants,
           " | true or false | " + flag.doc);
     }
     for (const char* other : variant.other_keys) {
-      row(std::string("`") + other + "` | | | its own rules (above) | ");
+      std::string cells = "| | its own rules (above) | ";
+      for (const auto& [described, its_cells] : other_cells) {
+        if (described == other) cells = its_cells;
+      }
+      row(std::string("`") + other + "` | " + cells);
     }
   }
   return table;
