@@ -27,6 +27,7 @@ BLOCKS = {
     "output": ("docs/guide/scenarios.md", "output"),
     "sweep": ("docs/guide/sweeps.md", "sweep"),
     "identify": ("docs/guide/identification.md", "identify"),
+    "identify series": ("docs/guide/identification.md", "identify_series"),
 }
 
 

@@ -13,6 +13,7 @@
 #include "musclesim/dynamics/load_kinds.h"
 #include "musclesim/dynamics/node_kinds.h"
 #include "musclesim/dynamics/waveform_shapes.h"
+#include "musclesim/io/readers/identify_series_spec.h"
 #include "musclesim/io/readers/identify_spec.h"
 #include "musclesim/io/writers/reference_table.h"
 #include "musclesim/model/family_fields.h"
@@ -48,6 +49,9 @@ PART is one of
   output    the `output:` block: the rows' interval (a time or `steps`), phase tolerance and file
   sweep     the keys of a sweep file (`musclesim sweep`)
   identify  the blocks of `musclesim identify`'s data file: passive, active and velocity
+  identify_series
+            the keys of its data file on time series: the file's, a series' and a
+            parameter's
 )";
 
 }  // namespace
@@ -90,12 +94,17 @@ int ReferenceCommand(int argc, char** argv) {
     std::cout << ReferenceTable(SolverBlock(), "block");
   } else if (part == "sweep") {
     std::cout << ReferenceTable(SweepFileBlock(), "block");
+  } else if (part == "identify_series") {
+    std::cout << ReferenceHeader("entry") + ReferenceRows(IdentifySeriesFile()) +
+                     ReferenceRows(SeriesEntry()) + ReferenceRows(SeriesParameterEntry());
   } else if (part == "identify") {
     std::cout << ReferenceTable(IdentifyDataBlocks(), "block");
   } else {
-    throw UsageError("unknown part '" + part +
-                     "': actuator, nodes, elements, loads, waveforms, gains, controllers, models, "
-                     "activation_dynamics, time, solver, output, sweep or identify (see --help)");
+    throw UsageError(
+        "unknown part '" + part +
+        "': actuator, nodes, elements, loads, waveforms, gains, controllers, models, "
+        "activation_dynamics, time, solver, output, sweep, identify or identify_series (see "
+        "--help)");
   }
   return 0;
 }

@@ -69,7 +69,7 @@ TEST(IdentifySeriesSpec, RejectsEachBrokenRuleNamingWhereAndWhy) {
   EXPECT_EQ(ErrorWith("series:", "serie:"),
             "serie (FILE:2:1): unknown key; allowed here: scenario, series, parameters");
   EXPECT_EQ(ErrorWith("scenario: release.yaml", "scenario: \"\""),
-            "scenario = \"\" (FILE:1:11): must name a scenario file");
+            "scenario = \"\" (FILE:1:11): must not be empty");
   EXPECT_THAT(ErrorWith("  - noise: {tension_total: 0.1, length: 1.0e-4}", "  - {}"),
               HasSubstr("series[1] = {} (FILE:5:5): give csv (the measured values, to fit) or "
                         "noise"));
@@ -99,8 +99,8 @@ TEST(IdentifySeriesSpec, RejectsEachBrokenRuleNamingWhereAndWhy) {
                         ""),
               HasSubstr("parameters = ~ (FILE:7:1): must be a list of one or more parameters"));
   EXPECT_THAT(ErrorWith("start: 80", "stat: 80"),
-              HasSubstr("parameters[0].stat (FILE:7:25): unknown key; allowed here: path, start, "
-                        "bounds"));
+              HasSubstr("parameters[0].stat (FILE:7:25): unknown key; allowed here: start, "
+                        "bounds, path"));
 }
 
 // Measured series read from `csv` (as lengths.csv beside a data file) with `noise`.

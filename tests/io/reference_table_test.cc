@@ -26,6 +26,7 @@
 #include "musclesim/dynamics/node_kinds.h"
 #include "musclesim/dynamics/waveform_shapes.h"
 #include "musclesim/io/readers/document.h"
+#include "musclesim/io/readers/identify_series_spec.h"
 #include "musclesim/io/readers/identify_spec.h"
 #include "musclesim/io/readers/model_text.h"
 #include "musclesim/io/readers/scenario_yaml.h"
@@ -121,6 +122,13 @@ TEST(ReferenceTable, TheTimeAndOutputBlocksInTheScenariosGuideAreTheDescriptions
   const std::string page = Read("docs/guide/scenarios.md");
   EXPECT_EQ(Block(page, "time"), ReferenceTable(TimeBlock(), "block")) << kRewrite;
   EXPECT_EQ(Block(page, "output"), ReferenceTable(OutputBlock(), "block")) << kRewrite;
+}
+
+TEST(ReferenceTable, TheSeriesFileInTheIdentificationGuideIsTheDescription) {
+  EXPECT_EQ(Block(Read("docs/guide/identification.md"), "identify series"),
+            ReferenceHeader("entry") + ReferenceRows(IdentifySeriesFile()) +
+                ReferenceRows(SeriesEntry()) + ReferenceRows(SeriesParameterEntry()))
+      << kRewrite;
 }
 
 TEST(ReferenceTable, TheSweepFileInTheSweepsGuideIsTheDescription) {
@@ -281,6 +289,7 @@ TEST(ReferenceTable, EachListOfNumbersIsContiguous) {
   ExpectListsContiguous(ActuatorBlock());
   ExpectListsContiguous(IdentifyDataBlocks());
   ExpectListsContiguous(SweepFileBlock());
+  ExpectListsContiguous(SeriesParameterEntry());
 }
 
 TEST(ReferenceTable, TheReaderReadsTheOutputBlock) {

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "musclesim/core/key_path.h"
+#include "io/readers/part_fields_yaml.h"
 #include "io/readers/yaml_fields.h"
 
 namespace musclesim {
@@ -16,24 +17,18 @@ constexpr InputRange kNoiseRange{
     0.0, 1e12, "the column's unit",
     "a standard deviation is positive, and 1e12 is beyond any quantity a trajectory holds", true};
 
-// A start value or bound: the scenario's own rules check the value itself; this range keeps
-// the fit's arithmetic (differences and squares of steps) finite.
-constexpr InputRange kParameterRange{
-    -1e12, 1e12, "the parameter's unit",
-    "beyond 1e12 no quantity of a scenario lies, and steps between such values stay finite"};
-
 std::string Relative(const std::string& base_dir, const std::string& file) {
   return (std::filesystem::path(base_dir) / file).lexically_normal().string();
 }
 
 SeriesSpec ReadSeries(const yaml::Source& src, const Document& node, const std::string& path,
                       const std::string& base_dir, SeriesValues values) {
-  if (values == SeriesValues::kInMemory) {
-    // the caller holds the values: an entry gives at most their noise levels
-    yaml::RequireMap(src, node, path, {"noise"});
-  } else {
-    yaml::RequireMap(src, node, path, {"csv", "noise"});
-  }
+  const PartVariant<SeriesSpec>& entry = SeriesEntry().front();
+  std::vector<std::string> keys;
+  AddVariantKeys(entry, keys);
+  // the caller holds the values: an entry gives at most their noise levels
+  if (values == SeriesValues::kInMemory) std::erase(keys, std::string("csv"));
+  yaml::RequireMap(src, node, path, keys);
   SeriesSpec series;
   series.at = yaml::Place(src, node);
   if (values == SeriesValues::kCsvFiles && !node["csv"] && !node["noise"]) {
@@ -41,11 +36,10 @@ SeriesSpec ReadSeries(const yaml::Source& src, const Document& node, const std::
                "give csv (the measured values, to fit) or noise (the columns and their noise "
                "levels, enough for an experiment design)");
   }
-  if (const Document& csv = node["csv"]) {
-    const std::string file = yaml::ReadString(src, csv, path + ".csv");
-    if (file.empty()) yaml::Fail(src, csv, path + ".csv", "\"\"", "must name a CSV file");
-    series.csv = Relative(base_dir, file);
-    series.csv_at = yaml::Place(src, csv);
+  ReadFields(src, node, path, entry, series);
+  if (series.csv) {
+    series.csv = Relative(base_dir, *series.csv);
+    series.csv_at = yaml::Place(src, node["csv"]);
   }
   if (const Document& noise = node["noise"]) {
     if (!noise.IsMap() || noise.size() == 0) {
@@ -63,34 +57,25 @@ SeriesSpec ReadSeries(const yaml::Source& src, const Document& node, const std::
 
 SeriesParameterSpec ReadParameter(const yaml::Source& src, const Document& node,
                                   const std::string& path) {
-  yaml::RequireMap(src, node, path, {"path", "start", "bounds"});
+  const PartVariant<SeriesParameterSpec>& entry = SeriesParameterEntry().front();
+  std::vector<std::string> keys;
+  AddVariantKeys(entry, keys);
+  yaml::RequireMap(src, node, path, keys);
   SeriesParameterSpec parameter;
   parameter.at = yaml::Place(src, node);
-  const Document& name = yaml::Required(src, node, path, "path");
-  parameter.path = yaml::ReadString(src, name, path + ".path");
+  ReadFields(src, node, path, entry, parameter);
   const auto steps = SplitKeyPath(parameter.path);
   if (!steps || steps->empty()) {
-    yaml::Fail(src, name, path + ".path", yaml::Describe(name),
+    yaml::Fail(src, node["path"], path + ".path", yaml::Describe(node["path"]),
                "must be a dotted key path into the scenario, e.g. model.f_iso or load[0].value");
   }
-  if (const Document& start = node["start"]) {
-    parameter.start = yaml::ReadNumberIn(src, start, path + ".start", kParameterRange);
-  }
   if (const Document& bounds = node["bounds"]) {
-    const std::vector<double> values = yaml::ReadNumbers(src, bounds, path + ".bounds", 2);
-    for (std::size_t i = 0; i < 2; ++i) {
-      if (!kParameterRange.Contains(values[i])) {
-        yaml::Fail(src, bounds[i], path + ".bounds[" + std::to_string(i) + "]",
-                   yaml::Describe(bounds[i]), kParameterRange.Rule());
-      }
-    }
-    if (!(values[0] < values[1])) {
+    if (!(*parameter.lower < *parameter.upper)) {
       yaml::Fail(src, bounds, path + ".bounds", yaml::Describe(bounds),
                  "must be [lower, upper] with lower < upper");
     }
-    parameter.lower = values[0];
-    parameter.upper = values[1];
-    if (parameter.start && (*parameter.start < values[0] || *parameter.start > values[1])) {
+    if (parameter.start &&
+        (*parameter.start < *parameter.lower || *parameter.start > *parameter.upper)) {
       yaml::Fail(src, node["start"], path + ".start", yaml::Describe(node["start"]),
                  "must lie within bounds " + yaml::Describe(bounds));
     }
@@ -115,15 +100,12 @@ namespace {
 IdentifySeriesSpec ReadSpec(const yaml::Source& src, const Document& root,
                             const std::string& base_dir, SeriesValues values) {
   const std::string& source = src.file;
-  yaml::RequireMap(src, root, "", {"scenario", "series", "parameters"});
+  yaml::RequireMap(src, root, "", VariantKeys(IdentifySeriesFile(), "file"));
   IdentifySeriesSpec spec;
   spec.source = source;
-
-  const Document& scenario = yaml::Required(src, root, "", "scenario");
-  const std::string file = yaml::ReadString(src, scenario, "scenario");
-  if (file.empty()) yaml::Fail(src, scenario, "scenario", "\"\"", "must name a scenario file");
-  spec.scenario = Relative(base_dir, file);
-  spec.scenario_at = yaml::Place(src, scenario);
+  ReadFields(src, root, "", IdentifySeriesFile().front(), spec);
+  spec.scenario = Relative(base_dir, spec.scenario);
+  spec.scenario_at = yaml::Place(src, root["scenario"]);
 
   const Document& series = yaml::Required(src, root, "", "series");
   if (!series.IsSequence() || series.size() == 0) {

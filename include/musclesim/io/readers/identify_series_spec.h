@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/core/part_fields.h"
 #include "musclesim/io/readers/document.h"
 
 namespace musclesim {
@@ -39,6 +40,15 @@ struct IdentifySeriesSpec {
   std::vector<SeriesSpec> series;               // at least one
   std::vector<SeriesParameterSpec> parameters;  // at least one, paths distinct
 };
+
+// The data file's keys described once (core/part_fields.h): the file's own (`scenario`; its
+// `series` and `parameters`, lists of the entries below), a series' (`csv`; its `noise`, a map
+// from column names to standard deviations, has its reader's rules) and a parameter's (`path`,
+// `start`, `bounds`). The rules between keys stay the reader's: a series gives csv or noise,
+// bounds lower < upper with start within them, each path once.
+const std::vector<PartVariant<IdentifySeriesSpec>>& IdentifySeriesFile();
+const std::vector<PartVariant<SeriesSpec>>& SeriesEntry();
+const std::vector<PartVariant<SeriesParameterSpec>>& SeriesParameterEntry();
 
 // Whether the data file at `path` is of the time-series kind: a map with a top-level
 // `scenario` key. Throws InputError for a file that cannot be read or parsed.

@@ -87,6 +87,16 @@ std::string SignalRows(const std::vector<SignalField<Part>>& signals, const std:
   return rows;
 }
 
+// A reference table's head, `key` heading the column of the variants' names.
+inline std::string ReferenceHeader(const std::string& key) {
+  return "| " + key + " | law | key | unit | default | accepted | meaning |\n" +
+         "|---|---|---|---|---|---|---|\n";
+}
+
+template <typename Part>
+std::string ReferenceRows(const std::vector<PartVariant<Part>>& variants,
+                          const std::vector<std::pair<std::string, std::string>>& other_cells = {});
+
 // `key` heads the column of the variants' names: the key that names one in a file ("type",
 // "family"). `name_rows` (NameRows) come first. An other key (one its part's reader reads)
 // found in `other_cells` (SignalCells) has those cells, any other "its own rules".
@@ -95,9 +105,15 @@ std::string ReferenceTable(
     const std::vector<PartVariant<Part>>& variants, const std::string& key = "type",
     const std::string& name_rows = "",
     const std::vector<std::pair<std::string, std::string>>& other_cells = {}) {
-  std::string table = "| " + key + " | law | key | unit | default | accepted | meaning |\n";
-  table += "|---|---|---|---|---|---|---|\n";
-  table += name_rows;
+  return ReferenceHeader(key) + name_rows + ReferenceRows(variants, other_cells);
+}
+
+// The rows of `variants`, as ReferenceTable renders them: a table may hold the rows of
+// several parts (a file and the entries of its lists) under one header.
+template <typename Part>
+std::string ReferenceRows(const std::vector<PartVariant<Part>>& variants,
+                          const std::vector<std::pair<std::string, std::string>>& other_cells) {
+  std::string table;
   for (const PartVariant<Part>& variant : variants) {
     std::string type = std::string("`") + variant.type + "`";
     if (std::string_view(variant.name) != variant.type) {
