@@ -21,6 +21,7 @@ BLOCKS = {
     "loads": ("docs/guide/scenarios.md", "loads"),
     "activation dynamics": ("docs/guide/scenarios.md", "activation_dynamics"),
     "model families": ("docs/guide/model.md", "models"),
+    "fit": ("docs/guide/model.md", "fit"),
     "controllers": ("docs/guide/control.md", "controllers"),
     "time": ("docs/guide/scenarios.md", "time"),
     "solver": ("docs/guide/scenarios.md", "solver"),

@@ -32,10 +32,6 @@ namespace {
 // c_style: data() then walks the values in order, even for a column of a 2-d array
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-// The data file's bound of active.count (kGaussianCountRange, identify_spec_fields.cc), here
-// for the argument.
-constexpr int kMaxActiveCount = 12;
-
 // One curve's columns as given: x (a length [m] or a shortening velocity [m/s]) and tension [N].
 struct Columns {
   std::vector<double> x, tension;
@@ -147,9 +143,11 @@ AnyDict IdentifyCurves(const py::object& passive_curve, const py::object& active
   if (!passive && !active && !velocity) {
     throw InputError("give at least one of passive, active, velocity");
   }
-  if (active_count < 1 || active_count > kMaxActiveCount) {
-    throw InputError(InputFault{std::nullopt, "active_count", std::to_string(active_count),
-                                "must be an integer from 1 to " + std::to_string(kMaxActiveCount)});
+  // the data file's active.count, the same rule
+  if (!kGaussianCountRange.Contains(active_count)) {
+    throw InputError(InputFault{
+        std::nullopt, "active_count", std::to_string(active_count),
+        "must be an integer " + kGaussianCountRange.Bounds() + " [-]: " + kGaussianCountRange.why});
   }
   if (f_iso && !kPositiveForceRange.Contains(*f_iso)) {
     throw InputError(

@@ -17,6 +17,7 @@
 #include "musclesim/io/readers/identify_spec.h"
 #include "musclesim/io/writers/reference_table.h"
 #include "musclesim/model/family_fields.h"
+#include "musclesim/model/fit_fields.h"
 #include "musclesim/scenario/setting_fields.h"
 #include "musclesim/solver/solver_fields.h"
 #include "musclesim/sweep/sweep_file.h"
@@ -42,6 +43,7 @@ PART is one of
             a controller's names, signals (reference, feedforward, co_contraction.level) and
             gains
   models    the model blocks of the curve families (paper, degroote2016, mujoco)
+  fit       the paper's active_length.fit block: its Gaussians fitted at load
   activation_dynamics
             the families of activation dynamics (their `family:` in place of `type:`)
   time      the `time:` span
@@ -84,6 +86,8 @@ int ReferenceCommand(int argc, char** argv) {
         NameRows(ControllerNames()) + SignalRows(ControllerSignals(), "every"));
   } else if (part == "models") {
     std::cout << ReferenceTable(ModelFamilies(), "family");
+  } else if (part == "fit") {
+    std::cout << ReferenceTable(FitBlock(), "block");
   } else if (part == "activation_dynamics") {
     std::cout << ReferenceTable(ActivationFamilies(), "family");
   } else if (part == "time") {
@@ -102,7 +106,7 @@ int ReferenceCommand(int argc, char** argv) {
   } else {
     throw UsageError(
         "unknown part '" + part +
-        "': actuator, nodes, elements, loads, waveforms, gains, controllers, models, "
+        "': actuator, nodes, elements, loads, waveforms, gains, controllers, models, fit, "
         "activation_dynamics, time, solver, output, sweep, identify or identify_series (see "
         "--help)");
   }

@@ -10,13 +10,6 @@
 
 namespace musclesim {
 
-constexpr EnumName<FitTargetKind> kFitTargetNames[] = {
-    {FitTargetKind::kIndicator, "indicator"},
-    {FitTargetKind::kPolygon, "polygon"},
-    {FitTargetKind::kSamples, "samples"},
-    {FitTargetKind::kPreset, "preset"},
-};
-
 std::string_view ToString(FitTargetKind kind) { return ToString(kFitTargetNames, kind); }
 
 FitTargetKind ParseFitTargetKind(std::string_view text) {

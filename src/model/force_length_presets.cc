@@ -7,20 +7,16 @@
 
 namespace musclesim {
 
-constexpr EnumName<ForceLengthPreset> kPresetNames[] = {
-    {ForceLengthPreset::kDeGroote2016, "degroote2016"},
-    {ForceLengthPreset::kThelen2003, "thelen2003"},
-    {ForceLengthPreset::kGordon1966, "gordon1966"},
-    {ForceLengthPreset::kMuJoCo, "mujoco"},
-};
 constexpr std::array<ForceLengthPreset, 4> kAllPresets = {
     ForceLengthPreset::kDeGroote2016, ForceLengthPreset::kThelen2003,
     ForceLengthPreset::kGordon1966, ForceLengthPreset::kMuJoCo};
 
-std::string_view ToString(ForceLengthPreset preset) { return ToString(kPresetNames, preset); }
+std::string_view ToString(ForceLengthPreset preset) {
+  return ToString(kForceLengthPresetNames, preset);
+}
 
 ForceLengthPreset ParseForceLengthPreset(std::string_view text) {
-  return Parse(kPresetNames, "name", text);
+  return Parse(kForceLengthPresetNames, "name", text);
 }
 
 std::span<const ForceLengthPreset> AllForceLengthPresets() { return kAllPresets; }

@@ -9,6 +9,7 @@
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
 #include "musclesim/model/family_fields.h"
+#include "musclesim/model/fit_fields.h"
 #include "musclesim/scenario/actuator_scenario.h"
 
 namespace musclesim {
@@ -76,16 +77,14 @@ void ParameterResolver::ModelValue(std::function<double(const ModelSpec&)> get,
 void ParameterResolver::FitField(std::size_t i) {
   if (!fitted_) Fail("names no numeric parameter of the active length curve");
   End(i + 1);
-  if (Key(i) == "count") {
-    p_.integer_ = true;
-    return ModelValue([](const ModelSpec& m) { return static_cast<double>(m.fit->count); },
-                      [](ModelSpec& m, double v) { m.fit->count = static_cast<int>(v); }, true);
-  }
-  if (Key(i) == "optimal_length") {
-    return ModelValue([](const ModelSpec& m) { return m.fit->optimal_length.value_or(0.0); },
-                      [](ModelSpec& m, double v) { m.fit->optimal_length = v; }, true);
-  }
-  Fail("names no numeric parameter of the active length curve");
+  // the fit's numbers as its block describes them (model/fit_fields.h); a change refits
+  const NumberField<FitSpec>* field = FindField(FitBlock().front(), Key(i));
+  if (field == nullptr) Fail("names no numeric parameter of the active length curve");
+  p_.integer_ = field->integer;
+  p_.range_ = field->range;
+  p_.bounded_ = true;
+  ModelValue([get = field->get](const ModelSpec& m) { return get(*m.fit); },
+             [set = field->set](ModelSpec& m, double v) { set(*m.fit, v); }, true);
 }
 
 void ParameterResolver::ListItemField(const ListItemKey<ModelParams>& key) {

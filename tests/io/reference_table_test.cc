@@ -31,6 +31,7 @@
 #include "musclesim/io/readers/model_text.h"
 #include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/model/family_fields.h"
+#include "musclesim/model/fit_fields.h"
 #include "musclesim/scenario/parameter.h"
 #include "musclesim/scenario/scenario.h"
 #include "musclesim/scenario/setting_fields.h"
@@ -96,6 +97,11 @@ TEST(ReferenceTable, WaveformShapesInTheScenariosGuideAreTheDescriptions) {
 TEST(ReferenceTable, ModelFamiliesInTheModelGuideAreTheDescriptions) {
   EXPECT_EQ(Block(Read("docs/guide/model.md"), "model families"),
             ReferenceTable(ModelFamilies(), "family"))
+      << kRewrite;
+}
+
+TEST(ReferenceTable, TheFitBlockInTheModelGuideIsTheDescription) {
+  EXPECT_EQ(Block(Read("docs/guide/model.md"), "fit"), ReferenceTable(FitBlock(), "block"))
       << kRewrite;
 }
 

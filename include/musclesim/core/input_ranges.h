@@ -158,6 +158,11 @@ inline constexpr InputRange kFrequencyRange{
     "1.2e-7 s apart)"};
 
 // The values of a fit's target points [-]: shapes of height about 1.
+// The Gaussians f_L is fitted with (a fit block's count, an identification's): one at least,
+// and past a dozen the least-squares system of their amplitudes is ill-conditioned.
+inline constexpr InputRange kGaussianCountRange{
+    1, 12, "-",
+    "past a dozen Gaussians the fit of their amplitudes is ill-conditioned on a measured curve"};
 inline constexpr InputRange kFitValueRange{
     -1e6, 1e6, "-",
     "a target is a shape of height about 1; its squares in the cost stay far from overflow"};

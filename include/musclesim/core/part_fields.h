@@ -139,6 +139,9 @@ struct WordField {
   std::function<std::string_view(const Part&)> get;
   // Sets it to one of `names`.
   std::function<void(Part&, std::string_view)> set;
+  // Else absent leaves the part without it (a fit's preset `name`, for one target only, which
+  // the part's Validate states); `default_name` is then unused.
+  bool optional = false;
 };
 
 // The word field of the enum `member` of a Part, its names those of `table` (core/enum_names.h),

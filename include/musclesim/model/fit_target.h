@@ -17,11 +17,20 @@
 
 #include <Eigen/Core>
 
+#include "musclesim/core/enum_names.h"
 #include "musclesim/model/force_length_presets.h"
 
 namespace musclesim {
 
 enum class FitTargetKind { kIndicator, kPolygon, kSamples, kPreset };
+// The targets' names, as a fit block's `target` gives them.
+inline constexpr EnumName<FitTargetKind> kFitTargetNames[] = {
+    {FitTargetKind::kIndicator, "indicator"},
+    {FitTargetKind::kPolygon, "polygon"},
+    {FitTargetKind::kSamples, "samples"},
+    {FitTargetKind::kPreset, "preset"},
+};
+
 std::string_view ToString(FitTargetKind kind);
 // Throws ParameterError("target", text, ...) for an unknown name.
 FitTargetKind ParseFitTargetKind(std::string_view text);

@@ -12,9 +12,19 @@
 #include <string_view>
 #include <vector>
 
+#include "musclesim/core/enum_names.h"
+
 namespace musclesim {
 
 enum class ForceLengthPreset { kDeGroote2016, kThelen2003, kGordon1966, kMuJoCo };
+
+// The presets' names, as a fit block's `name` gives them.
+inline constexpr EnumName<ForceLengthPreset> kForceLengthPresetNames[] = {
+    {ForceLengthPreset::kDeGroote2016, "degroote2016"},
+    {ForceLengthPreset::kThelen2003, "thelen2003"},
+    {ForceLengthPreset::kGordon1966, "gordon1966"},
+    {ForceLengthPreset::kMuJoCo, "mujoco"},
+};
 
 std::string_view ToString(ForceLengthPreset preset);
 // Throws ParameterError("name", text, "must be one of degroote2016, thelen2003, ...") for an

@@ -6,12 +6,6 @@ namespace musclesim {
 
 namespace {
 
-// Gaussians the active curve is fitted with: one at least, and past a dozen the least-squares
-// system of their amplitudes is ill-conditioned on any measured curve.
-constexpr InputRange kGaussianCountRange{
-    1, 12, "-",
-    "past a dozen Gaussians the fit of their amplitudes is ill-conditioned on a measured curve"};
-
 // A block's `csv`: required, a path relative to the data file.
 TextField<IdentifySpec> CsvField(std::optional<std::string> IdentifySpec::*member,
                                  const char* doc) {

@@ -4,6 +4,7 @@
 #include "io/readers/scenario_readers.h"
 #include "musclesim/core/input_ranges.h"
 #include "musclesim/model/family_fields.h"
+#include "musclesim/model/fit_fields.h"
 
 namespace musclesim {
 
@@ -34,27 +35,10 @@ std::vector<TargetPoint> ReadPoints(const yaml::Source& src, const Document& nod
 }
 
 FitSpec ReadFitSpec(const yaml::Source& src, const Document& node, const std::string& path) {
-  yaml::RequireMap(
-      src, node, path,
-      {"count", "target", "points", "nonnegative", "widths", "centers", "name", "optimal_length"});
+  yaml::RequireMap(src, node, path, VariantKeys(FitBlock(), "fit"));
   FitSpec spec;
-  spec.count = yaml::ReadInteger(src, Required(src, node, path, "count"), Join(path, "count"));
-  if (node["target"]) {
-    const std::string text = yaml::ReadString(src, node["target"], Join(path, "target"));
-    yaml::ValidateAt(src, node, path, [&] { spec.target = ParseFitTargetKind(text); });
-  }
+  ReadFields(src, node, path, FitBlock().front(), spec);
   if (node["points"]) spec.points = ReadPoints(src, node["points"], Join(path, "points"));
-  if (node["name"]) {
-    const std::string text = yaml::ReadString(src, node["name"], Join(path, "name"));
-    yaml::ValidateAt(src, node, path, [&] { spec.preset = ParseForceLengthPreset(text); });
-  }
-  if (node["optimal_length"]) {
-    spec.optimal_length =
-        yaml::ReadNumberIn(src, node["optimal_length"], Join(path, "optimal_length"), kLengthRange);
-  }
-  if (node["nonnegative"]) {
-    spec.nonnegative = yaml::ReadBool(src, node["nonnegative"], Join(path, "nonnegative"));
-  }
   if (node["widths"])
     spec.precisions = yaml::ReadNumbers(src, node["widths"], Join(path, "widths"));
   if (node["centers"]) {

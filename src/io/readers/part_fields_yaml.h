@@ -130,7 +130,7 @@ void ReadWords(const yaml::Source& src, const Document& item, const std::string&
   for (const WordField<Part>& word : variant.words) {
     const Document& given = item[word.key];
     if (!given) {
-      word.set(part, word.default_name);
+      if (!word.optional) word.set(part, word.default_name);
       continue;
     }
     const std::string key_path = yaml::Join(path, word.key);

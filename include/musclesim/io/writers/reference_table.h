@@ -142,8 +142,9 @@ std::string ReferenceRows(const std::vector<PartVariant<Part>>& variants,
     for (const WordField<Part>& word : variant.words) {
       std::string names;
       for (std::string_view name : word.names) names.append(names.empty() ? "" : ", ").append(name);
-      row(std::string("`") + word.key + "` | | " + std::string(word.default_name) +
-          " | a name: " + names + " | " + word.doc);
+      row(std::string("`") + word.key + "` | | " +
+          (word.optional ? "optional" : std::string(word.default_name)) + " | a name: " + names +
+          " | " + word.doc);
     }
     for (const ListField<Part>& list : variant.lists) {
       row(std::string("`") + list.key + "` | | " + (list.required ? "required" : "optional") +
