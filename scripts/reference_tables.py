@@ -27,6 +27,7 @@ BLOCKS = {
     "solver": ("docs/guide/scenarios.md", "solver"),
     "output": ("docs/guide/scenarios.md", "output"),
     "sweep": ("docs/guide/sweeps.md", "sweep"),
+    "problem": ("docs/guide/optimize.md", "problem"),
     "identify": ("docs/guide/identification.md", "identify"),
     "identify series": ("docs/guide/identification.md", "identify_series"),
 }

@@ -23,7 +23,7 @@ def call(**changes):
 
 @pytest.mark.parametrize("changes, message", [
     ({"controls": [{"actuator": "flexor", "effort": {"power": 27}}]},
-     r"controls\[0\]\.effort\.power = 27 \(optimize\(\.\.\.\)\): must be 2 .*or 3"),
+     r"controls\[0\]\.effort\.power = 27 \(optimize\(\.\.\.\)\): must be an integer from 2 to 3 \[-\]: 2: integral of u\^2"),
     ({"controls": [{"actuator": "flexor", "effort": {"kind": "l1"}}]},
      r"controls\[0\]\.effort\.kind .*unknown key"),
     ({"intervals": 20.5}, r"intervals = 20\.5 .*integer"),

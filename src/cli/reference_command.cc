@@ -18,6 +18,7 @@
 #include "musclesim/io/writers/reference_table.h"
 #include "musclesim/model/family_fields.h"
 #include "musclesim/model/fit_fields.h"
+#include "musclesim/optimize/problem_fields.h"
 #include "musclesim/scenario/setting_fields.h"
 #include "musclesim/solver/solver_fields.h"
 #include "musclesim/sweep/sweep_file.h"
@@ -50,6 +51,8 @@ PART is one of
   solver    the `solver:` block: CVODES' tolerances, step guards, method and linear solver
   output    the `output:` block: the rows' interval (a time or `steps`), phase tolerance and file
   sweep     the keys of a sweep file (`musclesim sweep`)
+  problem   the keys of an optimal control problem (`musclesim optimize`): the file's, its
+            lists' entries and its blocks
   identify  the blocks of `musclesim identify`'s data file: passive, active and velocity
   identify_series
             the keys of its data file on time series: the file's, a series' and a
@@ -96,6 +99,8 @@ int ReferenceCommand(int argc, char** argv) {
     std::cout << ReferenceTable(OutputBlock(), "block");
   } else if (part == "solver") {
     std::cout << ReferenceTable(SolverBlock(), "block");
+  } else if (part == "problem") {
+    std::cout << ProblemReference();
   } else if (part == "sweep") {
     std::cout << ReferenceTable(SweepFileBlock(), "block");
   } else if (part == "identify_series") {
@@ -107,8 +112,8 @@ int ReferenceCommand(int argc, char** argv) {
     throw UsageError(
         "unknown part '" + part +
         "': actuator, nodes, elements, loads, waveforms, gains, controllers, models, fit, "
-        "activation_dynamics, time, solver, output, sweep, identify or identify_series (see "
-        "--help)");
+        "activation_dynamics, time, solver, output, sweep, problem, identify or "
+        "identify_series (see --help)");
   }
   return 0;
 }

@@ -4,18 +4,18 @@
 #include <filesystem>
 #include <limits>
 
+#include "io/readers/part_fields_yaml.h"
 #include "io/readers/yaml_fields.h"
 #include "musclesim/core/errors.h"
 #include "optimize/problem_checks.h"
 #include "musclesim/io/readers/csv_table.h"
 #include "musclesim/io/writers/output_file.h"
 #include "musclesim/io/readers/scenario_yaml.h"
+#include "musclesim/optimize/problem_fields.h"
 
 namespace musclesim {
 
 namespace {
-
-constexpr InputRange kIntervals{1.0, 100000.0, "", "the grid's intervals"};
 
 std::string Item(const char* list, std::size_t i) {
   std::string path = list;
@@ -23,72 +23,47 @@ std::string Item(const char* list, std::size_t i) {
   return path;
 }
 
-// [lower, upper] with lower <= upper, each within `range`.
-std::pair<double, double> ReadBounds(const yaml::Source& src, const Document& node,
-                                     const std::string& path, const InputRange& range) {
-  const std::vector<double> bounds = yaml::ReadNumbers(src, node, path, 2);
-  for (std::size_t k = 0; k < 2; ++k) {
-    yaml::ReadNumberIn(src, node[k], path + "[" + std::to_string(k) + "]", range);
+// The entry or block at `node` read by its description (problem_fields.h), its keys checked.
+template <typename Part>
+Part ReadDescribed(const yaml::Source& src, const Document& node, const std::string& path,
+                   const std::vector<PartVariant<Part>>& described) {
+  std::vector<std::string> keys;
+  AddVariantKeys(described.front(), keys);
+  yaml::RequireMap(src, node, path, keys);
+  Part part;
+  ReadFields(src, node, path, described.front(), part);
+  return part;
+}
+
+// A described pair bounds[0], bounds[1] in order, lower <= upper, where `node` gives it.
+void RequireOrdered(const yaml::Source& src, const Document& node, const std::string& path,
+                    double lower, double upper) {
+  if (const Document& bounds = node["bounds"]; bounds && lower > upper) {
+    yaml::Fail(src, bounds, yaml::Join(path, "bounds"), yaml::Describe(bounds),
+               "must be [lower, upper] with lower <= upper");
   }
-  if (bounds[0] > bounds[1]) {
-    yaml::Fail(src, node, path, yaml::Describe(node), "must be [lower, upper] with lower <= upper");
-  }
-  return {bounds[0], bounds[1]};
 }
 
 ControlSpec ReadControl(const yaml::Source& src, const Document& node, const std::string& path) {
-  yaml::RequireMap(src, node, path, {"actuator", "bounds", "effort"});
-  ControlSpec control;
-  control.actuator = yaml::ReadString(src, yaml::Required(src, node, path, "actuator"),
-                                      yaml::Join(path, "actuator"));
-  if (node["bounds"]) {
-    const InputRange unit{0.0, 1.0, "", "an activation"};
-    std::tie(control.lower, control.upper) =
-        ReadBounds(src, node["bounds"], yaml::Join(path, "bounds"), unit);
-  }
-  if (const Document& effort = node["effort"]) {
-    const std::string at = yaml::Join(path, "effort");
-    yaml::RequireMap(src, effort, at, {"weight", "power"});
-    const InputRange weights{0.0, 1e12, "", "a weight of the objective"};
-    control.effort_weight = yaml::ReadOptionalNumberIn(src, effort, at, "weight", weights, 1.0);
-    if (effort["power"]) {
-      const int power = yaml::ReadInteger(src, effort["power"], yaml::Join(at, "power"));
-      if (power != 2 && power != 3) {
-        yaml::Fail(src, effort["power"], yaml::Join(at, "power"), std::to_string(power),
-                   "must be 2 (integral of u^2) or 3 (integral of |u|^3)");
-      }
-      control.effort_power = power;
-    }
-  }
+  const ControlSpec control = ReadDescribed(src, node, path, ControlEntry());
+  RequireOrdered(src, node, path, control.lower, control.upper);
   return control;
 }
 
 FinalValue ReadFinal(const yaml::Source& src, const Document& node, const std::string& path) {
-  yaml::RequireMap(src, node, path, {"column", "value", "bounds"});
-  FinalValue final;
-  final.column =
-      yaml::ReadString(src, yaml::Required(src, node, path, "column"), yaml::Join(path, "column"));
-  const InputRange any{-1e6, 1e6, "", "a coordinate [m] or velocity [m/s]"};
-  if (node["value"] && node["bounds"]) {
+  if (node.IsMap() && node["value"] && node["bounds"]) {
     yaml::Fail(src, node["bounds"], yaml::Join(path, "bounds"), yaml::Describe(node["bounds"]),
                "give either value or bounds, not both");
   }
-  if (node["value"]) {
-    final.lower = final.upper =
-        yaml::ReadNumberIn(src, node["value"], yaml::Join(path, "value"), any);
-  } else if (node["bounds"]) {
-    std::tie(final.lower, final.upper) =
-        ReadBounds(src, node["bounds"], yaml::Join(path, "bounds"), any);
-  } else {
+  if (node.IsMap() && !node["value"] && !node["bounds"]) {
     throw InputError(InputFault{yaml::Place(src, node), path, std::nullopt,
                                 "missing required key: value (an equality) or bounds [lower, "
                                 "upper]"});
   }
+  const FinalValue final = ReadDescribed(src, node, path, FinalValueEntry());
+  RequireOrdered(src, node, path, final.lower, final.upper);
   return final;
 }
-
-const InputRange kWeights{0.0, 1e12, "", "a weight of the objective"};
-const InputRange kAnyValue{-1e12, 1e12, "", "a column's value"};
 
 // `entries` as a list of maps, each read by `read(node, path)`.
 template <typename Read>
@@ -102,12 +77,8 @@ void ReadList(const yaml::Source& src, const Document& entries, const char* key,
 }
 
 PathBound ReadPathBound(const yaml::Source& src, const Document& node, const std::string& path) {
-  yaml::RequireMap(src, node, path, {"column", "bounds"});
-  PathBound bound;
-  bound.column =
-      yaml::ReadString(src, yaml::Required(src, node, path, "column"), yaml::Join(path, "column"));
-  std::tie(bound.lower, bound.upper) = ReadBounds(src, yaml::Required(src, node, path, "bounds"),
-                                                  yaml::Join(path, "bounds"), kAnyValue);
+  const PathBound bound = ReadDescribed(src, node, path, PathBoundEntry());
+  RequireOrdered(src, node, path, bound.lower, bound.upper);
   return bound;
 }
 
@@ -151,45 +122,22 @@ std::vector<TablePoint> ReadReference(const yaml::Source& src, const Document& n
 
 TrackingTerm ReadTracking(const yaml::Source& src, const Document& node, const std::string& path,
                           std::vector<std::string>& inputs) {
-  yaml::RequireMap(src, node, path, {"column", "reference", "weight"});
-  TrackingTerm term;
-  term.column =
-      yaml::ReadString(src, yaml::Required(src, node, path, "column"), yaml::Join(path, "column"));
+  TrackingTerm term = ReadDescribed(src, node, path, TrackingEntry());
   term.reference = ReadReference(src, yaml::Required(src, node, path, "reference"),
                                  yaml::Join(path, "reference"), inputs);
-  term.weight = yaml::ReadOptionalNumberIn(src, node, path, "weight", kWeights, 1.0);
-  return term;
-}
-
-TerminalTerm ReadTerminal(const yaml::Source& src, const Document& node, const std::string& path) {
-  yaml::RequireMap(src, node, path, {"column", "target", "weight"});
-  TerminalTerm term;
-  term.column =
-      yaml::ReadString(src, yaml::Required(src, node, path, "column"), yaml::Join(path, "column"));
-  term.target = yaml::ReadNumberIn(src, yaml::Required(src, node, path, "target"),
-                                   yaml::Join(path, "target"), kAnyValue);
-  term.weight = yaml::ReadOptionalNumberIn(src, node, path, "weight", kWeights, 1.0);
   return term;
 }
 
 FreeParameter ReadParameter(const yaml::Source& src, const Document& node,
                             const std::string& path) {
-  yaml::RequireMap(src, node, path, {"path", "bounds"});
-  FreeParameter free;
-  free.path =
-      yaml::ReadString(src, yaml::Required(src, node, path, "path"), yaml::Join(path, "path"));
-  std::tie(free.lower, free.upper) = ReadBounds(src, yaml::Required(src, node, path, "bounds"),
-                                                yaml::Join(path, "bounds"), kAnyValue);
+  const FreeParameter free = ReadDescribed(src, node, path, ParameterEntry());
+  RequireOrdered(src, node, path, free.lower, free.upper);
   return free;
 }
 
 FreeFinalTime ReadFinalTime(const yaml::Source& src, const Document& node) {
-  yaml::RequireMap(src, node, "final_time", {"bounds", "weight"});
-  FreeFinalTime time;
-  const InputRange times{-1e9, 1e9, "s", "a time"};
-  std::tie(time.lower, time.upper) = ReadBounds(
-      src, yaml::Required(src, node, "final_time", "bounds"), "final_time.bounds", times);
-  time.weight = yaml::ReadOptionalNumberIn(src, node, "final_time", "weight", kWeights, 0.0);
+  const FreeFinalTime time = ReadDescribed(src, node, "final_time", FinalTimeBlock());
+  RequireOrdered(src, node, "final_time", time.lower, time.upper);
   return time;
 }
 
@@ -266,49 +214,20 @@ const Document& NodeAt(const Document& root, const std::string& path) {
 
 namespace {
 
-void ReadOptimizer(const yaml::Source& src, const Document& optimizer, OptimizeOptions& options) {
-  yaml::RequireMap(src, optimizer, "optimizer",
-                   {"tolerance", "max_iterations", "max_seconds", "derivatives"});
-  if (optimizer["derivatives"]) {
-    const std::string method =
-        yaml::ReadString(src, optimizer["derivatives"], "optimizer.derivatives");
-    if (method == "difference_quotients") {
-      options.derivatives = ShootingDerivatives::kDifferenceQuotients;
-    } else if (method != "sensitivities") {
-      yaml::Fail(src, optimizer["derivatives"], "optimizer.derivatives", method,
-                 "must be sensitivities (exact, the default) or difference_quotients");
-    }
+// The optimizer block, its defaults where the file has none.
+void ReadOptimizer(const yaml::Source& src, const Document& root, OptimizeOptions& options) {
+  if (const Document& optimizer = root["optimizer"]) {
+    options = ReadDescribed(src, optimizer, "optimizer", OptimizerBlock());
+  } else {
+    SetDefaults(OptimizerBlock().front(), options);
   }
-  const InputRange tolerances{1e-14, 1.0, "", "IPOPT's tol"};
-  options.tolerance =
-      yaml::ReadOptionalNumberIn(src, optimizer, "optimizer", "tolerance", tolerances, 1e-8);
-  if (optimizer["max_iterations"]) {
-    const int n = yaml::ReadInteger(src, optimizer["max_iterations"], "optimizer.max_iterations");
-    if (n < 1 || n > 100000) {
-      yaml::Fail(src, optimizer["max_iterations"], "optimizer.max_iterations", std::to_string(n),
-                 "must be an integer from 1 to 100000");
-    }
-    options.max_iterations = n;
-  }
-  const InputRange seconds{0.0, 1e7, "s", "the solve's wall time, checked after each iteration",
-                           true};
-  options.max_seconds = yaml::ReadOptionalNumberIn(
-      src, optimizer, "optimizer", "max_seconds", seconds, std::numeric_limits<double>::infinity());
 }
 
-// Every key of a problem but its base and outputs (a file's), into `file`; `inputs` gains
-// the files it reads (a tracking reference's CSV).
+// The lists and blocks of a problem (its own keys read by the caller), into `file`; `inputs`
+// gains the files it reads (a tracking reference's CSV).
 void ReadProblemBody(const yaml::Source& src, const Document& root, ProblemFile& file,
                      std::vector<std::string>& inputs) {
   OptimalControlProblem& problem = file.problem;
-  if (root["intervals"]) {
-    const double n = yaml::ReadNumberIn(src, root["intervals"], "intervals", kIntervals);
-    if (n != static_cast<double>(static_cast<int>(n))) {
-      yaml::Fail(src, root["intervals"], "intervals", yaml::Describe(root["intervals"]),
-                 "must be an integer from 1 to 100000");
-    }
-    problem.intervals = static_cast<int>(n);
-  }
   const Document& controls = yaml::Required(src, root, "", "controls");
   if (!controls.IsSequence() || controls.size() == 0) {
     yaml::Fail(src, controls, "controls", yaml::Describe(controls),
@@ -341,7 +260,7 @@ void ReadProblemBody(const yaml::Source& src, const Document& root, ProblemFile&
   if (const Document& terms = root["terminal"]) {
     ReadList(src, terms, "terminal", "{column: NAME, target: X, weight: W}",
              [&](const Document& n, const std::string& at) {
-               problem.terminal.push_back(ReadTerminal(src, n, at));
+               problem.terminal.push_back(ReadDescribed(src, n, at, TerminalEntry()));
              });
   }
   if (const Document& free = root["parameters"]) {
@@ -351,7 +270,7 @@ void ReadProblemBody(const yaml::Source& src, const Document& root, ProblemFile&
              });
   }
   if (const Document& time = root["final_time"]) problem.final_time = ReadFinalTime(src, time);
-  if (const Document& optimizer = root["optimizer"]) ReadOptimizer(src, optimizer, file.options);
+  ReadOptimizer(src, root, file.options);
 }
 
 // The problem against its scenario (an actuator, a column, a parameter it lacks): the
@@ -372,25 +291,20 @@ void CheckAgainstScenario(const yaml::Source& src, const Document& root,
 ProblemFile LoadProblemFile(const std::string& path) {
   const yaml::Source src{path};
   const Document& root = yaml::LoadFile(path);
-  yaml::RequireMap(src, root, "",
-                   {"base", "intervals", "controls", "final_values", "path_bounds", "tracking",
-                    "terminal", "parameters", "final_time", "optimizer", "output"});
+  yaml::RequireMap(src, root, "", VariantKeys(ProblemKeys(), "problem"));
   ProblemFile file;
   file.path = path;
-  const std::string base = yaml::ReadString(src, yaml::Required(src, root, "", "base"), "base");
-  file.base = (std::filesystem::path(path).parent_path() / base).lexically_normal().string();
+  ReadFields(src, root, "", ProblemKeys().front(), file);
+  file.base = (std::filesystem::path(path).parent_path() / file.base).lexically_normal().string();
   std::vector<std::string> inputs{path, file.base};  // what the outputs must not replace
   ReadProblemBody(src, root, file, inputs);
   const std::string stem = std::filesystem::path(path).stem().string();
   file.outputs = {stem + "_optimum.yaml", stem + "_optimum.json", stem + "_optimum.csv"};
   if (const Document& output = root["output"]) {
-    yaml::RequireMap(src, output, "output", {"scenario", "summary", "trajectory"});
-    for (const auto& [key, target] :
-         {std::pair<const char*, std::string*>{"scenario", &file.outputs.scenario},
-          {"summary", &file.outputs.summary},
-          {"trajectory", &file.outputs.trajectory}}) {
-      if (output[key]) *target = yaml::ReadString(src, output[key], yaml::Join("output", key));
-    }
+    std::vector<std::string> keys;
+    AddVariantKeys(ProblemOutputBlock().front(), keys);
+    yaml::RequireMap(src, output, "output", keys);
+    ReadFields(src, output, "output", ProblemOutputBlock().front(), file.outputs);
   }
   CheckOutputs(src, root, file.outputs, inputs);
   file.problem.scenario = LoadScenario(file.base);
@@ -402,11 +316,16 @@ ProblemFile ReadProblem(const Document& document, const std::string& name,
                         const Scenario& scenario) {
   const Document& root = document;
   const yaml::Source src{name, name};
-  yaml::RequireMap(src, root, "",
-                   {"intervals", "controls", "final_values", "path_bounds", "tracking", "terminal",
-                    "parameters", "final_time", "optimizer"});
+  // a document in memory has a scenario given, and writes nothing: no base, no output
+  PartVariant<ProblemFile> body = ProblemKeys().front();
+  body.texts.clear();
+  std::erase_if(body.other_keys, [](const char* key) { return std::string_view(key) == "output"; });
+  std::vector<std::string> keys;
+  AddVariantKeys(body, keys);
+  yaml::RequireMap(src, root, "", keys);
   ProblemFile file;
   file.path = name;
+  ReadFields(src, root, "", body, file);
   std::vector<std::string> inputs;
   ReadProblemBody(src, root, file, inputs);
   file.problem.scenario = scenario;

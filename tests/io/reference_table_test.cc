@@ -32,6 +32,7 @@
 #include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/model/family_fields.h"
 #include "musclesim/model/fit_fields.h"
+#include "musclesim/optimize/problem_fields.h"
 #include "musclesim/scenario/parameter.h"
 #include "musclesim/scenario/scenario.h"
 #include "musclesim/scenario/setting_fields.h"
@@ -135,6 +136,10 @@ TEST(ReferenceTable, TheSeriesFileInTheIdentificationGuideIsTheDescription) {
             ReferenceHeader("entry") + ReferenceRows(IdentifySeriesFile()) +
                 ReferenceRows(SeriesEntry()) + ReferenceRows(SeriesParameterEntry()))
       << kRewrite;
+}
+
+TEST(ReferenceTable, TheProblemFileInTheOptimizeGuideIsTheDescription) {
+  EXPECT_EQ(Block(Read("docs/guide/optimize.md"), "problem"), ProblemReference()) << kRewrite;
 }
 
 TEST(ReferenceTable, TheSweepFileInTheSweepsGuideIsTheDescription) {
@@ -296,6 +301,11 @@ TEST(ReferenceTable, EachListOfNumbersIsContiguous) {
   ExpectListsContiguous(IdentifyDataBlocks());
   ExpectListsContiguous(SweepFileBlock());
   ExpectListsContiguous(SeriesParameterEntry());
+  ExpectListsContiguous(ControlEntry());
+  ExpectListsContiguous(FinalValueEntry());
+  ExpectListsContiguous(PathBoundEntry());
+  ExpectListsContiguous(ParameterEntry());
+  ExpectListsContiguous(FinalTimeBlock());
 }
 
 TEST(ReferenceTable, TheReaderReadsTheOutputBlock) {

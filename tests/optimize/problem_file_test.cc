@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -50,6 +51,40 @@ TEST(ProblemFile, ReadsEveryKeyWithItsDefaults) {
   EXPECT_EQ(file.options.tolerance, 1e-7);
   EXPECT_EQ(file.options.max_iterations, 40);
   EXPECT_TRUE(file.outputs.scenario.empty());  // a document writes nothing
+}
+
+TEST(ProblemFile, ABlockLeftOutTakesItsDescribedDefaults) {
+  // the optimizer block absent: the defaults its description states, as for a block given
+  // without those keys
+  const std::string body = R"(controls:
+  - {actuator: muscle}
+final_time: {bounds: [0.1, 0.2]}
+terminal:
+  - {column: mass.position, target: 0.08}
+)";
+  const ProblemFile file =
+      ReadProblem(ParseDocument("problem", body), "problem", FlatActuatorOnALoad());
+  EXPECT_EQ(file.problem.intervals, 20);
+  EXPECT_EQ(file.problem.controls[0].lower, 0.0);
+  EXPECT_EQ(file.problem.controls[0].upper, 1.0);
+  EXPECT_EQ(file.options.tolerance, 1e-8);
+  EXPECT_EQ(file.options.max_iterations, 500);
+  EXPECT_EQ(file.options.derivatives, ShootingDerivatives::kSensitivities);
+  EXPECT_TRUE(std::isinf(file.options.max_seconds));
+  ASSERT_TRUE(file.problem.final_time);
+  EXPECT_EQ(file.problem.final_time->lower, 0.1);
+  EXPECT_EQ(file.problem.final_time->upper, 0.2);
+  EXPECT_EQ(file.problem.final_time->weight, 0.0);
+  ASSERT_EQ(file.problem.terminal.size(), 1u);
+  EXPECT_EQ(file.problem.terminal[0].target, 0.08);
+  EXPECT_EQ(file.problem.terminal[0].weight, 1.0);
+  const ProblemFile given =
+      ReadProblem(ParseDocument("problem", body + "optimizer: {derivatives: difference_quotients, "
+                                                  "max_seconds: 60}\n"),
+                  "problem", FlatActuatorOnALoad());
+  EXPECT_EQ(given.options.tolerance, 1e-8);
+  EXPECT_EQ(given.options.derivatives, ShootingDerivatives::kDifferenceQuotients);
+  EXPECT_EQ(given.options.max_seconds, 60.0);
 }
 
 struct Refusal {
@@ -107,17 +142,38 @@ INSTANTIATE_TEST_SUITE_P(
                       Refusal{"actuator: muscle", "actuator: nobody", "controls[0].actuator",
                               "nobody", "no actuator"},
                       Refusal{"bounds: [0.05, 0.9]}", "bounds: [0.05, 0.9], effort: {power: 4}}",
-                              "controls[0].effort.power", "4", "must be 2"},
+                              "controls[0].effort.power", "4",
+                              "must be an integer from 2 to 3 [-]: 2: integral of u^2"},
                       Refusal{"bounds: [0.05, 0.9]", "bounds: [0.05, 1.5]", "controls[0].bounds[1]",
                               "1.5", "must be"},
                       Refusal{"column: mass.position", "column: mass.speed",
-                              "final_values[0].column", "mass.speed", "column"}),
+                              "final_values[0].column", "mass.speed", "column"},
+                      Refusal{"intervals: 20", "intervals: 2.5", "intervals", "2.5",
+                              "must be an integer from 1 to 1e+05 [-]"},
+                      Refusal{"bounds: [0.05, 0.9]", "bounds: [0.9, 0.05]", "controls[0].bounds",
+                              "[0.9, 0.05]", "lower <= upper"},
+                      Refusal{"bounds: [0.05, 0.9]}", "bounds: [0.05, 0.9], effort: {weight: -1}}",
+                              "controls[0].effort.weight", "-1", "must be from 0 to 1e+12"},
+                      Refusal{"value: 0.08}", "value: 0.08, bounds: [0, 1]}",
+                              "final_values[0].bounds", "[0, 1]", "either value or bounds"},
+                      Refusal{"tolerance: 1.0e-7", "tolerance: 0", "optimizer.tolerance", "0",
+                              "must be from 1e-14 to 1"},
+                      Refusal{"max_iterations: 40", "max_iterations: 0", "optimizer.max_iterations",
+                              "0", "must be an integer from 1"},
+                      Refusal{"max_iterations: 40", "max_iterations: 40, derivatives: guess",
+                              "optimizer.derivatives", "guess",
+                              "must be sensitivities or difference_quotients"},
+                      Refusal{"max_iterations: 40}",
+                              "max_iterations: 40}\nfinal_time: {bounds: [0.2, 0.1]}",
+                              "final_time.bounds", "[0.2, 0.1]", "lower <= upper"},
+                      Refusal{"max_iterations: 40}", "max_iterations: 40}\noutput: {summary: \"\"}",
+                              "output.summary", "\"\"", "must not be empty"}),
     [](const ::testing::TestParamInfo<Refusal>& param) {
       std::string name = param.param.key;
       for (char& c : name) {
         if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
       }
-      return name;
+      return name + "_" + std::to_string(param.index);  // a key may be refused twice
     });
 
 }  // namespace

@@ -375,6 +375,18 @@ std::size_t ListLength(const PartVariant<Part>& variant, std::string_view list) 
   return length;
 }
 
+// Gives `part` what a file that leaves out every optional key of `variant` gives it: each
+// number's default and each word's.
+template <typename Part>
+void SetDefaults(const PartVariant<Part>& variant, Part& part) {
+  for (const NumberField<Part>& field : variant.fields) {
+    if (field.default_value) field.set(part, *field.default_value);
+  }
+  for (const WordField<Part>& word : variant.words) {
+    if (!word.optional) word.set(part, word.default_name);
+  }
+}
+
 // The field of `variant` whose key is `key` ("exponential.k"); null when it has none.
 template <typename Part>
 const NumberField<Part>* FindField(const PartVariant<Part>& variant, std::string_view key) {
