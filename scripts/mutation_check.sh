@@ -345,6 +345,25 @@ mutation range-open-max-closed include/musclesim/core/input_ranges.h \
 mutation point-handle-sets-x src/scenario/parameter_resolver.h \
   '      x[c] = v;' \
   '      x[0] = v;' "$t_described" "$r_described"
+# a part's signals (dynamics/signal_fields.h), the sweep's and the problem's files
+t_signals="signal_fields_test spatial_network_yaml_test controller_yaml_test"
+r_signals=$(suites SignalFields SpatialNetworkYaml ControllerYaml)
+mutation signal-feedforward-bounded-as-position src/dynamics/controller_gains.cc \
+  '&kFeedforwardRange, CheckWaveform' \
+  '&kPositionRange, CheckWaveform' "$t_signals" "$r_signals"
+mutation signal-motion-may-jump src/dynamics/node_kinds.cc \
+  'motion.continuous = true;' \
+  'motion.continuous = false;' "$t_signals" "$r_signals"
+mutation signal-handle-matches-last-step-only src/scenario/parameter_resolver.h \
+  'named = Key(next++) == signal.key.substr(begin, dot - begin);' \
+  'named = dot != std::string::npos || Key(next) == signal.key.substr(begin); ++next;' \
+  "$t_signals" "$r_signals"
+mutation sweep-samples-always-required src/sweep/sweep_spec_fields.cc \
+  'field.given = IsRandom;' \
+  '(void)IsRandom;' "sweep_spec_test sweep_test" "$(suites SweepSpec Sweep)"
+mutation problem-absent-optimizer-keeps-struct-defaults src/optimize/problem_file.cc \
+  'SetDefaults(OptimizerBlock().front(), options);' \
+  '(void)options;' "problem_file_test" "$(suites ProblemFile ProblemFileRefusal)"
 # ---------------------------------------------------------------------------------------
 
 # Literal single-occurrence replace: apply (default) or only check (--check).

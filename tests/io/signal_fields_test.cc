@@ -135,6 +135,10 @@ TEST(SignalFields, AHandleReachesOnlyTheSignalsThePartHas) {
   const Scenario driven = Read(Driving("reference: {type: constant, value: 0.1}"));
   EXPECT_THROW(driven.parameter("controllers[0].co_contraction.level.value"), ParameterError);
   EXPECT_THROW(driven.parameter("elements[0].activation.value"), ParameterError);  // controlled
+  // every step of a nested signal's key, not its last alone
+  const Scenario pair = Read(Pair(Ramp("0.2", "0.3")));
+  EXPECT_EQ(pair.parameter("controllers[0].co_contraction.level.to").Get(pair), 0.3);
+  EXPECT_THROW(pair.parameter("controllers[0].contraction.level.to"), ParameterError);
   const Scenario excited = Read(Actuator(
       "excitation: {type: constant, value: 0.5}, activation_dynamics: {tau_activation: 0.01, "
       "tau_deactivation: 0.04}"));
