@@ -57,11 +57,12 @@ const std::vector<SignalField<Controller>>& ControllerSignals() {
     feedforward.required = false;
     SignalField<Controller> level = Signal<Controller>(
         "co_contraction.level", "-",
-        "with co_contraction (its actuators: [FIRST, SECOND]), the pair's common activation: "
-        "FIRST takes level + c, SECOND level - c",
+        "the pair's common activation (co_contraction's actuators: [FIRST, SECOND]): FIRST "
+        "takes level + c, SECOND level - c",
         [](auto& c, std::size_t) { return c.co_contraction ? &c.co_contraction->level : nullptr; },
         nullptr, CheckActivation);
     level.accepted = ActivationValues();
+    level.required_with = "co_contraction";
     return std::vector{std::move(reference), std::move(feedforward), std::move(level)};
   }();
   return signals;

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "musclesim/core/errors.h"
+#include "musclesim/core/input_ranges.h"
 
 namespace musclesim {
 
@@ -110,8 +111,9 @@ void ValidateShapes(const FitSpec& spec) {
 }  // namespace
 
 void Validate(const FitSpec& spec) {
-  Require(spec.count >= 1 && spec.count <= 12, "count", spec.count,
-          "must be an integer from 1 to 12");
+  Require(
+      kGaussianCountRange.Contains(spec.count), "count", spec.count,
+      "must be an integer " + kGaussianCountRange.Bounds() + " [-]: " + kGaussianCountRange.why);
   for (std::size_t i = 0; i < spec.points.size(); ++i) {
     Require(std::isfinite(spec.points[i].x), PointName(i) + "[0]", spec.points[i].x,
             "must be finite");

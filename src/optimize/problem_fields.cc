@@ -14,7 +14,6 @@ namespace {
 constexpr InputRange kIntervalRange{1.0, 100000.0, "-",
                                     "each interval is a shooting segment: 1e5 of them is "
                                     "beyond any problem IPOPT solves in a working day"};
-constexpr InputRange kActivationBounds{0.0, 1.0, "-", "an activation is within [0, 1]"};
 constexpr InputRange kWeightRange{0.0, 1e12, "-",
                                   "a weight of the objective: >= 0, and within 1e12 of the "
                                   "other terms, which IPOPT's scaling can still resolve"};
@@ -98,8 +97,8 @@ const std::vector<PartVariant<ControlSpec>>& ControlEntry() {
   using C = ControlSpec;
   static const std::vector<PartVariant<C>> entry{Entry<C>(
       "controls[k]", "u(t), piecewise linear on the grid",
-      {Number("bounds[0]", &C::lower, kActivationBounds, 0.0, "its lowest value at every point"),
-       Number("bounds[1]", &C::upper, kActivationBounds, 1.0, "its highest, at least bounds[0]"),
+      {Number("bounds[0]", &C::lower, kActivationRange, 0.0, "its lowest value at every point"),
+       Number("bounds[1]", &C::upper, kActivationRange, 1.0, "its highest, at least bounds[0]"),
        Number("effort.weight", &C::effort_weight, kWeightRange, 1.0,
               "w of the effort term w * integral of u^q dt"),
        Whole("effort.power", &C::effort_power, kPowerRange, 2.0, "q of the effort term")},
@@ -194,14 +193,15 @@ const std::vector<PartVariant<FreeFinalTime>>& FinalTimeBlock() {
 const std::vector<PartVariant<OptimizeOptions>>& OptimizerBlock() {
   using O = OptimizeOptions;
   static const std::vector<PartVariant<O>> block = [] {
-    PartVariant<O> optimizer = Entry<O>(
-        "optimizer", "IPOPT's settings",
-        {Number("tolerance", &O::tolerance, kToleranceRange, 1e-8, "IPOPT's tol"),
-         Whole("max_iterations", &O::max_iterations, kIterationRange, 500.0, "IPOPT's max_iter"),
-         Number("max_seconds", &O::max_seconds, kSecondsRange,
-                std::numeric_limits<double>::infinity(),
-                "the solve's wall time limit; none by default")},
-        {});
+    PartVariant<O> optimizer =
+        Entry<O>("optimizer", "IPOPT's settings",
+                 {Number("tolerance", &O::tolerance, kToleranceRange, 1e-8, "IPOPT's tol"),
+                  Whole("max_iterations", &O::max_iterations, kIterationRange, O{}.max_iterations,
+                        "IPOPT's max_iter"),
+                  Number("max_seconds", &O::max_seconds, kSecondsRange,
+                         std::numeric_limits<double>::infinity(),
+                         "the solve's wall time limit; none by default")},
+                 {});
     optimizer.words = {EnumField("derivatives", &O::derivatives, kShootingDerivativesNames,
                                  "sensitivities: exact, by the forward sensitivities; "
                                  "difference_quotients: by differences")};

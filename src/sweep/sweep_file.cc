@@ -158,7 +158,8 @@ const Document& ReadMetrics(const yaml::Source& src, const Document& root, Sweep
 void CheckMetricOptions(const yaml::Source& src, const Document& root, const Document& metrics,
                         const SweepSpec& spec) {
   const MetricOptions& options = spec.metric_options;
-  if (options.window_start && !(*options.window_end > *options.window_start)) {
+  if (options.window_start && options.window_end &&
+      !(*options.window_end > *options.window_start)) {
     const Document& window = root["metric_options"]["window"];
     yaml::Fail(src, window, "metric_options.window", yaml::Describe(window),
                "must be [start, end] with end > start [s]");

@@ -16,7 +16,7 @@ using Spec = SweepSpec;
 
 // A random sweep's number of points: at most kMaxSweepPoints.
 constexpr InputRange kSampleRange{
-    1.0, 1e9, "-",
+    1.0, static_cast<double>(kMaxSweepPoints), "-",
     "a sweep may have at most 1e9 points: a running sweep keeps a bit per point in memory and "
     "about 150 bytes per point on disk"};
 // A seed is read as a double: beyond 2^53 not every integer is one.

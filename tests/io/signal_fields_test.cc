@@ -38,9 +38,13 @@ std::string Ramp(const std::string& from, const std::string& to) {
 // A controller on the actuator e's length, driving it, with `keys` (its reference and more).
 std::string Driving(const std::string& keys, const std::string& quantity = "length") {
   return std::string(kTwoNodes) + kModel +
-         "elements:\n  - {name: e, type: actuator, from: wall, to: load, model: m}\n"
-         "controllers:\n  - {name: c, type: pid, measure: {element: e, quantity: " +
-         quantity + "}, drives: e, gains: {kp: -1}, " + keys + "}\n" + kTime;
+         "elements:\n  - {name: e, type: actuator, from: wall, to: load, model: m" +
+         // a tension measured on the actuator driven needs its activation a state
+         (quantity == "tension"
+              ? ", activation_dynamics: {tau_activation: 0.01, tau_deactivation: 0.04}"
+              : "") +
+         "}\ncontrollers:\n  - {name: c, type: pid, measure: {element: e, quantity: " + quantity +
+         "}, drives: e, gains: {kp: -1}, " + keys + "}\n" + kTime;
 }
 
 // A pair a and b on either side of the load, its level `level`.
@@ -144,6 +148,16 @@ TEST(SignalFields, AHandleReachesOnlyTheSignalsThePartHas) {
       "tau_deactivation: 0.04}"));
   EXPECT_THROW(excited.parameter("elements[0].activation.value"), ParameterError);
   EXPECT_EQ(excited.parameter("elements[0].excitation.value").Get(excited), 0.5);
+  // a handle keeps to the signal's bounds at its part: a feedforward's, a tension's
+  const Scenario forward =
+      Read(Driving("reference: {type: constant, value: 0.1}, feedforward: " + Ramp("0", "0.5")));
+  EXPECT_NO_THROW(forward.parameter("controllers[0].feedforward.to").Check(0.9));
+  EXPECT_THROW(forward.parameter("controllers[0].feedforward.to").Check(1.5), ParameterError);
+  EXPECT_NO_THROW(forward.parameter("controllers[0].reference.value").Check(999.0));
+  EXPECT_THROW(forward.parameter("controllers[0].reference.value").Check(1001.0), ParameterError);
+  const Scenario tension = Read(Driving("reference: {type: constant, value: 10}", "tension"));
+  EXPECT_NO_THROW(tension.parameter("controllers[0].reference.value").Check(1e6));
+  EXPECT_THROW(tension.parameter("controllers[0].reference.value").Check(2e9), ParameterError);
   const Scenario line = Read(Prescribed("{type: constant, value: 0.1}"));
   EXPECT_THROW(line.parameter("nodes[0].prescribed[0].value"), ParameterError);  // no index
   EXPECT_THROW(line.parameter("nodes[1].prescribed.value"), ParameterError);     // free
@@ -219,7 +233,8 @@ TEST(SignalFields, TheReferenceRowsStateEachSignal) {
   EXPECT_THAT(rows, HasSubstr("| every | | `reference` | m or N | required |"));
   EXPECT_THAT(rows, HasSubstr("| every | | `feedforward` | - | optional |"));
   EXPECT_THAT(rows, HasSubstr(kFeedforwardRange.why));
-  EXPECT_THAT(rows, HasSubstr("| every | | `co_contraction.level` | - | required |"));
+  EXPECT_THAT(rows,
+              HasSubstr("| every | | `co_contraction.level` | - | required with co_contraction |"));
   const std::string motion = SignalCells(NodeSignals()).front().second;
   EXPECT_THAT(motion, HasSubstr("constant, ramp, sine or table, one per coordinate"));
   EXPECT_THAT(motion, HasSubstr(kPositionRange.why));

@@ -69,6 +69,7 @@ terminal:
   EXPECT_EQ(file.problem.controls[0].upper, 1.0);
   EXPECT_EQ(file.options.tolerance, 1e-8);
   EXPECT_EQ(file.options.max_iterations, 500);
+  EXPECT_EQ(file.options.max_iterations, OptimizeOptions{}.max_iterations);
   EXPECT_EQ(file.options.derivatives, ShootingDerivatives::kSensitivities);
   EXPECT_TRUE(std::isinf(file.options.max_seconds));
   ASSERT_TRUE(file.problem.final_time);

@@ -25,6 +25,8 @@ struct SignalField {
   const char* unit = "";  // of its values, for the reference table: "m or N"
   const char* doc = "";
   bool required = true;  // else absent is the part's own (its default, told in `doc`)
+  // When it is required only with another key (a pair's level), that key, for the table.
+  const char* required_with = nullptr;
   // Its values' bounds for the reference table where `values` depends on the part ("those of
   // the measured quantity"); "" states `values` of a default part.
   std::string accepted;

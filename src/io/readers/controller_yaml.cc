@@ -136,8 +136,7 @@ Controller ReadController(const yaml::Source& src, const Document& item, const s
   // after the measure, whose quantity is the reference's unit, and the pair, which holds its
   // level
   for (const SignalField<Controller>& signal : ControllerSignals()) {
-    if (signal.get(c, 0) != nullptr)
-      ReadSignal(src, item, path, signal, c, dimensions, t_start, t_end);
+    ReadSignal(src, item, path, signal, c, dimensions, t_start, t_end);
   }
   ValidateAt(src, item, path, [&] { Validate(c); });
   return c;

@@ -70,7 +70,7 @@ SeriesParameterSpec ReadParameter(const yaml::Source& src, const Document& node,
                "must be a dotted key path into the scenario, e.g. model.f_iso or load[0].value");
   }
   if (const Document& bounds = node["bounds"]) {
-    if (!(*parameter.lower < *parameter.upper)) {
+    if (!(parameter.lower && parameter.upper && *parameter.lower < *parameter.upper)) {
       yaml::Fail(src, bounds, path + ".bounds", yaml::Describe(bounds),
                  "must be [lower, upper] with lower < upper");
     }

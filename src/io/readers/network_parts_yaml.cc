@@ -47,7 +47,7 @@ Node ReadNode(const yaml::Source& src, const Document& item, const std::string& 
   ReadFields(src, item, path, kind, node, nullptr, dimensions);
   // a motion is continuous, no pulse train: it needs no run span to resolve its edges
   for (const SignalField<Node>& signal : NodeSignals()) {
-    if (signal.get(node, 0) != nullptr) ReadSignal(src, item, path, signal, node, dimensions, 0, 0);
+    ReadSignal(src, item, path, signal, node, dimensions, 0, 0);
   }
   ValidateAt(src, item, path, [&] { Validate(node); });
   return node;

@@ -52,9 +52,7 @@ std::vector<TablePoint> ReadTablePoints(const yaml::Source& src, const Document&
 void ReadDriveSignal(const yaml::Source& src, const Document& owner, const std::string& path,
                      ActuatorDrive& drive, double t_start, double t_end) {
   for (const SignalField<ActuatorDrive>& signal : ActuatorSignals<ActuatorDrive>()) {
-    if (signal.get(drive, 0) != nullptr) {
-      ReadSignal(src, owner, path, signal, drive, 1, t_start, t_end);
-    }
+    ReadSignal(src, owner, path, signal, drive, 1, t_start, t_end);
   }
 }
 

@@ -28,13 +28,15 @@ std::vector<std::string> SignalKeys(const std::vector<SignalField<Part>>& signal
   return keys;
 }
 
-// Reads the signal `field` from the map `item` (the part's, at `path`) into `part`, whose
-// waveform for it must be there (a controller's co_contraction made before its level); a
-// nested key's maps are the caller's to check. An optional one absent leaves the part's.
+// Reads the signal `field` from the map `item` (the part's, at `path`) into `part`, if the
+// part has a waveform for it (a controller's co_contraction made before its level; none: the
+// signal is not the part's, and not read); a nested key's maps are the caller's to check. An
+// optional one absent leaves the part's.
 template <typename Part>
 void ReadSignal(const yaml::Source& src, const Document& item, const std::string& path,
                 const SignalField<Part>& field, Part& part, int dimensions, double t_start,
                 double t_end) {
+  if (field.get(part, 0) == nullptr) return;
   const Document* map = &item;
   std::string at = path;
   std::size_t begin = 0;

@@ -68,9 +68,12 @@ std::vector<std::pair<std::string, std::string>> SignalCells(
     } else if (values != nullptr) {
       accepted += "; its values " + values->Bounds() + " " + values->unit + ": " + values->why;
     }
-    cells.emplace_back(signal.key, std::string(signal.unit) + " | " +
-                                       (signal.required ? "required" : "optional") + " | " +
-                                       accepted + " | " + signal.doc);
+    const std::string presence = signal.required_with != nullptr
+                                     ? std::string("required with ") + signal.required_with
+                                 : signal.required ? "required"
+                                                   : "optional";
+    cells.emplace_back(signal.key, std::string(signal.unit) + " | " + presence + " | " + accepted +
+                                       " | " + signal.doc);
   }
   return cells;
 }
