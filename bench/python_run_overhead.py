@@ -41,7 +41,7 @@ def sweep_times():
         sweep = os.path.join(directory, "sweep.yaml")
         with open(sweep, "w") as file:
             file.write("base: %s\nparameters:\n  load[0].after: [%s]\nmetrics: [final_length]\n"
-                       "output: %s\n" % (SCENARIO, ", ".join(repr(f) for f in LOADS),
+                       "output: %s\n" % (SCENARIO, ", ".join(repr(float(f)) for f in LOADS),
                                          os.path.join(directory, "summary.csv")))
         cli, python = [], []
         base = musclesim.load_scenario(SCENARIO)
