@@ -13,6 +13,7 @@
 #include "dynamics/network_space.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
+#include "dynamics/network_skeleton.h"
 
 namespace musclesim::network {
 
@@ -29,6 +30,10 @@ void InitialState(const NetworkModel& m, double t_start, double* y) {
   }
   for (const Activation& a : m.activations) {
     y[a.state] = m.elements[a.element].excitation->InitialActivation(t_start);
+  }
+  if (m.skeleton) {
+    const int n = m.skeleton->coordinate_count();
+    m.skeleton->InitialState(y + m.skeleton_state, y + m.skeleton_state + n);
   }
 }
 
@@ -70,6 +75,7 @@ double PositionOf(const NetworkModel& m, const End& end, double t, const double*
     case NodeKind::kFree: return y[end.state];
     case NodeKind::kFixed: return end.position;
     case NodeKind::kPrescribed: return m.nodes[end.node].motion.Evaluate(t);
+    case NodeKind::kOnBody: break;  // never on a line: bodies need 2 or 3 dimensions
   }
   return 0.0;
 }
@@ -80,6 +86,7 @@ double VelocityOf(const NetworkModel& m, const End& end, double t, const double*
       return end.junction >= 0 ? JunctionVelocity(m, end.junction, t, y) : y[end.rate];
     case NodeKind::kFixed: return 0.0;
     case NodeKind::kPrescribed: return m.nodes[end.node].motion.Slope(t);
+    case NodeKind::kOnBody: break;  // never on a line
   }
   return 0.0;
 }
@@ -164,6 +171,7 @@ void RightHandSide(const NetworkModel& m, double t, const double* y, double* ydo
 
 void Jacobian(const NetworkModel& m, double t, const double* y, double* values,
               NetworkScratch& scratch) {
+  if (m.skeleton) return SkeletonJacobian(m, t, y, values, scratch);
   if (m.space.dimensions > 1) return SpaceJacobian(m, t, y, values);
   std::fill(values, values + m.pattern.entries(), 0.0);
   for (const FreeNode& f : m.free_nodes) {

@@ -12,6 +12,7 @@
 
 #include "dynamics/network_control.h"
 #include "dynamics/network_junction.h"
+#include "dynamics/network_skeleton.h"
 #include "dynamics/network_space.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
@@ -20,17 +21,6 @@
 namespace musclesim::network {
 
 namespace {
-
-// ParameterError of a part, its path put under the part's list entry.
-template <typename Part>
-void ValidateEntry(const Part& part, const char* list, std::size_t i) {
-  try {
-    Validate(part);
-  } catch (const ParameterError& e) {
-    throw ParameterError(std::string(list) + "[" + std::to_string(i) + "]." + e.path(), e.value(),
-                         e.rule());
-  }
-}
 
 // Each part's index by its name, throwing ParameterError for an empty or repeated name (in
 // time linear in the parts: a network of a million nodes is checked as fast as it is read).
@@ -141,6 +131,22 @@ int NodeNamed(const NetworkModel& m, const std::string& name, const std::string&
   return i;
 }
 
+int BodyNamed(const NetworkModel& m, const std::string& name, std::size_t node) {
+  const std::string path = Entry("nodes", node, "body");
+  if (!m.skeleton) {
+    throw ParameterError(path, name, "names a body, and the network has none (no bodies:)");
+  }
+  const int body = m.skeleton->FindBody(name);
+  if (body == -1) {
+    throw ParameterError(path, name, "must name a body: a point of the ground is a fixed node");
+  }
+  if (body < 0) {
+    throw ParameterError(path, name,
+                         "names no body; the bodies are: " + KnownNames(m.skeleton->bodies()));
+  }
+  return body;
+}
+
 int NumberEnds(NetworkModel& m) {
   int states = 0, free = 0;
   for (std::size_t i = 0; i < m.nodes.size(); ++i) {
@@ -161,9 +167,20 @@ int NumberEnds(NetworkModel& m) {
         states += 1;  // a junction's position; its velocity solves its balance
       }
     }
+    if (node.kind == NodeKind::kOnBody) end.body = BodyNamed(m, node.body, i);
     m.ends.push_back(end);
   }
   m.node_states = states;
+  if (m.skeleton) {
+    if (m.space.dimensions == 1) {
+      throw ParameterError("dimensions", "1",
+                           "must be 2 or 3 with bodies: a skeleton moves in the plane or in space");
+    }
+    CheckPlanarSkeleton(m);
+    PlaceWraps(m);
+    m.skeleton_state = states;
+    states += 2 * m.skeleton->coordinate_count();  // q, then u
+  }
   return states;
 }
 
@@ -250,7 +267,7 @@ void AddFreeNodes(NetworkModel& m, std::vector<std::vector<Load>> node_loads,
   }
   // without a free node the activations can still be the state: a muscle whose length is
   // prescribed (a rigid tendon, an isokinetic stretch) under its activation dynamics
-  if (m.free_nodes.empty() && m.activations.empty()) {
+  if (m.free_nodes.empty() && m.activations.empty() && !m.skeleton) {
     throw ParameterError("nodes", std::to_string(m.nodes.size()) + " nodes",
                          "need at least one free node (one with a mass) or an actuator with "
                          "activation dynamics: the state is their positions and activations");
@@ -323,6 +340,7 @@ void BuildPattern(NetworkModel& m) {
     AddLinePattern(m, pairs);
   }
   AddJunctionPattern(m, pairs);
+  if (m.skeleton) AddSkeletonPattern(m, pairs);
   // udot depends on u alone (and t), or on a controller's columns too
   for (const Activation& a : m.activations) pairs.emplace_back(a.state, a.state);
   AddControlPattern(m, pairs);

@@ -17,6 +17,7 @@ constexpr EnumName<NodeKind> kNodeKindNames[] = {
     {NodeKind::kFixed, "fixed"},
     {NodeKind::kPrescribed, "prescribed"},
     {NodeKind::kFree, "free"},
+    {NodeKind::kOnBody, "on_body"},
 };
 
 std::string_view ToString(NodeKind kind) { return ToString(kNodeKindNames, kind); }
@@ -70,6 +71,9 @@ void Validate(const Node& node) {
     }
   }
   ValidateSignals(NodeSignals(), node);
+  if (node.kind == NodeKind::kOnBody && node.body.empty()) {
+    throw ParameterError("body", "\"\"", "must name a body of the skeleton");
+  }
   if (node.kind == NodeKind::kFree) {
     Require(std::isfinite(node.mass) && node.mass >= 0.0, "mass", node.mass,
             "must be finite and >= 0 [kg] (0: a massless junction, docs/model.md 14.4)");
@@ -128,9 +132,25 @@ Node Node::Free(std::string name, double mass, const Coordinates& position,
   return Validated(std::move(node));
 }
 
+Node Node::OnBody(std::string name, std::string body, const Coordinates& point) {
+  Node node;
+  node.name = std::move(name);
+  node.kind = NodeKind::kOnBody;
+  node.body = std::move(body);
+  node.position = point[0];
+  node.position_yz = {point[1], point[2]};
+  return Validated(std::move(node));
+}
+
 ViaPoint ViaPoint::Node(std::string name) {
   ViaPoint via;
   via.node = std::move(name);
+  return via;
+}
+
+ViaPoint ViaPoint::Wrap(std::string surface) {
+  ViaPoint via;
+  via.wrap = std::move(surface);
   return via;
 }
 

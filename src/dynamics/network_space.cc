@@ -11,6 +11,8 @@
 #include "dynamics/network_build.h"
 #include "dynamics/network_control.h"
 #include "dynamics/network_evaluation.h"
+#include "dynamics/network_skeleton.h"
+#include "dynamics/wrap_cylinder.h"
 #include "musclesim/core/errors.h"
 #include "musclesim/core/number_format.h"
 #include "part_paths.h"
@@ -37,10 +39,13 @@ std::string Describe(const Coordinates& c, int dimensions) {
 void AddPath(NetworkModel& m, std::size_t e) {
   const Element& element = m.elements[e];
   Link& link = m.links[e];
-  if (element.via.size() + 2 > kMaxPathPoints) {
+  std::size_t points = element.via.size() + 2;
+  for (const ViaPoint& via : element.via) points += via.wrap.empty() ? 0 : 1;  // two on it
+  if (points > kMaxPathPoints) {
     throw ParameterError(Entry("elements", e, "via"),
                          std::to_string(element.via.size()) + " points",
-                         "must hold at most " + std::to_string(kMaxPathPoints - 2) + " points");
+                         "must hold at most " + std::to_string(kMaxPathPoints - 2) +
+                             " points (a wrap surface counts twice)");
   }
   const auto on_path = [&](int node) {
     for (std::size_t p = static_cast<std::size_t>(link.path_begin); p < m.path_points.size(); ++p) {
@@ -53,6 +58,21 @@ void AddPath(NetworkModel& m, std::size_t e) {
   for (std::size_t v = 0; v < element.via.size(); ++v) {
     const ViaPoint& via = element.via[v];
     const std::string path = ViaEntry(e, v);
+    if (!via.wrap.empty()) {
+      const int wrap = m.skeleton ? m.skeleton->FindWrap(via.wrap) : -1;
+      if (wrap < 0) {
+        throw ParameterError(path + ".wrap", via.wrap,
+                             m.skeleton ? "names no wrap surface (wraps:)"
+                                        : "names a wrap surface, and the network has no bodies");
+      }
+      if (m.path_points.back().wrap >= 0) {
+        throw ParameterError(path + ".wrap", via.wrap,
+                             "must follow a point, not another wrap surface: a path wraps over "
+                             "one surface between two points");
+      }
+      m.path_points.push_back({-1, {}, wrap});
+      continue;
+    }
     if (via.node.empty()) {
       Coordinates position{};
       for (int c = 0; c < m.space.dimensions; ++c) position[c] = via.position[c];
@@ -74,6 +94,10 @@ void AddPath(NetworkModel& m, std::size_t e) {
   }
   m.path_points.push_back({link.to, {}});
   link.path_end = static_cast<int>(m.path_points.size());
+  bool wrapped = false;
+  for (int p = link.path_begin; p < link.path_end; ++p) wrapped |= m.path_points[p].wrap >= 0;
+  m.wrapped_links.resize(m.elements.size(), false);
+  m.wrapped_links[e] = wrapped;
 }
 
 void ResolveSpace(NetworkModel& m) {
@@ -95,7 +119,11 @@ void ResolveSpace(NetworkModel& m) {
 
 int SegmentCount(const NetworkModel& m, int e) {
   if (m.space.dimensions == 1) return 1;
-  return m.links[e].path_end - m.links[e].path_begin - 1;
+  int points = 0;  // a wrap surface's entry is no point of the segments
+  for (int p = m.links[e].path_begin; p < m.links[e].path_end; ++p) {
+    points += m.path_points[p].wrap < 0 ? 1 : 0;
+  }
+  return points - 1;
 }
 
 double NodeCoordinate(const NetworkModel& m, int i, int c, double t, const double* y) {
@@ -108,6 +136,7 @@ double NodeCoordinate(const NetworkModel& m, int i, int c, double t, const doubl
       const Node& node = m.nodes[end.node];
       return (c == 0 ? node.motion : node.motion_yz[c - 1]).Evaluate(t);
     }
+    case NodeKind::kOnBody: return BodyPointCoordinate(m, i, c, y);
   }
   return 0.0;
 }
@@ -122,26 +151,98 @@ double NodeCoordinateRate(const NetworkModel& m, int i, int c, double t, const d
       const Node& node = m.nodes[end.node];
       return (c == 0 ? node.motion : node.motion_yz[c - 1]).Slope(t);
     }
+    case NodeKind::kOnBody: return BodyPointRate(m, i, c, y);
   }
   return 0.0;
 }
 
+namespace {
+
+// Where path point `point` is and how it moves.
+void MeasurePoint(const NetworkModel& m, const PathPoint& point, double t, const double* y,
+                  PathState& state, std::size_t j) {
+  state.wrap_body[j] = -2;
+  state.node[j] = point.node;
+  if (point.node < 0) {
+    state.position[j] = Point(point.position[0], point.position[1], point.position[2]);
+    state.velocity[j].setZero();
+    state.state[j] = -1;
+    return;
+  }
+  state.state[j] = m.ends[point.node].state;
+  for (int c = 0; c < 3; ++c) {
+    state.position[j][c] = NodeCoordinate(m, point.node, c, t, y);
+    state.velocity[j][c] = NodeCoordinateRate(m, point.node, c, t, y);
+  }
+}
+
+// The path of a link with wrap surfaces: its points, each surface adding the two where the
+// path touches and leaves it when the straight segment would cross it (docs/model.md 15.3).
+void MeasureWrappedLink(const NetworkModel& m, int e, double t, const double* y, PathState& state) {
+  const Link& link = m.links[e];
+  const Skeleton& skeleton = *m.skeleton;
+  const SkeletonWorkspace& ws = SkeletonAt(m, y);
+  std::size_t n = 0;
+  // the chords' and arcs' lengths of the segments on surfaces, by the index of their first point
+  std::array<double, kMaxPathPoints> arc{};
+  std::array<bool, kMaxPathPoints> on_surface{};
+  for (int p = link.path_begin; p < link.path_end; ++p) {
+    const PathPoint& point = m.path_points[static_cast<std::size_t>(p)];
+    if (point.wrap < 0) {
+      MeasurePoint(m, point, t, y, state, n++);
+      continue;
+    }
+    // the points before and after it (the one after is measured now, overwritten next)
+    MeasurePoint(m, m.path_points[static_cast<std::size_t>(p + 1)], t, y, state, n);
+    const int body = skeleton.WrapBody(point.wrap);
+    const WrapCylinder& surface = skeleton.wraps()[static_cast<std::size_t>(point.wrap)];
+    const PlacedWrap& placed = m.wraps[static_cast<std::size_t>(point.wrap)];
+    const auto world = [](const Coordinates& c) { return Point(c[0], c[1], c[2]); };
+    PlacedCylinder cylinder{world(skeleton.PointPosition(body, surface.center, ws)),
+                            world(skeleton.DirectionInWorld(body, placed.x, ws)),
+                            world(skeleton.DirectionInWorld(body, placed.axis, ws)), surface.radius,
+                            surface.side};
+    const CylinderWrap wrap = WrapOverCylinder(state.position[n - 1], state.position[n], cylinder);
+    if (!wrap.wraps) continue;
+    for (const Point& tangent : {wrap.t1, wrap.t2}) {
+      const Coordinates at{tangent[0], tangent[1], tangent[2]};
+      state.position[n] = tangent;
+      state.wrap_point[n] = skeleton.PointInBody(body, at, ws);
+      state.wrap_body[n] = body;
+      const Coordinates v = skeleton.PointVelocity(body, state.wrap_point[n], ws);
+      state.velocity[n] = Point(v[0], v[1], v[2]);
+      state.state[n] = -1;
+      state.node[n] = -1;
+      ++n;
+    }
+    on_surface[n - 2] = true;
+    arc[n - 2] = wrap.arc;
+  }
+  const std::span<const Point> points(state.position.data(), n);
+  PathGeometry& g = state.geometry;
+  g = MeasurePath(points);
+  // on a surface the segment is its arc, and by the envelope theorem the length changes to
+  // first order only with the points off it: the chord's part of the gradient goes
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    if (!on_surface[k]) continue;
+    g.length += arc[k] - g.segment_length[k];
+    g.segment_length[k] = arc[k];
+    g.gradient[k] += g.direction[k];
+    g.gradient[k + 1] -= g.direction[k];
+  }
+  state.length_rate = g.length_rate(std::span<const Point>(state.velocity.data(), n));
+}
+
+}  // namespace
+
 void MeasureLink(const NetworkModel& m, int e, double t, const double* y, PathState& state) {
+  if (!m.wrapped_links.empty() && m.wrapped_links[static_cast<std::size_t>(e)]) {
+    return MeasureWrappedLink(m, e, t, y, state);
+  }
   const Link& link = m.links[e];
   const std::size_t n = static_cast<std::size_t>(link.path_end - link.path_begin);
   for (std::size_t j = 0; j < n; ++j) {
-    const PathPoint& point = m.path_points[static_cast<std::size_t>(link.path_begin) + j];
-    if (point.node < 0) {
-      state.position[j] = Point(point.position[0], point.position[1], point.position[2]);
-      state.velocity[j].setZero();
-      state.state[j] = -1;
-      continue;
-    }
-    state.state[j] = m.ends[point.node].state;
-    for (int c = 0; c < 3; ++c) {
-      state.position[j][c] = NodeCoordinate(m, point.node, c, t, y);
-      state.velocity[j][c] = NodeCoordinateRate(m, point.node, c, t, y);
-    }
+    MeasurePoint(m, m.path_points[static_cast<std::size_t>(link.path_begin) + j], t, y, state, j);
   }
   state.geometry = MeasurePath(std::span<const Point>(state.position.data(), n));
   state.length_rate = state.geometry.length_rate(std::span<const Point>(state.velocity.data(), n));
@@ -154,7 +255,21 @@ double SegmentLength(const NetworkModel& m, int e, int k, double t, const double
   }
   PathState state;
   MeasureLink(m, e, t, y, state);
-  return k < 0 ? state.geometry.length : state.geometry.segment_length[static_cast<std::size_t>(k)];
+  if (k < 0) return state.geometry.length;
+  if (!m.wrapped_links.empty() && m.wrapped_links[static_cast<std::size_t>(e)]) {
+    // segment k between the path's points as given: straight, over a surface or not
+    std::vector<int> real;
+    for (int p = m.links[e].path_begin; p < m.links[e].path_end; ++p) {
+      if (m.path_points[static_cast<std::size_t>(p)].wrap < 0) real.push_back(p);
+    }
+    PathState ends;
+    MeasurePoint(m, m.path_points[static_cast<std::size_t>(real[static_cast<std::size_t>(k)])], t,
+                 y, ends, 0);
+    MeasurePoint(m, m.path_points[static_cast<std::size_t>(real[static_cast<std::size_t>(k) + 1])],
+                 t, y, ends, 1);
+    return (ends.position[1] - ends.position[0]).norm();
+  }
+  return state.geometry.segment_length[static_cast<std::size_t>(k)];
 }
 
 double SpaceLengtheningRate(const NetworkModel& m, int e, double t, const double* y) {
@@ -176,6 +291,52 @@ Coordinates DirectedLoad(const NetworkModel& m, const FreeNode& f, double t, con
   return load;
 }
 
+namespace {
+
+// A path over wrap surfaces at the start: its points apart, and the points on either side of
+// each surface outside it (inside it the path has no tangent to leave by).
+void CheckWrappedPath(const NetworkModel& m, int e, double t, const double* y) {
+  const Link& link = m.links[e];
+  const std::size_t element = static_cast<std::size_t>(e);
+  for (int k = 0; k < SegmentCount(m, e); ++k) {
+    const double length = SegmentLength(m, e, k, t, y);
+    if (length > kMinSegmentLength) continue;
+    throw ParameterError("elements[" + std::to_string(e) + "]", m.elements[element].name,
+                         "its segment " + std::to_string(k) + " is " + FormatNumber(length) +
+                             " m long at the start: a segment must be longer than " +
+                             FormatNumber(kMinSegmentLength) + " m");
+  }
+  const Skeleton& skeleton = *m.skeleton;
+  const SkeletonWorkspace& ws = SkeletonAt(m, y);
+  std::size_t via = 0;
+  for (int p = link.path_begin + 1; p + 1 < link.path_end; ++p, ++via) {
+    const PathPoint& point = m.path_points[static_cast<std::size_t>(p)];
+    if (point.wrap < 0) continue;
+    const WrapCylinder& surface = skeleton.wraps()[static_cast<std::size_t>(point.wrap)];
+    const int body = skeleton.WrapBody(point.wrap);
+    const PlacedWrap& placed = m.wraps[static_cast<std::size_t>(point.wrap)];
+    const auto world = [](const Coordinates& c) { return Point(c[0], c[1], c[2]); };
+    const PlacedCylinder cylinder{world(skeleton.PointPosition(body, surface.center, ws)),
+                                  world(skeleton.DirectionInWorld(body, placed.x, ws)),
+                                  world(skeleton.DirectionInWorld(body, placed.axis, ws)),
+                                  surface.radius, surface.side};
+    for (const int neighbour : {p - 1, p + 1}) {
+      PathState state;
+      MeasurePoint(m, m.path_points[static_cast<std::size_t>(neighbour)], t, y, state, 0);
+      const double distance = DistanceFromAxis(state.position[0], cylinder);
+      if (distance > surface.radius) continue;
+      throw ParameterError(ViaEntry(element, via) + ".wrap", surface.name,
+                           "the path's point " + std::string(neighbour < p ? "before" : "after") +
+                               " it is " + FormatNumber(distance) +
+                               " m from the cylinder's axis at the start, inside its radius " +
+                               FormatNumber(surface.radius) +
+                               " m: a path's points lie outside the surfaces it wraps over");
+    }
+  }
+}
+
+}  // namespace
+
 void CheckInitialPaths(const NetworkModel& m, double t, const double* y) {
   const int d = m.space.dimensions;
   const auto name = [&](const PathPoint& p) {
@@ -183,6 +344,10 @@ void CheckInitialPaths(const NetworkModel& m, double t, const double* y) {
   };
   for (std::size_t e = 0; e < m.elements.size(); ++e) {
     const Link& link = m.links[e];
+    if (!m.wrapped_links.empty() && m.wrapped_links[e]) {
+      CheckWrappedPath(m, static_cast<int>(e), t, y);
+      continue;
+    }
     for (int k = 0; k + 1 < link.path_end - link.path_begin; ++k) {
       const double length = SegmentLength(m, static_cast<int>(e), k, t, y);
       if (length > kMinSegmentLength) continue;
@@ -204,6 +369,8 @@ void CheckInitialPaths(const NetworkModel& m, double t, const double* y) {
 
 void SpaceRightHandSide(const NetworkModel& m, double t, const double* y, double* ydot) {
   const int d = m.space.dimensions;
+  SkeletonWorkspace* bodies = m.skeleton ? &SkeletonAt(m, y) : nullptr;
+  if (bodies != nullptr) m.skeleton->ClearForces(*bodies);
   for (const FreeNode& f : m.free_nodes) {
     const int s = m.ends[f.node].state;
     const Coordinates load = DirectedLoad(m, f, t, y);
@@ -219,7 +386,10 @@ void SpaceRightHandSide(const NetworkModel& m, double t, const double* y, double
     const double tension = TensionOf(m, e, t, path.geometry.length, path.length_rate, y).value;
     // F_j = -T G_j on every point of the path (a fixed one absorbs it)
     for (std::size_t j = 0; j < path.geometry.points(); ++j) {
-      if (path.state[j] < 0) continue;
+      if (path.state[j] < 0) {
+        if (bodies != nullptr) AddPathForce(m, path, j, tension, *bodies);
+        continue;
+      }
       for (int c = 0; c < d; ++c)
         ydot[path.state[j] + d + c] -= tension * path.geometry.gradient[j][c];
     }
@@ -233,6 +403,7 @@ void SpaceRightHandSide(const NetworkModel& m, double t, const double* y, double
     ydot[a.state] =
         EvaluateActivationRate(input.dynamics, ExcitationOf(m, a.element, t, y), y[a.state]).value;
   }
+  if (bodies != nullptr) SkeletonRates(m, y, *bodies, ydot);
   ControlRightHandSide(m, t, y, ydot);
 }
 
@@ -256,6 +427,7 @@ void ObserveSpace(const NetworkModel& m, double t, const double* y, NetworkSampl
   for (std::size_t e = 0; e < m.elements.size(); ++e) {
     ObserveElement(m, static_cast<int>(e), t, y, sample.elements[e]);
   }
+  if (m.skeleton) ObserveSkeleton(m, t, y, sample);
   ObserveControllers(m, t, y, sample);
 }
 

@@ -14,10 +14,17 @@
 namespace musclesim::network {
 
 // An element's path at one instant: its points' positions and velocities, measured.
+// Over a wrap surface the path has two points more, where it touches the surface and leaves
+// it (their segment's length the arc's, not the chord's), or none where it does not touch it.
 struct PathState {
   std::array<Point, kMaxPathPoints> position;  // q_j [m]
   std::array<Point, kMaxPathPoints> velocity;  // qdot_j [m/s]
   std::array<int, kMaxPathPoints> state;       // a free node's state index, else -1
+  std::array<int, kMaxPathPoints> node;        // the node at q_j, else -1 (fixed, wrap)
+  // a point on a wrap surface: the body it moves with (-1: the ground), and where it is in
+  // the body's frame; -2 for the other points
+  std::array<int, kMaxPathPoints> wrap_body;
+  std::array<Coordinates, kMaxPathPoints> wrap_point;
   PathGeometry geometry;
   double length_rate = 0.0;  // ldot [m/s]
 };

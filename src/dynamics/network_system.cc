@@ -10,18 +10,20 @@
 #include "dynamics/network_diagnosis.h"
 #include "dynamics/network_evaluation.h"
 #include "dynamics/network_sensitivity.h"
+#include "dynamics/network_skeleton.h"
 #include "dynamics/network_space.h"
 
 namespace musclesim {
 
 NetworkSystem::NetworkSystem(std::vector<Node> nodes, std::vector<Element> elements,
                              std::vector<NodeLoad> loads, std::vector<Controller> controllers,
-                             Space space) {
+                             Space space, std::shared_ptr<const Skeleton> skeleton) {
   model_.nodes = std::move(nodes);
   model_.elements = std::move(elements);
   model_.loads = std::move(loads);
   model_.controllers = std::move(controllers);
   model_.space = space;
+  model_.skeleton = std::move(skeleton);
   network::Build(model_);
 }
 
@@ -50,6 +52,8 @@ double NetworkSystem::Length(int e, double t, const double* y) const {
 double NetworkSystem::LengtheningRate(int e, double t, const double* y) const {
   return network::LengtheningRate(model_, e, t, y);
 }
+
+bool NetworkSystem::Spans(int e, int k) const { return network::Spans(model_, e, k); }
 
 int NetworkSystem::SegmentCount(int e) const { return network::SegmentCount(model_, e); }
 

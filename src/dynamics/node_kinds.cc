@@ -73,10 +73,21 @@ NodeVariant Prescribed() {
   return variant;
 }
 
+NodeVariant OnBody() {
+  NodeVariant variant =
+      Kind(NodeKind::kOnBody, "on_body", "point", "point (of a body, with its body)",
+           "moves with its body; the forces on it act on the body (docs/model.md 15.1)");
+  variant.points = {Position("point", "where it is, in the body's frame")};
+  variant.texts = {{"body", "the body it is fixed in (bodies:)",
+                    [](const Node& n) { return n.body; },
+                    [](Node& n, std::string body) { n.body = std::move(body); }, true}};
+  return variant;
+}
+
 }  // namespace
 
 const std::vector<NodeVariant>& NodeKinds() {
-  static const std::vector<NodeVariant> variants{Fixed(), Prescribed(), Free()};
+  static const std::vector<NodeVariant> variants{Fixed(), Prescribed(), Free(), OnBody()};
   return variants;
 }
 

@@ -5,10 +5,23 @@
 #include <string>
 #include <vector>
 
+#include "musclesim/core/errors.h"
+
 namespace musclesim {
 
 inline std::string Entry(const char* list, std::size_t i, const char* key) {
   return std::string(list) + "[" + std::to_string(i) + "]." + key;
+}
+
+// Validate(part), its ParameterError's path put under the part's list entry ("bodies[1].mass").
+template <typename Part>
+void ValidateEntry(const Part& part, const char* list, std::size_t i) {
+  try {
+    Validate(part);
+  } catch (const ParameterError& e) {
+    throw ParameterError(std::string(list) + "[" + std::to_string(i) + "]." + e.path(), e.value(),
+                         e.rule());
+  }
 }
 
 template <typename Part>

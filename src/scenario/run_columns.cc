@@ -70,11 +70,22 @@ void RunColumns::AddNetworkView(const Scenario& scenario, const NetworkSystem& s
   }
   // Observe's sample holds the coordinates (FillFromState reads single values)
   whole_sample_ = whole_sample_ || d > 1;
+  const Skeleton* skeleton = system.skeleton();
+  const int coordinates = skeleton != nullptr ? skeleton->coordinate_count() : 0;
+  for (int k = 0; k < coordinates; ++k) {
+    Add(skeleton->coordinate(k).name + ".q", Kind::kCoordinate, k);
+    Add(skeleton->coordinate(k).name + ".u", Kind::kSpeed, k);
+  }
   for (std::size_t k = 0; k < system.elements().size(); ++k) {
     const Element& element = system.elements()[k];
     const int e = static_cast<int>(k);
     Add(element.name + ".length", Kind::kLength, e);
     Add(element.name + ".tension", Kind::kTension, e);
+    for (int c = 0; c < coordinates; ++c) {
+      if (!system.Spans(e, c)) continue;
+      Add(element.name + ".moment_arm." + skeleton->coordinate(c).name, Kind::kMomentArm,
+          e * coordinates + c);
+    }
     if (element.kind != ElementKind::kActuator) continue;
     Add(element.name + ".shortening_velocity", Kind::kShortening, e);
     Add(element.name + ".activation", Kind::kActivation, e);
@@ -127,6 +138,9 @@ void RunColumns::Fill(double t, const NetworkSample& s, double* row) const {
       case Kind::kMeasured: row[c] = s.controllers[i].measured; break;
       case Kind::kError: row[c] = s.controllers[i].error; break;
       case Kind::kOutput: row[c] = s.controllers[i].output; break;
+      case Kind::kCoordinate: row[c] = s.coordinates[i]; break;
+      case Kind::kSpeed: row[c] = s.speeds[i]; break;
+      case Kind::kMomentArm: row[c] = s.moment_arms[i]; break;
     }
   }
 }

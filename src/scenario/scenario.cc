@@ -32,7 +32,11 @@ const std::string* Scenario::ModelName(const TensionModel* model) const {
 }
 
 NetworkSystem Scenario::Build() const {
-  return NetworkSystem(nodes, elements, loads, controllers, space);
+  std::shared_ptr<const Skeleton> skeleton;
+  if (!bodies.empty() || !joints.empty() || !wraps.empty()) {
+    skeleton = std::make_shared<const Skeleton>(bodies, joints, space.gravity, wraps);
+  }
+  return NetworkSystem(nodes, elements, loads, controllers, space, std::move(skeleton));
 }
 
 NetworkRunRequest Scenario::Request() const {

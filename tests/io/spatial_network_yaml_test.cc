@@ -29,12 +29,7 @@ constexpr const char* kFile = "test.yaml";
 
 // "test.yaml:line:column" (1-based) of the first `needle` in `text`.
 std::string At(const std::string& text, const std::string& needle) {
-  const std::size_t at = text.find(needle);
-  EXPECT_NE(at, std::string::npos) << needle;
-  const std::size_t line_start = text.rfind('\n', at);
-  const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n');
-  const std::size_t column = line_start == std::string::npos ? at + 1 : at - line_start;
-  return std::string(kFile) + ":" + std::to_string(line) + ":" + std::to_string(column);
+  return std::string(kFile) + ":" + testing::LineColumn(text, needle);
 }
 
 // The space, nodes, elements and loads of `text` as the network reader reads them, without

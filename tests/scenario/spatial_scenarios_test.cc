@@ -15,6 +15,7 @@
 #include "musclesim/io/readers/scenario_yaml.h"
 #include "musclesim/scenario/scenario.h"
 #include "musclesim/solver/simulation.h"
+#include "support/numeric.h"
 #include "support/scenario_files.h"
 
 namespace musclesim {
@@ -25,17 +26,6 @@ NetworkRunResult RunToEnd(const Scenario& scenario) {
   NetworkRunResult run = simulation.Run(scenario.Build(), scenario.solver, scenario.Request());
   EXPECT_EQ(run.stats.status, RunStatus::kCompleted) << run.stats.message;
   return run;
-}
-
-// K(k), the complete elliptic integral of the first kind, by the arithmetic-geometric mean.
-double EllipticK(double k) {
-  double a = 1.0, b = std::sqrt(1.0 - k * k);
-  for (int i = 0; i < 40; ++i) {
-    const double next = 0.5 * (a + b);
-    b = std::sqrt(a * b);
-    a = next;
-  }
-  return std::numbers::pi / (2.0 * a);
 }
 
 // ---- planar_pendulum.yaml ------------------------------------------------------------------
@@ -56,7 +46,8 @@ TEST(PlanarPendulum, SwingsWithTheRigidPendulumsPeriod) {
   }
   ASSERT_GE(crossings.size(), 2u);
   const double amplitude = std::numbers::pi / 3.0;  // released at 60 degrees
-  const double exact = 4.0 * std::sqrt(kLink / kGravity) * EllipticK(std::sin(amplitude / 2.0));
+  const double exact =
+      4.0 * std::sqrt(kLink / kGravity) * testing::EllipticK(std::sin(amplitude / 2.0));
   // the link stretches by m g / k ~ 1e-5 m: the period is the rigid one's to about 1e-5
   for (std::size_t i = 1; i < crossings.size(); ++i) {
     EXPECT_NEAR(crossings[i] - crossings[i - 1], exact, 5e-5 * exact) << "swing " << i;

@@ -9,6 +9,17 @@
 
 namespace musclesim::testing {
 
+// K(k), the complete elliptic integral of the first kind, by the arithmetic-geometric mean.
+inline double EllipticK(double k) {
+  double a = 1.0, b = std::sqrt(1.0 - k * k);
+  for (int i = 0; i < 40; ++i) {
+    const double next = 0.5 * (a + b);
+    b = std::sqrt(a * b);
+    a = next;
+  }
+  return 3.14159265358979323846 / (2.0 * a);
+}
+
 // Central difference with a step scaled to the point; error O(h^2).
 inline double CentralDifference(const std::function<double(double)>& f, double x,
                                 double relative_step = 1e-6) {

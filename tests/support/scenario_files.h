@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <fstream>
@@ -73,6 +74,16 @@ inline std::string SummaryWithoutWallTime(const std::string& path) {
     out += line.substr(0, wall) + line.substr(last) + "\n";
   }
   return out;
+}
+
+// "line:column" (1-based) of the first `needle` in `text`: where a reader places it.
+inline std::string LineColumn(const std::string& text, const std::string& needle) {
+  const std::size_t at = text.find(needle);
+  EXPECT_NE(at, std::string::npos) << needle;
+  const std::size_t line_start = text.rfind('\n', at);
+  const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n');
+  const std::size_t column = line_start == std::string::npos ? at + 1 : at - line_start;
+  return std::to_string(line) + ":" + std::to_string(column);
 }
 
 // A shipped scenario (scenarios/NAME), the data the CLI, tests and benchmarks share.

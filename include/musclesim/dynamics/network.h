@@ -39,14 +39,24 @@ class NetworkSystem {
   // .via[0]"), no node twice on one path, two fixed via points never in the same place, load
   // directions not zero, a coordinate named for every node a controller measures
   // ("controllers[0].measure.coordinate"), within the dimensions.
+  // With a `skeleton` (docs/model.md 15; 2 or 3 dimensions): nodes on its bodies move with
+  // them, and the forces of the elements on such nodes move the bodies.
   NetworkSystem(std::vector<Node> nodes, std::vector<Element> elements,
                 std::vector<NodeLoad> loads = {}, std::vector<Controller> controllers = {},
-                Space space = {});
+                Space space = {}, std::shared_ptr<const Skeleton> skeleton = nullptr);
 
   int state_size() const { return network::StateSize(model_); }
   // The free nodes' positions and velocities: the first this many states.
   int node_state_count() const { return model_.node_states; }
-  // How many actuators have activation dynamics: the states after the nodes' are theirs.
+  // The skeleton, or null; its coordinates' states start at skeleton_state() (then the
+  // speeds), right after the nodes'.
+  const Skeleton* skeleton() const { return model_.skeleton.get(); }
+  int skeleton_state() const { return model_.skeleton_state; }
+  // Whether element e's length changes with skeleton coordinate k (some of its path's points
+  // move with k, some do not): it has a moment arm about k.
+  bool Spans(int e, int k) const;
+  // How many actuators have activation dynamics: their states follow the nodes' and the
+  // skeleton's.
   int activation_count() const { return static_cast<int>(model_.activations.size()); }
   // How many controllers have an integral state: the last this many states are theirs.
   int integral_count() const { return model_.integral_count; }

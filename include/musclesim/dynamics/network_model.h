@@ -9,6 +9,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "musclesim/dynamics/controller.h"
 #include "musclesim/dynamics/jacobian_pattern.h"
 #include "musclesim/dynamics/network_parts.h"
+#include "musclesim/dynamics/skeleton.h"
 
 namespace musclesim::network {
 
@@ -29,6 +31,7 @@ struct End {
   int rate = -1;        // free with a mass: index of xdot in y; else -1
   int free = -1;        // free: index in free_nodes; else -1
   int junction = -1;    // massless junction: index in junctions; else -1
+  int body = -1;        // on a body: index in the skeleton's bodies; else -1
 };
 
 // An element as the right-hand side sees it: its ends and where its Jacobian goes.
@@ -45,10 +48,18 @@ struct Link {
   int path_begin = 0, path_end = 0, slot_begin = 0;
 };
 
-// A point of a path in 2 or 3 dimensions: a node, or fixed coordinates.
+// A point of a path in 2 or 3 dimensions: a node, or fixed coordinates; or a wrap surface of
+// the skeleton between the points before and after it.
 struct PathPoint {
   int node;  // index in nodes, or -1
   Coordinates position;
+  int wrap = -1;  // index in the skeleton's wraps, or -1
+};
+
+// A wrap surface as the right-hand side sees it: its unit axis and the unit x of its side,
+// across the axis, in its body's frame.
+struct PlacedWrap {
+  Coordinates axis, x;
 };
 
 // A controller as the right-hand side sees it. The command c depends on at most the states in
@@ -170,7 +181,11 @@ struct NetworkModel {
   std::vector<int> active_links;
   std::vector<FreeNode> free_nodes;  // in node order
   std::vector<Junction> junctions;
-  int node_states = 0;                  // the free nodes' states: the first this many of y
+  int node_states = 0;  // the free nodes' states: the first this many of y
+  // the skeleton (docs/model.md 15), or null: its coordinates q from y[skeleton_state], then
+  // its speeds u, right after the nodes' states
+  std::shared_ptr<const Skeleton> skeleton;
+  int skeleton_state = -1;
   std::vector<Activation> activations;  // in element order, their states after the nodes'
   std::vector<Loop> loops;              // one per controller
   int integral_count = 0;               // the last this many states
@@ -181,6 +196,8 @@ struct NetworkModel {
 
   // in 2 or 3 dimensions (network_space.cc, space_jacobian.cc, space_control.cc)
   std::vector<PathPoint> path_points;
+  std::vector<PlacedWrap> wraps;    // one per wrap surface of the skeleton
+  std::vector<bool> wrapped_links;  // per element: whether its path has a wrap surface
   std::vector<int> path_slots;
   std::vector<int> loop_columns;
   std::vector<int> loop_slots;
@@ -189,8 +206,13 @@ struct NetworkModel {
   std::vector<int> row_scale;  // per Jacobian entry: the free node whose 1/m scales it, or -1
 };
 
+inline int SkeletonStateCount(const NetworkModel& m) {
+  return m.skeleton ? 2 * m.skeleton->coordinate_count() : 0;
+}
+
 inline int StateSize(const NetworkModel& m) {
-  return m.node_states + static_cast<int>(m.activations.size()) + m.integral_count;
+  return m.node_states + SkeletonStateCount(m) + static_cast<int>(m.activations.size()) +
+         m.integral_count;
 }
 
 }  // namespace musclesim::network

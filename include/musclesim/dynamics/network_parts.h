@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "musclesim/core/coordinates.h"
 #include "musclesim/dynamics/activation_dynamics.h"
 #include "musclesim/dynamics/loads.h"
 #include "musclesim/dynamics/waveform.h"
@@ -18,9 +19,8 @@
 
 namespace musclesim {
 
-// A point or vector of a network's space: x, y, z; a planar network's z is 0, a line's y and
-// z are.
-using Coordinates = std::array<double, 3>;
+// A point or vector of a network's space (Coordinates): a planar network's z is 0, a line's y
+// and z are.
 
 // The space a network lives in (docs/model.md 12): `dimensions` 1 (a line, section 7
 // exactly), 2 (the x-y plane) or 3, and the acceleration of gravity on every free node's mass.
@@ -33,13 +33,15 @@ struct Space {
 // Throws ParameterError ("dimensions", "gravity").
 void Validate(const Space& space);
 
-enum class NodeKind { kFixed, kPrescribed, kFree };
+enum class NodeKind { kFixed, kPrescribed, kFree, kOnBody };
 std::string_view ToString(NodeKind kind);
 
 // A point of the network. Only the fields of its kind are used:
 //   fixed:      position
 //   prescribed: motion, a continuous waveform x(t) (its velocity is the waveform's slope)
 //   free:       mass, and position and velocity at the start
+//   on_body:    body, and position: the point in the body's frame (docs/model.md 15.1); it
+//               moves with the body and the forces on it act on the body
 // In 2 or 3 dimensions `position`, `velocity` and `motion` are the x coordinate's and the
 // `_yz` fields hold y and z (z unused in 2).
 struct Node {
@@ -52,6 +54,7 @@ struct Node {
   std::array<double, 2> position_yz{};  // fixed, free: y, z [m]
   std::array<double, 2> velocity_yz{};  // free: ydot, zdot at t_start [m/s]
   std::array<Waveform, 2> motion_yz;    // prescribed: y(t), z(t) [m]
+  std::string body;                     // on_body: a body of the network's skeleton
 
   // (x, y, z) of the position and velocity fields.
   Coordinates PositionCoordinates() const { return {position, position_yz[0], position_yz[1]}; }
@@ -65,6 +68,8 @@ struct Node {
   static Node Prescribed(std::string name, std::array<Waveform, 3> motion);
   static Node Free(std::string name, double mass, const Coordinates& position,
                    const Coordinates& velocity = {});
+  // A point fixed in a body of the skeleton, at `point` in the body's frame.
+  static Node OnBody(std::string name, std::string body, const Coordinates& point);
 };
 
 // Throws ParameterError (paths as the YAML keys of a node: "mass", "position[1]",
@@ -74,12 +79,16 @@ void Validate(const Node& node);
 
 // A point an element's path passes through between its ends (docs/model.md 12.1): a node of
 // the network (a free one carries the pulley's force), or fixed coordinates.
+// Or, in a network with a skeleton, a wrap surface of it (docs/model.md 15.3), over which the
+// path between the points before and after it wraps.
 struct ViaPoint {
-  std::string node;        // a node's name; empty: the fixed point `position`
+  std::string node;        // a node's name; empty: the fixed point `position` (or a wrap)
   Coordinates position{};  // [m]
+  std::string wrap;        // a wrap surface's name; empty: none
 
   static ViaPoint Node(std::string name);
   static ViaPoint Fixed(const Coordinates& position);
+  static ViaPoint Wrap(std::string surface);
 };
 
 enum class ElementKind { kActuator, kSpring, kTendon, kDamper };

@@ -40,6 +40,10 @@ struct NetworkSample {
                                  // gravity not included)
   std::vector<ElementSample> elements;
   std::vector<ControllerSample> controllers;
+  // with a skeleton (docs/model.md 15): each coordinate's value q [rad or m] and speed u,
+  // and each element's moment arm about each coordinate, r_k = -dl/dq_k [m, or - for a
+  // sliding coordinate], element-major
+  std::vector<double> coordinates, speeds, moment_arms;
 };
 
 }  // namespace musclesim

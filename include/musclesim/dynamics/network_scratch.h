@@ -16,6 +16,7 @@ struct NetworkScratch {
   std::vector<double> junction_velocities;   // w of every massless junction [m/s]
   std::vector<double> junction_rate_slopes;  // per element at one junction: dT/d(ldot) [N s/m]
   std::vector<double> rate;                  // one right-hand side (a difference quotient's)
+  std::vector<double> rate_minus;            // another (a central difference's)
   std::vector<double> shifted;               // a state moved along a direction
   NetworkSample sample;                      // one observation
 };

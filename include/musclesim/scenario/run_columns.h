@@ -9,7 +9,10 @@
 //   t; NODE.position, NODE.velocity of every node; ELEMENT.length, ELEMENT.tension of every
 //   element, an actuator adding .shortening_velocity, .activation, [.excitation],
 //   .tension_passive, .tension_active, .phase; NODE.load of every free node;
-//   CONTROLLER.reference, .measured, .error, .output of every controller.
+//   CONTROLLER.reference, .measured, .error, .output of every controller. With a skeleton
+//   (docs/model.md 15), after the nodes' columns: COORDINATE.q, COORDINATE.u of every
+//   coordinate; after an element's columns: ELEMENT.moment_arm.COORDINATE for each
+//   coordinate it spans.
 // A phase column holds text: concentric if the shortening velocity v > v_tol, eccentric if
 // v < -v_tol, isometric otherwise (docs/model.md section 6); every other column a number.
 #pragma once
@@ -84,11 +87,15 @@ class RunColumns {
     kMeasured,
     kError,
     kOutput,
+    kCoordinate,
+    kSpeed,
+    kMomentArm,
   };
   static bool OfElement(Kind kind) { return kind >= Kind::kLength && kind <= Kind::kPhase; }
   struct Column {
     Kind kind;
-    int index = 0;           // the node, element or controller
+    int index = 0;  // the node, element, controller, coordinate or (moment arm) element-major
+                    // pair
     double tolerance = 0.0;  // a phase column's v_tol [m/s]
   };
   void Add(std::string name, Kind kind, int index = 0, double tolerance = 0.0);

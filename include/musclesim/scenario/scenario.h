@@ -56,10 +56,14 @@ struct Scenario {
                                         // `models`' (AddModel, SetModel keep them so)
   std::vector<NodeLoad> loads;          // in the file's order
   std::vector<Controller> controllers;  // in the file's order
-  double t_start = 0.0, t_end = 1.0;    // the simulated interval [s], t_end > t_start
-  SolverOptions solver;                 // units as in SolverOptions
-  OutputRequest output;                 // units as in OutputRequest
-  std::vector<LengthLimit> limits;      // stop when an element's length leaves them [m]
+  // a skeleton (docs/model.md 15): its bodies and the joints joining them, in the file's order
+  std::vector<Body> bodies;
+  std::vector<Joint> joints;
+  std::vector<WrapCylinder> wraps;    // wrap surfaces on the bodies (or the ground)
+  double t_start = 0.0, t_end = 1.0;  // the simulated interval [s], t_end > t_start
+  SolverOptions solver;               // units as in SolverOptions
+  OutputRequest output;               // units as in OutputRequest
+  std::vector<LengthLimit> limits;    // stop when an element's length leaves them [m]
   // `sensitivities:` the key paths of the parameters whose forward sensitivities a run adds
   // (docs/model.md 10), and where each was given ("file:line:column"; empty in code)
   std::vector<std::string> sensitivities, sensitivities_at;

@@ -7,6 +7,7 @@
 #include "io/readers/part_fields_yaml.h"
 #include "io/readers/scenario_fields.h"
 #include "io/readers/signal_fields_yaml.h"
+#include "io/readers/skeleton_yaml.h"
 #include "musclesim/core/input_ranges.h"
 #include "musclesim/dynamics/actuator_signals.h"
 #include "musclesim/dynamics/element_laws.h"
@@ -114,7 +115,8 @@ void ReadActuator(const yaml::Source& src, const Document& item, const std::stri
 // An element's `via` points: each a node's name (NetworkSystem resolves it) or a fixed
 // point, a list of `dimensions` coordinates.
 std::vector<ViaPoint> ReadVia(const yaml::Source& src, const Document& node,
-                              const std::string& path, int dimensions) {
+                              const std::string& path, int dimensions, const std::string& element,
+                              const std::vector<Body>& bodies, std::vector<Node>& body_points) {
   if (dimensions == 1) {
     yaml::Fail(src, node, path, yaml::Describe(node),
                "via points need dimensions: 2 or 3 at the top level (on a line an element runs "
@@ -133,11 +135,19 @@ std::vector<ViaPoint> ReadVia(const yaml::Source& src, const Document& node,
     if (entry.IsSequence()) {
       via.push_back(
           ViaPoint::Fixed(ReadCoordinateList(src, entry, at, dimensions, kPositionRange, "")));
+    } else if (entry.IsMap() && entry["wrap"]) {
+      yaml::RequireMap(src, entry, at, {"wrap"});
+      via.push_back(ViaPoint::Wrap(yaml::ReadString(src, entry["wrap"], Join(at, "wrap"))));
+    } else if (entry.IsMap() && (entry["body"] || entry["point"])) {
+      // a point of a body: the node ELEMENT.via1 (counted from 1)
+      const std::string name = element + ".via" + std::to_string(k + 1);
+      body_points.push_back(ReadBodyPoint(src, entry, at, name, bodies, dimensions));
+      via.push_back(ViaPoint::Node(name));
     } else if (entry.IsScalar() && !entry.Scalar().empty()) {
       via.push_back(ViaPoint::Node(entry.Scalar()));
     } else {
       yaml::Fail(src, entry, at, entry.IsScalar() ? "\"\"" : yaml::Describe(entry),
-                 "must be a node's name or " + point);
+                 "must be a node's name or " + point + ", or a point of a body {body, point}");
     }
   }
   return via;
@@ -174,15 +184,31 @@ Coordinates ReadDirection(const yaml::Source& src, const Document& item, const s
 
 Element ReadElement(const yaml::Source& src, const Document& item, const std::string& path,
                     const NamedModels& models, const DrivenActuators& driven, int dimensions,
-                    double t_start, double t_end) {
+                    double t_start, double t_end, const std::vector<Body>& bodies,
+                    std::vector<Node>& body_points) {
   const std::string type = ReadType(src, item, path);
   Element e;
   ValidateAt(src, item, path, [&] { e.kind = ParseElementKind(type); });
   RequireElementKeys(src, item, path, e.kind, type);
-  ReadNames(src, item, path, ElementNames(), e);
+  // an end given as a point of a body ({body, point}) is a node of its own, ELEMENT.from or
+  // ELEMENT.to (docs/model.md 15.2)
+  std::vector<NameField<Element>> names = ElementNames();
+  std::erase_if(names, [&](const NameField<Element>& n) {
+    return !n.is_own() && item[n.key] && item[n.key].IsMap();
+  });
+  ReadNames(src, item, path, names, e);
+  for (const NameField<Element>& name : ElementNames()) {
+    if (name.is_own() || !item[name.key] || !item[name.key].IsMap()) continue;
+    const std::string node = e.name + "." + name.key;
+    body_points.push_back(
+        ReadBodyPoint(src, item[name.key], Join(path, name.key), node, bodies, dimensions));
+    name.set(e, node);
+  }
   // read before the kind's fields, kept after them: a controlled actuator is made afresh
   std::vector<ViaPoint> via;
-  if (const Document& node = item["via"]) via = ReadVia(src, node, Join(path, "via"), dimensions);
+  if (const Document& node = item["via"]) {
+    via = ReadVia(src, node, Join(path, "via"), dimensions, e.name, bodies, body_points);
+  }
   if (e.kind == ElementKind::kActuator) {
     ReadActuator(src, item, path, models, driven, t_start, t_end, e);
   } else {
@@ -237,12 +263,15 @@ std::vector<Node> ReadNodes(const yaml::Source& src, const Document& node, int d
 
 std::vector<Element> ReadElements(const yaml::Source& src, const Document& node,
                                   const NamedModels& models, const DrivenActuators& driven,
-                                  int dimensions, double t_start, double t_end) {
+                                  int dimensions, double t_start, double t_end,
+                                  const std::vector<Body>& bodies, std::vector<Node>* body_points) {
+  std::vector<Node> unused;  // with no bodies, ReadBodyPoint refuses every point of one
+  if (body_points == nullptr) body_points = &unused;
   RequireList(src, node, "elements", "elements, each {name, type, from, to, ...}");
   std::vector<Element> elements;
   for (std::size_t i = 0; i < node.size(); ++i) {
-    elements.push_back(
-        ReadElement(src, node[i], Item("elements", i), models, driven, dimensions, t_start, t_end));
+    elements.push_back(ReadElement(src, node[i], Item("elements", i), models, driven, dimensions,
+                                   t_start, t_end, bodies, *body_points));
   }
   return elements;
 }

@@ -12,6 +12,7 @@
 #include "io/readers/controller_yaml.h"
 #include "io/readers/yaml_fields.h"
 #include "musclesim/dynamics/network.h"
+#include "musclesim/dynamics/skeleton_parts.h"
 #include "musclesim/solver/simulation.h"
 
 namespace musclesim {
@@ -40,10 +41,14 @@ std::vector<Node> ReadNodes(const yaml::Source& src, const Document& node, int d
 // `node` is the value of `elements` (a list); an actuator's `model` must name one of `models`.
 // An actuator `driven` names is a controlled one (ReadControlledActuator). In 2 or 3
 // `dimensions` an element may pass through `via` points, each a node's name (resolved by
-// NetworkSystem) or a list of `dimensions` coordinates; on a line `via` is refused.
+// NetworkSystem) or a list of `dimensions` coordinates; on a line `via` is refused. An end or
+// via point given as a point of one of `bodies` ({body, point}) is a node of its own, added
+// to `body_points` (ELEMENT.from, ELEMENT.to, ELEMENT.via1, ...).
 std::vector<Element> ReadElements(const yaml::Source& src, const Document& node,
                                   const NamedModels& models, const DrivenActuators& driven,
-                                  int dimensions, double t_start, double t_end);
+                                  int dimensions, double t_start, double t_end,
+                                  const std::vector<Body>& bodies = {},
+                                  std::vector<Node>* body_points = nullptr);
 
 // `node` is the value of `loads` (a list of loads, each with the `node` it acts on). In 2 or
 // 3 `dimensions` each has a `direction`, a list of `dimensions` numbers, not all zero; on a

@@ -8,6 +8,7 @@
 #include "io/readers/controller_yaml.h"
 #include "io/readers/model_yaml_node.h"
 #include "io/readers/network_parts_yaml.h"
+#include "io/readers/skeleton_yaml.h"
 #include "io/readers/scenario_fields.h"
 #include "io/readers/scenario_readers.h"
 #include "musclesim/core/number_format.h"
@@ -21,8 +22,8 @@ using yaml::Required;
 // The top-level keys of a network scenario file; those of the plane and space come last, so
 // that the messages of files on a line read as they always have.
 constexpr std::initializer_list<const char*> kNetworkKeys = {
-    "name",   "models", "nodes",         "elements",    "loads",      "time",   "solver",
-    "output", "limits", "sensitivities", "controllers", "dimensions", "gravity"};
+    "name",   "models",        "nodes",       "elements",   "loads",   "time",   "solver", "output",
+    "limits", "sensitivities", "controllers", "dimensions", "gravity", "bodies", "joints", "wraps"};
 
 NamedModels ReadModels(const yaml::Source& src, const Document& node, Scenario& s) {
   if (!node.IsMap()) {
@@ -96,14 +97,28 @@ LoadedScenario ReadNetworkScenario(const yaml::Source& src, const Document& root
 
   NamedModels models;
   if (const Document& node = root["models"]) models = ReadModels(src, node, s);
-  s.nodes = ReadNodes(src, Required(src, root, "", "nodes"), dimensions);
+  // before the nodes and elements: their points may be on the bodies
+  if (const Document& node = root["bodies"]) s.bodies = ReadBodies(src, node, dimensions);
+  if (const Document& node = root["joints"]) s.joints = ReadJoints(src, node, dimensions);
+  if (const Document& node = root["wraps"]) s.wraps = ReadWraps(src, node, dimensions);
+  // a skeleton needs no node of its own: its paths' points may all be on bodies
+  if (!s.bodies.empty() && !root["nodes"]) {
+    s.nodes = {};
+  } else {
+    s.nodes = ReadNodes(src, Required(src, root, "", "nodes"), dimensions);
+  }
   // before the elements: an actuator a controller drives has no activation of its own
   if (const Document& node = root["controllers"]) {
     s.controllers = ReadControllers(src, node, dimensions, s.t_start, s.t_end);
     RequireDrivenActuators(src, node, s.controllers, root["elements"]);
   }
-  s.elements = ReadElements(src, Required(src, root, "", "elements"), models,
-                            DrivenActuatorsOf(s.controllers), dimensions, s.t_start, s.t_end);
+  std::vector<Node> body_points;
+  if (const Document& node = root["elements"]; node || s.bodies.empty()) {
+    s.elements = ReadElements(src, Required(src, root, "", "elements"), models,
+                              DrivenActuatorsOf(s.controllers), dimensions, s.t_start, s.t_end,
+                              s.bodies, &body_points);
+  }
+  for (Node& point : body_points) s.nodes.push_back(std::move(point));
   if (const Document& node = root["loads"]) {
     s.loads = ReadNodeLoads(src, node, dimensions, s.t_start, s.t_end);
   }
