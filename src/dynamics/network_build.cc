@@ -176,6 +176,10 @@ int NumberEnds(NetworkModel& m) {
       throw ParameterError("dimensions", "1",
                            "must be 2 or 3 with bodies: a skeleton moves in the plane or in space");
     }
+    if (m.skeleton->gravity() != m.space.gravity) {
+      throw ParameterError("gravity", "the skeleton's",
+                           "must be the network's: the bodies and the free nodes fall alike");
+    }
     CheckPlanarSkeleton(m);
     PlaceWraps(m);
     m.skeleton_state = states;

@@ -4,6 +4,7 @@
 #include "dynamics/network_space.h"
 
 #include <cmath>
+#include <limits>
 #include <span>
 #include <string>
 
@@ -76,8 +77,10 @@ void AddPath(NetworkModel& m, std::size_t e) {
     if (via.node.empty()) {
       Coordinates position{};
       for (int c = 0; c < m.space.dimensions; ++c) position[c] = via.position[c];
-      const PathPoint& before = m.path_points.back();
-      if (before.node < 0 && before.position == position) {
+      const PathPoint& before = m.path_points.back().wrap >= 0
+                                    ? m.path_points[m.path_points.size() - 2]
+                                    : m.path_points.back();
+      if (before.node < 0 && before.wrap < 0 && before.position == position) {
         throw ParameterError(path, Describe(position, m.space.dimensions),
                              "must differ from the via point before it: a segment of length 0 "
                              "has no direction");
@@ -186,6 +189,7 @@ void MeasureWrappedLink(const NetworkModel& m, int e, double t, const double* y,
   // the chords' and arcs' lengths of the segments on surfaces, by the index of their first point
   std::array<double, kMaxPathPoints> arc{};
   std::array<bool, kMaxPathPoints> on_surface{};
+  bool inside = false;  // a point entered a surface: the run stops, naming the element
   for (int p = link.path_begin; p < link.path_end; ++p) {
     const PathPoint& point = m.path_points[static_cast<std::size_t>(p)];
     if (point.wrap < 0) {
@@ -203,6 +207,7 @@ void MeasureWrappedLink(const NetworkModel& m, int e, double t, const double* y,
                             world(skeleton.DirectionInWorld(body, placed.axis, ws)), surface.radius,
                             surface.side};
     const CylinderWrap wrap = WrapOverCylinder(state.position[n - 1], state.position[n], cylinder);
+    inside = inside || wrap.inside;
     if (!wrap.wraps) continue;
     for (const Point& tangent : {wrap.t1, wrap.t2}) {
       const Coordinates at{tangent[0], tangent[1], tangent[2]};
@@ -230,6 +235,9 @@ void MeasureWrappedLink(const NetworkModel& m, int e, double t, const double* y,
     g.gradient[k] += g.direction[k];
     g.gradient[k + 1] -= g.direction[k];
   }
+  // a point inside a surface it wraps over has no path: a length that is not a number stops
+  // the run there, NonFiniteCause naming the element, rather than a path through the surface
+  if (inside) g.length = std::numeric_limits<double>::quiet_NaN();
   state.length_rate = g.length_rate(std::span<const Point>(state.velocity.data(), n));
 }
 

@@ -21,7 +21,10 @@ SkeletonUnavailable::SkeletonUnavailable()
 
 Skeleton::Skeleton(std::vector<Body> bodies, std::vector<Joint> given, Coordinates gravity,
                    std::vector<WrapCylinder> wraps)
-    : bodies_(std::move(bodies)), joints_(std::move(given)), wraps_(std::move(wraps)) {
+    : bodies_(std::move(bodies)),
+      joints_(std::move(given)),
+      wraps_(std::move(wraps)),
+      gravity_(gravity) {
   const std::vector<Joint>& joints = joints_;
   for (std::size_t c = 0; c < 3; ++c) {
     Require(std::isfinite(gravity[c]), "gravity[" + std::to_string(c) + "]", gravity[c],

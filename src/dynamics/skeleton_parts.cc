@@ -1,5 +1,6 @@
 #include "musclesim/dynamics/skeleton_parts.h"
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <string>
 
@@ -117,10 +118,13 @@ void Validate(const Body& body) {
                          "must be positive definite ([Ixx, Iyy, Izz, Ixy, Ixz, Iyz] about the "
                          "centre of mass [kg m^2])");
   }
-  const double slack = 1e-12 * (I[0] + I[1] + I[2]);
-  if (I[3] == 0.0 && I[4] == 0.0 && I[5] == 0.0 &&
-      !(I[0] <= I[1] + I[2] + slack && I[1] <= I[0] + I[2] + slack &&
-        I[2] <= I[0] + I[1] + slack)) {
+  // the principal moments, the eigenvalues of the symmetric matrix
+  Eigen::Matrix3d matrix;
+  matrix << I[0], I[3], I[4], I[3], I[1], I[5], I[4], I[5], I[2];
+  const Eigen::Vector3d p = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(matrix).eigenvalues();
+  const double slack = 1e-12 * (p[0] + p[1] + p[2]);
+  if (!(p[0] <= p[1] + p[2] + slack && p[1] <= p[0] + p[2] + slack &&
+        p[2] <= p[0] + p[1] + slack)) {
     throw ParameterError("inertia", Describe(I.data(), 6),
                          "each principal moment must be at most the sum of the other two (no "
                          "rigid body has these moments)");

@@ -44,7 +44,10 @@ CylinderWrap WrapOverCylinder(const Point& p, const Point& s, const PlacedCylind
   const Eigen::Vector2d p2(rp.dot(c.x), rp.dot(y)), s2(rs.dot(c.x), rs.dot(y));
   const double zp = rp.dot(c.z), zs = rs.dot(c.z);
   const double R = c.radius, dp = p2.norm(), ds = s2.norm();
-  if (!(dp > R && ds > R)) return wrap;
+  if (!(dp > R && ds > R)) {
+    wrap.inside = true;
+    return wrap;
+  }
   // the straight segment's closest approach to the axis, in the plane
   const Eigen::Vector2d d = s2 - p2;
   const double dd = d.squaredNorm();
@@ -79,6 +82,9 @@ CylinderWrap WrapOverCylinder(const Point& p, const Point& s, const PlacedCylind
   const double a2 = counterclockwise ? ths - as : ths + as;
   const double angle = counterclockwise ? ccw : cw;
   if (!(angle > 1e-12)) return wrap;  // touching: the straight segment is the path
+  // a segment crossing the cylinder wraps less than half of it: an angle past pi is a
+  // rounding of a slightly negative one, at the touch
+  if (sign == 0.0 && angle > std::numbers::pi) return wrap;
   // unrolled, the path is one straight line: the height rises in proportion to its length
   const double la = std::sqrt(dp * dp - R * R), lb = std::sqrt(ds * ds - R * R);
   const double arc = R * angle, planar = la + arc + lb;

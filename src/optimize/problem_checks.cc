@@ -101,6 +101,12 @@ void CheckControls(const OptimalControlProblem& problem, const NetworkSystem& sy
          "a network with a massless junction (a node of mass 0) cannot "
          "be optimised yet: its sensitivities are not derived; give the node a mass");
   }
+  if (system.skeleton() != nullptr) {
+    // nor skeletons' (docs/model.md 15.5): the gradients would miss the bodies
+    Fail("scenario", std::nullopt,
+         "a scenario with bodies, joints or wrap surfaces cannot be optimised yet: its "
+         "sensitivities are not derived (docs/guide/skeletons.md)");
+  }
   for (std::size_t j = 0; j < problem.controls.size(); ++j) {
     const ControlSpec& control = problem.controls[j];
     const std::string path = Entry("controls", j, "actuator");

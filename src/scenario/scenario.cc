@@ -33,7 +33,7 @@ const std::string* Scenario::ModelName(const TensionModel* model) const {
 
 NetworkSystem Scenario::Build() const {
   std::shared_ptr<const Skeleton> skeleton;
-  if (!bodies.empty() || !joints.empty() || !wraps.empty()) {
+  if (HasSkeleton()) {
     skeleton = std::make_shared<const Skeleton>(bodies, joints, space.gravity, wraps);
   }
   return NetworkSystem(nodes, elements, loads, controllers, space, std::move(skeleton));

@@ -95,13 +95,13 @@ SensitivityRun::SensitivityRun(const Scenario& scenario,
                      scenario.source + " has controllers[0] " + scenario.controllers.front().name +
                      "); run it without sensitivities");
   }
-  if (!scenario.bodies.empty() && !requests.empty()) {
+  if (scenario.HasSkeleton() && !requests.empty()) {
     // the skeleton's terms (docs/model.md 15.5) are not derived yet
     const SensitivityRequest& first = requests.front();
     throw InputError((first.where.empty() ? "" : first.where + " ") + first.path +
-                     ": sensitivities of a scenario with bodies are not supported yet (" +
-                     scenario.source + " has bodies[0] " + scenario.bodies.front().name +
-                     "); run it without sensitivities");
+                     ": sensitivities of a scenario with bodies, joints or wrap surfaces are "
+                     "not supported yet (" +
+                     scenario.source + " has them); run it without sensitivities");
   }
   for (const SensitivityRequest& request : requests) {
     std::string where;

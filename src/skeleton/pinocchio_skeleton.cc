@@ -229,18 +229,24 @@ void Skeleton::Accelerations(const double* q, const double* u, const double* tau
   const int n = coordinate_count();
   pin::aba(model_->model, w.data, Map(q, n), Map(u, n), Map(tau, n), w.forces);
   Eigen::Map<Eigen::VectorXd>(acceleration, n) = w.data.ddq;
-  w.jacobians = false;  // ABA moved the data's kinematics to (q, u)
-  w.q = Map(q, n);
+  // (ABA recomputes the joints' velocities, not their placements oMi: the point functions
+  // read the last Update's, which callers give the same (q, u))
 }
 
 double Skeleton::KineticEnergy(const double* q, const double* u, SkeletonWorkspace& ws) const {
   const int n = coordinate_count();
-  return pin::computeKineticEnergy(model_->model, ws.impl().data, Map(q, n), Map(u, n));
+  const double energy =
+      pin::computeKineticEnergy(model_->model, ws.impl().data, Map(q, n), Map(u, n));
+  Update(q, u, ws);  // the kinematics the point functions read: of this (q, u)
+  return energy;
 }
 
 double Skeleton::PotentialEnergy(const double* q, SkeletonWorkspace& ws) const {
   const int n = coordinate_count();
-  return pin::computePotentialEnergy(model_->model, ws.impl().data, Map(q, n));
+  const double energy = pin::computePotentialEnergy(model_->model, ws.impl().data, Map(q, n));
+  ws.impl().jacobians = false;  // its forward kinematics moved the placements to q
+  ws.impl().q = Map(q, n);
+  return energy;
 }
 
 }  // namespace musclesim

@@ -4,6 +4,7 @@
 // a Lagrangian reference computed by SciPy (tests/fixtures/double_pendulum_reference.py); a
 // path over a joint: its moment arm against a central difference of its length over the
 // angle, and the torque its tension puts on the joint against that moment arm.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +17,8 @@
 
 #include "musclesim/dynamics/network.h"
 #include "musclesim/io/readers/scenario_yaml.h"
+#include "musclesim/optimize/optimal_control.h"
+#include "musclesim/scenario/sensitivity_run.h"
 #include "musclesim/scenario/run_columns.h"
 #include "musclesim/scenario/scenario.h"
 #include "musclesim/solver/simulation.h"
@@ -273,6 +276,48 @@ TEST(WrapCylinder, OneSidedItKeepsThePathOnItsSide) {
               1e-8);
 }
 
+TEST(WrapCylinder, OnAMovingBodyItsTangentPointsMoveAndPushWithIt) {
+  // the cylinder on the forearm, off the elbow's axis: as the forearm turns, the surface and
+  // the tangent points on it move, and the forces there act on the forearm
+  Body forearm{"forearm", 1.5, {0.0, 0.0, 0.0}, {0.01, 0.002, 0.012, 0.0, 0.0, 0.0}};
+  Joint elbow = Joint::Make("elbow", JointKind::kRevolute, "ground", "forearm");
+  WrapCylinder bump{"bump", "forearm", {0.03, 0.0, 0.0}, {0.0, 0.0, 1.0}, 0.015, WrapSide::kAll};
+  auto skeleton =
+      std::make_shared<const Skeleton>(std::vector<Body>{forearm}, std::vector<Joint>{elbow},
+                                       Coordinates{}, std::vector<WrapCylinder>{bump});
+  std::vector<Node> nodes{Node::Fixed("origin", Coordinates{-0.2, 0.05, 0.0}),
+                          Node::OnBody("insertion", "forearm", {0.08, -0.01, 0.0})};
+  const double stiffness = 300.0;
+  Element spring = Element::Spring("flexor", "origin", "insertion", stiffness, 0.1);
+  spring.via = {ViaPoint::Wrap("bump")};
+  const NetworkSystem system(nodes, {spring}, {}, {}, Space{2, {}}, skeleton);
+  const int s = system.skeleton_state();
+  const double izz = forearm.inertia[2];
+  for (const double angle : {-0.1, 0.0, 0.1, 0.2}) {
+    std::vector<double> y(static_cast<std::size_t>(system.state_size()), 0.0);
+    y[s] = angle;
+    std::vector<double> plus = y, minus = y;
+    const double h = 1e-6;
+    plus[s] += h;
+    minus[s] -= h;
+    const double length = system.Length(0, 0.0, y.data());
+    const double straight = std::hypot(0.08 * std::cos(angle) + 0.01 * std::sin(angle) + 0.2,
+                                       0.08 * std::sin(angle) - 0.01 * std::cos(angle) - 0.05);
+    EXPECT_GT(length, straight + 1e-5) << angle;  // it wraps
+    const double dl =
+        (system.Length(0, 0.0, plus.data()) - system.Length(0, 0.0, minus.data())) / (2 * h);
+    NetworkSample sample;
+    system.Observe(0.0, y.data(), sample);
+    EXPECT_NEAR(sample.moment_arms[0], -dl, 1e-8) << angle;
+    // the forces at the tangent points and the insertion, all on the forearm, turn it by
+    // -T dl/dq together
+    std::vector<double> ydot(y.size());
+    system.RightHandSide(0.0, y.data(), ydot.data());
+    const double torque = -stiffness * (length - 0.1) * dl;
+    EXPECT_NEAR(ydot[s + 1], torque / izz, 1e-6 * std::abs(torque / izz)) << angle;
+  }
+}
+
 // ---- elbow_flexion.yaml ---------------------------------------------------------------------
 
 TEST(ElbowFlexion, EachMomentArmAlongTheRunIsMinusTheLengthsDerivative) {
@@ -393,6 +438,29 @@ TEST(PulleyJoint, SmallOscillationHasTheClosedFormsFrequency) {
   const std::vector<double> crossings = UpwardCrossings(run.times, speed);
   ASSERT_GE(crossings.size(), 2u);
   EXPECT_NEAR(crossings[1] - crossings[0], period, 1e-4 * period);
+}
+
+// What the skeleton cannot do yet is refused, never computed without the bodies' terms.
+TEST(Skeleton, SensitivitiesAndOptimalControlAreRefusedUntilTheirTermsAreDerived) {
+  const Scenario scenario = LoadScenario(testing::ScenarioPath("pulley_joint.yaml"));
+  std::string refusal;
+  try {
+    SensitivityRun run(scenario, {{"elements[0].activation.value", "", 0.0}});
+  } catch (const InputError& e) {
+    refusal = e.what();
+  }
+  EXPECT_THAT(refusal, ::testing::HasSubstr("sensitivities of a scenario with bodies, joints or "
+                                            "wrap surfaces are not supported yet"));
+  OptimalControlProblem problem;
+  problem.scenario = scenario;
+  problem.controls = {ControlSpec{"flexor", 0.0, 1.0}};
+  refusal.clear();
+  try {
+    SolveOptimalControl(problem);
+  } catch (const InputError& e) {
+    refusal = e.what();
+  }
+  EXPECT_THAT(refusal, ::testing::HasSubstr("cannot be optimised yet"));
 }
 
 TEST(PathOverAJoint, TheRunsColumnsNameEachCoordinateAndMomentArm) {

@@ -66,7 +66,8 @@ class Skeleton {
   const std::vector<Body>& bodies() const { return bodies_; }
   const std::vector<Joint>& joints() const { return joints_; }  // as given
   const std::vector<WrapCylinder>& wraps() const { return wraps_; }
-  int FindWrap(std::string_view name) const;  // -1 if none
+  const Coordinates& gravity() const { return gravity_; }  // [m/s^2]
+  int FindWrap(std::string_view name) const;               // -1 if none
   // The body of wrap w (-1: the ground).
   int WrapBody(int w) const { return wrap_bodies_[w]; }
   // (q holds the coordinates in tree order: a joint's after its parent's; the order given
@@ -105,7 +106,8 @@ class Skeleton {
   // generalized force per coordinate.
   void Accelerations(const double* q, const double* u, const double* tau, SkeletonWorkspace& ws,
                      double* acceleration) const;
-  // (1/2) u^T M u [J] and the potential energy of gravity, -sum m g . c [J].
+  // (1/2) u^T M u [J] and the potential energy of gravity, -sum m g . c [J]; each leaves the
+  // workspace's placements at its q.
   double KineticEnergy(const double* q, const double* u, SkeletonWorkspace& ws) const;
   double PotentialEnergy(const double* q, SkeletonWorkspace& ws) const;
 
@@ -121,6 +123,7 @@ class Skeleton {
   std::vector<JointCoordinate> coordinates_;
   std::vector<bool> rotational_;
   std::vector<WrapCylinder> wraps_;
+  Coordinates gravity_{};
   std::vector<int> wrap_bodies_;
   std::vector<std::vector<bool>> moves_;  // per body, per coordinate
   std::uint64_t id_ = 0;

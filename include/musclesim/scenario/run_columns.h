@@ -11,8 +11,8 @@
 //   .tension_passive, .tension_active, .phase; NODE.load of every free node;
 //   CONTROLLER.reference, .measured, .error, .output of every controller. With a skeleton
 //   (docs/model.md 15), after the nodes' columns: COORDINATE.q, COORDINATE.u of every
-//   coordinate; after an element's columns: ELEMENT.moment_arm.COORDINATE for each
-//   coordinate it spans.
+//   coordinate; after an element's length and tension: ELEMENT.moment_arm.COORDINATE for
+//   each coordinate it spans.
 // A phase column holds text: concentric if the shortening velocity v > v_tol, eccentric if
 // v < -v_tol, isometric otherwise (docs/model.md section 6); every other column a number.
 #pragma once

@@ -59,7 +59,9 @@ struct Scenario {
   // a skeleton (docs/model.md 15): its bodies and the joints joining them, in the file's order
   std::vector<Body> bodies;
   std::vector<Joint> joints;
-  std::vector<WrapCylinder> wraps;    // wrap surfaces on the bodies (or the ground)
+  std::vector<WrapCylinder> wraps;  // wrap surfaces on the bodies (or the ground)
+  // Whether it has a skeleton's parts: bodies, joints or wrap surfaces.
+  bool HasSkeleton() const { return !bodies.empty() || !joints.empty() || !wraps.empty(); }
   double t_start = 0.0, t_end = 1.0;  // the simulated interval [s], t_end > t_start
   SolverOptions solver;               // units as in SolverOptions
   OutputRequest output;               // units as in OutputRequest

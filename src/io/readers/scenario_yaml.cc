@@ -11,8 +11,9 @@ namespace musclesim {
 namespace {
 
 ScenarioForm FormOf(const Document& root) {
-  return root.IsMap() && (root["nodes"] || root["bodies"]) ? ScenarioForm::kNetwork
-                                                           : ScenarioForm::kActuator;
+  return root.IsMap() && (root["nodes"] || root["bodies"] || root["joints"] || root["wraps"])
+             ? ScenarioForm::kNetwork
+             : ScenarioForm::kActuator;
 }
 
 // The scenario, and its system when reading built one (a network's reader does).
